@@ -1,0 +1,11 @@
+//! `mountains`: a fractal-mountain screensaver.
+//!
+//! `terrain` makes heights, `render` turns them into pixels, `settings` holds
+//! preferences, `saver` puts frames on screens. Only `saver` knows about windows.
+
+pub mod cli;
+pub mod log;
+pub mod render;
+pub mod saver;
+pub mod settings;
+pub mod terrain;

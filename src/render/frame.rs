@@ -1,0 +1,90 @@
+//! The CPU framebuffer every mode draws into.
+
+/// A rectangle of pixels, `x0..x1` by `y0..y1` (exclusive ends).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Rect {
+    /// Left column (inclusive).
+    pub x0: u32,
+    /// Top row (inclusive).
+    pub y0: u32,
+    /// Right column (exclusive).
+    pub x1: u32,
+    /// Bottom row (exclusive).
+    pub y1: u32,
+}
+
+impl Rect {
+    /// True when the rectangle covers no pixel.
+    pub fn is_empty(&self) -> bool {
+        self.x0 >= self.x1 || self.y0 >= self.y1
+    }
+
+    /// The smallest rectangle holding both.
+    pub fn union(&self, other: &Rect) -> Rect {
+        if self.is_empty() {
+            return *other;
+        }
+        if other.is_empty() {
+            return *self;
+        }
+        Rect {
+            x0: self.x0.min(other.x0),
+            y0: self.y0.min(other.y0),
+            x1: self.x1.max(other.x1),
+            y1: self.y1.max(other.y1),
+        }
+    }
+}
+
+/// Pixels as `0x00RRGGBB`, row-major, what softbuffer presents.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Frame {
+    width: u32,
+    height: u32,
+    pixels: Vec<u32>,
+}
+
+/// Largest frame accepted: 16384x16384 (1 GiB of pixels) would be absurd for
+/// a screensaver; 2^28 pixels (1 GiB of u32) is the hard cap.
+pub const MAX_PIXELS: u64 = 1 << 28;
+
+impl Frame {
+    /// A black frame, or `None` if either side is zero or it exceeds `MAX_PIXELS`.
+    pub fn new(width: u32, height: u32) -> Option<Self> {
+        let count = width as u64 * height as u64;
+        if count == 0 || count > MAX_PIXELS {
+            return None;
+        }
+        Some(Frame { width, height, pixels: vec![0; count as usize] })
+    }
+
+    /// Width in pixels.
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+
+    /// Height in pixels.
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+
+    /// All pixels, row-major.
+    pub fn pixels(&self) -> &[u32] {
+        &self.pixels
+    }
+
+    /// All pixels, row-major, writable.
+    pub fn pixels_mut(&mut self) -> &mut [u32] {
+        &mut self.pixels
+    }
+
+    /// The whole frame as a rectangle.
+    pub fn bounds(&self) -> Rect {
+        Rect { x0: 0, y0: 0, x1: self.width, y1: self.height }
+    }
+
+    /// Fills every pixel with one colour.
+    pub fn clear(&mut self, color: u32) {
+        self.pixels.fill(color);
+    }
+}

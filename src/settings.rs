@@ -1,0 +1,169 @@
+//! Every user preference, in one `Settings` value.
+//!
+//! Loading, validation and the key table live in `settings/keys.rs` and
+//! `settings/load.rs`; this file holds only the types.
+
+use serde::{Deserialize, Serialize};
+
+/// Which fractal generator builds the heightfield.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Generator {
+    /// Mountain Terrain 3.0: square subdivision, cragginess halved per level.
+    Square,
+    /// Square subdivision in diamond-square order (edge midpoints from the
+    /// neighbouring centres), which removes the straight creases.
+    Diamond,
+    /// Fractal Mountain Climbing: triangle subdivision on a parallelogram.
+    Triangle,
+}
+
+/// The four starting profiles of Fractal Mountain Climbing (seed 000).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Profile {
+    /// Profile 1: high back corner, low front corner: slopes into the sea.
+    Slope,
+    /// Profile 2: one high corner, the rest at sea level.
+    Peak,
+    /// Profile 3: one low corner, the rest at sea level.
+    Bay,
+    /// Profile 4: raised centre and back edges: an island massif.
+    Massif,
+}
+
+/// How faces are coloured.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ColorMode {
+    /// Water blue, green lowlands, brown, snow above the treeline.
+    Natural,
+    /// Colour filter: shaded grey.
+    Gray,
+    /// Colour filter: red.
+    Red,
+    /// Colour filter: green.
+    Green,
+    /// Colour filter: blue.
+    Blue,
+    /// Colour filter: yellow.
+    Yellow,
+    /// Colour filter: cyan.
+    Cyan,
+    /// Colour filter: purple.
+    Purple,
+    /// Black faces, one-pixel white outlines.
+    Sonar,
+    /// Wire mesh only: land green, water blue.
+    Outline,
+    /// 1-bit ordered dither, 17 levels.
+    Mono,
+    /// Layered 2D ridge silhouettes fading into the distance.
+    Ridges,
+}
+
+/// The projection used to draw the mountain.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ViewKind {
+    /// The classic tilted, sheared parallelogram (orthographic).
+    Oblique,
+    /// Single-point perspective.
+    Perspective,
+}
+
+/// Which monitors the full-screen saver covers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Monitors {
+    /// One window, with its own mountain, on every monitor.
+    All,
+    /// Only the primary monitor; the others are blanked.
+    Primary,
+}
+
+/// Every preference a user can set. Ranges are checked in `settings::keys`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Settings {
+    /// Seed of the next mountain; `None` picks a fresh random one each time.
+    pub seed: Option<u64>,
+    /// Which generator builds the heights.
+    pub generator: Generator,
+    /// Square generators: initial random range, halved per level (1-128).
+    pub cragginess: u32,
+    /// Square generators: range of the corner heights (seed 003 hard-codes 100).
+    pub elevation: f32,
+    /// Triangle generator: seed 000's "Smoothness" base (1.0-5.0).
+    pub roughness: f32,
+    /// Triangle generator: power applied to heights (0.25-5.0; 1 = none).
+    pub contour: f32,
+    /// Triangle generator: starting corner heights.
+    pub profile: Profile,
+    /// Height of the highest peak (1-10, seed 000's Height menu); also moves the treeline.
+    pub height: u32,
+    /// Grid of 2^detail + 1 points a side (4-12).
+    pub detail: u32,
+    /// Halve the points per side (a quarter of the data set).
+    pub low_detail: bool,
+    /// Water line, as a fraction of the relief (-1.0 to 1.0; 0 = the generator's own).
+    pub sea_level: f32,
+    /// Colour mode or filter.
+    pub color: ColorMode,
+    /// Darken water with the depth of the ground below it.
+    pub relative_depth: bool,
+    /// Cast shadows from the light direction.
+    pub shadows: bool,
+    /// Oblique or perspective projection.
+    pub view: ViewKind,
+    /// Which side the mountain is seen from, in degrees (0, 90, 180, 270).
+    pub rotation: u32,
+    /// Start a new mountain after the pause (slide show).
+    pub auto_redraw: bool,
+    /// Seconds over which one mountain is drawn, strip by strip (0 = at once).
+    pub draw_seconds: f32,
+    /// Seconds a finished mountain is held before the next.
+    pub pause_seconds: f32,
+    /// Which monitors the full-screen saver covers.
+    pub monitors: Monitors,
+    /// Folder of PNG heightmaps mixed into the slide show (empty = none).
+    pub heightmaps_dir: Option<String>,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            seed: None,
+            generator: Generator::Diamond,
+            cragginess: 64,
+            elevation: 100.0,
+            roughness: 2.0,
+            contour: 1.0,
+            profile: Profile::Slope,
+            height: 5,
+            detail: 8,
+            low_detail: false,
+            sea_level: 0.0,
+            color: ColorMode::Natural,
+            relative_depth: true,
+            shadows: true,
+            view: ViewKind::Oblique,
+            rotation: 0,
+            auto_redraw: true,
+            draw_seconds: 8.0,
+            pause_seconds: 10.0,
+            monitors: Monitors::All,
+            heightmaps_dir: None,
+        }
+    }
+}
+
+impl Settings {
+    /// Points per side of the grid these settings generate, low detail included.
+    pub fn grid_exponent(&self) -> u32 {
+        if self.low_detail && self.detail > 4 {
+            self.detail - 1
+        } else {
+            self.detail
+        }
+    }
+}

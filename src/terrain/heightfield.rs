@@ -1,0 +1,101 @@
+//! The square grid of elevations every generator fills and every renderer reads.
+
+/// Smallest grid exponent: 17x17 points.
+pub const MIN_EXPONENT: u32 = 4;
+/// Largest grid exponent: 4097x4097 points.
+pub const MAX_EXPONENT: u32 = 12;
+
+/// A square grid of `2^n + 1` points a side of `f32` elevations, sea level at 0.
+///
+/// Row `y` runs from the back of the mountain (`y = 0`) to the front
+/// (`y = size - 1`); column `x` from left to right. `extent` is the width of
+/// the whole grid in the same units as the heights, so a renderer knows the
+/// true aspect of the relief.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Heightfield {
+    exponent: u32,
+    size: usize,
+    extent: f32,
+    heights: Vec<f32>,
+}
+
+impl Heightfield {
+    /// A flat field at sea level with `2^exponent + 1` points a side.
+    ///
+    /// Panics if `exponent` is outside `MIN_EXPONENT..=MAX_EXPONENT`: callers
+    /// validate user input before this point.
+    pub fn flat(exponent: u32, extent: f32) -> Self {
+        assert!(
+            (MIN_EXPONENT..=MAX_EXPONENT).contains(&exponent),
+            "grid exponent {exponent} outside {MIN_EXPONENT}..={MAX_EXPONENT}"
+        );
+        let size = (1usize << exponent) + 1;
+        Heightfield { exponent, size, extent, heights: vec![0.0; size * size] }
+    }
+
+    /// Wraps existing heights (row-major, `size * size` of them).
+    ///
+    /// Returns `None` if `size` is not `2^n + 1` with n in range, or the
+    /// number of heights does not match.
+    pub fn from_heights(size: usize, extent: f32, heights: Vec<f32>) -> Option<Self> {
+        let exponent = (MIN_EXPONENT..=MAX_EXPONENT).find(|&n| (1usize << n) + 1 == size)?;
+        (heights.len() == size * size).then_some(Heightfield { exponent, size, extent, heights })
+    }
+
+    /// The grid exponent n: the field has `2^n + 1` points a side.
+    pub fn exponent(&self) -> u32 {
+        self.exponent
+    }
+
+    /// Points per side.
+    pub fn size(&self) -> usize {
+        self.size
+    }
+
+    /// Width of the whole grid in height units.
+    pub fn extent(&self) -> f32 {
+        self.extent
+    }
+
+    /// Changes the horizontal extent (e.g. after a heightmap is loaded).
+    pub fn set_extent(&mut self, extent: f32) {
+        self.extent = extent;
+    }
+
+    /// Elevation at column `x`, row `y`.
+    #[inline]
+    pub fn get(&self, x: usize, y: usize) -> f32 {
+        self.heights[y * self.size + x]
+    }
+
+    /// Sets the elevation at column `x`, row `y`.
+    #[inline]
+    pub fn set(&mut self, x: usize, y: usize, h: f32) {
+        self.heights[y * self.size + x] = h;
+    }
+
+    /// One row of elevations, back (`y = 0`) to front.
+    pub fn row(&self, y: usize) -> &[f32] {
+        &self.heights[y * self.size..(y + 1) * self.size]
+    }
+
+    /// All elevations, row-major.
+    pub fn heights(&self) -> &[f32] {
+        &self.heights
+    }
+
+    /// All elevations, row-major, for generators that fill them in place.
+    pub fn heights_mut(&mut self) -> &mut [f32] {
+        &mut self.heights
+    }
+
+    /// Lowest elevation.
+    pub fn min(&self) -> f32 {
+        self.heights.iter().copied().fold(f32::INFINITY, f32::min)
+    }
+
+    /// Highest elevation.
+    pub fn max(&self) -> f32 {
+        self.heights.iter().copied().fold(f32::NEG_INFINITY, f32::max)
+    }
+}
