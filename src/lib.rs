@@ -4,6 +4,7 @@
 //! preferences, `saver` puts frames on screens. Only `saver` knows about windows.
 
 pub mod cli;
+pub mod fsutil;
 pub mod log;
 pub mod render;
 pub mod saver;

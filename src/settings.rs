@@ -3,6 +3,8 @@
 //! Loading, validation and the key table live in `settings/keys.rs` and
 //! `settings/load.rs`; this file holds only the types.
 
+pub mod paths;
+
 use serde::{Deserialize, Serialize};
 
 /// Which fractal generator builds the heightfield.

@@ -55,7 +55,11 @@ impl Frame {
         if count == 0 || count > MAX_PIXELS {
             return None;
         }
-        Some(Frame { width, height, pixels: vec![0; count as usize] })
+        Some(Frame {
+            width,
+            height,
+            pixels: vec![0; count as usize],
+        })
     }
 
     /// Width in pixels.
@@ -80,7 +84,12 @@ impl Frame {
 
     /// The whole frame as a rectangle.
     pub fn bounds(&self) -> Rect {
-        Rect { x0: 0, y0: 0, x1: self.width, y1: self.height }
+        Rect {
+            x0: 0,
+            y0: 0,
+            x1: self.width,
+            y1: self.height,
+        }
     }
 
     /// Fills every pixel with one colour.

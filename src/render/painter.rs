@@ -22,7 +22,13 @@ impl Painter {
     /// Plans drawing `field` under `settings` into a `width` x `height` frame.
     pub fn new(field: Arc<Heightfield>, settings: &Settings, width: u32, height: u32) -> Self {
         let palette = Palette::new(settings, &field);
-        Painter { field, palette, width, height, next: 0 }
+        Painter {
+            field,
+            palette,
+            width,
+            height,
+            next: 0,
+        }
     }
 
     /// How many strips the whole mountain takes.
@@ -58,7 +64,12 @@ impl Painter {
                 let row = (y * self.width) as usize;
                 frame.pixels_mut()[row..row + self.width as usize].fill(c);
             }
-            damage = damage.union(&Rect { x0: 0, y0, x1: self.width, y1 });
+            damage = damage.union(&Rect {
+                x0: 0,
+                y0,
+                x1: self.width,
+                y1,
+            });
         }
         self.next = end;
         damage
@@ -67,6 +78,11 @@ impl Painter {
 
 /// Draws a complete mountain into `frame` (the same pixels as stepping to the end).
 pub fn render_full(field: &Heightfield, settings: &Settings, frame: &mut Frame) {
-    let mut p = Painter::new(Arc::new(field.clone()), settings, frame.width(), frame.height());
+    let mut p = Painter::new(
+        Arc::new(field.clone()),
+        settings,
+        frame.width(),
+        frame.height(),
+    );
     p.step(frame, usize::MAX);
 }

@@ -15,7 +15,9 @@ pub struct Palette {
 impl Palette {
     /// Prepares the colours for `field` (treeline, depth range) under `settings`.
     pub fn new(_settings: &Settings, _field: &Heightfield) -> Self {
-        Palette { light: Vec3::new(-0.5, -0.6, 0.62).normalize() }
+        Palette {
+            light: Vec3::new(-0.5, -0.6, 0.62).normalize(),
+        }
     }
 
     /// Unit vector pointing from the ground towards the light (z up, y towards the back).

@@ -15,7 +15,10 @@ pub struct ShadowMap {
 impl ShadowMap {
     /// Every point lit (shadows off).
     pub fn all_lit(field: &Heightfield) -> Self {
-        ShadowMap { size: field.size(), lit: vec![1.0; field.size() * field.size()] }
+        ShadowMap {
+            size: field.size(),
+            lit: vec![1.0; field.size() * field.size()],
+        }
     }
 
     /// Light reaching the grid point at column `x`, row `y`.

@@ -30,7 +30,12 @@ impl Heightfield {
             "grid exponent {exponent} outside {MIN_EXPONENT}..={MAX_EXPONENT}"
         );
         let size = (1usize << exponent) + 1;
-        Heightfield { exponent, size, extent, heights: vec![0.0; size * size] }
+        Heightfield {
+            exponent,
+            size,
+            extent,
+            heights: vec![0.0; size * size],
+        }
     }
 
     /// Wraps existing heights (row-major, `size * size` of them).
@@ -39,7 +44,12 @@ impl Heightfield {
     /// number of heights does not match.
     pub fn from_heights(size: usize, extent: f32, heights: Vec<f32>) -> Option<Self> {
         let exponent = (MIN_EXPONENT..=MAX_EXPONENT).find(|&n| (1usize << n) + 1 == size)?;
-        (heights.len() == size * size).then_some(Heightfield { exponent, size, extent, heights })
+        (heights.len() == size * size).then_some(Heightfield {
+            exponent,
+            size,
+            extent,
+            heights,
+        })
     }
 
     /// The grid exponent n: the field has `2^n + 1` points a side.
@@ -96,6 +106,9 @@ impl Heightfield {
 
     /// Highest elevation.
     pub fn max(&self) -> f32 {
-        self.heights.iter().copied().fold(f32::NEG_INFINITY, f32::max)
+        self.heights
+            .iter()
+            .copied()
+            .fold(f32::NEG_INFINITY, f32::max)
     }
 }

@@ -1,6 +1,7 @@
 //! Everything that makes a mountain's heights. Pure: no windows, no clocks.
 
 pub mod heightfield;
+pub mod heightmap;
 
 pub use heightfield::Heightfield;
 
