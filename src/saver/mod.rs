@@ -1,1 +1,175 @@
 //! The window layer: the only module that knows about winit, softbuffer and X11.
+//!
+//! `run` takes a window mode and paces a slide show of mountains on it:
+//! full screen on every monitor (`app`), a small preview or a normal window
+//! (`app`), or a window another program owns (`embed_x11`, `embed_win32`).
+
+pub mod actions;
+pub mod app;
+#[cfg(unix)]
+pub mod bands_x11;
+#[cfg(windows)]
+pub mod embed_win32;
+#[cfg(unix)]
+pub mod embed_x11;
+pub mod input;
+pub mod libcheck;
+pub mod present;
+pub mod show;
+pub mod signals;
+pub mod slideshow;
+
+use std::fmt;
+use std::sync::Arc;
+use std::time::Instant;
+
+use crate::cli::Mode;
+use crate::settings::Settings;
+use crate::terrain::heightmap::DataSet;
+use show::Mountain;
+
+/// Why a window mode could not run, worded for a person.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum SaverError {
+    /// `$DISPLAY` is unset or names no reachable X server.
+    NoDisplay(String),
+    /// A shared library winit needs is missing.
+    MissingLibrary {
+        /// The file name, e.g. `libxkbcommon-x11.so.0`.
+        library: String,
+        /// The Debian/Ubuntu package that provides it.
+        package: String,
+    },
+    /// The window to draw into does not exist.
+    NoSuchWindow(u32),
+    /// The mode is not a window mode, or not available on this platform.
+    Unsupported(String),
+    /// Anything else, already worded.
+    Other(String),
+}
+
+impl fmt::Display for SaverError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            SaverError::NoDisplay(why) => write!(f, "no X display: set DISPLAY ({why})"),
+            SaverError::MissingLibrary { library, package } => {
+                f.write_str(&libcheck::missing_message(library, package))
+            }
+            SaverError::NoSuchWindow(id) => write!(f, "there is no X window 0x{id:x}"),
+            SaverError::Unsupported(what) => f.write_str(what),
+            SaverError::Other(what) => f.write_str(what),
+        }
+    }
+}
+
+impl std::error::Error for SaverError {}
+
+impl SaverError {
+    #[cfg(unix)]
+    fn from_connect(e: x11rb::errors::ConnectError) -> Self {
+        SaverError::NoDisplay(e.to_string())
+    }
+}
+
+/// Runs a window mode until it ends. `open` is a data set to show instead of generating.
+pub fn run(
+    mode: &Mode,
+    settings: Settings,
+    open: Option<DataSet>,
+) -> Result<(), SaverError> {
+    START.get_or_init(Instant::now);
+    let opened = open.map(|d| Mountain {
+        field: Arc::new(d.field),
+        seed: d.seed,
+    });
+    match mode {
+        Mode::Fullscreen => app::run(app::AppMode::Fullscreen, settings, opened),
+        Mode::Preview { parent: None } => app::run(app::AppMode::Preview, settings, opened),
+        Mode::Window => app::run(app::AppMode::Window, settings, opened),
+        Mode::Preview {
+            parent: Some(handle),
+        } => run_in_parent(*handle, settings, opened),
+        Mode::XRoot => run_embedded(None, settings, opened),
+        Mode::XWindowId(id) => run_embedded(Some(*id), settings, opened),
+        other => Err(SaverError::Unsupported(format!(
+            "{other:?} is not a window mode"
+        ))),
+    }
+}
+
+/// `/p HWND`: a child of the Windows preview; on X11 the number is an XID.
+fn run_in_parent(handle: u64, settings: Settings, opened: Option<Mountain>) -> Result<(), SaverError> {
+    #[cfg(windows)]
+    {
+        app::run(app::AppMode::Child(handle), settings, opened)
+    }
+    #[cfg(not(windows))]
+    {
+        run_embedded(Some(handle), settings, opened)
+    }
+}
+
+#[cfg(unix)]
+fn run_embedded(
+    window: Option<u64>,
+    settings: Settings,
+    opened: Option<Mountain>,
+) -> Result<(), SaverError> {
+    check_library("libxcb.so.1", "libxcb1")?;
+    let window = match window {
+        Some(id) => Some(u32::try_from(id).map_err(|_| {
+            SaverError::Unsupported(format!("{id} is not an X window id (too large)"))
+        })?),
+        None => None,
+    };
+    embed_x11::run(window, settings, opened)
+}
+
+#[cfg(not(unix))]
+fn run_embedded(
+    _window: Option<u64>,
+    _settings: Settings,
+    _opened: Option<Mountain>,
+) -> Result<(), SaverError> {
+    Err(SaverError::Unsupported(
+        "--root and --window-id need X11; on Windows use /s or /p".into(),
+    ))
+}
+
+#[cfg(unix)]
+fn check_library(library: &str, package: &str) -> Result<(), SaverError> {
+    if libcheck::can_dlopen(library) {
+        return Ok(());
+    }
+    Err(SaverError::MissingLibrary {
+        library: library.into(),
+        package: package.into(),
+    })
+}
+
+/// When `run` was entered: the zero of the start-up trace.
+static START: std::sync::OnceLock<Instant> = std::sync::OnceLock::new();
+
+/// With `MOUNTAINS_TRACE=1`, reports on stderr how long the first present took.
+#[derive(Debug, Clone, Copy)]
+pub struct Trace {
+    start: Option<Instant>,
+}
+
+impl Trace {
+    /// Starts the clock if `MOUNTAINS_TRACE=1`.
+    pub fn from_env() -> Self {
+        let on = std::env::var("MOUNTAINS_TRACE").is_ok_and(|v| v == "1");
+        Trace {
+            start: on.then(|| *START.get_or_init(Instant::now)),
+        }
+    }
+
+    /// Call after each present; the first one prints the time since start.
+    pub fn presented(&mut self) {
+        if let Some(start) = self.start.take() {
+            let ms = start.elapsed().as_secs_f64() * 1000.0;
+            eprintln!("mountains: trace: first frame presented after {ms:.1} ms");
+        }
+    }
+}

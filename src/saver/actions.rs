@@ -1,0 +1,187 @@
+//! Window-mode actions that touch files or settings: saving the data set,
+//! screenshots, the next colour, cragginess steps.
+
+use std::path::{Path, PathBuf};
+
+use super::show::Mountain;
+use crate::render::Frame;
+use crate::settings::{ColorMode, Settings};
+
+/// Every colour mode, in the order the C key steps through them.
+const COLORS: [ColorMode; 12] = [
+    ColorMode::Natural,
+    ColorMode::Gray,
+    ColorMode::Red,
+    ColorMode::Green,
+    ColorMode::Blue,
+    ColorMode::Yellow,
+    ColorMode::Cyan,
+    ColorMode::Purple,
+    ColorMode::Sonar,
+    ColorMode::Outline,
+    ColorMode::Mono,
+    ColorMode::Ridges,
+];
+
+/// The colour mode after `color`, wrapping round.
+pub fn next_color(color: ColorMode) -> ColorMode {
+    let i = COLORS.iter().position(|&c| c == color).unwrap_or(0);
+    COLORS[(i + 1) % COLORS.len()]
+}
+
+/// Cragginess range the square generators accept (seed 003: 1-128).
+const CRAGGINESS: std::ops::RangeInclusive<u32> = 1..=128;
+
+/// Cragginess one step rougher: doubled, since it is halved at each level.
+pub fn craggier(c: u32) -> u32 {
+    c.saturating_mul(2).clamp(*CRAGGINESS.start(), *CRAGGINESS.end())
+}
+
+/// Cragginess one step smoother: halved.
+pub fn smoother(c: u32) -> u32 {
+    (c / 2).clamp(*CRAGGINESS.start(), *CRAGGINESS.end())
+}
+
+/// A readable file stem: `mountain-2026-11-22-023512-seed-42`.
+pub fn file_stem(unix_seconds: u64, seed: Option<u64>) -> String {
+    let (y, m, d) = civil_date(unix_seconds / 86_400);
+    let s = unix_seconds % 86_400;
+    let time = format!("{:02}{:02}{:02}", s / 3600, s / 60 % 60, s % 60);
+    match seed {
+        Some(seed) => format!("mountain-{y:04}-{m:02}-{d:02}-{time}-seed-{seed}"),
+        None => format!("mountain-{y:04}-{m:02}-{d:02}-{time}"),
+    }
+}
+
+/// Year, month, day (UTC) of a day count since 1970-01-01 (Howard Hinnant's algorithm).
+fn civil_date(days: u64) -> (u64, u64, u64) {
+    let z = days + 719_468;
+    let era = z / 146_097;
+    let doe = z % 146_097;
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let d = doy - (153 * mp + 2) / 5 + 1;
+    let m = if mp < 10 { mp + 3 } else { mp - 9 };
+    let y = yoe + era * 400 + u64::from(m <= 2);
+    (y, m, d)
+}
+
+/// A path in `dir` for `stem` + `ext` that names no existing file.
+fn free_path(dir: &Path, stem: &str, ext: &str) -> Option<PathBuf> {
+    (1..100).map(|n| match n {
+        1 => dir.join(format!("{stem}.{ext}")),
+        n => dir.join(format!("{stem}-{n}.{ext}")),
+    })
+    .find(|p| !p.exists())
+}
+
+fn output_path(ext: &str, seed: Option<u64>) -> Result<PathBuf, String> {
+    let dir = crate::settings::paths::data_dir().ok_or("no data directory on this system")?;
+    std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let now = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs());
+    free_path(&dir, &file_stem(now, seed), ext)
+        .ok_or_else(|| format!("{}: too many files with the same name", dir.display()))
+}
+
+/// Saves the mountain as a data set in the data directory; returns where.
+pub fn save_data_set(mountain: &Mountain, settings: &Settings) -> Result<PathBuf, String> {
+    let path = output_path("png", mountain.seed)?;
+    crate::terrain::heightmap::save(&path, &mountain.field, mountain.seed, settings)
+        .map_err(|e| e.to_string())?;
+    Ok(path)
+}
+
+/// Saves the frame as a PNG screenshot in the data directory; returns where.
+pub fn save_screenshot(frame: &Frame, seed: Option<u64>) -> Result<PathBuf, String> {
+    let stem_seed = seed;
+    let path = output_path("png", stem_seed).map(|p| with_suffix(&p, "-screenshot"))?;
+    write_png(&path, frame).map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok(path)
+}
+
+fn with_suffix(path: &Path, suffix: &str) -> PathBuf {
+    let stem = path.file_stem().map(|s| s.to_string_lossy()).unwrap_or_default();
+    path.with_file_name(format!("{stem}{suffix}.png"))
+}
+
+/// Stand-in for `crate::snapshot::write_png` until the lead's module lands:
+/// an 8-bit RGB PNG, written atomically.
+fn write_png(path: &Path, frame: &Frame) -> std::io::Result<()> {
+    let mut bytes = Vec::new();
+    let mut encoder = png::Encoder::new(&mut bytes, frame.width(), frame.height());
+    encoder.set_color(png::ColorType::Rgb);
+    encoder.set_depth(png::BitDepth::Eight);
+    let rgb: Vec<u8> = frame
+        .pixels()
+        .iter()
+        .flat_map(|p| [(p >> 16) as u8, (p >> 8) as u8, *p as u8])
+        .collect();
+    encoder
+        .write_header()
+        .and_then(|mut w| w.write_image_data(&rgb))
+        .map_err(std::io::Error::other)?;
+    crate::fsutil::write_atomic(path, &bytes)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn colours_cycle_through_every_mode() {
+        let mut c = ColorMode::Natural;
+        let mut seen = vec![c];
+        for _ in 0..COLORS.len() - 1 {
+            c = next_color(c);
+            assert!(!seen.contains(&c));
+            seen.push(c);
+        }
+        assert_eq!(next_color(c), ColorMode::Natural);
+    }
+
+    #[test]
+    fn cragginess_steps_stay_in_range() {
+        assert_eq!(craggier(64), 128);
+        assert_eq!(craggier(128), 128);
+        assert_eq!(smoother(64), 32);
+        assert_eq!(smoother(1), 1);
+        assert_eq!(craggier(u32::MAX), 128);
+    }
+
+    #[test]
+    fn file_names_hold_date_time_and_seed() {
+        assert_eq!(file_stem(0, Some(7)), "mountain-1970-01-01-000000-seed-7");
+        // 2026-11-22 02:35:12 UTC
+        assert_eq!(file_stem(1_795_314_912, None), "mountain-2026-11-22-023512");
+        // Leap day.
+        assert!(file_stem(951_782_400, None).starts_with("mountain-2000-02-29-"));
+    }
+
+    #[test]
+    fn free_path_never_names_an_existing_file() {
+        let dir = std::env::temp_dir().join(format!("mountains-free-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(dir.join("a.png"), b"x").unwrap();
+        let p = free_path(&dir, "a", "png").unwrap();
+        assert_eq!(p, dir.join("a-2.png"));
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn screenshots_are_valid_pngs_of_the_frame() {
+        let mut frame = Frame::new(3, 2).unwrap();
+        frame.pixels_mut()[4] = 0x00ff_8001;
+        let path = std::env::temp_dir().join(format!("mountains-shot-{}.png", std::process::id()));
+        write_png(&path, &frame).unwrap();
+        let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(&path).unwrap()));
+        let mut reader = decoder.read_info().unwrap();
+        let mut buf = vec![0; reader.output_buffer_size().unwrap()];
+        let info = reader.next_frame(&mut buf).unwrap();
+        assert_eq!((info.width, info.height), (3, 2));
+        assert_eq!(&buf[12..15], &[0xff, 0x80, 0x01]);
+        std::fs::remove_file(&path).unwrap();
+    }
+}

@@ -1,0 +1,420 @@
+//! The winit modes: full screen on every monitor, the small preview, the
+//! normal window, and (Windows) the child of the Control Panel preview.
+
+use std::rc::Rc;
+use std::time::Instant;
+
+use winit::application::ApplicationHandler;
+use winit::dpi::PhysicalSize;
+use winit::event::{DeviceEvent, DeviceId, ElementState, WindowEvent};
+use winit::event_loop::{ActiveEventLoop, ControlFlow, DeviceEvents, EventLoop};
+use winit::keyboard::Key;
+use winit::monitor::MonitorHandle;
+use winit::window::{Window, WindowAttributes, WindowId, WindowLevel};
+
+use super::actions;
+use super::input::{Action, WakeDetector, action_for_key};
+use super::present::Presenter;
+use super::show::{Mountain, Show};
+use super::slideshow::Pacing;
+use super::{SaverError, Trace};
+use crate::render::Rect;
+use crate::settings::{Monitors, Settings};
+
+/// Which kind of winit window to run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum AppMode {
+    /// One borderless window per monitor; input ends it.
+    Fullscreen,
+    /// A small stand-alone window (`/p` without a parent).
+    Preview,
+    /// A normal resizable window with the keyboard commands.
+    Window,
+    /// A child of a Windows window (`/p HWND`), following its size.
+    #[cfg(windows)]
+    Child(u64),
+}
+
+/// Size of the stand-alone preview: the Control Panel's little monitor, doubled.
+const PREVIEW_SIZE: PhysicalSize<u32> = PhysicalSize::new(320, 240);
+/// First size of the normal window.
+const WINDOW_SIZE: PhysicalSize<u32> = PhysicalSize::new(960, 600);
+
+/// Wakes the event loop from other threads.
+#[derive(Debug, Clone, Copy)]
+enum UserEvent {
+    /// SIGTERM or SIGINT arrived.
+    Terminate,
+}
+
+/// One window and the slide show drawn in it.
+struct Screen {
+    window: Rc<Window>,
+    presenter: Presenter<Rc<Window>>,
+    show: Show,
+}
+
+/// Runs `mode` with winit until it ends.
+pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Result<(), SaverError> {
+    #[cfg(unix)]
+    check_x11()?;
+    let event_loop = EventLoop::<UserEvent>::with_user_event()
+        .build()
+        .map_err(|e| SaverError::NoDisplay(e.to_string()))?;
+    // Without a window manager our windows never get keyboard focus, so the
+    // full-screen saver listens to raw device input instead.
+    event_loop.listen_device_events(match mode {
+        AppMode::Fullscreen => DeviceEvents::Always,
+        _ => DeviceEvents::Never,
+    });
+    let proxy = event_loop.create_proxy();
+    super::signals::on_terminate(move || {
+        let _ = proxy.send_event(UserEvent::Terminate);
+    })
+    .map_err(|e| SaverError::Other(format!("cannot watch for SIGTERM: {e}")))?;
+    let mut app = App {
+        mode,
+        settings,
+        opened,
+        screens: Vec::new(),
+        wake: WakeDetector::new(),
+        error: None,
+        trace: Trace::from_env(),
+        started: false,
+    };
+    event_loop
+        .run_app(&mut app)
+        .map_err(|e| SaverError::Other(e.to_string()))?;
+    app.error.map_or(Ok(()), Err)
+}
+
+/// `$DISPLAY` and the libraries winit loads, checked before winit panics on them.
+#[cfg(unix)]
+fn check_x11() -> Result<(), SaverError> {
+    if std::env::var_os("DISPLAY").is_none_or(|d| d.is_empty()) {
+        return Err(SaverError::NoDisplay("DISPLAY is not set".into()));
+    }
+    use super::libcheck::{X11_LIBRARIES, can_dlopen, first_missing};
+    match first_missing(X11_LIBRARIES, can_dlopen) {
+        Some((library, package)) => Err(SaverError::MissingLibrary {
+            library: library.into(),
+            package: package.into(),
+        }),
+        None => Ok(()),
+    }
+}
+
+struct App {
+    mode: AppMode,
+    settings: Settings,
+    opened: Option<Mountain>,
+    screens: Vec<Screen>,
+    wake: WakeDetector,
+    error: Option<SaverError>,
+    trace: Trace,
+    started: bool,
+}
+
+impl ApplicationHandler<UserEvent> for App {
+    fn resumed(&mut self, event_loop: &ActiveEventLoop) {
+        if std::mem::replace(&mut self.started, true) {
+            return;
+        }
+        if let Err(e) = self.open_windows(event_loop) {
+            self.fail(event_loop, e);
+        }
+    }
+
+    fn window_event(&mut self, event_loop: &ActiveEventLoop, id: WindowId, event: WindowEvent) {
+        let Some(i) = self.screens.iter().position(|s| s.window.id() == id) else {
+            return;
+        };
+        match event {
+            WindowEvent::CloseRequested | WindowEvent::Destroyed => event_loop.exit(),
+            WindowEvent::Resized(size) => self.resize(event_loop, i, size),
+            WindowEvent::RedrawRequested => self.present_all(event_loop, i),
+            WindowEvent::KeyboardInput { event, .. }
+                if event.state == ElementState::Pressed && !event.repeat =>
+            {
+                self.key(event_loop, i, &event.logical_key)
+            }
+            WindowEvent::MouseInput {
+                state: ElementState::Pressed,
+                ..
+            } if self.mode == AppMode::Fullscreen => event_loop.exit(),
+            _ => {}
+        }
+    }
+
+    fn device_event(&mut self, event_loop: &ActiveEventLoop, _: DeviceId, event: DeviceEvent) {
+        if self.mode == AppMode::Fullscreen && self.wake.device_event(&event) {
+            event_loop.exit();
+        }
+    }
+
+    fn user_event(&mut self, event_loop: &ActiveEventLoop, event: UserEvent) {
+        match event {
+            UserEvent::Terminate => event_loop.exit(),
+        }
+    }
+
+    fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
+        let now = Instant::now();
+        for i in 0..self.screens.len() {
+            let damage = self.screens[i].show.tick(now);
+            self.present(event_loop, i, damage);
+        }
+        #[cfg(windows)]
+        if let AppMode::Child(parent) = self.mode {
+            self.follow_parent(event_loop, parent);
+        }
+        let wake = self.screens.iter().filter_map(|s| s.show.wake_at(now)).min();
+        #[cfg(windows)]
+        let wake = match self.mode {
+            AppMode::Child(_) => Some(wake.map_or(now + super::embed_win32::PARENT_POLL, |w| {
+                w.min(now + super::embed_win32::PARENT_POLL)
+            })),
+            _ => wake,
+        };
+        event_loop.set_control_flow(wake.map_or(ControlFlow::Wait, ControlFlow::WaitUntil));
+    }
+}
+
+impl App {
+    fn fail(&mut self, event_loop: &ActiveEventLoop, error: SaverError) {
+        self.error.get_or_insert(error);
+        event_loop.exit();
+    }
+
+    fn open_windows(&mut self, event_loop: &ActiveEventLoop) -> Result<(), SaverError> {
+        let base = Window::default_attributes().with_title("mountains");
+        match self.mode {
+            AppMode::Fullscreen => self.open_fullscreen(event_loop, base),
+            AppMode::Preview => {
+                let attrs = base.with_inner_size(PREVIEW_SIZE).with_resizable(false);
+                self.add_screen(event_loop, attrs, true)
+            }
+            AppMode::Window => self.add_screen(event_loop, base.with_inner_size(WINDOW_SIZE), true),
+            #[cfg(windows)]
+            AppMode::Child(parent) => {
+                let attrs = super::embed_win32::child_attributes(base, parent)?;
+                self.add_screen(event_loop, attrs, true)
+            }
+        }
+    }
+
+    /// One borderless window per monitor; with `Monitors::Primary` the
+    /// others stay black.
+    fn open_fullscreen(
+        &mut self,
+        event_loop: &ActiveEventLoop,
+        base: WindowAttributes,
+    ) -> Result<(), SaverError> {
+        let monitors: Vec<MonitorHandle> = event_loop.available_monitors().collect();
+        let primary = event_loop.primary_monitor().or_else(|| monitors.first().cloned());
+        if monitors.is_empty() {
+            let attrs = base
+                .with_decorations(false)
+                .with_fullscreen(Some(winit::window::Fullscreen::Borderless(None)));
+            return self.add_screen(event_loop, attrs, true);
+        }
+        for monitor in monitors {
+            let mountain =
+                self.settings.monitors == Monitors::All || Some(&monitor) == primary.as_ref();
+            let attrs = covering(base.clone(), &monitor);
+            self.add_screen(event_loop, attrs, mountain)?;
+        }
+        Ok(())
+    }
+
+    fn add_screen(
+        &mut self,
+        event_loop: &ActiveEventLoop,
+        attrs: WindowAttributes,
+        mountain: bool,
+    ) -> Result<(), SaverError> {
+        let window = event_loop
+            .create_window(attrs)
+            .map_err(|e| SaverError::Other(format!("cannot create a window: {e}")))?;
+        let window = Rc::new(window);
+        if self.mode == AppMode::Fullscreen {
+            window.set_cursor_visible(false);
+        }
+        let size = window.inner_size();
+        let size = (size.width, size.height);
+        let presenter = Presenter::new(window.clone())
+            .map_err(|e| SaverError::Other(format!("cannot draw in the window: {e}")))?;
+        let now = Instant::now();
+        let show = if mountain {
+            let pacing = Pacing::from_seconds(
+                self.settings.draw_seconds,
+                self.settings.pause_seconds,
+                self.mode != AppMode::Window || self.settings.auto_redraw,
+            );
+            Show::new(self.settings.clone(), self.opened.clone(), pacing, size, now)
+        } else {
+            Show::blank(size, now)
+        };
+        self.screens.push(Screen {
+            window,
+            presenter,
+            show,
+        });
+        let i = self.screens.len() - 1;
+        self.update_title(i);
+        self.present_all(event_loop, i);
+        Ok(())
+    }
+
+    fn resize(&mut self, event_loop: &ActiveEventLoop, i: usize, size: PhysicalSize<u32>) {
+        let screen = &mut self.screens[i];
+        let current = screen.show.frame().map(|f| (f.width(), f.height()));
+        if current == Some((size.width, size.height)) {
+            return;
+        }
+        let damage = screen.show.resize((size.width, size.height), Instant::now());
+        self.present(event_loop, i, damage);
+    }
+
+    fn present_all(&mut self, event_loop: &ActiveEventLoop, i: usize) {
+        let bounds = self.screens[i].show.frame().map(|f| f.bounds());
+        self.present(event_loop, i, bounds.unwrap_or_default());
+    }
+
+    fn present(&mut self, event_loop: &ActiveEventLoop, i: usize, damage: Rect) {
+        if damage.is_empty() {
+            return;
+        }
+        let screen = &mut self.screens[i];
+        let Some(frame) = screen.show.frame() else {
+            return;
+        };
+        match screen.presenter.present(frame, damage) {
+            Ok(()) => self.trace.presented(),
+            Err(e) => self.fail(event_loop, SaverError::Other(format!("cannot present: {e}"))),
+        }
+    }
+
+    fn key(&mut self, event_loop: &ActiveEventLoop, i: usize, key: &Key) {
+        if self.mode == AppMode::Fullscreen {
+            event_loop.exit();
+            return;
+        }
+        if let Some(action) = action_for_key(key) {
+            self.act(event_loop, i, action);
+        }
+    }
+
+    fn act(&mut self, event_loop: &ActiveEventLoop, i: usize, action: Action) {
+        let now = Instant::now();
+        let show = &mut self.screens[i].show;
+        let mut settings = show.settings().clone();
+        let damage = match action {
+            Action::Quit => {
+                event_loop.exit();
+                return;
+            }
+            Action::NewMountain => show.advance(now),
+            Action::TogglePause => {
+                show.toggle_pause(now);
+                Rect::default()
+            }
+            Action::SaveDataSet => {
+                report(show.current().map(|m| actions::save_data_set(m, &settings)), "data set");
+                Rect::default()
+            }
+            Action::Screenshot => {
+                let seed = show.current().and_then(|m| m.seed);
+                report(show.frame().map(|f| actions::save_screenshot(f, seed)), "screenshot");
+                Rect::default()
+            }
+            Action::NextColor | Action::ToggleRelativeDepth => {
+                if action == Action::NextColor {
+                    settings.color = actions::next_color(settings.color);
+                } else {
+                    settings.relative_depth = !settings.relative_depth;
+                }
+                show.change_settings(settings, true, now)
+            }
+            Action::ToggleLowDetail | Action::MoreCraggy | Action::LessCraggy => {
+                match action {
+                    Action::ToggleLowDetail => settings.low_detail = !settings.low_detail,
+                    Action::MoreCraggy => settings.cragginess = actions::craggier(settings.cragginess),
+                    _ => settings.cragginess = actions::smoother(settings.cragginess),
+                }
+                show.change_settings(settings, false, now)
+            }
+        };
+        self.update_title(i);
+        self.present(event_loop, i, damage);
+    }
+
+    /// The window title tells the seed (to reproduce a mountain) and the state.
+    fn update_title(&self, i: usize) {
+        if self.mode != AppMode::Window {
+            return;
+        }
+        let screen = &self.screens[i];
+        let s = screen.show.settings();
+        let seed = screen.show.current().and_then(|m| m.seed);
+        let mut title = match seed {
+            Some(seed) => format!("mountains: seed {seed}"),
+            None => "mountains".to_string(),
+        };
+        title.push_str(&format!(", {:?}, cragginess {}", s.color, s.cragginess));
+        if s.low_detail {
+            title.push_str(", low detail");
+        }
+        if screen.show.is_paused() {
+            title.push_str(", paused");
+        }
+        screen.window.set_title(&title);
+    }
+
+    /// The preview child follows its parent's size and dies with it.
+    #[cfg(windows)]
+    fn follow_parent(&mut self, event_loop: &ActiveEventLoop, parent: u64) {
+        use super::embed_win32::{parent_alive, parent_client_size};
+        if !parent_alive(parent) {
+            event_loop.exit();
+            return;
+        }
+        if let (Some((w, h)), Some(screen)) = (parent_client_size(parent), self.screens.first()) {
+            let size = screen.window.inner_size();
+            if (size.width, size.height) != (w, h) {
+                let _ = screen.window.request_inner_size(PhysicalSize::new(w, h));
+            }
+        }
+    }
+}
+
+/// Window attributes covering `monitor` exactly, above everything else.
+fn covering(base: WindowAttributes, monitor: &MonitorHandle) -> WindowAttributes {
+    let attrs = base
+        .with_decorations(false)
+        .with_window_level(WindowLevel::AlwaysOnTop);
+    #[cfg(windows)]
+    let attrs = attrs.with_fullscreen(Some(winit::window::Fullscreen::Borderless(Some(
+        monitor.clone(),
+    ))));
+    #[cfg(unix)]
+    let attrs = {
+        // Works with and without a window manager: override-redirect windows
+        // are placed exactly where asked.
+        use winit::platform::x11::WindowAttributesExtX11;
+        attrs
+            .with_override_redirect(true)
+            .with_position(monitor.position())
+            .with_inner_size(monitor.size())
+    };
+    attrs
+}
+
+/// Tells the person where a file went, or why it did not.
+fn report(result: Option<Result<std::path::PathBuf, String>>, what: &str) {
+    match result {
+        Some(Ok(path)) => eprintln!("mountains: saved the {what} as {}", path.display()),
+        Some(Err(e)) => crate::log::warn(&format!("could not save the {what}: {e}")),
+        None => crate::log::warn(&format!("no {what} to save yet")),
+    }
+}

@@ -1,0 +1,186 @@
+//! What input means: window-mode keys to actions, and what ends the full-screen saver.
+
+use winit::event::{DeviceEvent, ElementState};
+use winit::keyboard::{Key, NamedKey};
+
+/// Something a key asks the window mode to do.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Action {
+    /// N: start a new mountain now.
+    NewMountain,
+    /// Space: pause or resume the drawing and the slide show.
+    TogglePause,
+    /// S: save the current data set into the data directory.
+    SaveDataSet,
+    /// P: save a PNG screenshot into the data directory.
+    Screenshot,
+    /// C: the next colour mode (redraws at once).
+    NextColor,
+    /// D: relative water depth on or off (redraws at once).
+    ToggleRelativeDepth,
+    /// L: low detail on or off (next mountain).
+    ToggleLowDetail,
+    /// +: more cragginess (next mountain).
+    MoreCraggy,
+    /// -: less cragginess (next mountain).
+    LessCraggy,
+    /// Esc, Q: quit.
+    Quit,
+}
+
+/// The action a key press asks for in window mode, if any.
+pub fn action_for_key(key: &Key) -> Option<Action> {
+    match key {
+        Key::Named(NamedKey::Escape) => Some(Action::Quit),
+        Key::Named(NamedKey::Space) => Some(Action::TogglePause),
+        Key::Character(text) => action_for_char(text.chars().next()?),
+        _ => None,
+    }
+}
+
+fn action_for_char(c: char) -> Option<Action> {
+    match c.to_ascii_lowercase() {
+        'n' => Some(Action::NewMountain),
+        ' ' => Some(Action::TogglePause),
+        's' => Some(Action::SaveDataSet),
+        'p' => Some(Action::Screenshot),
+        'c' => Some(Action::NextColor),
+        'd' => Some(Action::ToggleRelativeDepth),
+        'l' => Some(Action::ToggleLowDetail),
+        // '=' is + without Shift on most layouts.
+        '+' | '=' => Some(Action::MoreCraggy),
+        '-' | '_' => Some(Action::LessCraggy),
+        'q' => Some(Action::Quit),
+        _ => None,
+    }
+}
+
+/// Net pointer travel, in pixels, that counts as the user coming back.
+/// Small enough for a deliberate nudge, larger than a desk vibration.
+pub const MOTION_THRESHOLD: f64 = 10.0;
+
+/// Decides when raw device input ends the full-screen saver: any key or
+/// button press, a wheel turn, or net pointer travel beyond `MOTION_THRESHOLD`.
+#[derive(Debug, Clone, Default)]
+pub struct WakeDetector {
+    dx: f64,
+    dy: f64,
+}
+
+impl WakeDetector {
+    /// A detector that has seen nothing yet.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Feeds one device event; true when it ends the saver.
+    pub fn device_event(&mut self, event: &DeviceEvent) -> bool {
+        match event {
+            DeviceEvent::Key(raw) => raw.state == ElementState::Pressed,
+            DeviceEvent::Button { state, .. } => *state == ElementState::Pressed,
+            DeviceEvent::MouseWheel { .. } => true,
+            DeviceEvent::MouseMotion { delta } => self.moved(delta.0, delta.1),
+            _ => false,
+        }
+    }
+
+    /// Adds relative pointer motion; true once the net travel passes the threshold.
+    pub fn moved(&mut self, dx: f64, dy: f64) -> bool {
+        if !dx.is_finite() || !dy.is_finite() {
+            return false;
+        }
+        self.dx += dx;
+        self.dy += dy;
+        self.dx.hypot(self.dy) > MOTION_THRESHOLD
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use winit::event::RawKeyEvent;
+    use winit::keyboard::{KeyCode, PhysicalKey};
+
+    fn ch(s: &str) -> Key {
+        Key::Character(s.into())
+    }
+
+    #[test]
+    fn window_keys_map_to_their_actions() {
+        let cases = [
+            ("n", Action::NewMountain),
+            ("N", Action::NewMountain),
+            ("s", Action::SaveDataSet),
+            ("p", Action::Screenshot),
+            ("c", Action::NextColor),
+            ("d", Action::ToggleRelativeDepth),
+            ("l", Action::ToggleLowDetail),
+            ("+", Action::MoreCraggy),
+            ("=", Action::MoreCraggy),
+            ("-", Action::LessCraggy),
+            ("q", Action::Quit),
+            ("Q", Action::Quit),
+        ];
+        for (text, action) in cases {
+            assert_eq!(action_for_key(&ch(text)), Some(action), "key {text}");
+        }
+        assert_eq!(
+            action_for_key(&Key::Named(NamedKey::Escape)),
+            Some(Action::Quit)
+        );
+        assert_eq!(
+            action_for_key(&Key::Named(NamedKey::Space)),
+            Some(Action::TogglePause)
+        );
+    }
+
+    #[test]
+    fn other_keys_do_nothing() {
+        assert_eq!(action_for_key(&ch("x")), None);
+        assert_eq!(action_for_key(&ch("")), None);
+        assert_eq!(action_for_key(&Key::Named(NamedKey::F1)), None);
+    }
+
+    #[test]
+    fn jitter_does_not_wake_but_a_real_move_does() {
+        let mut w = WakeDetector::new();
+        for _ in 0..100 {
+            assert!(!w.moved(3.0, -2.0));
+            assert!(!w.moved(-3.0, 2.0));
+        }
+        assert!(!w.moved(6.0, 0.0));
+        assert!(w.moved(5.0, 0.0));
+    }
+
+    #[test]
+    fn slow_steady_motion_adds_up() {
+        let mut w = WakeDetector::new();
+        let woke = (0..20).map(|_| w.moved(0.0, 1.0)).position(|b| b);
+        assert_eq!(woke, Some(10));
+    }
+
+    #[test]
+    fn presses_wake_and_releases_do_not() {
+        let mut w = WakeDetector::new();
+        let key = |state| {
+            DeviceEvent::Key(RawKeyEvent {
+                physical_key: PhysicalKey::Code(KeyCode::KeyA),
+                state,
+            })
+        };
+        assert!(!w.device_event(&key(ElementState::Released)));
+        assert!(w.device_event(&key(ElementState::Pressed)));
+        let button = |state| DeviceEvent::Button { button: 1, state };
+        assert!(!w.device_event(&button(ElementState::Released)));
+        assert!(w.device_event(&button(ElementState::Pressed)));
+        assert!(!w.device_event(&DeviceEvent::Added));
+    }
+
+    #[test]
+    fn nonsense_motion_is_ignored() {
+        let mut w = WakeDetector::new();
+        assert!(!w.moved(f64::NAN, 0.0));
+        assert!(!w.moved(f64::INFINITY, 0.0));
+        assert!(!w.moved(1.0, 0.0));
+    }
+}

@@ -1,0 +1,168 @@
+//! Putting a `Frame` on a window: softbuffer with damage rectangles, and a
+//! fallback for X servers where that fails or cannot work well.
+
+use std::num::NonZeroU32;
+
+use raw_window_handle::{HasDisplayHandle, HasWindowHandle, RawWindowHandle};
+use softbuffer::{Context, Surface};
+
+use crate::render::{Frame, Rect};
+
+#[cfg(unix)]
+use super::bands_x11::BandPresenter;
+
+/// Presents frames on one window, choosing the path that works on this server.
+pub struct Presenter<W: HasWindowHandle + HasDisplayHandle + Clone> {
+    surface: Surface<W, W>,
+    xid: Option<u32>,
+    #[cfg(unix)]
+    bands: Option<BandPresenter>,
+}
+
+/// The X11 window id behind a window handle, if it is an X11 window.
+pub fn x11_window_id(window: &impl HasWindowHandle) -> Option<u32> {
+    match window.window_handle().ok()?.as_raw() {
+        RawWindowHandle::Xlib(h) => u32::try_from(h.window).ok(),
+        RawWindowHandle::Xcb(h) => Some(h.window.get()),
+        _ => None,
+    }
+}
+
+impl<W: HasWindowHandle + HasDisplayHandle + Clone> Presenter<W> {
+    /// Prepares presenting on `window`.
+    pub fn new(window: W) -> Result<Self, String> {
+        let context = Context::new(window.clone()).map_err(|e| e.to_string())?;
+        let xid = x11_window_id(&window);
+        let surface = Surface::new(&context, window).map_err(|e| e.to_string())?;
+        let mut presenter = Presenter {
+            surface,
+            xid,
+            #[cfg(unix)]
+            bands: None,
+        };
+        presenter.avoid_wire_transfers();
+        Ok(presenter)
+    }
+
+    /// Shows the pixels of `damage` (the whole frame if the window lost its
+    /// previous contents). Switches to the fallback once, with a warning,
+    /// if softbuffer fails.
+    pub fn present(&mut self, frame: &Frame, damage: Rect) -> Result<(), String> {
+        #[cfg(unix)]
+        if let Some(bands) = self.bands.as_mut() {
+            return bands.present(frame, damage);
+        }
+        match present_soft(&mut self.surface, frame, damage) {
+            Ok(()) => Ok(()),
+            Err(e) => self.fall_back(frame, e.to_string()),
+        }
+    }
+
+    /// Without MIT-SHM softbuffer sends the whole frame in one request on
+    /// every present: too slow, and over the request limit for 4K frames.
+    fn avoid_wire_transfers(&mut self) {
+        #[cfg(unix)]
+        if let Some(xid) = self.xid {
+            let Ok((conn, _)) = x11rb::rust_connection::RustConnection::connect(None) else {
+                return;
+            };
+            if super::bands_x11::server_has_shm(&conn) {
+                return;
+            }
+            if let Ok(bands) = BandPresenter::with_connection(conn, xid) {
+                crate::log::warn(
+                    "the X server has no MIT-SHM: sending only the changed bands of each frame",
+                );
+                self.bands = Some(bands);
+            }
+        }
+    }
+
+    #[cfg_attr(not(unix), allow(unused_variables))]
+    fn fall_back(&mut self, frame: &Frame, problem: String) -> Result<(), String> {
+        #[cfg(unix)]
+        if let Some(xid) = self.xid {
+            let mut bands = BandPresenter::connect(xid)?;
+            bands.present(frame, frame.bounds())?;
+            crate::log::warn(&format!(
+                "presenting a {}x{} frame failed ({problem}); presenting in bands instead",
+                frame.width(),
+                frame.height()
+            ));
+            self.bands = Some(bands);
+            return Ok(());
+        }
+        Err(problem)
+    }
+}
+
+fn present_soft<W: HasWindowHandle + HasDisplayHandle>(
+    surface: &mut Surface<W, W>,
+    frame: &Frame,
+    damage: Rect,
+) -> Result<(), softbuffer::SoftBufferError> {
+    let (Some(w), Some(h)) = (NonZeroU32::new(frame.width()), NonZeroU32::new(frame.height()))
+    else {
+        return Ok(());
+    };
+    surface.resize(w, h)?;
+    let mut buffer = surface.buffer_mut()?;
+    // Age 0: the buffer is new or was not presented, so it holds nothing of ours.
+    let rect = if buffer.age() == 0 {
+        frame.bounds()
+    } else {
+        clip(damage, frame)
+    };
+    if rect.is_empty() {
+        return Ok(());
+    }
+    copy_rect(frame, &mut buffer, rect);
+    buffer.present_with_damage(&[softbuffer::Rect {
+        x: rect.x0,
+        y: rect.y0,
+        width: NonZeroU32::new(rect.x1 - rect.x0).unwrap_or(w),
+        height: NonZeroU32::new(rect.y1 - rect.y0).unwrap_or(h),
+    }])
+}
+
+fn clip(damage: Rect, frame: &Frame) -> Rect {
+    Rect {
+        x0: damage.x0.min(frame.width()),
+        y0: damage.y0.min(frame.height()),
+        x1: damage.x1.min(frame.width()),
+        y1: damage.y1.min(frame.height()),
+    }
+}
+
+/// Copies the rows of `rect` from `frame` into a buffer of the same size.
+fn copy_rect(frame: &Frame, target: &mut [u32], rect: Rect) {
+    let stride = frame.width() as usize;
+    let (x0, x1) = (rect.x0 as usize, rect.x1 as usize);
+    for y in rect.y0 as usize..rect.y1 as usize {
+        let row = y * stride;
+        target[row + x0..row + x1].copy_from_slice(&frame.pixels()[row + x0..row + x1]);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn copy_rect_copies_only_the_rectangle() {
+        let mut frame = Frame::new(4, 3).unwrap();
+        for (i, p) in frame.pixels_mut().iter_mut().enumerate() {
+            *p = i as u32 + 1;
+        }
+        let mut target = vec![0u32; 12];
+        copy_rect(&frame, &mut target, Rect { x0: 1, y0: 1, x1: 3, y1: 3 });
+        assert_eq!(target, vec![0, 0, 0, 0, 0, 6, 7, 0, 0, 10, 11, 0]);
+    }
+
+    #[test]
+    fn damage_is_clipped_to_the_frame() {
+        let frame = Frame::new(4, 3).unwrap();
+        let r = clip(Rect { x0: 2, y0: 1, x1: 9, y1: 9 }, &frame);
+        assert_eq!(r, Rect { x0: 2, y0: 1, x1: 4, y1: 3 });
+    }
+}

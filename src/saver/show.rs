@@ -1,0 +1,346 @@
+//! One window's slide show: its frame, the mountain being drawn, the next one
+//! being generated in the background. Knows nothing about windows.
+
+use std::sync::Arc;
+use std::thread::JoinHandle;
+use std::time::Instant;
+
+use super::slideshow::{Due, Pacing, Slideshow};
+use crate::render::palette::Palette;
+use crate::render::{Frame, Painter, Rect};
+use crate::settings::Settings;
+use crate::terrain::{self, Heightfield};
+
+/// A mountain ready to draw and the seed that made it (none for a foreign heightmap).
+#[derive(Debug, Clone)]
+pub struct Mountain {
+    /// The heights.
+    pub field: Arc<Heightfield>,
+    /// The seed that generated them, when known.
+    pub seed: Option<u64>,
+}
+
+impl Mountain {
+    /// Generates a mountain from `settings`, with its seed or a fresh random one.
+    pub fn generate(settings: &Settings) -> Self {
+        let seed = settings.seed.unwrap_or_else(rand::random);
+        Mountain {
+            field: Arc::new(terrain::generate(settings, seed)),
+            seed: Some(seed),
+        }
+    }
+}
+
+/// Where the next mountain comes from.
+enum Next {
+    /// Nothing prepared yet.
+    None,
+    /// Being generated on another thread with the settings of the moment.
+    Pending(JoinHandle<Mountain>),
+}
+
+/// The slide show of one window: what is on screen and what comes next.
+pub struct Show {
+    settings: Settings,
+    /// A data set opened by the user: shown every time instead of generating.
+    opened: Option<Mountain>,
+    current: Option<Mountain>,
+    next: Next,
+    frame: Option<Frame>,
+    painter: Option<Painter>,
+    slideshow: Slideshow,
+}
+
+impl Show {
+    /// A show of `width` x `height` pixels that starts drawing its first
+    /// mountain (`opened`, or a generated one) at `now`.
+    pub fn new(
+        settings: Settings,
+        opened: Option<Mountain>,
+        pacing: Pacing,
+        size: (u32, u32),
+        now: Instant,
+    ) -> Self {
+        let first = opened
+            .clone()
+            .unwrap_or_else(|| Mountain::generate(&settings));
+        let mut show = Show {
+            settings,
+            opened,
+            current: Some(first),
+            next: Next::None,
+            frame: None,
+            painter: None,
+            slideshow: Slideshow::new(pacing, 0, now),
+        };
+        show.start_drawing(size, now);
+        show
+    }
+
+    /// A black show that never draws a mountain (a monitor left blank).
+    pub fn blank(size: (u32, u32), now: Instant) -> Self {
+        let pacing = Pacing::from_seconds(0.0, 0.0, false);
+        Show {
+            settings: Settings::default(),
+            opened: None,
+            current: None,
+            next: Next::None,
+            frame: Frame::new(size.0, size.1),
+            painter: None,
+            slideshow: Slideshow::new(pacing, 0, now),
+        }
+    }
+
+    /// The pixels to present; `None` while the window has no area.
+    pub fn frame(&self) -> Option<&Frame> {
+        self.frame.as_ref()
+    }
+
+    /// The mountain on screen, if any.
+    pub fn current(&self) -> Option<&Mountain> {
+        self.current.as_ref()
+    }
+
+    /// The settings this show draws with.
+    pub fn settings(&self) -> &Settings {
+        &self.settings
+    }
+
+    /// When this show next needs `tick`; `None`: not until an event arrives.
+    pub fn wake_at(&self, now: Instant) -> Option<Instant> {
+        self.painter.as_ref()?;
+        self.slideshow.wake_at(now)
+    }
+
+    /// Does what is due at `now` and returns the rectangle that changed.
+    pub fn tick(&mut self, now: Instant) -> Rect {
+        let (Some(painter), Some(frame)) = (self.painter.as_mut(), self.frame.as_mut()) else {
+            return Rect::default();
+        };
+        match self.slideshow.due(now) {
+            Due::Wait => Rect::default(),
+            Due::Draw(strips) => {
+                let damage = painter.step(frame, strips);
+                self.slideshow.drew(strips, now);
+                if painter.is_done() && !self.slideshow.is_holding() {
+                    self.slideshow.finish_now(now);
+                }
+                if self.slideshow.is_holding() {
+                    self.prepare_next();
+                }
+                damage
+            }
+            Due::Advance => self.advance(now),
+        }
+    }
+
+    /// Starts the next mountain now (the N key, or the end of a hold).
+    pub fn advance(&mut self, now: Instant) -> Rect {
+        if self.current.is_none() {
+            return Rect::default();
+        }
+        let next = match std::mem::replace(&mut self.next, Next::None) {
+            Next::Pending(handle) => handle.join().ok(),
+            Next::None => None,
+        };
+        self.current = Some(next.unwrap_or_else(|| self.make_next_now()));
+        let size = self.size();
+        self.start_drawing(size, now)
+    }
+
+    /// Fits the show to a new window size and redraws the mountain fully at once.
+    pub fn resize(&mut self, size: (u32, u32), now: Instant) -> Rect {
+        if self.current.is_none() {
+            self.frame = Frame::new(size.0, size.1);
+            return self.frame.as_ref().map(Frame::bounds).unwrap_or_default();
+        }
+        self.start_drawing(size, now);
+        self.redraw_now(now)
+    }
+
+    /// Pauses or resumes the drawing and the hold.
+    pub fn toggle_pause(&mut self, now: Instant) {
+        self.slideshow.toggle_pause(now);
+    }
+
+    /// True while paused.
+    pub fn is_paused(&self) -> bool {
+        self.slideshow.is_paused()
+    }
+
+    /// Applies new settings. `redraw`: they change how the current mountain
+    /// looks (colours), so it is redrawn at once; otherwise they change the
+    /// terrain, so only the next mountain uses them.
+    pub fn change_settings(&mut self, settings: Settings, redraw: bool, now: Instant) -> Rect {
+        self.settings = settings;
+        // A mountain generated with the old settings would ignore the change.
+        self.next = Next::None;
+        if self.slideshow.is_holding() {
+            self.prepare_next();
+        }
+        if redraw && self.current.is_some() {
+            let size = self.size();
+            self.start_drawing(size, now);
+            return self.redraw_now(now);
+        }
+        Rect::default()
+    }
+
+    fn size(&self) -> (u32, u32) {
+        self.frame
+            .as_ref()
+            .map_or((0, 0), |f| (f.width(), f.height()))
+    }
+
+    /// Clears the frame (made at `size`) and plans drawing the current mountain into it.
+    fn start_drawing(&mut self, size: (u32, u32), now: Instant) -> Rect {
+        let Some(mountain) = self.current.as_ref() else {
+            return Rect::default();
+        };
+        if self.frame.as_ref().map(|f| (f.width(), f.height())) != Some(size) {
+            // Free the old pixels before allocating the new ones: peak memory.
+            self.frame = None;
+            self.frame = Frame::new(size.0, size.1);
+        }
+        let Some(frame) = self.frame.as_mut() else {
+            self.painter = None;
+            return Rect::default();
+        };
+        frame.clear(Palette::new(&self.settings, &mountain.field).sky());
+        let painter = Painter::new(mountain.field.clone(), &self.settings, size.0, size.1);
+        self.slideshow.restart(painter.strips_total(), now);
+        self.painter = Some(painter);
+        frame.bounds()
+    }
+
+    /// Draws every remaining strip now and starts the hold.
+    fn redraw_now(&mut self, now: Instant) -> Rect {
+        let (Some(painter), Some(frame)) = (self.painter.as_mut(), self.frame.as_mut()) else {
+            return Rect::default();
+        };
+        painter.step(frame, usize::MAX);
+        let bounds = frame.bounds();
+        self.slideshow.finish_now(now);
+        self.prepare_next();
+        bounds
+    }
+
+    /// Starts generating the next mountain in the background, once per hold.
+    fn prepare_next(&mut self) {
+        if !matches!(self.next, Next::None) || self.opened.is_some() {
+            return;
+        }
+        let settings = self.settings.clone();
+        let spawned = std::thread::Builder::new()
+            .name("generate".into())
+            .spawn(move || Mountain::generate(&settings));
+        // Without a thread the mountain is generated when it is needed.
+        if let Ok(handle) = spawned {
+            self.next = Next::Pending(handle);
+        }
+    }
+
+    fn make_next_now(&self) -> Mountain {
+        match &self.opened {
+            Some(m) => m.clone(),
+            None => Mountain::generate(&self.settings),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::time::Duration;
+
+    fn small_settings() -> Settings {
+        Settings {
+            detail: 5,
+            seed: Some(7),
+            ..Settings::default()
+        }
+    }
+
+    fn pacing() -> Pacing {
+        Pacing::from_seconds(1.0, 2.0, true)
+    }
+
+    #[test]
+    fn draws_over_time_then_holds_then_advances() {
+        let t0 = Instant::now();
+        let mut show = Show::new(small_settings(), None, pacing(), (64, 48), t0);
+        assert!(!show.tick(t0).is_empty());
+        let half = show.tick(t0 + Duration::from_millis(500));
+        assert!(!half.is_empty());
+        show.tick(t0 + Duration::from_millis(1000));
+        assert_eq!(
+            show.wake_at(t0 + Duration::from_millis(1000)),
+            Some(t0 + Duration::from_millis(3000))
+        );
+        assert!(show.tick(t0 + Duration::from_millis(2000)).is_empty());
+        let next = show.tick(t0 + Duration::from_millis(3000));
+        assert_eq!(next, Rect { x0: 0, y0: 0, x1: 64, y1: 48 });
+        assert_eq!(show.current().and_then(|m| m.seed), Some(7));
+    }
+
+    #[test]
+    fn resize_redraws_fully_at_the_new_size() {
+        let t0 = Instant::now();
+        let mut show = Show::new(small_settings(), None, pacing(), (64, 48), t0);
+        let damage = show.resize((100, 30), t0);
+        assert_eq!(damage, Rect { x0: 0, y0: 0, x1: 100, y1: 30 });
+        let frame = show.frame().expect("frame");
+        assert_eq!((frame.width(), frame.height()), (100, 30));
+        let mut full = Frame::new(100, 30).unwrap();
+        let m = show.current().unwrap();
+        full.clear(Palette::new(show.settings(), &m.field).sky());
+        crate::render::render_full(&m.field, show.settings(), &mut full);
+        assert_eq!(frame.pixels(), full.pixels());
+    }
+
+    #[test]
+    fn zero_size_has_no_frame_and_does_not_panic() {
+        let t0 = Instant::now();
+        let mut show = Show::new(small_settings(), None, pacing(), (0, 0), t0);
+        assert!(show.frame().is_none());
+        assert!(show.tick(t0 + Duration::from_secs(5)).is_empty());
+        assert!(!show.resize((10, 10), t0).is_empty());
+    }
+
+    #[test]
+    fn an_opened_data_set_is_shown_again_instead_of_generating() {
+        let t0 = Instant::now();
+        let mut field = Heightfield::flat(4, 100.0);
+        field.set(3, 3, 42.0);
+        let opened = Mountain {
+            field: Arc::new(field),
+            seed: None,
+        };
+        let mut show = Show::new(small_settings(), Some(opened), pacing(), (32, 32), t0);
+        show.advance(t0);
+        let shown = show.current().unwrap();
+        assert_eq!(shown.seed, None);
+        assert_eq!(shown.field.get(3, 3), 42.0);
+    }
+
+    #[test]
+    fn terrain_changes_apply_to_the_next_mountain() {
+        let t0 = Instant::now();
+        let mut show = Show::new(small_settings(), None, pacing(), (32, 32), t0);
+        let mut s = small_settings();
+        s.detail = 6;
+        assert!(show.change_settings(s, false, t0).is_empty());
+        assert_eq!(show.current().unwrap().field.exponent(), 5);
+        show.advance(t0);
+        assert_eq!(show.current().unwrap().field.exponent(), 6);
+    }
+
+    #[test]
+    fn a_blank_show_stays_black_and_asleep() {
+        let t0 = Instant::now();
+        let mut show = Show::blank((8, 8), t0);
+        assert_eq!(show.wake_at(t0), None);
+        assert!(show.tick(t0 + Duration::from_secs(60)).is_empty());
+        assert!(show.frame().unwrap().pixels().iter().all(|&p| p == 0));
+    }
+}
