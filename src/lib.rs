@@ -4,9 +4,12 @@
 //! preferences, `saver` puts frames on screens. Only `saver` knows about windows.
 
 pub mod cli;
+pub mod commands;
 pub mod fsutil;
+pub mod help;
 pub mod log;
 pub mod render;
 pub mod saver;
 pub mod settings;
+pub mod snapshot;
 pub mod terrain;
