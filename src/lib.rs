@@ -3,6 +3,8 @@
 //! `terrain` makes heights, `render` turns them into pixels, `settings` holds
 //! preferences, `saver` puts frames on screens. Only `saver` knows about windows.
 
+#![warn(missing_docs)]
+
 pub mod cli;
 pub mod commands;
 pub mod fsutil;
