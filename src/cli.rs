@@ -1,7 +1,10 @@
 //! Command-line arguments: the Windows and xscreensaver protocols and our subcommands.
 //!
-//! STUB: the types are final; parsing is being written.
+//! Windows sends `/s`, `/p <HWND>`, `/c:<HWND>` (any case, `-` for `/`);
+//! xscreensaver sends `--root` or `--window-id 0x...` (one or two dashes).
+//! Our own flags are long (`--config`, `--set`); subcommands are words.
 
+use std::ffi::OsString;
 use std::path::PathBuf;
 
 /// What the program was asked to do.
@@ -58,4 +61,286 @@ pub struct Invocation {
     pub sets: Vec<(String, String)>,
     /// `--open FILE`: show a saved heightmap instead of generating.
     pub open: Option<PathBuf>,
+}
+
+/// A command line that could not be understood; the message names the flag.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct UsageError(pub String);
+
+impl std::fmt::Display for UsageError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+/// The mode used when no mode argument is given: Windows opens the settings
+/// (that is what Configure sends), elsewhere a normal window.
+pub fn default_mode() -> Mode {
+    if cfg!(windows) {
+        Mode::Settings { parent: None }
+    } else {
+        Mode::Window
+    }
+}
+
+/// Parses the arguments after the program name.
+pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
+    let mut p = Parser {
+        args,
+        pos: 0,
+        inv: Invocation {
+            mode: default_mode(),
+            config: None,
+            sets: Vec::new(),
+            open: None,
+        },
+    };
+    let mut mode: Option<(Mode, String)> = None;
+    let mut output: Option<PathBuf> = None;
+    let mut size: Option<(u32, u32)> = None;
+    while let Some(arg) = p.next_str()? {
+        let new_mode = match p.option(&arg, &mut output, &mut size)? {
+            Some(m) => m,
+            None => continue,
+        };
+        if let Some((_, old)) = &mode {
+            return Err(UsageError(format!(
+                "`{arg}` given after `{old}`: choose one mode"
+            )));
+        }
+        mode = Some((new_mode, arg));
+    }
+    let mode = mode.map_or_else(default_mode, |(m, _)| m);
+    p.inv.mode = finish_mode(mode, output, size)?;
+    Ok(p.inv)
+}
+
+/// Fills in the output and size of the subcommands, and refuses them elsewhere.
+fn finish_mode(
+    mode: Mode,
+    output: Option<PathBuf>,
+    size: Option<(u32, u32)>,
+) -> Result<Mode, UsageError> {
+    match mode {
+        Mode::Render { .. } => {
+            let output = output.ok_or_else(|| UsageError("render needs -o FILE.png".into()))?;
+            let (width, height) = size.unwrap_or((1920, 1080));
+            Ok(Mode::Render {
+                width,
+                height,
+                output,
+            })
+        }
+        Mode::Heightmap { .. } => {
+            let output = output.ok_or_else(|| UsageError("heightmap needs -o FILE.png".into()))?;
+            if size.is_some() {
+                return Err(UsageError(
+                    "--size goes with render, not heightmap (use --set detail=N)".into(),
+                ));
+            }
+            Ok(Mode::Heightmap { output })
+        }
+        _ if output.is_some() => Err(UsageError("-o goes with render or heightmap".into())),
+        _ if size.is_some() => Err(UsageError("--size goes with render".into())),
+        other => Ok(other),
+    }
+}
+
+struct Parser<'a> {
+    args: &'a [OsString],
+    pos: usize,
+    inv: Invocation,
+}
+
+impl Parser<'_> {
+    fn next_os(&mut self) -> Option<&OsString> {
+        let a = self.args.get(self.pos);
+        self.pos += 1;
+        a
+    }
+
+    fn next_str(&mut self) -> Result<Option<String>, UsageError> {
+        match self.next_os() {
+            None => Ok(None),
+            Some(a) => a
+                .to_str()
+                .map(|s| Some(s.to_string()))
+                .ok_or_else(|| UsageError(format!("argument {a:?} is not valid text"))),
+        }
+    }
+
+    fn value(&mut self, flag: &str) -> Result<OsString, UsageError> {
+        self.next_os()
+            .cloned()
+            .ok_or_else(|| UsageError(format!("{flag} needs a value")))
+    }
+
+    fn value_str(&mut self, flag: &str) -> Result<String, UsageError> {
+        let v = self.value(flag)?;
+        v.into_string()
+            .map_err(|v| UsageError(format!("{flag}: {v:?} is not valid text")))
+    }
+
+    /// A window handle may follow as the next argument (`/p 1234`).
+    fn optional_handle(&mut self) -> Result<Option<u64>, UsageError> {
+        match self.args.get(self.pos).and_then(|a| a.to_str()) {
+            Some(s) if s.chars().next().is_some_and(|c| c.is_ascii_digit()) => {
+                self.pos += 1;
+                parse_handle(s).map(Some)
+            }
+            _ => Ok(None),
+        }
+    }
+
+    /// Handles one argument: a shared option (returns `None`) or a mode.
+    fn option(
+        &mut self,
+        arg: &str,
+        output: &mut Option<PathBuf>,
+        size: &mut Option<(u32, u32)>,
+    ) -> Result<Option<Mode>, UsageError> {
+        if let Some(mode) = self.windows_flag(arg)? {
+            return Ok(Some(mode));
+        }
+        let flag = long_name(arg);
+        let (flag, inline) = match flag.split_once('=') {
+            Some((f, v)) if f.starts_with("--") => (f.to_string(), Some(v.to_string())),
+            _ => (flag, None),
+        };
+        let take = |p: &mut Self, name: &str| -> Result<OsString, UsageError> {
+            match &inline {
+                Some(v) => Ok(OsString::from(v)),
+                None => p.value(name),
+            }
+        };
+        match flag.as_str() {
+            "--config" => self.inv.config = Some(take(self, "--config")?.into()),
+            "--open" => self.inv.open = Some(take(self, "--open")?.into()),
+            "--set" => {
+                let kv = take(self, "--set")?
+                    .into_string()
+                    .map_err(|_| UsageError("--set: not valid text".into()))?;
+                let (k, v) = kv
+                    .split_once('=')
+                    .ok_or_else(|| UsageError(format!("--set {kv}: expected key=value")))?;
+                self.inv
+                    .sets
+                    .push((k.trim().to_string(), v.trim().to_string()));
+            }
+            "-o" | "--output" => *output = Some(take(self, "-o")?.into()),
+            "--size" => *size = Some(parse_size(&take(self, "--size")?.to_string_lossy())?),
+            "--root" => return Ok(Some(Mode::XRoot)),
+            "--window" => return Ok(Some(Mode::Window)),
+            "--window-id" => {
+                let id = if let Some(v) = inline {
+                    v
+                } else {
+                    self.value_str("--window-id")?
+                };
+                return Ok(Some(Mode::XWindowId(parse_handle(&id)?)));
+            }
+            "--settings" => return Ok(Some(Mode::Settings { parent: None })),
+            "--help" | "-h" => return Ok(Some(Mode::Help)),
+            "--check-config" => {
+                let path = match (inline, self.args.get(self.pos).and_then(|a| a.to_str())) {
+                    (Some(v), _) => Some(PathBuf::from(v)),
+                    (None, Some(next)) if !next.starts_with('-') => {
+                        self.pos += 1;
+                        Some(PathBuf::from(next))
+                    }
+                    _ => None,
+                };
+                return Ok(Some(Mode::CheckConfig(path)));
+            }
+            "render" => {
+                return Ok(Some(Mode::Render {
+                    width: 0,
+                    height: 0,
+                    output: PathBuf::new(),
+                }));
+            }
+            "heightmap" => {
+                return Ok(Some(Mode::Heightmap {
+                    output: PathBuf::new(),
+                }));
+            }
+            _ => return Err(UsageError(format!("unknown argument `{arg}`"))),
+        }
+        Ok(None)
+    }
+
+    /// The Windows screensaver letters: `/s`, `/p[:]<HWND>`, `/c[:<HWND>]`, `/a`.
+    fn windows_flag(&mut self, arg: &str) -> Result<Option<Mode>, UsageError> {
+        let Some(rest) = arg
+            .strip_prefix('/')
+            .or_else(|| arg.strip_prefix('-').filter(|r| !r.starts_with('-')))
+        else {
+            return Ok(None);
+        };
+        let (letter, attached) = match rest.split_once(':') {
+            Some((l, h)) => (l, Some(h)),
+            None => (rest, None),
+        };
+        if letter.len() != 1 {
+            return Ok(None);
+        }
+        let handle = match attached {
+            Some(h) => Some(parse_handle(h)?),
+            None => None,
+        };
+        let mode = match letter.to_ascii_lowercase().as_str() {
+            "s" => Mode::Fullscreen,
+            "p" => Mode::Preview {
+                parent: handle.or(self.optional_handle()?),
+            },
+            "c" => Mode::Settings {
+                parent: handle.or(self.optional_handle()?),
+            },
+            "a" => {
+                let _ = handle.or(self.optional_handle()?);
+                Mode::ChangePassword
+            }
+            _ => return Ok(None),
+        };
+        Ok(Some(mode))
+    }
+}
+
+/// `-root`, `-window-id`, `-window` are the old xscreensaver spellings of the
+/// long flags; everything else is returned as it was.
+fn long_name(arg: &str) -> String {
+    match arg {
+        "-root" | "-window" | "-window-id" | "-settings" | "-config" | "-set" | "-open"
+        | "-size" => format!("-{arg}"),
+        _ => arg.to_string(),
+    }
+}
+
+/// A window handle: decimal, or hex with `0x` (xscreensaver writes both).
+pub fn parse_handle(text: &str) -> Result<u64, UsageError> {
+    let t = text.trim();
+    let parsed = match t.strip_prefix("0x").or_else(|| t.strip_prefix("0X")) {
+        Some(hex) => u64::from_str_radix(hex, 16),
+        None => t.parse::<u64>(),
+    };
+    match parsed {
+        Ok(h) if h != 0 => Ok(h),
+        _ => Err(UsageError(format!(
+            "`{text}` is not a window handle (a decimal number, or hex with 0x)"
+        ))),
+    }
+}
+
+fn parse_size(text: &str) -> Result<(u32, u32), UsageError> {
+    let bad = || {
+        UsageError(format!(
+            "--size {text}: expected WIDTHxHEIGHT, e.g. 1920x1080"
+        ))
+    };
+    let (w, h) = text.split_once(['x', 'X']).ok_or_else(bad)?;
+    let (w, h): (u32, u32) = (w.parse().map_err(|_| bad())?, h.parse().map_err(|_| bad())?);
+    if w == 0 || h == 0 {
+        return Err(bad());
+    }
+    Ok((w, h))
 }

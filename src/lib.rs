@@ -3,10 +3,15 @@
 //! `terrain` makes heights, `render` turns them into pixels, `settings` holds
 //! preferences, `saver` puts frames on screens. Only `saver` knows about windows.
 
+#![warn(missing_docs)]
+
 pub mod cli;
+pub mod commands;
 pub mod fsutil;
+pub mod help;
 pub mod log;
 pub mod render;
 pub mod saver;
 pub mod settings;
+pub mod snapshot;
 pub mod terrain;

@@ -1,3 +1,87 @@
-fn main() {
-    println!("mountains");
+//! `mountains`: argv -> mode -> run.
+
+use std::process::ExitCode;
+
+use mountains::cli::{self, Mode};
+use mountains::commands::{self, EXIT_USAGE};
+use mountains::settings::{load, paths};
+use mountains::{help, log, saver};
+
+fn main() -> ExitCode {
+    let args: Vec<_> = std::env::args_os().skip(1).collect();
+    let inv = match cli::parse(&args) {
+        Ok(inv) => inv,
+        Err(e) => {
+            eprintln!("mountains: {e}\n\n{}", help::USAGE);
+            return ExitCode::from(EXIT_USAGE);
+        }
+    };
+    match &inv.mode {
+        Mode::Help => {
+            print!("{}", help::text());
+            return ExitCode::SUCCESS;
+        }
+        Mode::CheckConfig(path) => return commands::check_config(path.as_deref()),
+        Mode::ChangePassword => {
+            println!("mountains: no password needed; Windows handles locking.");
+            return ExitCode::SUCCESS;
+        }
+        _ => {}
+    }
+    let loaded = match load::resolve(inv.config.as_deref(), &inv.sets) {
+        Ok(l) => l,
+        Err(p) => {
+            eprintln!("mountains: {p}");
+            return ExitCode::from(EXIT_USAGE);
+        }
+    };
+    let open = inv.open.as_deref();
+    match &inv.mode {
+        Mode::Render {
+            width,
+            height,
+            output,
+        } => refuse_problems(&loaded)
+            .unwrap_or_else(|| commands::render(&loaded.settings, open, *width, *height, output)),
+        Mode::Heightmap { output } => refuse_problems(&loaded)
+            .unwrap_or_else(|| commands::heightmap(&loaded.settings, open, output)),
+        Mode::Settings { .. } => commands::edit_config(inv.config.as_deref()),
+        mode => run_saver(mode, loaded, open),
+    }
+}
+
+/// One-shot commands stop on a broken preferences file: nothing is lost by
+/// saying so, and a picture made from half a file would surprise.
+fn refuse_problems(loaded: &load::Loaded) -> Option<ExitCode> {
+    if loaded.problems.is_empty() {
+        return None;
+    }
+    for p in &loaded.problems {
+        eprintln!("{p}");
+    }
+    Some(ExitCode::from(EXIT_USAGE))
+}
+
+/// The screensaver modes keep going on a broken file: each problem is logged
+/// (a .scr has no console) and its key keeps the default.
+fn run_saver(mode: &Mode, loaded: load::Loaded, open: Option<&std::path::Path>) -> ExitCode {
+    log::set_file(paths::data_dir().map(|d| d.join("mountains.log")));
+    for p in &loaded.problems {
+        log::warn(&format!("{p} (using the default)"));
+    }
+    let data_set = match open.map(mountains::terrain::heightmap::load) {
+        Some(Ok(d)) => Some(d),
+        Some(Err(e)) => {
+            log::warn(&format!("{e}; showing generated mountains instead"));
+            None
+        }
+        None => None,
+    };
+    match saver::run(mode, loaded.settings, data_set) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            log::warn(&e.to_string());
+            ExitCode::FAILURE
+        }
+    }
 }

@@ -1,8 +1,10 @@
 //! Every user preference, in one `Settings` value.
 //!
-//! Loading, validation and the key table live in `settings/keys.rs` and
-//! `settings/load.rs`; this file holds only the types.
+//! The key table (names, ranges, docs) lives in `settings/keys.rs`, reading
+//! files and `--set` in `settings/load.rs`; this file holds the types.
 
+pub mod keys;
+pub mod load;
 pub mod paths;
 
 use serde::{Deserialize, Serialize};

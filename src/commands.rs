@@ -1,0 +1,144 @@
+//! The one-shot commands: render a PNG, save a data set, check a file, edit it.
+
+use std::path::Path;
+use std::process::ExitCode;
+use std::sync::Arc;
+
+use crate::render::{Frame, Painter};
+use crate::settings::{Settings, load, paths};
+use crate::terrain::{self, Heightfield, heightmap};
+
+/// Exit code for a mistake in what the user typed or pointed us at.
+pub const EXIT_USAGE: u8 = 2;
+
+/// The mountain to show: a data set from `--open`, else a generated one.
+/// Returns the field and the seed that made it (if known).
+pub fn mountain(
+    settings: &Settings,
+    open: Option<&Path>,
+) -> Result<(Heightfield, Option<u64>), String> {
+    match open {
+        Some(path) => heightmap::load(path)
+            .map(|d| (d.field, d.seed))
+            .map_err(|e| e.to_string()),
+        None => {
+            let seed = settings.seed.unwrap_or_else(fresh_seed);
+            Ok((terrain::generate(settings, seed), Some(seed)))
+        }
+    }
+}
+
+/// A new random seed that also fits a TOML integer, so it can be pasted into
+/// `seed = ...` as printed.
+pub fn fresh_seed() -> u64 {
+    rand::random::<u64>() >> 1
+}
+
+/// `mountains render`: one complete mountain to a PNG.
+pub fn render(
+    settings: &Settings,
+    open: Option<&Path>,
+    width: u32,
+    height: u32,
+    output: &Path,
+) -> ExitCode {
+    let Some(mut frame) = Frame::new(width, height) else {
+        eprintln!(
+            "mountains: --size {width}x{height}: too large (at most {} pixels)",
+            crate::render::frame::MAX_PIXELS
+        );
+        return ExitCode::from(EXIT_USAGE);
+    };
+    let (field, seed) = match mountain(settings, open) {
+        Ok(m) => m,
+        Err(e) => return fail(&e),
+    };
+    let mut painter = Painter::new(Arc::new(field), settings, width, height);
+    painter.step(&mut frame, usize::MAX);
+    if let Err(e) = crate::snapshot::write_png(output, &frame) {
+        return fail(&e);
+    }
+    print_seed(seed, output);
+    ExitCode::SUCCESS
+}
+
+/// `mountains heightmap`: generate a data set and save it as a 16-bit PNG.
+pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> ExitCode {
+    let (field, seed) = match mountain(settings, open) {
+        Ok(m) => m,
+        Err(e) => return fail(&e),
+    };
+    if let Err(e) = heightmap::save(output, &field, seed, settings) {
+        return fail(&e.to_string());
+    }
+    print_seed(seed, output);
+    ExitCode::SUCCESS
+}
+
+fn print_seed(seed: Option<u64>, output: &Path) {
+    match seed {
+        Some(s) => println!("seed {s} -> {}", output.display()),
+        None => println!("-> {}", output.display()),
+    }
+}
+
+fn fail(message: &str) -> ExitCode {
+    eprintln!("mountains: {message}");
+    ExitCode::FAILURE
+}
+
+/// `mountains --check-config [FILE]`: 0 if the file is good, 1 if not.
+pub fn check_config(path: Option<&Path>) -> ExitCode {
+    let Some(path) = path.map(Path::to_path_buf).or_else(paths::config_file) else {
+        return fail("no preferences file given and no home directory to look in");
+    };
+    if !path.exists() && path.parent().is_some() {
+        eprintln!(
+            "mountains: {}: no such file (the defaults are in use)",
+            path.display()
+        );
+        return ExitCode::FAILURE;
+    }
+    let mut settings = Settings::default();
+    let problems = load::apply_file(&mut settings, &path);
+    for p in &problems {
+        eprintln!("{p}");
+    }
+    if problems.is_empty() {
+        println!("{}: ok", path.display());
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::FAILURE
+    }
+}
+
+/// Opens the preferences file in the user's editor, creating it from the
+/// commented defaults if it does not exist yet (an existing file is never
+/// rewritten). Windows: Notepad; elsewhere `$VISUAL`, `$EDITOR`, else xdg-open.
+pub fn edit_config(config: Option<&Path>) -> ExitCode {
+    let Some(path) = config.map(Path::to_path_buf).or_else(paths::config_file) else {
+        return fail("no home directory: cannot find the preferences file");
+    };
+    if !path.exists() {
+        if let Some(dir) = path.parent() {
+            let _ = std::fs::create_dir_all(dir);
+        }
+        if let Err(e) = crate::fsutil::write_atomic(&path, load::DEFAULT_TOML.as_bytes()) {
+            return fail(&format!("{}: cannot create: {e}", path.display()));
+        }
+    }
+    let editor = if cfg!(windows) {
+        "notepad.exe".to_string()
+    } else {
+        std::env::var("VISUAL")
+            .or_else(|_| std::env::var("EDITOR"))
+            .unwrap_or_else(|_| "xdg-open".into())
+    };
+    match std::process::Command::new(&editor).arg(&path).status() {
+        Ok(_) => ExitCode::SUCCESS,
+        Err(e) => fail(&format!(
+            "cannot start {editor} for {}: {e}",
+            path.display()
+        )),
+    }
+}

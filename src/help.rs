@@ -1,0 +1,53 @@
+//! The `--help` text, built from the key table so it can never fall behind.
+
+use crate::settings::keys::{self, KEYS};
+use crate::settings::{Settings, paths};
+
+/// Everything a user can type: modes, flags and every preference key.
+pub fn text() -> String {
+    let mut t = String::from(USAGE);
+    t.push_str("\nPreference keys (TOML file, --set key=value, settings screen):\n");
+    let defaults = Settings::default();
+    for key in KEYS {
+        t.push_str(&format!("  {:<15} {}\n", key.name, key.doc));
+        t.push_str(&format!(
+            "  {:<15}   {}; default {}\n",
+            "",
+            key.kind.allowed(),
+            keys::get(&defaults, key)
+        ));
+    }
+    let config =
+        paths::config_file().map_or("(no home directory)".into(), |p| p.display().to_string());
+    let data = paths::data_dir().map_or("(no home directory)".into(), |p| p.display().to_string());
+    t.push_str(&format!(
+        "\nPreferences file: {config}\nData sets, screenshots and the log: {data}\n"
+    ));
+    t
+}
+
+/// The short usage printed after a command-line mistake.
+pub const USAGE: &str = "\
+mountains: fractal mountains, drawn strip by strip, as a slide show.
+
+Usage:
+  mountains [OPTIONS]                  a window (Linux, macOS); the settings (Windows)
+  mountains --window [OPTIONS]         a normal resizable window
+  mountains /s                         full screen on every monitor; any input ends it
+  mountains /p [HWND]                  preview inside a window, or a small window
+  mountains /c[:HWND] | --settings     the settings
+  mountains --root                     xscreensaver: draw on $XSCREENSAVER_WINDOW or the root
+  mountains --window-id ID             xscreensaver preview: draw into window ID (0x.. or decimal)
+  mountains render -o OUT.png [--size WxH] [OPTIONS]   one mountain to a PNG
+  mountains heightmap -o OUT.png [OPTIONS]             generate and save a data set
+  mountains --check-config [FILE]      check a preferences file; exit 0 if good, 1 if not
+  mountains --help
+
+Options (every mode):
+  --config FILE      preferences file instead of the usual one
+  --set KEY=VALUE    override one preference (repeatable), e.g. --set color=sonar
+  --open FILE.png    show a saved data set or any grayscale PNG heightmap
+
+Windows flags take / or -, any case: /s -S /p:1234 /c:1234.
+xscreensaver flags take one or two dashes: -root --root -window-id --window-id.
+";

@@ -1,0 +1,406 @@
+//! The table of every preference key: its name, what values it allows, and
+//! how it reads and writes `Settings`. TOML files, `--set`, `--help` and the
+//! settings screen all go through this one table, so a range is checked in
+//! exactly one place.
+
+use serde::Deserialize;
+use serde::de::IntoDeserializer;
+
+use super::{ColorMode, Generator, Monitors, Profile, Settings, ViewKind};
+
+/// A value as written by a user, before it is checked against a key.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Value {
+    /// A TOML integer.
+    Int(i64),
+    /// A TOML float.
+    Float(f64),
+    /// A TOML boolean.
+    Bool(bool),
+    /// A TOML string.
+    Str(String),
+}
+
+impl Value {
+    /// How a person would name this kind of value in a message.
+    pub fn kind_name(&self) -> &'static str {
+        match self {
+            Value::Int(_) => "an integer",
+            Value::Float(_) => "a number",
+            Value::Bool(_) => "a boolean",
+            Value::Str(_) => "a string",
+        }
+    }
+}
+
+impl std::fmt::Display for Value {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Value::Int(i) => write!(f, "{i}"),
+            Value::Float(x) => write!(f, "{x}"),
+            Value::Bool(b) => write!(f, "{b}"),
+            Value::Str(s) => write!(f, "\"{s}\""),
+        }
+    }
+}
+
+/// What values a key accepts.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Kind {
+    /// A whole number in `min..=max`.
+    Int {
+        /// Smallest allowed.
+        min: i64,
+        /// Largest allowed.
+        max: i64,
+    },
+    /// A number in `min..=max`; integers are accepted too.
+    Float {
+        /// Smallest allowed.
+        min: f64,
+        /// Largest allowed.
+        max: f64,
+    },
+    /// `true` or `false`.
+    Bool,
+    /// One of these strings.
+    Choice(&'static [&'static str]),
+    /// A whole number from 0 to 2^64-1 (as an integer or a string of digits), or "random".
+    Seed,
+    /// A folder path; "" means none.
+    Path,
+    /// 0, 90, 180 or 270 (degrees).
+    QuarterTurn,
+}
+
+impl Kind {
+    /// The allowed values, in words, for error messages and `--help`.
+    pub fn allowed(&self) -> String {
+        match self {
+            Kind::Int { min, max } => format!("an integer from {min} to {max}"),
+            Kind::Float { min, max } => format!("a number from {min} to {max}"),
+            Kind::Bool => "true or false".into(),
+            Kind::Choice(names) => format!("one of {}", quoted_list(names)),
+            Kind::Seed => "\"random\" or an integer from 0 to 18446744073709551615".into(),
+            Kind::Path => "a folder path as a string (\"\" for none)".into(),
+            Kind::QuarterTurn => "0, 90, 180 or 270".into(),
+        }
+    }
+}
+
+fn quoted_list(names: &[&str]) -> String {
+    let quoted: Vec<String> = names.iter().map(|n| format!("\"{n}\"")).collect();
+    quoted.join(", ")
+}
+
+/// One preference key.
+#[derive(Debug, Clone, Copy)]
+pub struct Key {
+    /// The name used in TOML, `--set` and the settings screen.
+    pub name: &'static str,
+    /// What values it accepts.
+    pub kind: Kind,
+    /// One line for `--help` and the settings screen.
+    pub doc: &'static str,
+}
+
+const GENERATORS: &[&str] = &["square", "diamond", "triangle"];
+const PROFILES: &[&str] = &["slope", "peak", "bay", "massif"];
+const COLORS: &[&str] = &[
+    "natural", "gray", "red", "green", "blue", "yellow", "cyan", "purple", "sonar", "outline",
+    "mono", "ridges",
+];
+const VIEWS: &[&str] = &["oblique", "perspective"];
+const MONITORS: &[&str] = &["all", "primary"];
+
+const fn key(name: &'static str, kind: Kind, doc: &'static str) -> Key {
+    Key { name, kind, doc }
+}
+
+/// Every key, in the order the settings file and `--help` list them.
+pub const KEYS: &[Key] = &[
+    key(
+        "seed",
+        Kind::Seed,
+        "seed of the next mountain; \"random\" picks a new one each time",
+    ),
+    key(
+        "generator",
+        Kind::Choice(GENERATORS),
+        "how heights are made",
+    ),
+    key(
+        "cragginess",
+        Kind::Int { min: 1, max: 128 },
+        "square generators: how sharply heights crease",
+    ),
+    key(
+        "elevation",
+        Kind::Float {
+            min: 1.0,
+            max: 1000.0,
+        },
+        "square generators: range of the corner heights",
+    ),
+    key(
+        "roughness",
+        Kind::Float { min: 1.0, max: 5.0 },
+        "triangle generator: smoothness base (higher = smoother sides)",
+    ),
+    key(
+        "contour",
+        Kind::Float {
+            min: 0.25,
+            max: 5.0,
+        },
+        "triangle generator: power on heights (<1 concave, >1 convex)",
+    ),
+    key(
+        "profile",
+        Kind::Choice(PROFILES),
+        "triangle generator: overall shape",
+    ),
+    key(
+        "height",
+        Kind::Int { min: 1, max: 10 },
+        "height of the peaks; also raises the treeline and snow",
+    ),
+    key(
+        "detail",
+        Kind::Int { min: 4, max: 12 },
+        "grid of 2^detail+1 points a side",
+    ),
+    key(
+        "low_detail",
+        Kind::Bool,
+        "a quarter of the points: larger faces, faster drawing",
+    ),
+    key(
+        "sea_level",
+        Kind::Float {
+            min: -1.0,
+            max: 1.0,
+        },
+        "water line as a fraction of the relief (0 = natural)",
+    ),
+    key("color", Kind::Choice(COLORS), "colour mode or filter"),
+    key(
+        "relative_depth",
+        Kind::Bool,
+        "darker water over deeper ground",
+    ),
+    key("shadows", Kind::Bool, "cast shadows from the light"),
+    key("view", Kind::Choice(VIEWS), "projection"),
+    key(
+        "rotation",
+        Kind::QuarterTurn,
+        "side the mountain is seen from, in degrees",
+    ),
+    key(
+        "auto_redraw",
+        Kind::Bool,
+        "start a new mountain after the pause (slide show)",
+    ),
+    key(
+        "draw_seconds",
+        Kind::Float {
+            min: 0.0,
+            max: 600.0,
+        },
+        "seconds to draw one mountain strip by strip",
+    ),
+    key(
+        "pause_seconds",
+        Kind::Float {
+            min: 0.0,
+            max: 3600.0,
+        },
+        "seconds to hold a finished mountain",
+    ),
+    key(
+        "monitors",
+        Kind::Choice(MONITORS),
+        "full screen: a mountain on every monitor, or the primary only",
+    ),
+    key(
+        "heightmaps_dir",
+        Kind::Path,
+        "folder of PNG heightmaps mixed into the slide show",
+    ),
+];
+
+/// Looks a key up by name.
+pub fn find(name: &str) -> Option<&'static Key> {
+    KEYS.iter().find(|k| k.name == name)
+}
+
+/// The known key closest to a misspelt one, if any is close.
+pub fn suggest(name: &str) -> Option<&'static str> {
+    KEYS.iter()
+        .map(|k| (edit_distance(name, k.name), k.name))
+        .filter(|(d, k)| *d <= 2.max(k.len() / 3))
+        .min_by_key(|(d, _)| *d)
+        .map(|(_, k)| k)
+}
+
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut cur = vec![i + 1];
+        for (j, cb) in b.iter().enumerate() {
+            let sub = prev[j] + usize::from(ca != *cb);
+            cur.push(sub.min(prev[j + 1] + 1).min(cur[j] + 1));
+        }
+        prev = cur;
+    }
+    prev[b.len()]
+}
+
+/// Checks `value` against `key` and stores it in `settings`; on refusal,
+/// says why in words that name the allowed values.
+pub fn apply(settings: &mut Settings, key: &Key, value: &Value) -> Result<(), String> {
+    let bad = || format!("{value} is not allowed; expected {}", key.kind.allowed());
+    let s = settings;
+    match key.name {
+        "seed" => s.seed = seed(value).ok_or_else(bad)?,
+        "generator" => s.generator = choice::<Generator>(key, value).ok_or_else(bad)?,
+        "cragginess" => s.cragginess = int(key, value).ok_or_else(bad)? as u32,
+        "elevation" => s.elevation = float(key, value).ok_or_else(bad)?,
+        "roughness" => s.roughness = float(key, value).ok_or_else(bad)?,
+        "contour" => s.contour = float(key, value).ok_or_else(bad)?,
+        "profile" => s.profile = choice::<Profile>(key, value).ok_or_else(bad)?,
+        "height" => s.height = int(key, value).ok_or_else(bad)? as u32,
+        "detail" => s.detail = int(key, value).ok_or_else(bad)? as u32,
+        "low_detail" => s.low_detail = boolean(value).ok_or_else(bad)?,
+        "sea_level" => s.sea_level = float(key, value).ok_or_else(bad)?,
+        "color" => s.color = choice::<ColorMode>(key, value).ok_or_else(bad)?,
+        "relative_depth" => s.relative_depth = boolean(value).ok_or_else(bad)?,
+        "shadows" => s.shadows = boolean(value).ok_or_else(bad)?,
+        "view" => s.view = choice::<ViewKind>(key, value).ok_or_else(bad)?,
+        "rotation" => s.rotation = rotation(value).ok_or_else(bad)?,
+        "auto_redraw" => s.auto_redraw = boolean(value).ok_or_else(bad)?,
+        "draw_seconds" => s.draw_seconds = float(key, value).ok_or_else(bad)?,
+        "pause_seconds" => s.pause_seconds = float(key, value).ok_or_else(bad)?,
+        "monitors" => s.monitors = choice::<Monitors>(key, value).ok_or_else(bad)?,
+        "heightmaps_dir" => s.heightmaps_dir = path(value).ok_or_else(bad)?,
+        other => return Err(format!("unknown key `{other}`")),
+    }
+    Ok(())
+}
+
+/// The current value of `key` in `settings`, as it would be written in TOML.
+pub fn get(settings: &Settings, key: &Key) -> Value {
+    let s = settings;
+    let name = |v: &dyn erased::Named| Value::Str(v.name());
+    match key.name {
+        "seed" => s.seed.map_or(Value::Str("random".into()), seed_value),
+        "generator" => name(&s.generator),
+        "cragginess" => Value::Int(s.cragginess.into()),
+        "elevation" => Value::Float(s.elevation.into()),
+        "roughness" => Value::Float(s.roughness.into()),
+        "contour" => Value::Float(s.contour.into()),
+        "profile" => name(&s.profile),
+        "height" => Value::Int(s.height.into()),
+        "detail" => Value::Int(s.detail.into()),
+        "low_detail" => Value::Bool(s.low_detail),
+        "sea_level" => Value::Float(s.sea_level.into()),
+        "color" => name(&s.color),
+        "relative_depth" => Value::Bool(s.relative_depth),
+        "shadows" => Value::Bool(s.shadows),
+        "view" => name(&s.view),
+        "rotation" => Value::Int(s.rotation.into()),
+        "auto_redraw" => Value::Bool(s.auto_redraw),
+        "draw_seconds" => Value::Float(s.draw_seconds.into()),
+        "pause_seconds" => Value::Float(s.pause_seconds.into()),
+        "monitors" => name(&s.monitors),
+        "heightmaps_dir" => Value::Str(s.heightmaps_dir.clone().unwrap_or_default()),
+        _ => Value::Str(String::new()),
+    }
+}
+
+/// Seeds that fit a TOML integer are written as one; larger ones as a string.
+fn seed_value(seed: u64) -> Value {
+    i64::try_from(seed).map_or(Value::Str(seed.to_string()), Value::Int)
+}
+
+mod erased {
+    use serde::Serialize;
+
+    /// The snake_case name serde gives a unit enum variant.
+    pub trait Named {
+        fn name(&self) -> String;
+    }
+
+    impl<T: Serialize> Named for T {
+        fn name(&self) -> String {
+            match toml::Value::try_from(self) {
+                Ok(toml::Value::String(s)) => s,
+                _ => String::new(),
+            }
+        }
+    }
+}
+
+fn int(key: &Key, value: &Value) -> Option<i64> {
+    let Kind::Int { min, max } = key.kind else {
+        return None;
+    };
+    match value {
+        Value::Int(i) if (min..=max).contains(i) => Some(*i),
+        _ => None,
+    }
+}
+
+fn float(key: &Key, value: &Value) -> Option<f32> {
+    let Kind::Float { min, max } = key.kind else {
+        return None;
+    };
+    let x = match value {
+        Value::Int(i) => *i as f64,
+        Value::Float(x) => *x,
+        _ => return None,
+    };
+    (x.is_finite() && (min..=max).contains(&x)).then_some(x as f32)
+}
+
+fn boolean(value: &Value) -> Option<bool> {
+    match value {
+        Value::Bool(b) => Some(*b),
+        _ => None,
+    }
+}
+
+fn choice<T: for<'de> Deserialize<'de>>(key: &Key, value: &Value) -> Option<T> {
+    let (Kind::Choice(names), Value::Str(s)) = (key.kind, value) else {
+        return None;
+    };
+    if !names.contains(&s.as_str()) {
+        return None;
+    }
+    let de: serde::de::value::StrDeserializer<'_, serde::de::value::Error> =
+        s.as_str().into_deserializer();
+    T::deserialize(de).ok()
+}
+
+fn seed(value: &Value) -> Option<Option<u64>> {
+    match value {
+        Value::Int(i) => u64::try_from(*i).ok().map(Some),
+        Value::Str(s) if s == "random" => Some(None),
+        Value::Str(s) => s.parse::<u64>().ok().map(Some),
+        _ => None,
+    }
+}
+
+fn rotation(value: &Value) -> Option<u32> {
+    let Value::Int(r) = *value else { return None };
+    matches!(r, 0 | 90 | 180 | 270).then_some(r as u32)
+}
+
+fn path(value: &Value) -> Option<Option<String>> {
+    match value {
+        Value::Str(s) if s.is_empty() => Some(None),
+        Value::Str(s) => Some(Some(s.clone())),
+        _ => None,
+    }
+}

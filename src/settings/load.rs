@@ -1,0 +1,242 @@
+//! Reading preferences: TOML files and `--set key=value`, with messages that
+//! name the file, line, column, key and the allowed values.
+//!
+//! Loading is lenient: every good key is used, every bad one is reported and
+//! keeps its previous value, so a screensaver with a broken file still runs.
+//! Callers that must refuse bad input (`--check-config`, `render`) look at
+//! the problems and stop.
+
+use std::fmt;
+use std::path::Path;
+
+use toml_edit::{Document, Item};
+
+use super::Settings;
+use super::keys::{self, Value};
+
+/// One thing wrong in a preferences source.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Problem {
+    /// Where it came from: a file path, or `--set`.
+    pub source: String,
+    /// 1-based line and column, when the source is a file.
+    pub position: Option<(usize, usize)>,
+    /// The key concerned, when there is one.
+    pub key: Option<String>,
+    /// What is wrong and what is allowed.
+    pub message: String,
+}
+
+impl fmt::Display for Problem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}", self.source)?;
+        if let Some((line, col)) = self.position {
+            write!(f, ":{line}:{col}")?;
+        }
+        if let Some(key) = &self.key {
+            write!(f, ": key `{key}`")?;
+        }
+        write!(f, ": {}", self.message)
+    }
+}
+
+/// The 1-based line and column of byte `offset` in `text`.
+fn line_col(text: &str, offset: usize) -> (usize, usize) {
+    let before = &text[..offset.min(text.len())];
+    let line = before.matches('\n').count() + 1;
+    let col = before
+        .rfind('\n')
+        .map_or(before, |i| &before[i + 1..])
+        .chars()
+        .count()
+        + 1;
+    (line, col)
+}
+
+/// Applies the TOML `text` (read from `source`) on top of `settings`,
+/// returning every problem found. A syntax error stops the reading (nothing
+/// from the file is used); any other problem skips only its key.
+pub fn apply_toml(settings: &mut Settings, text: &str, source: &str) -> Vec<Problem> {
+    let at = |offset: Option<usize>| offset.map(|o| line_col(text, o));
+    let doc = match Document::parse(text) {
+        Ok(doc) => doc,
+        Err(e) => {
+            let message = format!("not valid TOML: {}", e.message());
+            return vec![Problem {
+                source: source.into(),
+                position: at(e.span().map(|s| s.start)),
+                key: None,
+                message,
+            }];
+        }
+    };
+    let mut problems = Vec::new();
+    let mut candidate = settings.clone();
+    for (name, item) in doc.as_table().iter() {
+        let key_pos = at(doc
+            .as_table()
+            .key(name)
+            .and_then(|k| k.span())
+            .map(|s| s.start));
+        let value_pos = at(item.span().map(|s| s.start)).or(key_pos);
+        let mut report = |position, message: String| {
+            problems.push(Problem {
+                source: source.into(),
+                position,
+                key: Some(name.into()),
+                message,
+            })
+        };
+        let Some(key) = keys::find(name) else {
+            let hint = keys::suggest(name)
+                .map(|s| format!("; did you mean `{s}`?"))
+                .unwrap_or_default();
+            report(
+                key_pos,
+                format!("unknown key{hint} (`mountains --help` lists every key)"),
+            );
+            continue;
+        };
+        match item_value(item) {
+            Some(value) => {
+                if let Err(message) = keys::apply(&mut candidate, key, &value) {
+                    report(value_pos, message);
+                }
+            }
+            None => report(
+                value_pos,
+                format!("expected {}, found a table or array", key.kind.allowed()),
+            ),
+        }
+    }
+    *settings = candidate;
+    problems
+}
+
+fn item_value(item: &Item) -> Option<Value> {
+    let v = item.as_value()?;
+    if let Some(i) = v.as_integer() {
+        Some(Value::Int(i))
+    } else if let Some(x) = v.as_float() {
+        Some(Value::Float(x))
+    } else if let Some(b) = v.as_bool() {
+        Some(Value::Bool(b))
+    } else {
+        v.as_str().map(|s| Value::Str(s.to_string()))
+    }
+}
+
+/// Applies one `--set key=value`. The value is read as TOML (`42`, `true`,
+/// `"sonar"`), and a bare word that is not TOML is taken as a string, so
+/// `--set color=sonar` works without shell quoting.
+pub fn apply_set(settings: &mut Settings, key: &str, raw: &str) -> Result<(), Problem> {
+    let problem = |message: String| Problem {
+        source: "--set".into(),
+        position: None,
+        key: Some(key.into()),
+        message,
+    };
+    let Some(spec) = keys::find(key) else {
+        let hint = keys::suggest(key)
+            .map(|s| format!("; did you mean `{s}`?"))
+            .unwrap_or_default();
+        return Err(problem(format!(
+            "unknown key{hint} (`mountains --help` lists every key)"
+        )));
+    };
+    let value = parse_set_value(raw);
+    keys::apply(settings, spec, &value).map_err(problem)
+}
+
+fn parse_set_value(raw: &str) -> Value {
+    let doc = format!("v = {raw}");
+    match Document::parse(doc.as_str())
+        .ok()
+        .and_then(|d| d.as_table().get("v").and_then(item_value))
+    {
+        Some(v) => v,
+        None => Value::Str(raw.to_string()),
+    }
+}
+
+/// Reads the file at `path` and applies it on top of `settings`. An
+/// unreadable file is one problem; the settings are then left unchanged.
+pub fn apply_file(settings: &mut Settings, path: &Path) -> Vec<Problem> {
+    let source = path.display().to_string();
+    match std::fs::read(path) {
+        Ok(bytes) => match String::from_utf8(bytes) {
+            Ok(text) => apply_toml(settings, &text, &source),
+            Err(e) => {
+                let (line, col) = line_col_bytes(e.as_bytes(), e.utf8_error().valid_up_to());
+                let message = "not valid UTF-8 text".to_string();
+                vec![Problem {
+                    source,
+                    position: Some((line, col)),
+                    key: None,
+                    message,
+                }]
+            }
+        },
+        Err(e) => vec![Problem {
+            source,
+            position: None,
+            key: None,
+            message: format!("cannot read: {e}"),
+        }],
+    }
+}
+
+fn line_col_bytes(bytes: &[u8], offset: usize) -> (usize, usize) {
+    let before = &bytes[..offset];
+    let line = before.iter().filter(|&&b| b == b'\n').count() + 1;
+    let col = before.iter().rev().take_while(|&&b| b != b'\n').count() + 1;
+    (line, col)
+}
+
+/// The settings file that ships with the program, every key commented; what
+/// an absent file means.
+pub const DEFAULT_TOML: &str = include_str!("../../config/default.toml");
+
+/// Settings gathered from the defaults, a preferences file and `--set`.
+#[derive(Debug, Clone)]
+pub struct Loaded {
+    /// The result: every good value applied, bad ones left at their defaults.
+    pub settings: Settings,
+    /// The preferences file that was read, if any.
+    pub file: Option<std::path::PathBuf>,
+    /// What was wrong in that file (its good keys were still used).
+    pub problems: Vec<Problem>,
+}
+
+/// Builds the settings: defaults, then the file (`config`, or the platform's
+/// preferences file if it exists), then each `--set` in order.
+///
+/// An explicit `config` that cannot be read, and any bad `--set`, are errors:
+/// they are mistakes on the command line. Problems inside the file are
+/// returned for the caller to report or refuse.
+pub fn resolve(config: Option<&Path>, sets: &[(String, String)]) -> Result<Loaded, Problem> {
+    let mut settings = Settings::default();
+    let file = match config {
+        Some(p) => Some(p.to_path_buf()),
+        None => super::paths::config_file().filter(|p| p.exists()),
+    };
+    let mut problems = Vec::new();
+    if let Some(path) = &file {
+        problems = apply_file(&mut settings, path);
+        if config.is_some()
+            && problems
+                .iter()
+                .any(|p| p.message.starts_with("cannot read"))
+        {
+            return Err(problems.remove(0));
+        }
+    }
+    for (key, value) in sets {
+        apply_set(&mut settings, key, value)?;
+    }
+    Ok(Loaded {
+        settings,
+        file,
+        problems,
+    })
+}

@@ -1,0 +1,31 @@
+//! Frames to PNG files: `mountains render`, and the P key's screenshots.
+
+use std::path::Path;
+
+use crate::fsutil::write_atomic;
+use crate::render::Frame;
+
+/// Encodes `frame` as an 8-bit RGB PNG.
+pub fn encode_png(frame: &Frame) -> Result<Vec<u8>, png::EncodingError> {
+    let mut bytes = Vec::new();
+    let mut encoder = png::Encoder::new(&mut bytes, frame.width(), frame.height());
+    encoder.set_color(png::ColorType::Rgb);
+    encoder.set_depth(png::BitDepth::Eight);
+    let mut writer = encoder.write_header()?;
+    let rgb: Vec<u8> = frame
+        .pixels()
+        .iter()
+        .flat_map(|&p| [(p >> 16) as u8, (p >> 8) as u8, p as u8])
+        .collect();
+    writer.write_image_data(&rgb)?;
+    writer.finish()?;
+    Ok(bytes)
+}
+
+/// Writes `frame` to `path` as a PNG, atomically (an existing file is
+/// replaced whole or not at all). The message names the file.
+pub fn write_png(path: &Path, frame: &Frame) -> Result<(), String> {
+    let bytes =
+        encode_png(frame).map_err(|e| format!("{}: cannot encode PNG: {e}", path.display()))?;
+    write_atomic(path, &bytes).map_err(|e| format!("{}: cannot write: {e}", path.display()))
+}

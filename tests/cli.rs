@@ -1,0 +1,90 @@
+//! The command line: both screensaver protocols and our own flags.
+
+use std::ffi::OsString;
+use std::path::PathBuf;
+
+use mountains::cli::{self, Mode};
+
+fn parse(args: &[&str]) -> Result<cli::Invocation, cli::UsageError> {
+    let args: Vec<OsString> = args.iter().map(OsString::from).collect();
+    cli::parse(&args)
+}
+
+fn mode(args: &[&str]) -> Mode {
+    parse(args).unwrap_or_else(|e| panic!("{args:?}: {e}")).mode
+}
+
+#[test]
+fn windows_letters_any_case_slash_or_dash() {
+    for a in ["/s", "/S", "-s", "-S"] {
+        assert_eq!(mode(&[a]), Mode::Fullscreen, "{a}");
+    }
+    assert_eq!(mode(&["/p", "1234"]), Mode::Preview { parent: Some(1234) });
+    assert_eq!(mode(&["/P:1234"]), Mode::Preview { parent: Some(1234) });
+    assert_eq!(mode(&["-p"]), Mode::Preview { parent: None });
+    assert_eq!(mode(&["/c:5678"]), Mode::Settings { parent: Some(5678) });
+    assert_eq!(mode(&["/C", "5678"]), Mode::Settings { parent: Some(5678) });
+    assert_eq!(mode(&["/c"]), Mode::Settings { parent: None });
+    assert_eq!(mode(&["/a", "99"]), Mode::ChangePassword);
+}
+
+#[test]
+fn xscreensaver_flags_one_or_two_dashes_hex_or_decimal() {
+    assert_eq!(mode(&["--root"]), Mode::XRoot);
+    assert_eq!(mode(&["-root"]), Mode::XRoot);
+    assert_eq!(mode(&["--window-id", "0x1a00005"]), Mode::XWindowId(0x1a00005));
+    assert_eq!(mode(&["-window-id", "27262981"]), Mode::XWindowId(27262981));
+    assert_eq!(mode(&["--window-id=0X10"]), Mode::XWindowId(16));
+    assert_eq!(mode(&["-window"]), Mode::Window);
+}
+
+#[test]
+fn no_argument_is_settings_on_windows_and_a_window_elsewhere() {
+    let expected = if cfg!(windows) { Mode::Settings { parent: None } } else { Mode::Window };
+    assert_eq!(mode(&[]), expected);
+}
+
+#[test]
+fn shared_options_go_with_every_mode() {
+    let inv = parse(&["--config", "a.toml", "/s", "--set", "color=sonar", "--set=detail=6", "--open", "h.png"]).unwrap();
+    assert_eq!(inv.mode, Mode::Fullscreen);
+    assert_eq!(inv.config, Some(PathBuf::from("a.toml")));
+    assert_eq!(inv.open, Some(PathBuf::from("h.png")));
+    assert_eq!(inv.sets, vec![("color".into(), "sonar".into()), ("detail".into(), "6".into())]);
+}
+
+#[test]
+fn subcommands_take_output_and_size() {
+    let m = mode(&["render", "--size", "640x480", "-o", "x.png"]);
+    assert_eq!(m, Mode::Render { width: 640, height: 480, output: "x.png".into() });
+    assert_eq!(mode(&["render", "-o", "x.png"]), Mode::Render { width: 1920, height: 1080, output: "x.png".into() });
+    assert_eq!(mode(&["heightmap", "-o", "h.png"]), Mode::Heightmap { output: "h.png".into() });
+    assert_eq!(mode(&["--check-config"]), Mode::CheckConfig(None));
+    assert_eq!(mode(&["--check-config", "f.toml"]), Mode::CheckConfig(Some("f.toml".into())));
+}
+
+#[test]
+fn mistakes_name_the_flag() {
+    let cases: &[(&[&str], &str)] = &[
+        (&["--bogus"], "--bogus"),
+        (&["render"], "-o"),
+        (&["render", "-o", "x.png", "--size", "12by4"], "--size"),
+        (&["render", "-o", "x.png", "--size", "0x4"], "--size"),
+        (&["--window-id"], "--window-id"),
+        (&["--window-id", "zz"], "zz"),
+        (&["/p:abc"], "abc"),
+        (&["--set", "novalue"], "key=value"),
+        (&["/s", "/p"], "/p"),
+        (&["/s", "-o", "x.png"], "-o"),
+    ];
+    for (args, needle) in cases {
+        let e = parse(args).expect_err(&format!("{args:?} should fail"));
+        assert!(e.0.contains(needle), "{args:?}: {e}");
+    }
+}
+
+#[test]
+fn handles_must_be_nonzero() {
+    assert!(cli::parse_handle("0").is_err());
+    assert_eq!(cli::parse_handle("0xff").unwrap(), 255);
+}

@@ -1,0 +1,165 @@
+//! Preferences: the shipped file, the key table, messages for bad input.
+
+use mountains::settings::keys::{self, KEYS};
+use mountains::settings::load::{self, DEFAULT_TOML, Problem};
+use mountains::settings::{ColorMode, Settings};
+
+fn load_text(text: &str) -> (Settings, Vec<Problem>) {
+    let mut s = Settings::default();
+    let problems = load::apply_toml(&mut s, text, "test.toml");
+    (s, problems)
+}
+
+#[test]
+fn shipped_file_is_exactly_the_defaults() {
+    // Start from settings that differ in every key, so a key missing from the
+    // file would show as a difference.
+    let mut s = Settings::default();
+    s.seed = Some(7);
+    s.cragginess = 3;
+    s.elevation = 7.0;
+    s.roughness = 4.0;
+    s.contour = 3.0;
+    s.height = 9;
+    s.detail = 5;
+    s.low_detail = !s.low_detail;
+    s.sea_level = 0.5;
+    s.color = ColorMode::Ridges;
+    s.relative_depth = !s.relative_depth;
+    s.shadows = !s.shadows;
+    s.rotation = 270;
+    s.auto_redraw = !s.auto_redraw;
+    s.draw_seconds = 99.0;
+    s.pause_seconds = 99.0;
+    s.heightmaps_dir = Some("x".into());
+    let problems = load::apply_toml(&mut s, DEFAULT_TOML, "default.toml");
+    assert!(problems.is_empty(), "{problems:?}");
+    let d = Settings::default();
+    assert_eq!((s.generator, s.profile, s.view, s.monitors), (d.generator, d.profile, d.view, d.monitors));
+    assert_eq!(s, d);
+}
+
+#[test]
+fn shipped_file_documents_every_key_and_only_those() {
+    let doc: toml::Table = DEFAULT_TOML.parse().unwrap();
+    for key in KEYS {
+        assert!(doc.contains_key(key.name), "config/default.toml lacks `{}`", key.name);
+    }
+    assert_eq!(doc.len(), KEYS.len());
+}
+
+#[test]
+fn every_key_round_trips_through_get_and_apply() {
+    let defaults = Settings::default();
+    for key in KEYS {
+        let mut s = Settings::default();
+        let v = keys::get(&defaults, key);
+        keys::apply(&mut s, key, &v).unwrap_or_else(|e| panic!("{}: {e}", key.name));
+        assert_eq!(s, defaults, "key {}", key.name);
+    }
+}
+
+#[test]
+fn out_of_range_is_an_error_with_position_and_allowed_values() {
+    let (s, problems) = load_text("detail = 8\ncragginess = 999\n");
+    assert_eq!(problems.len(), 1);
+    let p = &problems[0];
+    assert_eq!(p.position, Some((2, 14)));
+    assert_eq!(p.key.as_deref(), Some("cragginess"));
+    let text = p.to_string();
+    assert!(text.starts_with("test.toml:2:14: key `cragginess`"), "{text}");
+    assert!(text.contains("from 1 to 128"), "{text}");
+    // Not clamped: the bad key keeps its default, the good one is used.
+    assert_eq!(s.cragginess, Settings::default().cragginess);
+}
+
+#[test]
+fn good_keys_survive_a_bad_neighbour() {
+    let (s, problems) = load_text("color = \"sonar\"\nheight = \"tall\"\nlow_detail = true\n");
+    assert_eq!(problems.len(), 1);
+    assert_eq!(s.color, ColorMode::Sonar);
+    assert!(s.low_detail);
+    assert_eq!(s.height, Settings::default().height);
+}
+
+#[test]
+fn unknown_key_is_reported_with_a_suggestion() {
+    let (_, problems) = load_text("\n  cragines = 5\n");
+    assert_eq!(problems.len(), 1);
+    assert_eq!(problems[0].position, Some((2, 3)));
+    assert!(problems[0].message.contains("did you mean `cragginess`"), "{}", problems[0].message);
+}
+
+#[test]
+fn syntax_error_names_line_and_column_and_uses_nothing() {
+    let (s, problems) = load_text("color = \"sonar\"\ndetail = = 3\n");
+    assert_eq!(problems.len(), 1);
+    assert_eq!(problems[0].position.map(|p| p.0), Some(2));
+    assert!(problems[0].message.starts_with("not valid TOML"));
+    assert_eq!(s, Settings::default());
+}
+
+#[test]
+fn wrong_type_names_the_expected_values() {
+    let (_, problems) = load_text("shadows = 1\ncolor = \"pink\"\n");
+    assert_eq!(problems.len(), 2);
+    assert!(problems[0].message.contains("true or false"));
+    assert!(problems[1].message.contains("\"sonar\""), "{}", problems[1].message);
+}
+
+#[test]
+fn floats_accept_integers_but_not_nan_or_out_of_range() {
+    assert_eq!(load_text("elevation = 200\n").0.elevation, 200.0);
+    assert_eq!(load_text("elevation = nan\n").1.len(), 1);
+    assert_eq!(load_text("sea_level = 1.5\n").1.len(), 1);
+}
+
+#[test]
+fn seeds_accept_integers_big_strings_and_random() {
+    assert_eq!(load_text("seed = 42\n").0.seed, Some(42));
+    assert_eq!(load_text("seed = \"18446744073709551615\"\n").0.seed, Some(u64::MAX));
+    assert_eq!(load_text("seed = \"random\"\n").0.seed, None);
+    assert_eq!(load_text("seed = -3\n").1.len(), 1);
+}
+
+#[test]
+fn set_accepts_bare_words_and_toml_values() {
+    let mut s = Settings::default();
+    load::apply_set(&mut s, "color", "mono").unwrap();
+    load::apply_set(&mut s, "color", "\"outline\"").unwrap();
+    load::apply_set(&mut s, "detail", "10").unwrap();
+    load::apply_set(&mut s, "draw_seconds", "0.5").unwrap();
+    load::apply_set(&mut s, "rotation", "90").unwrap();
+    assert_eq!((s.color, s.detail, s.draw_seconds, s.rotation), (ColorMode::Outline, 10, 0.5, 90));
+    let e = load::apply_set(&mut s, "rotation", "45").unwrap_err();
+    assert!(e.to_string().starts_with("--set: key `rotation`"), "{e}");
+    assert!(load::apply_set(&mut s, "colour", "red").unwrap_err().message.contains("did you mean `color`"));
+}
+
+#[test]
+fn resolve_reports_file_problems_and_refuses_a_missing_explicit_file() {
+    let dir = std::env::temp_dir().join(format!("mountains-settings-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("prefs.toml");
+    std::fs::write(&file, "detail = 99\ncolor = \"red\"\n").unwrap();
+    let sets = vec![("detail".to_string(), "6".to_string())];
+    let loaded = load::resolve(Some(&file), &sets).unwrap();
+    assert_eq!(loaded.problems.len(), 1);
+    assert_eq!((loaded.settings.color, loaded.settings.detail), (ColorMode::Red, 6));
+    let missing = load::resolve(Some(&dir.join("nope.toml")), &[]).unwrap_err();
+    assert!(missing.message.starts_with("cannot read"), "{missing}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn invalid_utf8_is_a_problem_not_a_panic() {
+    let dir = std::env::temp_dir().join(format!("mountains-utf8-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("bad.toml");
+    std::fs::write(&file, b"color = \"red\"\ndetail = \xff\n").unwrap();
+    let mut s = Settings::default();
+    let problems = load::apply_file(&mut s, &file);
+    assert_eq!(problems.len(), 1);
+    assert_eq!(problems[0].position, Some((2, 10)));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
