@@ -34,7 +34,8 @@ const CRAGGINESS: std::ops::RangeInclusive<u32> = 1..=128;
 
 /// Cragginess one step rougher: doubled, since it is halved at each level.
 pub fn craggier(c: u32) -> u32 {
-    c.saturating_mul(2).clamp(*CRAGGINESS.start(), *CRAGGINESS.end())
+    c.saturating_mul(2)
+        .clamp(*CRAGGINESS.start(), *CRAGGINESS.end())
 }
 
 /// Cragginess one step smoother: halved.
@@ -69,11 +70,12 @@ fn civil_date(days: u64) -> (u64, u64, u64) {
 
 /// A path in `dir` for `stem` + `ext` that names no existing file.
 fn free_path(dir: &Path, stem: &str, ext: &str) -> Option<PathBuf> {
-    (1..100).map(|n| match n {
-        1 => dir.join(format!("{stem}.{ext}")),
-        n => dir.join(format!("{stem}-{n}.{ext}")),
-    })
-    .find(|p| !p.exists())
+    (1..100)
+        .map(|n| match n {
+            1 => dir.join(format!("{stem}.{ext}")),
+            n => dir.join(format!("{stem}-{n}.{ext}")),
+        })
+        .find(|p| !p.exists())
 }
 
 fn output_path(ext: &str, seed: Option<u64>) -> Result<PathBuf, String> {
@@ -103,7 +105,10 @@ pub fn save_screenshot(frame: &Frame, seed: Option<u64>) -> Result<PathBuf, Stri
 }
 
 fn with_suffix(path: &Path, suffix: &str) -> PathBuf {
-    let stem = path.file_stem().map(|s| s.to_string_lossy()).unwrap_or_default();
+    let stem = path
+        .file_stem()
+        .map(|s| s.to_string_lossy())
+        .unwrap_or_default();
     path.with_file_name(format!("{stem}{suffix}.png"))
 }
 
@@ -176,7 +181,8 @@ mod tests {
         frame.pixels_mut()[4] = 0x00ff_8001;
         let path = std::env::temp_dir().join(format!("mountains-shot-{}.png", std::process::id()));
         write_png(&path, &frame).unwrap();
-        let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(&path).unwrap()));
+        let decoder =
+            png::Decoder::new(std::io::BufReader::new(std::fs::File::open(&path).unwrap()));
         let mut reader = decoder.read_info().unwrap();
         let mut buf = vec![0; reader.output_buffer_size().unwrap()];
         let info = reader.next_frame(&mut buf).unwrap();

@@ -168,7 +168,11 @@ impl ApplicationHandler<UserEvent> for App {
         if let AppMode::Child(parent) = self.mode {
             self.follow_parent(event_loop, parent);
         }
-        let wake = self.screens.iter().filter_map(|s| s.show.wake_at(now)).min();
+        let wake = self
+            .screens
+            .iter()
+            .filter_map(|s| s.show.wake_at(now))
+            .min();
         #[cfg(windows)]
         let wake = match self.mode {
             AppMode::Child(_) => Some(wake.map_or(now + super::embed_win32::PARENT_POLL, |w| {
@@ -211,7 +215,9 @@ impl App {
         base: WindowAttributes,
     ) -> Result<(), SaverError> {
         let monitors: Vec<MonitorHandle> = event_loop.available_monitors().collect();
-        let primary = event_loop.primary_monitor().or_else(|| monitors.first().cloned());
+        let primary = event_loop
+            .primary_monitor()
+            .or_else(|| monitors.first().cloned());
         if monitors.is_empty() {
             let attrs = base
                 .with_decorations(false)
@@ -251,7 +257,13 @@ impl App {
                 self.settings.pause_seconds,
                 self.mode != AppMode::Window || self.settings.auto_redraw,
             );
-            Show::new(self.settings.clone(), self.opened.clone(), pacing, size, now)
+            Show::new(
+                self.settings.clone(),
+                self.opened.clone(),
+                pacing,
+                size,
+                now,
+            )
         } else {
             Show::blank(size, now)
         };
@@ -272,7 +284,9 @@ impl App {
         if current == Some((size.width, size.height)) {
             return;
         }
-        let damage = screen.show.resize((size.width, size.height), Instant::now());
+        let damage = screen
+            .show
+            .resize((size.width, size.height), Instant::now());
         self.present(event_loop, i, damage);
     }
 
@@ -291,7 +305,10 @@ impl App {
         };
         match screen.presenter.present(frame, damage) {
             Ok(()) => self.trace.presented(),
-            Err(e) => self.fail(event_loop, SaverError::Other(format!("cannot present: {e}"))),
+            Err(e) => self.fail(
+                event_loop,
+                SaverError::Other(format!("cannot present: {e}")),
+            ),
         }
     }
 
@@ -320,12 +337,18 @@ impl App {
                 Rect::default()
             }
             Action::SaveDataSet => {
-                report(show.current().map(|m| actions::save_data_set(m, &settings)), "data set");
+                report(
+                    show.current().map(|m| actions::save_data_set(m, &settings)),
+                    "data set",
+                );
                 Rect::default()
             }
             Action::Screenshot => {
                 let seed = show.current().and_then(|m| m.seed);
-                report(show.frame().map(|f| actions::save_screenshot(f, seed)), "screenshot");
+                report(
+                    show.frame().map(|f| actions::save_screenshot(f, seed)),
+                    "screenshot",
+                );
                 Rect::default()
             }
             Action::NextColor | Action::ToggleRelativeDepth => {
@@ -339,7 +362,9 @@ impl App {
             Action::ToggleLowDetail | Action::MoreCraggy | Action::LessCraggy => {
                 match action {
                     Action::ToggleLowDetail => settings.low_detail = !settings.low_detail,
-                    Action::MoreCraggy => settings.cragginess = actions::craggier(settings.cragginess),
+                    Action::MoreCraggy => {
+                        settings.cragginess = actions::craggier(settings.cragginess)
+                    }
                     _ => settings.cragginess = actions::smoother(settings.cragginess),
                 }
                 show.change_settings(settings, false, now)

@@ -69,7 +69,10 @@ impl BandPresenter {
             return Ok(());
         }
         let width = (rect.x1 - rect.x0) as usize;
-        let max = self.conn.maximum_request_bytes().saturating_sub(PUT_IMAGE_HEADER);
+        let max = self
+            .conn
+            .maximum_request_bytes()
+            .saturating_sub(PUT_IMAGE_HEADER);
         let rows = (max.min(BAND_BYTES) / (width * 4)).max(1) as u32;
         let mut y = rect.y0;
         while y < rect.y1 {
@@ -80,14 +83,25 @@ impl BandPresenter {
         self.conn.flush().map_err(|e| e.to_string())
     }
 
-    fn put_rows(&mut self, frame: &Frame, x0: u32, x1: u32, y0: u32, y1: u32) -> Result<(), String> {
+    fn put_rows(
+        &mut self,
+        frame: &Frame,
+        x0: u32,
+        x1: u32,
+        y0: u32,
+        y1: u32,
+    ) -> Result<(), String> {
         self.staging.clear();
         let stride = frame.width() as usize;
         for y in y0..y1 {
             let start = y as usize * stride;
             let row = &frame.pixels()[start + x0 as usize..start + x1 as usize];
             for &p in row {
-                let bytes = if self.lsb_first { p.to_le_bytes() } else { p.to_be_bytes() };
+                let bytes = if self.lsb_first {
+                    p.to_le_bytes()
+                } else {
+                    p.to_be_bytes()
+                };
                 self.staging.extend_from_slice(&bytes);
             }
         }
@@ -127,8 +141,35 @@ mod tests {
     #[test]
     fn clip_keeps_damage_inside_the_frame() {
         let frame = Frame::new(100, 50).unwrap();
-        let r = clip(Rect { x0: 90, y0: 40, x1: 500, y1: 70 }, &frame);
-        assert_eq!(r, Rect { x0: 90, y0: 40, x1: 100, y1: 50 });
-        assert!(clip(Rect { x0: 200, y0: 0, x1: 300, y1: 10 }, &frame).is_empty());
+        let r = clip(
+            Rect {
+                x0: 90,
+                y0: 40,
+                x1: 500,
+                y1: 70,
+            },
+            &frame,
+        );
+        assert_eq!(
+            r,
+            Rect {
+                x0: 90,
+                y0: 40,
+                x1: 100,
+                y1: 50
+            }
+        );
+        assert!(
+            clip(
+                Rect {
+                    x0: 200,
+                    y0: 0,
+                    x1: 300,
+                    y1: 10
+                },
+                &frame
+            )
+            .is_empty()
+        );
     }
 }

@@ -41,9 +41,15 @@ pub fn parent_client_size(handle: u64) -> Option<(u32, u32)> {
 }
 
 /// Attributes of a borderless child of `parent` covering its client area.
-pub fn child_attributes(base: WindowAttributes, parent: u64) -> Result<WindowAttributes, SaverError> {
+pub fn child_attributes(
+    base: WindowAttributes,
+    parent: u64,
+) -> Result<WindowAttributes, SaverError> {
     let missing = || SaverError::Other(format!("there is no window {parent} to preview in"));
-    let handle = isize::try_from(parent).ok().and_then(NonZeroIsize::new).ok_or_else(missing)?;
+    let handle = isize::try_from(parent)
+        .ok()
+        .and_then(NonZeroIsize::new)
+        .ok_or_else(missing)?;
     if !parent_alive(parent) {
         return Err(missing());
     }

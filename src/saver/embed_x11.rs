@@ -101,7 +101,8 @@ pub fn run(
         xid: NonZeroU32::new(xid).ok_or(SaverError::NoSuchWindow(xid))?,
         screen: screen as i32,
     };
-    let presenter = Presenter::new(target).map_err(|e| SaverError::Other(format!("{e}")))?;
+    let presenter =
+        Presenter::new(target).map_err(|e| SaverError::Other(format!("window 0x{xid:x}: {e}")))?;
     let pacing = Pacing::from_seconds(settings.draw_seconds, settings.pause_seconds, true);
     let show = Show::new(settings, opened, pacing, size, Instant::now());
     let mut embedded = Embedded {

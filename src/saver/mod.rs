@@ -72,11 +72,7 @@ impl SaverError {
 }
 
 /// Runs a window mode until it ends. `open` is a data set to show instead of generating.
-pub fn run(
-    mode: &Mode,
-    settings: Settings,
-    open: Option<DataSet>,
-) -> Result<(), SaverError> {
+pub fn run(mode: &Mode, settings: Settings, open: Option<DataSet>) -> Result<(), SaverError> {
     START.get_or_init(Instant::now);
     let opened = open.map(|d| Mountain {
         field: Arc::new(d.field),
@@ -98,7 +94,11 @@ pub fn run(
 }
 
 /// `/p HWND`: a child of the Windows preview; on X11 the number is an XID.
-fn run_in_parent(handle: u64, settings: Settings, opened: Option<Mountain>) -> Result<(), SaverError> {
+fn run_in_parent(
+    handle: u64,
+    settings: Settings,
+    opened: Option<Mountain>,
+) -> Result<(), SaverError> {
     #[cfg(windows)]
     {
         app::run(app::AppMode::Child(handle), settings, opened)

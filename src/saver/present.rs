@@ -101,8 +101,10 @@ fn present_soft<W: HasWindowHandle + HasDisplayHandle>(
     frame: &Frame,
     damage: Rect,
 ) -> Result<(), softbuffer::SoftBufferError> {
-    let (Some(w), Some(h)) = (NonZeroU32::new(frame.width()), NonZeroU32::new(frame.height()))
-    else {
+    let (Some(w), Some(h)) = (
+        NonZeroU32::new(frame.width()),
+        NonZeroU32::new(frame.height()),
+    ) else {
         return Ok(());
     };
     surface.resize(w, h)?;
@@ -155,14 +157,39 @@ mod tests {
             *p = i as u32 + 1;
         }
         let mut target = vec![0u32; 12];
-        copy_rect(&frame, &mut target, Rect { x0: 1, y0: 1, x1: 3, y1: 3 });
+        copy_rect(
+            &frame,
+            &mut target,
+            Rect {
+                x0: 1,
+                y0: 1,
+                x1: 3,
+                y1: 3,
+            },
+        );
         assert_eq!(target, vec![0, 0, 0, 0, 0, 6, 7, 0, 0, 10, 11, 0]);
     }
 
     #[test]
     fn damage_is_clipped_to_the_frame() {
         let frame = Frame::new(4, 3).unwrap();
-        let r = clip(Rect { x0: 2, y0: 1, x1: 9, y1: 9 }, &frame);
-        assert_eq!(r, Rect { x0: 2, y0: 1, x1: 4, y1: 3 });
+        let r = clip(
+            Rect {
+                x0: 2,
+                y0: 1,
+                x1: 9,
+                y1: 9,
+            },
+            &frame,
+        );
+        assert_eq!(
+            r,
+            Rect {
+                x0: 2,
+                y0: 1,
+                x1: 4,
+                y1: 3
+            }
+        );
     }
 }

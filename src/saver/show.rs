@@ -279,7 +279,15 @@ mod tests {
         );
         assert!(show.tick(t0 + Duration::from_millis(2000)).is_empty());
         let next = show.tick(t0 + Duration::from_millis(3000));
-        assert_eq!(next, Rect { x0: 0, y0: 0, x1: 64, y1: 48 });
+        assert_eq!(
+            next,
+            Rect {
+                x0: 0,
+                y0: 0,
+                x1: 64,
+                y1: 48
+            }
+        );
         assert_eq!(show.current().and_then(|m| m.seed), Some(7));
     }
 
@@ -288,7 +296,15 @@ mod tests {
         let t0 = Instant::now();
         let mut show = Show::new(small_settings(), None, pacing(), (64, 48), t0);
         let damage = show.resize((100, 30), t0);
-        assert_eq!(damage, Rect { x0: 0, y0: 0, x1: 100, y1: 30 });
+        assert_eq!(
+            damage,
+            Rect {
+                x0: 0,
+                y0: 0,
+                x1: 100,
+                y1: 30
+            }
+        );
         let frame = show.frame().expect("frame");
         assert_eq!((frame.width(), frame.height()), (100, 30));
         let mut full = Frame::new(100, 30).unwrap();

@@ -287,6 +287,9 @@ mod tests {
         let p = Pacing::from_seconds(f32::NAN, -3.0, true);
         assert_eq!(p.draw, Duration::ZERO);
         assert_eq!(p.pause, Duration::ZERO);
-        assert_eq!(Pacing::from_seconds(1.5, 2.0, false).draw, Duration::from_millis(1500));
+        assert_eq!(
+            Pacing::from_seconds(1.5, 2.0, false).draw,
+            Duration::from_millis(1500)
+        );
     }
 }

@@ -1,0 +1,360 @@
+//! Test helpers for display tests: a private Xvfb server, the `mountains`
+//! binary run against it, screen reads and fake input over x11rb.
+//!
+//! Everything started here is killed on drop, so a failing test leaves no
+//! process behind.
+#![allow(dead_code)]
+
+use std::io::{BufRead, BufReader};
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, ExitStatus, Stdio};
+use std::time::{Duration, Instant};
+
+use x11rb::connection::Connection;
+use x11rb::protocol::xproto::{
+    ConfigureWindowAux, ConnectionExt as _, CreateWindowAux, ImageFormat, MapState, Window,
+    WindowClass,
+};
+use x11rb::protocol::xtest::ConnectionExt as _;
+use x11rb::rust_connection::RustConnection;
+use x11rb::wrapper::ConnectionExt as _;
+
+/// How long a test waits for something that normally takes a fraction of a second.
+pub const PATIENCE: Duration = Duration::from_secs(10);
+
+/// A private X server; killed on drop.
+pub struct Xvfb {
+    child: Child,
+    display: String,
+    /// The connection the test uses to look and to type.
+    pub conn: RustConnection,
+    /// The root window of screen 0.
+    pub root: Window,
+    /// Screen size in pixels.
+    pub size: (u16, u16),
+}
+
+impl Xvfb {
+    /// Starts `Xvfb -noreset -displayfd 1 -screen 0 WxHx24` plus `extra`
+    /// arguments. Without Xvfb: `None` (the test skips), unless
+    /// `MOUNTAINS_REQUIRE_DISPLAY=1`, where that is a failure.
+    pub fn start(width: u16, height: u16, extra: &[&str]) -> Option<Xvfb> {
+        let screen = format!("{width}x{height}x24");
+        let spawned = Command::new("Xvfb")
+            .args([
+                "-noreset",
+                "-nolisten",
+                "tcp",
+                "-displayfd",
+                "1",
+                "-screen",
+                "0",
+                &screen,
+            ])
+            .args(extra)
+            .stdout(Stdio::piped())
+            .stderr(Stdio::null())
+            .spawn();
+        let mut child = match spawned {
+            Ok(c) => c,
+            Err(e) => {
+                if std::env::var("MOUNTAINS_REQUIRE_DISPLAY").is_ok_and(|v| v == "1") {
+                    panic!("MOUNTAINS_REQUIRE_DISPLAY=1 but Xvfb cannot start: {e}");
+                }
+                eprintln!("skipped: Xvfb is not available ({e})");
+                return None;
+            }
+        };
+        let mut line = String::new();
+        let stdout = child.stdout.take().expect("Xvfb stdout");
+        BufReader::new(stdout)
+            .read_line(&mut line)
+            .expect("Xvfb display number");
+        let number: u32 = match line.trim().parse() {
+            Ok(n) => n,
+            Err(_) => {
+                let _ = child.kill();
+                panic!("Xvfb did not report a display number: {line:?}");
+            }
+        };
+        let display = format!(":{number}");
+        let (conn, screen_num) = RustConnection::connect(Some(&display)).expect("connect to Xvfb");
+        let screen = &conn.setup().roots[screen_num];
+        let (root, size) = (
+            screen.root,
+            (screen.width_in_pixels, screen.height_in_pixels),
+        );
+        Some(Xvfb {
+            child,
+            display,
+            conn,
+            root,
+            size,
+        })
+    }
+
+    /// The `DISPLAY` value for this server.
+    pub fn display(&self) -> &str {
+        &self.display
+    }
+
+    /// Pixels (0x00RRGGBB) of a window's `w` x `h` area at its origin.
+    pub fn grab(&self, window: Window, w: u16, h: u16) -> Vec<u32> {
+        let reply = self
+            .conn
+            .get_image(ImageFormat::Z_PIXMAP, window, 0, 0, w, h, !0)
+            .expect("GetImage request")
+            .reply()
+            .expect("GetImage reply");
+        reply
+            .data
+            .chunks_exact(4)
+            .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]) & 0x00ff_ffff)
+            .collect()
+    }
+
+    /// The whole screen's pixels.
+    pub fn grab_screen(&self) -> Vec<u32> {
+        self.grab(self.root, self.size.0, self.size.1)
+    }
+
+    /// A mapped top-level window of `w` x `h` made by the test, like a
+    /// screensaver daemon's window.
+    pub fn create_window(&self, w: u16, h: u16) -> Window {
+        let id = self.conn.generate_id().unwrap();
+        let aux = CreateWindowAux::new().background_pixel(0);
+        self.conn
+            .create_window(
+                0,
+                id,
+                self.root,
+                10,
+                10,
+                w,
+                h,
+                0,
+                WindowClass::INPUT_OUTPUT,
+                0,
+                &aux,
+            )
+            .unwrap();
+        self.conn.map_window(id).unwrap();
+        self.conn.flush().unwrap();
+        id
+    }
+
+    /// Resizes a window the test owns.
+    pub fn resize_window(&self, id: Window, w: u16, h: u16) {
+        let aux = ConfigureWindowAux::new()
+            .width(u32::from(w))
+            .height(u32::from(h));
+        self.conn.configure_window(id, &aux).unwrap();
+        self.conn.flush().unwrap();
+    }
+
+    /// Destroys a window the test owns.
+    pub fn destroy_window(&self, id: Window) {
+        self.conn.destroy_window(id).unwrap();
+        self.conn.flush().unwrap();
+    }
+
+    /// Mapped children of the root window with their geometry (x, y, w, h).
+    pub fn mapped_windows(&self) -> Vec<(Window, (i16, i16, u16, u16))> {
+        let tree = self.conn.query_tree(self.root).unwrap().reply().unwrap();
+        tree.children
+            .into_iter()
+            .filter_map(|w| {
+                let attrs = self.conn.get_window_attributes(w).ok()?.reply().ok()?;
+                if attrs.map_state != MapState::VIEWABLE {
+                    return None;
+                }
+                let g = self.conn.get_geometry(w).ok()?.reply().ok()?;
+                Some((w, (g.x, g.y, g.width, g.height)))
+            })
+            .collect()
+    }
+
+    /// Presses and releases a key (keycode 38 is A on Xvfb's keymap).
+    pub fn key(&self, keycode: u8) {
+        self.fake(2, keycode, 0, 0);
+        self.fake(3, keycode, 0, 0);
+    }
+
+    /// Presses and releases a mouse button.
+    pub fn click(&self, button: u8) {
+        self.fake(4, button, 0, 0);
+        self.fake(5, button, 0, 0);
+    }
+
+    /// Moves the pointer by (dx, dy) pixels.
+    pub fn move_by(&self, dx: i16, dy: i16) {
+        self.fake(6, 1, dx, dy);
+    }
+
+    /// Puts the pointer at (x, y).
+    pub fn move_to(&self, x: i16, y: i16) {
+        self.fake(6, 0, x, y);
+    }
+
+    fn fake(&self, kind: u8, detail: u8, x: i16, y: i16) {
+        self.conn
+            .xtest_fake_input(kind, detail, 0, self.root, x, y, 0)
+            .expect("XTEST request");
+        self.conn.sync().expect("XTEST sync");
+    }
+}
+
+impl Drop for Xvfb {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+/// A temporary directory removed on drop.
+pub struct TempDir(pub PathBuf);
+
+impl TempDir {
+    /// A fresh directory named after the test.
+    pub fn new(name: &str) -> TempDir {
+        let dir = std::env::temp_dir().join(format!("mountains-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        TempDir(dir)
+    }
+}
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// The `mountains` binary running on a test display; killed on drop.
+pub struct Saver {
+    child: Option<Child>,
+    stderr: PathBuf,
+    _home: TempDir,
+    /// When it was started.
+    pub started: Instant,
+}
+
+impl Saver {
+    /// Runs `mountains ARGS` on `xvfb` with a private home (no user config,
+    /// logs and saves in a temp dir), quick pacing, and `env` added.
+    pub fn start(xvfb: &Xvfb, name: &str, args: &[&str], env: &[(&str, &str)]) -> Saver {
+        let home = TempDir::new(name);
+        let stderr = home.0.join("stderr.txt");
+        let mut command = Command::new(env!("CARGO_BIN_EXE_mountains"));
+        command
+            .args(args)
+            .args(["--set", "draw_seconds=0.5", "--set", "pause_seconds=1"])
+            .env("DISPLAY", xvfb.display())
+            .env("HOME", &home.0)
+            .env("XDG_CONFIG_HOME", home.0.join("config"))
+            .env("XDG_DATA_HOME", home.0.join("data"))
+            .env_remove("XSCREENSAVER_WINDOW")
+            .stdin(Stdio::null())
+            .stdout(Stdio::null())
+            .stderr(std::fs::File::create(&stderr).unwrap());
+        for (k, v) in env {
+            command.env(k, v);
+        }
+        let child = command.spawn().expect("start mountains");
+        Saver {
+            child: Some(child),
+            stderr,
+            _home: home,
+            started: Instant::now(),
+        }
+    }
+
+    /// What it wrote on stderr so far.
+    pub fn stderr(&self) -> String {
+        std::fs::read_to_string(&self.stderr).unwrap_or_default()
+    }
+
+    /// Its process id.
+    pub fn pid(&self) -> u32 {
+        self.child.as_ref().unwrap().id()
+    }
+
+    /// Its exit status if it has ended.
+    pub fn exited(&mut self) -> Option<ExitStatus> {
+        self.child.as_mut().unwrap().try_wait().unwrap()
+    }
+
+    /// Waits up to `limit` for it to end.
+    pub fn wait(&mut self, limit: Duration) -> Option<ExitStatus> {
+        let end = Instant::now() + limit;
+        while Instant::now() < end {
+            if let Some(status) = self.exited() {
+                return Some(status);
+            }
+            std::thread::sleep(Duration::from_millis(2));
+        }
+        None
+    }
+
+    /// Fails the test with its stderr if it has ended already.
+    pub fn assert_running(&mut self) {
+        if let Some(status) = self.exited() {
+            panic!("mountains ended early ({status}):\n{}", self.stderr());
+        }
+    }
+
+    /// Sends a signal with kill(1).
+    pub fn signal(&self, name: &str) {
+        let status = Command::new("kill")
+            .args([format!("-{name}"), self.pid().to_string()])
+            .status()
+            .expect("run kill");
+        assert!(status.success());
+    }
+}
+
+impl Drop for Saver {
+    fn drop(&mut self) {
+        if let Some(mut child) = self.child.take() {
+            let _ = child.kill();
+            let _ = child.wait();
+        }
+    }
+}
+
+/// Share of pixels that are not black.
+pub fn lit_fraction(pixels: &[u32]) -> f64 {
+    let lit = pixels.iter().filter(|&&p| p != 0).count();
+    lit as f64 / pixels.len().max(1) as f64
+}
+
+/// True when not every pixel has the same colour.
+pub fn varied(pixels: &[u32]) -> bool {
+    pixels.windows(2).any(|w| w[0] != w[1])
+}
+
+/// True when the pixels look like a drawn mountain: varied and mostly lit.
+pub fn looks_drawn(pixels: &[u32]) -> bool {
+    varied(pixels) && lit_fraction(pixels) > 0.4
+}
+
+/// Polls `check` until it holds or `PATIENCE` runs out; returns the time it took.
+pub fn poll(saver: &mut Saver, what: &str, mut check: impl FnMut() -> bool) -> Duration {
+    let start = Instant::now();
+    while start.elapsed() < PATIENCE {
+        saver.assert_running();
+        if check() {
+            return start.elapsed();
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    panic!(
+        "{what} did not happen within {PATIENCE:?}; stderr:\n{}",
+        saver.stderr()
+    );
+}
+
+/// Path of a file in a directory, as &str for arguments.
+pub fn arg(path: &Path) -> &str {
+    path.to_str().expect("utf-8 temp path")
+}

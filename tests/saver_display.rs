@@ -1,0 +1,231 @@
+//! End-to-end tests of the window modes under a private Xvfb.
+//! Each starts its own server and binary; times are printed, not asserted.
+
+#[path = "common/xvfb.rs"]
+mod xvfb;
+
+use std::time::{Duration, Instant};
+
+use xvfb::{PATIENCE, Saver, TempDir, Xvfb, arg, looks_drawn, poll, varied};
+
+/// Starts `/s` on a fresh 640x480 screen and waits until the mountain shows.
+fn fullscreen(name: &str) -> Option<(Xvfb, Saver)> {
+    let x = Xvfb::start(640, 480, &[])?;
+    let mut saver = Saver::start(&x, name, &["/s"], &[]);
+    let took = poll(&mut saver, "a mountain on the screen", || {
+        looks_drawn(&x.grab_screen())
+    });
+    eprintln!("{name}: mountain on screen after {took:?}");
+    Some((x, saver))
+}
+
+fn expect_exit(saver: &mut Saver, what: &str) {
+    let asked = Instant::now();
+    let status = saver.wait(PATIENCE);
+    let status = status.unwrap_or_else(|| panic!("{what} did not end the saver"));
+    eprintln!("{what}: ended after {:?} with {status}", asked.elapsed());
+    assert!(status.success(), "{what}: {status}\n{}", saver.stderr());
+}
+
+#[test]
+fn display_fullscreen_covers_the_screen_with_a_mountain() {
+    let Some((x, mut saver)) = fullscreen("fs-cover") else {
+        return;
+    };
+    let covering = x
+        .mapped_windows()
+        .into_iter()
+        .any(|(_, g)| g == (0, 0, x.size.0, x.size.1));
+    assert!(
+        covering,
+        "no window covers the screen: {:?}",
+        x.mapped_windows()
+    );
+    saver.assert_running();
+}
+
+#[test]
+fn display_fullscreen_ends_on_a_key() {
+    let Some((x, mut saver)) = fullscreen("fs-key") else {
+        return;
+    };
+    x.key(38);
+    expect_exit(&mut saver, "a key");
+}
+
+#[test]
+fn display_fullscreen_ends_on_a_click() {
+    let Some((x, mut saver)) = fullscreen("fs-click") else {
+        return;
+    };
+    x.click(1);
+    expect_exit(&mut saver, "a click");
+}
+
+#[test]
+fn display_fullscreen_ends_on_a_20px_move() {
+    let Some((x, mut saver)) = fullscreen("fs-move") else {
+        return;
+    };
+    x.move_by(20, 0);
+    expect_exit(&mut saver, "a 20 px move");
+}
+
+#[test]
+fn display_fullscreen_ignores_a_3px_jitter() {
+    let Some((x, mut saver)) = fullscreen("fs-jitter") else {
+        return;
+    };
+    for _ in 0..5 {
+        x.move_by(3, 0);
+        std::thread::sleep(Duration::from_millis(50));
+        x.move_by(-3, 0);
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    std::thread::sleep(Duration::from_millis(700));
+    saver.assert_running();
+}
+
+#[test]
+fn display_fullscreen_survives_a_slide_change() {
+    let Some((x, mut saver)) = fullscreen("fs-slides") else {
+        return;
+    };
+    // 0.5 s drawing + 1 s hold: by 2.5 s the second mountain is being drawn.
+    std::thread::sleep(Duration::from_millis(2500));
+    saver.assert_running();
+    poll(&mut saver, "the next mountain", || {
+        looks_drawn(&x.grab_screen())
+    });
+}
+
+#[test]
+fn display_preview_opens_a_small_window() {
+    let Some(x) = Xvfb::start(640, 480, &[]) else {
+        return;
+    };
+    let mut saver = Saver::start(&x, "preview", &["/p"], &[]);
+    let mut found = None;
+    poll(&mut saver, "a 320x240 window", || {
+        found = x
+            .mapped_windows()
+            .into_iter()
+            .find(|(_, g)| (g.2, g.3) == (320, 240));
+        found.is_some()
+    });
+    let (window, _) = found.unwrap();
+    let took = poll(&mut saver, "a mountain in the preview", || {
+        looks_drawn(&x.grab(window, 320, 240))
+    });
+    eprintln!("preview: drawn after {took:?}");
+    // Input is not its business: a click and a move leave it running.
+    x.click(1);
+    x.move_by(40, 40);
+    std::thread::sleep(Duration::from_millis(300));
+    saver.assert_running();
+}
+
+#[test]
+fn display_window_id_draws_follows_a_resize_and_ends_with_the_window() {
+    let Some(x) = Xvfb::start(640, 480, &[]) else {
+        return;
+    };
+    let window = x.create_window(300, 200);
+    let id = format!("0x{window:x}");
+    let mut saver = Saver::start(&x, "window-id", &["--window-id", &id], &[]);
+    poll(&mut saver, "a mountain in the foreign window", || {
+        looks_drawn(&x.grab(window, 300, 200))
+    });
+    x.resize_window(window, 500, 400);
+    let took = poll(&mut saver, "a mountain fitted to the new size", || {
+        let pixels = x.grab(window, 500, 400);
+        // The part that is new after the resize must be drawn too.
+        let new_part: Vec<u32> = pixels
+            .chunks(500)
+            .skip(200)
+            .flat_map(|row| row[300..].iter().copied())
+            .collect();
+        looks_drawn(&pixels) && varied(&new_part)
+    });
+    eprintln!("window-id: redrawn {took:?} after the resize");
+    x.destroy_window(window);
+    expect_exit(&mut saver, "destroying the window");
+}
+
+#[test]
+fn display_root_draws_into_the_xscreensaver_window() {
+    let Some(x) = Xvfb::start(640, 480, &[]) else {
+        return;
+    };
+    let window = x.create_window(400, 300);
+    let id = format!("0x{window:x}");
+    let env = [("XSCREENSAVER_WINDOW", id.as_str())];
+    let mut saver = Saver::start(&x, "root", &["--root"], &env);
+    let took = poll(&mut saver, "a mountain in $XSCREENSAVER_WINDOW", || {
+        looks_drawn(&x.grab(window, 400, 300))
+    });
+    eprintln!("root: drawn after {took:?}");
+    // Only that window: the screen around it stays black.
+    let screen = x.grab_screen();
+    assert_eq!(screen[(470 * 640) + 630], 0, "drew outside the window");
+}
+
+#[test]
+fn display_sigterm_ends_an_embedded_saver_with_status_0() {
+    let Some(x) = Xvfb::start(320, 240, &[]) else {
+        return;
+    };
+    let window = x.create_window(200, 150);
+    let id = window.to_string();
+    let mut saver = Saver::start(&x, "sigterm", &["--window-id", &id], &[]);
+    poll(&mut saver, "a mountain", || {
+        looks_drawn(&x.grab(window, 200, 150))
+    });
+    saver.signal("TERM");
+    expect_exit(&mut saver, "SIGTERM");
+}
+
+#[test]
+fn display_sigterm_ends_the_fullscreen_saver_with_status_0() {
+    let Some((_x, mut saver)) = fullscreen("fs-sigterm") else {
+        return;
+    };
+    saver.signal("TERM");
+    expect_exit(&mut saver, "SIGTERM");
+}
+
+#[test]
+fn display_broken_config_still_shows_mountains_and_is_left_alone() {
+    let Some(x) = Xvfb::start(640, 480, &[]) else {
+        return;
+    };
+    let dir = TempDir::new("broken-config-file");
+    let config = dir.0.join("mountains.toml");
+    let text = b"# mine\ncragginess = 999\ncolor = \"plaid\"\n";
+    std::fs::write(&config, text).unwrap();
+    let mut saver = Saver::start(&x, "broken-config", &["/s", "--config", arg(&config)], &[]);
+    poll(&mut saver, "a mountain despite the broken config", || {
+        looks_drawn(&x.grab_screen())
+    });
+    x.key(38);
+    expect_exit(&mut saver, "a key");
+    assert_eq!(
+        std::fs::read(&config).unwrap(),
+        text,
+        "the config file changed"
+    );
+}
+
+#[test]
+fn display_fullscreen_at_4k_without_shm_falls_back_and_draws() {
+    let Some(x) = Xvfb::start(3840, 2160, &["-extension", "MIT-SHM"]) else {
+        return;
+    };
+    let mut saver = Saver::start(&x, "4k-noshm", &["/s"], &[]);
+    let took = poll(&mut saver, "a 4K mountain without MIT-SHM", || {
+        looks_drawn(&x.grab_screen())
+    });
+    eprintln!("4k without shm: drawn after {took:?}");
+    let warnings = saver.stderr().matches("MIT-SHM").count();
+    assert_eq!(warnings, 1, "expected one warning:\n{}", saver.stderr());
+}
