@@ -21,6 +21,7 @@ pub fn first_missing<'a>(
 }
 
 /// True when the dynamic loader can open `name`.
+#[cfg(unix)]
 pub fn can_dlopen(name: &str) -> bool {
     // SAFETY: these are the system X libraries winit itself is about to
     // load; their initialisers are the ones that run in any X program.
@@ -48,6 +49,7 @@ mod tests {
         assert_eq!(first_missing(X11_LIBRARIES, |_| true), None);
     }
 
+    #[cfg(unix)]
     #[test]
     fn a_library_that_does_not_exist_cannot_be_opened() {
         assert!(!can_dlopen("libmountains-no-such-library.so.42"));

@@ -3,7 +3,9 @@
 
 use std::num::NonZeroU32;
 
-use raw_window_handle::{HasDisplayHandle, HasWindowHandle, RawWindowHandle};
+#[cfg(unix)]
+use raw_window_handle::RawWindowHandle;
+use raw_window_handle::{HasDisplayHandle, HasWindowHandle};
 use softbuffer::{Context, Surface};
 
 use crate::render::{Frame, Rect};
@@ -14,12 +16,14 @@ use super::bands_x11::BandPresenter;
 /// Presents frames on one window, choosing the path that works on this server.
 pub struct Presenter<W: HasWindowHandle + HasDisplayHandle + Clone> {
     surface: Surface<W, W>,
+    #[cfg(unix)]
     xid: Option<u32>,
     #[cfg(unix)]
     bands: Option<BandPresenter>,
 }
 
 /// The X11 window id behind a window handle, if it is an X11 window.
+#[cfg(unix)]
 pub fn x11_window_id(window: &impl HasWindowHandle) -> Option<u32> {
     match window.window_handle().ok()?.as_raw() {
         RawWindowHandle::Xlib(h) => u32::try_from(h.window).ok(),
@@ -32,10 +36,12 @@ impl<W: HasWindowHandle + HasDisplayHandle + Clone> Presenter<W> {
     /// Prepares presenting on `window`.
     pub fn new(window: W) -> Result<Self, String> {
         let context = Context::new(window.clone()).map_err(|e| e.to_string())?;
+        #[cfg(unix)]
         let xid = x11_window_id(&window);
         let surface = Surface::new(&context, window).map_err(|e| e.to_string())?;
         let mut presenter = Presenter {
             surface,
+            #[cfg(unix)]
             xid,
             #[cfg(unix)]
             bands: None,
