@@ -229,3 +229,53 @@ fn display_fullscreen_at_4k_without_shm_falls_back_and_draws() {
     let warnings = saver.stderr().matches("MIT-SHM").count();
     assert_eq!(warnings, 1, "expected one warning:\n{}", saver.stderr());
 }
+
+#[test]
+fn display_window_keys_start_a_new_mountain_save_a_screenshot_and_quit() {
+    let Some(x) = Xvfb::start(1280, 800, &[]) else {
+        return;
+    };
+    let mut saver = Saver::start(&x, "window-keys", &["--window"], &[]);
+    let mut found = None;
+    poll(&mut saver, "the 960x600 window", || {
+        found = x
+            .mapped_windows()
+            .into_iter()
+            .find(|(_, g)| (g.2, g.3) == (960, 600));
+        found.is_some()
+    });
+    let (window, _) = found.unwrap();
+    poll(&mut saver, "a mountain in the window", || {
+        looks_drawn(&x.grab(window, 960, 600))
+    });
+    x.focus(window);
+    let first = x.title(window);
+    assert!(first.contains("seed"), "title without the seed: {first:?}");
+    x.key(57); // N
+    poll(&mut saver, "a new seed in the title after N", || {
+        x.title(window) != first
+    });
+    x.key(33); // P
+    let is_shot = |n: &str| n.starts_with("mountain-") && n.ends_with("-screenshot.png");
+    let names = || -> Vec<String> {
+        std::fs::read_dir(saver.data_dir())
+            .map(|d| {
+                d.filter_map(Result::ok)
+                    .map(|e| e.file_name().to_string_lossy().into_owned())
+                    .collect()
+            })
+            .unwrap_or_default()
+    };
+    let start = Instant::now();
+    while !names().iter().any(|n| is_shot(n)) && start.elapsed() < PATIENCE {
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    let found = names();
+    assert!(
+        found.iter().any(|n| is_shot(n)),
+        "no screenshot in {found:?}\n{}",
+        saver.stderr()
+    );
+    x.key(24); // Q
+    expect_exit(&mut saver, "Q");
+}

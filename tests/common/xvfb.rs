@@ -158,6 +158,35 @@ impl Xvfb {
         self.conn.flush().unwrap();
     }
 
+    /// Gives a window the keyboard focus (there is no window manager to do it).
+    pub fn focus(&self, window: Window) {
+        use x11rb::protocol::xproto::InputFocus;
+        self.conn
+            .set_input_focus(InputFocus::PARENT, window, x11rb::CURRENT_TIME)
+            .unwrap();
+        self.conn.sync().unwrap();
+    }
+
+    /// A window's `_NET_WM_NAME` title.
+    pub fn title(&self, window: Window) -> String {
+        use x11rb::protocol::xproto::AtomEnum;
+        let atom = |name: &[u8]| {
+            self.conn
+                .intern_atom(false, name)
+                .unwrap()
+                .reply()
+                .unwrap()
+                .atom
+        };
+        let (name, utf8) = (atom(b"_NET_WM_NAME"), atom(b"UTF8_STRING"));
+        let _ = AtomEnum::ANY;
+        let reply = self
+            .conn
+            .get_property(false, window, name, utf8, 0, 1024)
+            .unwrap();
+        String::from_utf8_lossy(&reply.reply().unwrap().value).into_owned()
+    }
+
     /// Mapped children of the root window with their geometry (x, y, w, h).
     pub fn mapped_windows(&self) -> Vec<(Window, (i16, i16, u16, u16))> {
         let tree = self.conn.query_tree(self.root).unwrap().reply().unwrap();
@@ -267,6 +296,11 @@ impl Saver {
             _home: home,
             started: Instant::now(),
         }
+    }
+
+    /// Where it saves data sets and screenshots (`$XDG_DATA_HOME/mountains`).
+    pub fn data_dir(&self) -> PathBuf {
+        self._home.0.join("data").join("mountains")
     }
 
     /// What it wrote on stderr so far.
