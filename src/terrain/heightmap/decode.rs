@@ -27,6 +27,8 @@ const INTERLACED_BYTE_LIMIT: usize = 64 << 20;
 const TEXT_LIMIT: usize = 4096;
 /// Keys we inflate when compressed; others are never decompressed.
 const OUR_PREFIX: &str = "mountains:";
+/// Most bytes one byte of deflate data can expand to (with a safety margin).
+const MAX_DEFLATE_RATIO: u64 = 1100;
 const SIGNATURE: [u8; 8] = [0x89, b'P', b'N', b'G', b'\r', b'\n', 0x1a, b'\n'];
 
 /// A decoded image: the fitted grid in sample units and its text chunks.
@@ -67,6 +69,7 @@ pub fn read(bytes: &[u8], path: &Path) -> Result<RawGrid, HeightmapError> {
     let header = decoder.read_header_info().map_err(err)?;
     let (width, height, interlaced) = (header.width, header.height, header.interlaced);
     let bit_depth = check_header(header.color_type, header.bit_depth, width, height, path)?;
+    check_length(bytes.len(), width, height, bit_depth, path)?;
     let mut reader = decoder.read_info().map_err(err)?;
     let fit = Fit::plan(width, height);
     let mut grid = Resampler::new(fit);
@@ -145,6 +148,27 @@ fn check_header(
         ));
     }
     Ok(bits)
+}
+
+/// Deflate expands at most 1032:1, so a file too short to hold its image
+/// even at that ratio is truncated: say so before allocating the grid.
+fn check_length(
+    len: usize,
+    width: u32,
+    height: u32,
+    bit_depth: u8,
+    path: &Path,
+) -> Result<(), HeightmapError> {
+    let row = 1 + u64::from(width) * u64::from(bit_depth / 8);
+    let raw = row * u64::from(height);
+    if raw > (len as u64).saturating_mul(MAX_DEFLATE_RATIO) {
+        return Err(HeightmapError::new(
+            path,
+            ErrorKind::Truncated,
+            format!("is truncated: {len} bytes cannot hold a {width}x{height} image"),
+        ));
+    }
+    Ok(())
 }
 
 /// The samples of one row of raw 8- or 16-bit (big-endian) gray.

@@ -121,7 +121,7 @@ pub struct Taps {
     /// First source index of each output point.
     start: Vec<usize>,
     /// Weights of each output point, from `start` on.
-    weights: Vec<Vec<f32>>,
+    weights: Vec<Vec<f64>>,
 }
 
 impl Taps {
@@ -138,13 +138,18 @@ impl Taps {
 
     /// Output point `i` from the `source` values.
     #[inline]
-    pub fn apply(&self, i: usize, source: &[f32]) -> f32 {
+    pub fn apply(&self, i: usize, source: &[f64]) -> f64 {
         let from = &source[self.start[i]..];
         self.weights[i].iter().zip(from).map(|(w, v)| w * v).sum()
     }
 
+    /// The last source index output point `i` reads.
+    pub fn last(&self, i: usize) -> usize {
+        self.start[i] + self.weights[i].len() - 1
+    }
+
     /// For each source index, the output points it feeds and with what weight.
-    pub fn inverted(&self, source: usize) -> Vec<Vec<(usize, f32)>> {
+    pub fn inverted(&self, source: usize) -> Vec<Vec<(usize, f64)>> {
         let mut inv = vec![Vec::new(); source];
         for (i, (&start, ws)) in self.start.iter().zip(&self.weights).enumerate() {
             for (k, &w) in ws.iter().enumerate() {
@@ -156,7 +161,7 @@ impl Taps {
 }
 
 /// Corner-aligned linear filter weights for output point `i`.
-fn tent(source: usize, target: usize, i: usize) -> (usize, Vec<f32>) {
+fn tent(source: usize, target: usize, i: usize) -> (usize, Vec<f64>) {
     let ratio = (source - 1) as f64 / (target - 1) as f64;
     let centre = i as f64 * ratio;
     let radius = ratio.max(1.0);
@@ -166,16 +171,23 @@ fn tent(source: usize, target: usize, i: usize) -> (usize, Vec<f32>) {
         .map(|j| (1.0 - (j as f64 - centre).abs() / radius).max(0.0))
         .collect();
     let total: f64 = raw.iter().sum();
-    (first, raw.iter().map(|w| (w / total) as f32).collect())
+    (first, raw.iter().map(|w| w / total).collect())
 }
 
 /// Builds the fitted grid from source rows fed one at a time.
+///
+/// Sums run in `f64` and each output point is rounded to `f32` once, so a
+/// constant area stays exactly constant (no filter noise that a later
+/// normalisation could blow up into relief).
 pub struct Resampler {
     fit: Fit,
     columns: Taps,
-    row_targets: Vec<Vec<(usize, f32)>>,
-    scratch: Vec<f32>,
-    row: Vec<f32>,
+    row_targets: Vec<Vec<(usize, f64)>>,
+    last_source: Vec<usize>,
+    scratch: Vec<f64>,
+    row: Vec<f64>,
+    open: Vec<(usize, Vec<f64>)>,
+    spare: Vec<Vec<f64>>,
     out: Vec<f32>,
 }
 
@@ -184,13 +196,17 @@ impl Resampler {
     pub fn new(fit: Fit) -> Resampler {
         let side = fit.crop_side as usize;
         let columns = Taps::new(side, fit.size, fit.method);
-        let row_targets = Taps::new(side, fit.size, fit.method).inverted(side);
+        let row_taps = Taps::new(side, fit.size, fit.method);
+        let last_source = (0..fit.size).map(|t| row_taps.last(t)).collect();
         Resampler {
             fit,
             columns,
-            row_targets,
+            row_targets: row_taps.inverted(side),
+            last_source,
             scratch: vec![0.0; side],
             row: vec![0.0; fit.size],
+            open: Vec::new(),
+            spare: Vec::new(),
             out: vec![0.0; fit.size * fit.size],
         }
     }
@@ -200,22 +216,59 @@ impl Resampler {
         let Some(r) = y.checked_sub(self.fit.crop_y) else {
             return;
         };
-        let Some(targets) = self.row_targets.get(r as usize) else {
+        let r = r as usize;
+        if r >= self.row_targets.len() {
             return;
-        };
+        }
         let side = self.fit.crop_side as usize;
         let used = samples.skip(self.fit.crop_x as usize).take(side);
         for (slot, s) in self.scratch.iter_mut().zip(used) {
-            *slot = s;
+            *slot = f64::from(s);
         }
         for (x, v) in self.row.iter_mut().enumerate() {
             *v = self.columns.apply(x, &self.scratch);
         }
+        let row = std::mem::take(&mut self.row);
+        for i in 0..self.row_targets[r].len() {
+            let (t, w) = self.row_targets[r][i];
+            let acc = self.accumulator(t);
+            for (a, v) in acc.iter_mut().zip(&row) {
+                *a += w * v;
+            }
+        }
+        self.row = row;
+        self.close_rows_ending_at(r);
+    }
+
+    /// The running sum of output row `t`, opened at zero when first touched.
+    fn accumulator(&mut self, t: usize) -> &mut Vec<f64> {
+        let k = match self.open.iter().position(|(row, _)| *row == t) {
+            Some(k) => k,
+            None => {
+                let mut acc = self.spare.pop().unwrap_or_default();
+                acc.clear();
+                acc.resize(self.fit.size, 0.0);
+                self.open.push((t, acc));
+                self.open.len() - 1
+            }
+        };
+        &mut self.open[k].1
+    }
+
+    /// Output rows whose last source row was `r` are complete: store them.
+    fn close_rows_ending_at(&mut self, r: usize) {
         let n = self.fit.size;
-        for &(t, w) in targets {
-            let out_row = &mut self.out[t * n..(t + 1) * n];
-            for (o, v) in out_row.iter_mut().zip(&self.row) {
-                *o += w * v;
+        let mut k = 0;
+        while k < self.open.len() {
+            let t = self.open[k].0;
+            if self.last_source[t] == r {
+                let (_, acc) = self.open.swap_remove(k);
+                for (o, a) in self.out[t * n..(t + 1) * n].iter_mut().zip(&acc) {
+                    *o = *a as f32;
+                }
+                self.spare.push(acc);
+            } else {
+                k += 1;
             }
         }
     }
@@ -254,14 +307,14 @@ mod tests {
     fn tent_weights_sum_to_one_and_keep_ramps() {
         for (s, t) in [(300, 257), (200, 257), (16384, 4097), (2, 17)] {
             let taps = Taps::new(s, t, FitMethod::Resampled);
-            let ratio = (s - 1) as f32 / (t - 1) as f32;
-            let ramp: Vec<f32> = (0..s).map(|j| j as f32).collect();
+            let ratio = (s - 1) as f64 / (t - 1) as f64;
+            let ramp: Vec<f64> = (0..s).map(|j| j as f64).collect();
             for i in 0..t {
-                let sum: f32 = taps.weights[i].iter().sum();
+                let sum: f64 = taps.weights[i].iter().sum();
                 assert!((sum - 1.0).abs() < 1e-5, "{s}->{t} point {i}: {sum}");
                 // A symmetric filter reproduces a ramp wherever it is not cut
                 // by the edge; at the edges it averages inwards.
-                let want = i as f32 * ratio;
+                let want = i as f64 * ratio;
                 let got = taps.apply(i, &ramp);
                 let slack = if ratio <= 1.0 { 1e-2 } else { ratio / 2.0 };
                 assert!(
@@ -271,8 +324,20 @@ mod tests {
             }
             if ratio <= 1.0 {
                 assert_eq!(taps.apply(0, &ramp), 0.0);
-                assert!((taps.apply(t - 1, &ramp) - (s - 1) as f32).abs() < 1e-3);
+                assert!((taps.apply(t - 1, &ramp) - (s - 1) as f64).abs() < 1e-3);
             }
+        }
+    }
+
+    #[test]
+    fn constants_stay_exactly_constant() {
+        for (w, h) in [(40, 40), (300, 200), (2, 3), (1500, 1500)] {
+            let fit = Fit::plan(w, h);
+            let mut r = Resampler::new(fit);
+            for y in 0..h {
+                r.push_row(y, std::iter::repeat_n(1234.0, w as usize));
+            }
+            assert!(r.finish().iter().all(|&v| v == 1234.0), "{w}x{h}");
         }
     }
 

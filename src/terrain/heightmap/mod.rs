@@ -199,7 +199,7 @@ fn natural_scale(lo: f32, hi: f32, extent: f32) -> f64 {
 fn sea_sample(samples: &[f32], lo: f32) -> f64 {
     let mut histogram = vec![0u32; 65536];
     for &s in samples {
-        histogram[s.round().clamp(0.0, 65535.0) as usize] += 1;
+        histogram[s.floor().clamp(0.0, 65535.0) as usize] += 1;
     }
     let wanted = (samples.len() as f64 * SEA_PERCENTILE / 100.0).ceil() as u64;
     let mut seen = 0u64;
