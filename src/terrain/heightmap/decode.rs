@@ -46,12 +46,14 @@ pub struct RawGrid {
 /// Reads `bytes` (the contents of `path`) into a fitted grid.
 pub fn read(bytes: &[u8], path: &Path) -> Result<RawGrid, HeightmapError> {
     if !bytes.starts_with(&SIGNATURE) {
-        let problem = if bytes.len() < SIGNATURE.len() && SIGNATURE.starts_with(bytes) {
+        let problem = if bytes.is_empty() {
+            "is empty, not a PNG file"
+        } else if bytes.len() < SIGNATURE.len() && SIGNATURE.starts_with(bytes) {
             "is truncated: it ends inside the PNG signature"
         } else {
             "is not a PNG file"
         };
-        let kind = if problem.starts_with("is not") {
+        let kind = if problem.contains("not a PNG") {
             ErrorKind::NotPng
         } else {
             ErrorKind::Truncated
