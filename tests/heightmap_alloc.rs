@@ -57,7 +57,16 @@ fn memory_is_bounded() {
     // 6000x600 16-bit: a full decode buffer alone would be 7.2 MB; the
     // fitted 513x513 grid is 1 MB.
     let (w, h) = (6000u32, 600u32);
-    let samples: Vec<u16> = (0..w * h).map(|i| ((i % w) ^ (i / w)) as u16).collect();
+    // Noise, so the file is big too (it barely compresses).
+    let mut state = 0x9e37_79b9_7f4a_7c15u64;
+    let samples: Vec<u16> = (0..w * h)
+        .map(|_| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 48) as u16
+        })
+        .collect();
     let bytes = gray_png(w, h, 16, &samples, &[]);
     drop(samples);
     let (result, peak) = peak_of(|| decode(&bytes, Path::new("wide.png")));
@@ -65,6 +74,19 @@ fn memory_is_bounded() {
     assert_eq!(d.field.size(), 513);
     let grid = 513 * 513 * 4;
     eprintln!("peak {peak} bytes for a {grid}-byte grid");
+
+    // Loading from a file streams it: the 3+ MB file is never held whole.
+    let path = heightmap_support::temp_dir("alloc").join("wide.png");
+    std::fs::write(&path, &bytes).unwrap();
+    let file_len = bytes.len();
+    drop(bytes);
+    let (result, peak) = peak_of(|| mountains::terrain::heightmap::load(&path));
+    assert_eq!(result.unwrap().field, d.field);
+    assert!(
+        peak < grid + MIB,
+        "load took {peak} bytes; the file is {file_len}"
+    );
+    eprintln!("load peak {peak} bytes, file {file_len} bytes");
     assert!(
         peak < grid + 3 * MIB,
         "decoding took {} MiB at its peak",

@@ -246,6 +246,13 @@ fn missing_file_is_an_io_error_naming_it() {
 }
 
 #[test]
+fn a_directory_is_an_io_error() {
+    let dir = heightmap_support::temp_dir("load-dir");
+    let e = load(&dir).unwrap_err();
+    assert_eq!(e.kind, ErrorKind::Io, "{e}");
+}
+
+#[test]
 fn our_own_file_passes_these_checks() {
     let f = heightmap_support::field(5, 400.0);
     let bytes =

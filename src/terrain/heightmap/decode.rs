@@ -7,7 +7,7 @@
 //! capped at 32 MiB, and compressed text is only inflated for our own keys,
 //! to at most 4 KiB.
 
-use std::io::{self, Cursor};
+use std::io::{self, BufRead, Read, Seek, SeekFrom};
 use std::path::Path;
 
 use png::{BitDepth, ColorType, Decoder, DecodingError, Limits, Transformations};
@@ -43,26 +43,17 @@ pub struct RawGrid {
     pub text: Vec<(String, String)>,
 }
 
-/// Reads `bytes` (the contents of `path`) into a fitted grid.
-pub fn read(bytes: &[u8], path: &Path) -> Result<RawGrid, HeightmapError> {
-    if !bytes.starts_with(&SIGNATURE) {
-        let problem = if bytes.is_empty() {
-            "is empty, not a PNG file"
-        } else if bytes.len() < SIGNATURE.len() && SIGNATURE.starts_with(bytes) {
-            "is truncated: it ends inside the PNG signature"
-        } else {
-            "is not a PNG file"
-        };
-        let kind = if problem.contains("not a PNG") {
-            ErrorKind::NotPng
-        } else {
-            ErrorKind::Truncated
-        };
-        return Err(HeightmapError::new(path, kind, problem));
-    }
+/// Reads a PNG of `len` bytes from `input` (the contents of `path`) into a
+/// fitted grid.
+pub fn read<R: BufRead + Seek>(
+    mut input: R,
+    len: u64,
+    path: &Path,
+) -> Result<RawGrid, HeightmapError> {
+    check_signature(&mut input, path)?;
     let err = |e: DecodingError| png_error(path, e);
     let mut decoder = Decoder::new_with_limits(
-        Cursor::new(bytes),
+        input,
         Limits {
             bytes: DECODER_BYTE_LIMIT,
         },
@@ -71,7 +62,7 @@ pub fn read(bytes: &[u8], path: &Path) -> Result<RawGrid, HeightmapError> {
     let header = decoder.read_header_info().map_err(err)?;
     let (width, height, interlaced) = (header.width, header.height, header.interlaced);
     let bit_depth = check_header(header.color_type, header.bit_depth, width, height, path)?;
-    check_length(bytes.len(), width, height, bit_depth, path)?;
+    check_length(len, width, height, bit_depth, path)?;
     let mut reader = decoder.read_info().map_err(err)?;
     let fit = Fit::plan(width, height);
     let mut grid = Resampler::new(fit);
@@ -92,6 +83,33 @@ pub fn read(bytes: &[u8], path: &Path) -> Result<RawGrid, HeightmapError> {
         samples: grid.finish(),
         text,
     })
+}
+
+/// Reads the first 8 bytes, names what is not a PNG, and rewinds.
+fn check_signature<R: Read + Seek>(input: &mut R, path: &Path) -> Result<(), HeightmapError> {
+    let io =
+        |e: io::Error| HeightmapError::new(path, ErrorKind::Io, format!("cannot be read: {e}"));
+    let mut head = Vec::with_capacity(SIGNATURE.len());
+    input
+        .by_ref()
+        .take(SIGNATURE.len() as u64)
+        .read_to_end(&mut head)
+        .map_err(io)?;
+    input.seek(SeekFrom::Start(0)).map_err(io)?;
+    if head == SIGNATURE {
+        return Ok(());
+    }
+    let (kind, problem) = if head.is_empty() {
+        (ErrorKind::NotPng, "is empty, not a PNG file")
+    } else if SIGNATURE.starts_with(&head) {
+        (
+            ErrorKind::Truncated,
+            "is truncated: it ends inside the PNG signature",
+        )
+    } else {
+        (ErrorKind::NotPng, "is not a PNG file")
+    };
+    Err(HeightmapError::new(path, kind, problem))
 }
 
 /// Rejects what is not an 8/16-bit grayscale image of a sane size.
@@ -155,7 +173,7 @@ fn check_header(
 /// Deflate expands at most 1032:1, so a file too short to hold its image
 /// even at that ratio is truncated: say so before allocating the grid.
 fn check_length(
-    len: usize,
+    len: u64,
     width: u32,
     height: u32,
     bit_depth: u8,
@@ -163,7 +181,7 @@ fn check_length(
 ) -> Result<(), HeightmapError> {
     let row = 1 + u64::from(width) * u64::from(bit_depth / 8);
     let raw = row * u64::from(height);
-    if raw > (len as u64).saturating_mul(MAX_DEFLATE_RATIO) {
+    if raw > len.saturating_mul(MAX_DEFLATE_RATIO) {
         return Err(HeightmapError::new(
             path,
             ErrorKind::Truncated,
@@ -186,8 +204,8 @@ fn samples(row: &[u8], bit_depth: u8) -> Box<dyn Iterator<Item = f32> + '_> {
 }
 
 /// Interlaced images come in passes: decode the whole frame (bounded) first.
-fn read_whole(
-    reader: &mut png::Reader<Cursor<&[u8]>>,
+fn read_whole<R: BufRead + Seek>(
+    reader: &mut png::Reader<R>,
     grid: &mut Resampler,
     bit_depth: u8,
     path: &Path,

@@ -88,41 +88,25 @@ pub fn save(
 }
 
 /// Loads an 8- or 16-bit grayscale PNG heightmap, ours or a terrain tool's.
+///
+/// The file is streamed: memory is the fitted grid, never the whole image.
 pub fn load(path: &Path) -> Result<DataSet, HeightmapError> {
-    let bytes = read_bounded(path)?;
-    decode(&bytes, path)
-}
-
-/// Largest file `load` reads: a 16384x16384 16-bit image that does not
-/// compress at all, plus room for chunks.
-const MAX_FILE_BYTES: u64 = 2 * (MAX_SOURCE_SIDE as u64).pow(2) + (64 << 20);
-
-fn read_bounded(path: &Path) -> Result<Vec<u8>, HeightmapError> {
-    use std::io::Read;
     let io = |e: std::io::Error| {
         HeightmapError::new(path, ErrorKind::Io, format!("cannot be read: {e}"))
     };
     let file = std::fs::File::open(path).map_err(io)?;
-    let mut bytes = Vec::new();
-    file.take(MAX_FILE_BYTES + 1)
-        .read_to_end(&mut bytes)
-        .map_err(io)?;
-    if bytes.len() as u64 > MAX_FILE_BYTES {
-        return Err(HeightmapError::new(
-            path,
-            ErrorKind::TooLarge,
-            format!(
-                "is larger than the {} MiB a heightmap may be",
-                MAX_FILE_BYTES >> 20
-            ),
-        ));
-    }
-    Ok(bytes)
+    let len = file.metadata().map_err(io)?.len();
+    let raw = decode::read(std::io::BufReader::new(file), len, path)?;
+    finish(raw, path)
 }
 
 /// Decodes PNG `bytes`; `path` only names the file in messages.
 pub fn decode(bytes: &[u8], path: &Path) -> Result<DataSet, HeightmapError> {
-    let raw = decode::read(bytes, path)?;
+    let raw = decode::read(std::io::Cursor::new(bytes), bytes.len() as u64, path)?;
+    finish(raw, path)
+}
+
+fn finish(raw: RawGrid, path: &Path) -> Result<DataSet, HeightmapError> {
     let meta = meta::parse(&raw.text, path)?;
     to_dataset(raw, meta, path)
 }
