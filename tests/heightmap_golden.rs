@@ -38,11 +38,20 @@ fn regenerate_golden_file() {
 fn format_1_file_loads_as_the_same_mountain() {
     let d = heightmap::load(&golden_path()).unwrap();
     assert_eq!(d.seed, Some(GOLDEN_SEED));
-    assert_eq!(d.params, Some(GeneratorParams::from_settings(&golden_settings())));
+    assert_eq!(
+        d.params,
+        Some(GeneratorParams::from_settings(&golden_settings()))
+    );
     assert_eq!(d.field.extent(), 321.5);
     assert!(d.notes.is_empty(), "{:?}", d.notes);
     // The same field saved today decodes to the same heights.
     let f = heightmap_support::field(5, 321.5);
-    let today = encode(&f, Some(GOLDEN_SEED), &golden_settings(), Path::new("t.png")).unwrap();
+    let today = encode(
+        &f,
+        Some(GOLDEN_SEED),
+        &golden_settings(),
+        Path::new("t.png"),
+    )
+    .unwrap();
     assert_eq!(decode(&today, Path::new("t.png")).unwrap().field, d.field);
 }

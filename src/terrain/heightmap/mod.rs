@@ -112,50 +112,29 @@ fn finish(raw: RawGrid, path: &Path) -> Result<DataSet, HeightmapError> {
 }
 
 /// Turns samples into heights relative to sea level, filling in missing keys.
-fn to_dataset(raw: RawGrid, meta: Metadata, path: &Path) -> Result<DataSet, HeightmapError> {
+fn to_dataset(raw: RawGrid, mut meta: Metadata, path: &Path) -> Result<DataSet, HeightmapError> {
     let RawGrid {
         fit,
         bit_depth,
         mut samples,
         ..
     } = raw;
-    let mut notes = meta.notes;
+    let mut notes = std::mem::take(&mut meta.notes);
     if fit.method != FitMethod::Exact || fit.cropped() {
         notes.push(format!("fitted: {fit}"));
     }
+    let v = Vertical::choose(&samples, &meta, &mut notes);
     let (lo, hi) = quantise::min_max(&samples);
-    let extent = meta.extent.unwrap_or_else(|| {
-        notes.push(format!(
-            "no mountains:extent: width {DEFAULT_EXTENT} assumed"
-        ));
-        DEFAULT_EXTENT
-    });
-    let scale = meta.scale.unwrap_or_else(|| {
-        notes.push(format!(
-            "no mountains:scale: relief set to {DEFAULT_RELIEF} of the width"
-        ));
-        natural_scale(lo, hi, extent)
-    });
-    let offset = meta.offset.unwrap_or(0.0);
-    let sea_level = meta.sea_level.unwrap_or_else(|| {
-        notes.push(format!(
-            "no mountains:sea_level: water line at the {SEA_PERCENTILE}th percentile of the heights"
-        ));
-        let s = sea_sample(&samples, lo);
-        (f64::from(offset) + scale * s) as f32
-    });
-    let to_height =
-        |s: f32| (f64::from(offset) + scale * f64::from(s) - f64::from(sea_level)) as f32;
-    if !(to_height(lo).is_finite() && to_height(hi).is_finite()) {
+    if !(v.height(lo).is_finite() && v.height(hi).is_finite()) {
         return Err(HeightmapError::metadata(
             path,
             meta::KEY_SCALE,
             "with mountains:offset and mountains:sea_level, gives heights too large to hold",
         ));
     }
-    samples.iter_mut().for_each(|s| *s = to_height(*s));
+    samples.iter_mut().for_each(|s| *s = v.height(*s));
     quantise::snap_to_grid(&mut samples);
-    let field = Heightfield::from_heights(fit.size, extent, samples)
+    let field = Heightfield::from_heights(fit.size, v.extent, samples)
         .ok_or_else(|| HeightmapError::new(path, ErrorKind::Damaged, "fits no grid size"))?;
     Ok(DataSet {
         field,
@@ -163,11 +142,58 @@ fn to_dataset(raw: RawGrid, meta: Metadata, path: &Path) -> Result<DataSet, Heig
         params: meta.params,
         fit,
         bit_depth,
-        scale,
-        offset,
-        sea_level,
+        scale: v.scale,
+        offset: v.offset,
+        sea_level: v.sea_level,
         notes,
     })
+}
+
+/// How samples become heights: the file's keys, or the documented defaults.
+struct Vertical {
+    extent: f32,
+    scale: f64,
+    offset: f32,
+    sea_level: f32,
+}
+
+impl Vertical {
+    /// Takes each key from `meta` or, noting it, from the defaults.
+    fn choose(samples: &[f32], meta: &Metadata, notes: &mut Vec<String>) -> Vertical {
+        let (lo, hi) = quantise::min_max(samples);
+        let extent = meta.extent.unwrap_or_else(|| {
+            notes.push(format!(
+                "no mountains:extent: width {DEFAULT_EXTENT} assumed"
+            ));
+            DEFAULT_EXTENT
+        });
+        let scale = meta.scale.unwrap_or_else(|| {
+            notes.push(format!(
+                "no mountains:scale: relief set to {DEFAULT_RELIEF} of the width"
+            ));
+            natural_scale(lo, hi, extent)
+        });
+        let offset = meta.offset.unwrap_or(0.0);
+        let sea_level = meta.sea_level.unwrap_or_else(|| {
+            notes.push(format!(
+                "no mountains:sea_level: water line at the {SEA_PERCENTILE}th percentile \
+                 of the heights"
+            ));
+            (f64::from(offset) + scale * sea_sample(samples, lo)) as f32
+        });
+        Vertical {
+            extent,
+            scale,
+            offset,
+            sea_level,
+        }
+    }
+
+    /// Height above sea level of sample value `s`.
+    fn height(&self, s: f32) -> f32 {
+        let elevation = f64::from(self.offset) + self.scale * f64::from(s);
+        (elevation - f64::from(self.sea_level)) as f32
+    }
 }
 
 /// Scale that makes the relief `DEFAULT_RELIEF` of `extent`.
