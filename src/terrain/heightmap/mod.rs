@@ -19,7 +19,9 @@
 //!   sample, so some water shows and the lowest ground is always under it;
 //! - no `mountains:extent`: the width is [`DEFAULT_EXTENT`].
 //!
-//! Each assumption is listed in [`DataSet::notes`]. Bad metadata: see [`meta`].
+//! 8-bit images are softened (see [`soften`]) so their 256 levels do not
+//! show as terraces. Each assumption is listed in [`DataSet::notes`]. Bad
+//! metadata: see [`meta`].
 
 mod decode;
 mod encode;
@@ -27,6 +29,7 @@ mod error;
 pub mod fit;
 pub mod meta;
 pub mod quantise;
+pub mod soften;
 
 use std::path::Path;
 
@@ -122,6 +125,10 @@ fn to_dataset(raw: RawGrid, mut meta: Metadata, path: &Path) -> Result<DataSet, 
     let mut notes = std::mem::take(&mut meta.notes);
     if fit.method != FitMethod::Exact || fit.cropped() {
         notes.push(format!("fitted: {fit}"));
+    }
+    if bit_depth == 8 {
+        soften::soften_steps(&mut samples, fit.size);
+        notes.push("8-bit: steps between levels softened into slopes".into());
     }
     let v = Vertical::choose(&samples, &meta, &mut notes);
     let (lo, hi) = quantise::min_max(&samples);
