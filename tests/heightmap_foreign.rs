@@ -249,3 +249,14 @@ fn unknown_keys_are_ignored_and_bad_origin_keys_only_noted() {
     );
     assert!(d.field.heights().iter().all(|&h| h == 500.0));
 }
+
+#[test]
+fn largest_allowed_side_and_extreme_aspect_load() {
+    for (w, h) in [(16384u32, 3u32), (3, 16384)] {
+        let samples: Vec<u16> = (0..w * h).map(|i| (i % 5000) as u16).collect();
+        let d = load(&gray_png(w, h, 16, &samples, &[]));
+        assert_eq!(d.field.size(), 17, "{w}x{h}");
+        assert_eq!(d.fit.crop_side, 3);
+        assert!(d.fit.cropped());
+    }
+}
