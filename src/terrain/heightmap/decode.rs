@@ -25,7 +25,7 @@ const DECODER_BYTE_LIMIT: usize = 32 << 20;
 const INTERLACED_BYTE_LIMIT: usize = 64 << 20;
 /// Largest inflated value of one of our compressed text chunks.
 const TEXT_LIMIT: usize = 4096;
-/// Keys we inflate when compressed; others are never decompressed.
+/// Prefix of our keys; other text chunks are skipped (never inflated).
 const OUR_PREFIX: &str = "mountains:";
 /// Most bytes one byte of deflate data can expand to (with a safety margin).
 const MAX_DEFLATE_RATIO: u64 = 1100;
@@ -39,7 +39,7 @@ pub struct RawGrid {
     pub bit_depth: u8,
     /// `fit.size` squared samples (0..=255 or 0..=65535, filtered), row-major.
     pub samples: Vec<f32>,
-    /// Text chunks: all tEXt, and the zTXt/iTXt ones with our prefix.
+    /// Text chunks with our prefix (tEXt, zTXt or iTXt).
     pub text: Vec<(String, String)>,
 }
 
@@ -238,6 +238,7 @@ fn text_chunks(info: &png::Info, path: &Path) -> Result<Vec<(String, String)>, H
     let mut text: Vec<(String, String)> = info
         .uncompressed_latin1_text
         .iter()
+        .filter(|c| c.keyword.starts_with(OUR_PREFIX))
         .map(|c| (c.keyword.clone(), c.text.clone()))
         .collect();
     let unreadable =
