@@ -260,3 +260,39 @@ fn largest_allowed_side_and_extreme_aspect_load() {
         assert!(d.fit.cropped());
     }
 }
+
+mod random_images {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(60))]
+        #[test]
+        fn any_small_gray_image_fits_and_round_trips(
+            w in 2u32..80,
+            h in 2u32..80,
+            sixteen in any::<bool>(),
+            seed in any::<u64>(),
+        ) {
+            let bits = if sixteen { 16 } else { 8 };
+            let mut state = seed | 1;
+            let samples: Vec<u16> = (0..w * h)
+                .map(|_| {
+                    state ^= state << 13;
+                    state ^= state >> 7;
+                    state ^= state << 17;
+                    if sixteen { (state >> 48) as u16 } else { (state >> 56) as u16 }
+                })
+                .collect();
+            let d = load(&gray_png(w, h, bits, &samples, &[]));
+            let n = d.field.size();
+            prop_assert!(n >= 17 && (n - 1).is_power_of_two());
+            prop_assert_eq!(d.fit.crop_side, w.min(h));
+            prop_assert!(d.field.heights().iter().all(|h| h.is_finite()));
+            let relief = d.field.max() - d.field.min();
+            prop_assert!(relief <= DEFAULT_RELIEF * DEFAULT_EXTENT * 1.0001);
+            let bytes = encode(&d.field, None, &Settings::default(), Path::new(P)).unwrap();
+            prop_assert_eq!(load(&bytes).field, d.field);
+        }
+    }
+}
