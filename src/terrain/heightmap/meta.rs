@@ -14,11 +14,11 @@
 
 use std::path::Path;
 
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
 
 use super::error::HeightmapError;
 use super::quantise::Quantisation;
-use crate::settings::{Generator, Profile, Settings};
+use crate::settings::{Generator, Profile, Settings, load};
 
 /// Version of this key set; bumped only if a key changes meaning.
 pub const FORMAT_VERSION: u32 = 1;
@@ -298,91 +298,33 @@ fn read_params<'a>(
     get: &impl Fn(&str) -> Option<&'a str>,
     notes: &mut Vec<String>,
 ) -> Result<GeneratorParams, String> {
-    let defaults = GeneratorParams::from_settings(&Settings::default());
-    let mut field = |key: &str| {
-        let v = get(key);
-        if v.is_none() {
-            notes.push(format!("{key} missing; the default is assumed"));
-        }
-        v
-    };
-    Ok(GeneratorParams {
-        generator: read_or(
-            field(KEY_GENERATOR),
-            KEY_GENERATOR,
-            defaults.generator,
-            by_name,
-        )?,
-        cragginess: read_or(
-            field(KEY_CRAGGINESS),
-            KEY_CRAGGINESS,
-            defaults.cragginess,
-            |v| in_range(v, 1, 128),
-        )?,
-        elevation: read_or(
-            field(KEY_ELEVATION),
-            KEY_ELEVATION,
-            defaults.elevation,
-            |v| finite_f32(v).map(|x| x as f32),
-        )?,
-        roughness: read_or(
-            field(KEY_ROUGHNESS),
-            KEY_ROUGHNESS,
-            defaults.roughness,
-            |v| in_range(v, 1.0, 5.0),
-        )?,
-        contour: read_or(field(KEY_CONTOUR), KEY_CONTOUR, defaults.contour, |v| {
-            in_range(v, 0.25, 5.0)
-        })?,
-        profile: read_or(field(KEY_PROFILE), KEY_PROFILE, defaults.profile, by_name)?,
-        height: read_or(field(KEY_HEIGHT), KEY_HEIGHT, defaults.height, |v| {
-            in_range(v, 1, 10)
-        })?,
-        detail: read_or(field(KEY_DETAIL), KEY_DETAIL, defaults.detail, |v| {
-            in_range(v, 4, 12)
-        })?,
-        low_detail: read_or(
-            field(KEY_LOW_DETAIL),
-            KEY_LOW_DETAIL,
-            defaults.low_detail,
-            |v| v.parse().map_err(|_| format!("{v:?} is not true or false")),
-        )?,
-        sea_level: read_or(
-            field(KEY_SEA_FRACTION),
-            KEY_SEA_FRACTION,
-            defaults.sea_level,
-            |v| in_range(v, -1.0, 1.0),
-        )?,
-    })
-}
-
-fn read_or<T>(
-    v: Option<&str>,
-    key: &str,
-    default: T,
-    parse: impl Fn(&str) -> Result<T, String>,
-) -> Result<T, String> {
-    match v {
-        None => Ok(default),
-        Some(v) => parse(v).map_err(|e| format!("{key}: {e}")),
+    // Each value is checked by the settings key table, so the ranges a file
+    // may hold are exactly the ranges a user may set.
+    let mut settings = Settings::default();
+    for (meta_key, key) in PARAM_KEYS {
+        let Some(raw) = get(meta_key) else {
+            notes.push(format!("{meta_key} missing; the default is assumed"));
+            continue;
+        };
+        load::apply_set(&mut settings, key, raw)
+            .map_err(|p| format!("{meta_key}: {}", p.message))?;
     }
+    Ok(GeneratorParams::from_settings(&settings))
 }
 
-fn in_range<T>(v: &str, lo: T, hi: T) -> Result<T, String>
-where
-    T: std::str::FromStr + PartialOrd + std::fmt::Display,
-{
-    match v.parse::<T>() {
-        Ok(x) if x >= lo && x <= hi => Ok(x),
-        _ => Err(format!("{v:?} is not a number from {lo} to {hi}")),
-    }
-}
-
-fn by_name<T: for<'de> Deserialize<'de>>(v: &str) -> Result<T, String> {
-    toml::Value::String(v.to_string())
-        .try_into()
-        .map_err(|_| format!("{v:?} is not a name this program knows"))
-}
+/// The generator parameters stored with a seed, and the settings key each sets.
+const PARAM_KEYS: &[(&str, &str)] = &[
+    (KEY_GENERATOR, "generator"),
+    (KEY_CRAGGINESS, "cragginess"),
+    (KEY_ELEVATION, "elevation"),
+    (KEY_ROUGHNESS, "roughness"),
+    (KEY_CONTOUR, "contour"),
+    (KEY_PROFILE, "profile"),
+    (KEY_HEIGHT, "height"),
+    (KEY_DETAIL, "detail"),
+    (KEY_LOW_DETAIL, "low_detail"),
+    (KEY_SEA_FRACTION, "sea_level"),
+];
 
 #[cfg(test)]
 mod tests {
