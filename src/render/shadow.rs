@@ -1,34 +1,158 @@
 //! Cast shadows: which grid points see the light (a horizon sweep).
 //!
-//! STUB with the final signatures; the colour work replaces the bodies.
+//! Light rays are parallel, so the shadow a point receives depends only on
+//! the terrain along the line from it towards the light. The sweep visits
+//! points starting from the light's side and carries, per point, the height
+//! of the highest shadow ray passing over it (`horizon`): the ray from the
+//! point's neighbour towards the light, lowered by one step of the light's
+//! slope, or the point itself if it stands higher. The neighbour falls between
+//! two grid points, so its horizon is interpolated. Every point is visited
+//! once: O(points), rows in memory order, one row of state per pass.
+//!
+//! A point is fully lit when it stands at or above the horizon arriving from
+//! its neighbour and fully dark `PENUMBRA` light-steps below it, which gives
+//! shadow edges a soft rim about two cells wide instead of stair steps.
 
 use crate::terrain::Heightfield;
 use glam::Vec3;
+
+/// Width of the soft shadow edge, in heights the light ray drops per step.
+const PENUMBRA: f32 = 2.0;
+
+/// Height of "no occluder": far below any terrain yet finite, so that a
+/// zero interpolation weight times it is 0 and not NaN. Interpolations are
+/// written `a * (1 - w) + b * w` so a weight of 1 returns `b` exactly.
+const NONE: f32 = -1.0e30;
 
 /// Per grid point, how much direct light arrives (1 lit, 0 shadowed).
 #[derive(Debug, Clone)]
 pub struct ShadowMap {
     size: usize,
-    lit: Vec<f32>,
+    /// Light per point in 1/255ths, row-major.
+    lit: Vec<u8>,
 }
 
 impl ShadowMap {
     /// Every point lit (shadows off).
     pub fn all_lit(field: &Heightfield) -> Self {
+        Self::uniform(field, 255)
+    }
+
+    /// Every point with the same light, in 1/255ths.
+    fn uniform(field: &Heightfield, level: u8) -> Self {
         ShadowMap {
             size: field.size(),
-            lit: vec![1.0; field.size() * field.size()],
+            lit: vec![level; field.size() * field.size()],
         }
+    }
+
+    /// Points per side, the same as the field's.
+    pub fn size(&self) -> usize {
+        self.size
     }
 
     /// Light reaching the grid point at column `x`, row `y`.
     #[inline]
     pub fn lit(&self, x: usize, y: usize) -> f32 {
-        self.lit[y * self.size + x]
+        self.lit[y * self.size + x] as f32 * (1.0 / 255.0)
     }
 }
 
 /// Computes which points of `field` the light from direction `light` reaches.
-pub fn cast(field: &Heightfield, _light: Vec3) -> ShadowMap {
-    ShadowMap::all_lit(field)
+///
+/// `light` points from the ground towards the light, z up, y towards the back
+/// (row 0). A light straight overhead (or an unusable vector) casts no
+/// shadows; a light at or below the horizon leaves every point dark.
+pub fn cast(field: &Heightfield, light: Vec3) -> ShadowMap {
+    // Grid rows run from the back, so the light's grid direction flips y.
+    let (gx, gy) = (light.x, -light.y);
+    let flat = gx.hypot(gy);
+    if !(flat.is_finite() && light.z.is_finite()) || flat < 1e-6 * light.z.abs() {
+        return ShadowMap::all_lit(field);
+    }
+    if light.z <= 0.0 {
+        return ShadowMap::uniform(field, 0);
+    }
+    let n = field.size();
+    let spacing = field.extent().abs() / (n - 1) as f32;
+    let rise = light.z / flat * spacing;
+    let mut map = ShadowMap::uniform(field, 255);
+    if gy.abs() >= gx.abs() {
+        sweep_rows(field, &mut map, gx / gy.abs(), gy > 0.0, rise);
+    } else {
+        sweep_columns(field, &mut map, gy / gx.abs(), gx > 0.0, rise);
+    }
+    map
+}
+
+/// Light in 1/255ths for a point at `h` under a ray arriving at `ray`.
+#[inline]
+fn light_level(h: f32, ray: f32, penumbra: f32) -> u8 {
+    let t = 1.0 + (h - ray) / penumbra;
+    (t.max(0.0).min(1.0) * 255.0 + 0.5) as u8
+}
+
+/// Mostly-vertical light: each row's rays come from the previous row (nearer
+/// the light), offset by `dx` columns (|dx| <= 1). `towards_front` is true
+/// when the light lies in front (higher rows), so the sweep starts there.
+fn sweep_rows(field: &Heightfield, map: &mut ShadowMap, dx: f32, towards_front: bool, rise: f32) {
+    let n = field.size();
+    let drop = rise * (1.0 + dx * dx).sqrt();
+    let penumbra = PENUMBRA * drop;
+    // dx = 1 exactly takes all of the right source, keeping the slice in range.
+    let base = dx.floor().min(0.0);
+    let w = dx - base;
+    // Index of the left source in a row padded with NONE on both sides.
+    let first = (base as isize + 1) as usize;
+    let mut prev = vec![NONE; n + 2];
+    let mut next = vec![NONE; n + 2];
+    for k in 0..n {
+        let y = if towards_front { n - 1 - k } else { k };
+        let heights = field.row(y);
+        let lit = &mut map.lit[y * n..(y + 1) * n];
+        let sources = prev[first..first + n + 1].windows(2);
+        for (((&h, l), out), s) in heights.iter().zip(lit).zip(&mut next[1..=n]).zip(sources) {
+            let ray = s[0] * (1.0 - w) + s[1] * w - drop;
+            *l = light_level(h, ray, penumbra);
+            *out = ray.max(h);
+        }
+        std::mem::swap(&mut prev, &mut next);
+    }
+}
+
+/// Mostly-horizontal light: each point's ray comes from the neighbouring
+/// column nearer the light, offset by `dy` rows (|dy| <= 1) into the row
+/// swept before. `towards_right` is true when the light lies to the right.
+fn sweep_columns(
+    field: &Heightfield,
+    map: &mut ShadowMap,
+    dy: f32,
+    towards_right: bool,
+    rise: f32,
+) {
+    let n = field.size();
+    let drop = rise * (1.0 + dy * dy).sqrt();
+    let penumbra = PENUMBRA * drop;
+    let w = dy.abs();
+    // Rays come from row y + sign(dy): sweep rows from that side.
+    let towards_front = dy > 0.0;
+    let mut prev = vec![NONE; n];
+    let mut cur = vec![NONE; n];
+    for k in 0..n {
+        let y = if towards_front { n - 1 - k } else { k };
+        let heights = field.row(y);
+        let lit = &mut map.lit[y * n..(y + 1) * n];
+        let mut carried = NONE;
+        let mut carried_prev = NONE;
+        for i in 0..n {
+            let x = if towards_right { n - 1 - i } else { i };
+            let ray = carried * (1.0 - w) + carried_prev * w - drop;
+            let h = heights[x];
+            lit[x] = light_level(h, ray, penumbra);
+            cur[x] = ray.max(h);
+            carried = cur[x];
+            carried_prev = prev[x];
+        }
+        std::mem::swap(&mut prev, &mut cur);
+    }
 }
