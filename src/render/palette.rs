@@ -257,18 +257,37 @@ fn filter(mode: ColorMode, c: Rgb) -> Rgb {
     }
 }
 
-/// Gain and offset of the final tone curve: Mono stretches its greys so the
-/// 17 dither levels are all used, like seed 000's pattern choice.
+/// Gain and offset of the final tone curve. Mono follows seed 000's pattern
+/// choice, `pattern = 36 * value - 10` of 16: shaded values from 0.28 to
+/// 0.75 spread over all 17 dither levels, so shading, not colour, carries
+/// the picture.
 fn tone(mode: ColorMode) -> (f32, f32) {
     match mode {
-        ColorMode::Mono => (1.45, 0.12 * 255.0),
+        ColorMode::Mono => (36.0 / 16.0, 10.0 / 16.0 * 255.0),
         _ => (1.0, 0.0),
     }
 }
 
 /// A filtered natural colour (0..=1) as a table entry (0..=255).
 fn finish(mode: ColorMode, c: Rgb) -> Rgb {
-    filter(mode, c).map(|v| v * 255.0)
+    match mode {
+        ColorMode::Mono => [mono_value(c) * 255.0; 3],
+        _ => filter(mode, c).map(|v| v * 255.0),
+    }
+}
+
+/// Seed 000's HSV value for Mono: 2/3 for green land rising to 0.94 for
+/// snow, here from the natural colour's luminance.
+fn mono_value(c: Rgb) -> f32 {
+    let snow = ((luminance(c) - 0.45) / 0.5).clamp(0.0, 1.0);
+    2.0 / 3.0 + 0.27 * snow
+}
+
+/// Mono water: half grey at the shore (seed 000's middle pattern), darker
+/// with depth in step with the natural blue.
+fn mono_water(c: Rgb) -> u32 {
+    let v = 0.5 * luminance(c) / luminance(natural::SHALLOW);
+    to_u32([v.min(1.0); 3])
 }
 
 /// Where the green, brown and snow zones lie, as fractions of the highest peak.
@@ -341,7 +360,10 @@ fn water_table(
             } else {
                 natural::SEA
             };
-            pack(finish(mode, c), gain, offset)
+            match mode {
+                ColorMode::Mono => mono_water(c),
+                _ => pack(finish(mode, c), gain, offset),
+            }
         })
         .collect();
     let scale = if relative {

@@ -19,7 +19,7 @@ const LAYERS: usize = 8;
 const MAX_PROFILE: usize = 4096;
 /// Depth below a crest, in fractions of the frame height, over which the
 /// layer fades from its crest colour into the mist.
-const MIST_DEPTH: f32 = 0.22;
+const MIST_DEPTH: f32 = 0.3;
 
 /// An sRGB colour, channels 0..=1.
 type Rgb = [f32; 3];
@@ -221,8 +221,12 @@ fn paint_layer(frame: &mut Frame, layer: &Layer) -> Rect {
         return Rect::default();
     }
     let shades = mist_shades(layer, h);
+    // Mist lies in level bands below the highest crest of the range, so it
+    // does not streak down from every notch of the crest.
+    let mist_top = (layer.base - layer.relief) * h as f32;
     let pixels = frame.pixels_mut();
     for y in top..h {
+        let shade = shades[((y as f32 - mist_top).max(0.0) as usize).min(shades.len() - 1)];
         let start = y as usize * w as usize;
         let row = &mut pixels[start..start + w as usize];
         for (px, &crest) in row.iter_mut().zip(&crests) {
@@ -230,7 +234,6 @@ fn paint_layer(frame: &mut Frame, layer: &Layer) -> Rect {
             if depth <= 0.0 {
                 continue;
             }
-            let shade = shades[(depth as usize).min(shades.len() - 1)];
             // The pixel the crest crosses is covered only in part.
             *px = if depth < 1.0 { blend(*px, shade, depth) } else { shade };
         }
