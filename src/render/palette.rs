@@ -123,7 +123,7 @@ impl Palette {
     /// half as bright as a face square to the light (seed 000's floor).
     #[inline]
     pub fn land(&self, mean_height: f32, normal: Vec3, lit: f32) -> u32 {
-        let h = (mean_height * self.height_scale) as i32 + jitter(mean_height);
+        let h = ((mean_height * self.height_scale) as i32).saturating_add(jitter(mean_height));
         let h = h.clamp(0, HEIGHT_BINS as i32 - 1) as usize;
         let s = ((1.0 - normal.z) * self.steep_scale) as usize;
         let s = s.min(STEEP_BINS - 1);

@@ -10,13 +10,14 @@
 //! once: O(points), rows in memory order, one row of state per pass.
 //!
 //! A point is fully lit when it stands at or above the horizon arriving from
-//! its neighbour and fully dark `PENUMBRA` light-steps below it, which gives
-//! shadow edges a soft rim about two cells wide instead of stair steps.
+//! its neighbour, and fully dark once it is as far below it as the light
+//! rises over `PENUMBRA` cells: shadow edges get a soft rim about two cells
+//! wide, on the shadow side only, so no truly lit point is darkened.
 
 use crate::terrain::Heightfield;
 use glam::Vec3;
 
-/// Width of the soft shadow edge, in heights the light ray drops per step.
+/// Width of the soft shadow edge, in heights the light ray drops per cell.
 const PENUMBRA: f32 = 2.0;
 
 /// Height of "no occluder": far below any terrain yet finite, so that a
@@ -98,7 +99,7 @@ fn light_level(h: f32, ray: f32, penumbra: f32) -> u8 {
 fn sweep_rows(field: &Heightfield, map: &mut ShadowMap, dx: f32, towards_front: bool, rise: f32) {
     let n = field.size();
     let drop = rise * (1.0 + dx * dx).sqrt();
-    let penumbra = PENUMBRA * drop;
+    let penumbra = PENUMBRA * rise;
     // dx = 1 exactly takes all of the right source, keeping the slice in range.
     let base = dx.floor().min(0.0);
     let w = dx - base;
@@ -132,7 +133,7 @@ fn sweep_columns(
 ) {
     let n = field.size();
     let drop = rise * (1.0 + dy * dy).sqrt();
-    let penumbra = PENUMBRA * drop;
+    let penumbra = PENUMBRA * rise;
     let w = dy.abs();
     // Rays come from row y + sign(dy): sweep rows from that side.
     let towards_front = dy > 0.0;
