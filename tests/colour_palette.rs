@@ -38,7 +38,11 @@ fn palette(color: ColorMode, height: u32, relative_depth: bool) -> Palette {
 }
 
 fn rgb(c: u32) -> [i32; 3] {
-    [(c >> 16) as i32 & 0xff, (c >> 8) as i32 & 0xff, c as i32 & 0xff]
+    [
+        (c >> 16) as i32 & 0xff,
+        (c >> 8) as i32 & 0xff,
+        c as i32 & 0xff,
+    ]
 }
 
 /// A normal with the same steepness as the light but facing away from it.
@@ -52,7 +56,12 @@ fn heights() -> impl Iterator<Item = f32> {
 
 #[test]
 fn face_turned_away_is_half_as_bright_and_never_black() {
-    for mode in [ColorMode::Natural, ColorMode::Gray, ColorMode::Red, ColorMode::Cyan] {
+    for mode in [
+        ColorMode::Natural,
+        ColorMode::Gray,
+        ColorMode::Red,
+        ColorMode::Cyan,
+    ] {
         let p = palette(mode, 5, true);
         let l = p.light();
         assert!(l.dot(away(l)) < 0.0, "test needs a light below 45 degrees");
@@ -60,7 +69,10 @@ fn face_turned_away_is_half_as_bright_and_never_black() {
             let lit = rgb(p.land(h, l, 1.0));
             let dim = rgb(p.land(h, away(l), 1.0));
             for ch in 0..3 {
-                assert!((2 * dim[ch] - lit[ch]).abs() <= 2, "{mode:?} h {h}: {lit:?} vs {dim:?}");
+                assert!(
+                    (2 * dim[ch] - lit[ch]).abs() <= 2,
+                    "{mode:?} h {h}: {lit:?} vs {dim:?}"
+                );
             }
             assert!(dim.iter().sum::<i32>() > 0, "{mode:?} h {h}: black face");
             assert!(lit.iter().sum::<i32>() > dim.iter().sum::<i32>() + 30);
@@ -113,7 +125,10 @@ fn deeper_water_is_never_lighter_and_stays_blue() {
         }
         let (shore, deep) = (p.water(0.0), p.water(50.0));
         if relative {
-            assert!(rgb(deep)[2] + 40 < rgb(shore)[2], "relative depth must darken");
+            assert!(
+                rgb(deep)[2] + 40 < rgb(shore)[2],
+                "relative depth must darken"
+            );
         } else {
             assert_eq!(shore, deep, "relative depth off is one blue");
         }
@@ -160,7 +175,12 @@ fn in_family(mode: ColorMode, [r, g, b]: [i32; 3]) -> bool {
 fn each_filter_keeps_its_hue_family() {
     for mode in FILTERS {
         let p = palette(mode, 10, true);
-        let normals = [Vec3::Z, p.light(), away(p.light()), Vec3::new(0.6, 0.0, 0.8)];
+        let normals = [
+            Vec3::Z,
+            p.light(),
+            away(p.light()),
+            Vec3::new(0.6, 0.0, 0.8),
+        ];
         let mut colours = vec![p.sky()];
         for h in heights() {
             for n in normals {
@@ -201,7 +221,10 @@ fn snowy_heights(height: u32) -> usize {
 fn higher_height_setting_gives_more_snow() {
     let counts: Vec<usize> = (1..=10).map(snowy_heights).collect();
     assert_eq!(counts[0], 0, "height 1 has no snow: {counts:?}");
-    assert!(counts[9] >= 25, "height 10 snows on the upper peaks: {counts:?}");
+    assert!(
+        counts[9] >= 25,
+        "height 10 snows on the upper peaks: {counts:?}"
+    );
     for w in counts.windows(2) {
         assert!(w[1] >= w[0], "more height, less snow: {counts:?}");
     }

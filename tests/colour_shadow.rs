@@ -8,7 +8,15 @@ use mountains::terrain::Heightfield;
 /// sweep directions and both interpolation signs are used.
 fn lights() -> Vec<Vec3> {
     let mut v = Vec::new();
-    for (hx, hy) in [(-1.0, 0.3), (1.0, -0.4), (0.35, 1.0), (-0.45, -1.0), (-0.7, 0.7), (1.0, 0.0), (0.0, -1.0)] {
+    for (hx, hy) in [
+        (-1.0, 0.3),
+        (1.0, -0.4),
+        (0.35, 1.0),
+        (-0.45, -1.0),
+        (-0.7, 0.7),
+        (1.0, 0.0),
+        (0.0, -1.0),
+    ] {
         let flat = Vec3::new(hx, hy, 0.0).normalize() * 0.866;
         v.push(Vec3::new(flat.x, flat.y, 0.5));
     }
@@ -54,7 +62,11 @@ fn a_wall_shades_the_ground_behind_it_not_in_front() {
             map.lit(x.round() as usize, y.round() as usize)
         };
         for t in [3.0, 6.0, 9.0, 11.0] {
-            assert!(at(t) < 0.05, "{light}: {t} cells behind the wall lit {}", at(t));
+            assert!(
+                at(t) < 0.05,
+                "{light}: {t} cells behind the wall lit {}",
+                at(t)
+            );
         }
         for t in [17.0, 22.0, 28.0] {
             assert_eq!(at(t), 1.0, "{light}: {t} cells behind, past the shadow");
@@ -74,9 +86,15 @@ fn shadow_edges_are_soft_but_narrow() {
     let map = cast(&field, Vec3::new(0.0, 0.866, 0.5));
     let column: Vec<f32> = (41..129).map(|y| map.lit(64, y)).collect();
     let partial = column.iter().filter(|&&l| l > 0.0 && l < 1.0).count();
-    assert!((1..=4).contains(&partial), "penumbra of {partial} points: {column:?}");
+    assert!(
+        (1..=4).contains(&partial),
+        "penumbra of {partial} points: {column:?}"
+    );
     for w in column.windows(2) {
-        assert!(w[1] >= w[0], "light must grow away from the wall: {column:?}");
+        assert!(
+            w[1] >= w[0],
+            "light must grow away from the wall: {column:?}"
+        );
     }
 }
 
@@ -104,7 +122,10 @@ fn marched(field: &Heightfield, light: Vec3, x: usize, y: usize) -> bool {
     let tan = light.z / light.x.hypot(light.y);
     let bilinear = |px: f32, py: f32| {
         let (x0, y0) = (px.floor() as usize, py.floor() as usize);
-        let (x1, y1) = ((x0 + 1).min(field.size() - 1), (y0 + 1).min(field.size() - 1));
+        let (x1, y1) = (
+            (x0 + 1).min(field.size() - 1),
+            (y0 + 1).min(field.size() - 1),
+        );
         let (fx, fy) = (px - x0 as f32, py - y0 as f32);
         let top = field.get(x0, y0) * (1.0 - fx) + field.get(x1, y0) * fx;
         let bottom = field.get(x0, y1) * (1.0 - fx) + field.get(x1, y1) * fx;
@@ -137,11 +158,17 @@ fn agrees_with_ray_marching() {
                 shaded += !lit as usize;
             }
         }
-        assert!(shaded > 200, "{light}: the test field must cast shadows ({shaded})");
+        assert!(
+            shaded > 200,
+            "{light}: the test field must cast shadows ({shaded})"
+        );
         // The sweep interpolates the horizon between grid points, which
         // blurs it sideways a little; the marcher reads the surface
         // bilinearly. They differ along shadow edges only.
-        assert!(agree * 100 >= 65 * 65 * 90, "{light}: {agree} of 4225 agree");
+        assert!(
+            agree * 100 >= 65 * 65 * 90,
+            "{light}: {agree} of 4225 agree"
+        );
         // A sweep from the wrong side would not come close.
         let wrong = cast(&field, Vec3::new(-light.x, -light.y, light.z));
         let mut wrong_agree = 0;
@@ -151,7 +178,10 @@ fn agrees_with_ray_marching() {
                 wrong_agree += (lit == (wrong.lit(x, y) == 1.0)) as usize;
             }
         }
-        assert!(wrong_agree + 400 < agree, "{light}: {wrong_agree} vs {agree}");
+        assert!(
+            wrong_agree + 400 < agree,
+            "{light}: {wrong_agree} vs {agree}"
+        );
     }
 }
 
@@ -178,7 +208,11 @@ fn every_size_and_odd_lights_work() {
     for exponent in 4..=12 {
         let field = bumpy(exponent);
         let n = field.size();
-        let lights = if exponent <= 8 { [lights(), odd.to_vec()].concat() } else { lights()[..2].to_vec() };
+        let lights = if exponent <= 8 {
+            [lights(), odd.to_vec()].concat()
+        } else {
+            lights()[..2].to_vec()
+        };
         for light in lights {
             check_range(&cast(&field, light), n);
         }

@@ -91,7 +91,8 @@ impl Palette {
         let steep_ref = steepness_reference(field);
         let land = land_table(mode, &zones);
         let deepest = positive_or(-field.min(), 1.0);
-        let (water, depth_scale) = water_table(mode, settings.relative_depth, deepest, gain, offset);
+        let (water, depth_scale) =
+            water_table(mode, settings.relative_depth, deepest, gain, offset);
         Palette {
             light: LIGHT.normalize(),
             mode,
@@ -182,10 +183,17 @@ impl Palette {
     /// Brightness in 0.5..=1: Lambert cosine, floored at half, times cast light.
     #[inline]
     fn brightness(&self, normal: Vec3, lit: f32) -> f32 {
-        let lit = lit.max(0.0).min(1.0);
-        let cos = normal.dot(self.light).max(0.0).min(1.0);
+        let lit = unit(lit);
+        let cos = unit(normal.dot(self.light));
         (0.5 + 0.5 * cos * lit) * self.gain
     }
+}
+
+/// `v` limited to 0..=1, with NaN as 0 (a bad input gives a dim face, not a
+/// black one).
+#[inline]
+fn unit(v: f32) -> f32 {
+    if v > 0.0 { v.min(1.0) } else { 0.0 }
 }
 
 /// `value` if it is a positive finite number, else `fallback`.
@@ -208,7 +216,7 @@ fn jitter(mean_height: f32) -> i32 {
 /// and packs it as `0x00RRGGBB`.
 #[inline]
 fn pack(base: Rgb, scale: f32, offset: f32) -> u32 {
-    let c = base.map(|v| (v * scale - offset + 0.5).max(0.0).min(255.0) as u32);
+    let c = base.map(|v| (v * scale - offset + 0.5).clamp(0.0, 255.0) as u32);
     c[0] << 16 | c[1] << 8 | c[2]
 }
 
@@ -314,7 +322,16 @@ impl Zones {
         use natural::*;
         let low = u / self.treeline;
         let lowland = if self.beach {
-            ramp(&[(0.0, SAND), (0.025, SAND), (0.06, MEADOW), (0.45, FOREST), (1.0, ALPINE)], low)
+            ramp(
+                &[
+                    (0.0, SAND),
+                    (0.025, SAND),
+                    (0.06, MEADOW),
+                    (0.45, FOREST),
+                    (1.0, ALPINE),
+                ],
+                low,
+            )
         } else {
             ramp(&[(0.0, MEADOW), (0.45, FOREST), (1.0, ALPINE)], low)
         };
@@ -398,7 +415,7 @@ fn steepness_reference(field: &Heightfield) -> f32 {
 /// Piecewise-linear colour ramp through `(position, colour)` stops.
 fn ramp(stops: &[(f32, Rgb)], t: f32) -> Rgb {
     let (mut prev_t, mut prev_c) = stops[0];
-    if !(t > prev_t) {
+    if t.is_nan() || t <= prev_t {
         return prev_c;
     }
     for &(st, sc) in &stops[1..] {

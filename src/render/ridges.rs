@@ -153,7 +153,9 @@ fn measure_row(row: &[f32], field: &Heightfield) -> (f32, f32) {
     } else {
         0.7
     };
-    let (lo, hi) = row.iter().fold((f32::MAX, f32::MIN), |(lo, hi), &v| (lo.min(v), hi.max(v)));
+    let (lo, hi) = row
+        .iter()
+        .fold((f32::MAX, f32::MIN), |(lo, hi), &v| (lo.min(v), hi.max(v)));
     let span = field.max() - field.min();
     let relief = if span > 0.0 && hi >= lo {
         ((hi - lo) / span).clamp(0.4, 1.0)
@@ -196,7 +198,9 @@ fn midpoint_profile(seed: u64, layer: usize, points: usize, persistence: f32) ->
 
 /// Rescales values to 0..=1 (all zero if they are all equal).
 fn normalise(p: &mut [f32]) {
-    let (lo, hi) = p.iter().fold((f32::MAX, f32::MIN), |(lo, hi), &v| (lo.min(v), hi.max(v)));
+    let (lo, hi) = p
+        .iter()
+        .fold((f32::MAX, f32::MIN), |(lo, hi), &v| (lo.min(v), hi.max(v)));
     let scale = if hi > lo { 1.0 / (hi - lo) } else { 0.0 };
     p.iter_mut().for_each(|v| *v = (*v - lo) * scale);
 }
@@ -235,7 +239,11 @@ fn paint_layer(frame: &mut Frame, layer: &Layer) -> Rect {
                 continue;
             }
             // The pixel the crest crosses is covered only in part.
-            *px = if depth < 1.0 { blend(*px, shade, depth) } else { shade };
+            *px = if depth < 1.0 {
+                blend(*px, shade, depth)
+            } else {
+                shade
+            };
         }
     }
     Rect {

@@ -90,7 +90,8 @@ pub fn cast(field: &Heightfield, light: Vec3) -> ShadowMap {
 #[inline]
 fn light_level(h: f32, ray: f32, penumbra: f32) -> u8 {
     let t = 1.0 + (h - ray) / penumbra;
-    (t.max(0.0).min(1.0) * 255.0 + 0.5) as u8
+    // NaN (from bad heights) casts to 0: dark, never a panic.
+    (t.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
 }
 
 /// Mostly-vertical light: each row's rays come from the previous row (nearer
