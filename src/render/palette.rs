@@ -208,8 +208,9 @@ fn positive_or(value: f32, fallback: f32) -> f32 {
 /// A few bins of deterministic jitter from the bits of a face's height.
 #[inline]
 fn jitter(mean_height: f32) -> i32 {
-    let mixed = mean_height.to_bits().wrapping_mul(0x9e37_79b1);
-    ((mixed >> 16) % (2 * JITTER_BINS as u32 + 1)) as i32 - JITTER_BINS
+    let mixed = mean_height.to_bits().wrapping_mul(0x9e37_79b1) >> 16;
+    // Multiply-shift maps 16 random bits onto 0..=2J without a division.
+    ((mixed * (2 * JITTER_BINS as u32 + 1)) >> 16) as i32 - JITTER_BINS
 }
 
 /// Scales a table colour (0..=255 per channel), subtracts the tone offset

@@ -7,7 +7,9 @@
 //! point's neighbour towards the light, lowered by one step of the light's
 //! slope, or the point itself if it stands higher. The neighbour falls between
 //! two grid points, so its horizon is interpolated. Every point is visited
-//! once: O(points), rows in memory order, one row of state per pass.
+//! once: O(points), rows in memory order, one row of state per pass, and the
+//! points of a row are independent (a light closer to the x axis sweeps the
+//! transposed grid). One thread: the output cannot depend on thread count.
 //!
 //! A point is fully lit when it stands at or above the horizon arriving from
 //! its neighbour, and fully dark once it is as far below it as the light
@@ -79,82 +81,76 @@ pub fn cast(field: &Heightfield, light: Vec3) -> ShadowMap {
     let rise = light.z / flat * spacing;
     let mut map = ShadowMap::uniform(field, 255);
     if gy.abs() >= gx.abs() {
-        sweep_rows(field, &mut map, gx / gy.abs(), gy > 0.0, rise);
+        sweep(
+            field.heights(),
+            n,
+            &mut map.lit,
+            gx / gy.abs(),
+            gy > 0.0,
+            rise,
+        );
     } else {
-        sweep_columns(field, &mut map, gy / gx.abs(), gx > 0.0, rise);
+        // Sweeping along columns would make every point wait for its
+        // neighbour; on the transposed grid the rows are independent again.
+        let heights = transpose(field.heights(), n);
+        let mut lit = vec![255; n * n];
+        sweep(&heights, n, &mut lit, gy / gx.abs(), gx > 0.0, rise);
+        map.lit = transpose(&lit, n);
     }
     map
 }
 
 /// Light in 1/255ths for a point at `h` under a ray arriving at `ray`.
 #[inline]
-fn light_level(h: f32, ray: f32, penumbra: f32) -> u8 {
-    let t = 1.0 + (h - ray) / penumbra;
+fn light_level(h: f32, ray: f32, per_height: f32) -> u8 {
+    let t = 1.0 + (h - ray) * per_height;
     // NaN (from bad heights) casts to 0: dark, never a panic.
     (t.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
 }
 
-/// Mostly-vertical light: each row's rays come from the previous row (nearer
-/// the light), offset by `dx` columns (|dx| <= 1). `towards_front` is true
-/// when the light lies in front (higher rows), so the sweep starts there.
-fn sweep_rows(field: &Heightfield, map: &mut ShadowMap, dx: f32, towards_front: bool, rise: f32) {
-    let n = field.size();
+/// The horizon sweep over an `n` x `n` row-major grid for a light whose rays
+/// reach each row from the row before (nearer the light), offset by `dx`
+/// columns (|dx| <= 1). `towards_end` is true when the light lies towards
+/// the last row, so the sweep starts there. `rise` is the light's rise per
+/// cell of horizontal distance.
+fn sweep(heights: &[f32], n: usize, lit: &mut [u8], dx: f32, towards_end: bool, rise: f32) {
     let drop = rise * (1.0 + dx * dx).sqrt();
-    let penumbra = PENUMBRA * rise;
+    let per_height = 1.0 / (PENUMBRA * rise);
     // dx = 1 exactly takes all of the right source, keeping the slice in range.
     let base = dx.floor().min(0.0);
     let w = dx - base;
-    // Index of the left source in a row padded with NONE on both sides.
+    // Index of the left source in rows padded with NONE on both sides.
     let first = (base as isize + 1) as usize;
     let mut prev = vec![NONE; n + 2];
     let mut next = vec![NONE; n + 2];
     for k in 0..n {
-        let y = if towards_front { n - 1 - k } else { k };
-        let heights = field.row(y);
-        let lit = &mut map.lit[y * n..(y + 1) * n];
-        let sources = prev[first..first + n + 1].windows(2);
-        for (((&h, l), out), s) in heights.iter().zip(lit).zip(&mut next[1..=n]).zip(sources) {
-            let ray = s[0] * (1.0 - w) + s[1] * w - drop;
-            *l = light_level(h, ray, penumbra);
-            *out = ray.max(h);
+        let y = if towards_end { n - 1 - k } else { k };
+        let row = &heights[y * n..(y + 1) * n];
+        let out = &mut lit[y * n..(y + 1) * n];
+        let left = &prev[first..first + n];
+        let right = &prev[first + 1..first + 1 + n];
+        let horizon = &mut next[1..=n];
+        for x in 0..n {
+            let ray = left[x] * (1.0 - w) + right[x] * w - drop;
+            out[x] = light_level(row[x], ray, per_height);
+            horizon[x] = ray.max(row[x]);
         }
         std::mem::swap(&mut prev, &mut next);
     }
 }
 
-/// Mostly-horizontal light: each point's ray comes from the neighbouring
-/// column nearer the light, offset by `dy` rows (|dy| <= 1) into the row
-/// swept before. `towards_right` is true when the light lies to the right.
-fn sweep_columns(
-    field: &Heightfield,
-    map: &mut ShadowMap,
-    dy: f32,
-    towards_right: bool,
-    rise: f32,
-) {
-    let n = field.size();
-    let drop = rise * (1.0 + dy * dy).sqrt();
-    let penumbra = PENUMBRA * rise;
-    let w = dy.abs();
-    // Rays come from row y + sign(dy): sweep rows from that side.
-    let towards_front = dy > 0.0;
-    let mut prev = vec![NONE; n];
-    let mut cur = vec![NONE; n];
-    for k in 0..n {
-        let y = if towards_front { n - 1 - k } else { k };
-        let heights = field.row(y);
-        let lit = &mut map.lit[y * n..(y + 1) * n];
-        let mut carried = NONE;
-        let mut carried_prev = NONE;
-        for i in 0..n {
-            let x = if towards_right { n - 1 - i } else { i };
-            let ray = carried * (1.0 - w) + carried_prev * w - drop;
-            let h = heights[x];
-            lit[x] = light_level(h, ray, penumbra);
-            cur[x] = ray.max(h);
-            carried = cur[x];
-            carried_prev = prev[x];
+/// The `n` x `n` grid with rows and columns swapped, in cache-sized tiles.
+fn transpose<T: Copy>(grid: &[T], n: usize) -> Vec<T> {
+    const TILE: usize = 32;
+    let mut out = grid.to_vec();
+    for ty in (0..n).step_by(TILE) {
+        for tx in (0..n).step_by(TILE) {
+            for y in ty..(ty + TILE).min(n) {
+                for x in tx..(tx + TILE).min(n) {
+                    out[x * n + y] = grid[y * n + x];
+                }
+            }
         }
-        std::mem::swap(&mut prev, &mut cur);
     }
+    out
 }
