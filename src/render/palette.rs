@@ -12,12 +12,12 @@
 //! place it on any field: at height 10 the top 40 % of the relief is above
 //! the treeline, at height 1 none of it is.
 //!
-//! Colour filters are luminance tints, not seed 003's bitwise AND: the
-//! shaded colour's luminance times a tint whose own luminance is 1, clamped
-//! per channel. The AND keeps only some channels of the *natural* colour,
-//! so a green lowland turns black under the red filter; the tint keeps every
-//! face's brightness and still stays in the filter's hue family (clamping
-//! keeps the channel order), fading to a pale tint on snow.
+//! Colour filters are luminance tints, not seed 003's bitwise AND: each
+//! colour is replaced by the filter's tint at the same luminance (the tint
+//! darkened; colours lighter than the tint blend it part way to white).
+//! The AND keeps only some channels of the *natural* colour, so a green
+//! lowland turns black under the red filter; the tint keeps every face's
+//! brightness, stays in the filter's hue family, and snow turns a pale tint.
 
 use crate::settings::{ColorMode, Settings};
 use crate::terrain::Heightfield;
@@ -35,6 +35,10 @@ const DEPTH_BINS: usize = 256;
 /// Per-face height jitter, in height bins either side, so that faces of one
 /// height do not make flat bands and the snow line is ragged.
 const JITTER_BINS: i32 = 10;
+
+/// How far a colour filter blends its tint towards white for the lightest
+/// colours (1 would keep their luminance but turn snow and sand white).
+const WHITENING: f32 = 0.6;
 
 /// Towards the light: from the back-left, 32 degrees above the horizon, so
 /// the faces the viewer sees are modelled and peaks cast shadows forwards.
@@ -258,8 +262,16 @@ fn filter(mode: ColorMode, c: Rgb) -> Rgb {
         ColorMode::Sonar | ColorMode::Outline => [0.0; 3],
         _ => match tint(mode) {
             Some(t) => {
-                let k = luminance(c) / luminance(t);
-                t.map(|v| (v * k).min(1.0))
+                // Darker than the tint: the tint scaled down, at the same
+                // luminance. Lighter: the tint blended part way to white, so
+                // sand and snow stay tinted instead of washing out. Either
+                // way the channel order is the tint's.
+                let (y, yt) = (luminance(c).clamp(0.0, 1.0), luminance(t));
+                if y <= yt {
+                    t.map(|v| v * y / yt)
+                } else {
+                    mix(t, [1.0; 3], WHITENING * (y - yt) / (1.0 - yt))
+                }
             }
             None => c,
         },
