@@ -150,3 +150,23 @@ fn tiny_and_huge_frames_and_flat_fields() {
     let big = render(&field(0.0), 7680, 2160);
     assert!(big.pixels().iter().any(|&p| p != big.pixels()[0]));
 }
+
+#[test]
+fn a_higher_height_setting_raises_the_ranges() {
+    let f = field(0.4);
+    let top_of_front = |height: u32| {
+        let s = Settings {
+            height,
+            ..settings()
+        };
+        let r = Ridges::new(&f, &s, 320, 240);
+        let mut frame = Frame::new(320, 240).unwrap();
+        draw_all(&r, &mut frame).last().unwrap().y0
+    };
+    assert!(
+        top_of_front(10) + 10 < top_of_front(1),
+        "{} vs {}",
+        top_of_front(10),
+        top_of_front(1)
+    );
+}

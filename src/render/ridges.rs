@@ -56,11 +56,13 @@ pub struct Ridges {
 
 impl Ridges {
     /// Plans the ranges of `field` for a `width` x `height` frame.
-    pub fn new(field: &Heightfield, _settings: &Settings, width: u32, height: u32) -> Self {
+    /// The height setting (1..=10) makes the ranges lower or taller.
+    pub fn new(field: &Heightfield, settings: &Settings, width: u32, height: u32) -> Self {
         let seed = field_hash(field);
         let points = profile_points(width);
+        let tallness = 0.6 + 0.08 * settings.height.clamp(1, 10) as f32;
         let layers = (0..LAYERS)
-            .map(|i| make_layer(field, seed, i, points))
+            .map(|i| make_layer(field, seed, i, points, tallness))
             .collect();
         Ridges {
             width,
@@ -124,7 +126,8 @@ fn profile_points(width: u32) -> usize {
 }
 
 /// Builds range `i` (0 = farthest) from its row of the field.
-fn make_layer(field: &Heightfield, seed: u64, i: usize, points: usize) -> Layer {
+/// `tallness` scales every range's relief (1 at height setting 5).
+fn make_layer(field: &Heightfield, seed: u64, i: usize, points: usize, tallness: f32) -> Layer {
     let n = field.size();
     let row = field.row(i * (n - 1) / (LAYERS - 1));
     let (persistence, relief) = measure_row(row, field);
@@ -136,7 +139,7 @@ fn make_layer(field: &Heightfield, seed: u64, i: usize, points: usize) -> Layer 
     Layer {
         profile,
         base: 0.50 + 0.42 * depth,
-        relief: (0.12 + 0.16 * depth) * relief,
+        relief: (0.12 + 0.16 * depth) * relief * tallness,
         crest,
         mist,
     }
