@@ -77,8 +77,15 @@ fn greys_map_evenly_onto_levels() {
 }
 
 #[test]
+fn one_byte_greys_read_like_full_greys() {
+    for v in 0..=255 {
+        assert_eq!(level(v), level(grey(v)), "grey {v}");
+    }
+}
+
+#[test]
 fn colours_count_by_luminance() {
     assert!(level(0x0000_ff00) > level(0x00ff_0000));
-    assert!(level(0x00ff_0000) > level(0x0000_00ff));
+    assert!(level(0x00ff_0000) > level(0x0001_00ff));
     assert_eq!(level(0xff00_0000), 0, "the unused top byte is ignored");
 }

@@ -14,14 +14,21 @@ pub const LEVELS: u8 = 16;
 const BAYER: [[u8; 4]; 4] = [[0, 8, 2, 10], [12, 4, 14, 6], [3, 11, 1, 9], [15, 7, 13, 5]];
 
 /// The dither level (0 black ..= 16 white) for a grey `0x00RRGGBB`; a colour
-/// that is not grey counts by its luminance.
+/// that is not grey counts by its luminance. A value of at most 255 (no red
+/// or green) is taken as a grey level 0..=255 itself, so callers that have
+/// already reduced a colour to one byte get the same answer; Mono's palette
+/// only makes greys, so no pure blue is ever misread.
 #[inline]
 pub fn level(gray: u32) -> u8 {
-    let r = (gray >> 16) & 0xff;
-    let g = (gray >> 8) & 0xff;
-    let b = gray & 0xff;
-    // Rec. 709 weights in 1/256ths: 54 + 183 + 19 = 256.
-    let y = (54 * r + 183 * g + 19 * b) >> 8;
+    let y = if gray <= 0xff {
+        gray
+    } else {
+        let r = (gray >> 16) & 0xff;
+        let g = (gray >> 8) & 0xff;
+        let b = gray & 0xff;
+        // Rec. 709 weights in 1/256ths: 54 + 183 + 19 = 256.
+        (54 * r + 183 * g + 19 * b) >> 8
+    };
     ((y * LEVELS as u32 + 127) / 255) as u8
 }
 
