@@ -55,7 +55,7 @@ mod natural {
     pub const ROCK: Rgb = [0.56, 0.53, 0.50];
     pub const SNOW: Rgb = [0.96, 0.97, 1.00];
     pub const CLIFF: Rgb = [0.46, 0.40, 0.33];
-    pub const EARTH: Rgb = [0.42, 0.31, 0.21];
+    pub const EARTH: Rgb = [0.50, 0.38, 0.26];
     pub const SHALLOW: Rgb = [0.16, 0.46, 0.74];
     pub const DEEP: Rgb = [0.02, 0.10, 0.30];
     pub const SEA: Rgb = [0.10, 0.34, 0.66];
@@ -77,8 +77,8 @@ pub struct Palette {
     water: Box<[u32]>,
     /// Depth bins per depth unit (0 when every depth has the same colour).
     depth_scale: f32,
-    /// Highest point of the field, for skirt strata.
-    top: f32,
+    /// Filtered skirt (earth) colour, in 0..=255.
+    skirt: Rgb,
     /// Final tone curve `out = shaded * gain - offset` (Mono's contrast
     /// stretch; 1 and 0 otherwise), offset in 0..=255 units.
     gain: f32,
@@ -105,7 +105,7 @@ impl Palette {
             steep_scale: STEEP_BINS as f32 / steep_ref,
             water,
             depth_scale,
-            top,
+            skirt: finish(mode, natural::EARTH),
             gain,
             offset,
         }
@@ -148,13 +148,11 @@ impl Palette {
 
     /// Colour of a skirt face (the cut side of the map) facing `normal`.
     ///
-    /// Earth with faint strata, shaded like land but never in cast shadow.
-    pub fn skirt(&self, mean_height: f32, normal: Vec3) -> u32 {
-        let band = (mean_height / self.top * 9.0).rem_euclid(1.0);
-        let stratum = 0.9 + 0.1 * (band * std::f32::consts::TAU).sin();
-        let earth = natural::EARTH.map(|c| c * stratum);
-        let base = finish(self.mode, earth);
-        pack(base, self.brightness(normal, 1.0), self.offset)
+    /// Earth, shaded like land but never in cast shadow. One colour for
+    /// all heights: painters give one height per skirt column, so any
+    /// height banding would show as vertical stripes.
+    pub fn skirt(&self, _mean_height: f32, normal: Vec3) -> u32 {
+        pack(self.skirt, self.brightness(normal, 1.0), self.offset)
     }
 
     /// Background colour behind the mountain.
