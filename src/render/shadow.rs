@@ -80,22 +80,29 @@ pub fn cast(field: &Heightfield, light: Vec3) -> ShadowMap {
     let spacing = field.extent().abs() / (n - 1) as f32;
     let rise = light.z / flat * spacing;
     let mut map = ShadowMap::uniform(field, 255);
+    let heights = field.heights();
     if gy.abs() >= gx.abs() {
         sweep(
-            field.heights(),
+            heights,
             n,
             &mut map.lit,
             gx / gy.abs(),
             gy > 0.0,
             rise,
+            false,
         );
     } else {
-        // Sweeping along columns would make every point wait for its
-        // neighbour; on the transposed grid the rows are independent again.
-        let heights = transpose(field.heights(), n);
-        let mut lit = vec![255; n * n];
-        sweep(&heights, n, &mut lit, gy / gx.abs(), gx > 0.0, rise);
-        map.lit = transpose(&lit, n);
+        // Sweeping along rows would make every point wait for its left or
+        // right neighbour; sweeping columns keeps a line's points independent.
+        sweep(
+            heights,
+            n,
+            &mut map.lit,
+            gy / gx.abs(),
+            gx > 0.0,
+            rise,
+            true,
+        );
     }
     map
 }
@@ -108,49 +115,104 @@ fn light_level(h: f32, ray: f32, per_height: f32) -> u8 {
     (t.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
 }
 
-/// The horizon sweep over an `n` x `n` row-major grid for a light whose rays
-/// reach each row from the row before (nearer the light), offset by `dx`
-/// columns (|dx| <= 1). `towards_end` is true when the light lies towards
-/// the last row, so the sweep starts there. `rise` is the light's rise per
-/// cell of horizontal distance.
-fn sweep(heights: &[f32], n: usize, lit: &mut [u8], dx: f32, towards_end: bool, rise: f32) {
-    let drop = rise * (1.0 + dx * dx).sqrt();
-    let per_height = 1.0 / (PENUMBRA * rise);
-    // dx = 1 exactly takes all of the right source, keeping the slice in range.
-    let base = dx.floor().min(0.0);
-    let w = dx - base;
-    // Index of the left source in rows padded with NONE on both sides.
-    let first = (base as isize + 1) as usize;
-    let mut prev = vec![NONE; n + 2];
-    let mut next = vec![NONE; n + 2];
-    for k in 0..n {
-        let y = if towards_end { n - 1 - k } else { k };
-        let row = &heights[y * n..(y + 1) * n];
-        let out = &mut lit[y * n..(y + 1) * n];
-        let left = &prev[first..first + n];
-        let right = &prev[first + 1..first + 1 + n];
-        let horizon = &mut next[1..=n];
-        for x in 0..n {
-            let ray = left[x] * (1.0 - w) + right[x] * w - drop;
-            out[x] = light_level(row[x], ray, per_height);
-            horizon[x] = ray.max(row[x]);
+/// The horizon sweep over an `n` x `n` row-major grid, one line at a time:
+/// rows, or columns if `columns`. The light's rays reach each line from the
+/// line before (nearer the light), offset by `dx` points along it (|dx| <= 1).
+/// `towards_end` is true when the light lies towards the last line, so the
+/// sweep starts there. `rise` is the light's rise per cell of horizontal
+/// distance.
+fn sweep(
+    heights: &[f32],
+    n: usize,
+    lit: &mut [u8],
+    dx: f32,
+    towards_end: bool,
+    rise: f32,
+    columns: bool,
+) {
+    let mut sweeper = Sweeper::new(n, dx, rise);
+    let order = |k: usize| if towards_end { n - 1 - k } else { k };
+    if !columns {
+        for k in 0..n {
+            let span = order(k) * n..(order(k) + 1) * n;
+            sweeper.line(&heights[span.clone()], &mut lit[span]);
         }
-        std::mem::swap(&mut prev, &mut next);
+        return;
     }
-}
-
-/// The `n` x `n` grid with rows and columns swapped, in cache-sized tiles.
-fn transpose<T: Copy>(grid: &[T], n: usize) -> Vec<T> {
-    const TILE: usize = 32;
-    let mut out = grid.to_vec();
-    for ty in (0..n).step_by(TILE) {
-        for tx in (0..n).step_by(TILE) {
-            for y in ty..(ty + TILE).min(n) {
-                for x in tx..(tx + TILE).min(n) {
-                    out[x * n + y] = grid[y * n + x];
-                }
+    // Columns a block at a time: reading one column alone would touch a
+    // cache line per point, in lines a power of two apart that evict each
+    // other; a block uses every line it reads in full. The block's own lines
+    // are padded apart so that its 16 write streams do not collide either.
+    let stride = n.div_ceil(16) * 16 + 16 * 5;
+    let mut block = vec![0.0; COLUMN_BLOCK * stride];
+    let mut block_lit = vec![0u8; COLUMN_BLOCK * stride];
+    for k0 in (0..n).step_by(COLUMN_BLOCK) {
+        let count = COLUMN_BLOCK.min(n - k0);
+        let lo = order(k0).min(order(k0 + count - 1));
+        for (j, row) in heights.chunks_exact(n).enumerate() {
+            for (b, &h) in row[lo..lo + count].iter().enumerate() {
+                block[b * stride + j] = h;
+            }
+        }
+        for k in k0..k0 + count {
+            let span = (order(k) - lo) * stride..(order(k) - lo) * stride + n;
+            sweeper.line(&block[span.clone()], &mut block_lit[span]);
+        }
+        for (j, row) in lit.chunks_exact_mut(n).enumerate() {
+            for (b, l) in row[lo..lo + count].iter_mut().enumerate() {
+                *l = block_lit[b * stride + j];
             }
         }
     }
-    out
+}
+
+/// Columns swept per block in a column sweep (one cache line of heights).
+const COLUMN_BLOCK: usize = 16;
+
+/// The state of a sweep: the horizons over the last line swept.
+struct Sweeper {
+    /// Horizons of the last line, padded with `NONE` at both ends.
+    prev: Vec<f32>,
+    /// The line being swept, the same shape.
+    next: Vec<f32>,
+    /// Index in `prev` of the left source of a line's first point.
+    first: usize,
+    /// Weight of the right of the two source points.
+    w: f32,
+    /// How far a ray falls from one line to the next.
+    drop: f32,
+    /// Light lost per height unit below the arriving ray.
+    per_height: f32,
+}
+
+impl Sweeper {
+    /// A sweep over lines of `n` points whose rays come `dx` points across.
+    fn new(n: usize, dx: f32, rise: f32) -> Self {
+        // dx = 1 exactly takes all of the right source, keeping slices in range.
+        let base = dx.floor().min(0.0);
+        Sweeper {
+            prev: vec![NONE; n + 2],
+            next: vec![NONE; n + 2],
+            first: (base as isize + 1) as usize,
+            w: dx - base,
+            drop: rise * (1.0 + dx * dx).sqrt(),
+            per_height: 1.0 / (PENUMBRA * rise),
+        }
+    }
+
+    /// Lights the next line of `heights` into `out` from the horizons of the
+    /// line before, and keeps this line's horizons for the one after.
+    #[inline]
+    fn line(&mut self, heights: &[f32], out: &mut [u8]) {
+        let n = heights.len();
+        let left = &self.prev[self.first..self.first + n];
+        let right = &self.prev[self.first + 1..self.first + 1 + n];
+        let (out, horizon) = (&mut out[..n], &mut self.next[1..=n]);
+        for x in 0..n {
+            let ray = left[x] * (1.0 - self.w) + right[x] * self.w - self.drop;
+            out[x] = light_level(heights[x], ray, self.per_height);
+            horizon[x] = ray.max(heights[x]);
+        }
+        std::mem::swap(&mut self.prev, &mut self.next);
+    }
 }
