@@ -67,8 +67,8 @@ mod natural {
 pub struct Palette {
     light: Vec3,
     mode: ColorMode,
-    /// `STEEP_BINS` rows of `HEIGHT_BINS` filtered base colours, in 0..=255.
-    land: Box<[Rgb]>,
+    /// `STEEP_BINS` rows of `HEIGHT_BINS` filtered base colours, packed.
+    land: Box<[u32]>,
     /// Height bins per height unit (heights below 0 clamp to bin 0).
     height_scale: f32,
     /// Steepness bins per unit of `1 - normal.z`.
@@ -128,12 +128,18 @@ impl Palette {
     /// half as bright as a face square to the light (seed 000's floor).
     #[inline]
     pub fn land(&self, mean_height: f32, normal: Vec3, lit: f32) -> u32 {
-        let h = ((mean_height * self.height_scale) as i32).saturating_add(jitter(mean_height));
-        let h = h.clamp(0, HEIGHT_BINS as i32 - 1) as usize;
-        let s = ((1.0 - normal.z) * self.steep_scale) as usize;
-        let s = s.min(STEEP_BINS - 1);
+        // Clamped as floats (NaN stays NaN and casts to bin 0).
+        let h = (mean_height * self.height_scale + jitter(mean_height))
+            .clamp(0.0, (HEIGHT_BINS - 1) as f32) as i32 as usize;
+        let s = ((1.0 - normal.z) * self.steep_scale).clamp(0.0, (STEEP_BINS - 1) as f32) as i32
+            as usize;
         let base = self.land[s * HEIGHT_BINS + h];
-        pack(base, self.brightness(normal, lit), self.offset)
+        let b = self.brightness(normal, lit);
+        if self.offset == 0.0 {
+            scale_packed(base, b)
+        } else {
+            pack(unpack(base).map(|c| c * 255.0), b, self.offset)
+        }
     }
 
     /// Colour of water over ground `depth` (>= 0) units below sea level.
@@ -209,10 +215,10 @@ fn positive_or(value: f32, fallback: f32) -> f32 {
 
 /// A few bins of deterministic jitter from the bits of a face's height.
 #[inline]
-fn jitter(mean_height: f32) -> i32 {
+fn jitter(mean_height: f32) -> f32 {
     let mixed = mean_height.to_bits().wrapping_mul(0x9e37_79b1) >> 16;
     // Multiply-shift maps 16 random bits onto 0..=2J without a division.
-    ((mixed * (2 * JITTER_BINS as u32 + 1)) >> 16) as i32 - JITTER_BINS
+    (((mixed * (2 * JITTER_BINS as u32 + 1)) >> 16) as i32 - JITTER_BINS) as f32
 }
 
 /// Scales a table colour (0..=255 per channel), subtracts the tone offset
@@ -221,6 +227,16 @@ fn jitter(mean_height: f32) -> i32 {
 fn pack(base: Rgb, scale: f32, offset: f32) -> u32 {
     let c = base.map(|v| (v * scale - offset + 0.5).clamp(0.0, 255.0) as u32);
     c[0] << 16 | c[1] << 8 | c[2]
+}
+
+/// A packed colour times `b` (0..=1), two channels per multiply.
+#[inline]
+fn scale_packed(c: u32, b: f32) -> u32 {
+    // 0 ..= 256 in 1/256ths; NaN casts to 0.
+    let k = ((b * 256.0 + 0.5) as u32).min(256);
+    let red_blue = (((c & 0x00ff_00ff) * k) >> 8) & 0x00ff_00ff;
+    let green = (((c & 0x0000_ff00) * k) >> 8) & 0x0000_ff00;
+    red_blue | green
 }
 
 /// A 0..=1 colour as `0x00RRGGBB`.
@@ -359,13 +375,13 @@ impl Zones {
 }
 
 /// The filtered base colour of every (steepness, height) bin.
-fn land_table(mode: ColorMode, zones: &Zones) -> Box<[Rgb]> {
+fn land_table(mode: ColorMode, zones: &Zones) -> Box<[u32]> {
     let mut table = Vec::with_capacity(STEEP_BINS * HEIGHT_BINS);
     for s in 0..STEEP_BINS {
         let steep = (s as f32 + 0.5) / STEEP_BINS as f32;
         for h in 0..HEIGHT_BINS {
             let u = (h as f32 + 0.5) / HEIGHT_BINS as f32;
-            table.push(finish(mode, zones.colour(u, steep)));
+            table.push(pack(finish(mode, zones.colour(u, steep)), 1.0, 0.0));
         }
     }
     table.into_boxed_slice()
