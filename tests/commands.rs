@@ -166,3 +166,87 @@ fn help_lists_every_key() {
         assert!(text.contains(key.name), "--help lacks {}", key.name);
     }
 }
+
+#[test]
+fn heightmap_saves_a_data_set_that_loads_back_with_its_seed() {
+    let out = scratch("heightmap").join("h.png");
+    let o = mountains(&[
+        "heightmap",
+        "--set",
+        "seed=7",
+        "--set",
+        "detail=5",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("seed 7"));
+    let data = mountains::terrain::heightmap::load(&out).unwrap();
+    assert_eq!((data.seed, data.field.size()), (Some(7), 33));
+    let expected = mountains::terrain::generate(&settings_with(7, 5), 7);
+    let step = (expected.max() - expected.min()) / 65535.0;
+    for (a, b) in data.field.heights().iter().zip(expected.heights()) {
+        assert!((a - b).abs() <= step, "{a} vs {b}");
+    }
+}
+
+#[test]
+fn render_open_draws_a_saved_data_set() {
+    let dir = scratch("open");
+    let (h, a, b) = (dir.join("h.png"), dir.join("a.png"), dir.join("b.png"));
+    let arg = |p: &Path| p.to_str().unwrap().to_string();
+    let run = |args: &[&str]| {
+        let o = mountains(args);
+        assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+    };
+    run(&[
+        "heightmap",
+        "--set",
+        "detail=5",
+        "--set",
+        "seed=9",
+        "-o",
+        &arg(&h),
+    ]);
+    run(&[
+        "render",
+        "--size",
+        "80x60",
+        "--open",
+        &arg(&h),
+        "-o",
+        &arg(&a),
+    ]);
+    run(&[
+        "render",
+        "--size",
+        "80x60",
+        "--open",
+        &arg(&h),
+        "--set",
+        "color=sonar",
+        "-o",
+        &arg(&b),
+    ]);
+    assert_ne!(
+        std::fs::read(&a).unwrap(),
+        std::fs::read(&b).unwrap(),
+        "sonar looks like natural"
+    );
+    let o = mountains(&[
+        "render",
+        "-o",
+        &arg(&a),
+        "--open",
+        &arg(&dir.join("missing.png")),
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stderr(&o).contains("missing.png"), "{}", stderr(&o));
+}
+
+fn settings_with(seed: u64, detail: u32) -> mountains::settings::Settings {
+    let mut s = mountains::settings::Settings::default();
+    s.seed = Some(seed);
+    s.detail = detail;
+    s
+}
