@@ -245,8 +245,9 @@ fn render_open_draws_a_saved_data_set() {
 }
 
 fn settings_with(seed: u64, detail: u32) -> mountains::settings::Settings {
-    let mut s = mountains::settings::Settings::default();
-    s.seed = Some(seed);
-    s.detail = detail;
-    s
+    mountains::settings::Settings {
+        seed: Some(seed),
+        detail,
+        ..Default::default()
+    }
 }
