@@ -1,22 +1,113 @@
 //! Face colours: Lambert shading, the natural palette, filters, water depth.
 //!
-//! STUB with the final signatures; the colour work replaces the bodies.
+//! Everything costly happens once in [`Palette::new`]: the base colour of
+//! every (steepness, height) pair goes into a table that already carries the
+//! colour filter, and water colours by depth go into another. [`Palette::land`]
+//! is then a table lookup, one multiply per channel and a pack.
+//!
+//! The treeline follows seed 000: with `normalHeight = 10000 * height` its
+//! treeline sits at `0.4 * normalHeight + 10000` and the blend to grey spans
+//! 9000 units above it. As fractions of the highest peak that is a treeline
+//! at `0.4 + 1 / height` and a band `0.9 / height` wide, which is how we
+//! place it on any field: at height 10 the top 40 % of the relief is above
+//! the treeline, at height 1 none of it is.
+//!
+//! Colour filters are luminance tints, not seed 003's bitwise AND: each
+//! colour is replaced by the filter's tint at the same luminance (the tint
+//! darkened; colours lighter than the tint blend it part way to white).
+//! The AND keeps only some channels of the *natural* colour, so a green
+//! lowland turns black under the red filter; the tint keeps every face's
+//! brightness, stays in the filter's hue family, and snow turns a pale tint.
 
-use crate::settings::Settings;
+use crate::settings::{ColorMode, Settings};
 use crate::terrain::Heightfield;
 use glam::Vec3;
+
+/// An sRGB colour with channels in `0.0..=1.0`.
+type Rgb = [f32; 3];
+
+/// Height classes in the land table, from sea level to the highest peak.
+const HEIGHT_BINS: usize = 512;
+/// Steepness classes in the land table, from flat to the field's steepest.
+const STEEP_BINS: usize = 8;
+/// Water colours from the shore to the deepest point.
+const DEPTH_BINS: usize = 256;
+/// Per-face height jitter, in height bins either side, so that faces of one
+/// height do not make flat bands and the snow line is ragged.
+const JITTER_BINS: i32 = 10;
+
+/// How far a colour filter blends its tint towards white for the lightest
+/// colours (1 would keep their luminance but turn snow and sand white).
+const WHITENING: f32 = 0.6;
+
+/// Towards the light: from the back-left, 32 degrees above the horizon, so
+/// the faces the viewer sees are modelled and peaks cast shadows forwards.
+const LIGHT: Vec3 = Vec3::new(-0.6, 0.6, 0.53);
+
+/// Natural colours, shaded brightness 1 (full sun).
+mod natural {
+    use super::Rgb;
+    pub const SAND: Rgb = [0.76, 0.70, 0.50];
+    pub const MEADOW: Rgb = [0.36, 0.60, 0.22];
+    pub const FOREST: Rgb = [0.21, 0.46, 0.17];
+    pub const ALPINE: Rgb = [0.47, 0.52, 0.28];
+    pub const BROWN: Rgb = [0.50, 0.40, 0.28];
+    pub const ROCK: Rgb = [0.56, 0.53, 0.50];
+    pub const SNOW: Rgb = [0.96, 0.97, 1.00];
+    pub const CLIFF: Rgb = [0.46, 0.40, 0.33];
+    pub const EARTH: Rgb = [0.50, 0.38, 0.26];
+    pub const SHALLOW: Rgb = [0.16, 0.46, 0.74];
+    pub const DEEP: Rgb = [0.02, 0.10, 0.30];
+    pub const SEA: Rgb = [0.10, 0.34, 0.66];
+    pub const SKY: u32 = 0x000a_1220;
+}
 
 /// Colours for one mountain under one set of settings.
 #[derive(Debug, Clone)]
 pub struct Palette {
     light: Vec3,
+    mode: ColorMode,
+    /// `STEEP_BINS` rows of `HEIGHT_BINS` filtered base colours, packed.
+    land: Box<[u32]>,
+    /// Height bins per height unit (heights below 0 clamp to bin 0).
+    height_scale: f32,
+    /// Steepness bins per unit of `1 - normal.z`.
+    steep_scale: f32,
+    /// Filtered, toned water colours from the shore to the deepest point.
+    water: Box<[u32]>,
+    /// Depth bins per depth unit (0 when every depth has the same colour).
+    depth_scale: f32,
+    /// Filtered skirt (earth) colour, in 0..=255.
+    skirt: Rgb,
+    /// Final tone curve `out = shaded * gain - offset` (Mono's contrast
+    /// stretch; 1 and 0 otherwise), offset in 0..=255 units.
+    gain: f32,
+    offset: f32,
 }
 
 impl Palette {
     /// Prepares the colours for `field` (treeline, depth range) under `settings`.
-    pub fn new(_settings: &Settings, _field: &Heightfield) -> Self {
+    pub fn new(settings: &Settings, field: &Heightfield) -> Self {
+        let mode = settings.color;
+        let top = positive_or(field.max(), 1.0);
+        let (gain, offset) = tone(mode);
+        let zones = Zones::new(settings.height, field.min() < 0.0);
+        let steep_ref = steepness_reference(field);
+        let land = land_table(mode, &zones);
+        let deepest = positive_or(-field.min(), 1.0);
+        let (water, depth_scale) =
+            water_table(mode, settings.relative_depth, deepest, gain, offset);
         Palette {
-            light: Vec3::new(-0.5, -0.6, 0.62).normalize(),
+            light: LIGHT.normalize(),
+            mode,
+            land,
+            height_scale: HEIGHT_BINS as f32 / top,
+            steep_scale: STEEP_BINS as f32 / steep_ref,
+            water,
+            depth_scale,
+            skirt: finish(mode, natural::EARTH),
+            gain,
+            offset,
         }
     }
 
@@ -25,26 +116,351 @@ impl Palette {
         self.light
     }
 
+    /// The colour mode these colours were made for.
+    pub fn mode(&self) -> ColorMode {
+        self.mode
+    }
+
     /// Colour of a land face: its mean height, unit normal (z up), and how
     /// much direct light reaches it (1 = lit, 0 = in cast shadow).
-    pub fn land(&self, _mean_height: f32, normal: Vec3, lit: f32) -> u32 {
-        let b = 0.5 + 0.5 * normal.dot(self.light).max(0.0) * lit;
-        let g = (200.0 * b) as u32;
-        g << 8 | (g / 3) << 16
+    ///
+    /// Faces turned away from the light, and faces in shadow, are exactly
+    /// half as bright as a face square to the light (seed 000's floor).
+    #[inline]
+    pub fn land(&self, mean_height: f32, normal: Vec3, lit: f32) -> u32 {
+        // Clamped as floats (NaN stays NaN and casts to bin 0).
+        let h = (mean_height * self.height_scale + jitter(mean_height))
+            .clamp(0.0, (HEIGHT_BINS - 1) as f32) as i32 as usize;
+        let s = ((1.0 - normal.z) * self.steep_scale).clamp(0.0, (STEEP_BINS - 1) as f32) as i32
+            as usize;
+        let base = self.land[s * HEIGHT_BINS + h];
+        let b = self.brightness(normal, lit);
+        if self.offset == 0.0 {
+            scale_packed(base, b)
+        } else {
+            pack(unpack(base).map(|c| c * 255.0), b, self.offset)
+        }
     }
 
     /// Colour of water over ground `depth` (>= 0) units below sea level.
-    pub fn water(&self, _depth: f32) -> u32 {
-        0x0000_40c0
+    ///
+    /// Deeper water is never lighter; it keeps its hue and stops darkening at
+    /// the field's deepest point instead of wrapping into another colour.
+    #[inline]
+    pub fn water(&self, depth: f32) -> u32 {
+        let i = (depth * self.depth_scale) as usize;
+        self.water[i.min(DEPTH_BINS - 1)]
     }
 
     /// Colour of a skirt face (the cut side of the map) facing `normal`.
-    pub fn skirt(&self, mean_height: f32, normal: Vec3) -> u32 {
-        self.land(mean_height, normal, 1.0)
+    ///
+    /// Earth, shaded like land but never in cast shadow. One colour for
+    /// all heights: painters give one height per skirt column, so any
+    /// height banding would show as vertical stripes.
+    pub fn skirt(&self, _mean_height: f32, normal: Vec3) -> u32 {
+        pack(self.skirt, self.brightness(normal, 1.0), self.offset)
     }
 
     /// Background colour behind the mountain.
     pub fn sky(&self) -> u32 {
-        0
+        match self.mode {
+            ColorMode::Natural | ColorMode::Ridges => natural::SKY,
+            ColorMode::Mono | ColorMode::Sonar | ColorMode::Outline => 0,
+            _ => to_u32(filter(self.mode, unpack(natural::SKY))),
+        }
     }
+
+    /// Edge colour of land faces in the wire modes: white for Sonar, green
+    /// for Outline (and white in every other mode, should one want edges).
+    pub fn outline_land(&self) -> u32 {
+        match self.mode {
+            ColorMode::Outline => 0x0000_d040,
+            _ => 0x00ff_ffff,
+        }
+    }
+
+    /// Edge colour of water faces in the wire modes: white for Sonar, blue
+    /// for Outline.
+    pub fn outline_water(&self) -> u32 {
+        match self.mode {
+            ColorMode::Outline => 0x0030_70ff,
+            _ => 0x00ff_ffff,
+        }
+    }
+
+    /// Brightness in 0.5..=1: Lambert cosine, floored at half, times cast light.
+    #[inline]
+    fn brightness(&self, normal: Vec3, lit: f32) -> f32 {
+        let lit = unit(lit);
+        let cos = unit(normal.dot(self.light));
+        (0.5 + 0.5 * cos * lit) * self.gain
+    }
+}
+
+/// `v` limited to 0..=1, with NaN as 0 (a bad input gives a dim face, not a
+/// black one).
+#[inline]
+fn unit(v: f32) -> f32 {
+    if v > 0.0 { v.min(1.0) } else { 0.0 }
+}
+
+/// `value` if it is a positive finite number, else `fallback`.
+fn positive_or(value: f32, fallback: f32) -> f32 {
+    if value.is_finite() && value > 0.0 {
+        value
+    } else {
+        fallback
+    }
+}
+
+/// A few bins of deterministic jitter from the bits of a face's height.
+#[inline]
+fn jitter(mean_height: f32) -> f32 {
+    let mixed = mean_height.to_bits().wrapping_mul(0x9e37_79b1) >> 16;
+    // Multiply-shift maps 16 random bits onto 0..=2J without a division.
+    (((mixed * (2 * JITTER_BINS as u32 + 1)) >> 16) as i32 - JITTER_BINS) as f32
+}
+
+/// Scales a table colour (0..=255 per channel), subtracts the tone offset
+/// and packs it as `0x00RRGGBB`.
+#[inline]
+fn pack(base: Rgb, scale: f32, offset: f32) -> u32 {
+    let c = base.map(|v| (v * scale - offset + 0.5).clamp(0.0, 255.0) as u32);
+    c[0] << 16 | c[1] << 8 | c[2]
+}
+
+/// A packed colour times `b` (0..=1), two channels per multiply.
+#[inline]
+fn scale_packed(c: u32, b: f32) -> u32 {
+    // 0 ..= 256 in 1/256ths; NaN casts to 0.
+    let k = ((b * 256.0 + 0.5) as u32).min(256);
+    let red_blue = (((c & 0x00ff_00ff) * k) >> 8) & 0x00ff_00ff;
+    let green = (((c & 0x0000_ff00) * k) >> 8) & 0x0000_ff00;
+    red_blue | green
+}
+
+/// A 0..=1 colour as `0x00RRGGBB`.
+fn to_u32(c: Rgb) -> u32 {
+    pack(c.map(|v| v * 255.0), 1.0, 0.0)
+}
+
+/// `0x00RRGGBB` as a 0..=1 colour.
+fn unpack(c: u32) -> Rgb {
+    [c >> 16, c >> 8, c].map(|v| (v & 0xff) as f32 / 255.0)
+}
+
+/// Rec. 709 luminance.
+fn luminance(c: Rgb) -> f32 {
+    0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]
+}
+
+/// The tint each colour filter multiplies luminance by; `None` for modes
+/// that keep their own colours.
+fn tint(mode: ColorMode) -> Option<Rgb> {
+    let t = match mode {
+        ColorMode::Gray | ColorMode::Mono => [1.0, 1.0, 1.0],
+        ColorMode::Red => [1.0, 0.20, 0.14],
+        ColorMode::Green => [0.24, 1.0, 0.26],
+        ColorMode::Blue => [0.22, 0.38, 1.0],
+        ColorMode::Yellow => [1.0, 0.86, 0.22],
+        ColorMode::Cyan => [0.16, 0.92, 1.0],
+        ColorMode::Purple => [0.78, 0.22, 1.0],
+        _ => return None,
+    };
+    Some(t)
+}
+
+/// Applies the colour filter of `mode` to a natural colour (0..=1).
+fn filter(mode: ColorMode, c: Rgb) -> Rgb {
+    match mode {
+        ColorMode::Sonar | ColorMode::Outline => [0.0; 3],
+        _ => match tint(mode) {
+            Some(t) => {
+                // Darker than the tint: the tint scaled down, at the same
+                // luminance. Lighter: the tint blended part way to white, so
+                // sand and snow stay tinted instead of washing out. Either
+                // way the channel order is the tint's.
+                let (y, yt) = (luminance(c).clamp(0.0, 1.0), luminance(t));
+                if y <= yt {
+                    t.map(|v| v * y / yt)
+                } else {
+                    mix(t, [1.0; 3], WHITENING * (y - yt) / (1.0 - yt))
+                }
+            }
+            None => c,
+        },
+    }
+}
+
+/// Gain and offset of the final tone curve. Mono follows seed 000's pattern
+/// choice, `pattern = 36 * value - 10` of 16: shaded values from 0.28 to
+/// 0.75 spread over all 17 dither levels, so shading, not colour, carries
+/// the picture.
+fn tone(mode: ColorMode) -> (f32, f32) {
+    match mode {
+        ColorMode::Mono => (36.0 / 16.0, 10.0 / 16.0 * 255.0),
+        _ => (1.0, 0.0),
+    }
+}
+
+/// A filtered natural colour (0..=1) as a table entry (0..=255).
+fn finish(mode: ColorMode, c: Rgb) -> Rgb {
+    match mode {
+        ColorMode::Mono => [mono_value(c) * 255.0; 3],
+        _ => filter(mode, c).map(|v| v * 255.0),
+    }
+}
+
+/// Seed 000's HSV value for Mono: 2/3 for green land rising to 0.94 for
+/// snow, here from the natural colour's luminance.
+fn mono_value(c: Rgb) -> f32 {
+    let snow = ((luminance(c) - 0.45) / 0.5).clamp(0.0, 1.0);
+    2.0 / 3.0 + 0.27 * snow
+}
+
+/// Mono water: half grey at the shore (seed 000's middle pattern), darker
+/// with depth in step with the natural blue.
+fn mono_water(c: Rgb) -> u32 {
+    let v = 0.5 * luminance(c) / luminance(natural::SHALLOW);
+    to_u32([v.min(1.0); 3])
+}
+
+/// Where the green, brown and snow zones lie, as fractions of the highest peak.
+struct Zones {
+    treeline: f32,
+    band: f32,
+    beach: bool,
+}
+
+impl Zones {
+    /// Seed 000's treeline for a height setting of `height` (1..=10).
+    fn new(height: u32, has_water: bool) -> Self {
+        let h = height.clamp(1, 10) as f32;
+        Zones {
+            treeline: 0.4 + 1.0 / h,
+            band: 0.9 / h,
+            beach: has_water,
+        }
+    }
+
+    /// The natural colour at height fraction `u` (0 sea, 1 highest peak) on
+    /// a face of relative steepness `steep` (0 flat, 1 the field's steep faces).
+    fn colour(&self, u: f32, steep: f32) -> Rgb {
+        use natural::*;
+        let low = u / self.treeline;
+        let lowland = if self.beach {
+            ramp(
+                &[
+                    (0.0, SAND),
+                    (0.025, SAND),
+                    (0.06, MEADOW),
+                    (0.45, FOREST),
+                    (1.0, ALPINE),
+                ],
+                low,
+            )
+        } else {
+            ramp(&[(0.0, MEADOW), (0.45, FOREST), (1.0, ALPINE)], low)
+        };
+        let cliff = smoothstep(0.7, 1.0, steep) * 0.5;
+        let lowland = mix(lowland, CLIFF, cliff);
+        // Steep faces shed snow: they meet it higher up.
+        let t = (u - self.treeline) / self.band - 0.45 * smoothstep(0.4, 1.0, steep);
+        if t <= 0.0 {
+            return lowland;
+        }
+        let alpine = ramp(&[(0.0, ALPINE), (0.4, BROWN), (0.68, ROCK), (1.0, SNOW)], t);
+        mix(lowland, alpine, smoothstep(0.0, 0.15, t))
+    }
+}
+
+/// The filtered base colour of every (steepness, height) bin.
+fn land_table(mode: ColorMode, zones: &Zones) -> Box<[u32]> {
+    let mut table = Vec::with_capacity(STEEP_BINS * HEIGHT_BINS);
+    for s in 0..STEEP_BINS {
+        let steep = (s as f32 + 0.5) / STEEP_BINS as f32;
+        for h in 0..HEIGHT_BINS {
+            let u = (h as f32 + 0.5) / HEIGHT_BINS as f32;
+            table.push(pack(finish(mode, zones.colour(u, steep)), 1.0, 0.0));
+        }
+    }
+    table.into_boxed_slice()
+}
+
+/// Water colours by depth and the depth-to-bin scale.
+fn water_table(
+    mode: ColorMode,
+    relative: bool,
+    deepest: f32,
+    gain: f32,
+    offset: f32,
+) -> (Box<[u32]>, f32) {
+    let table = (0..DEPTH_BINS)
+        .map(|i| {
+            let c = if relative {
+                let t = i as f32 / (DEPTH_BINS - 1) as f32;
+                // Most of the darkening near the shore, where it shows.
+                mix(natural::SHALLOW, natural::DEEP, t.sqrt())
+            } else {
+                natural::SEA
+            };
+            match mode {
+                ColorMode::Mono => mono_water(c),
+                _ => pack(finish(mode, c), gain, offset),
+            }
+        })
+        .collect();
+    let scale = if relative {
+        (DEPTH_BINS - 1) as f32 / deepest
+    } else {
+        0.0
+    };
+    (table, scale)
+}
+
+/// Relative steepness of the field's steep faces: the 90th percentile of
+/// `1 - normal.z` over (a sample of) its cells, so "steep" means steep for
+/// this mountain whatever its vertical scale.
+fn steepness_reference(field: &Heightfield) -> f32 {
+    let n = field.size();
+    let spacing = field.extent() / (n - 1) as f32;
+    let step = (n / 256).max(1);
+    let mut samples = Vec::with_capacity((n / step + 1) * (n / step + 1));
+    for y in (0..n - 1).step_by(step) {
+        for x in (0..n - 1).step_by(step) {
+            let dx = field.get(x + 1, y) - field.get(x, y);
+            let dy = field.get(x, y + 1) - field.get(x, y);
+            let normal = Vec3::new(-dx, -dy, spacing).normalize_or_zero();
+            samples.push(1.0 - normal.z);
+        }
+    }
+    let k = samples.len() * 9 / 10;
+    let (_, &mut p90, _) = samples.select_nth_unstable_by(k, f32::total_cmp);
+    positive_or(p90, 0.05).clamp(0.005, 1.0)
+}
+
+/// Piecewise-linear colour ramp through `(position, colour)` stops.
+fn ramp(stops: &[(f32, Rgb)], t: f32) -> Rgb {
+    let (mut prev_t, mut prev_c) = stops[0];
+    if t.is_nan() || t <= prev_t {
+        return prev_c;
+    }
+    for &(st, sc) in &stops[1..] {
+        if t <= st {
+            return mix(prev_c, sc, (t - prev_t) / (st - prev_t));
+        }
+        (prev_t, prev_c) = (st, sc);
+    }
+    prev_c
+}
+
+/// Linear blend from `a` (t = 0) to `b` (t = 1).
+fn mix(a: Rgb, b: Rgb, t: f32) -> Rgb {
+    [0, 1, 2].map(|i| a[i] + (b[i] - a[i]) * t)
+}
+
+/// Hermite step from 0 at `e0` to 1 at `e1`.
+fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
+    let t = ((x - e0) / (e1 - e0)).clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
 }

@@ -1,0 +1,403 @@
+//! The `mountains:` PNG text chunks: which keys, how they are written and read.
+//!
+//! Keys fall in two tiers, and a bad value is treated by tier:
+//! - **Height keys** (`scale`, `offset`, `sea_level`, `extent`, `format`) say
+//!   how to read the samples. A bad value is an error naming the key: the
+//!   mountain would otherwise be misread.
+//! - **Origin keys** (`seed` and the generator parameters) only say where the
+//!   mountain came from; the heights are complete without them. A bad value
+//!   drops that information with a note in [`DataSet::notes`](super::DataSet),
+//!   so a file from a newer version (say, a new generator name) still loads.
+//!
+//! Keys outside this list are ignored; a known key given twice is an error.
+//! Values are plain ASCII decimal text.
+
+use std::path::Path;
+
+use serde::Serialize;
+
+use super::error::HeightmapError;
+use super::quantise::Quantisation;
+use crate::settings::{Generator, Profile, Settings, load};
+
+/// Version of this key set; bumped only if a key changes meaning.
+pub const FORMAT_VERSION: u32 = 1;
+/// Version of the key set the file follows.
+pub const KEY_FORMAT: &str = "mountains:format";
+/// Height units per sample step (`f64`, > 0).
+pub const KEY_SCALE: &str = "mountains:scale";
+/// Elevation of sample 0 (`f32`).
+pub const KEY_OFFSET: &str = "mountains:offset";
+/// Elevation of the water line (`f32`); loaded heights are relative to it.
+pub const KEY_SEA_LEVEL: &str = "mountains:sea_level";
+/// Width of the whole grid in height units (`f32`, > 0).
+pub const KEY_EXTENT: &str = "mountains:extent";
+/// The seed that generated the mountain (`u64`).
+pub const KEY_SEED: &str = "mountains:seed";
+/// Generator name, as in the config file (`square`, `diamond`, `triangle`).
+pub const KEY_GENERATOR: &str = "mountains:generator";
+/// `Settings::cragginess`.
+pub const KEY_CRAGGINESS: &str = "mountains:cragginess";
+/// `Settings::elevation`.
+pub const KEY_ELEVATION: &str = "mountains:elevation";
+/// `Settings::roughness`.
+pub const KEY_ROUGHNESS: &str = "mountains:roughness";
+/// `Settings::contour`.
+pub const KEY_CONTOUR: &str = "mountains:contour";
+/// `Settings::profile`, as in the config file.
+pub const KEY_PROFILE: &str = "mountains:profile";
+/// `Settings::height`.
+pub const KEY_HEIGHT: &str = "mountains:height";
+/// `Settings::detail`.
+pub const KEY_DETAIL: &str = "mountains:detail";
+/// `Settings::low_detail` (`true`/`false`).
+pub const KEY_LOW_DETAIL: &str = "mountains:low_detail";
+/// `Settings::sea_level`, the water-line setting as a fraction of the relief.
+pub const KEY_SEA_FRACTION: &str = "mountains:sea_fraction";
+
+const KNOWN_KEYS: [&str; 16] = [
+    KEY_FORMAT,
+    KEY_SCALE,
+    KEY_OFFSET,
+    KEY_SEA_LEVEL,
+    KEY_EXTENT,
+    KEY_SEED,
+    KEY_GENERATOR,
+    KEY_CRAGGINESS,
+    KEY_ELEVATION,
+    KEY_ROUGHNESS,
+    KEY_CONTOUR,
+    KEY_PROFILE,
+    KEY_HEIGHT,
+    KEY_DETAIL,
+    KEY_LOW_DETAIL,
+    KEY_SEA_FRACTION,
+];
+
+/// The generator settings that made a mountain, read back from its file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GeneratorParams {
+    /// Which generator.
+    pub generator: Generator,
+    /// Square generators: initial random range.
+    pub cragginess: u32,
+    /// Square generators: range of the corner heights.
+    pub elevation: f32,
+    /// Triangle generator: smoothness base.
+    pub roughness: f32,
+    /// Triangle generator: power applied to heights.
+    pub contour: f32,
+    /// Triangle generator: starting corner heights.
+    pub profile: Profile,
+    /// Height of the highest peak (1-10).
+    pub height: u32,
+    /// Grid exponent setting.
+    pub detail: u32,
+    /// Whether low detail halved the grid.
+    pub low_detail: bool,
+    /// Water line setting, fraction of the relief.
+    pub sea_level: f32,
+}
+
+impl GeneratorParams {
+    /// The generator part of `settings`.
+    pub fn from_settings(s: &Settings) -> Self {
+        GeneratorParams {
+            generator: s.generator,
+            cragginess: s.cragginess,
+            elevation: s.elevation,
+            roughness: s.roughness,
+            contour: s.contour,
+            profile: s.profile,
+            height: s.height,
+            detail: s.detail,
+            low_detail: s.low_detail,
+            sea_level: s.sea_level,
+        }
+    }
+
+    /// Puts these parameters into `settings` (e.g. to regenerate or re-save).
+    pub fn apply_to(&self, s: &mut Settings) {
+        s.generator = self.generator;
+        s.cragginess = self.cragginess;
+        s.elevation = self.elevation;
+        s.roughness = self.roughness;
+        s.contour = self.contour;
+        s.profile = self.profile;
+        s.height = self.height;
+        s.detail = self.detail;
+        s.low_detail = self.low_detail;
+        s.sea_level = self.sea_level;
+    }
+
+    fn to_pairs(&self) -> Vec<(&'static str, String)> {
+        vec![
+            (KEY_GENERATOR, enum_name(&self.generator)),
+            (KEY_CRAGGINESS, self.cragginess.to_string()),
+            (KEY_ELEVATION, self.elevation.to_string()),
+            (KEY_ROUGHNESS, self.roughness.to_string()),
+            (KEY_CONTOUR, self.contour.to_string()),
+            (KEY_PROFILE, enum_name(&self.profile)),
+            (KEY_HEIGHT, self.height.to_string()),
+            (KEY_DETAIL, self.detail.to_string()),
+            (KEY_LOW_DETAIL, self.low_detail.to_string()),
+            (KEY_SEA_FRACTION, self.sea_level.to_string()),
+        ]
+    }
+}
+
+/// The config-file name of a settings enum value (serde's, so they agree).
+fn enum_name<T: Serialize>(value: &T) -> String {
+    match toml::Value::try_from(value) {
+        Ok(toml::Value::String(s)) => s,
+        _ => String::from("?"),
+    }
+}
+
+/// The text chunks `save` writes, in order.
+pub fn to_pairs(
+    q: &Quantisation,
+    extent: f32,
+    seed: Option<u64>,
+    settings: &Settings,
+) -> Vec<(&'static str, String)> {
+    let mut pairs = vec![
+        (KEY_FORMAT, FORMAT_VERSION.to_string()),
+        (KEY_SCALE, q.scale.to_string()),
+        (KEY_OFFSET, q.offset.to_string()),
+        (KEY_SEA_LEVEL, String::from("0")),
+        (KEY_EXTENT, extent.to_string()),
+    ];
+    // Parameters without the seed could not regenerate anything, and a field
+    // with no seed did not come from these settings, so they go together.
+    if let Some(seed) = seed {
+        pairs.push((KEY_SEED, seed.to_string()));
+        pairs.extend(GeneratorParams::from_settings(settings).to_pairs());
+    }
+    pairs
+}
+
+/// What the text chunks said, checked.
+#[derive(Debug, Default)]
+pub struct Metadata {
+    /// `mountains:scale`, if given.
+    pub scale: Option<f64>,
+    /// `mountains:offset`, if given.
+    pub offset: Option<f32>,
+    /// `mountains:sea_level`, if given.
+    pub sea_level: Option<f32>,
+    /// `mountains:extent`, if given.
+    pub extent: Option<f32>,
+    /// `mountains:seed`, if given and valid.
+    pub seed: Option<u64>,
+    /// The generator parameters, if `mountains:generator` was given and valid.
+    pub params: Option<GeneratorParams>,
+    /// Origin keys that were dropped or defaulted, for a person.
+    pub notes: Vec<String>,
+}
+
+/// Reads our keys from the (keyword, text) pairs of a file.
+pub fn parse(pairs: &[(String, String)], path: &Path) -> Result<Metadata, HeightmapError> {
+    let mut found: Vec<(&'static str, &str)> = Vec::new();
+    for (key, text) in pairs {
+        let Some(&known) = KNOWN_KEYS.iter().find(|k| **k == key) else {
+            continue;
+        };
+        if found.iter().any(|(k, _)| *k == known) {
+            return Err(HeightmapError::metadata(
+                path,
+                known,
+                "given more than once",
+            ));
+        }
+        found.push((known, text.trim()));
+    }
+    let get = |key: &str| found.iter().find(|(k, _)| *k == key).map(|(_, v)| *v);
+    let height_key = |key: &'static str, check: fn(&str) -> Result<f64, String>| {
+        get(key)
+            .map(|v| check(v).map_err(|e| HeightmapError::metadata(path, key, e)))
+            .transpose()
+    };
+    if let Some(v) = get(KEY_FORMAT) {
+        check_format(v).map_err(|e| HeightmapError::metadata(path, KEY_FORMAT, e))?;
+    }
+    let mut meta = Metadata {
+        scale: height_key(KEY_SCALE, positive_f64)?,
+        offset: height_key(KEY_OFFSET, finite_f32)?.map(|v| v as f32),
+        sea_level: height_key(KEY_SEA_LEVEL, finite_f32)?.map(|v| v as f32),
+        extent: height_key(KEY_EXTENT, positive_f32)?.map(|v| v as f32),
+        ..Metadata::default()
+    };
+    if let Some(v) = get(KEY_SEED) {
+        match v.parse::<u64>() {
+            Ok(seed) => meta.seed = Some(seed),
+            Err(_) => meta.notes.push(format!(
+                "{KEY_SEED}: {v:?} is not a whole number from 0 to 2^64-1; seed ignored"
+            )),
+        }
+    }
+    if get(KEY_GENERATOR).is_some() {
+        match read_params(&get, &mut meta.notes) {
+            Ok(p) => meta.params = Some(p),
+            Err(e) => meta
+                .notes
+                .push(format!("{e}; generator parameters ignored")),
+        }
+    }
+    Ok(meta)
+}
+
+fn check_format(v: &str) -> Result<(), String> {
+    match v.parse::<u32>() {
+        Ok(FORMAT_VERSION) => Ok(()),
+        Ok(n) if n > FORMAT_VERSION => Err(format!(
+            "format {n} is newer than this program, which reads format {FORMAT_VERSION}"
+        )),
+        _ => Err(format!("{v:?} is not a known format")),
+    }
+}
+
+fn number(v: &str) -> Result<f64, String> {
+    let x: f64 = v.parse().map_err(|_| format!("{v:?} is not a number"))?;
+    if x.is_finite() {
+        Ok(x)
+    } else {
+        Err(format!("{v:?} is not a finite number"))
+    }
+}
+
+fn positive_f64(v: &str) -> Result<f64, String> {
+    let x = number(v)?;
+    if x > 0.0 {
+        Ok(x)
+    } else {
+        Err(format!("{v:?} must be greater than 0"))
+    }
+}
+
+fn finite_f32(v: &str) -> Result<f64, String> {
+    number(v)?;
+    let x: f32 = v.parse().map_err(|_| format!("{v:?} is not a number"))?;
+    if x.is_finite() {
+        Ok(f64::from(x))
+    } else {
+        Err(format!("{v:?} is too large"))
+    }
+}
+
+fn positive_f32(v: &str) -> Result<f64, String> {
+    let x = finite_f32(v)?;
+    if x > 0.0 {
+        Ok(x)
+    } else {
+        Err(format!("{v:?} must be greater than 0"))
+    }
+}
+
+fn read_params<'a>(
+    get: &impl Fn(&str) -> Option<&'a str>,
+    notes: &mut Vec<String>,
+) -> Result<GeneratorParams, String> {
+    // Each value is checked by the settings key table, so the ranges a file
+    // may hold are exactly the ranges a user may set.
+    let mut settings = Settings::default();
+    for (meta_key, key) in PARAM_KEYS {
+        let Some(raw) = get(meta_key) else {
+            notes.push(format!("{meta_key} missing; the default is assumed"));
+            continue;
+        };
+        load::apply_set(&mut settings, key, raw)
+            .map_err(|p| format!("{meta_key}: {}", p.message))?;
+    }
+    Ok(GeneratorParams::from_settings(&settings))
+}
+
+/// The generator parameters stored with a seed, and the settings key each sets.
+const PARAM_KEYS: &[(&str, &str)] = &[
+    (KEY_GENERATOR, "generator"),
+    (KEY_CRAGGINESS, "cragginess"),
+    (KEY_ELEVATION, "elevation"),
+    (KEY_ROUGHNESS, "roughness"),
+    (KEY_CONTOUR, "contour"),
+    (KEY_PROFILE, "profile"),
+    (KEY_HEIGHT, "height"),
+    (KEY_DETAIL, "detail"),
+    (KEY_LOW_DETAIL, "low_detail"),
+    (KEY_SEA_FRACTION, "sea_level"),
+];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn pairs(list: &[(&str, &str)]) -> Vec<(String, String)> {
+        list.iter()
+            .map(|(k, v)| (k.to_string(), v.to_string()))
+            .collect()
+    }
+
+    #[test]
+    fn settings_round_trip_through_text() {
+        let s = Settings {
+            generator: Generator::Triangle,
+            profile: Profile::Massif,
+            contour: 0.25,
+            low_detail: true,
+            ..Settings::default()
+        };
+        let q = Quantisation::spanning(-3.0, 9.0);
+        let written: Vec<(String, String)> = to_pairs(&q, 400.0, Some(42), &s)
+            .into_iter()
+            .map(|(k, v)| (k.to_string(), v))
+            .collect();
+        let meta = parse(&written, Path::new("x.png")).unwrap();
+        assert_eq!(meta.seed, Some(42));
+        assert_eq!(meta.params, Some(GeneratorParams::from_settings(&s)));
+        assert_eq!(meta.offset, Some(-3.0));
+        assert!(meta.notes.is_empty(), "{:?}", meta.notes);
+    }
+
+    #[test]
+    fn unknown_generator_is_a_note_not_an_error() {
+        let meta = parse(
+            &pairs(&[(KEY_GENERATOR, "ridged"), (KEY_SEED, "7")]),
+            Path::new("x.png"),
+        )
+        .unwrap();
+        assert_eq!(meta.params, None);
+        assert_eq!(meta.seed, Some(7));
+        assert!(meta.notes.iter().any(|n| n.contains(KEY_GENERATOR)));
+    }
+
+    #[test]
+    fn bad_height_keys_are_errors_naming_the_key() {
+        for (key, value) in [
+            (KEY_SCALE, "abc"),
+            (KEY_SCALE, "NaN"),
+            (KEY_SCALE, "0"),
+            (KEY_SCALE, "-2"),
+            (KEY_OFFSET, "inf"),
+            (KEY_OFFSET, "1e39"),
+            (KEY_SEA_LEVEL, ""),
+            (KEY_EXTENT, "-400"),
+            (KEY_FORMAT, "2"),
+        ] {
+            let err = parse(&pairs(&[(key, value)]), Path::new("m.png")).unwrap_err();
+            assert_eq!(err.kind, super::super::ErrorKind::Metadata(key.into()));
+            assert!(
+                err.to_string().starts_with(&format!("m.png: {key}")),
+                "{err}"
+            );
+        }
+    }
+
+    #[test]
+    fn duplicate_key_is_an_error() {
+        let err = parse(
+            &pairs(&[(KEY_SCALE, "1"), (KEY_SCALE, "2")]),
+            Path::new("m.png"),
+        )
+        .unwrap_err();
+        assert!(err.problem.contains("more than once"));
+    }
+}

@@ -1,0 +1,259 @@
+//! Data sets on disk: 16-bit grayscale PNG heightmaps with our metadata.
+//!
+//! **Saving** spreads the field's lowest..highest heights over the whole
+//! 16-bit range and records in `mountains:` text chunks how to undo it
+//! (`scale`, `offset`, `sea_level`, `extent`), plus the seed and generator
+//! parameters. Terrain tools (Blender, Unity, Unreal, World Machine) read the
+//! image as an ordinary heightmap; we read it back as the same mountain. After
+//! the first quantisation the round trip is exact (see [`quantise`]).
+//!
+//! **Loading** takes any 8- or 16-bit grayscale PNG, ours or a terrain
+//! tool's, fits it to a `2^n + 1` grid (see [`fit`] for the exact method:
+//! central square crop, `2^n` sides extended by one, others resampled to the
+//! nearest `2^n + 1` up to 4097) and fills in what its metadata lacks:
+//! - no `mountains:scale`: the relief (highest - lowest sample) becomes
+//!   [`DEFAULT_RELIEF`] of the width, a natural mountain aspect;
+//! - no `mountains:offset`: sample 0 is elevation 0;
+//! - no `mountains:sea_level`: the water line is the [`SEA_PERCENTILE`]th
+//!   percentile of the heights, and at least half a step above the lowest
+//!   sample, so some water shows and the lowest ground is always under it;
+//! - no `mountains:extent`: the width is [`DEFAULT_EXTENT`].
+//!
+//! 8-bit images are softened (see [`soften`]) so their 256 levels do not
+//! show as terraces. Each assumption is listed in [`DataSet::notes`]. Bad
+//! metadata: see [`meta`].
+
+mod decode;
+mod encode;
+mod error;
+pub mod fit;
+pub mod meta;
+pub mod quantise;
+pub mod soften;
+
+use std::path::Path;
+
+pub use decode::{MAX_SOURCE_SIDE, MIN_SOURCE_SIDE};
+pub use encode::encode;
+pub use error::{ErrorKind, HeightmapError};
+pub use fit::{Fit, FitMethod};
+pub use meta::GeneratorParams;
+
+use super::Heightfield;
+use crate::settings::Settings;
+use decode::RawGrid;
+use fit::Resampler;
+use meta::Metadata;
+
+/// Width given to a heightmap whose file does not say (`mountains:extent`).
+pub const DEFAULT_EXTENT: f32 = 400.0;
+/// Relief (highest - lowest) as a fraction of the width, when no scale is given.
+pub const DEFAULT_RELIEF: f32 = 0.2;
+/// Percentile of the heights put at sea level when the file does not say.
+pub const SEA_PERCENTILE: f64 = 10.0;
+
+/// A heightfield loaded from disk, with what its file said about it.
+#[derive(Debug, Clone)]
+pub struct DataSet {
+    /// The heights, fitted to a `2^n + 1` grid, sea level at 0.
+    pub field: Heightfield,
+    /// The seed that generated it, when the file says.
+    pub seed: Option<u64>,
+    /// The generator parameters that made it, when the file says.
+    pub params: Option<GeneratorParams>,
+    /// How the image was fitted to the grid.
+    pub fit: Fit,
+    /// Bits per sample in the file (8 or 16).
+    pub bit_depth: u8,
+    /// Height units per sample step, as read or chosen.
+    pub scale: f64,
+    /// Elevation of sample 0, as read or chosen.
+    pub offset: f32,
+    /// Elevation of the water line, as read or chosen (heights are relative to it).
+    pub sea_level: f32,
+    /// What was assumed or ignored while loading, one sentence each, for the log.
+    pub notes: Vec<String>,
+}
+
+/// Saves `field` as a 16-bit grayscale PNG with the seed and settings in text chunks.
+///
+/// Writes atomically: on any failure an existing file at `path` is untouched.
+/// Generator parameters are written only with a seed (see [`meta::to_pairs`]).
+pub fn save(
+    path: &Path,
+    field: &Heightfield,
+    seed: Option<u64>,
+    settings: &Settings,
+) -> Result<(), HeightmapError> {
+    let bytes = encode(field, seed, settings, path)?;
+    crate::fsutil::write_atomic(path, &bytes)
+        .map_err(|e| HeightmapError::new(path, ErrorKind::Io, format!("cannot be written: {e}")))
+}
+
+/// Loads an 8- or 16-bit grayscale PNG heightmap, ours or a terrain tool's.
+///
+/// The file is streamed: memory is the fitted grid, never the whole image.
+pub fn load(path: &Path) -> Result<DataSet, HeightmapError> {
+    let io = |e: std::io::Error| {
+        HeightmapError::new(path, ErrorKind::Io, format!("cannot be read: {e}"))
+    };
+    let file = std::fs::File::open(path).map_err(io)?;
+    let len = file.metadata().map_err(io)?.len();
+    let raw = decode::read(std::io::BufReader::new(file), len, path)?;
+    finish(raw, path)
+}
+
+/// Decodes PNG `bytes`; `path` only names the file in messages.
+pub fn decode(bytes: &[u8], path: &Path) -> Result<DataSet, HeightmapError> {
+    let raw = decode::read(std::io::Cursor::new(bytes), bytes.len() as u64, path)?;
+    finish(raw, path)
+}
+
+fn finish(raw: RawGrid, path: &Path) -> Result<DataSet, HeightmapError> {
+    let meta = meta::parse(&raw.text, path)?;
+    to_dataset(raw, meta, path)
+}
+
+/// Turns samples into heights relative to sea level, filling in missing keys.
+fn to_dataset(raw: RawGrid, mut meta: Metadata, path: &Path) -> Result<DataSet, HeightmapError> {
+    let RawGrid {
+        fit,
+        bit_depth,
+        mut samples,
+        ..
+    } = raw;
+    let mut notes = std::mem::take(&mut meta.notes);
+    if fit.method != FitMethod::Exact || fit.cropped() {
+        notes.push(format!("fitted: {fit}"));
+    }
+    if bit_depth == 8 {
+        soften::soften_steps(&mut samples, fit.size);
+        notes.push("8-bit: steps between levels softened into slopes".into());
+    }
+    let v = Vertical::choose(&samples, &meta, &mut notes);
+    let (lo, hi) = quantise::min_max(&samples);
+    if !(v.height(lo).is_finite() && v.height(hi).is_finite()) {
+        return Err(HeightmapError::metadata(
+            path,
+            meta::KEY_SCALE,
+            "with mountains:offset and mountains:sea_level, gives heights too large to hold",
+        ));
+    }
+    samples.iter_mut().for_each(|s| *s = v.height(*s));
+    quantise::snap_to_grid(&mut samples);
+    let field = Heightfield::from_heights(fit.size, v.extent, samples)
+        .ok_or_else(|| HeightmapError::new(path, ErrorKind::Damaged, "fits no grid size"))?;
+    Ok(DataSet {
+        field,
+        seed: meta.seed,
+        params: meta.params,
+        fit,
+        bit_depth,
+        scale: v.scale,
+        offset: v.offset,
+        sea_level: v.sea_level,
+        notes,
+    })
+}
+
+/// How samples become heights: the file's keys, or the documented defaults.
+struct Vertical {
+    extent: f32,
+    scale: f64,
+    offset: f32,
+    sea_level: f32,
+}
+
+impl Vertical {
+    /// Takes each key from `meta` or, noting it, from the defaults.
+    fn choose(samples: &[f32], meta: &Metadata, notes: &mut Vec<String>) -> Vertical {
+        let (lo, hi) = quantise::min_max(samples);
+        let extent = meta.extent.unwrap_or_else(|| {
+            notes.push(format!(
+                "no mountains:extent: width {DEFAULT_EXTENT} assumed"
+            ));
+            DEFAULT_EXTENT
+        });
+        let scale = meta.scale.unwrap_or_else(|| {
+            notes.push(format!(
+                "no mountains:scale: relief set to {DEFAULT_RELIEF} of the width"
+            ));
+            natural_scale(lo, hi, extent)
+        });
+        let offset = meta.offset.unwrap_or(0.0);
+        let sea_level = meta.sea_level.unwrap_or_else(|| {
+            notes.push(format!(
+                "no mountains:sea_level: water line at the {SEA_PERCENTILE}th percentile \
+                 of the heights"
+            ));
+            (f64::from(offset) + scale * sea_sample(samples, lo)) as f32
+        });
+        Vertical {
+            extent,
+            scale,
+            offset,
+            sea_level,
+        }
+    }
+
+    /// Height above sea level of sample value `s`.
+    fn height(&self, s: f32) -> f32 {
+        let elevation = f64::from(self.offset) + self.scale * f64::from(s);
+        (elevation - f64::from(self.sea_level)) as f32
+    }
+}
+
+/// Scale that makes the relief `DEFAULT_RELIEF` of `extent`.
+fn natural_scale(lo: f32, hi: f32, extent: f32) -> f64 {
+    if hi > lo {
+        f64::from(DEFAULT_RELIEF * extent) / f64::from(hi - lo)
+    } else {
+        1.0
+    }
+}
+
+/// The sample value at the sea percentile, at least half a step above `lo`.
+fn sea_sample(samples: &[f32], lo: f32) -> f64 {
+    let mut histogram = vec![0u32; 65536];
+    for &s in samples {
+        histogram[s.floor().clamp(0.0, 65535.0) as usize] += 1;
+    }
+    let wanted = (samples.len() as f64 * SEA_PERCENTILE / 100.0).ceil() as u64;
+    let mut seen = 0u64;
+    let mut level = 0usize;
+    for (value, &count) in histogram.iter().enumerate() {
+        seen += u64::from(count);
+        if seen >= wanted {
+            level = value;
+            break;
+        }
+    }
+    (level as f64).max(f64::from(lo) + 0.5)
+}
+
+/// Resamples `field` to `2^exponent + 1` points a side with the same linear
+/// filter loading uses (e.g. to show a big data set at the detail setting).
+///
+/// Panics if `exponent` is outside the range `Heightfield::flat` accepts.
+pub fn refit(field: &Heightfield, exponent: u32) -> Heightfield {
+    let side = field.size();
+    let mut out = Heightfield::flat(exponent, field.extent());
+    if out.size() == side {
+        return field.clone();
+    }
+    let plan = Fit {
+        source_width: side as u32,
+        source_height: side as u32,
+        crop_x: 0,
+        crop_y: 0,
+        crop_side: side as u32,
+        size: out.size(),
+        method: FitMethod::Resampled,
+    };
+    let mut grid = Resampler::new(plan);
+    for y in 0..side {
+        grid.push_row(y as u32, field.row(y).iter().copied());
+    }
+    out.heights_mut().copy_from_slice(&grid.finish());
+    out
+}

@@ -1,0 +1,253 @@
+//! The binary's one-shot commands, run as a user would run them.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn mountains(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_mountains"))
+        .args(args)
+        .env("HOME", scratch("home"))
+        .env("XDG_CONFIG_HOME", scratch("home").join("config"))
+        .env("XDG_DATA_HOME", scratch("home").join("data"))
+        .output()
+        .expect("run mountains")
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir()
+        .join(format!("mountains-commands-{}", std::process::id()))
+        .join(name);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn png_size(path: &Path) -> (u32, u32) {
+    let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(path).unwrap()));
+    let reader = decoder.read_info().unwrap();
+    (reader.info().width, reader.info().height)
+}
+
+#[test]
+fn render_writes_a_png_of_the_asked_size_and_prints_the_seed() {
+    let out = scratch("render").join("m.png");
+    let o = mountains(&[
+        "render",
+        "--size",
+        "160x90",
+        "--set",
+        "seed=42",
+        "--set",
+        "detail=5",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(png_size(&out), (160, 90));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("seed 42"));
+}
+
+#[test]
+fn render_prints_a_random_seed_that_reproduces_the_picture() {
+    let dir = scratch("reproduce");
+    let (a, b) = (dir.join("a.png"), dir.join("b.png"));
+    let o = mountains(&[
+        "render",
+        "--size",
+        "64x48",
+        "--set",
+        "detail=5",
+        "-o",
+        a.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let stdout = String::from_utf8_lossy(&o.stdout).into_owned();
+    let seed = stdout.split_whitespace().nth(1).expect("seed printed");
+    let set = format!("seed={seed}");
+    let o = mountains(&[
+        "render",
+        "--size",
+        "64x48",
+        "--set",
+        "detail=5",
+        "--set",
+        &set,
+        "-o",
+        b.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(std::fs::read(&a).unwrap(), std::fs::read(&b).unwrap());
+}
+
+#[test]
+fn bad_arguments_exit_2_and_name_the_flag() {
+    for (args, needle) in [
+        (vec!["--bogus"], "--bogus"),
+        (vec!["render", "-o", "x.png", "--size", "wide"], "--size"),
+        (
+            vec!["render", "-o", "x.png", "--set", "detail=99"],
+            "detail",
+        ),
+        (
+            vec!["render", "-o", "x.png", "--set", "colour=red"],
+            "did you mean `color`",
+        ),
+        (
+            vec!["render", "-o", "x.png", "--size", "100000x100000"],
+            "too large",
+        ),
+        (
+            vec!["render", "-o", "x.png", "--config", "/nonexistent/m.toml"],
+            "/nonexistent/m.toml",
+        ),
+    ] {
+        let o = mountains(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains(needle), "{args:?}: {}", stderr(&o));
+    }
+}
+
+#[test]
+fn render_refuses_a_broken_config_and_leaves_it_untouched() {
+    let dir = scratch("broken");
+    let config = dir.join("m.toml");
+    let text = "# mine\ncragginess = 999\n";
+    std::fs::write(&config, text).unwrap();
+    let out = dir.join("x.png");
+    let o = mountains(&[
+        "render",
+        "--config",
+        config.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("m.toml:2:14: key `cragginess`"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!out.exists());
+    assert_eq!(std::fs::read_to_string(&config).unwrap(), text);
+}
+
+#[test]
+fn check_config_exits_0_for_good_and_1_for_bad() {
+    let dir = scratch("check");
+    let good = dir.join("good.toml");
+    std::fs::write(&good, "color = \"sonar\"\n").unwrap();
+    let o = mountains(&["--check-config", good.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, "color = \"pink\"\n").unwrap();
+    let o = mountains(&["--check-config", bad.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        stderr(&o).contains("bad.toml:1:9: key `color`"),
+        "{}",
+        stderr(&o)
+    );
+    let shipped = concat!(env!("CARGO_MANIFEST_DIR"), "/config/default.toml");
+    assert_eq!(
+        mountains(&["--check-config", shipped]).status.code(),
+        Some(0)
+    );
+}
+
+#[test]
+fn help_lists_every_key() {
+    let o = mountains(&["--help"]);
+    assert!(o.status.success());
+    let text = String::from_utf8_lossy(&o.stdout);
+    for key in mountains::settings::keys::KEYS {
+        assert!(text.contains(key.name), "--help lacks {}", key.name);
+    }
+}
+
+#[test]
+fn heightmap_saves_a_data_set_that_loads_back_with_its_seed() {
+    let out = scratch("heightmap").join("h.png");
+    let o = mountains(&[
+        "heightmap",
+        "--set",
+        "seed=7",
+        "--set",
+        "detail=5",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("seed 7"));
+    let data = mountains::terrain::heightmap::load(&out).unwrap();
+    assert_eq!((data.seed, data.field.size()), (Some(7), 33));
+    let expected = mountains::terrain::generate(&settings_with(7, 5), 7);
+    let step = (expected.max() - expected.min()) / 65535.0;
+    for (a, b) in data.field.heights().iter().zip(expected.heights()) {
+        assert!((a - b).abs() <= step, "{a} vs {b}");
+    }
+}
+
+#[test]
+fn render_open_draws_a_saved_data_set() {
+    let dir = scratch("open");
+    let (h, a, b) = (dir.join("h.png"), dir.join("a.png"), dir.join("b.png"));
+    let arg = |p: &Path| p.to_str().unwrap().to_string();
+    let run = |args: &[&str]| {
+        let o = mountains(args);
+        assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+    };
+    run(&[
+        "heightmap",
+        "--set",
+        "detail=5",
+        "--set",
+        "seed=9",
+        "-o",
+        &arg(&h),
+    ]);
+    run(&[
+        "render",
+        "--size",
+        "80x60",
+        "--open",
+        &arg(&h),
+        "-o",
+        &arg(&a),
+    ]);
+    run(&[
+        "render",
+        "--size",
+        "80x60",
+        "--open",
+        &arg(&h),
+        "--set",
+        "color=sonar",
+        "-o",
+        &arg(&b),
+    ]);
+    assert_ne!(
+        std::fs::read(&a).unwrap(),
+        std::fs::read(&b).unwrap(),
+        "sonar looks like natural"
+    );
+    let o = mountains(&[
+        "render",
+        "-o",
+        &arg(&a),
+        "--open",
+        &arg(&dir.join("missing.png")),
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stderr(&o).contains("missing.png"), "{}", stderr(&o));
+}
+
+fn settings_with(seed: u64, detail: u32) -> mountains::settings::Settings {
+    mountains::settings::Settings {
+        seed: Some(seed),
+        detail,
+        ..Default::default()
+    }
+}
