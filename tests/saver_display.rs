@@ -276,6 +276,22 @@ fn display_window_keys_start_a_new_mountain_save_a_screenshot_and_quit() {
         "no screenshot in {found:?}\n{}",
         saver.stderr()
     );
+    x.key(39); // S
+    let is_data_set = |n: &str| n.starts_with("mountain-") && !n.contains("screenshot");
+    let start = Instant::now();
+    while !names().iter().any(|n| is_data_set(n)) && start.elapsed() < PATIENCE {
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    let saved = names().into_iter().find(|n| is_data_set(n));
+    let saved = saved.unwrap_or_else(|| panic!("no data set saved\n{}", saver.stderr()));
+    let data_set = mountains::terrain::heightmap::load(&saver.data_dir().join(&saved))
+        .unwrap_or_else(|e| panic!("the saved data set does not load: {e}"));
+    let seed = data_set.seed.expect("the data set records its seed");
+    assert!(
+        saved.contains(&format!("seed-{seed}")),
+        "{saved} names another seed"
+    );
+    assert!(x.title(window).contains(&seed.to_string()));
     x.key(24); // Q
     expect_exit(&mut saver, "Q");
 }

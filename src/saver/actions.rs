@@ -68,29 +68,29 @@ fn civil_date(days: u64) -> (u64, u64, u64) {
     (y, m, d)
 }
 
-/// A path in `dir` for `stem` + `ext` that names no existing file.
-fn free_path(dir: &Path, stem: &str, ext: &str) -> Option<PathBuf> {
+/// A path in `dir` for `stem` + `suffix` (e.g. `.png`) that names no existing file.
+fn free_path(dir: &Path, stem: &str, suffix: &str) -> Option<PathBuf> {
     (1..100)
         .map(|n| match n {
-            1 => dir.join(format!("{stem}.{ext}")),
-            n => dir.join(format!("{stem}-{n}.{ext}")),
+            1 => dir.join(format!("{stem}{suffix}")),
+            n => dir.join(format!("{stem}-{n}{suffix}")),
         })
         .find(|p| !p.exists())
 }
 
-fn output_path(ext: &str, seed: Option<u64>) -> Result<PathBuf, String> {
+fn output_path(suffix: &str, seed: Option<u64>) -> Result<PathBuf, String> {
     let dir = crate::settings::paths::data_dir().ok_or("no data directory on this system")?;
     std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     let now = std::time::SystemTime::now()
         .duration_since(std::time::UNIX_EPOCH)
         .map_or(0, |d| d.as_secs());
-    free_path(&dir, &file_stem(now, seed), ext)
+    free_path(&dir, &file_stem(now, seed), suffix)
         .ok_or_else(|| format!("{}: too many files with the same name", dir.display()))
 }
 
 /// Saves the mountain as a data set in the data directory; returns where.
 pub fn save_data_set(mountain: &Mountain, settings: &Settings) -> Result<PathBuf, String> {
-    let path = output_path("png", mountain.seed)?;
+    let path = output_path(".png", mountain.seed)?;
     crate::terrain::heightmap::save(&path, &mountain.field, mountain.seed, settings)
         .map_err(|e| e.to_string())?;
     Ok(path)
@@ -98,37 +98,9 @@ pub fn save_data_set(mountain: &Mountain, settings: &Settings) -> Result<PathBuf
 
 /// Saves the frame as a PNG screenshot in the data directory; returns where.
 pub fn save_screenshot(frame: &Frame, seed: Option<u64>) -> Result<PathBuf, String> {
-    let stem_seed = seed;
-    let path = output_path("png", stem_seed).map(|p| with_suffix(&p, "-screenshot"))?;
-    write_png(&path, frame).map_err(|e| format!("{}: {e}", path.display()))?;
+    let path = output_path("-screenshot.png", seed)?;
+    crate::snapshot::write_png(&path, frame)?;
     Ok(path)
-}
-
-fn with_suffix(path: &Path, suffix: &str) -> PathBuf {
-    let stem = path
-        .file_stem()
-        .map(|s| s.to_string_lossy())
-        .unwrap_or_default();
-    path.with_file_name(format!("{stem}{suffix}.png"))
-}
-
-/// Stand-in for `crate::snapshot::write_png` until the lead's module lands:
-/// an 8-bit RGB PNG, written atomically.
-fn write_png(path: &Path, frame: &Frame) -> std::io::Result<()> {
-    let mut bytes = Vec::new();
-    let mut encoder = png::Encoder::new(&mut bytes, frame.width(), frame.height());
-    encoder.set_color(png::ColorType::Rgb);
-    encoder.set_depth(png::BitDepth::Eight);
-    let rgb: Vec<u8> = frame
-        .pixels()
-        .iter()
-        .flat_map(|p| [(p >> 16) as u8, (p >> 8) as u8, *p as u8])
-        .collect();
-    encoder
-        .write_header()
-        .and_then(|mut w| w.write_image_data(&rgb))
-        .map_err(std::io::Error::other)?;
-    crate::fsutil::write_atomic(path, &bytes)
 }
 
 #[cfg(test)]
@@ -170,24 +142,8 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("mountains-free-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         std::fs::write(dir.join("a.png"), b"x").unwrap();
-        let p = free_path(&dir, "a", "png").unwrap();
+        let p = free_path(&dir, "a", ".png").unwrap();
         assert_eq!(p, dir.join("a-2.png"));
         std::fs::remove_dir_all(&dir).unwrap();
-    }
-
-    #[test]
-    fn screenshots_are_valid_pngs_of_the_frame() {
-        let mut frame = Frame::new(3, 2).unwrap();
-        frame.pixels_mut()[4] = 0x00ff_8001;
-        let path = std::env::temp_dir().join(format!("mountains-shot-{}.png", std::process::id()));
-        write_png(&path, &frame).unwrap();
-        let decoder =
-            png::Decoder::new(std::io::BufReader::new(std::fs::File::open(&path).unwrap()));
-        let mut reader = decoder.read_info().unwrap();
-        let mut buf = vec![0; reader.output_buffer_size().unwrap()];
-        let info = reader.next_frame(&mut buf).unwrap();
-        assert_eq!((info.width, info.height), (3, 2));
-        assert_eq!(&buf[12..15], &[0xff, 0x80, 0x01]);
-        std::fs::remove_file(&path).unwrap();
     }
 }
