@@ -1,0 +1,49 @@
+//! Window modes that cannot run say why, in words, without panicking.
+
+#[path = "common/xvfb.rs"]
+mod xvfb;
+
+use std::process::Command;
+
+use xvfb::{PATIENCE, Saver, Xvfb};
+
+#[test]
+fn without_display_the_saver_says_set_display() {
+    for mode in [
+        &["/s"][..],
+        &["--window"],
+        &["--root"],
+        &["--window-id", "0x400001"],
+    ] {
+        let home = xvfb::TempDir::new("no-display");
+        let out = Command::new(env!("CARGO_BIN_EXE_mountains"))
+            .args(mode)
+            .env_remove("DISPLAY")
+            .env_remove("WAYLAND_DISPLAY")
+            .env("HOME", &home.0)
+            .env("XDG_CONFIG_HOME", home.0.join("config"))
+            .env("XDG_DATA_HOME", home.0.join("data"))
+            .output()
+            .expect("run mountains");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            !out.status.success(),
+            "{mode:?} succeeded without a display"
+        );
+        assert!(stderr.contains("no X display"), "{mode:?}: {stderr}");
+        assert!(!stderr.contains("panicked"), "{mode:?}: {stderr}");
+    }
+}
+
+#[test]
+fn display_a_window_id_that_does_not_exist_is_named() {
+    let Some(x) = Xvfb::start(320, 240, &[]) else {
+        return;
+    };
+    let mut saver = Saver::start(&x, "no-window", &["--window-id", "0x3fffff0"], &[]);
+    let status = saver.wait(PATIENCE).expect("mountains should give up");
+    assert!(!status.success());
+    let stderr = saver.stderr();
+    assert!(stderr.contains("no X window 0x3fffff0"), "{stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+}
