@@ -295,3 +295,63 @@ fn display_window_keys_start_a_new_mountain_save_a_screenshot_and_quit() {
     x.key(24); // Q
     expect_exit(&mut saver, "Q");
 }
+
+#[test]
+fn display_root_without_xscreensaver_window_draws_on_the_root_window() {
+    let Some(x) = Xvfb::start(400, 300, &[]) else {
+        return;
+    };
+    let mut saver = Saver::start(&x, "bare-root", &["--root"], &[]);
+    let took = poll(&mut saver, "a mountain on the root window", || {
+        looks_drawn(&x.grab_screen())
+    });
+    eprintln!("bare root: drawn after {took:?}");
+    assert!(
+        x.mapped_windows().is_empty(),
+        "--root must not map a window"
+    );
+}
+
+#[test]
+fn display_preview_with_a_parent_number_embeds_in_that_window() {
+    let Some(x) = Xvfb::start(400, 300, &[]) else {
+        return;
+    };
+    let window = x.create_window(152, 112);
+    let mut saver = Saver::start(&x, "p-parent", &["/p", &window.to_string()], &[]);
+    poll(&mut saver, "a mountain in the parent", || {
+        looks_drawn(&x.grab(window, 152, 112))
+    });
+    x.destroy_window(window);
+    expect_exit(&mut saver, "destroying the parent");
+}
+
+#[test]
+fn display_window_without_auto_redraw_holds_until_n() {
+    let Some(x) = Xvfb::start(1280, 800, &[]) else {
+        return;
+    };
+    let args = ["--window", "--set", "auto_redraw=false"];
+    let mut saver = Saver::start(&x, "no-auto", &args, &[]);
+    let mut found = None;
+    poll(&mut saver, "the window", || {
+        found = x
+            .mapped_windows()
+            .into_iter()
+            .find(|(_, g)| (g.2, g.3) == (960, 600));
+        found.is_some()
+    });
+    let (window, _) = found.unwrap();
+    poll(&mut saver, "a mountain", || {
+        looks_drawn(&x.grab(window, 960, 600))
+    });
+    let first = x.title(window);
+    // Drawing takes 0.5 s and the pause 1 s: with auto redraw it would have moved on.
+    std::thread::sleep(Duration::from_millis(2500));
+    assert_eq!(x.title(window), first, "a new mountain came without N");
+    x.focus(window);
+    x.key(57); // N
+    poll(&mut saver, "a new mountain after N", || {
+        x.title(window) != first
+    });
+}
