@@ -60,7 +60,7 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
     check_x11()?;
     let event_loop = EventLoop::<UserEvent>::with_user_event()
         .build()
-        .map_err(|e| SaverError::NoDisplay(e.to_string()))?;
+        .map_err(|e| SaverError::no_display(&e.to_string()))?;
     // Without a window manager our windows never get keyboard focus, so the
     // full-screen saver listens to raw device input instead.
     event_loop.listen_device_events(match mode {
@@ -92,7 +92,7 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
 #[cfg(unix)]
 fn check_x11() -> Result<(), SaverError> {
     if std::env::var_os("DISPLAY").is_none_or(|d| d.is_empty()) {
-        return Err(SaverError::NoDisplay("DISPLAY is not set".into()));
+        return Err(SaverError::no_display(""));
     }
     use super::libcheck::{X11_LIBRARIES, can_dlopen, first_missing};
     match first_missing(X11_LIBRARIES, can_dlopen) {

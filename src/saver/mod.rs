@@ -51,7 +51,7 @@ pub enum SaverError {
 impl fmt::Display for SaverError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            SaverError::NoDisplay(why) => write!(f, "no X display: set DISPLAY ({why})"),
+            SaverError::NoDisplay(why) => write!(f, "no X display: {why}"),
             SaverError::MissingLibrary { library, package } => {
                 f.write_str(&libcheck::missing_message(library, package))
             }
@@ -65,9 +65,19 @@ impl fmt::Display for SaverError {
 impl std::error::Error for SaverError {}
 
 impl SaverError {
+    /// The display could not be opened; says whether `DISPLAY` is unset or
+    /// which display failed, keeping only the last part of `detail`.
+    pub fn no_display(detail: &str) -> Self {
+        let reason = detail.rsplit(": ").next().unwrap_or(detail);
+        match std::env::var("DISPLAY") {
+            Ok(d) if !d.is_empty() => SaverError::NoDisplay(format!("cannot open {d}: {reason}")),
+            _ => SaverError::NoDisplay("set DISPLAY (it is not set)".into()),
+        }
+    }
+
     #[cfg(unix)]
     fn from_connect(e: x11rb::errors::ConnectError) -> Self {
-        SaverError::NoDisplay(e.to_string())
+        Self::no_display(&e.to_string())
     }
 }
 
