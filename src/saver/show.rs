@@ -6,7 +6,6 @@ use std::thread::JoinHandle;
 use std::time::Instant;
 
 use super::slideshow::{Due, Pacing, Slideshow};
-use crate::render::palette::Palette;
 use crate::render::{Frame, Painter, Rect};
 use crate::settings::Settings;
 use crate::terrain::{self, Heightfield};
@@ -145,7 +144,9 @@ impl Show {
         };
         self.current = Some(next.unwrap_or_else(|| self.make_next_now()));
         let size = self.size();
-        self.start_drawing(size, now)
+        // The first strips go out with the cleared frame: no blank flash.
+        let cleared = self.start_drawing(size, now);
+        cleared.union(&self.tick(now))
     }
 
     /// Fits the show to a new window size and redraws the mountain fully at once.
@@ -206,7 +207,8 @@ impl Show {
             self.painter = None;
             return Rect::default();
         };
-        frame.clear(Palette::new(&self.settings, &mountain.field).sky());
+        // Black until the painter's first step paints its background.
+        frame.clear(0);
         let painter = Painter::new(mountain.field.clone(), &self.settings, size.0, size.1);
         self.slideshow.restart(painter.strips_total(), now);
         self.painter = Some(painter);
@@ -251,6 +253,7 @@ impl Show {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::render::palette::Palette;
     use std::time::Duration;
 
     fn small_settings() -> Settings {
