@@ -47,3 +47,21 @@ fn display_a_window_id_that_does_not_exist_is_named() {
     assert!(stderr.contains("no X window 0x3fffff0"), "{stderr}");
     assert!(!stderr.contains("panicked"), "{stderr}");
 }
+
+#[test]
+fn display_a_16_bit_screen_is_refused_with_a_message() {
+    let Some(x) = Xvfb::start(320, 240, &["depth=16"]) else {
+        return;
+    };
+    let window = x.create_window(100, 100);
+    let id = format!("0x{window:x}");
+    let mut saver = Saver::start(&x, "depth16", &["--window-id", &id], &[]);
+    let status = saver.wait(PATIENCE).expect("mountains should give up");
+    assert!(!status.success());
+    let stderr = saver.stderr();
+    assert!(
+        stderr.contains("16-bit windows are not supported"),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("panicked"), "{stderr}");
+}

@@ -24,6 +24,8 @@ pub struct BandPresenter {
     gc: u32,
     depth: u8,
     lsb_first: bool,
+    /// Opaque alpha for 32-bit (ARGB) windows, nothing for 24-bit ones.
+    alpha: u32,
     staging: Vec<u8>,
 }
 
@@ -48,6 +50,9 @@ impl BandPresenter {
             .reply()
             .map_err(|e| err(&e))?
             .depth;
+        if depth != 24 && depth != 32 {
+            return Err(err(&format!("{depth}-bit windows are not supported")));
+        }
         let gc = conn.generate_id().map_err(|e| err(&e))?;
         conn.create_gc(gc, window, &CreateGCAux::new().graphics_exposures(0))
             .map_err(|e| err(&e))?;
@@ -58,6 +63,7 @@ impl BandPresenter {
             gc,
             depth,
             lsb_first,
+            alpha: if depth == 32 { 0xff00_0000 } else { 0 },
             staging: Vec::new(),
         })
     }
@@ -97,6 +103,7 @@ impl BandPresenter {
             let start = y as usize * stride;
             let row = &frame.pixels()[start + x0 as usize..start + x1 as usize];
             for &p in row {
+                let p = p | self.alpha;
                 let bytes = if self.lsb_first {
                     p.to_le_bytes()
                 } else {

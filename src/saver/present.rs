@@ -15,7 +15,8 @@ use super::bands_x11::BandPresenter;
 
 /// Presents frames on one window, choosing the path that works on this server.
 pub struct Presenter<W: HasWindowHandle + HasDisplayHandle + Clone> {
-    surface: Surface<W, W>,
+    /// `None` when softbuffer refused the window and the bands draw instead.
+    surface: Option<Surface<W, W>>,
     #[cfg(unix)]
     xid: Option<u32>,
     #[cfg(unix)]
@@ -35,19 +36,41 @@ pub fn x11_window_id(window: &impl HasWindowHandle) -> Option<u32> {
 impl<W: HasWindowHandle + HasDisplayHandle + Clone> Presenter<W> {
     /// Prepares presenting on `window`.
     pub fn new(window: W) -> Result<Self, String> {
-        let context = Context::new(window.clone()).map_err(|e| e.to_string())?;
         #[cfg(unix)]
         let xid = x11_window_id(&window);
-        let surface = Surface::new(&context, window).map_err(|e| e.to_string())?;
+        let surface = Context::new(window.clone())
+            .and_then(|context| Surface::new(&context, window))
+            .map_err(|e| e.to_string());
         let mut presenter = Presenter {
-            surface,
+            surface: None,
             #[cfg(unix)]
             xid,
             #[cfg(unix)]
             bands: None,
         };
-        presenter.avoid_wire_transfers();
+        match surface {
+            Ok(surface) => {
+                presenter.surface = Some(surface);
+                presenter.avoid_wire_transfers();
+            }
+            Err(e) => presenter.bands_instead_of_softbuffer(e)?,
+        }
         Ok(presenter)
+    }
+
+    /// A foreign window whose visual softbuffer does not take can still get
+    /// 24- or 32-bit pixels through plain PutImage.
+    fn bands_instead_of_softbuffer(&mut self, problem: String) -> Result<(), String> {
+        #[cfg(unix)]
+        if let Some(xid) = self.xid {
+            let bands = BandPresenter::connect(xid).map_err(|e| format!("{problem}; {e}"))?;
+            crate::log::warn(&format!(
+                "softbuffer cannot draw in window 0x{xid:x} ({problem}); sending plain images instead"
+            ));
+            self.bands = Some(bands);
+            return Ok(());
+        }
+        Err(problem)
     }
 
     /// Shows the pixels of `damage` (the whole frame if the window lost its
@@ -58,7 +81,10 @@ impl<W: HasWindowHandle + HasDisplayHandle + Clone> Presenter<W> {
         if let Some(bands) = self.bands.as_mut() {
             return bands.present(frame, damage);
         }
-        match present_soft(&mut self.surface, frame, damage) {
+        let Some(surface) = self.surface.as_mut() else {
+            return Err("nothing to present with".into());
+        };
+        match present_soft(surface, frame, damage) {
             Ok(()) => Ok(()),
             Err(e) => self.fall_back(frame, e.to_string()),
         }
@@ -80,6 +106,7 @@ impl<W: HasWindowHandle + HasDisplayHandle + Clone> Presenter<W> {
                     "the X server has no MIT-SHM: sending only the changed bands of each frame",
                 );
                 self.bands = Some(bands);
+                self.surface = None;
             }
         }
     }
@@ -96,6 +123,7 @@ impl<W: HasWindowHandle + HasDisplayHandle + Clone> Presenter<W> {
                 frame.height()
             ));
             self.bands = Some(bands);
+            self.surface = None;
             return Ok(());
         }
         Err(problem)

@@ -36,10 +36,11 @@ pub struct Xvfb {
 
 impl Xvfb {
     /// Starts `Xvfb -noreset -displayfd 1 -screen 0 WxHx24` plus `extra`
-    /// arguments. Without Xvfb: `None` (the test skips), unless
+    /// arguments (`depth=16` among them changes the screen depth). Without Xvfb: `None` (the test skips), unless
     /// `MOUNTAINS_REQUIRE_DISPLAY=1`, where that is a failure.
     pub fn start(width: u16, height: u16, extra: &[&str]) -> Option<Xvfb> {
-        let screen = format!("{width}x{height}x24");
+        let depth = extra_depth(extra).unwrap_or(24);
+        let screen = format!("{width}x{height}x{depth}");
         let spawned = Command::new("Xvfb")
             .args([
                 "-noreset",
@@ -51,7 +52,7 @@ impl Xvfb {
                 "0",
                 &screen,
             ])
-            .args(extra)
+            .args(extra.iter().filter(|a| !a.starts_with("depth=")))
             .stdout(Stdio::piped())
             .stderr(Stdio::null())
             .spawn();
@@ -231,6 +232,13 @@ impl Xvfb {
             .expect("XTEST request");
         self.conn.sync().expect("XTEST sync");
     }
+}
+
+/// The screen depth asked for with a `depth=N` pseudo-argument.
+fn extra_depth(extra: &[&str]) -> Option<u8> {
+    extra
+        .iter()
+        .find_map(|a| a.strip_prefix("depth=")?.parse().ok())
 }
 
 impl Drop for Xvfb {
