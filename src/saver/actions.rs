@@ -3,6 +3,7 @@
 
 use std::path::{Path, PathBuf};
 
+use super::input::Action;
 use super::show::Mountain;
 use crate::render::Frame;
 use crate::settings::{ColorMode, Settings};
@@ -41,6 +42,45 @@ pub fn craggier(c: u32) -> u32 {
 /// Cragginess one step smoother: halved.
 pub fn smoother(c: u32) -> u32 {
     (c / 2).clamp(*CRAGGINESS.start(), *CRAGGINESS.end())
+}
+
+/// Whether a settings change affects the mountain on screen or only the next one.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Applies {
+    /// Colours: redraw the current mountain at once.
+    Now,
+    /// Terrain: the next mountain is generated with it.
+    Next,
+}
+
+/// The settings a key action leads to, and when they apply; `None` for
+/// actions that do not change settings.
+pub fn changed_settings(action: Action, settings: &Settings) -> Option<(Settings, Applies)> {
+    let mut s = settings.clone();
+    let applies = match action {
+        Action::NextColor => {
+            s.color = next_color(s.color);
+            Applies::Now
+        }
+        Action::ToggleRelativeDepth => {
+            s.relative_depth = !s.relative_depth;
+            Applies::Now
+        }
+        Action::ToggleLowDetail => {
+            s.low_detail = !s.low_detail;
+            Applies::Next
+        }
+        Action::MoreCraggy => {
+            s.cragginess = craggier(s.cragginess);
+            Applies::Next
+        }
+        Action::LessCraggy => {
+            s.cragginess = smoother(s.cragginess);
+            Applies::Next
+        }
+        _ => return None,
+    };
+    Some((s, applies))
 }
 
 /// A readable file stem: `mountain-2026-11-22-023512-seed-42`.
@@ -117,6 +157,26 @@ mod tests {
             seen.push(c);
         }
         assert_eq!(next_color(c), ColorMode::Natural);
+    }
+
+    #[test]
+    fn colour_and_depth_apply_now_terrain_changes_next() {
+        let s = Settings::default();
+        let (c, when) = changed_settings(Action::NextColor, &s).unwrap();
+        assert_eq!((c.color, when), (next_color(s.color), Applies::Now));
+        let (d, when) = changed_settings(Action::ToggleRelativeDepth, &s).unwrap();
+        assert_eq!((d.relative_depth, when), (!s.relative_depth, Applies::Now));
+        let (l, when) = changed_settings(Action::ToggleLowDetail, &s).unwrap();
+        assert_eq!((l.low_detail, when), (!s.low_detail, Applies::Next));
+        let (m, _) = changed_settings(Action::MoreCraggy, &s).unwrap();
+        assert_eq!(m.cragginess, craggier(s.cragginess));
+        let (n, when) = changed_settings(Action::LessCraggy, &s).unwrap();
+        assert_eq!(
+            (n.cragginess, when),
+            (smoother(s.cragginess), Applies::Next)
+        );
+        assert!(changed_settings(Action::Quit, &s).is_none());
+        assert!(changed_settings(Action::Screenshot, &s).is_none());
     }
 
     #[test]

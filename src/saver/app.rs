@@ -325,51 +325,38 @@ impl App {
     fn act(&mut self, event_loop: &ActiveEventLoop, i: usize, action: Action) {
         let now = Instant::now();
         let show = &mut self.screens[i].show;
-        let mut settings = show.settings().clone();
-        let damage = match action {
-            Action::Quit => {
-                event_loop.exit();
-                return;
-            }
-            Action::NewMountain => show.advance(now),
-            Action::TogglePause => {
-                show.toggle_pause(now);
-                Rect::default()
-            }
-            Action::SaveDataSet => {
-                report(
-                    show.current().map(|m| actions::save_data_set(m, &settings)),
-                    "data set",
-                );
-                Rect::default()
-            }
-            Action::Screenshot => {
-                let seed = show.current().and_then(|m| m.seed);
-                report(
-                    show.frame().map(|f| actions::save_screenshot(f, seed)),
-                    "screenshot",
-                );
-                Rect::default()
-            }
-            Action::NextColor | Action::ToggleRelativeDepth => {
-                if action == Action::NextColor {
-                    settings.color = actions::next_color(settings.color);
-                } else {
-                    settings.relative_depth = !settings.relative_depth;
-                }
-                show.change_settings(settings, true, now)
-            }
-            Action::ToggleLowDetail | Action::MoreCraggy | Action::LessCraggy => {
+        let damage =
+            if let Some((settings, applies)) = actions::changed_settings(action, show.settings()) {
+                show.change_settings(settings, applies == actions::Applies::Now, now)
+            } else {
                 match action {
-                    Action::ToggleLowDetail => settings.low_detail = !settings.low_detail,
-                    Action::MoreCraggy => {
-                        settings.cragginess = actions::craggier(settings.cragginess)
+                    Action::Quit => {
+                        event_loop.exit();
+                        return;
                     }
-                    _ => settings.cragginess = actions::smoother(settings.cragginess),
+                    Action::NewMountain => show.advance(now),
+                    Action::TogglePause => {
+                        show.toggle_pause(now);
+                        Rect::default()
+                    }
+                    Action::SaveDataSet => {
+                        let saved = show
+                            .current()
+                            .map(|m| actions::save_data_set(m, show.settings()));
+                        report(saved, "data set");
+                        Rect::default()
+                    }
+                    Action::Screenshot => {
+                        let seed = show.current().and_then(|m| m.seed);
+                        report(
+                            show.frame().map(|f| actions::save_screenshot(f, seed)),
+                            "screenshot",
+                        );
+                        Rect::default()
+                    }
+                    _ => Rect::default(),
                 }
-                show.change_settings(settings, false, now)
-            }
-        };
+            };
         self.update_title(i);
         self.present(event_loop, i, damage);
     }
