@@ -18,6 +18,7 @@ pub mod present;
 pub mod show;
 pub mod signals;
 pub mod slideshow;
+pub mod source;
 
 use std::fmt;
 use std::sync::Arc;

@@ -6,6 +6,7 @@ use std::thread::JoinHandle;
 use std::time::Instant;
 
 use super::slideshow::{Due, Pacing, Slideshow};
+use super::source;
 use crate::render::{Frame, Painter, Rect};
 use crate::settings::Settings;
 use crate::terrain::{self, Heightfield};
@@ -48,6 +49,8 @@ pub struct Show {
     frame: Option<Frame>,
     painter: Option<Painter>,
     slideshow: Slideshow,
+    /// Number of the slide on screen, counted from 0: picks its source.
+    slide: u64,
 }
 
 impl Show {
@@ -71,6 +74,7 @@ impl Show {
             frame: None,
             painter: None,
             slideshow: Slideshow::new(pacing, 0, now),
+            slide: 0,
         };
         show.start_drawing(size, now);
         show
@@ -87,6 +91,7 @@ impl Show {
             frame: Frame::new(size.0, size.1),
             painter: None,
             slideshow: Slideshow::new(pacing, 0, now),
+            slide: 0,
         }
     }
 
@@ -143,6 +148,7 @@ impl Show {
             Next::None => None,
         };
         self.current = Some(next.unwrap_or_else(|| self.make_next_now()));
+        self.slide += 1;
         let size = self.size();
         // The first strips go out with the cleared frame: no blank flash.
         let cleared = self.start_drawing(size, now);
@@ -233,9 +239,10 @@ impl Show {
             return;
         }
         let settings = self.settings.clone();
+        let slide = self.slide + 1;
         let spawned = std::thread::Builder::new()
             .name("generate".into())
-            .spawn(move || Mountain::generate(&settings));
+            .spawn(move || source::next_mountain(&settings, slide));
         // Without a thread the mountain is generated when it is needed.
         if let Ok(handle) = spawned {
             self.next = Next::Pending(handle);
@@ -245,7 +252,7 @@ impl Show {
     fn make_next_now(&self) -> Mountain {
         match &self.opened {
             Some(m) => m.clone(),
-            None => Mountain::generate(&self.settings),
+            None => source::next_mountain(&self.settings, self.slide + 1),
         }
     }
 }

@@ -1,0 +1,141 @@
+//! Where each slide's mountain comes from: a fresh generation, or now and
+//! then a heightmap from the user's `heightmaps_dir`.
+
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use super::show::Mountain;
+use crate::settings::Settings;
+use crate::terrain::heightmap;
+
+/// Most files looked at in a heightmap folder: a huge folder must not stall the show.
+const MAX_FILES: usize = 10_000;
+
+/// The `.png` files in `dir`, sorted; empty when it cannot be read.
+pub fn heightmap_files(dir: &Path) -> Vec<PathBuf> {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return Vec::new();
+    };
+    let mut files: Vec<PathBuf> = entries
+        .take(MAX_FILES)
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x.eq_ignore_ascii_case("png")))
+        .filter(|p| p.is_file())
+        .collect();
+    files.sort();
+    files
+}
+
+/// True when slide number `slide` shows a heightmap from the folder:
+/// every other slide, so generated and saved mountains alternate.
+pub fn slide_uses_folder(slide: u64) -> bool {
+    slide % 2 == 1
+}
+
+/// The mountain for slide number `slide`: from the heightmap folder on
+/// alternate slides when one is set and holds a readable PNG, else generated.
+pub fn next_mountain(settings: &Settings, slide: u64) -> Mountain {
+    let folder = settings.heightmaps_dir.as_deref().filter(|d| !d.is_empty());
+    if let Some(dir) = folder.filter(|_| slide_uses_folder(slide)) {
+        if let Some(mountain) = random_heightmap(Path::new(dir)) {
+            return mountain;
+        }
+    }
+    Mountain::generate(settings)
+}
+
+/// Warns about each problem once: the slide show meets the same bad file
+/// or empty folder again and again, and the log must not grow without end.
+fn warn_once(message: String) {
+    static SEEN: std::sync::Mutex<Vec<String>> = std::sync::Mutex::new(Vec::new());
+    let mut seen = SEEN.lock().unwrap_or_else(|e| e.into_inner());
+    if seen.contains(&message) || seen.len() >= MAX_FILES {
+        return;
+    }
+    crate::log::warn(&message);
+    seen.push(message);
+}
+
+fn random_heightmap(dir: &Path) -> Option<Mountain> {
+    let files = heightmap_files(dir);
+    if files.is_empty() {
+        warn_once(format!(
+            "{}: no PNG heightmaps to show; generating instead",
+            dir.display()
+        ));
+        return None;
+    }
+    let pick = &files[rand::random_range(0..files.len())];
+    match heightmap::load(pick) {
+        Ok(data) => Some(Mountain {
+            field: Arc::new(data.field),
+            seed: data.seed,
+        }),
+        Err(e) => {
+            warn_once(format!("{e}; generating instead"));
+            None
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::terrain::Heightfield;
+
+    fn folder(name: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("mountains-src-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    #[test]
+    fn lists_only_png_files_sorted() {
+        let dir = folder("list");
+        for name in ["b.png", "a.PNG", "notes.txt", "c.png.tmp"] {
+            std::fs::write(dir.join(name), b"x").unwrap();
+        }
+        std::fs::create_dir(dir.join("d.png")).unwrap();
+        let names: Vec<_> = heightmap_files(&dir)
+            .iter()
+            .map(|p| p.file_name().unwrap().to_string_lossy().into_owned())
+            .collect();
+        assert_eq!(names, ["a.PNG", "b.png"]);
+        assert!(heightmap_files(&dir.join("missing")).is_empty());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn alternate_slides_come_from_the_folder() {
+        let dir = folder("alternate");
+        let mut field = Heightfield::flat(4, 100.0);
+        field.set(5, 5, 33.0);
+        let settings = Settings {
+            detail: 5,
+            heightmaps_dir: Some(dir.to_string_lossy().into_owned()),
+            ..Settings::default()
+        };
+        heightmap::save(&dir.join("saved.png"), &field, Some(99), &settings).unwrap();
+        let loaded = next_mountain(&settings, 1);
+        assert_eq!(loaded.seed, Some(99));
+        assert_eq!(loaded.field.size(), 17);
+        let generated = next_mountain(&settings, 2);
+        assert_eq!(generated.field.size(), 33);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_broken_file_or_empty_folder_falls_back_to_generating() {
+        let dir = folder("broken");
+        let settings = Settings {
+            detail: 5,
+            heightmaps_dir: Some(dir.to_string_lossy().into_owned()),
+            ..Settings::default()
+        };
+        assert_eq!(next_mountain(&settings, 1).field.size(), 33);
+        std::fs::write(dir.join("junk.png"), b"not a png").unwrap();
+        assert_eq!(next_mountain(&settings, 1).field.size(), 33);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
