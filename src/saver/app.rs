@@ -334,7 +334,7 @@ impl App {
                         event_loop.exit();
                         return;
                     }
-                    Action::NewMountain => show.advance(now),
+                    Action::NewMountain => show.new_mountain(now),
                     Action::TogglePause => {
                         show.toggle_pause(now);
                         Rect::default()

@@ -155,6 +155,15 @@ impl Show {
         cleared.union(&self.tick(now))
     }
 
+    /// The N key: a freshly generated mountain, also after `--open`
+    /// (the opened data set is let go, as New does in Mountain Terrain).
+    pub fn new_mountain(&mut self, now: Instant) -> Rect {
+        if self.opened.take().is_some() {
+            self.next = Next::None;
+        }
+        self.advance(now)
+    }
+
     /// Fits the show to a new window size and redraws the mountain fully at once.
     pub fn resize(&mut self, size: (u32, u32), now: Instant) -> Rect {
         if self.current.is_none() {
@@ -347,6 +356,19 @@ mod tests {
         let shown = show.current().unwrap();
         assert_eq!(shown.seed, None);
         assert_eq!(shown.field.get(3, 3), 42.0);
+    }
+
+    #[test]
+    fn new_mountain_lets_go_of_an_opened_data_set() {
+        let t0 = Instant::now();
+        let opened = Mountain {
+            field: Arc::new(Heightfield::flat(4, 100.0)),
+            seed: None,
+        };
+        let mut show = Show::new(small_settings(), Some(opened), pacing(), (32, 32), t0);
+        show.new_mountain(t0);
+        let shown = show.current().unwrap();
+        assert_eq!((shown.seed, shown.field.exponent()), (Some(7), 5));
     }
 
     #[test]
