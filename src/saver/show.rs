@@ -213,7 +213,8 @@ impl Show {
         let Some(mountain) = self.current.as_ref() else {
             return Rect::default();
         };
-        if self.frame.as_ref().map(|f| (f.width(), f.height())) != Some(size) {
+        let reused = self.frame.as_ref().map(|f| (f.width(), f.height())) == Some(size);
+        if !reused {
             // Free the old pixels before allocating the new ones: peak memory.
             self.frame = None;
             self.frame = Frame::new(size.0, size.1);
@@ -222,8 +223,11 @@ impl Show {
             self.painter = None;
             return Rect::default();
         };
-        // Black until the painter's first step paints its background.
-        frame.clear(0);
+        // Black until the painter's first step paints its background. A new
+        // frame is black already (and untouched pages cost nothing yet).
+        if reused {
+            frame.clear(0);
+        }
         let painter = Painter::new(mountain.field.clone(), &self.settings, size.0, size.1);
         self.slideshow.restart(painter.strips_total(), now);
         self.painter = Some(painter);
