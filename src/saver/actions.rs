@@ -83,6 +83,35 @@ pub fn changed_settings(action: Action, settings: &Settings) -> Option<(Settings
     Some((s, applies))
 }
 
+/// The window mode's title: the seed (to reproduce a mountain) and the
+/// settings the keys change.
+pub fn window_title(settings: &Settings, seed: Option<u64>, paused: bool) -> String {
+    let mut title = match seed {
+        Some(seed) => format!("mountains: seed {seed}"),
+        None => "mountains".to_string(),
+    };
+    title.push_str(&format!(
+        ", {:?}, cragginess {}",
+        settings.color, settings.cragginess
+    ));
+    if settings.low_detail {
+        title.push_str(", low detail");
+    }
+    if paused {
+        title.push_str(", paused");
+    }
+    title
+}
+
+/// Tells the person where a file went, or why it did not.
+pub fn report(result: Option<Result<PathBuf, String>>, what: &str) {
+    match result {
+        Some(Ok(path)) => eprintln!("mountains: saved the {what} as {}", path.display()),
+        Some(Err(e)) => crate::log::warn(&format!("could not save the {what}: {e}")),
+        None => crate::log::warn(&format!("no {what} to save yet")),
+    }
+}
+
 /// A readable file stem: `mountain-2026-11-22-023512-seed-42`.
 pub fn file_stem(unix_seconds: u64, seed: Option<u64>) -> String {
     let (y, m, d) = civil_date(unix_seconds / 86_400);
@@ -177,6 +206,21 @@ mod tests {
         );
         assert!(changed_settings(Action::Quit, &s).is_none());
         assert!(changed_settings(Action::Screenshot, &s).is_none());
+    }
+
+    #[test]
+    fn the_title_tells_seed_colour_cragginess_and_state() {
+        let mut s = Settings::default();
+        assert_eq!(
+            window_title(&s, Some(42), false),
+            "mountains: seed 42, Natural, cragginess 64"
+        );
+        s.low_detail = true;
+        s.color = ColorMode::Sonar;
+        assert_eq!(
+            window_title(&s, None, true),
+            "mountains, Sonar, cragginess 64, low detail, paused"
+        );
     }
 
     #[test]

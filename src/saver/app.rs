@@ -57,7 +57,7 @@ struct Screen {
 /// Runs `mode` with winit until it ends.
 pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Result<(), SaverError> {
     #[cfg(unix)]
-    check_x11()?;
+    super::libcheck::check_x11()?;
     let event_loop = EventLoop::<UserEvent>::with_user_event()
         .build()
         .map_err(|e| SaverError::no_display(&e.to_string()))?;
@@ -86,22 +86,6 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
         .run_app(&mut app)
         .map_err(|e| SaverError::Other(e.to_string()))?;
     app.error.map_or(Ok(()), Err)
-}
-
-/// `$DISPLAY` and the libraries winit loads, checked before winit panics on them.
-#[cfg(unix)]
-fn check_x11() -> Result<(), SaverError> {
-    if std::env::var_os("DISPLAY").is_none_or(|d| d.is_empty()) {
-        return Err(SaverError::no_display(""));
-    }
-    use super::libcheck::{X11_LIBRARIES, can_dlopen, first_missing};
-    match first_missing(X11_LIBRARIES, can_dlopen) {
-        Some((library, package)) => Err(SaverError::MissingLibrary {
-            library: library.into(),
-            package: package.into(),
-        }),
-        None => Ok(()),
-    }
 }
 
 struct App {
@@ -343,12 +327,12 @@ impl App {
                         let saved = show
                             .current()
                             .map(|m| actions::save_data_set(m, show.settings()));
-                        report(saved, "data set");
+                        actions::report(saved, "data set");
                         Rect::default()
                     }
                     Action::Screenshot => {
                         let seed = show.current().and_then(|m| m.seed);
-                        report(
+                        actions::report(
                             show.frame().map(|f| actions::save_screenshot(f, seed)),
                             "screenshot",
                         );
@@ -363,24 +347,12 @@ impl App {
 
     /// The window title tells the seed (to reproduce a mountain) and the state.
     fn update_title(&self, i: usize) {
-        if self.mode != AppMode::Window {
-            return;
+        if self.mode == AppMode::Window {
+            let show = &self.screens[i].show;
+            let seed = show.current().and_then(|m| m.seed);
+            let title = actions::window_title(show.settings(), seed, show.is_paused());
+            self.screens[i].window.set_title(&title);
         }
-        let screen = &self.screens[i];
-        let s = screen.show.settings();
-        let seed = screen.show.current().and_then(|m| m.seed);
-        let mut title = match seed {
-            Some(seed) => format!("mountains: seed {seed}"),
-            None => "mountains".to_string(),
-        };
-        title.push_str(&format!(", {:?}, cragginess {}", s.color, s.cragginess));
-        if s.low_detail {
-            title.push_str(", low detail");
-        }
-        if screen.show.is_paused() {
-            title.push_str(", paused");
-        }
-        screen.window.set_title(&title);
     }
 
     /// The preview child follows its parent's size and dies with it.
@@ -420,13 +392,4 @@ fn covering(base: WindowAttributes, monitor: &MonitorHandle) -> WindowAttributes
             .with_inner_size(monitor.size())
     };
     attrs
-}
-
-/// Tells the person where a file went, or why it did not.
-fn report(result: Option<Result<std::path::PathBuf, String>>, what: &str) {
-    match result {
-        Some(Ok(path)) => eprintln!("mountains: saved the {what} as {}", path.display()),
-        Some(Err(e)) => crate::log::warn(&format!("could not save the {what}: {e}")),
-        None => crate::log::warn(&format!("no {what} to save yet")),
-    }
 }

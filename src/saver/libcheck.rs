@@ -1,6 +1,9 @@
 //! A friendly check for the X libraries winit loads at run time: winit
 //! panics inside its loader when one is missing, so look first and name it.
 
+#[cfg(unix)]
+use super::SaverError;
+
 /// Each library winit and softbuffer open under X11, and the Debian/Ubuntu package holding it.
 pub const X11_LIBRARIES: &[(&str, &str)] = &[
     ("libX11.so.6", "libx11-6"),
@@ -31,6 +34,21 @@ pub fn can_dlopen(name: &str) -> bool {
 /// The message for a missing library, naming the package that provides it.
 pub fn missing_message(library: &str, package: &str) -> String {
     format!("missing X library {library}: apt-get install {package}")
+}
+
+/// `$DISPLAY` and the libraries winit loads, checked before winit panics on them.
+#[cfg(unix)]
+pub fn check_x11() -> Result<(), SaverError> {
+    if std::env::var_os("DISPLAY").is_none_or(|d| d.is_empty()) {
+        return Err(SaverError::no_display(""));
+    }
+    match first_missing(X11_LIBRARIES, can_dlopen) {
+        Some((library, package)) => Err(SaverError::MissingLibrary {
+            library: library.into(),
+            package: package.into(),
+        }),
+        None => Ok(()),
+    }
 }
 
 #[cfg(test)]
