@@ -1,0 +1,235 @@
+//! Triangle fill with an exact top-left rule, and one-pixel lines.
+//!
+//! Vertices are in 24.8 fixed point (`SUBPIXEL` steps per pixel); a pixel is
+//! covered when its centre is inside the triangle, or exactly on a top or left
+//! edge. Neighbouring triangles that share an edge therefore cover every pixel
+//! along it exactly once, whatever the sub-pixel positions.
+
+/// Fixed-point steps per pixel (8 bits of sub-pixel precision).
+pub const SUBPIXEL: i64 = 256;
+const HALF: i64 = SUBPIXEL / 2;
+
+/// A screen position in 24.8 fixed point.
+pub type Fixed2 = [i64; 2];
+
+/// The pixels a rasteriser may touch: columns `x0..x1`, rows `y0..y1`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Clip {
+    /// First column.
+    pub x0: i64,
+    /// Column past the last.
+    pub x1: i64,
+    /// First row.
+    pub y0: i64,
+    /// Row past the last.
+    pub y1: i64,
+}
+
+impl Clip {
+    /// A `width` x `height` frame, whole.
+    pub fn frame(width: u32, height: u32) -> Self {
+        Clip {
+            x0: 0,
+            x1: width as i64,
+            y0: 0,
+            y1: height as i64,
+        }
+    }
+
+    /// Largest fixed-point coordinate magnitude kept: vertices are clamped to
+    /// one frame size beyond each side, which keeps every edge-function product
+    /// within i64 (both factors are bounded by the frame's width and height).
+    fn clamp(&self, p: Fixed2) -> Fixed2 {
+        let w = (self.x1 - self.x0).max(1) * SUBPIXEL;
+        let h = (self.y1 - self.y0).max(1) * SUBPIXEL;
+        let xlo = self.x0 * SUBPIXEL - w;
+        let ylo = self.y0 * SUBPIXEL - h;
+        [
+            p[0].clamp(xlo, self.x1 * SUBPIXEL + w),
+            p[1].clamp(ylo, self.y1 * SUBPIXEL + h),
+        ]
+    }
+}
+
+/// Converts a position in pixels to fixed point (non-finite values become 0).
+#[inline]
+pub fn to_fixed(x: f32, y: f32) -> Fixed2 {
+    // `as` saturates and maps NaN to 0, so wild input cannot overflow here.
+    [
+        (x * SUBPIXEL as f32).round() as i64,
+        (y * SUBPIXEL as f32).round() as i64,
+    ]
+}
+
+/// Floor of `n / d` for `d > 0`.
+#[inline]
+fn floor_div(n: i64, d: i64) -> i64 {
+    n.div_euclid(d)
+}
+
+/// Ceiling of `n / d` for `d > 0`.
+#[inline]
+fn ceil_div(n: i64, d: i64) -> i64 {
+    -(-n).div_euclid(d)
+}
+
+/// First and last pixel index whose centre lies in `lo..=hi` (fixed point).
+#[inline]
+fn centres_within(lo: i64, hi: i64) -> (i64, i64) {
+    (
+        ceil_div(lo - HALF, SUBPIXEL),
+        floor_div(hi - HALF, SUBPIXEL),
+    )
+}
+
+/// One edge `a -> b` of a counter-clockwise (in y-down screen space) triangle.
+#[derive(Clone, Copy)]
+struct Edge {
+    ax: i64,
+    ay: i64,
+    dx: i64,
+    dy: i64,
+    /// 0 on a top or left edge (points on it are inside), -1 otherwise.
+    bias: i64,
+}
+
+impl Edge {
+    fn new(a: Fixed2, b: Fixed2) -> Self {
+        let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+        let top_left = dy > 0 || (dy == 0 && dx < 0);
+        Edge {
+            ax: a[0],
+            ay: a[1],
+            dx,
+            dy,
+            bias: if top_left { 0 } else { -1 },
+        }
+    }
+
+    /// The edge function plus bias at a fixed-point point: inside when >= 0.
+    #[inline]
+    fn eval(&self, px: i64, py: i64) -> i64 {
+        (px - self.ax) * self.dy - (py - self.ay) * self.dx + self.bias
+    }
+
+    /// Narrows the pixel columns `lo..=hi` of row centre `py` to this edge's inside.
+    #[inline]
+    fn narrow(&self, py: i64, lo: &mut i64, hi: &mut i64) {
+        // Inside: (px - ax) * dy >= (py - ay) * dx - bias.
+        let k = (py - self.ay) * self.dx - self.bias;
+        if self.dy > 0 {
+            let px = self.ax + ceil_div(k, self.dy);
+            *lo = (*lo).max(ceil_div(px - HALF, SUBPIXEL));
+        } else if self.dy < 0 {
+            let px = self.ax + floor_div(-k, -self.dy);
+            *hi = (*hi).min(floor_div(px - HALF, SUBPIXEL));
+        } else if k > 0 {
+            *hi = *lo - 1;
+        }
+    }
+}
+
+/// Bounding boxes at most this many columns wide are scanned pixel by pixel;
+/// wider ones get their span ends by division (identical results).
+const SCAN_WIDTH: i64 = 4;
+
+/// Calls `span(y, x0, x1)` for every row of pixels the triangle covers
+/// (columns `x0..x1`, exclusive end), top to bottom, within `clip`.
+///
+/// Degenerate (zero-area) triangles cover nothing.
+#[inline]
+pub fn fill_triangle(v: [Fixed2; 3], clip: &Clip, mut span: impl FnMut(u32, u32, u32)) {
+    let (a, mut b, mut c) = (clip.clamp(v[0]), clip.clamp(v[1]), clip.clamp(v[2]));
+    let (xmin, xmax) = (a[0].min(b[0]).min(c[0]), a[0].max(b[0]).max(c[0]));
+    let (ymin, ymax) = (a[1].min(b[1]).min(c[1]), a[1].max(b[1]).max(c[1]));
+    let (mut ix0, mut ix1) = centres_within(xmin, xmax);
+    let (mut iy0, mut iy1) = centres_within(ymin, ymax);
+    ix0 = ix0.max(clip.x0);
+    ix1 = ix1.min(clip.x1 - 1);
+    iy0 = iy0.max(clip.y0);
+    iy1 = iy1.min(clip.y1 - 1);
+    if ix0 > ix1 || iy0 > iy1 {
+        return;
+    }
+    let area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    if area == 0 {
+        return;
+    }
+    // Edge functions below are positive inside when `area` is negative.
+    if area > 0 {
+        std::mem::swap(&mut b, &mut c);
+    }
+    let edges = [Edge::new(a, b), Edge::new(b, c), Edge::new(c, a)];
+    for iy in iy0..=iy1 {
+        let py = iy * SUBPIXEL + HALF;
+        let (lo, hi) = if ix1 - ix0 < SCAN_WIDTH {
+            scan_row(&edges, py, ix0, ix1)
+        } else {
+            let (mut lo, mut hi) = (ix0, ix1);
+            for e in &edges {
+                e.narrow(py, &mut lo, &mut hi);
+            }
+            (lo, hi)
+        };
+        if lo <= hi {
+            span(iy as u32, lo as u32, hi as u32 + 1);
+        }
+    }
+}
+
+/// The inside columns of one row, found by testing each pixel centre.
+#[inline]
+fn scan_row(edges: &[Edge; 3], py: i64, ix0: i64, ix1: i64) -> (i64, i64) {
+    let inside = |ix: i64| {
+        let px = ix * SUBPIXEL + HALF;
+        edges.iter().all(|e| e.eval(px, py) >= 0)
+    };
+    let mut lo = ix0;
+    while lo <= ix1 && !inside(lo) {
+        lo += 1;
+    }
+    let mut hi = ix1;
+    while hi >= lo && !inside(hi) {
+        hi -= 1;
+    }
+    (lo, hi)
+}
+
+/// Calls `plot(x, y)` for each pixel of the one-pixel-wide (8-connected)
+/// line between the pixels holding `a` and `b`, both ends included, within `clip`.
+///
+/// The endpoints are put in a fixed order first, so a line drawn from either
+/// end covers the same pixels: a shared edge drawn twice never thickens.
+pub fn draw_line(a: Fixed2, b: Fixed2, clip: &Clip, mut plot: impl FnMut(u32, u32)) {
+    let (a, b) = (clip.clamp(a), clip.clamp(b));
+    let (a, b) = if (a[1], a[0]) <= (b[1], b[0]) {
+        (a, b)
+    } else {
+        (b, a)
+    };
+    let (mut x, mut y) = (floor_div(a[0], SUBPIXEL), floor_div(a[1], SUBPIXEL));
+    let (x1, y1) = (floor_div(b[0], SUBPIXEL), floor_div(b[1], SUBPIXEL));
+    if x.max(x1) < clip.x0 || x.min(x1) >= clip.x1 || y1 < clip.y0 || y >= clip.y1 {
+        return;
+    }
+    let (dx, dy) = ((x1 - x).abs(), -(y1 - y).abs());
+    let sx = if x < x1 { 1 } else { -1 };
+    let mut err = dx + dy;
+    loop {
+        if x >= clip.x0 && x < clip.x1 && y >= clip.y0 && y < clip.y1 {
+            plot(x as u32, y as u32);
+        }
+        if x == x1 && y == y1 {
+            break;
+        }
+        let e2 = 2 * err;
+        if e2 >= dy {
+            err += dy;
+            x += sx;
+        }
+        if e2 <= dx {
+            err += dx;
+            y += 1;
+        }
+    }
+}
