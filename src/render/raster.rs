@@ -35,20 +35,18 @@ impl Clip {
             y1: height as i64,
         }
     }
+}
 
-    /// Largest fixed-point coordinate magnitude kept: vertices are clamped to
-    /// one frame size beyond each side, which keeps every edge-function product
-    /// within i64 (both factors are bounded by the frame's width and height).
-    fn clamp(&self, p: Fixed2) -> Fixed2 {
-        let w = (self.x1 - self.x0).max(1) * SUBPIXEL;
-        let h = (self.y1 - self.y0).max(1) * SUBPIXEL;
-        let xlo = self.x0 * SUBPIXEL - w;
-        let ylo = self.y0 * SUBPIXEL - h;
-        [
-            p[0].clamp(xlo, self.x1 * SUBPIXEL + w),
-            p[1].clamp(ylo, self.y1 * SUBPIXEL + h),
-        ]
-    }
+/// Largest fixed-point coordinate kept (2^21 pixels): edge-function products
+/// of clamped coordinates stay far inside i64. Only absurd frames (over two
+/// million pixels wide) ever have vertices this far out.
+const LIMIT: i64 = 1 << 29;
+
+/// Clamps a vertex to +-`LIMIT`; independent of any clip, so a triangle is
+/// the same shape in every band.
+#[inline]
+fn clamp(p: Fixed2) -> Fixed2 {
+    [p[0].clamp(-LIMIT, LIMIT), p[1].clamp(-LIMIT, LIMIT)]
 }
 
 /// Converts a position in pixels to fixed point (non-finite values become 0).
@@ -139,7 +137,7 @@ const SCAN_WIDTH: i64 = 4;
 /// Degenerate (zero-area) triangles cover nothing.
 #[inline]
 pub fn fill_triangle(v: [Fixed2; 3], clip: &Clip, mut span: impl FnMut(u32, u32, u32)) {
-    let (a, mut b, mut c) = (clip.clamp(v[0]), clip.clamp(v[1]), clip.clamp(v[2]));
+    let (a, mut b, mut c) = (clamp(v[0]), clamp(v[1]), clamp(v[2]));
     let (xmin, xmax) = (a[0].min(b[0]).min(c[0]), a[0].max(b[0]).max(c[0]));
     let (ymin, ymax) = (a[1].min(b[1]).min(c[1]), a[1].max(b[1]).max(c[1]));
     let (mut ix0, mut ix1) = centres_within(xmin, xmax);
@@ -201,7 +199,7 @@ fn scan_row(edges: &[Edge; 3], py: i64, ix0: i64, ix1: i64) -> (i64, i64) {
 /// The endpoints are put in a fixed order first, so a line drawn from either
 /// end covers the same pixels: a shared edge drawn twice never thickens.
 pub fn draw_line(a: Fixed2, b: Fixed2, clip: &Clip, mut plot: impl FnMut(u32, u32)) {
-    let (a, b) = (clip.clamp(a), clip.clamp(b));
+    let (a, b) = (clamp(a), clamp(b));
     let (a, b) = if (a[1], a[0]) <= (b[1], b[0]) {
         (a, b)
     } else {
