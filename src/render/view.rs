@@ -9,9 +9,10 @@ use glam::{Vec2, Vec3};
 
 use crate::settings::ViewKind;
 
-/// Tilt of the classic view: the grid is tipped back 70 degrees about the x
-/// axis (seed 000's `xTh = -1.396`).
-const TILT_DEGREES: f32 = 70.0;
+/// Sine and cosine of the classic view's tilt: the grid is tipped back 70
+/// degrees about the x axis (seed 000's `xTh = -1.396`). Written out rather
+/// than computed so no platform's `sin` can move a pixel.
+const TILT_SIN_COS: (f32, f32) = (0.939_692_6, 0.342_020_15);
 /// Seed 000's shear: each row forward moves half a step to the left, which
 /// turns the square into a parallelogram seen from the front right.
 const SHEAR: f32 = 0.5;
@@ -88,7 +89,7 @@ impl View {
             offset: Vec2::ZERO,
             camera,
             size,
-            tilt: TILT_DEGREES.to_radians().sin_cos(),
+            tilt: TILT_SIN_COS,
         };
         view.fit(steps, zmax, width as f32, height as f32);
         view
