@@ -9,7 +9,7 @@
 use glam::Vec2;
 
 use super::canvas::Canvas;
-use super::raster::{Fixed2, draw_line, fill_triangle};
+use super::raster::{Fixed2, SUBPIXEL, draw_line, fill_triangle};
 use super::scene::{Scene, Vert};
 
 /// Sonar's outline colour.
@@ -56,10 +56,11 @@ impl Scene {
             let g = |gx: usize, gy: usize| Vec2::new(gx as f32, gy as f32);
             let (tl, tr) = ((&top[x], g(x, s)), (&top[x + 1], g(x + 1, s)));
             let (bl, br) = ((&bottom[x], g(x, s + 1)), (&bottom[x + 1], g(x + 1, s + 1)));
+            let own = self.owned_edges(s, x);
             if sonar {
                 self.black_cell(canvas, [tl.0, tr.0, bl.0, br.0], rightward);
+                self.touch_up(canvas, s, x, top, bottom, &own);
             }
-            let own = self.owned_edges(s, x);
             let mut edge = |a: (&Vert, Vec2), b: (&Vert, Vec2)| self.edge(canvas, a, b, sonar);
             if own.top {
                 edge(tl, tr);
@@ -84,7 +85,45 @@ impl Scene {
         }
     }
 
-    /// Sonar: both triangles of a cell in black, with the cell's diagonal.
+    /// Sonar: a one-pixel line leans up to half a pixel off its edge, so near
+    /// a shared corner the fill of cell `x` can cover a pixel of an earlier
+    /// neighbour's top (or, in the last strip, bottom) edge; put those back.
+    /// Only pixels next to the shared corner are redrawn, the same pixels the
+    /// line had, so nothing thickens.
+    fn touch_up(
+        &self,
+        canvas: &mut Canvas,
+        s: usize,
+        x: usize,
+        top: &[Vert],
+        bottom: &[Vert],
+        own: &CellEdges,
+    ) {
+        let last = self.cells() - 1;
+        let mut near = |a: Fixed2, b: Fixed2| {
+            let (vx, vy) = (b[0].div_euclid(SUBPIXEL), b[1].div_euclid(SUBPIXEL));
+            let clip = *canvas.clip();
+            draw_line(a, b, &clip, |px, py| {
+                if (px as i64 - vx).abs() <= 1 && (py as i64 - vy).abs() <= 1 {
+                    canvas.plot(px, py, SONAR_LINE);
+                }
+            });
+        };
+        if own.left && x > 0 {
+            near(top[x - 1].p, top[x].p);
+            if s == last {
+                near(bottom[x - 1].p, bottom[x].p);
+            }
+        }
+        if own.right && x < last {
+            near(top[x + 2].p, top[x + 1].p);
+            if s == last {
+                near(bottom[x + 2].p, bottom[x + 1].p);
+            }
+        }
+    }
+
+    /// Sonar: both triangles of a cell in black.
     fn black_cell(&self, canvas: &mut Canvas, [tl, tr, bl, br]: [&Vert; 4], rightward: bool) {
         let clip = *canvas.clip();
         let mut fill = |v: [Fixed2; 3]| {
