@@ -6,7 +6,7 @@
 //! along it exactly once, whatever the sub-pixel positions.
 
 /// Fixed-point steps per pixel (8 bits of sub-pixel precision).
-pub const SUBPIXEL: i64 = 256;
+pub const SUBPIXEL: i64 = 1 << 8;
 const HALF: i64 = SUBPIXEL / 2;
 
 /// A screen position in 24.8 fixed point.
@@ -52,11 +52,18 @@ fn clamp(p: Fixed2) -> Fixed2 {
 /// Converts a position in pixels to fixed point (non-finite values become 0).
 #[inline]
 pub fn to_fixed(x: f32, y: f32) -> Fixed2 {
-    // `as` saturates and maps NaN to 0, so wild input cannot overflow here.
-    [
-        (x * SUBPIXEL as f32).round() as i64,
-        (y * SUBPIXEL as f32).round() as i64,
-    ]
+    [round(x * SUBPIXEL as f32), round(y * SUBPIXEL as f32)]
+}
+
+/// Nearest integer, halves up; without a libm call (`f32::round` is one on
+/// baseline x86-64). `as` saturates and maps NaN to 0, so wild input cannot
+/// overflow here.
+#[inline]
+fn round(v: f32) -> i64 {
+    let t = (v + 0.5).clamp(-1e15, 1e15);
+    let i = t as i64;
+    // `as` truncates towards zero: step down for negative non-integers.
+    if (i as f32) > t { i - 1 } else { i }
 }
 
 /// Floor of `n / d` for `d > 0`.
@@ -71,13 +78,22 @@ fn ceil_div(n: i64, d: i64) -> i64 {
     -(-n).div_euclid(d)
 }
 
+/// Floor of a fixed-point value in pixels (a shift: `SUBPIXEL` is 2^8).
+#[inline]
+fn floor_px(n: i64) -> i64 {
+    n >> 8
+}
+
+/// Ceiling of a fixed-point value in pixels.
+#[inline]
+fn ceil_px(n: i64) -> i64 {
+    -((-n) >> 8)
+}
+
 /// First and last pixel index whose centre lies in `lo..=hi` (fixed point).
 #[inline]
 fn centres_within(lo: i64, hi: i64) -> (i64, i64) {
-    (
-        ceil_div(lo - HALF, SUBPIXEL),
-        floor_div(hi - HALF, SUBPIXEL),
-    )
+    (ceil_px(lo - HALF), floor_px(hi - HALF))
 }
 
 /// One edge `a -> b` of a counter-clockwise (in y-down screen space) triangle.
@@ -117,10 +133,10 @@ impl Edge {
         let k = (py - self.ay) * self.dx - self.bias;
         if self.dy > 0 {
             let px = self.ax + ceil_div(k, self.dy);
-            *lo = (*lo).max(ceil_div(px - HALF, SUBPIXEL));
+            *lo = (*lo).max(ceil_px(px - HALF));
         } else if self.dy < 0 {
             let px = self.ax + floor_div(-k, -self.dy);
-            *hi = (*hi).min(floor_div(px - HALF, SUBPIXEL));
+            *hi = (*hi).min(floor_px(px - HALF));
         } else if k > 0 {
             *hi = *lo - 1;
         }
@@ -205,8 +221,8 @@ pub fn draw_line(a: Fixed2, b: Fixed2, clip: &Clip, mut plot: impl FnMut(u32, u3
     } else {
         (b, a)
     };
-    let (mut x, mut y) = (floor_div(a[0], SUBPIXEL), floor_div(a[1], SUBPIXEL));
-    let (x1, y1) = (floor_div(b[0], SUBPIXEL), floor_div(b[1], SUBPIXEL));
+    let (mut x, mut y) = (floor_px(a[0]), floor_px(a[1]));
+    let (x1, y1) = (floor_px(b[0]), floor_px(b[1]));
     if x.max(x1) < clip.x0 || x.min(x1) >= clip.x1 || y1 < clip.y0 || y >= clip.y1 {
         return;
     }

@@ -5,7 +5,7 @@ use glam::{Vec2, Vec3};
 
 use super::canvas::Canvas;
 use super::fallback::dither;
-use super::raster::{Fixed2, fill_triangle};
+use super::raster::{Fixed2, SUBPIXEL, fill_triangle};
 use super::scene::{Scene, Style, Vert};
 
 /// White and black, the only two colours of Mono.
@@ -76,6 +76,13 @@ impl Scene {
         bottom: &[Vert],
         rightward: bool,
     ) {
+        let h = [top[x].h, top[x + 1].h, bottom[x].h, bottom[x + 1].h];
+        // A cell crossing the water line puts its shore points on the sea
+        // plane, possibly outside its corners' box: never skip those.
+        let crosses = h.iter().any(|&h| h < 0.0) && h.iter().any(|&h| h > 0.0);
+        if !crosses && !covers_a_centre([top[x].p, top[x + 1].p, bottom[x].p, bottom[x + 1].p]) {
+            return;
+        }
         let tl = Corner::at(x, s, &top[x]);
         let tr = Corner::at(x + 1, s, &top[x + 1]);
         let bl = Corner::at(x, s + 1, &bottom[x]);
@@ -96,8 +103,7 @@ impl Scene {
         if c.iter().all(|k| k.h <= 0.0) {
             self.fill_water(canvas, c);
         } else if !wet.iter().any(|&w| w) {
-            let normal = self.face_normal(&c);
-            self.fill_land(canvas, c, normal, lit_of(&c));
+            self.fill_land(canvas, c, || self.face_normal(&c), lit_of(&c));
         } else {
             self.fill_split(canvas, c, wet);
         }
@@ -121,10 +127,10 @@ impl Scene {
         let lit = lit_of(&c);
         if wet[odd] {
             self.fill_water(canvas, [a, m0, m1]);
-            self.fill_land(canvas, [m0, s0, s1], normal, lit);
-            self.fill_land(canvas, [m0, s1, m1], normal, lit);
+            self.fill_land(canvas, [m0, s0, s1], || normal, lit);
+            self.fill_land(canvas, [m0, s1, m1], || normal, lit);
         } else {
-            self.fill_land(canvas, [a, m0, m1], normal, lit);
+            self.fill_land(canvas, [a, m0, m1], || normal, lit);
             self.fill_water(canvas, [m0, s0, s1]);
             self.fill_water(canvas, [m0, s1, m1]);
         }
@@ -153,16 +159,24 @@ impl Scene {
         n.try_normalize().unwrap_or(Vec3::Z)
     }
 
-    fn fill_land(&self, canvas: &mut Canvas, c: [Corner; 3], normal: Vec3, lit: f32) {
+    /// A land triangle; `normal` is only called if a pixel is covered.
+    fn fill_land(
+        &self,
+        canvas: &mut Canvas,
+        c: [Corner; 3],
+        normal: impl FnOnce() -> Vec3,
+        lit: f32,
+    ) {
         let mean = (c[0].h + c[1].h + c[2].h) / 3.0;
-        let colour = self.palette.land(mean.max(0.0), normal, lit);
+        let colour = || self.palette.land(mean.max(0.0), normal(), lit);
         self.paint(canvas, [c[0].p, c[1].p, c[2].p], colour);
     }
 
     fn fill_water(&self, canvas: &mut Canvas, c: [Corner; 3]) {
         let depth = -(c[0].h.min(0.0) + c[1].h.min(0.0) + c[2].h.min(0.0)) / 3.0;
-        let colour = self.palette.water(depth);
-        self.paint(canvas, [c[0].p, c[1].p, c[2].p], colour);
+        self.paint(canvas, [c[0].p, c[1].p, c[2].p], || {
+            self.palette.water(depth)
+        });
     }
 
     /// The cut face below the edge from `a` to `b`, down to sea level, facing
@@ -181,18 +195,34 @@ impl Scene {
         };
         let colour = self.palette.skirt((a.h + b.h) / 4.0, normal);
         let (fa, fb) = (foot(a), foot(b));
-        self.paint(canvas, [a.p, b.p, fb.p], colour);
-        self.paint(canvas, [a.p, fb.p, fa.p], colour);
+        self.paint(canvas, [a.p, b.p, fb.p], || colour);
+        self.paint(canvas, [a.p, fb.p, fa.p], || colour);
     }
 
     /// Fills one screen triangle with a colour (or its dither pattern in Mono).
-    fn paint(&self, canvas: &mut Canvas, v: [Fixed2; 3], colour: u32) {
-        let paint = match self.style {
-            Style::Mono => Paint::Dither(dither::level(gray(colour))),
-            _ => Paint::Solid(colour),
-        };
+    ///
+    /// Most triangles of a fine grid cover no pixel centre at all, so the
+    /// colour is only worked out once a first span turns up.
+    fn paint(&self, canvas: &mut Canvas, v: [Fixed2; 3], colour: impl FnOnce() -> u32) {
+        let mut colour = Some(colour);
+        let mut paint = Paint::Solid(0);
         let clip = *canvas.clip();
-        fill_triangle(v, &clip, |y, x0, x1| match paint {
+        fill_triangle(v, &clip, |y, x0, x1| {
+            if let Some(colour) = colour.take() {
+                let c = colour();
+                paint = match self.style {
+                    Style::Mono => Paint::Dither(dither::level(gray(c))),
+                    _ => Paint::Solid(c),
+                };
+            }
+            Self::put(canvas, paint, y, x0, x1);
+        });
+    }
+
+    /// Sets one span of pixels.
+    #[inline]
+    fn put(canvas: &mut Canvas, paint: Paint, y: u32, x0: u32, x1: u32) {
+        match paint {
             Paint::Solid(c) => canvas.span_mut(y, x0, x1).fill(c),
             Paint::Dither(level) => {
                 for (px, x) in canvas.span_mut(y, x0, x1).iter_mut().zip(x0..) {
@@ -203,8 +233,25 @@ impl Scene {
                     };
                 }
             }
-        });
+        }
     }
+}
+
+/// Whether the bounding box of a cell's corners holds any pixel centre:
+/// a cheap test that skips most cells of a fine grid (both its triangles
+/// lie inside that box).
+#[inline]
+fn covers_a_centre(p: [Fixed2; 4]) -> bool {
+    let lo = |i: usize| p[0][i].min(p[1][i]).min(p[2][i]).min(p[3][i]);
+    let hi = |i: usize| p[0][i].max(p[1][i]).max(p[2][i]).max(p[3][i]);
+    has_centre(lo(0), hi(0)) && has_centre(lo(1), hi(1))
+}
+
+/// Whether a pixel centre (n + 1/2) lies in `lo..=hi` (fixed point).
+#[inline]
+fn has_centre(lo: i64, hi: i64) -> bool {
+    let half = SUBPIXEL / 2;
+    ((hi - half) >> 8) >= -((half - lo) >> 8)
 }
 
 /// Light on a face: the mean of its corners'.
