@@ -145,7 +145,7 @@ impl Edge {
 
 /// Bounding boxes at most this many columns wide are scanned pixel by pixel;
 /// wider ones get their span ends by division (identical results).
-const SCAN_WIDTH: i64 = 4;
+const SCAN_WIDTH: i64 = 24;
 
 /// Calls `span(y, x0, x1)` for every row of pixels the triangle covers
 /// (columns `x0..x1`, exclusive end), top to bottom, within `clip`.
@@ -174,7 +174,9 @@ pub fn fill_triangle(v: [Fixed2; 3], clip: &Clip, mut span: impl FnMut(u32, u32,
         std::mem::swap(&mut b, &mut c);
     }
     let edges = [Edge::new(a, b), Edge::new(b, c), Edge::new(c, a)];
-    for iy in iy0..=iy1 {
+    // A plain loop: `RangeInclusive` costs a visible share on tiny triangles.
+    let mut iy = iy0;
+    while iy <= iy1 {
         let py = iy * SUBPIXEL + HALF;
         let (lo, hi) = if ix1 - ix0 < SCAN_WIDTH {
             scan_row(&edges, py, ix0, ix1)
@@ -188,25 +190,30 @@ pub fn fill_triangle(v: [Fixed2; 3], clip: &Clip, mut span: impl FnMut(u32, u32,
         if lo <= hi {
             span(iy as u32, lo as u32, hi as u32 + 1);
         }
+        iy += 1;
     }
 }
 
 /// The inside columns of one row, found by testing each pixel centre.
 #[inline]
 fn scan_row(edges: &[Edge; 3], py: i64, ix0: i64, ix1: i64) -> (i64, i64) {
-    let inside = |ix: i64| {
-        let px = ix * SUBPIXEL + HALF;
-        edges.iter().all(|e| e.eval(px, py) >= 0)
-    };
-    let mut lo = ix0;
-    while lo <= ix1 && !inside(lo) {
-        lo += 1;
+    // Edge functions step by `dy * SUBPIXEL` per pixel: additions only.
+    let px = ix0 * SUBPIXEL + HALF;
+    let [a, b, c] = edges;
+    let (mut e0, mut e1, mut e2) = (a.eval(px, py), b.eval(px, py), c.eval(px, py));
+    let (s0, s1, s2) = (a.dy * SUBPIXEL, b.dy * SUBPIXEL, c.dy * SUBPIXEL);
+    let mut ix = ix0;
+    while ix <= ix1 && (e0 | e1 | e2) < 0 {
+        (e0, e1, e2) = (e0 + s0, e1 + s1, e2 + s2);
+        ix += 1;
     }
-    let mut hi = ix1;
-    while hi >= lo && !inside(hi) {
-        hi -= 1;
+    let lo = ix;
+    // The inside of a row is one run: it ends at the first pixel out.
+    while ix <= ix1 && (e0 | e1 | e2) >= 0 {
+        (e0, e1, e2) = (e0 + s0, e1 + s1, e2 + s2);
+        ix += 1;
     }
-    (lo, hi)
+    (lo, ix - 1)
 }
 
 /// Calls `plot(x, y)` for each pixel of the one-pixel-wide (8-connected)
