@@ -189,3 +189,36 @@ fn lines_are_thin_connected_and_the_same_both_ways() {
         );
     }
 }
+
+#[test]
+fn line_ends_are_the_lines_own_pixels_next_to_the_end() {
+    use mountains::render::raster::draw_line_end;
+    let clip = Clip::frame(64, 64);
+    let mut rng = Pcg32::seed_from_u64(11);
+    for _ in 0..500 {
+        let mut p = || -> Fixed2 {
+            [
+                rng.random_range(0..64 * SUBPIXEL),
+                rng.random_range(0..64 * SUBPIXEL),
+            ]
+        };
+        let (a, b) = (p(), p());
+        let mut whole = Vec::new();
+        draw_line(a, b, &clip, |x, y| whole.push((x, y)));
+        let mut end = Vec::new();
+        draw_line_end(a, b, &clip, |x, y| end.push((x, y)));
+        let (bx, by) = ((b[0] / SUBPIXEL) as u32, (b[1] / SUBPIXEL) as u32);
+        let near: Vec<_> = whole
+            .iter()
+            .copied()
+            .filter(|&(x, y)| x.abs_diff(bx) <= 1 && y.abs_diff(by) <= 1)
+            .collect();
+        end.sort_unstable();
+        let mut near = near;
+        near.sort_unstable();
+        assert_eq!(
+            end, near,
+            "line {a:?}-{b:?}: end pixels differ from the line's"
+        );
+    }
+}

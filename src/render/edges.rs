@@ -9,7 +9,7 @@
 use glam::Vec2;
 
 use super::canvas::Canvas;
-use super::raster::{Fixed2, SUBPIXEL, draw_line, fill_triangle};
+use super::raster::{Fixed2, draw_line, draw_line_end, fill_triangle};
 use super::scene::{Scene, Vert};
 
 /// Sonar's outline colour.
@@ -101,13 +101,8 @@ impl Scene {
     ) {
         let last = self.cells() - 1;
         let mut near = |a: Fixed2, b: Fixed2| {
-            let (vx, vy) = (b[0].div_euclid(SUBPIXEL), b[1].div_euclid(SUBPIXEL));
             let clip = *canvas.clip();
-            draw_line(a, b, &clip, |px, py| {
-                if (px as i64 - vx).abs() <= 1 && (py as i64 - vy).abs() <= 1 {
-                    canvas.plot(px, py, SONAR_LINE);
-                }
-            });
+            draw_line_end(a, b, &clip, |px, py| canvas.plot(px, py, SONAR_LINE));
         };
         if own.left && x > 0 {
             near(top[x - 1].p, top[x].p);

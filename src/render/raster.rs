@@ -221,36 +221,113 @@ fn scan_row(edges: &[Edge; 3], py: i64, ix0: i64, ix1: i64) -> (i64, i64) {
 ///
 /// The endpoints are put in a fixed order first, so a line drawn from either
 /// end covers the same pixels: a shared edge drawn twice never thickens.
-pub fn draw_line(a: Fixed2, b: Fixed2, clip: &Clip, mut plot: impl FnMut(u32, u32)) {
-    let (a, b) = (clamp(a), clamp(b));
-    let (a, b) = if (a[1], a[0]) <= (b[1], b[0]) {
-        (a, b)
+pub fn draw_line(a: Fixed2, b: Fixed2, clip: &Clip, plot: impl FnMut(u32, u32)) {
+    let line = Line::new(a, b);
+    line.walk(0, line.steps, clip, plot);
+}
+
+/// Calls `plot` for the pixels of `draw_line(a, b)` next to `b`'s end (its
+/// last two steps), without walking the rest of the line.
+pub fn draw_line_end(a: Fixed2, b: Fixed2, clip: &Clip, plot: impl FnMut(u32, u32)) {
+    let line = Line::new(a, b);
+    if line.reversed {
+        line.walk(0, line.steps.min(1), clip, plot);
     } else {
-        (b, a)
-    };
-    let (mut x, mut y) = (floor_px(a[0]), floor_px(a[1]));
-    let (x1, y1) = (floor_px(b[0]), floor_px(b[1]));
-    if x.max(x1) < clip.x0 || x.min(x1) >= clip.x1 || y1 < clip.y0 || y >= clip.y1 {
-        return;
+        line.walk(line.steps.saturating_sub(1), line.steps, clip, plot);
     }
-    let (dx, dy) = ((x1 - x).abs(), -(y1 - y).abs());
-    let sx = if x < x1 { 1 } else { -1 };
-    let mut err = dx + dy;
-    loop {
-        if x >= clip.x0 && x < clip.x1 && y >= clip.y0 && y < clip.y1 {
-            plot(x as u32, y as u32);
+}
+
+/// A line between two pixels: step `k` of `steps` is at
+/// `start + round(k * delta / steps)` on each axis (halves rounded up).
+struct Line {
+    x0: i64,
+    y0: i64,
+    dx: i64,
+    dy: i64,
+    steps: i64,
+    /// Whether the ends were swapped into the fixed order.
+    reversed: bool,
+}
+
+impl Line {
+    fn new(a: Fixed2, b: Fixed2) -> Self {
+        let (a, b) = (clamp(a), clamp(b));
+        let reversed = (a[1], a[0]) > (b[1], b[0]);
+        let (a, b) = if reversed { (b, a) } else { (a, b) };
+        let (x0, y0) = (floor_px(a[0]), floor_px(a[1]));
+        let (dx, dy) = (floor_px(b[0]) - x0, floor_px(b[1]) - y0);
+        Line {
+            x0,
+            y0,
+            dx,
+            dy,
+            steps: dx.abs().max(dy.abs()),
+            reversed,
         }
-        if x == x1 && y == y1 {
-            break;
+    }
+
+    /// Plots steps `from..=to`.
+    fn walk(&self, from: i64, to: i64, clip: &Clip, mut plot: impl FnMut(u32, u32)) {
+        let x1 = self.x0 + self.dx;
+        let y1 = self.y0 + self.dy;
+        let outside = self.x0.max(x1) < clip.x0
+            || self.x0.min(x1) >= clip.x1
+            || self.y0.max(y1) < clip.y0
+            || self.y0.min(y1) >= clip.y1;
+        if outside || from > to {
+            return;
         }
-        let e2 = 2 * err;
-        if e2 >= dy {
-            err += dy;
-            x += sx;
+        let mut x = Axis::new(self.x0, self.dx, self.steps, from);
+        let mut y = Axis::new(self.y0, self.dy, self.steps, from);
+        for _ in from..=to {
+            let (px, py) = (x.pos(), y.pos());
+            if px >= clip.x0 && px < clip.x1 && py >= clip.y0 && py < clip.y1 {
+                plot(px as u32, py as u32);
+            }
+            x.step();
+            y.step();
         }
-        if e2 <= dx {
-            err += dx;
-            y += 1;
+    }
+}
+
+/// One coordinate of a line, stepped exactly with an integer remainder:
+/// `start + sign * floor((2 k |delta| + steps) / (2 steps))`.
+struct Axis {
+    start: i64,
+    sign: i64,
+    twice_delta: i64,
+    twice_steps: i64,
+    quotient: i64,
+    remainder: i64,
+}
+
+impl Axis {
+    fn new(start: i64, delta: i64, steps: i64, k: i64) -> Self {
+        let twice_steps = (2 * steps).max(1);
+        let twice_delta = 2 * delta.abs();
+        let num = k * twice_delta + steps;
+        Axis {
+            start,
+            sign: delta.signum(),
+            twice_delta,
+            twice_steps,
+            quotient: num / twice_steps,
+            remainder: num % twice_steps,
+        }
+    }
+
+    #[inline]
+    fn pos(&self) -> i64 {
+        self.start + self.sign * self.quotient
+    }
+
+    #[inline]
+    fn step(&mut self) {
+        self.remainder += self.twice_delta;
+        // |delta| <= steps, so at most one carry per step.
+        if self.remainder >= self.twice_steps {
+            self.remainder -= self.twice_steps;
+            self.quotient += 1;
         }
     }
 }
