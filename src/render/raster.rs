@@ -66,18 +66,6 @@ fn round(v: f32) -> i64 {
     if (i as f32) > t { i - 1 } else { i }
 }
 
-/// Floor of `n / d` for `d > 0`.
-#[inline]
-fn floor_div(n: i64, d: i64) -> i64 {
-    n.div_euclid(d)
-}
-
-/// Ceiling of `n / d` for `d > 0`.
-#[inline]
-fn ceil_div(n: i64, d: i64) -> i64 {
-    -(-n).div_euclid(d)
-}
-
 /// Floor of a fixed-point value in pixels (a shift: `SUBPIXEL` is 2^8).
 #[inline]
 fn floor_px(n: i64) -> i64 {
@@ -125,27 +113,11 @@ impl Edge {
     fn eval(&self, px: i64, py: i64) -> i64 {
         (px - self.ax) * self.dy - (py - self.ay) * self.dx + self.bias
     }
-
-    /// Narrows the pixel columns `lo..=hi` of row centre `py` to this edge's inside.
-    #[inline]
-    fn narrow(&self, py: i64, lo: &mut i64, hi: &mut i64) {
-        // Inside: (px - ax) * dy >= (py - ay) * dx - bias.
-        let k = (py - self.ay) * self.dx - self.bias;
-        if self.dy > 0 {
-            let px = self.ax + ceil_div(k, self.dy);
-            *lo = (*lo).max(ceil_px(px - HALF));
-        } else if self.dy < 0 {
-            let px = self.ax + floor_div(-k, -self.dy);
-            *hi = (*hi).min(floor_px(px - HALF));
-        } else if k > 0 {
-            *hi = *lo - 1;
-        }
-    }
 }
 
 /// Bounding boxes at most this many columns wide are scanned pixel by pixel;
 /// wider ones get their span ends by division (identical results).
-const SCAN_WIDTH: i64 = 24;
+const SCAN_WIDTH: i64 = 4;
 
 /// Calls `span(y, x0, x1)` for every row of pixels the triangle covers
 /// (columns `x0..x1`, exclusive end), top to bottom, within `clip`.
@@ -174,23 +146,96 @@ pub fn fill_triangle(v: [Fixed2; 3], clip: &Clip, mut span: impl FnMut(u32, u32,
         std::mem::swap(&mut b, &mut c);
     }
     let edges = [Edge::new(a, b), Edge::new(b, c), Edge::new(c, a)];
-    // A plain loop: `RangeInclusive` costs a visible share on tiny triangles.
-    let mut iy = iy0;
-    while iy <= iy1 {
-        let py = iy * SUBPIXEL + HALF;
-        let (lo, hi) = if ix1 - ix0 < SCAN_WIDTH {
-            scan_row(&edges, py, ix0, ix1)
-        } else {
-            let (mut lo, mut hi) = (ix0, ix1);
-            for e in &edges {
-                e.narrow(py, &mut lo, &mut hi);
+    if ix1 - ix0 < SCAN_WIDTH {
+        // Narrow boxes (most triangles of a fine grid): test the few centres.
+        for iy in iy0..iy1 + 1 {
+            let (lo, hi) = scan_row(&edges, iy * SUBPIXEL + HALF, ix0, ix1);
+            if lo <= hi {
+                span(iy as u32, lo as u32, hi as u32 + 1);
             }
-            (lo, hi)
-        };
+        }
+        return;
+    }
+    // Wider ones: each edge's bound on the row's columns, stepped row by row.
+    let py0 = iy0 * SUBPIXEL + HALF;
+    let mut walks = edges.map(|e| Walk::new(&e, py0));
+    for iy in iy0..iy1 + 1 {
+        let (mut lo, mut hi) = (ix0, ix1);
+        for w in &mut walks {
+            w.bound(&mut lo, &mut hi);
+            w.step();
+        }
         if lo <= hi {
             span(iy as u32, lo as u32, hi as u32 + 1);
         }
-        iy += 1;
+    }
+}
+
+/// One edge's limit on the covered columns, row after row, in exact integer
+/// steps: `floor(m / d)` kept as quotient and remainder while `m` moves by a
+/// fixed amount per row.
+#[derive(Clone, Copy)]
+struct Walk {
+    /// +1: the edge bounds the row from the left (first column `-q`);
+    /// -1: from the right (last column `q`); 0: horizontal (`q >= 0` inside).
+    side: i8,
+    q: i64,
+    r: i64,
+    d: i64,
+    step_q: i64,
+    step_r: i64,
+}
+
+impl Walk {
+    /// Inside a row at centre `py`: `(ix * S + HALF - ax) * dy >= k`, with
+    /// `k = (py - ay) * dx - bias`, which moves by `S * dx` per row.
+    fn new(e: &Edge, py: i64) -> Self {
+        let k = (py - e.ay) * e.dx - e.bias;
+        let per_row = -SUBPIXEL * e.dx;
+        if e.dy == 0 {
+            // Inside iff -k >= 0.
+            return Walk {
+                side: 0,
+                q: -k,
+                r: 0,
+                d: 1,
+                step_q: per_row,
+                step_r: 0,
+            };
+        }
+        let d = SUBPIXEL * e.dy.abs();
+        // Left: ix >= ceil((k + (ax - HALF) * dy) / d) = -floor(m / d).
+        // Right: ix <= floor((-k + (ax - HALF) * -dy) / d) = floor(m / d).
+        // Either way m = -k - (ax - HALF) * dy, moving by -S * dx per row.
+        let m = -k - (e.ax - HALF) * e.dy;
+        Walk {
+            side: if e.dy > 0 { 1 } else { -1 },
+            q: m.div_euclid(d),
+            r: m.rem_euclid(d),
+            d,
+            step_q: per_row.div_euclid(d),
+            step_r: per_row.rem_euclid(d),
+        }
+    }
+
+    #[inline]
+    fn bound(&self, lo: &mut i64, hi: &mut i64) {
+        match self.side {
+            1 => *lo = (*lo).max(-self.q),
+            -1 => *hi = (*hi).min(self.q),
+            _ if self.q < 0 => *hi = *lo - 1,
+            _ => {}
+        }
+    }
+
+    #[inline]
+    fn step(&mut self) {
+        self.q += self.step_q;
+        self.r += self.step_r;
+        if self.r >= self.d {
+            self.r -= self.d;
+            self.q += 1;
+        }
     }
 }
 
