@@ -350,15 +350,24 @@ impl Axis {
     fn new(start: i64, delta: i64, steps: i64, k: i64) -> Self {
         let twice_steps = (2 * steps).max(1);
         let twice_delta = 2 * delta.abs();
-        let num = k * twice_delta + steps;
-        Axis {
+        let mut axis = Axis {
             start,
             sign: delta.signum(),
             twice_delta,
             twice_steps,
-            quotient: num / twice_steps,
-            remainder: num % twice_steps,
+            // Step 0: floor(steps / (2 steps)) = 0, remainder `steps`.
+            quotient: 0,
+            remainder: steps,
+        };
+        // Division is slow and most lines are a few pixels long: step there.
+        if k <= 8 {
+            (0..k).for_each(|_| axis.step());
+        } else {
+            let num = k * twice_delta + steps;
+            axis.quotient = num / twice_steps;
+            axis.remainder = num % twice_steps;
         }
+        axis
     }
 
     #[inline]
