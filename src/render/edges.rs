@@ -9,7 +9,7 @@
 use glam::Vec2;
 
 use super::canvas::Canvas;
-use super::raster::{Fixed2, draw_line, draw_line_end, fill_triangle};
+use super::raster::{Clip, Fixed2, draw_line, draw_line_end, fill_triangle};
 use super::scene::{Scene, Vert};
 
 /// Sonar's outline colour.
@@ -56,6 +56,9 @@ impl Scene {
             let g = |gx: usize, gy: usize| Vec2::new(gx as f32, gy as f32);
             let (tl, tr) = ((&top[x], g(x, s)), (&top[x + 1], g(x + 1, s)));
             let (bl, br) = ((&bottom[x], g(x, s + 1)), (&bottom[x + 1], g(x + 1, s + 1)));
+            if !self.may_touch(canvas.clip(), [tl.0, tr.0, bl.0, br.0], sonar) {
+                continue;
+            }
             let own = self.owned_edges(s, x);
             if sonar {
                 self.black_cell(canvas, [tl.0, tr.0, bl.0, br.0], rightward);
@@ -83,6 +86,19 @@ impl Scene {
         if !sonar {
             self.outline_skirts(canvas, s, top, bottom);
         }
+    }
+
+    /// Whether a cell's lines can reach `clip`: its corners' box, a pixel
+    /// wider (line pixels are the ones holding the points). Outline cells that
+    /// cross the water line are always drawn: their shore points lie on the
+    /// sea plane, outside that box.
+    fn may_touch(&self, clip: &Clip, v: [&Vert; 4], sonar: bool) -> bool {
+        if !sonar && v.iter().any(|v| v.h < 0.0) && v.iter().any(|v| v.h > 0.0) {
+            return true;
+        }
+        let lo = |i: usize| v[0].p[i].min(v[1].p[i]).min(v[2].p[i]).min(v[3].p[i]) >> 8;
+        let hi = |i: usize| v[0].p[i].max(v[1].p[i]).max(v[2].p[i]).max(v[3].p[i]) >> 8;
+        lo(0) - 1 < clip.x1 && hi(0) + 1 >= clip.x0 && lo(1) - 1 < clip.y1 && hi(1) + 1 >= clip.y0
     }
 
     /// Sonar: a one-pixel line leans up to half a pixel off its edge, so near
