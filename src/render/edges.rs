@@ -9,7 +9,7 @@
 use glam::Vec2;
 
 use super::canvas::Canvas;
-use super::raster::{Clip, Fixed2, draw_line, draw_line_end, fill_triangle};
+use super::raster::{Clip, Fixed2, cell_covers_a_centre, draw_line, draw_line_end, fill_triangle};
 use super::scene::{Scene, Vert};
 
 /// Sonar's outline colour.
@@ -137,6 +137,9 @@ impl Scene {
     /// Sonar: both triangles of a cell in black.
     fn black_cell(&self, canvas: &mut Canvas, [tl, tr, bl, br]: [&Vert; 4], rightward: bool) {
         let clip = *canvas.clip();
+        if !cell_covers_a_centre([tl.p, tr.p, bl.p, br.p], &clip) {
+            return;
+        }
         let mut fill = |v: [Fixed2; 3]| {
             fill_triangle(v, &clip, |y, x0, x1| canvas.span_mut(y, x0, x1).fill(0));
         };

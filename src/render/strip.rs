@@ -5,7 +5,7 @@ use glam::{Vec2, Vec3};
 
 use super::canvas::Canvas;
 use super::fallback::dither;
-use super::raster::{Clip, Fixed2, SUBPIXEL, fill_triangle};
+use super::raster::{Fixed2, cell_covers_a_centre, fill_triangle};
 use super::scene::{Scene, Style, Vert};
 
 /// White and black, the only two colours of Mono.
@@ -81,7 +81,7 @@ impl Scene {
         // plane, possibly outside its corners' box: never skip those.
         let crosses = h.iter().any(|&h| h < 0.0) && h.iter().any(|&h| h > 0.0);
         let corners = [top[x].p, top[x + 1].p, bottom[x].p, bottom[x + 1].p];
-        if !crosses && !covers_a_centre(corners, canvas.clip()) {
+        if !crosses && !cell_covers_a_centre(corners, canvas.clip()) {
             return;
         }
         let tl = Corner::at(x, s, &top[x]);
@@ -236,28 +236,6 @@ impl Scene {
             }
         }
     }
-}
-
-/// Whether the bounding box of a cell's corners holds the centre of a pixel
-/// inside `clip`: a cheap test that skips most cells of a fine grid, and
-/// the cells of other bands (both triangles lie inside that box).
-#[inline]
-fn covers_a_centre(p: [Fixed2; 4], clip: &Clip) -> bool {
-    let lo = |i: usize| p[0][i].min(p[1][i]).min(p[2][i]).min(p[3][i]);
-    let hi = |i: usize| p[0][i].max(p[1][i]).max(p[2][i]).max(p[3][i]);
-    has_centre(lo(0), hi(0), clip.x0, clip.x1) && has_centre(lo(1), hi(1), clip.y0, clip.y1)
-}
-
-/// Whether the centre (n + 1/2) of a pixel n in `first..end` lies in
-/// `lo..=hi` (fixed point).
-#[inline]
-fn has_centre(lo: i64, hi: i64, first: i64, end: i64) -> bool {
-    let half = SUBPIXEL / 2;
-    let (a, b) = (
-        (-((half - lo) >> 8)).max(first),
-        ((hi - half) >> 8).min(end - 1),
-    );
-    a <= b
 }
 
 /// Light on a face: the mean of its corners'.
