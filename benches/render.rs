@@ -35,7 +35,7 @@ fn mountain(exponent: u32) -> Heightfield {
             }
         }
         for y in (0..n).step_by(h) {
-            let start = if (y / h) % 2 == 0 { h } else { 0 };
+            let start = if (y / h).is_multiple_of(2) { h } else { 0 };
             for x in (start..n).step_by(step) {
                 let near = [
                     (x.wrapping_sub(h), y),
