@@ -255,3 +255,23 @@ fn golden_hashes_pin_each_mode() {
     }
     assert!(wrong.is_empty(), "hashes changed: {}", wrong.join(", "));
 }
+
+#[test]
+fn broken_heights_and_extents_never_panic() {
+    let mut f = field(4);
+    f.set(3, 3, f32::NAN);
+    f.set(5, 9, f32::INFINITY);
+    f.set(9, 5, f32::NEG_INFINITY);
+    f.set(16, 16, 1e30);
+    for extent in [400.0, 0.0, -5.0, f32::NAN, 1e-30, 1e30] {
+        f.set_extent(extent);
+        for color in MODES {
+            for view in [ViewKind::Oblique, ViewKind::Perspective] {
+                let s = settings(color, view, 90);
+                let frame = full(&f, &s, 64, 48);
+                let again = stepped(&f, &s, 64, 48, 5);
+                assert!(frame == again, "extent {extent} {color:?} {view:?}: stepping differs");
+            }
+        }
+    }
+}
