@@ -270,7 +270,10 @@ fn broken_heights_and_extents_never_panic() {
                 let s = settings(color, view, 90);
                 let frame = full(&f, &s, 64, 48);
                 let again = stepped(&f, &s, 64, 48, 5);
-                assert!(frame == again, "extent {extent} {color:?} {view:?}: stepping differs");
+                assert!(
+                    frame == again,
+                    "extent {extent} {color:?} {view:?}: stepping differs"
+                );
             }
         }
     }

@@ -147,12 +147,18 @@ pub fn fill_triangle(v: [Fixed2; 3], clip: &Clip, mut span: impl FnMut(u32, u32,
     }
     let edges = [Edge::new(a, b), Edge::new(b, c), Edge::new(c, a)];
     if ix1 - ix0 < SCAN_WIDTH {
-        // Narrow boxes (most triangles of a fine grid): test the few centres.
+        // Narrow boxes (most triangles of a fine grid): test the few centres,
+        // stepping the edge functions by additions from row to row.
+        let (px, py) = (ix0 * SUBPIXEL + HALF, iy0 * SUBPIXEL + HALF);
+        let mut row = edges.map(|e| e.eval(px, py));
+        let down = edges.map(|e| -e.dx * SUBPIXEL);
+        let across = edges.map(|e| e.dy * SUBPIXEL);
         for iy in iy0..iy1 + 1 {
-            let (lo, hi) = scan_row(&edges, iy * SUBPIXEL + HALF, ix0, ix1);
+            let (lo, hi) = scan_row(row, across, ix0, ix1);
             if lo <= hi {
                 span(iy as u32, lo as u32, hi as u32 + 1);
             }
+            row = [row[0] + down[0], row[1] + down[1], row[2] + down[2]];
         }
         return;
     }
@@ -241,12 +247,11 @@ impl Walk {
 
 /// The inside columns of one row, found by testing each pixel centre.
 #[inline]
-fn scan_row(edges: &[Edge; 3], py: i64, ix0: i64, ix1: i64) -> (i64, i64) {
-    // Edge functions step by `dy * SUBPIXEL` per pixel: additions only.
-    let px = ix0 * SUBPIXEL + HALF;
-    let [a, b, c] = edges;
-    let (mut e0, mut e1, mut e2) = (a.eval(px, py), b.eval(px, py), c.eval(px, py));
-    let (s0, s1, s2) = (a.dy * SUBPIXEL, b.dy * SUBPIXEL, c.dy * SUBPIXEL);
+/// `start` holds the three edge functions at column `ix0`, `step` their
+/// change per column.
+fn scan_row(start: [i64; 3], step: [i64; 3], ix0: i64, ix1: i64) -> (i64, i64) {
+    let [mut e0, mut e1, mut e2] = start;
+    let [s0, s1, s2] = step;
     let mut ix = ix0;
     while ix <= ix1 && (e0 | e1 | e2) < 0 {
         (e0, e1, e2) = (e0 + s0, e1 + s1, e2 + s2);
