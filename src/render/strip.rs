@@ -161,6 +161,11 @@ impl Scene {
     }
 
     /// A land triangle; `normal` is only called if a pixel is covered.
+    ///
+    /// Faces turned away from the viewer are skipped: seen from above, the
+    /// first surface a sight line meets always faces it (or is a skirt), so
+    /// those faces would only be painted over. On rugged ground that is a
+    /// good share of the triangles, and the tallest, thinnest ones.
     fn fill_land(
         &self,
         canvas: &mut Canvas,
@@ -168,6 +173,9 @@ impl Scene {
         normal: impl FnOnce() -> Vec3,
         lit: f32,
     ) {
+        if faces_away([c[0].p, c[1].p, c[2].p]) {
+            return;
+        }
         let mean = (c[0].h + c[1].h + c[2].h) / 3.0;
         let colour = || self.palette.land(mean.max(0.0), normal(), lit);
         self.paint(canvas, [c[0].p, c[1].p, c[2].p], colour);
@@ -236,6 +244,16 @@ impl Scene {
             }
         }
     }
+}
+
+/// Whether a grid triangle, its corners in `fill_cell`'s order, is seen
+/// from behind: its screen winding is reversed (in y-down screen space the
+/// corners of every face turned to the viewer run clockwise).
+#[inline]
+fn faces_away(p: [Fixed2; 3]) -> bool {
+    // f64: the corners are not yet clamped, and only the sign matters.
+    let d = |i: usize, k: usize| (p[i][k] - p[0][k]) as f64;
+    d(1, 0) * d(2, 1) - d(1, 1) * d(2, 0) < 0.0
 }
 
 /// Light on a face: the mean of its corners'.
