@@ -78,10 +78,22 @@ impl<'a> Canvas<'a> {
         &mut self.pixels[row + x0 as usize..row + x1 as usize]
     }
 
-    /// Sets one pixel (frame coordinates, already clipped).
+    /// Adds the pixels of the fixed-point box `lo..=hi` (the pixels holding
+    /// those points and all between), clipped, to the damage.
+    #[inline]
+    pub(crate) fn touch_box(&mut self, lo: [i64; 2], hi: [i64; 2]) {
+        let c = self.clip;
+        let (x0, y0) = ((lo[0] >> 8).max(c.x0), (lo[1] >> 8).max(c.y0));
+        let (x1, y1) = (((hi[0] >> 8) + 1).min(c.x1), ((hi[1] >> 8) + 1).min(c.y1));
+        if x0 < x1 && y0 < y1 {
+            self.touch(x0 as u32, y0 as u32, x1 as u32, y1 as u32);
+        }
+    }
+
+    /// Sets one pixel (frame coordinates, already clipped) without adding it
+    /// to the damage: the caller has covered it with `touch_box`.
     #[inline]
     pub(crate) fn plot(&mut self, x: u32, y: u32, color: u32) {
-        self.touch(x, y, x + 1, y + 1);
         let i = ((y - self.y0) * self.width + x) as usize;
         self.pixels[i] = color;
     }

@@ -9,7 +9,9 @@
 use glam::Vec2;
 
 use super::canvas::Canvas;
-use super::raster::{Clip, Fixed2, cell_covers_a_centre, draw_line, draw_line_end, fill_triangle};
+use super::raster::{
+    Clip, Fixed2, SUBPIXEL, cell_covers_a_centre, draw_line, draw_line_end, fill_triangle,
+};
 use super::scene::{Scene, Vert};
 
 /// Sonar's outline colour.
@@ -118,6 +120,8 @@ impl Scene {
         let last = self.cells() - 1;
         let mut near = |a: Fixed2, b: Fixed2| {
             let clip = *canvas.clip();
+            let one = SUBPIXEL;
+            canvas.touch_box([b[0] - one, b[1] - one], [b[0] + one, b[1] + one]);
             draw_line_end(a, b, &clip, |px, py| canvas.plot(px, py, SONAR_LINE));
         };
         if own.left && x > 0 {
@@ -173,6 +177,10 @@ impl Scene {
 
     fn line(&self, canvas: &mut Canvas, a: Fixed2, b: Fixed2, colour: u32) {
         let clip = *canvas.clip();
+        canvas.touch_box(
+            [a[0].min(b[0]), a[1].min(b[1])],
+            [a[0].max(b[0]), a[1].max(b[1])],
+        );
         draw_line(a, b, &clip, |x, y| canvas.plot(x, y, colour));
     }
 
