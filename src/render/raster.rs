@@ -349,13 +349,23 @@ impl Line {
         if outside || from > to {
             return;
         }
-        let mut x = Axis::new(self.x0, self.dx, self.steps, from);
-        let mut y = Axis::new(self.y0, self.dy, self.steps, from);
-        for _ in from..=to {
-            let (px, py) = (x.pos(), y.pos());
+        let mut put = |px: i64, py: i64| {
             if px >= clip.x0 && px < clip.x1 && py >= clip.y0 && py < clip.y1 {
                 plot(px as u32, py as u32);
             }
+        };
+        if self.steps <= 1 {
+            // Most lines of a fine grid: just their end pixels (step 1 of 1
+            // is the end itself).
+            for k in from..=to {
+                put(self.x0 + k * self.dx, self.y0 + k * self.dy);
+            }
+            return;
+        }
+        let mut x = Axis::new(self.x0, self.dx, self.steps, from);
+        let mut y = Axis::new(self.y0, self.dy, self.steps, from);
+        for _ in from..=to {
+            put(x.pos(), y.pos());
             x.step();
             y.step();
         }
