@@ -375,11 +375,10 @@ impl Line {
 /// One coordinate of a line, stepped exactly with an integer remainder:
 /// `start + sign * floor((2 k |delta| + steps) / (2 steps))`.
 struct Axis {
-    start: i64,
+    pos: i64,
     sign: i64,
     twice_delta: i64,
     twice_steps: i64,
-    quotient: i64,
     remainder: i64,
 }
 
@@ -387,13 +386,13 @@ impl Axis {
     fn new(start: i64, delta: i64, steps: i64, k: i64) -> Self {
         let twice_steps = (2 * steps).max(1);
         let twice_delta = 2 * delta.abs();
+        let sign = delta.signum();
         let mut axis = Axis {
-            start,
-            sign: delta.signum(),
+            pos: start,
+            sign,
             twice_delta,
             twice_steps,
             // Step 0: floor(steps / (2 steps)) = 0, remainder `steps`.
-            quotient: 0,
             remainder: steps,
         };
         // Division is slow and most lines are a few pixels long: step there.
@@ -401,7 +400,7 @@ impl Axis {
             (0..k).for_each(|_| axis.step());
         } else {
             let num = k * twice_delta + steps;
-            axis.quotient = num / twice_steps;
+            axis.pos = start + sign * (num / twice_steps);
             axis.remainder = num % twice_steps;
         }
         axis
@@ -409,7 +408,7 @@ impl Axis {
 
     #[inline]
     fn pos(&self) -> i64 {
-        self.start + self.sign * self.quotient
+        self.pos
     }
 
     #[inline]
@@ -418,7 +417,7 @@ impl Axis {
         // |delta| <= steps, so at most one carry per step.
         if self.remainder >= self.twice_steps {
             self.remainder -= self.twice_steps;
-            self.quotient += 1;
+            self.pos += self.sign;
         }
     }
 }
