@@ -1,8 +1,10 @@
 //! Sonar (black faces, white outlines) and Outline (wire mesh) strips.
 //!
 //! Every grid edge is drawn once, by the later of the two cells that share
-//! it, after that cell is filled: an earlier cell's fill can never cover it,
-//! and no edge gets the double border the Mountain Terrain author regretted.
+//! it, after that cell is filled: both cells' fills lie beneath it, and no
+//! edge gets the double border the Mountain Terrain author regretted. (The
+//! few corner pixels a later neighbour's fill covers are put back by
+//! `touch_up`.)
 //! Both modes draw the surface at its clamped height (sea flat at sea level),
 //! ignore shading, and Sonar draws no skirts (seed 003).
 
