@@ -1,39 +1,86 @@
 //! The strip-by-strip painter: a state machine that draws a mountain back to front.
-//!
-//! STUB with the final signatures; the renderer work replaces the bodies.
 
 use std::sync::Arc;
 
+use super::bands;
+use super::canvas::Canvas;
 use super::frame::{Frame, Rect};
-use super::palette::Palette;
-use crate::settings::Settings;
+use super::ridges::Ridges;
+use super::scene::{Scene, Style, Vert};
+use crate::settings::{ColorMode, Settings};
 use crate::terrain::Heightfield;
 
 /// Draws one mountain into frames of one size, a few strips per `step`.
+///
+/// A strip is one row of grid cells (the last one also carries the front
+/// skirt); the first step also paints the background.
 pub struct Painter {
-    field: Arc<Heightfield>,
-    palette: Palette,
     width: u32,
     height: u32,
     next: usize,
+    how: How,
+}
+
+/// What the strips are made of.
+enum How {
+    Mesh(Box<Scene>, Rows),
+    Ridges(Ridges),
+}
+
+/// Two projected grid rows, reused from strip to strip.
+pub(crate) struct Rows {
+    top: Vec<Vert>,
+    bottom: Vec<Vert>,
+    /// The grid row `bottom` holds, if any.
+    bottom_row: Option<usize>,
+}
+
+impl Rows {
+    pub(crate) fn new() -> Self {
+        Rows {
+            top: Vec::new(),
+            bottom: Vec::new(),
+            bottom_row: None,
+        }
+    }
+
+    /// Makes `top` and `bottom` grid rows `s` and `s + 1`.
+    fn load(&mut self, scene: &Scene, s: usize) {
+        if self.bottom_row == Some(s) {
+            std::mem::swap(&mut self.top, &mut self.bottom);
+        } else {
+            scene.project_row(s, &mut self.top);
+        }
+        scene.project_row(s + 1, &mut self.bottom);
+        self.bottom_row = Some(s + 1);
+    }
 }
 
 impl Painter {
     /// Plans drawing `field` under `settings` into a `width` x `height` frame.
     pub fn new(field: Arc<Heightfield>, settings: &Settings, width: u32, height: u32) -> Self {
-        let palette = Palette::new(settings, &field);
+        let how = if settings.color == ColorMode::Ridges {
+            How::Ridges(Ridges::new(&field, settings, width, height))
+        } else {
+            How::Mesh(
+                Box::new(Scene::new(field, settings, width, height)),
+                Rows::new(),
+            )
+        };
         Painter {
-            field,
-            palette,
             width,
             height,
             next: 0,
+            how,
         }
     }
 
     /// How many strips the whole mountain takes.
     pub fn strips_total(&self) -> usize {
-        self.field.size()
+        match &self.how {
+            How::Mesh(scene, _) => scene.cells(),
+            How::Ridges(r) => r.strips_total(),
+        }
     }
 
     /// How many strips are drawn so far.
@@ -47,42 +94,84 @@ impl Painter {
     }
 
     /// Draws up to `budget` more strips, back to front, and returns the
-    /// rectangle of pixels it changed (empty when nothing was left).
+    /// rectangle of pixels it changed (empty when nothing was left, or when
+    /// `frame` is not the size this painter was made for).
     pub fn step(&mut self, frame: &mut Frame, budget: usize) -> Rect {
-        let mut damage = Rect::default();
         if frame.width() != self.width || frame.height() != self.height {
-            return damage;
+            return Rect::default();
         }
-        let total = self.strips_total();
-        let end = (self.next + budget).min(total);
-        for strip in self.next..end {
-            let y0 = (strip as u64 * self.height as u64 / total as u64) as u32;
-            let y1 = ((strip + 1) as u64 * self.height as u64 / total as u64) as u32;
-            let h = self.field.get(self.field.size() / 2, strip);
-            let c = self.palette.land(h, glam::Vec3::Z, 1.0);
-            for y in y0..y1 {
-                let row = (y * self.width) as usize;
-                frame.pixels_mut()[row..row + self.width as usize].fill(c);
-            }
-            damage = damage.union(&Rect {
-                x0: 0,
-                y0,
-                x1: self.width,
-                y1,
-            });
+        let start = self.next;
+        let end = start.saturating_add(budget).min(self.strips_total());
+        if start >= end && start > 0 {
+            return Rect::default();
         }
         self.next = end;
-        damage
+        match &mut self.how {
+            How::Mesh(scene, rows) => {
+                let mut canvas = Canvas::new(frame.pixels_mut(), self.width, 0);
+                if start == 0 {
+                    canvas.clear(background(scene));
+                }
+                draw_strips(scene, &mut canvas, rows, start..end);
+                canvas.damage()
+            }
+            How::Ridges(ridges) => {
+                let mut damage = Rect::default();
+                if start == 0 {
+                    frame.clear(0);
+                    damage = frame.bounds();
+                }
+                for i in start..end {
+                    damage = damage.union(&ridges.draw_strip(frame, i));
+                }
+                damage
+            }
+        }
     }
 }
 
-/// Draws a complete mountain into `frame` (the same pixels as stepping to the end).
+/// The colour behind the mountain: the palette's sky, or black where the
+/// mode says so (Sonar and Outline draw on black, Mono has only two colours).
+pub(crate) fn background(scene: &Scene) -> u32 {
+    match scene.style {
+        Style::Shaded => scene.palette.sky(),
+        Style::Mono | Style::Sonar | Style::Outline => 0,
+    }
+}
+
+/// Draws `strips` of `scene` into `canvas`, skipping strips that cannot
+/// touch the canvas's rows.
+pub(crate) fn draw_strips(
+    scene: &Scene,
+    canvas: &mut Canvas,
+    rows: &mut Rows,
+    strips: std::ops::Range<usize>,
+) {
+    let clip = *canvas.clip();
+    for s in strips {
+        let (lo, hi) = scene.strip_rows(s);
+        if hi < clip.y0 || lo >= clip.y1 {
+            continue;
+        }
+        rows.load(scene, s);
+        let (top, bottom) = (&rows.top[..], &rows.bottom[..]);
+        match scene.style {
+            Style::Shaded | Style::Mono => scene.fill_strip(canvas, s, top, bottom),
+            Style::Sonar => scene.edge_strip(canvas, s, top, bottom, true),
+            Style::Outline => scene.edge_strip(canvas, s, top, bottom, false),
+        }
+    }
+}
+
+/// Draws a complete mountain into `frame`: the same pixels as stepping a
+/// `Painter` to the end, drawn in horizontal bands on all cores.
 pub fn render_full(field: &Heightfield, settings: &Settings, frame: &mut Frame) {
-    let mut p = Painter::new(
-        Arc::new(field.clone()),
-        settings,
-        frame.width(),
-        frame.height(),
-    );
-    p.step(frame, usize::MAX);
+    let (w, h) = (frame.width(), frame.height());
+    if settings.color == ColorMode::Ridges {
+        let mut p = Painter::new(Arc::new(field.clone()), settings, w, h);
+        p.step(frame, usize::MAX);
+        return;
+    }
+    let scene = Scene::new(Arc::new(field.clone()), settings, w, h);
+    bands::render(&scene, frame);
 }

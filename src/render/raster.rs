@@ -1,0 +1,423 @@
+//! Triangle fill with an exact top-left rule, and one-pixel lines.
+//!
+//! Vertices are in 24.8 fixed point (`SUBPIXEL` steps per pixel); a pixel is
+//! covered when its centre is inside the triangle, or exactly on a top or left
+//! edge. Neighbouring triangles that share an edge therefore cover every pixel
+//! along it exactly once, whatever the sub-pixel positions.
+
+/// Fixed-point steps per pixel (8 bits of sub-pixel precision).
+pub const SUBPIXEL: i64 = 1 << 8;
+const HALF: i64 = SUBPIXEL / 2;
+
+/// A screen position in 24.8 fixed point.
+pub type Fixed2 = [i64; 2];
+
+/// The pixels a rasteriser may touch: columns `x0..x1`, rows `y0..y1`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Clip {
+    /// First column.
+    pub x0: i64,
+    /// Column past the last.
+    pub x1: i64,
+    /// First row.
+    pub y0: i64,
+    /// Row past the last.
+    pub y1: i64,
+}
+
+impl Clip {
+    /// A `width` x `height` frame, whole.
+    pub fn frame(width: u32, height: u32) -> Self {
+        Clip {
+            x0: 0,
+            x1: width as i64,
+            y0: 0,
+            y1: height as i64,
+        }
+    }
+}
+
+/// Largest fixed-point coordinate kept (2^21 pixels): edge-function products
+/// of clamped coordinates stay far inside i64. Only absurd frames (over two
+/// million pixels wide) ever have vertices this far out.
+const LIMIT: i64 = 1 << 29;
+
+/// Clamps a vertex to +-`LIMIT`; independent of any clip, so a triangle is
+/// the same shape in every band.
+#[inline]
+fn clamp(p: Fixed2) -> Fixed2 {
+    [p[0].clamp(-LIMIT, LIMIT), p[1].clamp(-LIMIT, LIMIT)]
+}
+
+/// Converts a position in pixels to fixed point (non-finite values become 0).
+#[inline]
+pub fn to_fixed(x: f32, y: f32) -> Fixed2 {
+    [round(x * SUBPIXEL as f32), round(y * SUBPIXEL as f32)]
+}
+
+/// Nearest integer, halves up; without a libm call (`f32::round` is one on
+/// baseline x86-64). `as` saturates and maps NaN to 0, so wild input cannot
+/// overflow here.
+#[inline]
+fn round(v: f32) -> i64 {
+    let t = (v + 0.5).clamp(-1e15, 1e15);
+    let i = t as i64;
+    // `as` truncates towards zero: step down for negative non-integers.
+    if (i as f32) > t { i - 1 } else { i }
+}
+
+/// Floor of a fixed-point value in pixels (a shift: `SUBPIXEL` is 2^8).
+#[inline]
+fn floor_px(n: i64) -> i64 {
+    n >> 8
+}
+
+/// Ceiling of a fixed-point value in pixels.
+#[inline]
+fn ceil_px(n: i64) -> i64 {
+    -((-n) >> 8)
+}
+
+/// First and last pixel index whose centre lies in `lo..=hi` (fixed point).
+#[inline]
+fn centres_within(lo: i64, hi: i64) -> (i64, i64) {
+    (ceil_px(lo - HALF), floor_px(hi - HALF))
+}
+
+/// One edge `a -> b` of a counter-clockwise (in y-down screen space) triangle.
+#[derive(Clone, Copy)]
+struct Edge {
+    ax: i64,
+    ay: i64,
+    dx: i64,
+    dy: i64,
+    /// 0 on a top or left edge (points on it are inside), -1 otherwise.
+    bias: i64,
+}
+
+impl Edge {
+    fn new(a: Fixed2, b: Fixed2) -> Self {
+        let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+        let top_left = dy > 0 || (dy == 0 && dx < 0);
+        Edge {
+            ax: a[0],
+            ay: a[1],
+            dx,
+            dy,
+            bias: if top_left { 0 } else { -1 },
+        }
+    }
+
+    /// The edge function plus bias at a fixed-point point: inside when >= 0.
+    #[inline]
+    fn eval(&self, px: i64, py: i64) -> i64 {
+        (px - self.ax) * self.dy - (py - self.ay) * self.dx + self.bias
+    }
+}
+
+/// Bounding boxes at most this many columns wide are scanned pixel by pixel;
+/// wider ones get their span ends by division (identical results).
+const SCAN_WIDTH: i64 = 4;
+
+/// Calls `span(y, x0, x1)` for every row of pixels the triangle covers
+/// (columns `x0..x1`, exclusive end), top to bottom, within `clip`.
+///
+/// Degenerate (zero-area) triangles cover nothing.
+#[inline]
+pub fn fill_triangle(v: [Fixed2; 3], clip: &Clip, mut span: impl FnMut(u32, u32, u32)) {
+    let (a, mut b, mut c) = (clamp(v[0]), clamp(v[1]), clamp(v[2]));
+    let (xmin, xmax) = (a[0].min(b[0]).min(c[0]), a[0].max(b[0]).max(c[0]));
+    let (ymin, ymax) = (a[1].min(b[1]).min(c[1]), a[1].max(b[1]).max(c[1]));
+    let (mut ix0, mut ix1) = centres_within(xmin, xmax);
+    let (mut iy0, mut iy1) = centres_within(ymin, ymax);
+    ix0 = ix0.max(clip.x0);
+    ix1 = ix1.min(clip.x1 - 1);
+    iy0 = iy0.max(clip.y0);
+    iy1 = iy1.min(clip.y1 - 1);
+    if ix0 > ix1 || iy0 > iy1 {
+        return;
+    }
+    let area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    if area == 0 {
+        return;
+    }
+    // Edge functions below are positive inside when `area` is negative.
+    if area > 0 {
+        std::mem::swap(&mut b, &mut c);
+    }
+    let edges = [Edge::new(a, b), Edge::new(b, c), Edge::new(c, a)];
+    if ix1 - ix0 < SCAN_WIDTH {
+        // Narrow boxes (most triangles of a fine grid): test the few centres,
+        // stepping the edge functions by additions from row to row.
+        let (px, py) = (ix0 * SUBPIXEL + HALF, iy0 * SUBPIXEL + HALF);
+        let mut row = edges.map(|e| e.eval(px, py));
+        let down = edges.map(|e| -e.dx * SUBPIXEL);
+        let across = edges.map(|e| e.dy * SUBPIXEL);
+        for iy in iy0..iy1 + 1 {
+            let (lo, hi) = scan_row(row, across, ix0, ix1);
+            if lo <= hi {
+                span(iy as u32, lo as u32, hi as u32 + 1);
+            }
+            row = [row[0] + down[0], row[1] + down[1], row[2] + down[2]];
+        }
+        return;
+    }
+    // Wider ones: each edge's bound on the row's columns, stepped row by row.
+    let py0 = iy0 * SUBPIXEL + HALF;
+    let mut walks = edges.map(|e| Walk::new(&e, py0));
+    for iy in iy0..iy1 + 1 {
+        let (mut lo, mut hi) = (ix0, ix1);
+        for w in &mut walks {
+            w.bound(&mut lo, &mut hi);
+            w.step();
+        }
+        if lo <= hi {
+            span(iy as u32, lo as u32, hi as u32 + 1);
+        }
+    }
+}
+
+/// One edge's limit on the covered columns, row after row, in exact integer
+/// steps: `floor(m / d)` kept as quotient and remainder while `m` moves by a
+/// fixed amount per row.
+#[derive(Clone, Copy)]
+struct Walk {
+    /// +1: the edge bounds the row from the left (first column `-q`);
+    /// -1: from the right (last column `q`); 0: horizontal (`q >= 0` inside).
+    side: i8,
+    q: i64,
+    r: i64,
+    d: i64,
+    step_q: i64,
+    step_r: i64,
+}
+
+impl Walk {
+    /// Inside a row at centre `py`: `(ix * S + HALF - ax) * dy >= k`, with
+    /// `k = (py - ay) * dx - bias`, which moves by `S * dx` per row.
+    fn new(e: &Edge, py: i64) -> Self {
+        let k = (py - e.ay) * e.dx - e.bias;
+        let per_row = -SUBPIXEL * e.dx;
+        if e.dy == 0 {
+            // Inside iff -k >= 0.
+            return Walk {
+                side: 0,
+                q: -k,
+                r: 0,
+                d: 1,
+                step_q: per_row,
+                step_r: 0,
+            };
+        }
+        let d = SUBPIXEL * e.dy.abs();
+        // Left: ix >= ceil((k + (ax - HALF) * dy) / d) = -floor(m / d).
+        // Right: ix <= floor((-k + (ax - HALF) * -dy) / d) = floor(m / d).
+        // Either way m = -k - (ax - HALF) * dy, moving by -S * dx per row.
+        let m = -k - (e.ax - HALF) * e.dy;
+        Walk {
+            side: if e.dy > 0 { 1 } else { -1 },
+            q: m.div_euclid(d),
+            r: m.rem_euclid(d),
+            d,
+            step_q: per_row.div_euclid(d),
+            step_r: per_row.rem_euclid(d),
+        }
+    }
+
+    #[inline]
+    fn bound(&self, lo: &mut i64, hi: &mut i64) {
+        match self.side {
+            1 => *lo = (*lo).max(-self.q),
+            -1 => *hi = (*hi).min(self.q),
+            _ if self.q < 0 => *hi = *lo - 1,
+            _ => {}
+        }
+    }
+
+    #[inline]
+    fn step(&mut self) {
+        self.q += self.step_q;
+        self.r += self.step_r;
+        if self.r >= self.d {
+            self.r -= self.d;
+            self.q += 1;
+        }
+    }
+}
+
+/// The inside columns of one row, found by testing each pixel centre.
+#[inline]
+/// `start` holds the three edge functions at column `ix0`, `step` their
+/// change per column.
+fn scan_row(start: [i64; 3], step: [i64; 3], ix0: i64, ix1: i64) -> (i64, i64) {
+    let [mut e0, mut e1, mut e2] = start;
+    let [s0, s1, s2] = step;
+    let mut ix = ix0;
+    while ix <= ix1 && (e0 | e1 | e2) < 0 {
+        (e0, e1, e2) = (e0 + s0, e1 + s1, e2 + s2);
+        ix += 1;
+    }
+    let lo = ix;
+    // The inside of a row is one run: it ends at the first pixel out.
+    while ix <= ix1 && (e0 | e1 | e2) >= 0 {
+        (e0, e1, e2) = (e0 + s0, e1 + s1, e2 + s2);
+        ix += 1;
+    }
+    (lo, ix - 1)
+}
+
+/// Whether the bounding box of a cell's corners holds the centre of a pixel
+/// inside `clip`: a cheap test that skips most cells of a fine grid, and
+/// the cells of other bands (both triangles lie inside that box).
+#[inline]
+pub(crate) fn cell_covers_a_centre(p: [Fixed2; 4], clip: &Clip) -> bool {
+    let lo = |i: usize| p[0][i].min(p[1][i]).min(p[2][i]).min(p[3][i]);
+    let hi = |i: usize| p[0][i].max(p[1][i]).max(p[2][i]).max(p[3][i]);
+    has_centre(lo(0), hi(0), clip.x0, clip.x1) && has_centre(lo(1), hi(1), clip.y0, clip.y1)
+}
+
+/// Whether the centre (n + 1/2) of a pixel n in `first..end` lies in
+/// `lo..=hi` (fixed point).
+#[inline]
+fn has_centre(lo: i64, hi: i64, first: i64, end: i64) -> bool {
+    let half = SUBPIXEL / 2;
+    let (a, b) = (
+        (-((half - lo) >> 8)).max(first),
+        ((hi - half) >> 8).min(end - 1),
+    );
+    a <= b
+}
+
+/// Calls `plot(x, y)` for each pixel of the one-pixel-wide (8-connected)
+/// line between the pixels holding `a` and `b`, both ends included, within `clip`.
+///
+/// The endpoints are put in a fixed order first, so a line drawn from either
+/// end covers the same pixels: a shared edge drawn twice never thickens.
+pub fn draw_line(a: Fixed2, b: Fixed2, clip: &Clip, plot: impl FnMut(u32, u32)) {
+    let line = Line::new(a, b);
+    line.walk(0, line.steps, clip, plot);
+}
+
+/// Calls `plot` for the pixels of `draw_line(a, b)` next to `b`'s end (its
+/// last two steps), without walking the rest of the line.
+pub fn draw_line_end(a: Fixed2, b: Fixed2, clip: &Clip, plot: impl FnMut(u32, u32)) {
+    let line = Line::new(a, b);
+    if line.reversed {
+        line.walk(0, line.steps.min(1), clip, plot);
+    } else {
+        line.walk(line.steps.saturating_sub(1), line.steps, clip, plot);
+    }
+}
+
+/// A line between two pixels: step `k` of `steps` is at
+/// `start + round(k * delta / steps)` on each axis (halves rounded up).
+struct Line {
+    x0: i64,
+    y0: i64,
+    dx: i64,
+    dy: i64,
+    steps: i64,
+    /// Whether the ends were swapped into the fixed order.
+    reversed: bool,
+}
+
+impl Line {
+    fn new(a: Fixed2, b: Fixed2) -> Self {
+        let (a, b) = (clamp(a), clamp(b));
+        let reversed = (a[1], a[0]) > (b[1], b[0]);
+        let (a, b) = if reversed { (b, a) } else { (a, b) };
+        let (x0, y0) = (floor_px(a[0]), floor_px(a[1]));
+        let (dx, dy) = (floor_px(b[0]) - x0, floor_px(b[1]) - y0);
+        Line {
+            x0,
+            y0,
+            dx,
+            dy,
+            steps: dx.abs().max(dy.abs()),
+            reversed,
+        }
+    }
+
+    /// Plots steps `from..=to`.
+    fn walk(&self, from: i64, to: i64, clip: &Clip, mut plot: impl FnMut(u32, u32)) {
+        let x1 = self.x0 + self.dx;
+        let y1 = self.y0 + self.dy;
+        let outside = self.x0.max(x1) < clip.x0
+            || self.x0.min(x1) >= clip.x1
+            || self.y0.max(y1) < clip.y0
+            || self.y0.min(y1) >= clip.y1;
+        if outside || from > to {
+            return;
+        }
+        let mut put = |px: i64, py: i64| {
+            if px >= clip.x0 && px < clip.x1 && py >= clip.y0 && py < clip.y1 {
+                plot(px as u32, py as u32);
+            }
+        };
+        if self.steps <= 1 {
+            // Most lines of a fine grid: just their end pixels (step 1 of 1
+            // is the end itself).
+            for k in from..=to {
+                put(self.x0 + k * self.dx, self.y0 + k * self.dy);
+            }
+            return;
+        }
+        let mut x = Axis::new(self.x0, self.dx, self.steps, from);
+        let mut y = Axis::new(self.y0, self.dy, self.steps, from);
+        for _ in from..=to {
+            put(x.pos(), y.pos());
+            x.step();
+            y.step();
+        }
+    }
+}
+
+/// One coordinate of a line, stepped exactly with an integer remainder:
+/// `start + sign * floor((2 k |delta| + steps) / (2 steps))`.
+struct Axis {
+    pos: i64,
+    sign: i64,
+    twice_delta: i64,
+    twice_steps: i64,
+    remainder: i64,
+}
+
+impl Axis {
+    fn new(start: i64, delta: i64, steps: i64, k: i64) -> Self {
+        let twice_steps = (2 * steps).max(1);
+        let twice_delta = 2 * delta.abs();
+        let sign = delta.signum();
+        let mut axis = Axis {
+            pos: start,
+            sign,
+            twice_delta,
+            twice_steps,
+            // Step 0: floor(steps / (2 steps)) = 0, remainder `steps`.
+            remainder: steps,
+        };
+        // Division is slow and most lines are a few pixels long: step there.
+        if k <= 8 {
+            (0..k).for_each(|_| axis.step());
+        } else {
+            let num = k * twice_delta + steps;
+            axis.pos = start + sign * (num / twice_steps);
+            axis.remainder = num % twice_steps;
+        }
+        axis
+    }
+
+    #[inline]
+    fn pos(&self) -> i64 {
+        self.pos
+    }
+
+    #[inline]
+    fn step(&mut self) {
+        self.remainder += self.twice_delta;
+        // |delta| <= steps, so at most one carry per step.
+        if self.remainder >= self.twice_steps {
+            self.remainder -= self.twice_steps;
+            self.pos += self.sign;
+        }
+    }
+}

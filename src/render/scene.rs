@@ -1,0 +1,179 @@
+//! Everything fixed for one mountain in one frame size: the (turned) field,
+//! the fitted view, colours, shadows and the drawing order within a strip.
+
+use std::sync::Arc;
+
+use glam::Vec2;
+
+use super::palette::Palette;
+use super::raster::{Fixed2, to_fixed};
+use super::shadow::{self, ShadowMap};
+use super::view::View;
+use crate::settings::{ColorMode, Settings};
+use crate::terrain::Heightfield;
+
+/// How faces are put on screen.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Style {
+    /// Filled with the palette's shaded colours.
+    Shaded,
+    /// Filled with 1-bit ordered-dither patterns.
+    Mono,
+    /// Black faces with one-pixel white outlines.
+    Sonar,
+    /// Wire mesh only.
+    Outline,
+}
+
+impl Style {
+    /// The style a colour mode draws with (Ridges is handled elsewhere).
+    pub(crate) fn of(mode: ColorMode) -> Self {
+        match mode {
+            ColorMode::Sonar => Style::Sonar,
+            ColorMode::Outline => Style::Outline,
+            ColorMode::Mono => Style::Mono,
+            _ => Style::Shaded,
+        }
+    }
+}
+
+/// A grid point projected to the screen.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct Vert {
+    /// Screen position, drawn at sea level when the ground is below it.
+    pub p: Fixed2,
+    /// The ground's true height (finite).
+    pub h: f32,
+    /// Direct light reaching the point.
+    pub lit: f32,
+}
+
+/// The fixed facts about drawing one mountain into one frame size.
+pub(crate) struct Scene {
+    pub field: Arc<Heightfield>,
+    pub view: View,
+    pub palette: Palette,
+    shadow: Option<ShadowMap>,
+    pub style: Style,
+    /// Cells `0..split` of a row are drawn left to right, then the rest right
+    /// to left, so faces nearer the camera's column overwrite farther ones.
+    pub split: usize,
+    /// Highest point of each row, at least sea level.
+    row_top: Vec<f32>,
+    /// Whether the right and front cut faces (skirts) face the viewer.
+    pub sees_right: bool,
+    pub sees_front: bool,
+}
+
+impl Scene {
+    /// Prepares `field` seen as `settings` ask, in a `width` x `height` frame.
+    pub(crate) fn new(
+        field: Arc<Heightfield>,
+        settings: &Settings,
+        width: u32,
+        height: u32,
+    ) -> Self {
+        let field = turned(field, settings.rotation);
+        let style = Style::of(settings.color);
+        let palette = Palette::new(settings, &field);
+        let shaded = matches!(style, Style::Shaded | Style::Mono);
+        let shadow = (shaded && settings.shadows).then(|| shadow::cast(&field, palette.light()));
+        let size = field.size();
+        let row_top: Vec<f32> = (0..size)
+            .map(|y| field.row(y).iter().fold(0.0f32, |m, &h| finite(h).max(m)))
+            .collect();
+        let zmax = row_top.iter().copied().fold(0.0, f32::max);
+        let view = View::new(settings.view, size, field.extent(), zmax, width, height);
+        let cells = size - 1;
+        let (split, sees_right, sees_front) = match view.camera_column() {
+            Some(cx) => {
+                let split = cx.floor().clamp(0.0, cells as f32) as usize;
+                (split, cx > cells as f32, true)
+            }
+            None => (cells, true, true),
+        };
+        Scene {
+            field,
+            view,
+            palette,
+            shadow,
+            style,
+            split,
+            row_top,
+            sees_right,
+            sees_front,
+        }
+    }
+
+    /// Cells per row; also the number of strips.
+    pub(crate) fn cells(&self) -> usize {
+        self.field.size() - 1
+    }
+
+    /// Projects grid row `y` into `out`.
+    pub(crate) fn project_row(&self, y: usize, out: &mut Vec<Vert>) {
+        out.clear();
+        let row = self.field.row(y);
+        out.extend(row.iter().enumerate().map(|(x, &h)| {
+            let h = finite(h);
+            let p = self.view.project(x as f32, y as f32, h.max(0.0));
+            Vert {
+                p: to_fixed(p.x, p.y),
+                h,
+                lit: self.shadow.as_ref().map_or(1.0, |s| s.lit(x, y)),
+            }
+        }));
+    }
+
+    /// Fixed-point screen position of a point between grid points, at sea level.
+    pub(crate) fn project_sea(&self, g: Vec2) -> Fixed2 {
+        let p = self.view.project(g.x, g.y, 0.0);
+        to_fixed(p.x, p.y)
+    }
+
+    /// Screen rows strip `s` (cells between grid rows `s` and `s + 1`, with
+    /// their skirts) can touch, widened by a pixel each way.
+    pub(crate) fn strip_rows(&self, s: usize) -> (i64, i64) {
+        let top = self.view.project(0.0, s as f32, self.row_top[s]).y;
+        let top2 = self
+            .view
+            .project(0.0, (s + 1) as f32, self.row_top[s + 1])
+            .y;
+        let bottom = self.view.project(0.0, (s + 1) as f32, 0.0).y;
+        let lo = top.min(top2).min(bottom);
+        let hi = bottom.max(top).max(top2);
+        if !(lo.is_finite() && hi.is_finite()) {
+            return (i64::MIN, i64::MAX);
+        }
+        (lo.floor() as i64 - 1, hi.ceil() as i64 + 1)
+    }
+}
+
+/// Heights that are not numbers are drawn at sea level.
+#[inline]
+fn finite(h: f32) -> f32 {
+    if h.is_finite() { h } else { 0.0 }
+}
+
+/// The field seen from another side: `rotation` degrees, in quarter turns
+/// (other values are rounded to the nearest quarter).
+fn turned(field: Arc<Heightfield>, rotation: u32) -> Arc<Heightfield> {
+    let quarters = ((rotation % 360 + 45) / 90) % 4;
+    if quarters == 0 {
+        return field;
+    }
+    let n = field.size();
+    let mut out = Heightfield::flat(field.exponent(), field.extent());
+    for y in 0..n {
+        for x in 0..n {
+            // Each quarter turn brings the old right edge to the back.
+            let (sx, sy) = match quarters {
+                1 => (n - 1 - y, x),
+                2 => (n - 1 - x, n - 1 - y),
+                _ => (y, n - 1 - x),
+            };
+            out.set(x, y, field.get(sx, sy));
+        }
+    }
+    Arc::new(out)
+}

@@ -1,0 +1,268 @@
+//! One strip of filled faces: two triangles per cell, split at the water
+//! line, with the cut faces (skirts) of the right and front edges.
+
+use glam::{Vec2, Vec3};
+
+use super::canvas::Canvas;
+use super::dither;
+use super::raster::{Fixed2, cell_covers_a_centre, fill_triangle};
+use super::scene::{Scene, Style, Vert};
+
+/// White and black, the only two colours of Mono.
+const WHITE: u32 = 0x00ff_ffff;
+const BLACK: u32 = 0;
+
+/// How a face's pixels are set.
+#[derive(Clone, Copy)]
+enum Paint {
+    Solid(u32),
+    Dither(u8),
+}
+
+/// A triangle corner: grid position, true height, screen position, light.
+#[derive(Clone, Copy)]
+struct Corner {
+    g: Vec2,
+    h: f32,
+    p: Fixed2,
+    lit: f32,
+}
+
+impl Corner {
+    fn at(x: usize, y: usize, v: &Vert) -> Self {
+        Corner {
+            g: Vec2::new(x as f32, y as f32),
+            h: v.h,
+            p: v.p,
+            lit: v.lit,
+        }
+    }
+}
+
+impl Scene {
+    /// Draws strip `s` filled: its cells in drawing order, then the skirts.
+    /// `top` and `bottom` are grid rows `s` and `s + 1`, projected.
+    pub(crate) fn fill_strip(&self, canvas: &mut Canvas, s: usize, top: &[Vert], bottom: &[Vert]) {
+        let cells = self.cells();
+        for x in 0..self.split {
+            self.fill_cell(canvas, s, x, top, bottom, true);
+        }
+        for x in (self.split..cells).rev() {
+            self.fill_cell(canvas, s, x, top, bottom, false);
+        }
+        if self.sees_right {
+            let a = Corner::at(cells, s, &top[cells]);
+            let b = Corner::at(cells, s + 1, &bottom[cells]);
+            self.fill_skirt(canvas, a, b, Vec3::X);
+        }
+        if self.sees_front && s + 1 == cells {
+            for x in 0..cells {
+                let a = Corner::at(x, s + 1, &bottom[x]);
+                let b = Corner::at(x + 1, s + 1, &bottom[x + 1]);
+                self.fill_skirt(canvas, a, b, Vec3::NEG_Y);
+            }
+        }
+    }
+
+    /// The two triangles of cell (`x`, `s`), the farther one first. With the
+    /// camera to the right (`rightward`) the diagonal runs from the back
+    /// right, so the front-right triangle is the nearer; mirrored otherwise.
+    fn fill_cell(
+        &self,
+        canvas: &mut Canvas,
+        s: usize,
+        x: usize,
+        top: &[Vert],
+        bottom: &[Vert],
+        rightward: bool,
+    ) {
+        let h = [top[x].h, top[x + 1].h, bottom[x].h, bottom[x + 1].h];
+        // A cell crossing the water line puts its shore points on the sea
+        // plane, possibly outside its corners' box: never skip those.
+        let crosses = h.iter().any(|&h| h < 0.0) && h.iter().any(|&h| h > 0.0);
+        let corners = [top[x].p, top[x + 1].p, bottom[x].p, bottom[x + 1].p];
+        if !crosses && !cell_covers_a_centre(corners, canvas.clip()) {
+            return;
+        }
+        let tl = Corner::at(x, s, &top[x]);
+        let tr = Corner::at(x + 1, s, &top[x + 1]);
+        let bl = Corner::at(x, s + 1, &bottom[x]);
+        let br = Corner::at(x + 1, s + 1, &bottom[x + 1]);
+        if rightward {
+            self.fill_face(canvas, [tl, tr, bl]);
+            self.fill_face(canvas, [tr, br, bl]);
+        } else {
+            self.fill_face(canvas, [tl, tr, br]);
+            self.fill_face(canvas, [tl, br, bl]);
+        }
+    }
+
+    /// One grid triangle: water, land, or both split at the water line
+    /// (seed 000's DrawTriangle).
+    fn fill_face(&self, canvas: &mut Canvas, c: [Corner; 3]) {
+        let wet = c.map(|k| k.h < 0.0);
+        if c.iter().all(|k| k.h <= 0.0) {
+            self.fill_water(canvas, c);
+        } else if !wet.iter().any(|&w| w) {
+            self.fill_land(canvas, c, || self.face_normal(&c), lit_of(&c));
+        } else {
+            self.fill_split(canvas, c, wet);
+        }
+    }
+
+    /// A triangle crossing the water line, cut into its land and water parts.
+    fn fill_split(&self, canvas: &mut Canvas, c: [Corner; 3], wet: [bool; 3]) {
+        // `odd` is the corner alone on its side; keep the winding of `c`.
+        let odd = if wet[0] != wet[1] && wet[0] != wet[2] {
+            0
+        } else if wet[1] != wet[0] {
+            1
+        } else {
+            2
+        };
+        let a = c[odd];
+        let (s0, s1) = (c[(odd + 1) % 3], c[(odd + 2) % 3]);
+        let m0 = self.shore(a, s0);
+        let m1 = self.shore(a, s1);
+        let normal = self.face_normal(&c);
+        let lit = lit_of(&c);
+        if wet[odd] {
+            self.fill_water(canvas, [a, m0, m1]);
+            self.fill_land(canvas, [m0, s0, s1], || normal, lit);
+            self.fill_land(canvas, [m0, s1, m1], || normal, lit);
+        } else {
+            self.fill_land(canvas, [a, m0, m1], || normal, lit);
+            self.fill_water(canvas, [m0, s0, s1]);
+            self.fill_water(canvas, [m0, s1, m1]);
+        }
+    }
+
+    /// Where the edge from `a` to `b` (one wet, one dry) meets sea level.
+    fn shore(&self, a: Corner, b: Corner) -> Corner {
+        let f = a.h / (a.h - b.h);
+        let g = a.g + (b.g - a.g) * f;
+        Corner {
+            g,
+            h: 0.0,
+            p: self.project_sea(g),
+            lit: a.lit + (b.lit - a.lit) * f,
+        }
+    }
+
+    /// Upward unit normal of a grid triangle, in the palette's frame (z up,
+    /// y towards the back).
+    fn face_normal(&self, c: &[Corner; 3]) -> Vec3 {
+        let cell = self.view.cell();
+        let world = |k: &Corner| Vec3::new(k.g.x * cell, -k.g.y * cell, k.h);
+        let (p0, p1, p2) = (world(&c[0]), world(&c[1]), world(&c[2]));
+        let n = (p1 - p0).cross(p2 - p0);
+        let n = if n.z < 0.0 { -n } else { n };
+        n.try_normalize().unwrap_or(Vec3::Z)
+    }
+
+    /// A land triangle; `normal` is only called if a pixel is covered.
+    ///
+    /// Faces turned away from the viewer are skipped: seen from above, the
+    /// first surface a sight line meets always faces it (or is a skirt), so
+    /// those faces would only be painted over. On rugged ground that is a
+    /// good share of the triangles, and the tallest, thinnest ones.
+    fn fill_land(
+        &self,
+        canvas: &mut Canvas,
+        c: [Corner; 3],
+        normal: impl FnOnce() -> Vec3,
+        lit: f32,
+    ) {
+        if faces_away([c[0].p, c[1].p, c[2].p]) {
+            return;
+        }
+        let mean = (c[0].h + c[1].h + c[2].h) / 3.0;
+        let colour = || self.palette.land(mean.max(0.0), normal(), lit);
+        self.paint(canvas, [c[0].p, c[1].p, c[2].p], colour);
+    }
+
+    fn fill_water(&self, canvas: &mut Canvas, c: [Corner; 3]) {
+        let depth = -(c[0].h.min(0.0) + c[1].h.min(0.0) + c[2].h.min(0.0)) / 3.0;
+        self.paint(canvas, [c[0].p, c[1].p, c[2].p], || {
+            self.palette.water(depth)
+        });
+    }
+
+    /// The cut face below the edge from `a` to `b`, down to sea level, facing
+    /// `normal` (palette frame). Wet parts of the edge have no face.
+    fn fill_skirt(&self, canvas: &mut Canvas, a: Corner, b: Corner, normal: Vec3) {
+        let foot = |k: Corner| Corner {
+            p: self.project_sea(k.g),
+            h: 0.0,
+            ..k
+        };
+        let (a, b) = match (a.h > 0.0, b.h > 0.0) {
+            (false, false) => return,
+            (true, true) => (a, b),
+            (true, false) => (a, self.shore(a, b)),
+            (false, true) => (self.shore(a, b), b),
+        };
+        let colour = self.palette.skirt((a.h + b.h) / 4.0, normal);
+        let (fa, fb) = (foot(a), foot(b));
+        self.paint(canvas, [a.p, b.p, fb.p], || colour);
+        self.paint(canvas, [a.p, fb.p, fa.p], || colour);
+    }
+
+    /// Fills one screen triangle with a colour (or its dither pattern in Mono).
+    ///
+    /// Most triangles of a fine grid cover no pixel centre at all, so the
+    /// colour is only worked out once a first span turns up.
+    fn paint(&self, canvas: &mut Canvas, v: [Fixed2; 3], colour: impl FnOnce() -> u32) {
+        let mut colour = Some(colour);
+        let mut paint = Paint::Solid(0);
+        let clip = *canvas.clip();
+        fill_triangle(v, &clip, |y, x0, x1| {
+            if let Some(colour) = colour.take() {
+                let c = colour();
+                paint = match self.style {
+                    Style::Mono => Paint::Dither(dither::level(gray(c))),
+                    _ => Paint::Solid(c),
+                };
+            }
+            Self::put(canvas, paint, y, x0, x1);
+        });
+    }
+
+    /// Sets one span of pixels.
+    #[inline]
+    fn put(canvas: &mut Canvas, paint: Paint, y: u32, x0: u32, x1: u32) {
+        match paint {
+            Paint::Solid(c) => canvas.span_mut(y, x0, x1).fill(c),
+            Paint::Dither(level) => {
+                for (px, x) in canvas.span_mut(y, x0, x1).iter_mut().zip(x0..) {
+                    *px = if dither::is_on(level, x, y) {
+                        WHITE
+                    } else {
+                        BLACK
+                    };
+                }
+            }
+        }
+    }
+}
+
+/// Whether a grid triangle, its corners in `fill_cell`'s order, is seen
+/// from behind: its screen winding is reversed (in y-down screen space the
+/// corners of every face turned to the viewer run clockwise).
+#[inline]
+fn faces_away(p: [Fixed2; 3]) -> bool {
+    // f64: the corners are not yet clamped, and only the sign matters.
+    let d = |i: usize, k: usize| (p[i][k] - p[0][k]) as f64;
+    d(1, 0) * d(2, 1) - d(1, 1) * d(2, 0) < 0.0
+}
+
+/// Light on a face: the mean of its corners'.
+fn lit_of(c: &[Corner; 3]) -> f32 {
+    (c[0].lit + c[1].lit + c[2].lit) / 3.0
+}
+
+/// Perceived brightness of a colour, 0-255.
+fn gray(colour: u32) -> u32 {
+    let (r, g, b) = ((colour >> 16) & 0xff, (colour >> 8) & 0xff, colour & 0xff);
+    (r * 77 + g * 150 + b * 29) >> 8
+}

@@ -1,0 +1,154 @@
+//! Projection of grid points to the screen, fitted to a frame.
+//!
+//! Grid coordinates: column `gx` left to right, row `gy` back to front, both
+//! in grid steps; heights `z` in the field's own units, with
+//! `Heightfield::extent` giving the grid's width in those units, so relief is
+//! drawn at its true scale.
+
+use glam::{Vec2, Vec3};
+
+use crate::settings::ViewKind;
+
+/// Sine and cosine of the classic view's tilt: the grid is tipped back 70
+/// degrees about the x axis (seed 000's `xTh = -1.396`). Written out rather
+/// than computed so no platform's `sin` can move a pixel.
+const TILT_SIN_COS: (f32, f32) = (0.939_692_6, 0.342_020_15);
+/// Seed 000's shear: each row forward moves half a step to the left, which
+/// turns the square into a parallelogram seen from the front right.
+const SHEAR: f32 = 0.5;
+/// Empty border around the fitted mountain, as a fraction of each side.
+const MARGIN: f32 = 0.04;
+
+/// A projection fitted to one frame size.
+#[derive(Debug, Clone)]
+pub struct View {
+    cell: f32,
+    scale: f32,
+    offset: Vec2,
+    camera: Option<Camera>,
+    size: usize,
+    /// Sine and cosine of the tilt.
+    tilt: (f32, f32),
+}
+
+/// The single-point perspective camera, in world units.
+#[derive(Debug, Clone, Copy)]
+struct Camera {
+    eye: Vec3,
+    up: Vec3,
+    forward: Vec3,
+    near: f32,
+}
+
+impl Camera {
+    /// In front of the mountain's middle, above it, looking down at its centre.
+    fn new(extent: f32, zmax: f32) -> Self {
+        let eye = Vec3::new(0.5 * extent, 1.75 * extent, 0.4 * extent + 0.8 * zmax);
+        let target = Vec3::new(0.5 * extent, 0.45 * extent, 0.0);
+        let forward = (target - eye).normalize();
+        let up = (Vec3::Z - forward * forward.z).normalize();
+        Camera {
+            eye,
+            up,
+            forward,
+            near: 1e-3 * extent,
+        }
+    }
+
+    /// Unscaled screen position (x right, y down).
+    #[inline]
+    fn project(&self, p: Vec3) -> Vec2 {
+        let d = p - self.eye;
+        let depth = d.dot(self.forward).max(self.near);
+        Vec2::new(d.x / depth, -d.dot(self.up) / depth)
+    }
+}
+
+impl View {
+    /// Fits a `size` x `size` grid `extent` units wide, with heights up to
+    /// `zmax` above sea level, into a `width` x `height` frame.
+    pub fn new(
+        kind: ViewKind,
+        size: usize,
+        extent: f32,
+        zmax: f32,
+        width: u32,
+        height: u32,
+    ) -> Self {
+        let steps = size.saturating_sub(1).max(1) as f32;
+        let extent = if extent.is_finite() && extent > 0.0 {
+            extent
+        } else {
+            steps
+        };
+        let zmax = if zmax.is_finite() { zmax.max(0.0) } else { 0.0 };
+        let camera = (kind == ViewKind::Perspective).then(|| Camera::new(extent, zmax));
+        let mut view = View {
+            cell: extent / steps,
+            scale: 1.0,
+            offset: Vec2::ZERO,
+            camera,
+            size,
+            tilt: TILT_SIN_COS,
+        };
+        view.fit(steps, zmax, width as f32, height as f32);
+        view
+    }
+
+    /// Chooses scale and offset so the box holding the mountain fills the frame.
+    fn fit(&mut self, steps: f32, zmax: f32, width: f32, height: f32) {
+        let mut lo = Vec2::splat(f32::INFINITY);
+        let mut hi = Vec2::splat(f32::NEG_INFINITY);
+        for corner in 0..8 {
+            let gx = if corner & 1 == 0 { 0.0 } else { steps };
+            let gy = if corner & 2 == 0 { 0.0 } else { steps };
+            let z = if corner & 4 == 0 { 0.0 } else { zmax };
+            let p = self.unscaled(gx, gy, z);
+            lo = lo.min(p);
+            hi = hi.max(p);
+        }
+        let span = (hi - lo).max(Vec2::splat(1e-6));
+        let room = Vec2::new(width, height) * (1.0 - 2.0 * MARGIN);
+        let scale = (room.x / span.x).min(room.y / span.y);
+        self.scale = if scale.is_finite() && scale > 0.0 {
+            scale
+        } else {
+            1.0
+        };
+        let centre = (lo + hi) * 0.5 * self.scale;
+        self.offset = Vec2::new(width, height) * 0.5 - centre;
+    }
+
+    /// Screen position before fitting.
+    #[inline]
+    fn unscaled(&self, gx: f32, gy: f32, z: f32) -> Vec2 {
+        let (x, y) = (gx * self.cell, gy * self.cell);
+        match &self.camera {
+            Some(cam) => cam.project(Vec3::new(x, y, z)),
+            None => {
+                let (sin, cos) = self.tilt;
+                Vec2::new(x - SHEAR * y, y * cos - z * sin)
+            }
+        }
+    }
+
+    /// Pixel position of grid point (`gx`, `gy`) at height `z`.
+    #[inline]
+    pub fn project(&self, gx: f32, gy: f32, z: f32) -> Vec2 {
+        self.offset + self.scale * self.unscaled(gx, gy, z)
+    }
+
+    /// Grid column the perspective camera stands in front of (the view is
+    /// drawn from the outside towards it); `None` for the oblique view, which
+    /// is seen from the right and drawn left to right.
+    pub fn camera_column(&self) -> Option<f32> {
+        self.camera
+            .map(|c| c.eye.x / self.cell)
+            .filter(|_| self.size > 0)
+    }
+
+    /// Width of one grid step in height units.
+    pub fn cell(&self) -> f32 {
+        self.cell
+    }
+}

@@ -1,0 +1,128 @@
+//! Skirts: the cut faces along the right and front edges, down to sea level.
+
+use glam::{Vec2, Vec3};
+use mountains::render::palette::Palette;
+use mountains::render::view::View;
+use mountains::render::{Frame, render_full};
+use mountains::settings::{Settings, ViewKind};
+use mountains::terrain::Heightfield;
+
+const H: f32 = 20.0;
+
+fn plateau() -> Heightfield {
+    let mut f = Heightfield::flat(4, 160.0);
+    f.heights_mut().fill(H);
+    f
+}
+
+/// Whether `p` lies inside the quadrilateral `q` (convex, any winding),
+/// at least `margin` pixels from its sides.
+fn inside(q: [Vec2; 4], p: Vec2, margin: f32) -> bool {
+    let side = |a: Vec2, b: Vec2| {
+        let d = (b - a).normalize();
+        (p - a).perp_dot(d)
+    };
+    let s: Vec<f32> = (0..4).map(|i| side(q[i], q[(i + 1) % 4])).collect();
+    s.iter().all(|&v| v > margin) || s.iter().all(|&v| v < -margin)
+}
+
+fn render(field: &Heightfield, view: ViewKind, w: u32, h: u32) -> (Frame, View, Palette) {
+    let s = Settings {
+        view,
+        ..Settings::default()
+    };
+    let mut frame = Frame::new(w, h).unwrap();
+    render_full(field, &s, &mut frame);
+    let zmax = field.max().max(0.0);
+    let v = View::new(view, field.size(), field.extent(), zmax, w, h);
+    (frame, v, Palette::new(&s, field))
+}
+
+/// Counts pixels inside `q` and checks they all have `colour`.
+fn check_face(frame: &Frame, q: [Vec2; 4], colour: u32, what: &str) -> usize {
+    let (w, h) = (frame.width(), frame.height());
+    let mut n = 0;
+    for y in 0..h {
+        for x in 0..w {
+            if inside(q, Vec2::new(x as f32 + 0.5, y as f32 + 0.5), 1.0) {
+                let c = frame.pixels()[(y * w + x) as usize];
+                assert_eq!(c, colour, "{what}: pixel ({x}, {y})");
+                n += 1;
+            }
+        }
+    }
+    n
+}
+
+#[test]
+fn a_plateau_shows_its_front_and_right_cut_faces() {
+    let f = plateau();
+    let last = (f.size() - 1) as f32;
+    let (frame, v, palette) = render(&f, ViewKind::Oblique, 320, 240);
+    let front = [
+        v.project(0.0, last, H),
+        v.project(last, last, H),
+        v.project(last, last, 0.0),
+        v.project(0.0, last, 0.0),
+    ];
+    let n = check_face(
+        &frame,
+        front,
+        palette.skirt(H / 2.0, Vec3::NEG_Y),
+        "front skirt",
+    );
+    assert!(n > 200, "front skirt too small: {n} pixels");
+    let right = [
+        v.project(last, 0.0, H),
+        v.project(last, last, H),
+        v.project(last, last, 0.0),
+        v.project(last, 0.0, 0.0),
+    ];
+    let n = check_face(
+        &frame,
+        right,
+        palette.skirt(H / 2.0, Vec3::X),
+        "right skirt",
+    );
+    assert!(n > 100, "right skirt too small: {n} pixels");
+}
+
+#[test]
+fn perspective_shows_the_front_cut_face() {
+    let f = plateau();
+    let last = (f.size() - 1) as f32;
+    let (frame, v, palette) = render(&f, ViewKind::Perspective, 320, 240);
+    let front = [
+        v.project(0.0, last, H),
+        v.project(last, last, H),
+        v.project(last, last, 0.0),
+        v.project(0.0, last, 0.0),
+    ];
+    let n = check_face(
+        &frame,
+        front,
+        palette.skirt(H / 2.0, Vec3::NEG_Y),
+        "front skirt",
+    );
+    assert!(n > 200, "front skirt too small: {n} pixels");
+}
+
+#[test]
+fn no_cut_face_below_the_sea() {
+    // Sunk below sea level: all water, nothing hangs below the sea plane.
+    let mut f = Heightfield::flat(4, 160.0);
+    f.heights_mut().fill(-H);
+    let (frame, v, palette) = render(&f, ViewKind::Oblique, 320, 240);
+    let last = (f.size() - 1) as f32;
+    let below = v.project(last * 0.5, last, 0.0).y.ceil() as u32 + 2;
+    let w = frame.width();
+    for y in below..frame.height() {
+        for x in 0..w {
+            assert_eq!(
+                frame.pixels()[(y * w + x) as usize],
+                palette.sky(),
+                "pixel ({x}, {y}) below the sea"
+            );
+        }
+    }
+}
