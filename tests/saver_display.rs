@@ -355,3 +355,57 @@ fn display_window_without_auto_redraw_holds_until_n() {
         x.title(window) != first
     });
 }
+
+/// Decodes an 8-bit RGB PNG into 0x00RRGGBB pixels.
+fn read_rgb_png(path: &std::path::Path) -> Vec<u32> {
+    let file = std::io::BufReader::new(std::fs::File::open(path).unwrap());
+    let mut reader = png::Decoder::new(file).read_info().unwrap();
+    let mut buf = vec![0; reader.output_buffer_size().unwrap()];
+    let info = reader.next_frame(&mut buf).unwrap();
+    assert_eq!(info.color_type, png::ColorType::Rgb);
+    buf[..info.buffer_size()]
+        .chunks_exact(3)
+        .map(|c| u32::from(c[0]) << 16 | u32::from(c[1]) << 8 | u32::from(c[2]))
+        .collect()
+}
+
+#[test]
+fn display_window_id_holds_exactly_the_headless_render() {
+    let Some(x) = Xvfb::start(640, 480, &[]) else {
+        return;
+    };
+    let dir = TempDir::new("same-as-render");
+    let png = dir.0.join("render.png");
+    let status = std::process::Command::new(env!("CARGO_BIN_EXE_mountains"))
+        .args([
+            "render",
+            "-o",
+            arg(&png),
+            "--size",
+            "320x200",
+            "--set",
+            "seed=5",
+        ])
+        .env("XDG_CONFIG_HOME", dir.0.join("config"))
+        .status()
+        .unwrap();
+    assert!(status.success());
+    let expected = read_rgb_png(&png);
+    let window = x.create_window(320, 200);
+    let id = format!("0x{window:x}");
+    let args = [
+        "--window-id",
+        &id,
+        "--set",
+        "seed=5",
+        "--set",
+        "pause_seconds=30",
+    ];
+    let mut saver = Saver::start(&x, "same-as-render", &args, &[]);
+    // The hold starts after 0.5 s of drawing; the last strips must be on
+    // screen during it, not only when the next mountain starts.
+    let took = poll(&mut saver, "the finished mountain during the hold", || {
+        x.grab(window, 320, 200) == expected
+    });
+    eprintln!("same as render: on screen after {took:?}");
+}

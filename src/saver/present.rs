@@ -158,7 +158,12 @@ fn present_soft<W: HasWindowHandle + HasDisplayHandle>(
         y: rect.y0,
         width: NonZeroU32::new(rect.x1 - rect.x0).unwrap_or(w),
         height: NonZeroU32::new(rect.y1 - rect.y0).unwrap_or(h),
-    }])
+    }])?;
+    // softbuffer's X11 backend leaves the image request in the connection's
+    // output buffer until the next `buffer_mut` waits for it. On a connection
+    // nobody else flushes (a foreign window's), the last frame before a hold
+    // would stay unsent for the whole hold. Waiting here sends it now.
+    surface.buffer_mut().map(drop)
 }
 
 fn clip(damage: Rect, frame: &Frame) -> Rect {

@@ -338,6 +338,20 @@ mod tests {
     }
 
     #[test]
+    fn after_a_resize_the_redrawn_mountain_is_held() {
+        let t0 = Instant::now();
+        let mut show = Show::new(small_settings(), None, pacing(), (64, 48), t0);
+        show.tick(t0 + Duration::from_millis(1000));
+        let t1 = t0 + Duration::from_millis(1200);
+        show.resize((80, 60), t1);
+        assert!(
+            show.tick(t1).is_empty(),
+            "drew again right after the resize"
+        );
+        assert_eq!(show.wake_at(t1), Some(t1 + Duration::from_secs(2)));
+    }
+
+    #[test]
     fn zero_size_has_no_frame_and_does_not_panic() {
         let t0 = Instant::now();
         let mut show = Show::new(small_settings(), None, pacing(), (0, 0), t0);

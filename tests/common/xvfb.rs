@@ -278,14 +278,15 @@ pub struct Saver {
 
 impl Saver {
     /// Runs `mountains ARGS` on `xvfb` with a private home (no user config,
-    /// logs and saves in a temp dir), quick pacing, and `env` added.
+    /// logs and saves in a temp dir), quick pacing (overridable), and `env` added.
     pub fn start(xvfb: &Xvfb, name: &str, args: &[&str], env: &[(&str, &str)]) -> Saver {
         let home = TempDir::new(name);
         let stderr = home.0.join("stderr.txt");
         let mut command = Command::new(env!("CARGO_BIN_EXE_mountains"));
         command
-            .args(args)
+            // Before the test's own arguments, so that a test can override them.
             .args(["--set", "draw_seconds=0.5", "--set", "pause_seconds=1"])
+            .args(args)
             .env("DISPLAY", xvfb.display())
             .env("HOME", &home.0)
             .env("XDG_CONFIG_HOME", home.0.join("config"))
