@@ -36,10 +36,10 @@ pub fn slide_uses_folder(slide: u64) -> bool {
 /// alternate slides when one is set and holds a readable PNG, else generated.
 pub fn next_mountain(settings: &Settings, slide: u64) -> Mountain {
     let folder = settings.heightmaps_dir.as_deref().filter(|d| !d.is_empty());
-    if let Some(dir) = folder.filter(|_| slide_uses_folder(slide)) {
-        if let Some(mountain) = random_heightmap(Path::new(dir)) {
-            return mountain;
-        }
+    if let Some(dir) = folder.filter(|_| slide_uses_folder(slide))
+        && let Some(mountain) = random_heightmap(Path::new(dir))
+    {
+        return mountain;
     }
     Mountain::generate(settings)
 }
