@@ -369,20 +369,18 @@ fn read_rgb_png(path: &std::path::Path) -> Vec<u32> {
         .collect()
 }
 
-#[test]
-fn display_window_id_holds_exactly_the_headless_render() {
-    let Some(x) = Xvfb::start(640, 480, &[]) else {
-        return;
-    };
-    let dir = TempDir::new("same-as-render");
+/// What `mountains render` makes for seed 5 at `w` x `h`.
+fn headless_render(w: u16, h: u16) -> Vec<u32> {
+    let dir = TempDir::new(&format!("render-{w}x{h}"));
     let png = dir.0.join("render.png");
+    let size = format!("{w}x{h}");
     let status = std::process::Command::new(env!("CARGO_BIN_EXE_mountains"))
         .args([
             "render",
             "-o",
             arg(&png),
             "--size",
-            "320x200",
+            &size,
             "--set",
             "seed=5",
         ])
@@ -390,7 +388,15 @@ fn display_window_id_holds_exactly_the_headless_render() {
         .status()
         .unwrap();
     assert!(status.success());
-    let expected = read_rgb_png(&png);
+    read_rgb_png(&png)
+}
+
+#[test]
+fn display_window_id_holds_exactly_the_headless_render() {
+    let Some(x) = Xvfb::start(640, 480, &[]) else {
+        return;
+    };
+    let expected = headless_render(320, 200);
     let window = x.create_window(320, 200);
     let id = format!("0x{window:x}");
     let args = [
@@ -408,4 +414,18 @@ fn display_window_id_holds_exactly_the_headless_render() {
         x.grab(window, 320, 200) == expected
     });
     eprintln!("same as render: on screen after {took:?}");
+}
+
+#[test]
+fn display_fullscreen_holds_exactly_the_headless_render() {
+    let Some(x) = Xvfb::start(640, 480, &[]) else {
+        return;
+    };
+    let expected = headless_render(640, 480);
+    let args = ["/s", "--set", "seed=5", "--set", "pause_seconds=30"];
+    let mut saver = Saver::start(&x, "fs-same-as-render", &args, &[]);
+    let took = poll(&mut saver, "the finished mountain on the screen", || {
+        x.grab_screen() == expected
+    });
+    eprintln!("fullscreen same as render: on screen after {took:?}");
 }
