@@ -2,27 +2,152 @@
 
 pub mod heightfield;
 pub mod heightmap;
+mod noise;
+mod normalize;
+mod params;
+mod square;
+mod subdivide;
+mod triangle;
 
 pub use heightfield::Heightfield;
 
-use crate::settings::Settings;
+use params::Params;
+use subdivide::{Audited, Job, Plain, Put};
+
+use crate::settings::{Generator, Settings};
 
 /// Builds the mountain the settings describe from one seed, bit for bit the
 /// same on every platform, build and thread count.
 ///
-/// STUB: a smooth dome; the terrain work replaces it.
+/// # Units
+/// Heights are in *height units*, sea level at 0, and
+/// [`Heightfield::extent`] is the width of the grid in the same units, so
+/// `height / extent` is the true slope. The extent depends only on the
+/// generator, never on the detail level: a detail change refines the same
+/// mountain (a point keeps its random value at every detail level, so a
+/// coarser grid is the finer one with points left out).
+/// - Square and Diamond (Mountain Terrain 3.0): the corners start within
+///   `±elevation/2` (100 by default) and cragginess adds up to about
+///   `±cragginess` more, so a default mountain spans roughly -90..90 over an
+///   extent of [`SQUARE_EXTENT`] (peaks about 15% of the width). `height`
+///   scales the relief by `height / 5`, so the default 5 leaves it as
+///   generated and cragginess still makes taller or flatter mountains.
+/// - Triangle (Fractal Mountain Climbing): the highest point is exactly
+///   `height * TRIANGLE_PEAK_PER_HEIGHT` (100 for the default 5) over an
+///   extent of [`TRIANGLE_EXTENT`] (20% of the width), after the contour
+///   power. If the sea is more than four times deeper than the land is high
+///   (a Bay profile, or a high sea level), the deepest point is put at
+///   `-4 * peak` instead and the land stays lower than `peak`.
+///
+/// # Sea level
+/// `settings.sea_level` raises the water line by that fraction of the
+/// field's relief (highest minus lowest point as generated, before contour
+/// and height scaling): `0` keeps the generator's own zero, `1` floods even
+/// the highest peak, `-1` drains even the deepest trough. Heights are then
+/// shifted so the water line is 0 in the output.
 pub fn generate(settings: &Settings, seed: u64) -> Heightfield {
-    let n = settings.grid_exponent();
-    let mut field = Heightfield::flat(n, 400.0);
+    generate_with_threads(settings, seed, default_threads())
+}
+
+/// [`generate`] on at most `threads` threads (0 counts as 1). The result
+/// is the same for every thread count.
+pub fn generate_with_threads(settings: &Settings, seed: u64, threads: usize) -> Heightfield {
+    let params = Params::from_settings(settings);
+    let threads = threads.max(1);
+    let mut field = Heightfield::flat(params.exponent, params.extent());
+    subdivide_all(&mut field, &params, seed, threads, &Plain);
+    finish(&mut field, &params, threads);
+    field
+}
+
+/// Width of the grid of the square generators, in height units.
+pub const SQUARE_EXTENT: f32 = 400.0;
+/// Width of the grid of the triangle generator, in height units.
+pub const TRIANGLE_EXTENT: f32 = 500.0;
+/// Height units of the triangle generator's highest point per step of
+/// `settings.height`.
+pub const TRIANGLE_PEAK_PER_HEIGHT: f32 = 20.0;
+
+/// What [`generate_audited`] found out about one run of a generator.
+#[derive(Debug, Clone)]
+pub struct Audit {
+    /// The finished field: bit for bit what [`generate`] returns.
+    pub field: Heightfield,
+    /// Stores onto a grid point that was already set: each one could
+    /// open a crack between the triangles that share the point.
+    pub rewrites: usize,
+    /// Grid points left unset (or computed from an unset point).
+    pub unset: usize,
+}
+
+/// Runs [`generate`] with every grid write checked, for tests: the field
+/// starts as NaN, a store onto a point that is no longer NaN counts as a
+/// rewrite, and points still NaN after the subdivision count as unset.
+/// Slower than `generate`; the generator code it runs is the same.
+pub fn generate_audited(settings: &Settings, seed: u64, threads: usize) -> Audit {
+    let params = Params::from_settings(settings);
+    let threads = threads.max(1);
+    let mut field = Heightfield::flat(params.exponent, params.extent());
+    field.heights_mut().fill(f32::NAN);
+    let audit = Audited::default();
+    subdivide_all(&mut field, &params, seed, threads, &audit);
+    let unset = field.heights().iter().filter(|h| h.is_nan()).count();
+    finish(&mut field, &params, threads);
+    Audit {
+        field,
+        rewrites: audit.rewrites.into_inner(),
+        unset,
+    }
+}
+
+/// Threads `generate` uses: the machine's, up to 8 (the work is memory-bound).
+fn default_threads() -> usize {
+    std::thread::available_parallelism().map_or(1, |n| n.get().min(8))
+}
+
+/// Sets the starting points and runs the chosen generator's subdivision.
+fn subdivide_all<P: Put>(field: &mut Heightfield, p: &Params, seed: u64, threads: usize, put: &P) {
     let size = field.size();
-    let phase = (seed % 7) as f32;
-    for y in 0..size {
-        for x in 0..size {
-            let u = x as f32 / (size - 1) as f32 - 0.5;
-            let v = y as f32 / (size - 1) as f32 - 0.5;
-            let h = 60.0 * (1.0 - 4.0 * (u * u + v * v)) + 5.0 * (u * 20.0 + phase).sin();
-            field.set(x, y, h - 10.0);
+    let noise = noise::Noise::new(seed, p.exponent);
+    let heights = field.heights_mut();
+    match p.generator {
+        Generator::Square | Generator::Diamond => {
+            let ordering = if p.generator == Generator::Square {
+                square::Ordering::Midpoint
+            } else {
+                square::Ordering::Diamond
+            };
+            let rule = square::Square {
+                ordering,
+                cragginess: p.cragginess,
+            };
+            rule.set_corners(heights, size, p.elevation, &noise, put);
+            let job = Job {
+                rule: &rule,
+                put,
+                noise,
+                threads,
+            };
+            subdivide::subdivide(heights, size, 0, &job);
+        }
+        Generator::Triangle => {
+            let rule = triangle::Triangle::new(p.roughness, p.profile);
+            rule.first_level(heights, size, &noise, put);
+            let job = Job {
+                rule: &rule,
+                put,
+                noise,
+                threads,
+            };
+            subdivide::subdivide(heights, size, 1, &job);
         }
     }
-    field
+}
+
+/// Applies sea level, contour and height to the subdivided field.
+fn finish(field: &mut Heightfield, p: &Params, threads: usize) {
+    match p.generator {
+        Generator::Square | Generator::Diamond => normalize::finish_square(field, p, threads),
+        Generator::Triangle => normalize::finish_triangle(field, p, threads),
+    }
 }
