@@ -27,11 +27,13 @@ use crate::settings::{Generator, Settings};
 /// mountain (a point keeps its random value at every detail level, so a
 /// coarser grid is the finer one with points left out).
 /// - Square and Diamond (Mountain Terrain 3.0): the corners start within
-///   `±elevation/2` (100 by default) and cragginess adds up to about
-///   `±cragginess` more, so a default mountain spans roughly -90..90 over an
-///   extent of [`SQUARE_EXTENT`] (peaks about 15% of the width). `height`
-///   scales the relief by `height / 5`, so the default 5 leaves it as
-///   generated and cragginess still makes taller or flatter mountains.
+///   `±elevation/2` (elevation 100 by default) and cragginess adds at most
+///   `±cragginess` more. With the defaults (cragginess 96) the highest peak
+///   averages about 45 above the generator's zero (30-70 by seed) and the
+///   relief about 90, over an extent of [`SQUARE_EXTENT`]: peaks 10-15% of
+///   the width. `height` scales the relief by `height / 5`, so the default
+///   5 leaves it as generated and cragginess still makes taller or flatter
+///   mountains, as in Mountain Terrain.
 /// - Triangle (Fractal Mountain Climbing): the highest point is exactly
 ///   `height * TRIANGLE_PEAK_PER_HEIGHT` (100 for the default 5) over an
 ///   extent of [`TRIANGLE_EXTENT`] (20% of the width), after the contour
@@ -40,11 +42,14 @@ use crate::settings::{Generator, Settings};
 ///   `-4 * peak` instead and the land stays lower than `peak`.
 ///
 /// # Sea level
-/// `settings.sea_level` raises the water line by that fraction of the
-/// field's relief (highest minus lowest point as generated, before contour
-/// and height scaling): `0` keeps the generator's own zero, `1` floods even
-/// the highest peak, `-1` drains even the deepest trough. Heights are then
-/// shifted so the water line is 0 in the output.
+/// `settings.sea_level` moves the water line by a fraction of the relief on
+/// its side of the generator's zero: `0.5` raises it halfway from the
+/// generator's zero to the highest point, `1` to the highest point (all
+/// sea), `-0.5` lowers it halfway to the lowest point, `-1` to the lowest
+/// point (no sea). For the triangle generator this happens before the
+/// contour and height scaling, so the highest point above the new water
+/// line still gets the chosen height. Heights are then shifted so the
+/// water line is 0 in the output.
 pub fn generate(settings: &Settings, seed: u64) -> Heightfield {
     generate_with_threads(settings, seed, default_threads())
 }
@@ -127,6 +132,7 @@ fn subdivide_all<P: Put>(field: &mut Heightfield, p: &Params, seed: u64, threads
                 put,
                 noise,
                 threads,
+                parallel_work: subdivide::PARALLEL_WORK,
             };
             subdivide::subdivide(heights, size, 0, &job);
         }
@@ -138,6 +144,7 @@ fn subdivide_all<P: Put>(field: &mut Heightfield, p: &Params, seed: u64, threads
                 put,
                 noise,
                 threads,
+                parallel_work: subdivide::PARALLEL_WORK,
             };
             subdivide::subdivide(heights, size, 1, &job);
         }

@@ -21,10 +21,21 @@ pub(crate) fn finish_square(field: &mut Heightfield, p: &Params, threads: usize)
         0.0
     } else {
         let (lo, hi) = min_max(field.heights(), threads);
-        p.sea_level * (hi - lo)
+        water_line(p.sea_level, lo, hi)
     };
     if shift != 0.0 || scale != 1.0 {
         map_in_place(field.heights_mut(), threads, |h| (h - shift) * scale);
+    }
+}
+
+/// Where `sea_level` puts the water in a field spanning `lo..=hi`: that
+/// fraction of the way from the generator's zero up to the highest point
+/// (`sea_level > 0`) or down to the lowest (`sea_level < 0`).
+fn water_line(sea_level: f32, lo: f32, hi: f32) -> f32 {
+    if sea_level >= 0.0 {
+        sea_level * hi.max(0.0)
+    } else {
+        -sea_level * lo.min(0.0)
     }
 }
 
@@ -33,7 +44,7 @@ pub(crate) fn finish_square(field: &mut Heightfield, p: &Params, threads: usize)
 /// highest point is `height * TRIANGLE_PEAK_PER_HEIGHT`.
 pub(crate) fn finish_triangle(field: &mut Heightfield, p: &Params, threads: usize) {
     let (lo, hi) = min_max(field.heights(), threads);
-    let shift = p.sea_level * (hi - lo);
+    let shift = water_line(p.sea_level, lo, hi);
     let (top, bottom) = (hi - shift, lo - shift);
     let mut reference = top.max(-bottom / DEPTH_CAP);
     if !(reference > 0.0 && reference.is_finite()) {

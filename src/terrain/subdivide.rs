@@ -146,11 +146,13 @@ pub(crate) struct Job<'a, R, P> {
     pub(crate) noise: Noise,
     /// Most threads a level may use.
     pub(crate) threads: usize,
+    /// Least work (lattice points x grid columns) worth more than one
+    /// thread: below it, starting threads costs more than it saves.
+    pub(crate) parallel_work: usize,
 }
 
-/// Levels with less work than this many lattice points x grid columns run
-/// on one thread: below it, starting threads costs more than it saves.
-const PARALLEL_WORK: usize = 1 << 17;
+/// The usual [`Job::parallel_work`].
+pub(crate) const PARALLEL_WORK: usize = 1 << 17;
 
 /// Runs the levels from `first_depth` on `heights`, a row-major square of
 /// `size` points a side whose coarser points are already set.
@@ -182,7 +184,7 @@ pub(crate) fn level<R: Rule>(last: usize, depth: u32, rule: &R) -> Option<Level>
 /// One level: bands of rows in parallel, then the edge rows between bands.
 fn run_level<R: Rule, P: Put>(heights: &mut [f32], size: usize, lv: &Level, job: &Job<'_, R, P>) {
     let squares = lv.squares();
-    let bands = if squares * size >= PARALLEL_WORK {
+    let bands = if squares * size >= job.parallel_work {
         job.threads.clamp(1, squares)
     } else {
         1
@@ -418,4 +420,89 @@ fn fill_edge_row<R: Rule, P: Put>(
     };
     job.rule.edge_row(rows, offsets, job.put);
     scatter_odd(&s.row, h, row);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A rule that writes every point of its rows from the row mean, with
+    /// faults switched on by flags, to show the audit catches them.
+    struct Faulty {
+        write_twice: bool,
+        skip_one: bool,
+    }
+
+    impl Rule for Faulty {
+        fn amplitude(&self, _depth: u32) -> f32 {
+            1.0
+        }
+
+        fn centre_row<P: Put>(&self, rows: CentreRows<'_>, offsets: &[f32], put: &P) {
+            let start = usize::from(self.skip_one);
+            for (k, slot) in rows.row.iter_mut().enumerate().skip(start) {
+                put.put(slot, rows.above[k & !1] + offsets[k]);
+            }
+            if self.write_twice {
+                put.put(&mut rows.row[0], 0.0);
+            }
+        }
+
+        fn edge_row<P: Put>(&self, rows: EdgeRows<'_>, offsets: &[f32], put: &P) {
+            edge_row_of_ends(rows.row, offsets, put);
+        }
+    }
+
+    fn audit(rule: &Faulty, threads: usize) -> (usize, usize, Vec<f32>) {
+        let size = 33;
+        let mut heights = vec![f32::NAN; size * size];
+        for i in [0, size - 1, size * (size - 1), size * size - 1] {
+            heights[i] = 0.0;
+        }
+        let put = Audited::default();
+        let job = Job {
+            rule,
+            put: &put,
+            noise: Noise::new(1, 5),
+            threads,
+            parallel_work: 0,
+        };
+        subdivide(&mut heights, size, 0, &job);
+        let unset = heights.iter().filter(|h| h.is_nan()).count();
+        (put.rewrites.into_inner(), unset, heights)
+    }
+
+    #[test]
+    fn a_sound_rule_passes_the_audit_on_any_thread_count() {
+        let rule = Faulty {
+            write_twice: false,
+            skip_one: false,
+        };
+        let (rewrites, unset, one) = audit(&rule, 1);
+        assert_eq!((rewrites, unset), (0, 0));
+        let (_, _, many) = audit(&rule, 4);
+        let bits = |v: &[f32]| v.iter().map(|h| h.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(&one), bits(&many));
+    }
+
+    #[test]
+    fn the_audit_counts_a_second_write() {
+        let rule = Faulty {
+            write_twice: true,
+            skip_one: false,
+        };
+        let (rewrites, _, _) = audit(&rule, 1);
+        // One extra store per centre row of every level: 1 + 2 + 4 + 8 + 16.
+        assert_eq!(rewrites, 31);
+    }
+
+    #[test]
+    fn the_audit_sees_a_point_left_unset() {
+        let rule = Faulty {
+            write_twice: false,
+            skip_one: true,
+        };
+        let (_, unset, _) = audit(&rule, 1);
+        assert!(unset > 0);
+    }
 }
