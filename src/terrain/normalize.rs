@@ -167,7 +167,7 @@ impl PowTable {
         const FRACTION_BITS: u32 = 23 - MANTISSA_STEPS.trailing_zeros();
         let bits = x.to_bits();
         let field = ((bits >> 23) & 0xFF) as usize;
-        if !(x > 0.0) || field == 0 {
+        if x.is_nan() || x <= 0.0 || field == 0 {
             return 0.0;
         }
         let mantissa = bits & 0x7F_FFFF;
@@ -214,7 +214,7 @@ fn exp2_stable(y: f64) -> f64 {
     // ln(2)^k / k!: the Taylor series of 2^f.
     const C: [f64; 9] = [
         1.0,
-        0.693_147_180_559_945_3,
+        std::f64::consts::LN_2,
         0.240_226_506_959_100_72,
         0.055_504_108_664_821_58,
         0.009_618_129_107_628_477,
