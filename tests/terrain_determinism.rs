@@ -121,7 +121,7 @@ fn known_values_stay_put_on_every_platform() {
     let got: Vec<u32> = sample.iter().map(|h| h.to_bits()).collect();
     assert_eq!(
         got,
-        [1109571776, 3226871784, 1105436364, 3245871893],
+        [3239386368, 1100823300, 3238858001, 1097567543],
         "values {sample:?}"
     );
 }
@@ -138,7 +138,7 @@ fn known_triangle_values_with_contour_stay_put_on_every_platform() {
     let got: Vec<u32> = sample.iter().map(|h| h.to_bits()).collect();
     assert_eq!(
         got,
-        [1116935486, 3248308669, 1109204192, 3250028810],
+        [1112814292, 1103876290, 1037357673, 3254833857],
         "values {sample:?}"
     );
 }

@@ -61,11 +61,17 @@ impl Noise {
         let row_key = self.row_key(y);
         let first = ((first as u64) << self.shift) as u32;
         let stride = ((stride as u64) << self.shift) as u32;
-        let mut column = first;
+        // The top 24 bits, signed, convert to f32 exactly; `step` is `scale`
+        // times a power of two, so `level * step` is `scale * value` rounded
+        // once: the same bits on every platform.
+        let step = scale * (1.0 / (1u32 << 23) as f32);
+        // The hash input `row_key + column * GOLDEN32`, stepped by addition.
+        let mut input = row_key.wrapping_add(first.wrapping_mul(GOLDEN32));
+        let increment = stride.wrapping_mul(GOLDEN32);
         for o in out.iter_mut() {
-            let bits = lowbias32(row_key.wrapping_add(column.wrapping_mul(GOLDEN32)));
-            *o = scale * unit(bits);
-            column = column.wrapping_add(stride);
+            let bits = lowbias32(input);
+            *o = ((bits as i32) >> 8) as f32 * step;
+            input = input.wrapping_add(increment);
         }
     }
 
@@ -87,14 +93,6 @@ fn lowbias32(mut x: u32) -> u32 {
     x ^= x >> 15;
     x = x.wrapping_mul(0x846C_A68B);
     x ^ (x >> 16)
-}
-
-/// The top 24 bits of `bits` as a value in `[-1, 1)`. 24 bits convert to
-/// f32 exactly and the scaling is by a power of two, so the value is the
-/// same on every platform.
-#[inline(always)]
-fn unit(bits: u32) -> f32 {
-    ((bits >> 8) as i32 - (1 << 23)) as f32 * (1.0 / (1u32 << 23) as f32)
 }
 
 #[cfg(test)]
