@@ -2,7 +2,7 @@
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use mountains::settings::{Generator, Settings};
-use mountains::terrain::{generate, generate_with_threads};
+use mountains::terrain::{generate, generate_into, generate_with_threads};
 
 fn settings(generator: Generator, detail: u32) -> Settings {
     Settings {
@@ -46,5 +46,17 @@ fn contour(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, generators, one_thread, contour);
+fn reused_field(c: &mut Criterion) {
+    let mut group = c.benchmark_group("generate_into");
+    group.sample_size(10);
+    for generator in [Generator::Diamond, Generator::Triangle] {
+        let s = settings(generator, 12);
+        let mut field = generate(&s, 1);
+        let id = BenchmarkId::new(format!("{generator:?}"), 4097);
+        group.bench_function(id, |b| b.iter(|| generate_into(&s, 7, &mut field)));
+    }
+    group.finish();
+}
+
+criterion_group!(benches, generators, one_thread, contour, reused_field);
 criterion_main!(benches);

@@ -3,7 +3,9 @@
 
 mod terrain_common;
 
-use mountains::terrain::{generate, generate_audited, generate_with_threads};
+use mountains::terrain::{
+    Heightfield, generate, generate_audited, generate_into, generate_with_threads,
+};
 use terrain_common::{GENERATORS, PROFILES, settings};
 
 fn bits(heights: &[f32]) -> Vec<u32> {
@@ -141,4 +143,26 @@ fn known_triangle_values_with_contour_stay_put_on_every_platform() {
         [1112814292, 1103876290, 1037357673, 3254833857],
         "values {sample:?}"
     );
+}
+
+#[test]
+fn generating_into_an_old_field_gives_the_same_bits() {
+    // A field full of another mountain (and of another generator's extent)
+    // must come out exactly as a fresh one: every point is overwritten.
+    let mut field = generate(&settings(mountains::settings::Generator::Triangle, 7), 1);
+    for generator in GENERATORS {
+        let s = settings(generator, 7);
+        generate_into(&s, 99, &mut field);
+        let fresh = generate(&s, 99);
+        assert_eq!(
+            bits(field.heights()),
+            bits(fresh.heights()),
+            "{generator:?}"
+        );
+        assert_eq!(field.extent(), fresh.extent());
+    }
+    let mut small = Heightfield::flat(4, 1.0);
+    let s = settings(mountains::settings::Generator::Diamond, 6);
+    generate_into(&s, 5, &mut small);
+    assert_eq!(bits(small.heights()), bits(generate(&s, 5).heights()));
 }
