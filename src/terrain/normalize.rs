@@ -71,9 +71,9 @@ pub(crate) fn min_max(heights: &[f32], threads: usize) -> (f32, f32) {
         let (mut lo, mut hi) = ([f32::INFINITY; 8], [f32::NEG_INFINITY; 8]);
         let mut lanes = chunk.chunks_exact(8);
         for c in &mut lanes {
-            for i in 0..8 {
-                lo[i] = if c[i] < lo[i] { c[i] } else { lo[i] };
-                hi[i] = if c[i] > hi[i] { c[i] } else { hi[i] };
+            for ((l, h), &v) in lo.iter_mut().zip(hi.iter_mut()).zip(c) {
+                *l = if v < *l { v } else { *l };
+                *h = if v > *h { v } else { *h };
             }
         }
         let rest = lanes.remainder().iter();

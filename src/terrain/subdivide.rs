@@ -171,7 +171,7 @@ pub(crate) fn subdivide<R: Rule, P: Put>(
 }
 
 /// Level `depth` of a grid whose last index is `last`, if it has new points.
-pub(crate) fn level<R: Rule>(last: usize, depth: u32, rule: &R) -> Option<Level> {
+fn level<R: Rule>(last: usize, depth: u32, rule: &R) -> Option<Level> {
     let step = last.checked_shr(depth)?;
     (step >= 2).then(|| Level {
         step,
