@@ -12,7 +12,7 @@ mod triangle;
 pub use heightfield::Heightfield;
 
 use params::Params;
-use subdivide::{Audited, Job, Plain, Put};
+use subdivide::{Audited, Extremes, Job, Plain, Put};
 
 use crate::settings::{Generator, Settings};
 
@@ -82,8 +82,8 @@ pub fn generate_into(settings: &Settings, seed: u64, field: &mut Heightfield) {
 /// Runs the generator and the finishing passes over `field`.
 fn fill(field: &mut Heightfield, params: &Params, seed: u64, threads: usize) {
     let threads = threads.max(1);
-    subdivide_all(field, params, seed, threads, &Plain);
-    finish(field, params, threads);
+    let extremes = subdivide_all(field, params, seed, threads, &Plain);
+    finish(field, params, threads, extremes);
 }
 
 /// Width of the grid of the square generators, in height units.
@@ -116,9 +116,9 @@ pub fn generate_audited(settings: &Settings, seed: u64, threads: usize) -> Audit
     let mut field = Heightfield::flat(params.exponent, params.extent());
     field.heights_mut().fill(f32::NAN);
     let audit = Audited::default();
-    subdivide_all(&mut field, &params, seed, threads, &audit);
+    let extremes = subdivide_all(&mut field, &params, seed, threads, &audit);
     let unset = field.heights().iter().filter(|h| h.is_nan()).count();
-    finish(&mut field, &params, threads);
+    finish(&mut field, &params, threads, extremes);
     Audit {
         field,
         rewrites: audit.rewrites.into_inner(),
@@ -131,8 +131,15 @@ fn default_threads() -> usize {
     std::thread::available_parallelism().map_or(1, |n| n.get().min(8))
 }
 
-/// Sets the starting points and runs the chosen generator's subdivision.
-fn subdivide_all<P: Put>(field: &mut Heightfield, p: &Params, seed: u64, threads: usize, put: &P) {
+/// Sets the starting points and runs the chosen generator's subdivision;
+/// returns the field's extremes if the subdivision saw them all.
+fn subdivide_all<P: Put>(
+    field: &mut Heightfield,
+    p: &Params,
+    seed: u64,
+    threads: usize,
+    put: &P,
+) -> Option<Extremes> {
     let size = field.size();
     let noise = noise::Noise::new(seed, p.exponent);
     let heights = field.heights_mut();
@@ -154,8 +161,10 @@ fn subdivide_all<P: Put>(field: &mut Heightfield, p: &Params, seed: u64, threads
                 noise,
                 threads,
                 parallel_work: subdivide::PARALLEL_WORK,
+                // Only a moved water line needs the extremes.
+                extremes: p.sea_level != 0.0,
             };
-            subdivide::subdivide(heights, size, 0, &job);
+            subdivide::subdivide(heights, size, 0, &job)
         }
         Generator::Triangle => {
             let rule = triangle::Triangle::new(p.roughness, p.profile);
@@ -166,16 +175,47 @@ fn subdivide_all<P: Put>(field: &mut Heightfield, p: &Params, seed: u64, threads
                 noise,
                 threads,
                 parallel_work: subdivide::PARALLEL_WORK,
+                extremes: true,
             };
-            subdivide::subdivide(heights, size, 1, &job);
+            subdivide::subdivide(heights, size, 1, &job)
         }
     }
 }
 
 /// Applies sea level, contour and height to the subdivided field.
-fn finish(field: &mut Heightfield, p: &Params, threads: usize) {
+fn finish(field: &mut Heightfield, p: &Params, threads: usize, extremes: Option<Extremes>) {
     match p.generator {
-        Generator::Square | Generator::Diamond => normalize::finish_square(field, p, threads),
-        Generator::Triangle => normalize::finish_triangle(field, p, threads),
+        Generator::Square | Generator::Diamond => {
+            normalize::finish_square(field, p, threads, extremes)
+        }
+        Generator::Triangle => normalize::finish_triangle(field, p, threads, extremes),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_subdivision_sees_the_true_extremes_when_asked() {
+        for generator in [Generator::Square, Generator::Diamond, Generator::Triangle] {
+            for (detail, sea_level) in [(4, 0.0), (7, 0.3), (10, 0.0), (10, -0.2)] {
+                for threads in [1, 2, 5] {
+                    let s = Settings {
+                        generator,
+                        detail,
+                        sea_level,
+                        ..Settings::default()
+                    };
+                    let params = Params::from_settings(&s);
+                    let mut field = Heightfield::flat(params.exponent, params.extent());
+                    let seen = subdivide_all(&mut field, &params, 17, threads, &Plain);
+                    let truth = normalize::min_max(field.heights(), 1);
+                    let wanted = generator == Generator::Triangle || sea_level != 0.0;
+                    let case = format!("{generator:?} {detail} {sea_level} {threads}");
+                    assert_eq!(seen, wanted.then_some(truth), "{case}");
+                }
+            }
+        }
     }
 }

@@ -4,6 +4,7 @@
 //! chunks for threads cannot change a single bit of the result.
 
 use super::params::Params;
+use super::subdivide::Extremes;
 use super::{Heightfield, TRIANGLE_PEAK_PER_HEIGHT};
 
 /// Fields smaller than this many points are processed on one thread.
@@ -14,14 +15,20 @@ const PARALLEL_POINTS: usize = 1 << 18;
 const DEPTH_CAP: f32 = 4.0;
 
 /// Square generators: moves the water line and scales the relief by
-/// `height / 5` (see `generate` for the units).
-pub(crate) fn finish_square(field: &mut Heightfield, p: &Params, threads: usize) {
+/// `height / 5` (see `generate` for the units). `extremes` are the field's,
+/// if already known.
+pub(crate) fn finish_square(
+    field: &mut Heightfield,
+    p: &Params,
+    threads: usize,
+    extremes: Option<Extremes>,
+) {
     let scale = p.height / 5.0;
     let shift = if p.sea_level == 0.0 {
         0.0
     } else {
-        let (lo, hi) = min_max(field.heights(), threads);
-        water_line(p.sea_level, lo, hi)
+        let e = extremes.unwrap_or_else(|| min_max(field.heights(), threads));
+        water_line(p.sea_level, e.lo, e.hi)
     };
     if shift != 0.0 || scale != 1.0 {
         map_in_place(field.heights_mut(), threads, |h| (h - shift) * scale);
@@ -41,9 +48,16 @@ fn water_line(sea_level: f32, lo: f32, hi: f32) -> f32 {
 
 /// Triangle generator: moves the water line, then seed 000's NormalizeMap:
 /// heights raised to the contour power (sign kept) and scaled so the
-/// highest point is `height * TRIANGLE_PEAK_PER_HEIGHT`.
-pub(crate) fn finish_triangle(field: &mut Heightfield, p: &Params, threads: usize) {
-    let (lo, hi) = min_max(field.heights(), threads);
+/// highest point is `height * TRIANGLE_PEAK_PER_HEIGHT`. `extremes` are
+/// the field's, if already known.
+pub(crate) fn finish_triangle(
+    field: &mut Heightfield,
+    p: &Params,
+    threads: usize,
+    extremes: Option<Extremes>,
+) {
+    let e = extremes.unwrap_or_else(|| min_max(field.heights(), threads));
+    let (lo, hi) = (e.lo, e.hi);
     let shift = water_line(p.sea_level, lo, hi);
     let (top, bottom) = (hi - shift, lo - shift);
     let mut reference = top.max(-bottom / DEPTH_CAP);
@@ -64,33 +78,14 @@ pub(crate) fn finish_triangle(field: &mut Heightfield, p: &Params, threads: usiz
     }
 }
 
-/// Lowest and highest value of `heights` (`(0, 0)` when empty).
-pub(crate) fn min_max(heights: &[f32], threads: usize) -> (f32, f32) {
-    let fold = |chunk: &[f32]| {
-        // Eight independent lanes, so the compiler can use SIMD min/max.
-        let (mut lo, mut hi) = ([f32::INFINITY; 8], [f32::NEG_INFINITY; 8]);
-        let mut lanes = chunk.chunks_exact(8);
-        for c in &mut lanes {
-            for ((l, h), &v) in lo.iter_mut().zip(hi.iter_mut()).zip(c) {
-                *l = if v < *l { v } else { *l };
-                *h = if v > *h { v } else { *h };
-            }
-        }
-        let rest = lanes.remainder().iter();
-        lo.iter()
-            .zip(&hi)
-            .map(|(&l, &h)| (l, h))
-            .chain(rest.map(|&h| (h, h)))
-            .fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), (l, h)| {
-                (lo.min(l), hi.max(h))
-            })
-    };
-    let parts: Vec<(f32, f32)> = if threads > 1 && heights.len() >= PARALLEL_POINTS {
+/// Lowest and highest value of `heights` (both 0 when empty).
+pub(crate) fn min_max(heights: &[f32], threads: usize) -> Extremes {
+    let parts: Vec<Extremes> = if threads > 1 && heights.len() >= PARALLEL_POINTS {
         let chunk = heights.len().div_ceil(threads);
         std::thread::scope(|scope| {
             let handles: Vec<_> = heights
                 .chunks(chunk)
-                .map(|c| scope.spawn(move || fold(c)))
+                .map(|c| scope.spawn(move || Extremes::NONE.with_all(c)))
                 .collect();
             handles
                 .into_iter()
@@ -98,14 +93,14 @@ pub(crate) fn min_max(heights: &[f32], threads: usize) -> (f32, f32) {
                 .collect()
         })
     } else {
-        vec![fold(heights)]
+        vec![Extremes::NONE.with_all(heights)]
     };
-    let (lo, hi) = parts
-        .into_iter()
-        .fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), (a, b)| {
-            (lo.min(a), hi.max(b))
-        });
-    if lo > hi { (0.0, 0.0) } else { (lo, hi) }
+    let e = parts.into_iter().fold(Extremes::NONE, Extremes::with);
+    if e.lo > e.hi {
+        Extremes { lo: 0.0, hi: 0.0 }
+    } else {
+        e
+    }
 }
 
 /// Replaces every height `h` with `f(h)`.
@@ -292,8 +287,12 @@ mod tests {
         let heights: Vec<f32> = (0..300_000u64)
             .map(|i| ((i * 7919) % 1000) as f32 - 400.0)
             .collect();
-        assert_eq!(min_max(&heights, 1), (-400.0, 599.0));
-        assert_eq!(min_max(&heights, 3), (-400.0, 599.0));
-        assert_eq!(min_max(&[], 2), (0.0, 0.0));
+        let expected = Extremes {
+            lo: -400.0,
+            hi: 599.0,
+        };
+        assert_eq!(min_max(&heights, 1), expected);
+        assert_eq!(min_max(&heights, 3), expected);
+        assert_eq!(min_max(&[], 2), Extremes { lo: 0.0, hi: 0.0 });
     }
 }

@@ -149,25 +149,71 @@ pub(crate) struct Job<'a, R, P> {
     /// Least work (lattice points x grid columns) worth more than one
     /// thread: below it, starting threads costs more than it saves.
     pub(crate) parallel_work: usize,
+    /// Whether to fold the field's extremes on the finest level.
+    pub(crate) extremes: bool,
 }
 
 /// The usual [`Job::parallel_work`].
 pub(crate) const PARALLEL_WORK: usize = 1 << 17;
 
+/// The lowest and highest height seen, folded in any order.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Extremes {
+    /// Lowest height.
+    pub(crate) lo: f32,
+    /// Highest height.
+    pub(crate) hi: f32,
+}
+
+impl Extremes {
+    /// Nothing seen yet.
+    pub(crate) const NONE: Extremes = Extremes {
+        lo: f32::INFINITY,
+        hi: f32::NEG_INFINITY,
+    };
+
+    /// These and `other` together.
+    pub(crate) fn with(self, other: Extremes) -> Extremes {
+        Extremes {
+            lo: self.lo.min(other.lo),
+            hi: self.hi.max(other.hi),
+        }
+    }
+
+    /// These and every value of `values` (eight SIMD-friendly lanes).
+    pub(crate) fn with_all(self, values: &[f32]) -> Extremes {
+        let (mut lo, mut hi) = ([self.lo; 8], [self.hi; 8]);
+        let mut lanes = values.chunks_exact(8);
+        for c in &mut lanes {
+            for i in 0..8 {
+                lo[i] = lo[i].min(c[i]);
+                hi[i] = hi[i].max(c[i]);
+            }
+        }
+        let lanes_seen = lo.iter().zip(&hi).map(|(&lo, &hi)| Extremes { lo, hi });
+        let rest = lanes.remainder().iter().map(|&v| Extremes { lo: v, hi: v });
+        lanes_seen.chain(rest).fold(Extremes::NONE, Extremes::with)
+    }
+}
+
 /// Runs the levels from `first_depth` on `heights`, a row-major square of
-/// `size` points a side whose coarser points are already set.
+/// `size` points a side whose coarser points are already set. If the job
+/// asks, returns the extremes of the finished field: every row is folded,
+/// in cache, right after the finest level writes it.
 pub(crate) fn subdivide<R: Rule, P: Put>(
     heights: &mut [f32],
     size: usize,
     first_depth: u32,
     job: &Job<'_, R, P>,
-) {
+) -> Option<Extremes> {
     let last = size - 1;
     let mut depth = first_depth;
+    let mut extremes = None;
     while let Some(lv) = level(last, depth, job.rule) {
-        run_level(heights, size, &lv, job);
+        extremes = Some(run_level(heights, size, &lv, job));
         depth += 1;
     }
+    extremes.filter(|_| job.extremes)
 }
 
 /// Level `depth` of a grid whose last index is `last`, if it has new points.
@@ -182,7 +228,13 @@ fn level<R: Rule>(last: usize, depth: u32, rule: &R) -> Option<Level> {
 }
 
 /// One level: bands of rows in parallel, then the edge rows between bands.
-fn run_level<R: Rule, P: Put>(heights: &mut [f32], size: usize, lv: &Level, job: &Job<'_, R, P>) {
+/// On the finest level, returns the extremes of the whole field.
+fn run_level<R: Rule, P: Put>(
+    heights: &mut [f32],
+    size: usize,
+    lv: &Level,
+    job: &Job<'_, R, P>,
+) -> Extremes {
     let squares = lv.squares();
     let bands = if squares * size >= job.parallel_work {
         job.threads.clamp(1, squares)
@@ -194,16 +246,22 @@ fn run_level<R: Rule, P: Put>(heights: &mut [f32], size: usize, lv: &Level, job:
         .map(|t| (t * squares / bands) * lv.step)
         .collect();
     let (edges, bodies) = split_bands(heights, size, &bounds);
-    std::thread::scope(|scope| {
+    let mut extremes = std::thread::scope(|scope| {
         let mut bands = bodies.into_iter().zip(edges.windows(2));
         let first = bands.next();
-        for (body, pair) in bands {
-            let (top, bottom) = (pair[0], pair[1]);
-            scope.spawn(move || run_band(job, lv, body, top, bottom));
+        let others: Vec<_> = bands
+            .map(|(body, pair)| {
+                let (top, bottom) = (pair[0], pair[1]);
+                scope.spawn(move || run_band(job, lv, body, top, bottom))
+            })
+            .collect();
+        let mut extremes = first.map_or(Extremes::NONE, |(body, pair)| {
+            run_band(job, lv, body, pair[0], pair[1])
+        });
+        for other in others {
+            extremes = extremes.with(other.join().expect("a generator thread panicked"));
         }
-        if let Some((body, pair)) = first {
-            run_band(job, lv, body, pair[0], pair[1]);
-        }
+        extremes
     });
     let mut scratch = Scratch::new(lv);
     for &y in &bounds {
@@ -214,7 +272,11 @@ fn run_level<R: Rule, P: Put>(heights: &mut [f32], size: usize, lv: &Level, job:
         };
         let (above, row, below) = whole.neighbours(y, lv.half);
         fill_edge_row(job, lv, y, (above, row, below), &mut scratch);
+        if job.extremes {
+            extremes = extremes.with_all(&heights[y * size..(y + 1) * size]);
+        }
     }
+    extremes
 }
 
 /// The rows strictly between two band boundaries, starting at row `first`.
@@ -275,13 +337,15 @@ fn run_band<R: Rule, P: Put>(
     mut body: Body<'_>,
     top: &[f32],
     bottom: &[f32],
-) {
+) -> Extremes {
     if lv.half > 1 {
-        return run_band_through_lattices(job, lv, body, top, bottom);
+        run_band_through_lattices(job, lv, body, top, bottom);
+        return Extremes::NONE;
     }
     let top_row = body.first - 1;
     let bottom_row = body.first + body.rows.len() / body.size;
     let mut scratch = Scratch::new(lv);
+    let mut extremes = Extremes::NONE;
     let mut y = top_row + 1;
     while y < bottom_row {
         let (above, row, below) = body.neighbours(y, 1);
@@ -292,11 +356,19 @@ fn run_band<R: Rule, P: Put>(
         };
         job.noise.fill_row(y, 0, 1, lv.amp, &mut scratch.offsets);
         job.rule.centre_row(rows, &scratch.offsets, job.put);
+        if job.extremes {
+            extremes = extremes.with_all(body.neighbours(y, 1).1);
+        }
         if y - 1 > top_row {
-            fill_edge_row(job, lv, y - 1, body.neighbours(y - 1, 1), &mut scratch);
+            let (above, row, below) = body.neighbours(y - 1, 1);
+            fill_edge_row(job, lv, y - 1, (above, &mut *row, below), &mut scratch);
+            if job.extremes {
+                extremes = extremes.with_all(row);
+            }
         }
         y += 2;
     }
+    extremes
 }
 
 /// [`run_band`] on a coarse level: each row's lattice is gathered once into
@@ -466,6 +538,7 @@ mod tests {
             noise: Noise::new(1, 5),
             threads,
             parallel_work: 0,
+            extremes: false,
         };
         subdivide(&mut heights, size, 0, &job);
         let unset = heights.iter().filter(|h| h.is_nan()).count();
