@@ -138,7 +138,7 @@ impl Default for Settings {
         Settings {
             seed: None,
             generator: Generator::Diamond,
-            cragginess: 64,
+            cragginess: 96,
             elevation: 100.0,
             roughness: 2.0,
             contour: 1.0,
