@@ -126,10 +126,12 @@ fn outline(frame: &mut Frame, r: Rect, t: u32, color: u32) {
     fill(frame, rect(r.x1 - t, r.y0, t, r.y1 - r.y0), color);
 }
 
+/// Centres in logical pixels, so a 200% screen is exactly the 100% one doubled.
 fn centred_text(frame: &mut Frame, layout: &Layout, r: Rect, s: &str, color: u32) {
-    let w = layout.px(font::text_width(s));
-    let x = r.x0 + (r.x1 - r.x0).saturating_sub(w) / 2;
-    let y = r.y0 + (r.y1 - r.y0).saturating_sub(layout.px(7)) / 2;
+    let k = layout.scale;
+    let w = font::text_width(s);
+    let x = r.x0 + layout.px(((r.x1 - r.x0) / k).saturating_sub(w) / 2);
+    let y = r.y0 + layout.px(((r.y1 - r.y0) / k).saturating_sub(7) / 2);
     text(frame, layout, x, y, s, color);
 }
 
@@ -294,9 +296,9 @@ fn draw_slider(frame: &mut Frame, layout: &Layout, model: &Model, i: usize, edit
     bevel(frame, layout, groove, true);
     let v = values::number(&model.settings, key).unwrap_or(0.0);
     let f = values::fraction(key, v);
-    let thumb_w = layout.px(8);
-    let x = t0 + ((t1 - t0 - thumb_w) as f64 * f).round() as u32;
-    let thumb = rect(x, y + layout.px(2), thumb_w, layout.px(ROW_H - 4));
+    let travel = (t1 - t0) / layout.scale - 8;
+    let x = t0 + layout.px((travel as f64 * f).round() as u32);
+    let thumb = rect(x, y + layout.px(2), layout.px(8), layout.px(ROW_H - 4));
     fill(frame, thumb, FACE);
     bevel(frame, layout, thumb, false);
     let vx = layout.panel_x + layout.px(VALUE_X);

@@ -312,7 +312,6 @@ impl Layout {
             let (a, b) = self.columns(span);
             x >= a as f64 && x < b as f64
         };
-        let (t0, t1) = self.track();
         if within(MINUS) {
             Part::Minus
         } else if within(RIGHT_ARROW) {
@@ -320,7 +319,7 @@ impl Layout {
         } else if within(PLUS) {
             Part::Plus
         } else if within(TRACK) {
-            Part::Track((x - t0 as f64) / (t1 - t0) as f64)
+            Part::Track(self.track_fraction(x))
         } else if x < self.columns((CTRL_X, CTRL_X)).0 as f64 {
             Part::Label
         } else {
@@ -330,8 +329,12 @@ impl Layout {
 
     /// A slider fraction for a pointer at column `x`, clamped to the track
     /// (used while dragging, when the pointer may leave it).
+    /// The thumb is 8 logical pixels wide, so its centre travels from 4 in
+    /// from the left end to 4 in from the right.
     pub fn track_fraction(&self, x: f64) -> f64 {
         let (t0, t1) = self.track();
-        ((x - t0 as f64) / (t1 - t0) as f64).clamp(0.0, 1.0)
+        let half = self.px(4) as f64;
+        let travel = (t1 - t0) as f64 - 2.0 * half;
+        ((x - t0 as f64 - half) / travel).clamp(0.0, 1.0)
     }
 }
