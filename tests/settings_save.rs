@@ -76,28 +76,30 @@ fn a_value_written_differently_but_equal_is_kept_as_written() {
 
 #[test]
 fn every_key_round_trips_through_the_shipped_file() {
-    let mut s = Settings::default();
-    s.seed = Some(u64::MAX);
-    s.generator = mountains::settings::Generator::Triangle;
-    s.cragginess = 128;
-    s.elevation = 999.5;
-    s.roughness = 4.25;
-    s.contour = 0.3;
-    s.profile = mountains::settings::Profile::Massif;
-    s.height = 10;
-    s.detail = 4;
-    s.low_detail = true;
-    s.sea_level = -0.14;
-    s.color = ColorMode::Ridges;
-    s.relative_depth = false;
-    s.shadows = false;
-    s.view = mountains::settings::ViewKind::Perspective;
-    s.rotation = 270;
-    s.auto_redraw = false;
-    s.draw_seconds = 0.0;
-    s.pause_seconds = 3600.0;
-    s.monitors = mountains::settings::Monitors::Primary;
-    s.heightmaps_dir = Some("C:\\Maps \"quoted\"".into());
+    use mountains::settings::{Generator, Monitors, Profile, ViewKind};
+    let s = Settings {
+        seed: Some(u64::MAX),
+        generator: Generator::Triangle,
+        cragginess: 128,
+        elevation: 999.5,
+        roughness: 4.25,
+        contour: 0.3,
+        profile: Profile::Massif,
+        height: 10,
+        detail: 4,
+        low_detail: true,
+        sea_level: -0.14,
+        color: ColorMode::Ridges,
+        relative_depth: false,
+        shadows: false,
+        view: ViewKind::Perspective,
+        rotation: 270,
+        auto_redraw: false,
+        draw_seconds: 0.0,
+        pause_seconds: 3600.0,
+        monitors: Monitors::Primary,
+        heightmaps_dir: Some("C:\\Maps \"quoted\"".into()),
+    };
     let out = merge(DEFAULT_TOML, &s).unwrap();
     assert_eq!(loaded(&out), s);
     assert!(out.contains("seed = \"18446744073709551615\""), "{out}");
