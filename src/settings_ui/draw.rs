@@ -14,6 +14,7 @@ const SHADOW: u32 = 0x808080;
 const DARK: u32 = 0x000000;
 const TEXT: u32 = 0x000000;
 const DIM: u32 = 0x808080;
+const HINT: u32 = 0x404040;
 const SELECT: u32 = 0x000080;
 const SELECT_TEXT: u32 = 0xFFFFFF;
 const FIELD: u32 = 0xFFFFFF;
@@ -400,14 +401,14 @@ fn draw_help(frame: &mut Frame, layout: &Layout, model: &Model, extras: &Extras<
     if let Some(i) = model.focused_row() {
         let key = &KEYS[i];
         lines.push((key.doc.to_string(), TEXT));
-        lines.push((format!("Allowed: {}", key.kind.allowed()), DIM));
+        lines.push((format!("Allowed: {}", key.kind.allowed()), HINT));
         if values::accepts_typing(key) {
-            lines.push(("Type a value and press Enter; Esc cancels.".into(), DIM));
+            lines.push(("Type a value and press Enter; Esc cancels.".into(), HINT));
         }
     } else {
         lines.push((
             "Tab moves, arrows change, Enter saves, Esc cancels.".into(),
-            DIM,
+            HINT,
         ));
     }
     let alert = if model.file_error.is_some() {
@@ -429,7 +430,7 @@ fn draw_help(frame: &mut Frame, layout: &Layout, model: &Model, extras: &Extras<
         }
     }
     let file = fit(&format!("File: {}", extras.file), chars);
-    text(frame, layout, x, bottom + layout.px(2), &file, DIM);
+    text(frame, layout, x, bottom + layout.px(2), &file, HINT);
 }
 
 /// Splits `s` into lines of at most `width` characters at spaces.

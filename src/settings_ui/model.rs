@@ -144,10 +144,7 @@ impl Model {
         self.file_error = broken.map(|p| format!("{p}. Fix it with Edit file; OK cannot save."));
         self.message = match (&self.file_error, problems.first()) {
             (Some(e), _) => e.clone(),
-            (None, Some(p)) => format!(
-                "{p} (shown with the default; OK writes it){}",
-                more(problems.len())
-            ),
+            (None, Some(p)) => format!("{}{}", describe(p), more(problems.len())),
             (None, None) => String::new(),
         };
         if self.file_error.is_some() {
@@ -617,6 +614,21 @@ impl Model {
         self.message.clear();
         Effect::OpenDataSet(path)
     }
+}
+
+/// A problem in the file, without the path (the screen shows it already),
+/// and what the screen does about it.
+fn describe(p: &load::Problem) -> String {
+    let at = p
+        .position
+        .map_or(String::new(), |(l, _)| format!("Line {l}: "));
+    let key = p.key.as_ref().map_or(String::new(), |k| format!("`{k}`: "));
+    let what = if keys::find(p.key.as_deref().unwrap_or("")).is_some() {
+        "the default is shown; OK writes it"
+    } else {
+        "OK leaves it in the file as it is"
+    };
+    format!("{at}{key}{} ({what})", p.message)
 }
 
 fn more(n: usize) -> String {
