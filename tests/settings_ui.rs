@@ -493,3 +493,24 @@ fn the_200_percent_screen_is_the_100_percent_screen_doubled() {
         .collect();
     assert!(label.contains(&0xFFFFFF) && label.contains(&0x000080));
 }
+
+#[test]
+fn the_seed_button_keeps_the_preview_mountain_or_goes_back_to_random() {
+    use mountains::settings_ui::layout::SEED_BUTTON;
+    for scale in [1, 2] {
+        let l = layout(scale);
+        let mut m = model();
+        m.preview_seed = Some(99);
+        let (b0, b1) = l.columns(SEED_BUTTON);
+        let y = f64::from(l.row(row("seed")).y0 + l.px(9));
+        let x = f64::from(b0 + b1) / 2.0;
+        m.handle(Input::Press(x, y), &l);
+        assert_eq!(m.settings.seed, Some(99), "Keep at {scale}x");
+        m.handle(Input::Press(x, y), &l);
+        assert_eq!(m.settings.seed, None, "Random at {scale}x");
+        let (f0, _) = l.columns((130, 131));
+        m.handle(Input::Press(f64::from(f0), y), &l);
+        assert_eq!(m.editing.as_deref(), Some("random"), "the field takes typing");
+        assert_eq!(m.settings.seed, None);
+    }
+}

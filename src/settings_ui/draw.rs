@@ -2,7 +2,7 @@
 //! Windows 95 dialog (seed 003's Settings dialog is the reference).
 
 use super::font::{self, ADVANCE, GLYPH_H, GLYPH_W};
-use super::layout::{Button, CTRL_X, LABEL_X, Layout, ROW_H, VALUE_X};
+use super::layout::{Button, CTRL_X, LABEL_X, Layout, ROW_H, SEED_BUTTON, VALUE_X};
 use super::model::Model;
 use super::values::{self, Widget};
 use crate::render::{Frame, Rect};
@@ -264,7 +264,17 @@ fn draw_row(frame: &mut Frame, layout: &Layout, model: &Model, i: usize) {
         Widget::Slider => draw_slider(frame, layout, model, i, editing),
         Widget::Check => draw_check(frame, layout, model, i),
         Widget::Choice => draw_choice(frame, layout, model, i),
-        Widget::Text | Widget::Seed => draw_field(frame, layout, model, i, editing),
+        Widget::Text => draw_field(frame, layout, model, i, editing, 372),
+        Widget::Seed => {
+            draw_field(frame, layout, model, i, editing, SEED_BUTTON.0 - 4);
+            let r = layout.row(i);
+            let caption = if model.settings.seed.is_some() {
+                "Random"
+            } else {
+                "Keep"
+            };
+            small_button(frame, layout, layout.columns(SEED_BUTTON), r.y0, caption);
+        }
     }
 }
 
@@ -375,17 +385,25 @@ fn draw_choice(frame: &mut Frame, layout: &Layout, model: &Model, i: usize) {
     centred_text(frame, layout, field, &s, TEXT);
 }
 
-fn draw_field(frame: &mut Frame, layout: &Layout, model: &Model, i: usize, editing: Option<&str>) {
+/// A text field from the control column to `right` (logical, panel-relative).
+fn draw_field(
+    frame: &mut Frame,
+    layout: &Layout,
+    model: &Model,
+    i: usize,
+    editing: Option<&str>,
+    right: u32,
+) {
     let y = layout.row(i).y0;
     let x = layout.panel_x + layout.px(CTRL_X + 2);
-    let w = layout.px(372 - CTRL_X);
+    let w = layout.px(right - CTRL_X);
     match editing {
         Some(t) => typed_text(frame, layout, x, y, w, t),
         None => {
             let r = rect(x - layout.px(2), y + layout.px(2), w, layout.px(ROW_H - 4));
             fill(frame, r, FIELD);
             bevel(frame, layout, r, true);
-            let chars = ((372 - CTRL_X - 8) / ADVANCE) as usize;
+            let chars = ((right - CTRL_X - 8) / ADVANCE) as usize;
             let s = fit(&values::display(&model.settings, &KEYS[i]), chars);
             text(frame, layout, x, y + layout.px(5), &s, TEXT);
         }

@@ -4,6 +4,7 @@
 //! (1 at 100%, 2 at 200%), so the font stays crisp and hit-testing matches
 //! drawing exactly at every scale.
 
+use super::values::{self, Widget};
 use crate::render::Rect;
 use crate::settings::keys::KEYS;
 
@@ -31,6 +32,8 @@ const PLUS: (u32, u32) = (296, 310);
 pub const VALUE_X: u32 = 316;
 const LEFT_ARROW: (u32, u32) = MINUS;
 const RIGHT_ARROW: (u32, u32) = (358, 372);
+/// The seed row's "Random" / "Keep" button.
+pub const SEED_BUTTON: (u32, u32) = (306, 372);
 
 /// The buttons, in focus order after the rows.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -95,7 +98,7 @@ pub enum Part {
     Plus,
     /// The slider track, at this fraction of its length.
     Track(f64),
-    /// A choice's right arrow.
+    /// A choice's right arrow, or the seed's Random/Keep button.
     Next,
     /// The control itself (check box, choice text, text field).
     Control,
@@ -301,18 +304,23 @@ impl Layout {
             return Some(Hit::Button(*b));
         }
         if let Some(i) = (0..self.row_y.len()).find(|i| inside(&self.row(*i))) {
-            return Some(Hit::Row(i, self.part(x)));
+            return Some(Hit::Row(i, self.part(i, x)));
         }
         inside(&self.preview).then_some(Hit::Preview)
     }
 
-    /// The part of a row at pixel column `x`.
-    fn part(&self, x: f64) -> Part {
+    /// The part of row `i` at pixel column `x`.
+    fn part(&self, i: usize, x: f64) -> Part {
         let within = |span: (u32, u32)| {
             let (a, b) = self.columns(span);
             x >= a as f64 && x < b as f64
         };
-        if within(MINUS) {
+        let seed = KEYS.get(i).map(values::widget) == Some(Widget::Seed);
+        if seed && within(SEED_BUTTON) {
+            Part::Next
+        } else if seed && within((CTRL_X, SEED_BUTTON.0)) {
+            Part::Control
+        } else if within(MINUS) {
             Part::Minus
         } else if within(RIGHT_ARROW) {
             Part::Next

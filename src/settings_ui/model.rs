@@ -519,7 +519,7 @@ impl Model {
             (Widget::Choice, Part::Label) => Effect::Redraw,
             (Widget::Choice, _) => self.cycle(i, 1),
             (Widget::Check, _) => self.toggle(i),
-            (Widget::Seed, Part::Minus | Part::Next) => self.toggle_seed(i),
+            (Widget::Seed, Part::Next) => self.toggle_seed(i),
             (Widget::Seed | Widget::Text, Part::Label) => Effect::Redraw,
             (Widget::Seed | Widget::Text, _) => {
                 if self.editing.is_none() {
