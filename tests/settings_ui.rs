@@ -510,7 +510,64 @@ fn the_seed_button_keeps_the_preview_mountain_or_goes_back_to_random() {
         assert_eq!(m.settings.seed, None, "Random at {scale}x");
         let (f0, _) = l.columns((130, 131));
         m.handle(Input::Press(f64::from(f0), y), &l);
-        assert_eq!(m.editing.as_deref(), Some("random"), "the field takes typing");
+        assert_eq!(
+            m.editing.as_deref(),
+            Some("random"),
+            "the field takes typing"
+        );
         assert_eq!(m.settings.seed, None);
     }
+}
+
+#[test]
+fn data_sets_are_listed_from_both_folders_and_saved_under_readable_names() {
+    use mountains::settings_ui::datasets;
+    let dir = scratch("datasets");
+    let (data, maps) = (dir.join("data"), dir.join("maps"));
+    for d in [&data, &maps] {
+        std::fs::create_dir_all(d).unwrap();
+    }
+    for f in ["b.png", "a.PNG", "notes.txt"] {
+        std::fs::write(data.join(f), b"x").unwrap();
+    }
+    std::fs::write(maps.join("world.png"), b"x").unwrap();
+    std::fs::create_dir_all(maps.join("folder.png")).unwrap();
+    let maps_str = maps.to_str().unwrap();
+    let folders = datasets::folders(Some(&data), Some(maps_str));
+    assert_eq!(
+        datasets::list_pngs(&folders),
+        vec![
+            data.join("a.PNG"),
+            data.join("b.png"),
+            maps.join("world.png")
+        ]
+    );
+    assert_eq!(datasets::folders(Some(&data), Some("")), vec![data.clone()]);
+    let first = datasets::save_path(&data, "2026-11-22", Some(1234));
+    assert_eq!(first, data.join("mountain-2026-11-22-seed-1234.png"));
+    std::fs::write(&first, b"taken").unwrap();
+    assert_eq!(
+        datasets::save_path(&data, "2026-11-22", Some(1234)),
+        data.join("mountain-2026-11-22-seed-1234-2.png"),
+        "an existing file is never replaced"
+    );
+    assert_eq!(datasets::today().len(), 10);
+}
+
+#[test]
+fn open_lists_the_data_directory_on_the_screen() {
+    let dir = scratch("open");
+    let file = dir.join("mountains.toml");
+    std::fs::create_dir_all(dir.join("data")).unwrap();
+    std::fs::write(dir.join("data").join("m.png"), b"not really a png").unwrap();
+    let mut sc = screen(&file, 1);
+    sc.model.activate(Button::Open);
+    assert_eq!(sc.apply(Effect::ListDataSets), Next::Stay);
+    assert_eq!(
+        sc.model.open_list,
+        Some(vec![dir.join("data").join("m.png")])
+    );
+    assert_eq!(sc.input(Input::Enter), Next::Stay);
+    assert!(sc.model.message.contains("m.png"), "{}", sc.model.message);
+    assert!(!file.exists(), "nothing is written before OK");
 }

@@ -34,13 +34,27 @@ pub fn run(config: Option<&Path>, loaded: &load::Loaded, parent: Option<u64>) ->
     let problems = loaded.problems.clone();
     let make: window::MakeScreen =
         Box::new(move |size, scale| screen::Screen::new(settings, &problems, path, size, scale));
-    match window::run(make, parent) {
+    match window::run(make, parent.or_else(default_owner)) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             crate::log::warn(&e);
             ExitCode::FAILURE
         }
     }
+}
+
+/// `/c` without a handle: Windows means "modal to the foreground window"
+/// (the Screen Saver Settings dialog that sent it).
+#[cfg(windows)]
+fn default_owner() -> Option<u64> {
+    // SAFETY: takes no arguments; returns a window handle or null.
+    let hwnd = unsafe { windows_sys::Win32::UI::WindowsAndMessaging::GetForegroundWindow() };
+    (!hwnd.is_null()).then_some(hwnd as usize as u64)
+}
+
+#[cfg(not(windows))]
+fn default_owner() -> Option<u64> {
+    None
 }
 
 fn config_path(config: Option<&Path>, loaded: &load::Loaded) -> Option<PathBuf> {

@@ -68,6 +68,7 @@ fn owned_by(
     parent: Option<u64>,
 ) -> winit::window::WindowAttributes {
     use winit::platform::windows::WindowAttributesExtWindows;
+    // winit 0.30 takes the handle as an isize.
     match parent.and_then(|p| isize::try_from(p).ok()) {
         Some(hwnd) if hwnd != 0 => attrs.with_owner_window(hwnd),
         _ => attrs,
