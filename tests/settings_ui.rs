@@ -571,3 +571,19 @@ fn open_lists_the_data_directory_on_the_screen() {
     assert!(sc.model.message.contains("m.png"), "{}", sc.model.message);
     assert!(!file.exists(), "nothing is written before OK");
 }
+
+#[test]
+fn the_scale_is_whole_and_the_window_fits_the_monitor() {
+    use mountains::settings_ui::layout::whole_scale;
+    assert_eq!(whole_scale(1.0, None), 1);
+    assert_eq!(whole_scale(1.25, None), 1);
+    assert_eq!(whole_scale(2.0, Some((3840, 2160))), 2);
+    assert_eq!(whole_scale(1.5, Some((2880, 1800))), 2);
+    assert_eq!(
+        whole_scale(1.5, Some((1920, 1080))),
+        1,
+        "1240 rows would not fit"
+    );
+    assert_eq!(whole_scale(f64::NAN, None), 1);
+    assert_eq!(whole_scale(100.0, Some((1024, 768))), 1);
+}

@@ -41,7 +41,7 @@ impl Xvfb {
             .args(["-noreset", "-nolisten", "tcp", "-displayfd", "1"])
             // A busy machine may deliver a key release late; no autorepeat.
             .args(["-ardelay", "60000"])
-            .args(["-screen", "0", "2000x1300x24"])
+            .args(["-screen", "0", "2560x1600x24"])
             .stdout(Stdio::piped())
             .stderr(Stdio::null())
             .spawn();
@@ -247,6 +247,37 @@ fn display_escape_leaves_the_file_byte_identical() {
     let status = app.wait_exit();
     assert!(status.success(), "{status}: {}", app.stderr());
     assert_eq!(std::fs::read(&config).unwrap(), COMMENTED.as_bytes());
+}
+
+#[test]
+fn display_mouse_clicks_plus_then_ok() {
+    use mountains::settings_ui::layout::{Button, Layout};
+    let Some(x) = Xvfb::start() else { return };
+    let home = scratch("mouse");
+    let config = home.join("mountains.toml");
+    std::fs::write(&config, COMMENTED).unwrap();
+    let mut app = App::start(&x, &config, &home, 1);
+    let window = app.window(&x);
+    wait_drawn(&x.display, window);
+    let l = Layout::new(960, 620, 1);
+    let crag = mountains::settings::keys::KEYS
+        .iter()
+        .position(|k| k.name == "cragginess")
+        .unwrap();
+    let (_, (p0, p1)) = l.minus_plus();
+    let plus = ((p0 + p1) / 2, l.row(crag).y0 + 9);
+    let ok = l.button(Button::Ok);
+    let ok = ((ok.x0 + ok.x1) / 2, (ok.y0 + ok.y1) / 2);
+    let id = window.to_string();
+    for (px, py) in [plus, plus, ok] {
+        let (px, py) = (px.to_string(), py.to_string());
+        x.xdotool(&["mousemove", "--window", &id, &px, &py]);
+        x.xdotool(&["click", "1"]);
+    }
+    let status = app.wait_exit();
+    assert!(status.success(), "{status}: {}", app.stderr());
+    let saved = std::fs::read_to_string(&config).unwrap();
+    assert_eq!(saved, COMMENTED.replace("= 40 ", "= 42 "));
 }
 
 /// Opens the window at `scale`, checks its size, and writes a screenshot

@@ -140,13 +140,22 @@ pub struct Layout {
     pub preview: Rect,
 }
 
-/// The whole scale for a window's scale factor: 1.25 -> 1, 1.5 and 2 -> 2.
-pub fn whole_scale(scale_factor: f64) -> u32 {
-    if scale_factor.is_finite() {
+/// The whole scale for a window's scale factor (1.25 -> 1, 1.5 and 2 -> 2),
+/// lowered until the window fits on a monitor of `monitor` pixels (a
+/// 1920x1080 screen at 150% gets 1, not a window taller than the screen).
+pub fn whole_scale(scale_factor: f64, monitor: Option<(u32, u32)>) -> u32 {
+    let mut s = if scale_factor.is_finite() {
         scale_factor.round().clamp(1.0, 8.0) as u32
     } else {
         1
+    };
+    if let Some((mw, mh)) = monitor {
+        // Leave room for a title bar and a task bar.
+        while s > 1 && (WINDOW_W * s > mw || (WINDOW_H + 60) * s > mh) {
+            s -= 1;
+        }
     }
+    s
 }
 
 fn rect(x0: u32, y0: u32, w: u32, h: u32) -> Rect {

@@ -5,7 +5,7 @@ use std::rc::Rc;
 use std::time::{Duration, Instant};
 
 use winit::application::ApplicationHandler;
-use winit::dpi::{LogicalSize, PhysicalPosition};
+use winit::dpi::{LogicalSize, PhysicalPosition, PhysicalSize};
 use winit::event::{ElementState, KeyEvent, MouseButton, MouseScrollDelta, WindowEvent};
 use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
 use winit::keyboard::{Key, ModifiersState, NamedKey};
@@ -30,6 +30,7 @@ struct App {
     modifiers: ModifiersState,
     cursor: PhysicalPosition<f64>,
     wheel_pixels: f64,
+    scale: u32,
     error: Option<String>,
 }
 
@@ -46,6 +47,7 @@ pub fn run(make: MakeScreen, parent: Option<u64>) -> Result<(), String> {
         modifiers: ModifiersState::empty(),
         cursor: PhysicalPosition::new(-1.0, -1.0),
         wheel_pixels: 0.0,
+        scale: 1,
         error: None,
     };
     event_loop
@@ -97,8 +99,12 @@ impl App {
         let context = softbuffer::Context::new(window.clone()).map_err(|e| e.to_string())?;
         let surface =
             softbuffer::Surface::new(&context, window.clone()).map_err(|e| e.to_string())?;
-        let size = window.inner_size();
-        let scale = whole_scale(window.scale_factor());
+        self.scale = pick_scale(&window);
+        let want = PhysicalSize::new(WINDOW_W * self.scale, WINDOW_H * self.scale);
+        let size = window
+            .request_inner_size(want)
+            .unwrap_or(window.inner_size());
+        let scale = self.scale;
         if let Some(make) = self.make.take() {
             self.screen = Some(make((size.width.max(1), size.height.max(1)), scale));
         }
@@ -179,9 +185,17 @@ impl App {
             return;
         };
         let size = w.inner_size();
-        screen.resize(size.width, size.height, whole_scale(w.scale_factor()));
+        screen.resize(size.width, size.height, self.scale);
         w.request_redraw();
     }
+}
+
+/// The whole scale for the window's scale factor and its monitor.
+fn pick_scale(window: &Window) -> u32 {
+    let monitor = window
+        .current_monitor()
+        .map(|m| (m.size().width, m.size().height));
+    whole_scale(window.scale_factor(), monitor)
 }
 
 fn named_input(key: NamedKey, shift: bool) -> Option<Input> {
@@ -215,7 +229,13 @@ impl ApplicationHandler for App {
     fn window_event(&mut self, event_loop: &ActiveEventLoop, _id: WindowId, event: WindowEvent) {
         match event {
             WindowEvent::CloseRequested => event_loop.exit(),
-            WindowEvent::Resized(_) | WindowEvent::ScaleFactorChanged { .. } => self.resized(),
+            WindowEvent::Resized(_) => self.resized(),
+            WindowEvent::ScaleFactorChanged { .. } => {
+                if let Some(w) = &self.window {
+                    self.scale = pick_scale(w);
+                }
+                self.resized();
+            }
             WindowEvent::ModifiersChanged(m) => self.modifiers = m.state(),
             WindowEvent::KeyboardInput { event, .. } => self.key(event_loop, event),
             WindowEvent::CursorMoved { position, .. } => {
