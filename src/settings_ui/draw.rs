@@ -471,6 +471,18 @@ pub fn wrap(s: &str, width: usize) -> Vec<String> {
     lines
 }
 
+/// A data set as listed: its name first, then the folder it is in.
+fn list_entry(path: &std::path::Path) -> String {
+    let name = path.file_name().map_or_else(
+        || path.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    );
+    match path.parent() {
+        Some(dir) => format!("{name}   in {}", dir.display()),
+        None => name,
+    }
+}
+
 fn draw_list(frame: &mut Frame, layout: &Layout, list: &[std::path::PathBuf], pick: usize) {
     let shown = list.len().min(layout.list_capacity());
     if shown == 0 {
@@ -496,7 +508,7 @@ fn draw_list(frame: &mut Frame, layout: &Layout, list: &[std::path::PathBuf], pi
         } else {
             TEXT
         };
-        let name = fit(&path.display().to_string(), chars);
+        let name = fit(&list_entry(path), chars);
         text(
             frame,
             layout,
