@@ -587,3 +587,29 @@ fn the_scale_is_whole_and_the_window_fits_the_monitor() {
     assert_eq!(whole_scale(f64::NAN, None), 1);
     assert_eq!(whole_scale(100.0, Some((1024, 768))), 1);
 }
+
+#[test]
+fn a_file_edited_elsewhere_is_taken_in_keeping_the_screens_edits() {
+    let dir = scratch("reload");
+    let file = dir.join("mountains.toml");
+    std::fs::write(&file, "cragginess = 40\n").unwrap();
+    let mut sc = screen(&file, 1);
+    assert!(!sc.poll_file(), "nothing changed yet");
+    sc.model.focus = row("color");
+    sc.input(Input::Right);
+    assert_eq!(sc.model.settings.color, ColorMode::Gray);
+    // Another program (the editor) rewrites the file, with a new mtime.
+    std::fs::write(&file, "cragginess = 50\ncolor = \"sonar\"\nheight = 2\n").unwrap();
+    let later = std::time::SystemTime::now() + std::time::Duration::from_secs(2);
+    std::fs::File::options()
+        .write(true)
+        .open(&file)
+        .unwrap()
+        .set_modified(later)
+        .unwrap();
+    assert!(sc.poll_file());
+    let s = &sc.model.settings;
+    assert_eq!((s.cragginess, s.height), (50, 2), "the file's new values");
+    assert_eq!(s.color, ColorMode::Gray, "the screen's own edit stays");
+    assert_eq!(sc.model.original.color, ColorMode::Sonar);
+}
