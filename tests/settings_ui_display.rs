@@ -290,15 +290,34 @@ fn screenshot(scale: u32) {
     let mut app = App::start(&x, &config, &home, scale);
     let window = app.window(&x);
     wait_drawn(&x.display, window);
-    press(&x, window, &["Down", "Down"]);
-    sleep(Duration::from_millis(500));
-    let (w, h, px) = wait_drawn(&x.display, window);
+    press(&x, window, &["Down", "Down", "Right"]);
+    // Exactly two rows down: the Cragginess label is highlighted in navy.
+    let l = mountains::settings_ui::layout::Layout::new(960 * scale, 620 * scale, scale);
+    let probe = |row: usize, w: u32| {
+        let r = l.row(row);
+        ((r.y0 + l.px(2)) * w + r.x0 + l.px(20)) as usize
+    };
+    let mut shot = wait_drawn(&x.display, window);
+    for _ in 0..MAX_POLLS {
+        if shot.2.get(probe(2, shot.0)) == Some(&0x000080) {
+            break;
+        }
+        sleep(POLL);
+        shot = wait_drawn(&x.display, window);
+    }
+    let (w, h, px) = shot;
     assert_eq!(
         (w, h),
         (960 * scale, 620 * scale),
         "the window follows the scale"
     );
-    assert!(px.contains(&0x000080), "the focused row is highlighted");
+    assert_eq!(
+        px[probe(2, w)],
+        0x000080,
+        "the Cragginess row has the focus"
+    );
+    assert_ne!(px[probe(1, w)], 0x000080);
+    assert_ne!(px[probe(3, w)], 0x000080, "each key press counts once");
     let mut frame = mountains::render::Frame::new(w, h).unwrap();
     frame.pixels_mut().copy_from_slice(&px);
     let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("settings-ui-{scale}x.png"));

@@ -429,6 +429,9 @@ fn draw_help(frame: &mut Frame, layout: &Layout, model: &Model, extras: &Extras<
             HINT,
         ));
     }
+    if (0..KEYS.len()).any(|i| model.changed(i)) {
+        lines.push(("* changed here; OK saves, Cancel forgets.".into(), HINT));
+    }
     let alert = if model.file_error.is_some() {
         ALERT
     } else {

@@ -237,7 +237,14 @@ impl ApplicationHandler for App {
                 self.resized();
             }
             WindowEvent::ModifiersChanged(m) => self.modifiers = m.state(),
-            WindowEvent::KeyboardInput { event, .. } => self.key(event_loop, event),
+            // Synthetic presses are keys already held when the window got
+            // the focus, such as the Enter that started us from a terminal:
+            // acting on them would press OK at once.
+            WindowEvent::KeyboardInput {
+                event,
+                is_synthetic: false,
+                ..
+            } => self.key(event_loop, event),
             WindowEvent::CursorMoved { position, .. } => {
                 self.cursor = position;
                 self.send(event_loop, Input::Move(position.x, position.y));
