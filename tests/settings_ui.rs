@@ -632,3 +632,29 @@ fn a_file_edited_elsewhere_is_taken_in_keeping_the_screens_edits() {
     assert_eq!(s.color, ColorMode::Gray, "the screen's own edit stays");
     assert_eq!(sc.model.original.color, ColorMode::Sonar);
 }
+
+#[test]
+fn any_window_size_lays_out_and_draws_without_panicking() {
+    let dir = scratch("sizes");
+    let file = dir.join("mountains.toml");
+    let mut sc = screen(&file, 1);
+    for (w, h, s) in [
+        (1, 1, 1),
+        (50, 30, 1),
+        (959, 619, 2),
+        (1400, 900, 1),
+        (3000, 2000, 3),
+    ] {
+        sc.resize(w, h, s);
+        sc.input(Input::Tab { back: false });
+        while sc.step_preview() {}
+        let f = sc.draw();
+        assert_eq!((f.width(), f.height()), (w, h));
+    }
+    // A larger window gives the extra room to the preview; the panel and
+    // the buttons stay at the right and the bottom.
+    let l = Layout::new(1400, 900, 1);
+    assert_eq!(l.panel_x, 1400 - 8 - 372);
+    assert_eq!(l.button(Button::Ok).y1, 900 - 8);
+    assert!(l.preview.x1 > Layout::new(960, 620, 1).preview.x1);
+}
