@@ -32,10 +32,7 @@ fn windows_letters_any_case_slash_or_dash() {
 fn xscreensaver_flags_one_or_two_dashes_hex_or_decimal() {
     assert_eq!(mode(&["--root"]), Mode::XRoot);
     assert_eq!(mode(&["-root"]), Mode::XRoot);
-    assert_eq!(
-        mode(&["--window-id", "0x1a00005"]),
-        Mode::XWindowId(0x1a00005)
-    );
+    assert_eq!(mode(&["--window-id", "0x1a00005"]), Mode::XWindowId(0x1a00005));
     assert_eq!(mode(&["-window-id", "27262981"]), Mode::XWindowId(27262981));
     assert_eq!(mode(&["--window-id=0X10"]), Mode::XWindowId(16));
     assert_eq!(mode(&["-window"]), Mode::Window);
@@ -43,69 +40,27 @@ fn xscreensaver_flags_one_or_two_dashes_hex_or_decimal() {
 
 #[test]
 fn no_argument_is_settings_on_windows_and_a_window_elsewhere() {
-    let expected = if cfg!(windows) {
-        Mode::Settings { parent: None }
-    } else {
-        Mode::Window
-    };
+    let expected = if cfg!(windows) { Mode::Settings { parent: None } } else { Mode::Window };
     assert_eq!(mode(&[]), expected);
 }
 
 #[test]
 fn shared_options_go_with_every_mode() {
-    let inv = parse(&[
-        "--config",
-        "a.toml",
-        "/s",
-        "--set",
-        "color=sonar",
-        "--set=detail=6",
-        "--open",
-        "h.png",
-    ])
-    .unwrap();
+    let inv = parse(&["--config", "a.toml", "/s", "--set", "color=sonar", "--set=detail=6", "--open", "h.png"]).unwrap();
     assert_eq!(inv.mode, Mode::Fullscreen);
     assert_eq!(inv.config, Some(PathBuf::from("a.toml")));
     assert_eq!(inv.open, Some(PathBuf::from("h.png")));
-    assert_eq!(
-        inv.sets,
-        vec![
-            ("color".into(), "sonar".into()),
-            ("detail".into(), "6".into())
-        ]
-    );
+    assert_eq!(inv.sets, vec![("color".into(), "sonar".into()), ("detail".into(), "6".into())]);
 }
 
 #[test]
 fn subcommands_take_output_and_size() {
     let m = mode(&["render", "--size", "640x480", "-o", "x.png"]);
-    assert_eq!(
-        m,
-        Mode::Render {
-            width: 640,
-            height: 480,
-            output: "x.png".into()
-        }
-    );
-    assert_eq!(
-        mode(&["render", "-o", "x.png"]),
-        Mode::Render {
-            width: 1920,
-            height: 1080,
-            output: "x.png".into()
-        }
-    );
-    assert_eq!(
-        mode(&["heightmap", "-o", "h.png"]),
-        Mode::Heightmap {
-            output: "h.png".into()
-        }
-    );
+    assert_eq!(m, Mode::Render { width: 640, height: 480, output: "x.png".into() });
+    assert_eq!(mode(&["render", "-o", "x.png"]), Mode::Render { width: 1920, height: 1080, output: "x.png".into() });
+    assert_eq!(mode(&["heightmap", "-o", "h.png"]), Mode::Heightmap { output: "h.png".into() });
     assert_eq!(mode(&["--check-config"]), Mode::CheckConfig(None));
-    assert_eq!(
-        mode(&["--check-config", "f.toml"]),
-        Mode::CheckConfig(Some("f.toml".into()))
-    );
+    assert_eq!(mode(&["--check-config", "f.toml"]), Mode::CheckConfig(Some("f.toml".into())));
 }
 
 #[test]

@@ -35,10 +35,7 @@ fn shipped_file_is_exactly_the_defaults() {
     let problems = load::apply_toml(&mut s, DEFAULT_TOML, "default.toml");
     assert!(problems.is_empty(), "{problems:?}");
     let d = Settings::default();
-    assert_eq!(
-        (s.generator, s.profile, s.view, s.monitors),
-        (d.generator, d.profile, d.view, d.monitors)
-    );
+    assert_eq!((s.generator, s.profile, s.view, s.monitors), (d.generator, d.profile, d.view, d.monitors));
     assert_eq!(s, d);
 }
 
@@ -46,11 +43,7 @@ fn shipped_file_is_exactly_the_defaults() {
 fn shipped_file_documents_every_key_and_only_those() {
     let doc: toml::Table = DEFAULT_TOML.parse().unwrap();
     for key in KEYS {
-        assert!(
-            doc.contains_key(key.name),
-            "config/default.toml lacks `{}`",
-            key.name
-        );
+        assert!(doc.contains_key(key.name), "config/default.toml lacks `{}`", key.name);
     }
     assert_eq!(doc.len(), KEYS.len());
 }
@@ -74,10 +67,7 @@ fn out_of_range_is_an_error_with_position_and_allowed_values() {
     assert_eq!(p.position, Some((2, 14)));
     assert_eq!(p.key.as_deref(), Some("cragginess"));
     let text = p.to_string();
-    assert!(
-        text.starts_with("test.toml:2:14: key `cragginess`"),
-        "{text}"
-    );
+    assert!(text.starts_with("test.toml:2:14: key `cragginess`"), "{text}");
     assert!(text.contains("from 1 to 128"), "{text}");
     // Not clamped: the bad key keeps its default, the good one is used.
     assert_eq!(s.cragginess, Settings::default().cragginess);
@@ -97,11 +87,7 @@ fn unknown_key_is_reported_with_a_suggestion() {
     let (_, problems) = load_text("\n  cragines = 5\n");
     assert_eq!(problems.len(), 1);
     assert_eq!(problems[0].position, Some((2, 3)));
-    assert!(
-        problems[0].message.contains("did you mean `cragginess`"),
-        "{}",
-        problems[0].message
-    );
+    assert!(problems[0].message.contains("did you mean `cragginess`"), "{}", problems[0].message);
 }
 
 #[test]
@@ -118,11 +104,7 @@ fn wrong_type_names_the_expected_values() {
     let (_, problems) = load_text("shadows = 1\ncolor = \"pink\"\n");
     assert_eq!(problems.len(), 2);
     assert!(problems[0].message.contains("true or false"));
-    assert!(
-        problems[1].message.contains("\"sonar\""),
-        "{}",
-        problems[1].message
-    );
+    assert!(problems[1].message.contains("\"sonar\""), "{}", problems[1].message);
 }
 
 #[test]
@@ -135,10 +117,7 @@ fn floats_accept_integers_but_not_nan_or_out_of_range() {
 #[test]
 fn seeds_accept_integers_big_strings_and_random() {
     assert_eq!(load_text("seed = 42\n").0.seed, Some(42));
-    assert_eq!(
-        load_text("seed = \"18446744073709551615\"\n").0.seed,
-        Some(u64::MAX)
-    );
+    assert_eq!(load_text("seed = \"18446744073709551615\"\n").0.seed, Some(u64::MAX));
     assert_eq!(load_text("seed = \"random\"\n").0.seed, None);
     assert_eq!(load_text("seed = -3\n").1.len(), 1);
 }
@@ -151,18 +130,10 @@ fn set_accepts_bare_words_and_toml_values() {
     load::apply_set(&mut s, "detail", "10").unwrap();
     load::apply_set(&mut s, "draw_seconds", "0.5").unwrap();
     load::apply_set(&mut s, "rotation", "90").unwrap();
-    assert_eq!(
-        (s.color, s.detail, s.draw_seconds, s.rotation),
-        (ColorMode::Outline, 10, 0.5, 90)
-    );
+    assert_eq!((s.color, s.detail, s.draw_seconds, s.rotation), (ColorMode::Outline, 10, 0.5, 90));
     let e = load::apply_set(&mut s, "rotation", "45").unwrap_err();
     assert!(e.to_string().starts_with("--set: key `rotation`"), "{e}");
-    assert!(
-        load::apply_set(&mut s, "colour", "red")
-            .unwrap_err()
-            .message
-            .contains("did you mean `color`")
-    );
+    assert!(load::apply_set(&mut s, "colour", "red").unwrap_err().message.contains("did you mean `color`"));
 }
 
 #[test]
@@ -174,10 +145,7 @@ fn resolve_reports_file_problems_and_refuses_a_missing_explicit_file() {
     let sets = vec![("detail".to_string(), "6".to_string())];
     let loaded = load::resolve(Some(&file), &sets).unwrap();
     assert_eq!(loaded.problems.len(), 1);
-    assert_eq!(
-        (loaded.settings.color, loaded.settings.detail),
-        (ColorMode::Red, 6)
-    );
+    assert_eq!((loaded.settings.color, loaded.settings.detail), (ColorMode::Red, 6));
     let missing = load::resolve(Some(&dir.join("nope.toml")), &[]).unwrap_err();
     assert!(missing.message.starts_with("cannot read"), "{missing}");
     std::fs::remove_dir_all(&dir).unwrap();
