@@ -6,6 +6,7 @@
 pub mod keys;
 pub mod load;
 pub mod paths;
+pub mod save;
 
 use serde::{Deserialize, Serialize};
 
