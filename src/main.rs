@@ -28,7 +28,8 @@ fn main() -> ExitCode {
         }
         _ => {}
     }
-    let loaded = match load::resolve(inv.config.as_deref(), &inv.sets) {
+    let settings_screen = matches!(inv.mode, Mode::Settings { .. });
+    let loaded = match load::resolve(inv.config.as_deref(), &inv.sets, settings_screen) {
         Ok(l) => l,
         Err(p) => {
             eprintln!("mountains: {p}");
