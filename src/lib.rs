@@ -13,5 +13,6 @@ pub mod log;
 pub mod render;
 pub mod saver;
 pub mod settings;
+pub mod settings_ui;
 pub mod snapshot;
 pub mod terrain;

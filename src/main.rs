@@ -28,7 +28,8 @@ fn main() -> ExitCode {
         }
         _ => {}
     }
-    let loaded = match load::resolve(inv.config.as_deref(), &inv.sets) {
+    let settings_screen = matches!(inv.mode, Mode::Settings { .. });
+    let loaded = match load::resolve(inv.config.as_deref(), &inv.sets, settings_screen) {
         Ok(l) => l,
         Err(p) => {
             eprintln!("mountains: {p}");
@@ -45,7 +46,9 @@ fn main() -> ExitCode {
             .unwrap_or_else(|| commands::render(&loaded.settings, open, *width, *height, output)),
         Mode::Heightmap { output } => refuse_problems(&loaded)
             .unwrap_or_else(|| commands::heightmap(&loaded.settings, open, output)),
-        Mode::Settings { .. } => commands::edit_config(inv.config.as_deref()),
+        Mode::Settings { parent } => {
+            mountains::settings_ui::run(inv.config.as_deref(), &loaded, *parent)
+        }
         mode => run_saver(mode, loaded, open),
     }
 }

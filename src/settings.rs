@@ -6,6 +6,7 @@
 pub mod keys;
 pub mod load;
 pub mod paths;
+pub mod save;
 
 use serde::{Deserialize, Serialize};
 
@@ -138,7 +139,7 @@ impl Default for Settings {
         Settings {
             seed: None,
             generator: Generator::Diamond,
-            cragginess: 64,
+            cragginess: 96,
             elevation: 100.0,
             roughness: 2.0,
             contour: 1.0,

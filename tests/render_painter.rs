@@ -237,11 +237,11 @@ fn golden_hashes_pin_each_mode() {
             ViewKind::Perspective,
             0xe7712112a0c84fd8,
         ),
-        (ColorMode::Sonar, ViewKind::Oblique, 0xb38cd0e62bf3e106),
+        (ColorMode::Sonar, ViewKind::Oblique, 0xaf3b9d77202216a5),
         (
             ColorMode::Outline,
             ViewKind::Perspective,
-            0xcbdc0828128a7879,
+            0x3ca31e9b61930fc7,
         ),
         (ColorMode::Mono, ViewKind::Oblique, 0xae4f44291ddcd95b),
         (ColorMode::Gray, ViewKind::Oblique, 0xaaf355769f2e3039),

@@ -172,14 +172,18 @@ fn resolve_reports_file_problems_and_refuses_a_missing_explicit_file() {
     let file = dir.join("prefs.toml");
     std::fs::write(&file, "detail = 99\ncolor = \"red\"\n").unwrap();
     let sets = vec![("detail".to_string(), "6".to_string())];
-    let loaded = load::resolve(Some(&file), &sets).unwrap();
+    let loaded = load::resolve(Some(&file), &sets, false).unwrap();
     assert_eq!(loaded.problems.len(), 1);
     assert_eq!(
         (loaded.settings.color, loaded.settings.detail),
         (ColorMode::Red, 6)
     );
-    let missing = load::resolve(Some(&dir.join("nope.toml")), &[]).unwrap_err();
+    let missing = load::resolve(Some(&dir.join("nope.toml")), &[], false).unwrap_err();
     assert!(missing.message.starts_with("cannot read"), "{missing}");
+    // The settings screen may start a new file: defaults, no file, no problem.
+    let fresh = load::resolve(Some(&dir.join("nope.toml")), &[], true).unwrap();
+    assert_eq!((fresh.file, fresh.problems.len()), (None, 0));
+    assert_eq!(fresh.settings, mountains::settings::Settings::default());
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

@@ -73,8 +73,11 @@ impl Scene {
         width: u32,
         height: u32,
     ) -> Self {
-        let field = turned(field, settings.rotation);
         let style = Style::of(settings.color);
+        let mut field = turned(field, settings.rotation);
+        if matches!(style, Style::Sonar | Style::Outline) {
+            field = legible(field, settings, width, height);
+        }
         let palette = Palette::new(settings, &field);
         let shaded = matches!(style, Style::Shaded | Style::Mono);
         let shadow = (shaded && settings.shadows).then(|| shadow::cast(&field, palette.light()));
@@ -157,6 +160,39 @@ fn finite(h: f32) -> f32 {
 
 /// The field seen from another side: `rotation` degrees, in quarter turns
 /// (other values are rounded to the nearest quarter).
+/// Wire modes draw every edge: cells narrower than this many pixels merge
+/// into a solid sheet of lines (a 257-point grid at 960 pixels is all white
+/// in Sonar), so the mesh is thinned until its cells are at least this wide.
+const MIN_WIRE_CELL_PX: f32 = 8.0;
+
+/// The field on the coarsest nested grid whose cells, seen in this frame,
+/// are at least `MIN_WIRE_CELL_PX` wide (the field itself if they already are).
+fn legible(
+    field: Arc<Heightfield>,
+    settings: &Settings,
+    width: u32,
+    height: u32,
+) -> Arc<Heightfield> {
+    let cells = (field.size() - 1) as f32;
+    let zmax = field.max().max(0.0);
+    let view = View::new(
+        settings.view,
+        field.size(),
+        field.extent(),
+        finite(zmax),
+        width,
+        height,
+    );
+    let mid = cells / 2.0;
+    let span = (view.project(cells, mid, 0.0) - view.project(0.0, mid, 0.0)).length();
+    let px = span / cells;
+    if !(px.is_finite() && px > 0.0) || px >= MIN_WIRE_CELL_PX {
+        return field;
+    }
+    let levels = (MIN_WIRE_CELL_PX / px).log2().ceil() as u32;
+    Arc::new(field.coarsened(levels))
+}
+
 fn turned(field: Arc<Heightfield>, rotation: u32) -> Arc<Heightfield> {
     let quarters = ((rotation % 360 + 45) / 90) % 4;
     if quarters == 0 {

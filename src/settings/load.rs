@@ -212,14 +212,21 @@ pub struct Loaded {
 /// preferences file if it exists), then each `--set` in order.
 ///
 /// An explicit `config` that cannot be read, and any bad `--set`, are errors:
-/// they are mistakes on the command line. Problems inside the file are
-/// returned for the caller to report or refuse.
-pub fn resolve(config: Option<&Path>, sets: &[(String, String)]) -> Result<Loaded, Problem> {
+/// they are mistakes on the command line; except that with `missing_ok` an
+/// explicit file that does not exist yet means the defaults (the settings
+/// screen creates it on OK). Problems inside the file are returned for the
+/// caller to report or refuse.
+pub fn resolve(
+    config: Option<&Path>,
+    sets: &[(String, String)],
+    missing_ok: bool,
+) -> Result<Loaded, Problem> {
     let mut settings = Settings::default();
     let file = match config {
         Some(p) => Some(p.to_path_buf()),
         None => super::paths::config_file().filter(|p| p.exists()),
     };
+    let file = file.filter(|p| !(missing_ok && config.is_some() && !p.exists()));
     let mut problems = Vec::new();
     if let Some(path) = &file {
         problems = apply_file(&mut settings, path);

@@ -111,4 +111,26 @@ impl Heightfield {
             .copied()
             .fold(f32::NEG_INFINITY, f32::max)
     }
+
+    /// Every `2^levels`-th point in both directions: the same mountain on a
+    /// coarser grid. Subdivision grids nest, so for a generated field this is
+    /// exactly what a lower detail level would have produced from the same
+    /// seed. `levels` is limited so the result keeps `MIN_EXPONENT`.
+    pub fn coarsened(&self, levels: u32) -> Heightfield {
+        let levels = levels.min(self.exponent - MIN_EXPONENT);
+        let exponent = self.exponent - levels;
+        let stride = 1usize << levels;
+        let size = (1usize << exponent) + 1;
+        let mut heights = Vec::with_capacity(size * size);
+        for y in 0..size {
+            let row = self.row(y * stride);
+            heights.extend((0..size).map(|x| row[x * stride]));
+        }
+        Heightfield {
+            exponent,
+            size,
+            extent: self.extent,
+            heights,
+        }
+    }
 }

@@ -2,27 +2,220 @@
 
 pub mod heightfield;
 pub mod heightmap;
+mod noise;
+mod normalize;
+mod params;
+mod square;
+mod subdivide;
+mod triangle;
 
 pub use heightfield::Heightfield;
 
-use crate::settings::Settings;
+use params::Params;
+use subdivide::{Audited, Extremes, Job, Plain, Put};
+
+use crate::settings::{Generator, Settings};
 
 /// Builds the mountain the settings describe from one seed, bit for bit the
 /// same on every platform, build and thread count.
 ///
-/// STUB: a smooth dome; the terrain work replaces it.
+/// # Units
+/// Heights are in *height units*, sea level at 0, and
+/// [`Heightfield::extent`] is the width of the grid in the same units, so
+/// `height / extent` is the true slope. The extent depends only on the
+/// generator, never on the detail level: a detail change refines the same
+/// mountain (a point keeps its random value at every detail level, so a
+/// coarser grid is the finer one with points left out).
+/// - Square and Diamond (Mountain Terrain 3.0): the corners start within
+///   `±elevation/2` (elevation 100 by default) and cragginess adds at most
+///   `±cragginess` more. With the defaults (cragginess 96) the highest peak
+///   averages about 45 above the generator's zero (30-70 by seed) and the
+///   relief about 90, over an extent of [`SQUARE_EXTENT`]: peaks 10-15% of
+///   the width. `height` scales the relief by `height / 5`, so the default
+///   5 leaves it as generated and cragginess still makes taller or flatter
+///   mountains, as in Mountain Terrain.
+/// - Triangle (Fractal Mountain Climbing): the highest point is exactly
+///   `height * TRIANGLE_PEAK_PER_HEIGHT` (100 for the default 5) over an
+///   extent of [`TRIANGLE_EXTENT`] (20% of the width), after the contour
+///   power. If the sea is more than four times deeper than the land is high
+///   (a Bay profile, or a high sea level), the deepest point is put at
+///   `-4 * peak` instead and the land stays lower than `peak`.
+///
+/// # Sea level
+/// `settings.sea_level` moves the water line by a fraction of the relief on
+/// its side of the generator's zero: `0.5` raises it halfway from the
+/// generator's zero to the highest point, `1` to the highest point (all
+/// sea), `-0.5` lowers it halfway to the lowest point, `-1` to the lowest
+/// point (no sea). For the triangle generator this happens before the
+/// contour and height scaling, so the highest point above the new water
+/// line still gets the chosen height. Heights are then shifted so the
+/// water line is 0 in the output.
 pub fn generate(settings: &Settings, seed: u64) -> Heightfield {
-    let n = settings.grid_exponent();
-    let mut field = Heightfield::flat(n, 400.0);
+    generate_with_threads(settings, seed, default_threads())
+}
+
+/// [`generate`] on at most `threads` threads (0 counts as 1). The result
+/// is the same for every thread count.
+pub fn generate_with_threads(settings: &Settings, seed: u64, threads: usize) -> Heightfield {
+    let params = Params::from_settings(settings);
+    let mut field = Heightfield::flat(params.exponent, params.extent());
+    fill(&mut field, &params, seed, threads);
+    field
+}
+
+/// [`generate`] into an existing field, reusing its memory when its size
+/// fits (else it is replaced): a slide show that recycles the previous
+/// mountain's field skips the cost of fresh pages (at 4097x4097 the kernel
+/// spends about as long providing 64 MiB of zeroed pages as the generator
+/// spends filling them). Every point is overwritten; the result is the
+/// same bits as `generate`.
+pub fn generate_into(settings: &Settings, seed: u64, field: &mut Heightfield) {
+    let params = Params::from_settings(settings);
+    if field.exponent() == params.exponent {
+        field.set_extent(params.extent());
+    } else {
+        *field = Heightfield::flat(params.exponent, params.extent());
+    }
+    fill(field, &params, seed, default_threads());
+}
+
+/// Runs the generator and the finishing passes over `field`.
+fn fill(field: &mut Heightfield, params: &Params, seed: u64, threads: usize) {
+    let threads = threads.max(1);
+    let extremes = subdivide_all(field, params, seed, threads, &Plain);
+    finish(field, params, threads, extremes);
+}
+
+/// Width of the grid of the square generators, in height units.
+pub const SQUARE_EXTENT: f32 = 400.0;
+/// Width of the grid of the triangle generator, in height units.
+pub const TRIANGLE_EXTENT: f32 = 500.0;
+/// Height units of the triangle generator's highest point per step of
+/// `settings.height`.
+pub const TRIANGLE_PEAK_PER_HEIGHT: f32 = 20.0;
+
+/// What [`generate_audited`] found out about one run of a generator.
+#[derive(Debug, Clone)]
+pub struct Audit {
+    /// The finished field: bit for bit what [`generate`] returns.
+    pub field: Heightfield,
+    /// Stores onto a grid point that was already set: each one could
+    /// open a crack between the triangles that share the point.
+    pub rewrites: usize,
+    /// Grid points left unset (or computed from an unset point).
+    pub unset: usize,
+}
+
+/// Runs [`generate`] with every grid write checked, for tests: the field
+/// starts as NaN, a store onto a point that is no longer NaN counts as a
+/// rewrite, and points still NaN after the subdivision count as unset.
+/// Slower than `generate`; the generator code it runs is the same.
+pub fn generate_audited(settings: &Settings, seed: u64, threads: usize) -> Audit {
+    let params = Params::from_settings(settings);
+    let threads = threads.max(1);
+    let mut field = Heightfield::flat(params.exponent, params.extent());
+    field.heights_mut().fill(f32::NAN);
+    let audit = Audited::default();
+    let extremes = subdivide_all(&mut field, &params, seed, threads, &audit);
+    let unset = field.heights().iter().filter(|h| h.is_nan()).count();
+    finish(&mut field, &params, threads, extremes);
+    Audit {
+        field,
+        rewrites: audit.rewrites.into_inner(),
+        unset,
+    }
+}
+
+/// Threads `generate` uses: the machine's, up to 8 (the work is memory-bound).
+fn default_threads() -> usize {
+    std::thread::available_parallelism().map_or(1, |n| n.get().min(8))
+}
+
+/// Sets the starting points and runs the chosen generator's subdivision;
+/// returns the field's extremes if the subdivision saw them all.
+fn subdivide_all<P: Put>(
+    field: &mut Heightfield,
+    p: &Params,
+    seed: u64,
+    threads: usize,
+    put: &P,
+) -> Option<Extremes> {
     let size = field.size();
-    let phase = (seed % 7) as f32;
-    for y in 0..size {
-        for x in 0..size {
-            let u = x as f32 / (size - 1) as f32 - 0.5;
-            let v = y as f32 / (size - 1) as f32 - 0.5;
-            let h = 60.0 * (1.0 - 4.0 * (u * u + v * v)) + 5.0 * (u * 20.0 + phase).sin();
-            field.set(x, y, h - 10.0);
+    let noise = noise::Noise::new(seed, p.exponent);
+    let heights = field.heights_mut();
+    match p.generator {
+        Generator::Square | Generator::Diamond => {
+            let ordering = if p.generator == Generator::Square {
+                square::Ordering::Midpoint
+            } else {
+                square::Ordering::Diamond
+            };
+            let rule = square::Square {
+                ordering,
+                cragginess: p.cragginess,
+            };
+            rule.set_corners(heights, size, p.elevation, &noise, put);
+            let job = Job {
+                rule: &rule,
+                put,
+                noise,
+                threads,
+                parallel_work: subdivide::PARALLEL_WORK,
+                // Only a moved water line needs the extremes.
+                extremes: p.sea_level != 0.0,
+            };
+            subdivide::subdivide(heights, size, 0, &job)
+        }
+        Generator::Triangle => {
+            let rule = triangle::Triangle::new(p.roughness, p.profile);
+            rule.first_level(heights, size, &noise, put);
+            let job = Job {
+                rule: &rule,
+                put,
+                noise,
+                threads,
+                parallel_work: subdivide::PARALLEL_WORK,
+                extremes: true,
+            };
+            subdivide::subdivide(heights, size, 1, &job)
         }
     }
-    field
+}
+
+/// Applies sea level, contour and height to the subdivided field.
+fn finish(field: &mut Heightfield, p: &Params, threads: usize, extremes: Option<Extremes>) {
+    match p.generator {
+        Generator::Square | Generator::Diamond => {
+            normalize::finish_square(field, p, threads, extremes)
+        }
+        Generator::Triangle => normalize::finish_triangle(field, p, threads, extremes),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_subdivision_sees_the_true_extremes_when_asked() {
+        for generator in [Generator::Square, Generator::Diamond, Generator::Triangle] {
+            for (detail, sea_level) in [(4, 0.0), (7, 0.3), (10, 0.0), (10, -0.2)] {
+                for threads in [1, 2, 5] {
+                    let s = Settings {
+                        generator,
+                        detail,
+                        sea_level,
+                        ..Settings::default()
+                    };
+                    let params = Params::from_settings(&s);
+                    let mut field = Heightfield::flat(params.exponent, params.extent());
+                    let seen = subdivide_all(&mut field, &params, 17, threads, &Plain);
+                    let truth = normalize::min_max(field.heights(), 1);
+                    let wanted = generator == Generator::Triangle || sea_level != 0.0;
+                    let case = format!("{generator:?} {detail} {sea_level} {threads}");
+                    assert_eq!(seen, wanted.then_some(truth), "{case}");
+                }
+            }
+        }
+    }
 }

@@ -1,0 +1,62 @@
+//! Speed of the terrain generators (targets: 1025x1025 <= 3 ms, 4097x4097 <= 40 ms).
+
+use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use mountains::settings::{Generator, Settings};
+use mountains::terrain::{generate, generate_into, generate_with_threads};
+
+fn settings(generator: Generator, detail: u32) -> Settings {
+    Settings {
+        generator,
+        detail,
+        ..Settings::default()
+    }
+}
+
+fn generators(c: &mut Criterion) {
+    let mut group = c.benchmark_group("generate");
+    group.sample_size(10);
+    for generator in [Generator::Square, Generator::Diamond, Generator::Triangle] {
+        for detail in [10, 12] {
+            let s = settings(generator, detail);
+            let id = BenchmarkId::new(format!("{generator:?}"), (1 << detail) + 1);
+            group.bench_with_input(id, &s, |b, s| b.iter(|| generate(s, 7)));
+        }
+    }
+    group.finish();
+}
+
+fn one_thread(c: &mut Criterion) {
+    let mut group = c.benchmark_group("generate_1_thread");
+    group.sample_size(10);
+    for generator in [Generator::Diamond, Generator::Triangle] {
+        for detail in [10, 12] {
+            let s = settings(generator, detail);
+            let id = BenchmarkId::new(format!("{generator:?}"), (1 << detail) + 1);
+            group.bench_with_input(id, &s, |b, s| b.iter(|| generate_with_threads(s, 7, 1)));
+        }
+    }
+    group.finish();
+}
+
+fn contour(c: &mut Criterion) {
+    let mut s = settings(Generator::Triangle, 12);
+    s.contour = 1.5;
+    c.bench_function("generate/Triangle_contour_1.5/4097", |b| {
+        b.iter(|| generate(&s, 7))
+    });
+}
+
+fn reused_field(c: &mut Criterion) {
+    let mut group = c.benchmark_group("generate_into");
+    group.sample_size(10);
+    for generator in [Generator::Diamond, Generator::Triangle] {
+        let s = settings(generator, 12);
+        let mut field = generate(&s, 1);
+        let id = BenchmarkId::new(format!("{generator:?}"), 4097);
+        group.bench_function(id, |b| b.iter(|| generate_into(&s, 7, &mut field)));
+    }
+    group.finish();
+}
+
+criterion_group!(benches, generators, one_thread, contour, reused_field);
+criterion_main!(benches);

@@ -1,0 +1,524 @@
+//! Draws the settings screen into a `Frame`, in the grey, bevelled look of a
+//! Windows 95 dialog (seed 003's Settings dialog is the reference).
+
+use super::font::{self, ADVANCE, GLYPH_H, GLYPH_W};
+use super::layout::{Button, CTRL_X, LABEL_X, Layout, ROW_H, SEED_BUTTON, VALUE_X};
+use super::model::Model;
+use super::values::{self, Widget};
+use crate::render::{Frame, Rect};
+use crate::settings::keys::{self, KEYS, Value};
+
+const FACE: u32 = 0xC0C0C0;
+const LIGHT: u32 = 0xFFFFFF;
+const SHADOW: u32 = 0x808080;
+const DARK: u32 = 0x000000;
+const TEXT: u32 = 0x000000;
+const DIM: u32 = 0x808080;
+const HINT: u32 = 0x404040;
+const SELECT: u32 = 0x000080;
+const SELECT_TEXT: u32 = 0xFFFFFF;
+const FIELD: u32 = 0xFFFFFF;
+const ALERT: u32 = 0xA00000;
+
+/// Everything the screen shows besides the model.
+pub struct Extras<'a> {
+    /// The preview picture, drawn inside `layout.preview`.
+    pub preview: Option<&'a Frame>,
+    /// One line under the preview saying what it shows.
+    pub caption: &'a str,
+    /// The preferences file's path, shown over the buttons.
+    pub file: &'a str,
+}
+
+/// Draws the whole screen.
+pub fn draw(frame: &mut Frame, layout: &Layout, model: &Model, extras: &Extras<'_>) {
+    frame.clear(FACE);
+    draw_preview(frame, layout, extras);
+    for (b, r) in &layout.buttons {
+        let focused = model.focused_button() == Some(*b);
+        draw_button(frame, layout, *r, b.caption(), focused, *b == Button::Ok);
+    }
+    for (y, title) in &layout.headings {
+        let x = layout.panel_x + layout.px(2);
+        text(frame, layout, x, *y + layout.px(4), title, SELECT);
+        let w = layout.px(font::text_width(title));
+        let line_y = *y + layout.px(15);
+        fill(frame, rect(x, line_y, w, layout.px(1)), SELECT);
+    }
+    for i in 0..KEYS.len() {
+        draw_row(frame, layout, model, i);
+    }
+    draw_help(frame, layout, model, extras);
+    if let Some(list) = &model.open_list {
+        draw_list(frame, layout, list, model.list_pick);
+    }
+}
+
+fn rect(x0: u32, y0: u32, w: u32, h: u32) -> Rect {
+    Rect {
+        x0,
+        y0,
+        x1: x0 + w,
+        y1: y0 + h,
+    }
+}
+
+/// Fills `r`, clipped to the frame.
+pub fn fill(frame: &mut Frame, r: Rect, color: u32) {
+    let (w, h) = (frame.width(), frame.height());
+    let (x0, x1) = (r.x0.min(w), r.x1.min(w));
+    let (y0, y1) = (r.y0.min(h), r.y1.min(h));
+    if x0 >= x1 {
+        return;
+    }
+    let px = frame.pixels_mut();
+    for y in y0..y1 {
+        let row = (y * w) as usize;
+        px[row + x0 as usize..row + x1 as usize].fill(color);
+    }
+}
+
+/// Draws `s` with its top-left at `(x, y)`, one font pixel per `scale` pixels.
+pub fn text(frame: &mut Frame, layout: &Layout, x: u32, y: u32, s: &str, color: u32) {
+    let k = layout.scale;
+    for (n, c) in s.chars().enumerate() {
+        let gx = x + n as u32 * ADVANCE * k;
+        if gx >= frame.width() {
+            break;
+        }
+        for (row, bits) in font::glyph(c).iter().enumerate() {
+            for col in 0..GLYPH_W {
+                if bits & (1 << (GLYPH_W - 1 - col)) != 0 {
+                    let r = rect(gx + col * k, y + row as u32 * k, k, k);
+                    fill(frame, r, color);
+                }
+            }
+        }
+    }
+}
+
+/// Cuts `s` to at most `chars` characters, marking the cut with "..".
+fn fit(s: &str, chars: usize) -> String {
+    if s.chars().count() <= chars {
+        return s.to_string();
+    }
+    let keep: String = s.chars().take(chars.saturating_sub(2)).collect();
+    format!("{keep}..")
+}
+
+/// A raised (or, with `sunken`, pressed-in) bevelled box.
+fn bevel(frame: &mut Frame, layout: &Layout, r: Rect, sunken: bool) {
+    let t = layout.px(1);
+    let (tl, br) = if sunken {
+        (SHADOW, LIGHT)
+    } else {
+        (LIGHT, DARK)
+    };
+    fill(frame, rect(r.x0, r.y0, r.x1 - r.x0, t), tl);
+    fill(frame, rect(r.x0, r.y0, t, r.y1 - r.y0), tl);
+    fill(frame, rect(r.x0, r.y1 - t, r.x1 - r.x0, t), br);
+    fill(frame, rect(r.x1 - t, r.y0, t, r.y1 - r.y0), br);
+}
+
+fn outline(frame: &mut Frame, r: Rect, t: u32, color: u32) {
+    fill(frame, rect(r.x0, r.y0, r.x1 - r.x0, t), color);
+    fill(frame, rect(r.x0, r.y1 - t, r.x1 - r.x0, t), color);
+    fill(frame, rect(r.x0, r.y0, t, r.y1 - r.y0), color);
+    fill(frame, rect(r.x1 - t, r.y0, t, r.y1 - r.y0), color);
+}
+
+/// Centres in logical pixels, so a 200% screen is exactly the 100% one doubled.
+fn centred_text(frame: &mut Frame, layout: &Layout, r: Rect, s: &str, color: u32) {
+    let k = layout.scale;
+    let w = font::text_width(s);
+    let x = r.x0 + layout.px(((r.x1 - r.x0) / k).saturating_sub(w) / 2);
+    let y = r.y0 + layout.px(((r.y1 - r.y0) / k).saturating_sub(7) / 2);
+    text(frame, layout, x, y, s, color);
+}
+
+fn draw_button(
+    frame: &mut Frame,
+    layout: &Layout,
+    r: Rect,
+    caption: &str,
+    focus: bool,
+    default: bool,
+) {
+    fill(frame, r, FACE);
+    bevel(frame, layout, r, false);
+    if default {
+        outline(frame, r, layout.px(1), DARK);
+    }
+    centred_text(frame, layout, r, caption, TEXT);
+    if focus {
+        let inset = layout.px(3);
+        let inner = Rect {
+            x0: r.x0 + inset,
+            y0: r.y0 + inset,
+            x1: r.x1 - inset,
+            y1: r.y1 - inset,
+        };
+        dotted(frame, inner, layout.scale);
+    }
+}
+
+/// The classic dotted focus rectangle.
+fn dotted(frame: &mut Frame, r: Rect, k: u32) {
+    let mut x = r.x0;
+    while x + k <= r.x1 {
+        fill(frame, rect(x, r.y0, k, k), DARK);
+        fill(frame, rect(x, r.y1 - k, k, k), DARK);
+        x += 2 * k;
+    }
+    let mut y = r.y0;
+    while y + k <= r.y1 {
+        fill(frame, rect(r.x0, y, k, k), DARK);
+        fill(frame, rect(r.x1 - k, y, k, k), DARK);
+        y += 2 * k;
+    }
+}
+
+fn draw_preview(frame: &mut Frame, layout: &Layout, extras: &Extras<'_>) {
+    let p = layout.preview;
+    let b = layout.px(2);
+    let inner = Rect {
+        x0: p.x0 + b,
+        y0: p.y0 + b,
+        x1: p.x1 - b,
+        y1: p.y1 - b - layout.px(ROW_H),
+    };
+    fill(frame, p, FACE);
+    bevel(frame, layout, p, true);
+    fill(frame, inner, 0);
+    if let Some(pic) = extras.preview {
+        blit(frame, pic, inner.x0, inner.y0);
+    }
+    let y = inner.y1 + layout.px(5);
+    text(
+        frame,
+        layout,
+        inner.x0 + layout.px(4),
+        y,
+        extras.caption,
+        TEXT,
+    );
+}
+
+/// The preview picture's size for a layout.
+pub fn preview_size(layout: &Layout) -> (u32, u32) {
+    let p = layout.preview;
+    let b = layout.px(2);
+    let w = (p.x1 - p.x0).saturating_sub(2 * b);
+    let h = (p.y1 - p.y0).saturating_sub(2 * b + layout.px(ROW_H));
+    (w.max(1), h.max(1))
+}
+
+fn blit(frame: &mut Frame, pic: &Frame, x: u32, y: u32) {
+    let fw = frame.width();
+    let w = pic.width().min(fw.saturating_sub(x));
+    let h = pic.height().min(frame.height().saturating_sub(y));
+    for row in 0..h {
+        let src = &pic.pixels()[(row * pic.width()) as usize..][..w as usize];
+        let at = ((y + row) * fw + x) as usize;
+        frame.pixels_mut()[at..at + w as usize].copy_from_slice(src);
+    }
+}
+
+fn draw_row(frame: &mut Frame, layout: &Layout, model: &Model, i: usize) {
+    let key = &KEYS[i];
+    let r = layout.row(i);
+    let focused = model.focused_row() == Some(i);
+    let label_right = layout.panel_x + layout.px(CTRL_X - 4);
+    let ty = r.y0 + layout.px(5);
+    if focused {
+        fill(
+            frame,
+            rect(
+                r.x0,
+                r.y0 + layout.px(1),
+                label_right - r.x0,
+                layout.px(ROW_H - 2),
+            ),
+            SELECT,
+        );
+    }
+    let color = match (focused, values::matters(&model.settings, key)) {
+        (true, _) => SELECT_TEXT,
+        (false, true) => TEXT,
+        (false, false) => DIM,
+    };
+    if model.changed(i) {
+        text(frame, layout, r.x0 + layout.px(3), ty, "*", color);
+    }
+    let label = fit(
+        &values::label(key),
+        ((CTRL_X - LABEL_X - 4) / ADVANCE) as usize,
+    );
+    text(frame, layout, r.x0 + layout.px(LABEL_X), ty, &label, color);
+    let editing = if focused {
+        model.editing.as_deref()
+    } else {
+        None
+    };
+    match values::widget(key) {
+        Widget::Slider => draw_slider(frame, layout, model, i, editing),
+        Widget::Check => draw_check(frame, layout, model, i),
+        Widget::Choice => draw_choice(frame, layout, model, i),
+        Widget::Text => draw_field(frame, layout, model, i, editing, 372),
+        Widget::Seed => {
+            draw_field(frame, layout, model, i, editing, SEED_BUTTON.0 - 4);
+            let r = layout.row(i);
+            let caption = if model.settings.seed.is_some() {
+                "Random"
+            } else {
+                "Keep"
+            };
+            small_button(frame, layout, layout.columns(SEED_BUTTON), r.y0, caption);
+        }
+    }
+}
+
+fn small_button(frame: &mut Frame, layout: &Layout, span: (u32, u32), y: u32, caption: &str) {
+    let r = Rect {
+        x0: span.0,
+        y0: y + layout.px(2),
+        x1: span.1,
+        y1: y + layout.px(ROW_H - 2),
+    };
+    fill(frame, r, FACE);
+    bevel(frame, layout, r, false);
+    centred_text(frame, layout, r, caption, TEXT);
+}
+
+fn draw_slider(frame: &mut Frame, layout: &Layout, model: &Model, i: usize, editing: Option<&str>) {
+    let key = &KEYS[i];
+    let y = layout.row(i).y0;
+    let (minus, plus) = layout.minus_plus();
+    small_button(frame, layout, minus, y, "-");
+    small_button(frame, layout, plus, y, "+");
+    let (t0, t1) = layout.track();
+    let mid = y + layout.px(ROW_H / 2);
+    let groove = Rect {
+        x0: t0,
+        y0: mid - layout.px(2),
+        x1: t1,
+        y1: mid + layout.px(2),
+    };
+    bevel(frame, layout, groove, true);
+    let v = values::number(&model.settings, key).unwrap_or(0.0);
+    let f = values::fraction(key, v);
+    let travel = (t1 - t0) / layout.scale - 8;
+    let x = t0 + layout.px((travel as f64 * f).round() as u32);
+    let thumb = rect(x, y + layout.px(2), layout.px(8), layout.px(ROW_H - 4));
+    fill(frame, thumb, FACE);
+    bevel(frame, layout, thumb, false);
+    let vx = layout.panel_x + layout.px(VALUE_X);
+    let ty = y + layout.px(5);
+    match editing {
+        Some(t) => typed_text(frame, layout, vx, y, layout.px(56), t),
+        None => text(
+            frame,
+            layout,
+            vx,
+            ty,
+            &fit(&values::display(&model.settings, key), 9),
+            TEXT,
+        ),
+    }
+}
+
+/// A white field with typed text and a caret.
+fn typed_text(frame: &mut Frame, layout: &Layout, x: u32, y: u32, w: u32, t: &str) {
+    let r = rect(x - layout.px(2), y + layout.px(1), w, layout.px(ROW_H - 2));
+    fill(frame, r, FIELD);
+    bevel(frame, layout, r, true);
+    let chars = ((w / layout.scale).saturating_sub(10) / ADVANCE) as usize;
+    let n = t.chars().count();
+    let shown: String = t.chars().skip(n.saturating_sub(chars)).collect();
+    let ty = y + layout.px(5);
+    text(frame, layout, x, ty, &shown, TEXT);
+    let cx = x + layout.px(font::text_width(&shown)) + layout.px(1);
+    fill(
+        frame,
+        rect(cx, ty - layout.px(1), layout.px(1), layout.px(GLYPH_H)),
+        TEXT,
+    );
+}
+
+fn draw_check(frame: &mut Frame, layout: &Layout, model: &Model, i: usize) {
+    let y = layout.row(i).y0;
+    let x = layout.panel_x + layout.px(CTRL_X);
+    let boxr = rect(x, y + layout.px(3), layout.px(12), layout.px(12));
+    fill(frame, boxr, FIELD);
+    bevel(frame, layout, boxr, true);
+    let on = keys::get(&model.settings, &KEYS[i]) == Value::Bool(true);
+    if on {
+        tick(frame, layout, x + layout.px(3), y + layout.px(6));
+    }
+    let t = if on { "on" } else { "off" };
+    text(frame, layout, x + layout.px(18), y + layout.px(5), t, TEXT);
+}
+
+/// A check mark, 7 by 5 font pixels, two pixels thick.
+fn tick(frame: &mut Frame, layout: &Layout, x: u32, y: u32) {
+    let k = layout.scale;
+    let cols: [u32; 7] = [2, 3, 4, 3, 2, 1, 0];
+    for (c, top) in cols.iter().enumerate() {
+        fill(frame, rect(x + c as u32 * k, y + top * k, k, 2 * k), TEXT);
+    }
+}
+
+fn draw_choice(frame: &mut Frame, layout: &Layout, model: &Model, i: usize) {
+    let y = layout.row(i).y0;
+    let (left, right) = layout.arrows();
+    small_button(frame, layout, left, y, "<");
+    small_button(frame, layout, right, y, ">");
+    let field = Rect {
+        x0: left.1 + layout.px(2),
+        y0: y + layout.px(2),
+        x1: right.0 - layout.px(2),
+        y1: y + layout.px(ROW_H - 2),
+    };
+    fill(frame, field, FIELD);
+    bevel(frame, layout, field, true);
+    let s = values::display(&model.settings, &KEYS[i]);
+    centred_text(frame, layout, field, &s, TEXT);
+}
+
+/// A text field from the control column to `right` (logical, panel-relative).
+fn draw_field(
+    frame: &mut Frame,
+    layout: &Layout,
+    model: &Model,
+    i: usize,
+    editing: Option<&str>,
+    right: u32,
+) {
+    let y = layout.row(i).y0;
+    let x = layout.panel_x + layout.px(CTRL_X + 2);
+    let w = layout.px(right - CTRL_X);
+    match editing {
+        Some(t) => typed_text(frame, layout, x, y, w, t),
+        None => {
+            let r = rect(x - layout.px(2), y + layout.px(2), w, layout.px(ROW_H - 4));
+            fill(frame, r, FIELD);
+            bevel(frame, layout, r, true);
+            let chars = ((right - CTRL_X - 8) / ADVANCE) as usize;
+            let s = fit(&values::display(&model.settings, &KEYS[i]), chars);
+            text(frame, layout, x, y + layout.px(5), &s, TEXT);
+        }
+    }
+}
+
+fn draw_help(frame: &mut Frame, layout: &Layout, model: &Model, extras: &Extras<'_>) {
+    let x = layout.panel_x + layout.px(2);
+    let chars = (372 / ADVANCE) as usize;
+    let mut y = layout.help_y;
+    let line = layout.px(12);
+    let mut lines: Vec<(String, u32)> = Vec::new();
+    if let Some(i) = model.focused_row() {
+        let key = &KEYS[i];
+        lines.push((key.doc.to_string(), TEXT));
+        lines.push((format!("Allowed: {}", key.kind.allowed()), HINT));
+        if values::accepts_typing(key) {
+            lines.push(("Type a value and press Enter; Esc cancels.".into(), HINT));
+        }
+    } else {
+        lines.push((
+            "Tab moves, arrows change, Enter saves, Esc cancels.".into(),
+            HINT,
+        ));
+    }
+    if (0..KEYS.len()).any(|i| model.changed(i)) {
+        lines.push(("* changed here; OK saves, Cancel forgets.".into(), HINT));
+    }
+    let alert = if model.file_error.is_some() {
+        ALERT
+    } else {
+        TEXT
+    };
+    for part in wrap(&model.message, chars) {
+        lines.push((part, alert));
+    }
+    let bottom = layout.button(Button::Ok).y0 - layout.px(14);
+    for (s, color) in lines {
+        for part in wrap(&s, chars) {
+            if y + line > bottom {
+                break;
+            }
+            text(frame, layout, x, y, &part, color);
+            y += line;
+        }
+    }
+    let file = fit(&format!("File: {}", extras.file), chars);
+    text(frame, layout, x, bottom + layout.px(2), &file, HINT);
+}
+
+/// Splits `s` into lines of at most `width` characters at spaces.
+pub fn wrap(s: &str, width: usize) -> Vec<String> {
+    let mut lines = Vec::new();
+    let mut cur = String::new();
+    for word in s.split_whitespace() {
+        let word = fit(word, width);
+        if !cur.is_empty() && cur.chars().count() + 1 + word.chars().count() > width {
+            lines.push(std::mem::take(&mut cur));
+        }
+        if !cur.is_empty() {
+            cur.push(' ');
+        }
+        cur.push_str(&word);
+    }
+    if !cur.is_empty() {
+        lines.push(cur);
+    }
+    lines
+}
+
+/// A data set as listed: its name first, then the folder it is in.
+fn list_entry(path: &std::path::Path) -> String {
+    let name = path.file_name().map_or_else(
+        || path.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    );
+    match path.parent() {
+        Some(dir) => format!("{name}   in {}", dir.display()),
+        None => name,
+    }
+}
+
+fn draw_list(frame: &mut Frame, layout: &Layout, list: &[std::path::PathBuf], pick: usize) {
+    let shown = list.len().min(layout.list_capacity());
+    if shown == 0 {
+        return;
+    }
+    let first = layout.list_item(0);
+    let last = layout.list_item(shown - 1);
+    let pad = layout.px(4);
+    let bg = Rect {
+        x0: first.x0 - pad,
+        y0: first.y0 - pad,
+        x1: first.x1 + pad,
+        y1: last.y1 + pad,
+    };
+    fill(frame, bg, FIELD);
+    outline(frame, bg, layout.px(1), DARK);
+    let chars = ((first.x1 - first.x0) / layout.px(ADVANCE)).saturating_sub(1) as usize;
+    for (i, path) in list.iter().take(shown).enumerate() {
+        let r = layout.list_item(i);
+        let color = if i == pick {
+            fill(frame, r, SELECT);
+            SELECT_TEXT
+        } else {
+            TEXT
+        };
+        let name = fit(&list_entry(path), chars);
+        text(
+            frame,
+            layout,
+            r.x0 + layout.px(3),
+            r.y0 + layout.px(5),
+            &name,
+            color,
+        );
+    }
+}

@@ -1,0 +1,357 @@
+//! Where everything sits on the settings screen, and what a pointer is over.
+//!
+//! Positions are planned in logical pixels and multiplied by a whole scale
+//! (1 at 100%, 2 at 200%), so the font stays crisp and hit-testing matches
+//! drawing exactly at every scale.
+
+use super::values::{self, Widget};
+use crate::render::Rect;
+use crate::settings::keys::KEYS;
+
+/// Logical size the window asks for.
+pub const WINDOW_W: u32 = 960;
+/// Logical height the window asks for.
+pub const WINDOW_H: u32 = 620;
+
+const MARGIN: u32 = 8;
+const PANEL_W: u32 = 372;
+/// Height of one settings row, logical pixels.
+pub const ROW_H: u32 = 18;
+const BUTTON_H: u32 = 22;
+const BUTTON_W: u32 = 84;
+const TOOL_W: u32 = 64;
+
+/// Control columns inside a row, logical pixels from the panel's left.
+pub const LABEL_X: u32 = 12;
+/// Where a row's control starts.
+pub const CTRL_X: u32 = 128;
+const MINUS: (u32, u32) = (128, 142);
+const TRACK: (u32, u32) = (148, 290);
+const PLUS: (u32, u32) = (296, 310);
+/// Where a slider's value text starts.
+pub const VALUE_X: u32 = 316;
+const LEFT_ARROW: (u32, u32) = MINUS;
+const RIGHT_ARROW: (u32, u32) = (358, 372);
+/// The seed row's "Random" / "Keep" button.
+pub const SEED_BUTTON: (u32, u32) = (306, 372);
+
+/// The buttons, in focus order after the rows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Button {
+    /// A new preview mountain.
+    New,
+    /// Open a saved data set (a PNG heightmap).
+    Open,
+    /// Save the preview mountain as a data set.
+    SaveData,
+    /// Put every value back to its default (on screen only).
+    Defaults,
+    /// Open the preferences file in the user's editor.
+    EditFile,
+    /// Save and close.
+    Ok,
+    /// Close without saving.
+    Cancel,
+}
+
+impl Button {
+    /// Every button, in focus order.
+    pub const ALL: [Button; 7] = [
+        Button::New,
+        Button::Open,
+        Button::SaveData,
+        Button::Defaults,
+        Button::EditFile,
+        Button::Ok,
+        Button::Cancel,
+    ];
+
+    /// The caption.
+    pub fn caption(self) -> &'static str {
+        match self {
+            Button::New => "New",
+            Button::Open => "Open...",
+            Button::SaveData => "Save",
+            Button::Defaults => "Defaults",
+            Button::EditFile => "Edit file",
+            Button::Ok => "OK",
+            Button::Cancel => "Cancel",
+        }
+    }
+}
+
+/// Section headings, placed before the row of the named key.
+pub const SECTIONS: &[(&str, &str)] = &[
+    ("seed", "The mountain"),
+    ("color", "The look"),
+    ("auto_redraw", "The slide show"),
+];
+
+/// Which part of a row a point is on.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Part {
+    /// The label or empty space.
+    Label,
+    /// The slider's minus box, or a choice's left arrow.
+    Minus,
+    /// The slider's plus box.
+    Plus,
+    /// The slider track, at this fraction of its length.
+    Track(f64),
+    /// A choice's right arrow, or the seed's Random/Keep button.
+    Next,
+    /// The control itself (check box, choice text, text field).
+    Control,
+}
+
+/// What a point on the screen is over.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Hit {
+    /// A settings row (index into `KEYS`) and the part of it.
+    Row(usize, Part),
+    /// A button.
+    Button(Button),
+    /// Entry `i` of the open-a-data-set list.
+    ListItem(usize),
+    /// The preview picture.
+    Preview,
+}
+
+/// The planned screen for one window size and scale.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Layout {
+    /// Whole pixels per logical pixel (1 or more).
+    pub scale: u32,
+    /// Frame width in pixels.
+    pub width: u32,
+    /// Frame height in pixels.
+    pub height: u32,
+    /// Left edge of the settings panel, pixels.
+    pub panel_x: u32,
+    /// Top of each row, pixels, indexed like `KEYS`.
+    pub row_y: Vec<u32>,
+    /// Section headings: top, text.
+    pub headings: Vec<(u32, &'static str)>,
+    /// Where the focused key's help text starts, pixels.
+    pub help_y: u32,
+    /// Each button and its rectangle.
+    pub buttons: Vec<(Button, Rect)>,
+    /// The preview picture.
+    pub preview: Rect,
+}
+
+/// The whole scale for a window's scale factor (1.25 -> 1, 1.5 and 2 -> 2),
+/// lowered until the window fits on a monitor of `monitor` pixels (a
+/// 1920x1080 screen at 150% gets 1, not a window taller than the screen).
+pub fn whole_scale(scale_factor: f64, monitor: Option<(u32, u32)>) -> u32 {
+    let mut s = if scale_factor.is_finite() {
+        scale_factor.round().clamp(1.0, 8.0) as u32
+    } else {
+        1
+    };
+    if let Some((mw, mh)) = monitor {
+        // Leave room for a title bar and a task bar.
+        while s > 1 && (WINDOW_W * s > mw || (WINDOW_H + 60) * s > mh) {
+            s -= 1;
+        }
+    }
+    s
+}
+
+fn rect(x0: u32, y0: u32, w: u32, h: u32) -> Rect {
+    Rect {
+        x0,
+        y0,
+        x1: x0 + w,
+        y1: y0 + h,
+    }
+}
+
+impl Layout {
+    /// Plans a `width` x `height` frame at whole `scale`. A frame smaller
+    /// than the window asks for keeps the panel's size and shrinks the preview.
+    pub fn new(width: u32, height: u32, scale: u32) -> Layout {
+        let s = scale.max(1);
+        let w_log = (width / s).max(WINDOW_W);
+        let h_log = (height / s).max(WINDOW_H);
+        let panel = w_log - MARGIN - PANEL_W;
+        let mut y = MARGIN;
+        let mut row_y = Vec::with_capacity(KEYS.len());
+        let mut headings = Vec::new();
+        for key in KEYS {
+            if let Some((_, title)) = SECTIONS.iter().find(|(k, _)| *k == key.name) {
+                headings.push((y * s, *title));
+                y += ROW_H;
+            }
+            row_y.push(y * s);
+            y += ROW_H;
+        }
+        let help_y = y + 6;
+        let by = h_log - MARGIN - BUTTON_H;
+        let mut buttons = Vec::new();
+        for (i, b) in [Button::New, Button::Open, Button::SaveData]
+            .iter()
+            .enumerate()
+        {
+            let r = rect(MARGIN + i as u32 * (TOOL_W + 6), MARGIN, TOOL_W, BUTTON_H);
+            buttons.push((*b, r));
+        }
+        let bottom = [
+            Button::Defaults,
+            Button::EditFile,
+            Button::Ok,
+            Button::Cancel,
+        ];
+        for (i, b) in bottom.iter().enumerate() {
+            let x = panel + PANEL_W - (4 - i as u32) * (BUTTON_W + 6) + 6;
+            buttons.push((*b, rect(x, by, BUTTON_W, BUTTON_H)));
+        }
+        let top = MARGIN + BUTTON_H + 6;
+        let preview = rect(MARGIN, top, panel - 2 * MARGIN, h_log - top - MARGIN);
+        let scaled = |r: Rect| Rect {
+            x0: r.x0 * s,
+            y0: r.y0 * s,
+            x1: r.x1 * s,
+            y1: r.y1 * s,
+        };
+        Layout {
+            scale: s,
+            width,
+            height,
+            panel_x: panel * s,
+            row_y,
+            headings,
+            help_y: help_y * s,
+            buttons: buttons.into_iter().map(|(b, r)| (b, scaled(r))).collect(),
+            preview: scaled(preview),
+        }
+    }
+
+    /// A logical length in pixels.
+    pub fn px(&self, logical: u32) -> u32 {
+        logical * self.scale
+    }
+
+    /// The rectangle of button `b`.
+    pub fn button(&self, b: Button) -> Rect {
+        self.buttons
+            .iter()
+            .find(|(x, _)| *x == b)
+            .map_or(Rect::default(), |(_, r)| *r)
+    }
+
+    /// The rectangle of row `i` (across the whole panel).
+    pub fn row(&self, i: usize) -> Rect {
+        let y0 = self.row_y.get(i).copied().unwrap_or(0);
+        Rect {
+            x0: self.panel_x,
+            y0,
+            x1: self.panel_x + self.px(PANEL_W),
+            y1: y0 + self.px(ROW_H),
+        }
+    }
+
+    /// A span of a row's columns (logical, from the panel's left) in pixels.
+    pub fn columns(&self, span: (u32, u32)) -> (u32, u32) {
+        (
+            self.panel_x + self.px(span.0),
+            self.panel_x + self.px(span.1),
+        )
+    }
+
+    /// The slider track's left and right ends, pixels.
+    pub fn track(&self) -> (u32, u32) {
+        self.columns(TRACK)
+    }
+
+    /// The slider's minus and plus boxes, pixels.
+    pub fn minus_plus(&self) -> ((u32, u32), (u32, u32)) {
+        (self.columns(MINUS), self.columns(PLUS))
+    }
+
+    /// A choice's arrow boxes, pixels.
+    pub fn arrows(&self) -> ((u32, u32), (u32, u32)) {
+        (self.columns(LEFT_ARROW), self.columns(RIGHT_ARROW))
+    }
+
+    /// Rectangle of entry `i` of a list of `n` shown over the preview.
+    pub fn list_item(&self, i: usize) -> Rect {
+        let p = self.preview;
+        let y0 = p.y0 + self.px(8) + i as u32 * self.px(ROW_H);
+        Rect {
+            x0: p.x0 + self.px(8),
+            y0,
+            x1: p.x1.saturating_sub(self.px(8)),
+            y1: y0 + self.px(ROW_H),
+        }
+    }
+
+    /// How many list entries fit over the preview.
+    pub fn list_capacity(&self) -> usize {
+        let h = self
+            .preview
+            .y1
+            .saturating_sub(self.preview.y0 + self.px(16));
+        (h / self.px(ROW_H)).max(1) as usize
+    }
+
+    /// What the point `(x, y)` (pixels) is over; `list_len` entries of the
+    /// open list are shown when it is open.
+    pub fn hit(&self, x: f64, y: f64, list_len: Option<usize>) -> Option<Hit> {
+        if !(x.is_finite() && y.is_finite()) || x < 0.0 || y < 0.0 {
+            return None;
+        }
+        let (xi, yi) = (x as u32, y as u32);
+        let inside = |r: &Rect| xi >= r.x0 && xi < r.x1 && yi >= r.y0 && yi < r.y1;
+        if let Some(n) = list_len {
+            let shown = n.min(self.list_capacity());
+            if let Some(i) = (0..shown).find(|i| inside(&self.list_item(*i))) {
+                return Some(Hit::ListItem(i));
+            }
+        }
+        if let Some((b, _)) = self.buttons.iter().find(|(_, r)| inside(r)) {
+            return Some(Hit::Button(*b));
+        }
+        if let Some(i) = (0..self.row_y.len()).find(|i| inside(&self.row(*i))) {
+            return Some(Hit::Row(i, self.part(i, x)));
+        }
+        inside(&self.preview).then_some(Hit::Preview)
+    }
+
+    /// The part of row `i` at pixel column `x`.
+    fn part(&self, i: usize, x: f64) -> Part {
+        let within = |span: (u32, u32)| {
+            let (a, b) = self.columns(span);
+            x >= a as f64 && x < b as f64
+        };
+        let seed = KEYS.get(i).map(values::widget) == Some(Widget::Seed);
+        if seed && within(SEED_BUTTON) {
+            Part::Next
+        } else if seed && within((CTRL_X, SEED_BUTTON.0)) {
+            Part::Control
+        } else if within(MINUS) {
+            Part::Minus
+        } else if within(RIGHT_ARROW) {
+            Part::Next
+        } else if within(PLUS) {
+            Part::Plus
+        } else if within(TRACK) {
+            Part::Track(self.track_fraction(x))
+        } else if x < self.columns((CTRL_X, CTRL_X)).0 as f64 {
+            Part::Label
+        } else {
+            Part::Control
+        }
+    }
+
+    /// A slider fraction for a pointer at column `x`, clamped to the track
+    /// (used while dragging, when the pointer may leave it).
+    /// The thumb is 8 logical pixels wide, so its centre travels from 4 in
+    /// from the left end to 4 in from the right.
+    pub fn track_fraction(&self, x: f64) -> f64 {
+        let (t0, t1) = self.track();
+        let half = self.px(4) as f64;
+        let travel = (t1 - t0) as f64 - 2.0 * half;
+        ((x - t0 as f64 - half) / travel).clamp(0.0, 1.0)
+    }
+}

@@ -1,0 +1,65 @@
+//! The settings screen (`/c`, `--settings`): every preference on one side,
+//! a live preview mountain on the other, drawn with our own framebuffer and
+//! bitmap font, usable by keyboard alone and by mouse.
+//!
+//! `model` (state and inputs), `layout` (geometry, hit-testing), `values`
+//! (widgets from the key table) and `draw` are pure and tested without a
+//! window; `screen` ties them to files and the preview; `window` is the
+//! winit + softbuffer shell.
+
+pub mod datasets;
+pub mod draw;
+pub mod editor;
+pub mod font;
+pub mod layout;
+pub mod model;
+pub mod preview;
+pub mod screen;
+pub mod values;
+pub mod window;
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use crate::settings::{load, paths};
+
+/// Runs the settings screen for the preferences file `config` (else the
+/// platform's), starting from `loaded`. `parent` owns the window on Windows.
+pub fn run(config: Option<&Path>, loaded: &load::Loaded, parent: Option<u64>) -> ExitCode {
+    let Some(path) = config_path(config, loaded) else {
+        eprintln!("mountains: no home directory: cannot find the preferences file");
+        return ExitCode::FAILURE;
+    };
+    let settings = loaded.settings.clone();
+    let problems = loaded.problems.clone();
+    let make: window::MakeScreen =
+        Box::new(move |size, scale| screen::Screen::new(settings, &problems, path, size, scale));
+    match window::run(make, parent.or_else(default_owner)) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            crate::log::warn(&e);
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// `/c` without a handle: Windows means "modal to the foreground window"
+/// (the Screen Saver Settings dialog that sent it).
+#[cfg(windows)]
+fn default_owner() -> Option<u64> {
+    // SAFETY: takes no arguments; returns a window handle or null.
+    let hwnd = unsafe { windows_sys::Win32::UI::WindowsAndMessaging::GetForegroundWindow() };
+    (!hwnd.is_null()).then_some(hwnd as usize as u64)
+}
+
+#[cfg(not(windows))]
+fn default_owner() -> Option<u64> {
+    None
+}
+
+fn config_path(config: Option<&Path>, loaded: &load::Loaded) -> Option<PathBuf> {
+    config
+        .map(Path::to_path_buf)
+        .or_else(|| loaded.file.clone())
+        .or_else(paths::config_file)
+}

@@ -1,0 +1,132 @@
+//! The live preview: one mountain, drawn a few strips per frame into its own
+//! picture, remade or repainted as the settings change. No window here.
+
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use crate::render::{Frame, Painter};
+use crate::settings::Settings;
+use crate::terrain::{self, Heightfield, heightmap};
+
+/// The preview never generates more than 2^9+1 points a side: the picture is
+/// a few hundred pixels wide, so more detail would only cost time.
+pub const MAX_PREVIEW_DETAIL: u32 = 9;
+
+/// Strips drawn per frame are the total divided by this: about a third of a
+/// second per mountain at 60 frames a second.
+const FRAMES_PER_MOUNTAIN: usize = 20;
+
+/// What the preview shows and how far it has drawn it.
+pub struct Preview {
+    field: Option<Arc<Heightfield>>,
+    /// The seed of the mountain shown, when it was generated or its file says.
+    pub seed: Option<u64>,
+    /// The data set file shown, when it came from one.
+    pub file: Option<PathBuf>,
+    painter: Option<Painter>,
+    picture: Option<Frame>,
+}
+
+impl Default for Preview {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl Preview {
+    /// An empty preview.
+    pub fn new() -> Preview {
+        Preview {
+            field: None,
+            seed: None,
+            file: None,
+            painter: None,
+            picture: None,
+        }
+    }
+
+    /// The settings the preview generates with: the screen's, detail capped.
+    fn preview_settings(settings: &Settings) -> Settings {
+        let mut s = settings.clone();
+        s.detail = s.detail.min(MAX_PREVIEW_DETAIL);
+        s
+    }
+
+    /// A new mountain from `seed` under `settings`.
+    pub fn generate(&mut self, settings: &Settings, seed: u64, size: (u32, u32)) {
+        let field = terrain::generate(&Self::preview_settings(settings), seed);
+        self.field = Some(Arc::new(field));
+        self.seed = Some(seed);
+        self.file = None;
+        self.repaint(settings, size);
+    }
+
+    /// The same mountain made again (same seed) under new settings; a data
+    /// set from a file is only repainted.
+    pub fn regenerate(&mut self, settings: &Settings, size: (u32, u32)) {
+        match (self.seed, &self.file) {
+            (Some(seed), None) => self.generate(settings, seed, size),
+            _ => self.repaint(settings, size),
+        }
+    }
+
+    /// Shows a data set from disk.
+    pub fn open(
+        &mut self,
+        path: &Path,
+        settings: &Settings,
+        size: (u32, u32),
+    ) -> Result<(), String> {
+        let data = heightmap::load(path).map_err(|e| e.to_string())?;
+        self.field = Some(Arc::new(data.field));
+        self.seed = data.seed;
+        self.file = Some(path.to_path_buf());
+        self.repaint(settings, size);
+        Ok(())
+    }
+
+    /// Starts drawing the current mountain again, from the back.
+    pub fn repaint(&mut self, settings: &Settings, size: (u32, u32)) {
+        let (w, h) = size;
+        self.painter = self
+            .field
+            .as_ref()
+            .map(|f| Painter::new(f.clone(), settings, w, h));
+        self.picture = Frame::new(w, h);
+    }
+
+    /// Draws the next few strips; true while more remain.
+    pub fn step(&mut self) -> bool {
+        let (Some(p), Some(pic)) = (self.painter.as_mut(), self.picture.as_mut()) else {
+            return false;
+        };
+        let budget = (p.strips_total() / FRAMES_PER_MOUNTAIN).max(1);
+        p.step(pic, budget);
+        !p.is_done()
+    }
+
+    /// The picture so far.
+    pub fn picture(&self) -> Option<&Frame> {
+        self.picture.as_ref()
+    }
+
+    /// The heights shown, for saving as a data set.
+    pub fn field(&self) -> Option<&Heightfield> {
+        self.field.as_deref()
+    }
+
+    /// One line saying what the preview shows.
+    pub fn caption(&self) -> String {
+        match (&self.file, self.seed) {
+            (Some(f), _) => {
+                let name = f.file_name().map_or_else(
+                    || f.display().to_string(),
+                    |n| n.to_string_lossy().into_owned(),
+                );
+                format!("Data set {name}")
+            }
+            (None, Some(s)) => format!("Seed {s}   N: new mountain"),
+            (None, None) => "No mountain yet".into(),
+        }
+    }
+}

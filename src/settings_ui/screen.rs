@@ -1,0 +1,227 @@
+//! The settings screen without its window: the model, the preview, the
+//! frame, and what each effect does on disk. The window layer feeds it
+//! inputs and presents its frame.
+
+use std::path::{Path, PathBuf};
+use std::time::SystemTime;
+
+use super::datasets;
+use super::draw::{self, Extras};
+use super::layout::Layout;
+use super::model::{Effect, Input, Model};
+use super::preview::Preview;
+use crate::render::Frame;
+use crate::settings::{Settings, load, paths, save};
+use crate::terrain::heightmap;
+
+/// What the window should do after an input.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Next {
+    /// Keep the window open.
+    Stay,
+    /// Close the window: saved, or cancelled.
+    Close,
+}
+
+/// The whole screen's state.
+pub struct Screen {
+    /// The settings being edited and the focus.
+    pub model: Model,
+    layout: Layout,
+    frame: Frame,
+    preview: Preview,
+    config: PathBuf,
+    config_stamp: Option<SystemTime>,
+    data_dir: Option<PathBuf>,
+}
+
+fn stamp(path: &Path) -> Option<SystemTime> {
+    std::fs::metadata(path).and_then(|m| m.modified()).ok()
+}
+
+impl Screen {
+    /// A screen for `settings` read from `config` (with its `problems`),
+    /// drawn into `width` x `height` pixels at whole `scale`.
+    pub fn new(
+        settings: Settings,
+        problems: &[load::Problem],
+        config: PathBuf,
+        size: (u32, u32),
+        scale: u32,
+    ) -> Screen {
+        let layout = Layout::new(size.0, size.1, scale);
+        let frame = Frame::new(size.0.max(1), size.1.max(1)).unwrap_or_else(tiny_frame);
+        let mut screen = Screen {
+            model: Model::new(settings, problems),
+            layout,
+            frame,
+            preview: Preview::new(),
+            config_stamp: stamp(&config),
+            config,
+            data_dir: paths::data_dir(),
+        };
+        screen.new_mountain();
+        screen
+    }
+
+    /// Where saved data sets go and Open looks first (tests point it elsewhere).
+    pub fn set_data_dir(&mut self, dir: Option<PathBuf>) {
+        self.data_dir = dir;
+    }
+
+    /// The layout in use.
+    pub fn layout(&self) -> &Layout {
+        &self.layout
+    }
+
+    /// Follows a new window size or scale.
+    pub fn resize(&mut self, width: u32, height: u32, scale: u32) {
+        let Some(frame) = Frame::new(width, height) else {
+            return;
+        };
+        self.frame = frame;
+        self.layout = Layout::new(width, height, scale);
+        self.preview
+            .repaint(&self.model.settings, self.preview_size());
+    }
+
+    fn preview_size(&self) -> (u32, u32) {
+        draw::preview_size(&self.layout)
+    }
+
+    fn new_mountain(&mut self) {
+        let seed = self
+            .model
+            .settings
+            .seed
+            .unwrap_or_else(crate::commands::fresh_seed);
+        self.preview
+            .generate(&self.model.settings, seed, self.preview_size());
+        self.model.preview_seed = self.preview.seed;
+    }
+
+    /// Handles one input and carries out what it asks for.
+    pub fn input(&mut self, input: Input) -> Next {
+        let effect = self.model.handle(input, &self.layout);
+        self.apply(effect)
+    }
+
+    /// Carries out an effect.
+    pub fn apply(&mut self, effect: Effect) -> Next {
+        let size = self.preview_size();
+        let settings = &self.model.settings;
+        match effect {
+            Effect::Redraw => {}
+            Effect::Repaint => self.preview.repaint(settings, size),
+            Effect::Regenerate => self.preview.regenerate(settings, size),
+            Effect::NewMountain => self.new_mountain(),
+            Effect::ListDataSets => self.list_data_sets(),
+            Effect::OpenDataSet(path) => self.open_data_set(&path),
+            Effect::SaveDataSet => self.save_data_set(),
+            Effect::EditFile => self.edit_file(),
+            Effect::Save => return self.save(),
+            Effect::Close => return Next::Close,
+        }
+        Next::Stay
+    }
+
+    fn save(&mut self) -> Next {
+        match save::save(&self.config, &self.model.settings) {
+            Ok(()) => Next::Close,
+            Err(e) => {
+                self.model.message = format!("{e}. Use Edit file to fix it, or Cancel.");
+                Next::Stay
+            }
+        }
+    }
+
+    fn list_data_sets(&mut self) {
+        let dirs = datasets::folders(
+            self.data_dir.as_deref(),
+            self.model.settings.heightmaps_dir.as_deref(),
+        );
+        let names: Vec<String> = dirs.iter().map(|d| d.display().to_string()).collect();
+        let searched = if names.is_empty() {
+            "no folder (no data directory, heightmaps_dir empty)".to_string()
+        } else {
+            names.join(" and ")
+        };
+        self.model.show_list(datasets::list_pngs(&dirs), &searched);
+    }
+
+    fn open_data_set(&mut self, path: &Path) {
+        let size = self.preview_size();
+        match self.preview.open(path, &self.model.settings, size) {
+            Ok(()) => {
+                self.model.preview_seed = self.preview.seed;
+                self.model.message = format!("Opened {}.", path.display());
+            }
+            Err(e) => self.model.message = format!("Cannot open: {e}"),
+        }
+    }
+
+    fn save_data_set(&mut self) {
+        let (Some(field), Some(dir)) = (self.preview.field(), self.data_dir.as_deref()) else {
+            self.model.message = "Nothing to save, or no data directory.".into();
+            return;
+        };
+        if let Err(e) = std::fs::create_dir_all(dir) {
+            self.model.message = format!("Cannot create {}: {e}", dir.display());
+            return;
+        }
+        let path = datasets::save_path(dir, &datasets::today(), self.preview.seed);
+        self.model.message =
+            match heightmap::save(&path, field, self.preview.seed, &self.model.settings) {
+                Ok(()) => format!("Saved {}.", path.display()),
+                Err(e) => format!("Cannot save the data set: {e}"),
+            };
+    }
+
+    fn edit_file(&mut self) {
+        match super::editor::open(&self.config) {
+            Ok(what) => self.model.message = what,
+            Err(e) => self.model.message = e,
+        }
+    }
+
+    /// Reloads the preferences file if it changed on disk (edited with Edit
+    /// file, or by hand), keeping the values changed on the screen. Returns
+    /// true when it did.
+    pub fn poll_file(&mut self) -> bool {
+        let now = stamp(&self.config);
+        if now == self.config_stamp {
+            return false;
+        }
+        self.config_stamp = now;
+        let mut fresh = Settings::default();
+        let problems = if self.config.exists() {
+            load::apply_file(&mut fresh, &self.config)
+        } else {
+            Vec::new()
+        };
+        self.model.merge_from_file(fresh, &problems);
+        true
+    }
+
+    /// Draws the next strips of the preview; true while more remain.
+    pub fn step_preview(&mut self) -> bool {
+        self.preview.step()
+    }
+
+    /// Draws the screen and returns the frame to present.
+    pub fn draw(&mut self) -> &Frame {
+        let caption = self.preview.caption();
+        let file = self.config.display().to_string();
+        let extras = Extras {
+            preview: self.preview.picture(),
+            caption: &caption,
+            file: &file,
+        };
+        draw::draw(&mut self.frame, &self.layout, &self.model, &extras);
+        &self.frame
+    }
+}
+
+fn tiny_frame() -> Frame {
+    Frame::new(1, 1).unwrap_or_else(|| unreachable!("a 1x1 frame is always allowed"))
+}

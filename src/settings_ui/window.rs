@@ -1,0 +1,287 @@
+//! The settings window: winit events in, `Screen` frames out via softbuffer.
+
+use std::num::NonZeroU32;
+use std::rc::Rc;
+use std::time::{Duration, Instant};
+
+use winit::application::ApplicationHandler;
+use winit::dpi::{LogicalSize, PhysicalPosition, PhysicalSize};
+use winit::event::{ElementState, KeyEvent, MouseButton, MouseScrollDelta, WindowEvent};
+use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
+use winit::keyboard::{Key, ModifiersState, NamedKey};
+use winit::window::{Window, WindowId};
+
+use super::layout::{WINDOW_H, WINDOW_W, whole_scale};
+use super::model::Input;
+use super::screen::{Next, Screen};
+
+/// How often the preferences file is checked for outside edits.
+const FILE_POLL: Duration = Duration::from_millis(700);
+
+/// Builds the `Screen` once the window's size and scale are known.
+pub type MakeScreen = Box<dyn FnOnce((u32, u32), u32) -> Screen>;
+
+struct App {
+    make: Option<MakeScreen>,
+    parent: Option<u64>,
+    window: Option<Rc<Window>>,
+    surface: Option<softbuffer::Surface<Rc<Window>, Rc<Window>>>,
+    screen: Option<Screen>,
+    modifiers: ModifiersState,
+    cursor: PhysicalPosition<f64>,
+    wheel_pixels: f64,
+    scale: u32,
+    error: Option<String>,
+}
+
+/// Opens the window and runs it until OK or Cancel. `parent` is the window
+/// that owns the dialog on Windows (`/c:<HWND>`).
+pub fn run(make: MakeScreen, parent: Option<u64>) -> Result<(), String> {
+    let event_loop = EventLoop::new().map_err(|e| format!("cannot open a window: {e}"))?;
+    let mut app = App {
+        make: Some(make),
+        parent,
+        window: None,
+        surface: None,
+        screen: None,
+        modifiers: ModifiersState::empty(),
+        cursor: PhysicalPosition::new(-1.0, -1.0),
+        wheel_pixels: 0.0,
+        scale: 1,
+        error: None,
+    };
+    event_loop
+        .run_app(&mut app)
+        .map_err(|e| format!("window event loop failed: {e}"))?;
+    app.error.map_or(Ok(()), Err)
+}
+
+fn attributes(parent: Option<u64>) -> winit::window::WindowAttributes {
+    let attrs = Window::default_attributes()
+        .with_title("Mountains settings")
+        .with_inner_size(LogicalSize::new(WINDOW_W, WINDOW_H))
+        .with_min_inner_size(LogicalSize::new(WINDOW_W / 2, WINDOW_H / 2));
+    owned_by(attrs, parent)
+}
+
+#[cfg(windows)]
+fn owned_by(
+    attrs: winit::window::WindowAttributes,
+    parent: Option<u64>,
+) -> winit::window::WindowAttributes {
+    use winit::platform::windows::WindowAttributesExtWindows;
+    // winit 0.30 takes the handle as an isize.
+    match parent.and_then(|p| isize::try_from(p).ok()) {
+        Some(hwnd) if hwnd != 0 => attrs.with_owner_window(hwnd),
+        _ => attrs,
+    }
+}
+
+#[cfg(not(windows))]
+fn owned_by(
+    attrs: winit::window::WindowAttributes,
+    _parent: Option<u64>,
+) -> winit::window::WindowAttributes {
+    attrs
+}
+
+impl App {
+    fn fail(&mut self, event_loop: &ActiveEventLoop, message: String) {
+        self.error = Some(message);
+        event_loop.exit();
+    }
+
+    fn open(&mut self, event_loop: &ActiveEventLoop) -> Result<(), String> {
+        let window = event_loop
+            .create_window(attributes(self.parent))
+            .map_err(|e| format!("cannot open the settings window: {e}"))?;
+        let window = Rc::new(window);
+        let context = softbuffer::Context::new(window.clone()).map_err(|e| e.to_string())?;
+        let surface =
+            softbuffer::Surface::new(&context, window.clone()).map_err(|e| e.to_string())?;
+        self.scale = pick_scale(&window);
+        let want = PhysicalSize::new(WINDOW_W * self.scale, WINDOW_H * self.scale);
+        let size = window
+            .request_inner_size(want)
+            .unwrap_or(window.inner_size());
+        let scale = self.scale;
+        if let Some(make) = self.make.take() {
+            self.screen = Some(make((size.width.max(1), size.height.max(1)), scale));
+        }
+        self.surface = Some(surface);
+        window.request_redraw();
+        self.window = Some(window);
+        Ok(())
+    }
+
+    fn present(&mut self) -> Result<(), String> {
+        let (Some(screen), Some(surface)) = (self.screen.as_mut(), self.surface.as_mut()) else {
+            return Ok(());
+        };
+        let frame = screen.draw();
+        let (Some(w), Some(h)) = (
+            NonZeroU32::new(frame.width()),
+            NonZeroU32::new(frame.height()),
+        ) else {
+            return Ok(());
+        };
+        surface.resize(w, h).map_err(|e| e.to_string())?;
+        let mut buffer = surface.buffer_mut().map_err(|e| e.to_string())?;
+        if buffer.len() == frame.pixels().len() {
+            buffer.copy_from_slice(frame.pixels());
+        }
+        buffer.present().map_err(|e| e.to_string())
+    }
+
+    fn send(&mut self, event_loop: &ActiveEventLoop, input: Input) {
+        let Some(screen) = self.screen.as_mut() else {
+            return;
+        };
+        if screen.input(input) == Next::Close {
+            event_loop.exit();
+        } else if let Some(w) = &self.window {
+            w.request_redraw();
+        }
+    }
+
+    fn key(&mut self, event_loop: &ActiveEventLoop, event: KeyEvent) {
+        if event.state != ElementState::Pressed {
+            return;
+        }
+        let shift = self.modifiers.shift_key();
+        let input = match &event.logical_key {
+            Key::Named(named) => named_input(*named, shift),
+            Key::Character(s) if !self.modifiers.control_key() && !self.modifiers.alt_key() => {
+                for c in s.chars() {
+                    self.send(event_loop, Input::Char(c));
+                }
+                None
+            }
+            _ => None,
+        };
+        if let Some(input) = input {
+            self.send(event_loop, input);
+        }
+    }
+
+    fn wheel(&mut self, event_loop: &ActiveEventLoop, delta: MouseScrollDelta) {
+        let lines = match delta {
+            MouseScrollDelta::LineDelta(_, y) => y.round() as i32,
+            MouseScrollDelta::PixelDelta(p) => {
+                self.wheel_pixels += p.y;
+                let whole = (self.wheel_pixels / 30.0).trunc();
+                self.wheel_pixels -= whole * 30.0;
+                whole as i32
+            }
+        };
+        if lines != 0 {
+            let (x, y) = (self.cursor.x, self.cursor.y);
+            self.send(event_loop, Input::Wheel(x, y, lines));
+        }
+    }
+
+    fn resized(&mut self) {
+        let (Some(w), Some(screen)) = (&self.window, self.screen.as_mut()) else {
+            return;
+        };
+        let size = w.inner_size();
+        screen.resize(size.width, size.height, self.scale);
+        w.request_redraw();
+    }
+}
+
+/// The whole scale for the window's scale factor and its monitor.
+fn pick_scale(window: &Window) -> u32 {
+    let monitor = window
+        .current_monitor()
+        .map(|m| (m.size().width, m.size().height));
+    whole_scale(window.scale_factor(), monitor)
+}
+
+fn named_input(key: NamedKey, shift: bool) -> Option<Input> {
+    Some(match key {
+        NamedKey::Tab => Input::Tab { back: shift },
+        NamedKey::ArrowUp => Input::Up,
+        NamedKey::ArrowDown => Input::Down,
+        NamedKey::ArrowLeft => Input::Left,
+        NamedKey::ArrowRight => Input::Right,
+        NamedKey::PageUp => Input::PageUp,
+        NamedKey::PageDown => Input::PageDown,
+        NamedKey::Home => Input::Home,
+        NamedKey::End => Input::End,
+        NamedKey::Enter => Input::Enter,
+        NamedKey::Space => Input::Space,
+        NamedKey::Escape => Input::Escape,
+        NamedKey::Backspace => Input::Backspace,
+        _ => return None,
+    })
+}
+
+impl ApplicationHandler for App {
+    fn resumed(&mut self, event_loop: &ActiveEventLoop) {
+        if self.window.is_none()
+            && let Err(e) = self.open(event_loop)
+        {
+            self.fail(event_loop, e);
+        }
+    }
+
+    fn window_event(&mut self, event_loop: &ActiveEventLoop, _id: WindowId, event: WindowEvent) {
+        match event {
+            WindowEvent::CloseRequested => event_loop.exit(),
+            WindowEvent::Resized(_) => self.resized(),
+            WindowEvent::ScaleFactorChanged { .. } => {
+                if let Some(w) = &self.window {
+                    self.scale = pick_scale(w);
+                }
+                self.resized();
+            }
+            WindowEvent::ModifiersChanged(m) => self.modifiers = m.state(),
+            // Synthetic presses are keys already held when the window got
+            // the focus, such as the Enter that started us from a terminal:
+            // acting on them would press OK at once.
+            WindowEvent::KeyboardInput {
+                event,
+                is_synthetic: false,
+                ..
+            } => self.key(event_loop, event),
+            WindowEvent::CursorMoved { position, .. } => {
+                self.cursor = position;
+                self.send(event_loop, Input::Move(position.x, position.y));
+            }
+            WindowEvent::MouseInput {
+                state,
+                button: MouseButton::Left,
+                ..
+            } => {
+                let (x, y) = (self.cursor.x, self.cursor.y);
+                let input = match state {
+                    ElementState::Pressed => Input::Press(x, y),
+                    ElementState::Released => Input::Release(x, y),
+                };
+                self.send(event_loop, input);
+            }
+            WindowEvent::MouseWheel { delta, .. } => self.wheel(event_loop, delta),
+            WindowEvent::RedrawRequested => {
+                let more = self.screen.as_mut().is_some_and(Screen::step_preview);
+                if let Err(e) = self.present() {
+                    self.fail(event_loop, format!("cannot draw the settings window: {e}"));
+                    return;
+                }
+                if more && let Some(w) = &self.window {
+                    w.request_redraw();
+                }
+            }
+            _ => {}
+        }
+    }
+
+    fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
+        if self.screen.as_mut().is_some_and(Screen::poll_file)
+            && let Some(w) = &self.window
+        {
+            w.request_redraw();
+        }
+        event_loop.set_control_flow(ControlFlow::WaitUntil(Instant::now() + FILE_POLL));
+    }
+}

@@ -1,0 +1,134 @@
+//! One random value per grid point, from a hash of (seed, point).
+//!
+//! A counter-based generator instead of a stream: a point's value does not
+//! depend on the order points are visited, so rows can be split across
+//! threads, and a point has the same value at every detail level (its
+//! position is taken on the finest, 4097-point grid). A coarser detail level
+//! is therefore the same mountain with fewer points, not a different one.
+
+use super::heightfield::MAX_EXPONENT;
+
+/// SplitMix64's increment (2^64 / golden ratio).
+const GOLDEN: u64 = 0x9E37_79B9_7F4A_7C15;
+
+/// SplitMix64's output function: a bijective 64-bit mixer.
+#[inline]
+pub(crate) fn mix(mut z: u64) -> u64 {
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^ (z >> 31)
+}
+
+/// Uniform random values in `[-1, 1)` keyed by seed and grid point.
+///
+/// A row's key comes from a 64-bit mix of (seed, row); the value of a point
+/// is a 32-bit hash (Wellons' lowbias32) of the row key and the column. The
+/// 32-bit half lets a whole row of values be computed with SIMD lanes.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Noise {
+    key: u64,
+    shift: u32,
+}
+
+impl Noise {
+    /// Values for a grid of `2^exponent + 1` points a side.
+    pub(crate) fn new(seed: u64, exponent: u32) -> Self {
+        Noise {
+            // Mixing the seed first keeps seeds that differ by a multiple of
+            // GOLDEN from sharing row keys.
+            key: mix(seed ^ 0x6D6F_756E_7461_696E),
+            shift: MAX_EXPONENT.saturating_sub(exponent),
+        }
+    }
+
+    /// The value at column `x`, row `y`: exactly representable, in `[-1, 1)`.
+    pub(crate) fn at(&self, x: usize, y: usize) -> f32 {
+        let mut out = [0.0];
+        self.fill_row(y, x, 1, 1.0, &mut out);
+        out[0]
+    }
+
+    /// `out[i] = scale * value(first + i * stride, y)`.
+    #[inline]
+    pub(crate) fn fill_row(
+        &self,
+        y: usize,
+        first: usize,
+        stride: usize,
+        scale: f32,
+        out: &mut [f32],
+    ) {
+        let row_key = self.row_key(y);
+        let first = ((first as u64) << self.shift) as u32;
+        let stride = ((stride as u64) << self.shift) as u32;
+        // The top 24 bits, signed, convert to f32 exactly; `step` is `scale`
+        // times a power of two, so `level * step` is `scale * value` rounded
+        // once: the same bits on every platform.
+        let step = scale * (1.0 / (1u32 << 23) as f32);
+        // The hash input `row_key + column * GOLDEN32`, stepped by addition.
+        let mut input = row_key.wrapping_add(first.wrapping_mul(GOLDEN32));
+        let increment = stride.wrapping_mul(GOLDEN32);
+        for o in out.iter_mut() {
+            let bits = lowbias32(input);
+            *o = ((bits as i32) >> 8) as f32 * step;
+            input = input.wrapping_add(increment);
+        }
+    }
+
+    /// The key of row `y`, taken on the finest grid.
+    fn row_key(&self, y: usize) -> u32 {
+        let gy = (y as u64) << self.shift;
+        (mix(self.key.wrapping_add((gy + 1).wrapping_mul(GOLDEN))) >> 32) as u32
+    }
+}
+
+/// 2^32 / golden ratio, odd: spreads consecutive columns over the hash input.
+const GOLDEN32: u32 = 0x9E37_79B9;
+
+/// Chris Wellons' lowbias32 integer hash: full avalanche in 32 bits.
+#[inline(always)]
+fn lowbias32(mut x: u32) -> u32 {
+    x ^= x >> 16;
+    x = x.wrapping_mul(0x7FEB_352D);
+    x ^= x >> 15;
+    x = x.wrapping_mul(0x846C_A68B);
+    x ^ (x >> 16)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn values_stay_in_range_and_average_near_zero() {
+        let noise = Noise::new(42, 8);
+        let mut sum = 0.0f64;
+        for y in 0..257 {
+            for x in 0..257 {
+                let v = noise.at(x, y);
+                assert!((-1.0..1.0).contains(&v), "{v} out of range");
+                sum += v as f64;
+            }
+        }
+        let mean = sum / (257.0 * 257.0);
+        assert!(mean.abs() < 0.01, "mean {mean} is biased");
+    }
+
+    #[test]
+    fn filled_rows_match_single_points() {
+        let noise = Noise::new(99, 10);
+        let mut row = [0.0f32; 9];
+        noise.fill_row(5, 3, 4, 2.5, &mut row);
+        for (i, &v) in row.iter().enumerate() {
+            assert_eq!(v.to_bits(), (2.5 * noise.at(3 + 4 * i, 5)).to_bits());
+        }
+    }
+
+    #[test]
+    fn a_point_keeps_its_value_across_detail_levels() {
+        let fine = Noise::new(7, 12);
+        let coarse = Noise::new(7, 8);
+        assert_eq!(fine.at(16 * 3, 16 * 5).to_bits(), coarse.at(3, 5).to_bits());
+        assert_ne!(fine.at(1, 0).to_bits(), coarse.at(1, 0).to_bits());
+    }
+}

@@ -1,0 +1,208 @@
+//! Saving preferences: only edited values change, comments and unknown keys
+//! stay, broken files are never overwritten, every value is checked.
+
+use std::path::{Path, PathBuf};
+
+use mountains::settings::load::{self, DEFAULT_TOML};
+use mountains::settings::save::{self, merge};
+use mountains::settings::{ColorMode, Settings};
+
+fn data(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data/settings")
+        .join(name)
+}
+
+fn read(path: &Path) -> String {
+    std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}
+
+fn loaded(text: &str) -> Settings {
+    let mut s = Settings::default();
+    let problems = load::apply_toml(&mut s, text, "test.toml");
+    // The golden file's one unknown key is meant to be there.
+    let real: Vec<_> = problems
+        .iter()
+        .filter(|p| p.key.as_deref() != Some("my_own_note"))
+        .collect();
+    assert!(real.is_empty(), "{real:?}");
+    s
+}
+
+/// A fresh, empty folder under the target directory for one test.
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("save-{name}"));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn edited_values_change_and_everything_else_stays() {
+    let input = read(&data("commented.toml"));
+    let mut s = loaded(&input);
+    s.cragginess = 12;
+    s.color = ColorMode::Mono;
+    s.shadows = false;
+    s.contour = 0.35;
+    let out = merge(&input, &s).unwrap();
+    let expected = read(&data("commented.expected.toml"));
+    assert_eq!(out, expected, "output:\n{out}");
+    assert_eq!(
+        loaded(&out),
+        s,
+        "the saved file reads back as the screen's values"
+    );
+}
+
+#[test]
+fn unchanged_settings_leave_the_text_byte_identical() {
+    let input = read(&data("commented.toml"));
+    let s = loaded(&input);
+    assert_eq!(merge(&input, &s).unwrap(), input);
+    assert_eq!(
+        merge(DEFAULT_TOML, &Settings::default()).unwrap(),
+        DEFAULT_TOML
+    );
+}
+
+#[test]
+fn a_value_written_differently_but_equal_is_kept_as_written() {
+    let input = "draw_seconds = 8\nelevation = 1e2\n";
+    let s = loaded(input);
+    assert_eq!(s.elevation, 100.0);
+    assert_eq!(merge(input, &s).unwrap(), input);
+}
+
+#[test]
+fn every_key_round_trips_through_the_shipped_file() {
+    use mountains::settings::{Generator, Monitors, Profile, ViewKind};
+    let s = Settings {
+        seed: Some(u64::MAX),
+        generator: Generator::Triangle,
+        cragginess: 128,
+        elevation: 999.5,
+        roughness: 4.25,
+        contour: 0.3,
+        profile: Profile::Massif,
+        height: 10,
+        detail: 4,
+        low_detail: true,
+        sea_level: -0.14,
+        color: ColorMode::Ridges,
+        relative_depth: false,
+        shadows: false,
+        view: ViewKind::Perspective,
+        rotation: 270,
+        auto_redraw: false,
+        draw_seconds: 0.0,
+        pause_seconds: 3600.0,
+        monitors: Monitors::Primary,
+        heightmaps_dir: Some("C:\\Maps \"quoted\"".into()),
+    };
+    let out = merge(DEFAULT_TOML, &s).unwrap();
+    assert_eq!(loaded(&out), s);
+    assert!(out.contains("seed = \"18446744073709551615\""), "{out}");
+    assert!(out.contains("sea_level = -0.14\n"), "{out}");
+    // Every comment of the shipped file is still there.
+    for line in DEFAULT_TOML.lines().filter(|l| l.starts_with('#')) {
+        assert!(out.contains(line), "lost comment {line:?}");
+    }
+}
+
+#[test]
+fn a_missing_key_is_added_at_the_end_with_its_doc() {
+    let s = Settings {
+        height: 9,
+        ..Settings::default()
+    };
+    let out = merge("# mine\ncolor = \"gray\"\n", &s).unwrap();
+    assert_eq!(
+        out,
+        "# mine\ncolor = \"natural\"\n\n\
+         # height of the peaks; also raises the treeline and snow\nheight = 9\n"
+    );
+}
+
+#[test]
+fn a_file_that_does_not_parse_is_never_overwritten() {
+    let dir = scratch("broken");
+    let path = dir.join("mountains.toml");
+    let broken = b"# mine\ncolor = \"sonar\"\ncragginess = = 3\n";
+    std::fs::write(&path, broken).unwrap();
+    let s = Settings {
+        cragginess: 5,
+        ..Settings::default()
+    };
+    let err = save::save(&path, &s).unwrap_err();
+    assert_eq!(std::fs::read(&path).unwrap(), broken);
+    assert_eq!(err.position.map(|p| p.0), Some(3), "{err}");
+    let text = err.to_string();
+    assert!(text.contains("mountains.toml:3:"), "{text}");
+    assert!(text.contains("not saved"), "{text}");
+    let leftovers: Vec<_> = std::fs::read_dir(&dir).unwrap().collect();
+    assert_eq!(leftovers.len(), 1, "no temporary file is left behind");
+}
+
+#[test]
+fn a_file_that_is_not_utf8_is_never_overwritten() {
+    let dir = scratch("latin1");
+    let path = dir.join("mountains.toml");
+    let bytes = b"# caf\xe9\ncolor = \"sonar\"\n";
+    std::fs::write(&path, bytes).unwrap();
+    assert!(save::save(&path, &Settings::default()).is_err());
+    assert_eq!(std::fs::read(&path).unwrap(), bytes);
+}
+
+#[test]
+fn an_invalid_value_is_never_saved() {
+    let dir = scratch("invalid");
+    let path = dir.join("mountains.toml");
+    std::fs::write(&path, "cragginess = 7\n").unwrap();
+    for bad in [
+        Settings {
+            cragginess: 500,
+            ..Settings::default()
+        },
+        Settings {
+            sea_level: f32::NAN,
+            ..Settings::default()
+        },
+        Settings {
+            rotation: 45,
+            ..Settings::default()
+        },
+    ] {
+        let err = save::save(&path, &bad).unwrap_err();
+        assert!(err.message.contains("not allowed"), "{err}");
+        assert_eq!(read(&path), "cragginess = 7\n");
+    }
+}
+
+#[test]
+fn a_missing_file_starts_from_the_commented_defaults() {
+    let dir = scratch("new");
+    let path = dir.join("sub").join("mountains.toml");
+    let s = Settings {
+        color: ColorMode::Sonar,
+        ..Settings::default()
+    };
+    save::save(&path, &s).unwrap();
+    let text = read(&path);
+    assert!(text.contains("color = \"sonar\"\n"), "{text}");
+    assert!(text.starts_with("# mountains: preferences"), "{text}");
+    assert_eq!(loaded(&text), s);
+}
+
+#[test]
+fn saving_twice_changes_nothing_the_second_time() {
+    let dir = scratch("twice");
+    let path = dir.join("mountains.toml");
+    std::fs::copy(data("commented.toml"), &path).unwrap();
+    let mut s = loaded(&read(&path));
+    s.cragginess = 3;
+    save::save(&path, &s).unwrap();
+    let first = read(&path);
+    save::save(&path, &s).unwrap();
+    assert_eq!(read(&path), first);
+}

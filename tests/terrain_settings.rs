@@ -1,0 +1,83 @@
+//! No setting, however wild, panics a generator or leaves a non-finite height.
+
+use mountains::settings::{Generator, Profile, Settings};
+use mountains::terrain::generate;
+use proptest::prelude::*;
+
+fn any_f32() -> impl Strategy<Value = f32> {
+    prop_oneof![
+        any::<f32>(),
+        Just(f32::NAN),
+        Just(f32::INFINITY),
+        Just(f32::NEG_INFINITY),
+        Just(0.0),
+        -10.0f32..10.0,
+    ]
+}
+
+fn any_generator() -> impl Strategy<Value = Generator> {
+    prop_oneof![
+        Just(Generator::Square),
+        Just(Generator::Diamond),
+        Just(Generator::Triangle)
+    ]
+}
+
+fn any_profile() -> impl Strategy<Value = Profile> {
+    prop_oneof![
+        Just(Profile::Slope),
+        Just(Profile::Peak),
+        Just(Profile::Bay),
+        Just(Profile::Massif)
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    #[test]
+    fn any_settings_give_a_finite_field(
+        generator in any_generator(),
+        profile in any_profile(),
+        cragginess in any::<u32>(),
+        elevation in any_f32(),
+        roughness in any_f32(),
+        contour in any_f32(),
+        height in any::<u32>(),
+        detail in 0u32..=7,
+        low_detail in any::<bool>(),
+        sea_level in any_f32(),
+        seed in any::<u64>(),
+    ) {
+        let s = Settings {
+            generator, profile, cragginess, elevation, roughness, contour, height,
+            detail, low_detail, sea_level,
+            ..Settings::default()
+        };
+        let f = generate(&s, seed);
+        prop_assert!(f.size() >= 17);
+        prop_assert!(f.heights().iter().all(|h| h.is_finite()));
+        prop_assert!(f.extent() > 0.0);
+    }
+}
+
+#[test]
+fn an_out_of_range_detail_is_clamped() {
+    let small = generate(
+        &Settings {
+            detail: 0,
+            ..Settings::default()
+        },
+        1,
+    );
+    assert_eq!(small.size(), 17);
+    let huge = generate(
+        &Settings {
+            detail: u32::MAX,
+            generator: Generator::Square,
+            ..Settings::default()
+        },
+        1,
+    );
+    assert_eq!(huge.size(), 4097);
+}
