@@ -210,7 +210,12 @@ mod tests {
 
     #[test]
     fn the_title_tells_seed_colour_cragginess_and_state() {
-        let mut s = Settings::default();
+        let mut s = Settings {
+            color: ColorMode::Natural,
+            cragginess: 64,
+            low_detail: false,
+            ..Settings::default()
+        };
         assert_eq!(
             window_title(&s, Some(42), false),
             "mountains: seed 42, Natural, cragginess 64"
