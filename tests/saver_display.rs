@@ -1,5 +1,6 @@
 //! End-to-end tests of the window modes under a private Xvfb.
 //! Each starts its own server and binary; times are printed, not asserted.
+#![cfg(unix)]
 
 #[path = "common/xvfb.rs"]
 mod xvfb;

@@ -1,4 +1,5 @@
 //! Window modes that cannot run say why, in words, without panicking.
+#![cfg(unix)]
 
 #[path = "common/xvfb.rs"]
 mod xvfb;
