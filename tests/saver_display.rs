@@ -430,3 +430,15 @@ fn display_fullscreen_holds_exactly_the_headless_render() {
     });
     eprintln!("fullscreen same as render: on screen after {took:?}");
 }
+
+#[test]
+fn display_fullscreen_keeps_keys_and_clicks_from_other_programs() {
+    let Some((x, mut saver)) = fullscreen("fs-grab") else {
+        return;
+    };
+    poll(&mut saver, "the keyboard and pointer grab", || {
+        x.keyboard_grabbed_elsewhere() && x.pointer_grabbed_elsewhere()
+    });
+    x.key(38);
+    expect_exit(&mut saver, "a key while grabbed");
+}

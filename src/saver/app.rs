@@ -81,6 +81,8 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
         error: None,
         trace: Trace::from_env(),
         started: false,
+        #[cfg(unix)]
+        grab: None,
     };
     event_loop
         .run_app(&mut app)
@@ -97,6 +99,9 @@ struct App {
     error: Option<SaverError>,
     trace: Trace,
     started: bool,
+    /// Full screen on X11: the keyboard and pointer grab, until it holds.
+    #[cfg(unix)]
+    grab: Option<super::grab_x11::InputGrab>,
 }
 
 impl ApplicationHandler<UserEvent> for App {
@@ -152,6 +157,10 @@ impl ApplicationHandler<UserEvent> for App {
         if let AppMode::Child(parent) = self.mode {
             self.follow_parent(event_loop, parent);
         }
+        #[cfg(unix)]
+        let grabbing = self.grab_input();
+        #[cfg(not(unix))]
+        let grabbing = false;
         let wake = self
             .screens
             .iter()
@@ -164,11 +173,37 @@ impl ApplicationHandler<UserEvent> for App {
             })),
             _ => wake,
         };
+        // Until the grab holds, look again at frame rate.
+        let retry = grabbing.then(|| now + super::slideshow::FRAME_INTERVAL);
+        let wake = match (wake, retry) {
+            (Some(w), Some(r)) => Some(w.min(r)),
+            (w, r) => w.or(r),
+        };
         event_loop.set_control_flow(wake.map_or(ControlFlow::Wait, ControlFlow::WaitUntil));
     }
 }
 
 impl App {
+    /// Full screen: grabs keyboard and pointer for the first window; true
+    /// while the grab is still being attempted.
+    #[cfg(unix)]
+    fn grab_input(&mut self) -> bool {
+        if self.mode != AppMode::Fullscreen {
+            return false;
+        }
+        if self.grab.is_none() {
+            let xid = self
+                .screens
+                .first()
+                .and_then(|s| super::present::x11_window_id(&*s.window));
+            match xid {
+                Some(xid) => self.grab = Some(super::grab_x11::InputGrab::new(xid)),
+                None => return false,
+            }
+        }
+        self.grab.as_mut().is_some_and(|g| !g.try_grab())
+    }
+
     fn fail(&mut self, event_loop: &ActiveEventLoop, error: SaverError) {
         self.error.get_or_insert(error);
         event_loop.exit();

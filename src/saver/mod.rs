@@ -12,6 +12,8 @@ pub mod bands_x11;
 pub mod embed_win32;
 #[cfg(unix)]
 pub mod embed_x11;
+#[cfg(unix)]
+pub mod grab_x11;
 pub mod input;
 pub mod libcheck;
 pub mod present;

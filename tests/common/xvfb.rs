@@ -188,6 +188,53 @@ impl Xvfb {
         String::from_utf8_lossy(&reply.reply().unwrap().value).into_owned()
     }
 
+    /// True when another client holds the keyboard grab (ours is refused).
+    pub fn keyboard_grabbed_elsewhere(&self) -> bool {
+        use x11rb::protocol::xproto::{GrabMode, GrabStatus};
+        let reply = self
+            .conn
+            .grab_keyboard(
+                false,
+                self.root,
+                x11rb::CURRENT_TIME,
+                GrabMode::ASYNC,
+                GrabMode::ASYNC,
+            )
+            .unwrap()
+            .reply()
+            .unwrap();
+        if reply.status == GrabStatus::SUCCESS {
+            self.conn.ungrab_keyboard(x11rb::CURRENT_TIME).unwrap();
+            self.conn.sync().unwrap();
+        }
+        reply.status == GrabStatus::ALREADY_GRABBED
+    }
+
+    /// True when another client holds the pointer grab.
+    pub fn pointer_grabbed_elsewhere(&self) -> bool {
+        use x11rb::protocol::xproto::{EventMask, GrabMode, GrabStatus};
+        let reply = self
+            .conn
+            .grab_pointer(
+                false,
+                self.root,
+                EventMask::NO_EVENT,
+                GrabMode::ASYNC,
+                GrabMode::ASYNC,
+                x11rb::NONE,
+                x11rb::NONE,
+                x11rb::CURRENT_TIME,
+            )
+            .unwrap()
+            .reply()
+            .unwrap();
+        if reply.status == GrabStatus::SUCCESS {
+            self.conn.ungrab_pointer(x11rb::CURRENT_TIME).unwrap();
+            self.conn.sync().unwrap();
+        }
+        reply.status == GrabStatus::ALREADY_GRABBED
+    }
+
     /// Mapped children of the root window with their geometry (x, y, w, h).
     pub fn mapped_windows(&self) -> Vec<(Window, (i16, i16, u16, u16))> {
         let tree = self.conn.query_tree(self.root).unwrap().reply().unwrap();
