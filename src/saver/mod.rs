@@ -3,6 +3,14 @@
 //! `run` takes a window mode and paces a slide show of mountains on it:
 //! full screen on every monitor (`app`), a small preview or a normal window
 //! (`app`), or a window another program owns (`embed_x11`, `embed_win32`).
+//!
+//! The pure parts, unit-tested without a display: `slideshow` (pacing),
+//! `show` (one window's frame, painter and next mountain), `source` (where
+//! each slide comes from), `input` (keys and what wakes the saver),
+//! `actions` (settings steps, file names). The rest talks to the system:
+//! `present` and `bands_x11` put frames on screen, `grab_x11` keeps input
+//! from other programs, `signals` turns SIGTERM into a clean exit,
+//! `libcheck` names a missing X library before winit panics on it.
 
 pub mod actions;
 pub mod app;
