@@ -2,9 +2,11 @@
 # Measures the full-screen saver under Xvfb: start to first present, CPU
 # while drawing and while holding, peak memory (VmHWM) at 1080p and 4K.
 # Usage: scripts/measure_saver.sh [path/to/mountains]   (default: release build)
+#        MODE=--root scripts/measure_saver.sh              (the xscreensaver way; default /s)
 # Needs Xvfb. Quiet machine recommended; numbers are per-core percentages.
 set -eu
 BIN=${1:-target/release/mountains}
+MODE=${MODE:-/s}
 [ -x "$BIN" ] || { echo "build first: cargo build --release" >&2; exit 1; }
 HZ=$(getconf CLK_TCK)
 TMP=$(mktemp -d)
@@ -28,7 +30,7 @@ run_at() { # width height draw pause
     while [ ! -s "$TMP/display" ]; do sleep 0.05; done
     export DISPLAY=":$(cat "$TMP/display")"
     HOME=$TMP XDG_CONFIG_HOME=$TMP/c XDG_DATA_HOME=$TMP/d MOUNTAINS_TRACE=1 \
-        "$BIN" /s --set "draw_seconds=$3" --set "pause_seconds=$4" 2>"$TMP/err" &
+        "$BIN" "$MODE" --set "draw_seconds=$3" --set "pause_seconds=$4" 2>"$TMP/err" &
     SPID=$!
 }
 
@@ -38,7 +40,7 @@ stop() {
     rm -f "$TMP/display"
 }
 
-echo "== 1920x1080, drawn over 8 s, held 12 s"
+echo "== $MODE at 1920x1080, drawn over 8 s, held 12 s"
 run_at 1920 1080 8 12
 sleep 0.5
 echo "CPU while drawing (0.5-7.5 s): $(cpu_percent "$SPID" 7) % of a core"
@@ -48,7 +50,7 @@ echo "VmHWM: $(awk '/VmHWM/ {print $2, $3}' "/proc/$SPID/status")"
 grep -h "first frame" "$TMP/err" || echo "(no trace line)"
 stop
 
-echo "== 3840x2160, drawn over 2 s, held 3 s"
+echo "== $MODE at 3840x2160, drawn over 2 s, held 3 s"
 run_at 3840 2160 2 3
 sleep 4
 echo "VmHWM: $(awk '/VmHWM/ {print $2, $3}' "/proc/$SPID/status")"
