@@ -34,7 +34,7 @@ impl Heightfield {
             exponent,
             size,
             extent,
-            heights: vec![0.0; size * size],
+            heights: zeroed(size * size),
         }
     }
 
@@ -134,3 +134,41 @@ impl Heightfield {
         }
     }
 }
+
+/// Fields this large ask the kernel for huge pages: faulting in a fresh
+/// 64 MiB field one 4 KiB page at a time costs about as much as generating
+/// it (4097x4097: 42 ms instead of ~20 ms here).
+const HUGE_PAGE_BYTES: usize = 8 << 20;
+
+/// `len` zeros, backed by transparent huge pages where the OS offers them
+/// on request (Linux with THP in `madvise` mode). Only a hint: elsewhere,
+/// or if refused, an ordinary zeroed vector.
+fn zeroed(len: usize) -> Vec<f32> {
+    let bytes = len * std::mem::size_of::<f32>();
+    if bytes < HUGE_PAGE_BYTES {
+        return vec![0.0; len];
+    }
+    let mut v: Vec<f32> = Vec::with_capacity(len);
+    advise_huge_pages(v.as_mut_ptr().cast(), bytes);
+    v.resize(len, 0.0);
+    v
+}
+
+#[cfg(target_os = "linux")]
+fn advise_huge_pages(start: *mut u8, bytes: usize) {
+    const PAGE: usize = 4096;
+    let addr = start as usize;
+    let aligned = addr.next_multiple_of(PAGE);
+    let len = (addr + bytes).saturating_sub(aligned) / PAGE * PAGE;
+    if len > 0 {
+        // SAFETY: the range lies inside an allocation this function's
+        // caller owns and has not touched yet; MADV_HUGEPAGE changes only
+        // how the kernel backs it, never its contents or validity.
+        unsafe {
+            libc::madvise(aligned as *mut libc::c_void, len, libc::MADV_HUGEPAGE);
+        }
+    }
+}
+
+#[cfg(not(target_os = "linux"))]
+fn advise_huge_pages(_start: *mut u8, _bytes: usize) {}
