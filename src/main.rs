@@ -8,6 +8,7 @@ use mountains::settings::{load, paths};
 use mountains::{help, log, saver};
 
 fn main() -> ExitCode {
+    saver::mark_start();
     let args: Vec<_> = std::env::args_os().skip(1).collect();
     let inv = match cli::parse(&args) {
         Ok(inv) => inv,

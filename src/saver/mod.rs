@@ -168,8 +168,15 @@ fn check_library(library: &str, package: &str) -> Result<(), SaverError> {
     })
 }
 
-/// When `run` was entered: the zero of the start-up trace.
+/// The zero of the start-up trace: `main`'s first line (see `mark_start`),
+/// else when `run` was entered.
 static START: std::sync::OnceLock<Instant> = std::sync::OnceLock::new();
+
+/// Starts the start-up trace's clock; `main` calls it first, so the traced
+/// time to the first present includes reading the settings and the data set.
+pub fn mark_start() {
+    START.get_or_init(Instant::now);
+}
 
 /// With `MOUNTAINS_TRACE=1`, reports on stderr how long the first present took.
 #[derive(Debug, Clone, Copy)]
