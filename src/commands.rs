@@ -18,9 +18,13 @@ pub fn mountain(
     open: Option<&Path>,
 ) -> Result<(Heightfield, Option<u64>), String> {
     match open {
-        Some(path) => heightmap::load(path)
-            .map(|d| (d.field, d.seed))
-            .map_err(|e| e.to_string()),
+        Some(path) => {
+            let data = heightmap::load(path).map_err(|e| e.to_string())?;
+            for note in &data.notes {
+                eprintln!("mountains: {}: {note}", path.display());
+            }
+            Ok((data.field, data.seed))
+        }
         None => {
             let seed = settings.seed.unwrap_or_else(fresh_seed);
             Ok((terrain::generate(settings, seed), Some(seed)))

@@ -74,7 +74,15 @@ fn run_saver(mode: &Mode, loaded: load::Loaded, open: Option<&std::path::Path>) 
         log::warn(&format!("{p} (using the default)"));
     }
     let data_set = match open.map(mountains::terrain::heightmap::load) {
-        Some(Ok(d)) => Some(d),
+        Some(Ok(d)) => {
+            for note in &d.notes {
+                log::warn(&format!(
+                    "{}: {note}",
+                    open.map_or(String::new(), |p| p.display().to_string())
+                ));
+            }
+            Some(d)
+        }
         Some(Err(e)) => {
             log::warn(&format!("{e}; showing generated mountains instead"));
             None
