@@ -13,7 +13,7 @@ use toml_edit::{DocumentMut, Item};
 
 use super::Settings;
 use super::keys::{self, KEYS, Key, Value};
-use super::load::DEFAULT_TOML;
+use super::load::{DEFAULT_TOML, line_col};
 
 /// Why the preferences could not be saved. The file on disk is unchanged.
 #[derive(Debug, Clone, PartialEq)]
@@ -187,16 +187,4 @@ fn append_key(doc: &mut DocumentMut, key: &Key, value: &Value, blank_line: bool)
             .set_prefix(format!("{gap}# {}\n", key.doc));
         k.leaf_decor_mut().set_suffix(" ");
     }
-}
-
-fn line_col(text: &str, offset: usize) -> (usize, usize) {
-    let before = &text[..offset.min(text.len())];
-    let line = before.matches('\n').count() + 1;
-    let col = before
-        .rfind('\n')
-        .map_or(before, |i| &before[i + 1..])
-        .chars()
-        .count()
-        + 1;
-    (line, col)
 }
