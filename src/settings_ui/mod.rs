@@ -34,7 +34,9 @@ pub fn run(config: Option<&Path>, loaded: &load::Loaded, parent: Option<u64>) ->
     let problems = loaded.problems.clone();
     let make: window::MakeScreen =
         Box::new(move |size, scale| screen::Screen::new(settings, &problems, path, size, scale));
-    match window::run(make, parent.or_else(default_owner)) {
+    let owner = parent.or_else(default_owner);
+    let _modal = ModalOwner::disable(owner);
+    match window::run(make, owner) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             crate::log::warn(&e);
@@ -55,6 +57,42 @@ fn default_owner() -> Option<u64> {
 #[cfg(not(windows))]
 fn default_owner() -> Option<u64> {
     None
+}
+
+/// Makes the dialog modal: its owner takes no input while it is open, and
+/// is enabled again when this drops (on OK, Cancel, error or panic alike).
+struct ModalOwner {
+    #[cfg(windows)]
+    hwnd: Option<windows_sys::Win32::Foundation::HWND>,
+}
+
+impl ModalOwner {
+    #[cfg(windows)]
+    fn disable(owner: Option<u64>) -> Self {
+        use windows_sys::Win32::UI::Input::KeyboardAndMouse::EnableWindow;
+        let hwnd = owner.map(|h| h as usize as windows_sys::Win32::Foundation::HWND);
+        if let Some(h) = hwnd {
+            // SAFETY: EnableWindow accepts any handle; a stale one fails harmlessly.
+            unsafe { EnableWindow(h, 0) };
+        }
+        ModalOwner { hwnd }
+    }
+
+    #[cfg(not(windows))]
+    fn disable(_owner: Option<u64>) -> Self {
+        ModalOwner {}
+    }
+}
+
+#[cfg(windows)]
+impl Drop for ModalOwner {
+    fn drop(&mut self) {
+        use windows_sys::Win32::UI::Input::KeyboardAndMouse::EnableWindow;
+        if let Some(h) = self.hwnd {
+            // SAFETY: as in `disable`.
+            unsafe { EnableWindow(h, 1) };
+        }
+    }
 }
 
 fn config_path(config: Option<&Path>, loaded: &load::Loaded) -> Option<PathBuf> {
