@@ -16,7 +16,7 @@ const MAX_THREADS: usize = 8;
 /// Bands per thread. The work is far from even down the frame (a dense
 /// mountain above, flat sea below), so the frame is cut into several bands
 /// per thread and each thread takes the next band left when it is done.
-const BANDS_PER_THREAD: usize = 4;
+const BANDS_PER_THREAD: usize = 2;
 /// Bands thinner than this are not worth a thread.
 const MIN_BAND_ROWS: u32 = 16;
 
