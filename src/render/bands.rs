@@ -1,8 +1,10 @@
-//! The full frame drawn in horizontal bands, one thread each.
+//! The full frame drawn in horizontal bands, shared out among threads.
 //!
 //! Every band runs the whole painter's order but only touches its own rows,
 //! so each pixel receives the same writes in the same order as when one
 //! thread draws everything: the result does not depend on the thread count.
+
+use std::sync::Mutex;
 
 use super::canvas::Canvas;
 use super::frame::Frame;
@@ -10,17 +12,22 @@ use super::painter::{Rows, background, draw_strips};
 use super::scene::Scene;
 
 /// Most threads used; more bands would mostly repeat per-strip work.
-const MAX_BANDS: usize = 8;
+const MAX_THREADS: usize = 8;
+/// Bands per thread. The work is far from even down the frame (a dense
+/// mountain above, flat sea below), so the frame is cut into several bands
+/// per thread and each thread takes the next band left when it is done.
+const BANDS_PER_THREAD: usize = 2;
 /// Bands thinner than this are not worth a thread.
 const MIN_BAND_ROWS: u32 = 16;
 
 /// Draws every strip of `scene` into `frame`, background first.
 pub(crate) fn render(scene: &Scene, frame: &mut Frame) {
     let (width, height) = (frame.width(), frame.height());
-    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
-    let bands = threads
-        .min(MAX_BANDS)
-        .min((height / MIN_BAND_ROWS).max(1) as usize);
+    let threads = std::thread::available_parallelism()
+        .map_or(1, |n| n.get())
+        .min(MAX_THREADS);
+    let bands = (threads * BANDS_PER_THREAD).min((height / MIN_BAND_ROWS).max(1) as usize);
+    let bands = if threads < 2 { 1 } else { bands };
     let cuts = cut_rows(scene, height, bands);
     let sky = background(scene);
     let strips = 0..scene.cells();
@@ -33,23 +40,34 @@ pub(crate) fn render(scene: &Scene, frame: &mut Frame) {
         rest = tail;
         y0 = y1;
     }
-    let draw = |(band, y0): (&mut [u32], u32)| {
+    let draw = |(band, y0): (&mut [u32], u32), rows: &mut Rows| {
         let mut canvas = Canvas::new(band, width, y0);
         canvas.clear(sky);
-        draw_strips(scene, &mut canvas, &mut Rows::new(), strips.clone());
+        draw_strips(scene, &mut canvas, rows, strips.clone());
     };
-    let draw = &draw;
-    if pieces.len() == 1 {
-        pieces.into_iter().for_each(draw);
+    let workers = threads.min(pieces.len());
+    let queue = Mutex::new(pieces.into_iter());
+    let work = || {
+        let mut rows = Rows::new();
+        loop {
+            // The lock is held only to take the next band.
+            let next = queue.lock().map_or(None, |mut q| q.next());
+            match next {
+                Some(piece) => draw(piece, &mut rows),
+                None => break,
+            }
+        }
+    };
+    let work = &work;
+    if workers < 2 {
+        work();
         return;
     }
     std::thread::scope(|s| {
-        let mut pieces = pieces.into_iter();
-        let first = pieces.next();
-        for piece in pieces {
-            s.spawn(move || draw(piece));
+        for _ in 1..workers {
+            s.spawn(work);
         }
-        first.into_iter().for_each(draw);
+        work();
     });
 }
 

@@ -31,7 +31,7 @@ struct CellEdges {
     bottom: bool,
 }
 
-impl Scene {
+impl Scene<'_> {
     /// The edges cell `x` of strip `s` owns: those whose neighbour across was
     /// drawn earlier, and those on the border of the grid.
     fn owned_edges(&self, s: usize, x: usize) -> CellEdges {

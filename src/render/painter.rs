@@ -6,7 +6,7 @@ use super::bands;
 use super::canvas::Canvas;
 use super::frame::{Frame, Rect};
 use super::ridges::Ridges;
-use super::scene::{Scene, Style, Vert};
+use super::scene::{FieldRef, Scene, Style, Vert};
 use crate::settings::{ColorMode, Settings};
 use crate::terrain::Heightfield;
 
@@ -23,7 +23,7 @@ pub struct Painter {
 
 /// What the strips are made of.
 enum How {
-    Mesh(Box<Scene>, Rows),
+    Mesh(Box<Scene<'static>>, Rows),
     Ridges(Ridges),
 }
 
@@ -63,7 +63,7 @@ impl Painter {
             How::Ridges(Ridges::new(&field, settings, width, height))
         } else {
             How::Mesh(
-                Box::new(Scene::new(field, settings, width, height)),
+                Box::new(Scene::new(FieldRef::Shared(field), settings, width, height)),
                 Rows::new(),
             )
         };
@@ -172,6 +172,6 @@ pub fn render_full(field: &Heightfield, settings: &Settings, frame: &mut Frame) 
         p.step(frame, usize::MAX);
         return;
     }
-    let scene = Scene::new(Arc::new(field.clone()), settings, w, h);
+    let scene = Scene::new(FieldRef::Borrowed(field), settings, w, h);
     bands::render(&scene, frame);
 }

@@ -246,24 +246,29 @@ impl Walk {
 }
 
 /// The inside columns of one row, found by testing each pixel centre.
-#[inline]
 /// `start` holds the three edge functions at column `ix0`, `step` their
-/// change per column.
+/// change per column; the row holds at most `SCAN_WIDTH` columns.
+///
+/// Every centre is tested without branching (the tiny triangles of a fine
+/// grid made a scanning loop mispredict at every turn); the inside of a row
+/// of a triangle is one run, so its first and last inside column give it.
+#[inline]
 fn scan_row(start: [i64; 3], step: [i64; 3], ix0: i64, ix1: i64) -> (i64, i64) {
     let [mut e0, mut e1, mut e2] = start;
     let [s0, s1, s2] = step;
-    let mut ix = ix0;
-    while ix <= ix1 && (e0 | e1 | e2) < 0 {
+    let columns = ix1 - ix0 + 1;
+    let mut inside = 0u32;
+    for k in 0..SCAN_WIDTH {
+        let hit = (k < columns) & ((e0 | e1 | e2) >= 0);
+        inside |= (hit as u32) << k;
         (e0, e1, e2) = (e0 + s0, e1 + s1, e2 + s2);
-        ix += 1;
     }
-    let lo = ix;
-    // The inside of a row is one run: it ends at the first pixel out.
-    while ix <= ix1 && (e0 | e1 | e2) >= 0 {
-        (e0, e1, e2) = (e0 + s0, e1 + s1, e2 + s2);
-        ix += 1;
+    if inside == 0 {
+        return (ix0 + 1, ix0);
     }
-    (lo, ix - 1)
+    let first = inside.trailing_zeros() as i64;
+    let last = 31 - inside.leading_zeros() as i64;
+    (ix0 + first, ix0 + last)
 }
 
 /// Whether the bounding box of a cell's corners holds the centre of a pixel

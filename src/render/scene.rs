@@ -48,9 +48,27 @@ pub(crate) struct Vert {
     pub lit: f32,
 }
 
+/// A field a scene draws: shared with a painter, or borrowed for one frame
+/// (a full frame needs no copy of the caller's field).
+pub(crate) enum FieldRef<'a> {
+    Shared(Arc<Heightfield>),
+    Borrowed(&'a Heightfield),
+}
+
+impl std::ops::Deref for FieldRef<'_> {
+    type Target = Heightfield;
+
+    fn deref(&self) -> &Heightfield {
+        match self {
+            FieldRef::Shared(f) => f,
+            FieldRef::Borrowed(f) => f,
+        }
+    }
+}
+
 /// The fixed facts about drawing one mountain into one frame size.
-pub(crate) struct Scene {
-    pub field: Arc<Heightfield>,
+pub(crate) struct Scene<'a> {
+    pub field: FieldRef<'a>,
     pub view: View,
     pub palette: Palette,
     shadow: Option<ShadowMap>,
@@ -65,14 +83,9 @@ pub(crate) struct Scene {
     pub sees_front: bool,
 }
 
-impl Scene {
+impl<'a> Scene<'a> {
     /// Prepares `field` seen as `settings` ask, in a `width` x `height` frame.
-    pub(crate) fn new(
-        field: Arc<Heightfield>,
-        settings: &Settings,
-        width: u32,
-        height: u32,
-    ) -> Self {
+    pub(crate) fn new(field: FieldRef<'a>, settings: &Settings, width: u32, height: u32) -> Self {
         let style = Style::of(settings.color);
         let mut field = turned(field, settings.rotation);
         if matches!(style, Style::Sonar | Style::Outline) {
@@ -167,12 +180,7 @@ const MIN_WIRE_CELL_PX: f32 = 8.0;
 
 /// The field on the coarsest nested grid whose cells, seen in this frame,
 /// are at least `MIN_WIRE_CELL_PX` wide (the field itself if they already are).
-fn legible(
-    field: Arc<Heightfield>,
-    settings: &Settings,
-    width: u32,
-    height: u32,
-) -> Arc<Heightfield> {
+fn legible<'a>(field: FieldRef<'a>, settings: &Settings, width: u32, height: u32) -> FieldRef<'a> {
     let cells = (field.size() - 1) as f32;
     let zmax = field.max().max(0.0);
     let view = View::new(
@@ -190,10 +198,10 @@ fn legible(
         return field;
     }
     let levels = (MIN_WIRE_CELL_PX / px).log2().ceil() as u32;
-    Arc::new(field.coarsened(levels))
+    FieldRef::Shared(Arc::new(field.coarsened(levels)))
 }
 
-fn turned(field: Arc<Heightfield>, rotation: u32) -> Arc<Heightfield> {
+fn turned(field: FieldRef<'_>, rotation: u32) -> FieldRef<'_> {
     let quarters = ((rotation % 360 + 45) / 90) % 4;
     if quarters == 0 {
         return field;
@@ -211,5 +219,5 @@ fn turned(field: Arc<Heightfield>, rotation: u32) -> Arc<Heightfield> {
             out.set(x, y, field.get(sx, sy));
         }
     }
-    Arc::new(out)
+    FieldRef::Shared(Arc::new(out))
 }

@@ -39,7 +39,7 @@ impl Corner {
     }
 }
 
-impl Scene {
+impl Scene<'_> {
     /// Draws strip `s` filled: its cells in drawing order, then the skirts.
     /// `top` and `bottom` are grid rows `s` and `s + 1`, projected.
     pub(crate) fn fill_strip(&self, canvas: &mut Canvas, s: usize, top: &[Vert], bottom: &[Vert]) {
