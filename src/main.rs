@@ -73,22 +73,18 @@ fn run_saver(mode: &Mode, loaded: load::Loaded, open: Option<&std::path::Path>) 
     for p in &loaded.problems {
         log::warn(&format!("{p} (using the default)"));
     }
-    let data_set = match open.map(mountains::terrain::heightmap::load) {
-        Some(Ok(d)) => {
+    let data_set = open.and_then(|path| match mountains::terrain::heightmap::load(path) {
+        Ok(d) => {
             for note in &d.notes {
-                log::warn(&format!(
-                    "{}: {note}",
-                    open.map_or(String::new(), |p| p.display().to_string())
-                ));
+                log::warn(&format!("{}: {note}", path.display()));
             }
             Some(d)
         }
-        Some(Err(e)) => {
+        Err(e) => {
             log::warn(&format!("{e}; showing generated mountains instead"));
             None
         }
-        None => None,
-    };
+    });
     match saver::run(mode, loaded.settings, data_set) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
