@@ -11,6 +11,7 @@ pub mod fsutil;
 pub mod help;
 pub mod log;
 pub mod render;
+pub mod saved;
 pub mod saver;
 pub mod settings;
 pub mod settings_ui;

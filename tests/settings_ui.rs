@@ -5,6 +5,7 @@
 use std::path::{Path, PathBuf};
 
 use mountains::render::Rect;
+use mountains::saved;
 use mountains::settings::keys::{self, KEYS, Kind, Value};
 use mountains::settings::{ColorMode, Settings, load};
 use mountains::settings_ui::layout::{Button, Hit, Layout, Part, WINDOW_H, WINDOW_W};
@@ -562,15 +563,20 @@ fn data_sets_are_listed_from_both_folders_and_saved_under_readable_names() {
         ]
     );
     assert_eq!(datasets::folders(Some(&data), Some("")), vec![data.clone()]);
-    let first = datasets::save_path(&data, "2026-11-22", Some(1234));
-    assert_eq!(first, data.join("mountain-2026-11-22-seed-1234.png"));
+    // Save names data sets by date, time and seed, and never replaces a file.
+    let first = saved::new_path(&data, ".png", Some(1234)).unwrap();
+    let name = first.file_name().unwrap().to_str().unwrap().to_string();
+    assert!(
+        name.starts_with("mountain-20") && name.ends_with("-seed-1234.png"),
+        "{name}"
+    );
     std::fs::write(&first, b"taken").unwrap();
+    let stem = name.trim_end_matches(".png");
     assert_eq!(
-        datasets::save_path(&data, "2026-11-22", Some(1234)),
-        data.join("mountain-2026-11-22-seed-1234-2.png"),
+        saved::free_path(&data, stem, ".png").unwrap(),
+        data.join(format!("{stem}-2.png")),
         "an existing file is never replaced"
     );
-    assert_eq!(datasets::today().len(), 10);
 }
 
 #[test]

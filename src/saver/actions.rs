@@ -1,47 +1,57 @@
 //! Window-mode actions that touch files or settings: saving the data set,
 //! screenshots, the next colour, cragginess steps.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use super::input::Action;
 use super::show::Mountain;
 use crate::render::Frame;
+use crate::settings::keys::{self, Kind, Value};
 use crate::settings::{ColorMode, Settings};
 
-/// Every colour mode, in the order the C key steps through them.
-const COLORS: [ColorMode; 12] = [
-    ColorMode::Natural,
-    ColorMode::Gray,
-    ColorMode::Red,
-    ColorMode::Green,
-    ColorMode::Blue,
-    ColorMode::Yellow,
-    ColorMode::Cyan,
-    ColorMode::Purple,
-    ColorMode::Sonar,
-    ColorMode::Outline,
-    ColorMode::Mono,
-    ColorMode::Ridges,
-];
-
-/// The colour mode after `color`, wrapping round.
+/// The colour mode after `color`, wrapping round, in the key table's order
+/// (the order the settings file and screen list them).
 pub fn next_color(color: ColorMode) -> ColorMode {
-    let i = COLORS.iter().position(|&c| c == color).unwrap_or(0);
-    COLORS[(i + 1) % COLORS.len()]
+    let key = key("color");
+    let Kind::Choice(names) = key.kind else {
+        return color;
+    };
+    let mut s = Settings {
+        color,
+        ..Settings::default()
+    };
+    let now = keys::get(&s, key);
+    let i = names
+        .iter()
+        .position(|n| Value::Str((*n).into()) == now)
+        .unwrap_or(0);
+    let next = Value::Str(names[(i + 1) % names.len()].into());
+    // Every name in the table is a valid value, so this cannot fail.
+    let _ = keys::apply(&mut s, key, &next);
+    s.color
 }
-
-/// Cragginess range the square generators accept (seed 003: 1-128).
-const CRAGGINESS: std::ops::RangeInclusive<u32> = 1..=128;
 
 /// Cragginess one step rougher: doubled, since it is halved at each level.
 pub fn craggier(c: u32) -> u32 {
-    c.saturating_mul(2)
-        .clamp(*CRAGGINESS.start(), *CRAGGINESS.end())
+    clamp_cragginess(u64::from(c) * 2)
 }
 
 /// Cragginess one step smoother: halved.
 pub fn smoother(c: u32) -> u32 {
-    (c / 2).clamp(*CRAGGINESS.start(), *CRAGGINESS.end())
+    clamp_cragginess(u64::from(c / 2))
+}
+
+/// Clamps to the range the key table allows for cragginess.
+fn clamp_cragginess(c: u64) -> u32 {
+    match key("cragginess").kind {
+        Kind::Int { min, max } => (c as i64).clamp(min, max) as u32,
+        _ => c as u32,
+    }
+}
+
+/// A key the table is known to hold (tests cover every name used here).
+fn key(name: &str) -> &'static keys::Key {
+    keys::find(name).unwrap_or_else(|| panic!("`{name}` is missing from the key table"))
 }
 
 /// Whether a settings change affects the mountain on screen or only the next one.
@@ -112,64 +122,18 @@ pub fn report(result: Option<Result<PathBuf, String>>, what: &str) {
     }
 }
 
-/// A readable file stem: `mountain-2026-11-22-023512-seed-42`.
-pub fn file_stem(unix_seconds: u64, seed: Option<u64>) -> String {
-    let (y, m, d) = civil_date(unix_seconds / 86_400);
-    let s = unix_seconds % 86_400;
-    let time = format!("{:02}{:02}{:02}", s / 3600, s / 60 % 60, s % 60);
-    match seed {
-        Some(seed) => format!("mountain-{y:04}-{m:02}-{d:02}-{time}-seed-{seed}"),
-        None => format!("mountain-{y:04}-{m:02}-{d:02}-{time}"),
-    }
-}
-
-/// Year, month, day (UTC) of a day count since 1970-01-01 (Howard Hinnant's algorithm).
-fn civil_date(days: u64) -> (u64, u64, u64) {
-    let z = days + 719_468;
-    let era = z / 146_097;
-    let doe = z % 146_097;
-    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let d = doy - (153 * mp + 2) / 5 + 1;
-    let m = if mp < 10 { mp + 3 } else { mp - 9 };
-    let y = yoe + era * 400 + u64::from(m <= 2);
-    (y, m, d)
-}
-
-/// A path in `dir` for `stem` + `suffix` (e.g. `.png`) that names no existing file.
-fn free_path(dir: &Path, stem: &str, suffix: &str) -> Option<PathBuf> {
-    (1..100)
-        .map(|n| match n {
-            1 => dir.join(format!("{stem}{suffix}")),
-            n => dir.join(format!("{stem}-{n}{suffix}")),
-        })
-        .find(|p| !p.exists())
-}
-
-fn output_path(suffix: &str, seed: Option<u64>) -> Result<PathBuf, String> {
-    let dir = crate::settings::paths::data_dir().ok_or("no data directory on this system")?;
-    std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
-    let now = std::time::SystemTime::now()
-        .duration_since(std::time::UNIX_EPOCH)
-        .map_or(0, |d| d.as_secs());
-    free_path(&dir, &file_stem(now, seed), suffix)
-        .ok_or_else(|| format!("{}: too many files with the same name", dir.display()))
+fn data_dir() -> Result<PathBuf, String> {
+    crate::settings::paths::data_dir().ok_or_else(|| "no data directory on this system".into())
 }
 
 /// Saves the mountain as a data set in the data directory; returns where.
 pub fn save_data_set(mountain: &Mountain, settings: &Settings) -> Result<PathBuf, String> {
-    let path = output_path(".png", mountain.seed)?;
-    crate::terrain::heightmap::save(&path, &mountain.field, mountain.seed, settings)
-        .map_err(|e| e.to_string())?;
-    Ok(path)
+    crate::saved::save_data_set(&data_dir()?, &mountain.field, mountain.seed, settings)
 }
 
 /// Saves the frame as a PNG screenshot in the data directory; returns where.
 pub fn save_screenshot(frame: &Frame, seed: Option<u64>) -> Result<PathBuf, String> {
-    let path = output_path("-screenshot.png", seed)?;
-    crate::snapshot::write_png(&path, frame)?;
-    Ok(path)
+    crate::saved::save_screenshot(&data_dir()?, frame, seed)
 }
 
 #[cfg(test)]
@@ -180,7 +144,11 @@ mod tests {
     fn colours_cycle_through_every_mode() {
         let mut c = ColorMode::Natural;
         let mut seen = vec![c];
-        for _ in 0..COLORS.len() - 1 {
+        let Kind::Choice(names) = key("color").kind else {
+            panic!("color is a choice")
+        };
+        assert_eq!(names.len(), 12);
+        for _ in 0..names.len() - 1 {
             c = next_color(c);
             assert!(!seen.contains(&c));
             seen.push(c);
@@ -235,24 +203,5 @@ mod tests {
         assert_eq!(smoother(64), 32);
         assert_eq!(smoother(1), 1);
         assert_eq!(craggier(u32::MAX), 128);
-    }
-
-    #[test]
-    fn file_names_hold_date_time_and_seed() {
-        assert_eq!(file_stem(0, Some(7)), "mountain-1970-01-01-000000-seed-7");
-        // 2026-11-22 02:35:12 UTC
-        assert_eq!(file_stem(1_795_314_912, None), "mountain-2026-11-22-023512");
-        // Leap day.
-        assert!(file_stem(951_782_400, None).starts_with("mountain-2000-02-29-"));
-    }
-
-    #[test]
-    fn free_path_never_names_an_existing_file() {
-        let dir = std::env::temp_dir().join(format!("mountains-free-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        std::fs::write(dir.join("a.png"), b"x").unwrap();
-        let p = free_path(&dir, "a", ".png").unwrap();
-        assert_eq!(p, dir.join("a-2.png"));
-        std::fs::remove_dir_all(&dir).unwrap();
     }
 }

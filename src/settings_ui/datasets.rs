@@ -1,6 +1,6 @@
-//! Finding data sets to open and naming the ones we save. No file dialog
-//! toolkit: Open lists the PNG files of the data directory and of
-//! `heightmaps_dir`; Save picks a readable name that never replaces a file.
+//! Finding data sets to open. No file dialog toolkit: Open lists the PNG
+//! files of the data directory and of `heightmaps_dir`. (Saving and its
+//! file names are `crate::saved`'s, shared with the window mode.)
 
 use std::path::{Path, PathBuf};
 
@@ -43,28 +43,4 @@ fn is_png(p: &Path) -> bool {
     p.extension()
         .and_then(|e| e.to_str())
         .is_some_and(|e| e.eq_ignore_ascii_case("png"))
-}
-
-/// `mountain-2026-11-22-seed-1234.png` (or `...-file.png` without a seed),
-/// with `-2`, `-3` ... added when the name is taken.
-pub fn save_path(dir: &Path, date: &str, seed: Option<u64>) -> PathBuf {
-    let stem = match seed {
-        Some(s) => format!("mountain-{date}-seed-{s}"),
-        None => format!("mountain-{date}"),
-    };
-    let mut path = dir.join(format!("{stem}.png"));
-    let mut n = 2;
-    while path.exists() && n < 10_000 {
-        path = dir.join(format!("{stem}-{n}.png"));
-        n += 1;
-    }
-    path
-}
-
-/// Today's date in UTC as `YYYY-MM-DD`.
-pub fn today() -> String {
-    let secs = std::time::SystemTime::now()
-        .duration_since(std::time::UNIX_EPOCH)
-        .map_or(0, |d| d.as_secs());
-    crate::log::format_utc(secs)[..10].to_string()
 }

@@ -12,7 +12,6 @@ use super::model::{Effect, Input, Model};
 use super::preview::Preview;
 use crate::render::Frame;
 use crate::settings::{Settings, load, paths, save};
-use crate::terrain::heightmap;
 
 /// What the window should do after an input.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -165,16 +164,15 @@ impl Screen {
             self.model.message = "Nothing to save, or no data directory.".into();
             return;
         };
-        if let Err(e) = std::fs::create_dir_all(dir) {
-            self.model.message = format!("Cannot create {}: {e}", dir.display());
-            return;
-        }
-        let path = datasets::save_path(dir, &datasets::today(), self.preview.seed);
-        self.model.message =
-            match heightmap::save(&path, field, self.preview.seed, &self.model.settings) {
-                Ok(()) => format!("Saved {}.", path.display()),
-                Err(e) => format!("Cannot save the data set: {e}"),
-            };
+        self.model.message = match crate::saved::save_data_set(
+            dir,
+            field,
+            self.preview.seed,
+            &self.model.settings,
+        ) {
+            Ok(path) => format!("Saved {}.", path.display()),
+            Err(e) => format!("Cannot save the data set: {e}"),
+        };
     }
 
     fn edit_file(&mut self) {

@@ -1,0 +1,83 @@
+//! Where saved data sets and screenshots go and what they are called: one
+//! scheme for the window mode's S and P keys and the settings screen's Save.
+
+use std::path::{Path, PathBuf};
+
+use crate::render::Frame;
+use crate::settings::Settings;
+use crate::terrain::Heightfield;
+
+/// A readable file stem: `mountain-2026-11-22-023512-seed-42` (UTC).
+pub fn file_stem(unix_seconds: u64, seed: Option<u64>) -> String {
+    let when = crate::log::format_utc(unix_seconds); // "2026-11-22 02:35:12"
+    let (date, time) = when.split_once(' ').unwrap_or((&when, ""));
+    let time: String = time.chars().filter(char::is_ascii_digit).collect();
+    match seed {
+        Some(seed) => format!("mountain-{date}-{time}-seed-{seed}"),
+        None => format!("mountain-{date}-{time}"),
+    }
+}
+
+/// A path in `dir` for `stem` + `suffix` (e.g. `.png`) that names no
+/// existing file: `stem.png`, else `stem-2.png`, `stem-3.png` ...
+pub fn free_path(dir: &Path, stem: &str, suffix: &str) -> Option<PathBuf> {
+    (1..100)
+        .map(|n| match n {
+            1 => dir.join(format!("{stem}{suffix}")),
+            n => dir.join(format!("{stem}-{n}{suffix}")),
+        })
+        .find(|p| !p.exists())
+}
+
+/// A new file name in `dir` (created if missing) for something saved now.
+pub fn new_path(dir: &Path, suffix: &str, seed: Option<u64>) -> Result<PathBuf, String> {
+    std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let now = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs());
+    free_path(dir, &file_stem(now, seed), suffix)
+        .ok_or_else(|| format!("{}: too many files with the same name", dir.display()))
+}
+
+/// Saves `field` as a data set (16-bit PNG with our metadata) in `dir`; returns where.
+pub fn save_data_set(
+    dir: &Path,
+    field: &Heightfield,
+    seed: Option<u64>,
+    settings: &Settings,
+) -> Result<PathBuf, String> {
+    let path = new_path(dir, ".png", seed)?;
+    crate::terrain::heightmap::save(&path, field, seed, settings).map_err(|e| e.to_string())?;
+    Ok(path)
+}
+
+/// Saves `frame` as a PNG screenshot in `dir`; returns where.
+pub fn save_screenshot(dir: &Path, frame: &Frame, seed: Option<u64>) -> Result<PathBuf, String> {
+    let path = new_path(dir, "-screenshot.png", seed)?;
+    crate::snapshot::write_png(&path, frame)?;
+    Ok(path)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn file_names_hold_date_time_and_seed() {
+        assert_eq!(file_stem(0, Some(7)), "mountain-1970-01-01-000000-seed-7");
+        // 2026-11-22 02:35:12 UTC
+        assert_eq!(file_stem(1_795_314_912, None), "mountain-2026-11-22-023512");
+        // Leap day.
+        assert!(file_stem(951_782_400, None).starts_with("mountain-2000-02-29-"));
+    }
+
+    #[test]
+    fn free_path_never_names_an_existing_file() {
+        let dir = std::env::temp_dir().join(format!("mountains-free-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(dir.join("a.png"), b"x").unwrap();
+        let p = free_path(&dir, "a", ".png").unwrap();
+        assert_eq!(p, dir.join("a-2.png"));
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
