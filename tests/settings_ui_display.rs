@@ -6,7 +6,9 @@
 //! xdotool the tests say they skipped, unless `MOUNTAINS_REQUIRE_DISPLAY=1`.
 #![cfg(unix)]
 
-use std::io::{BufRead, BufReader};
+#[path = "common/xvfb.rs"]
+mod xvfb;
+
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 use std::thread::sleep;
@@ -14,79 +16,37 @@ use std::time::Duration;
 
 use x11rb::connection::Connection;
 use x11rb::protocol::xproto::{ConnectionExt, ImageFormat};
+use xvfb::Xvfb;
 
 /// Waits are bounded so a broken build fails instead of hanging CI; the
 /// bound is generous because the machine may be busy.
 const POLL: Duration = Duration::from_millis(100);
 const MAX_POLLS: u32 = 600;
 
-fn required() -> bool {
-    std::env::var("MOUNTAINS_REQUIRE_DISPLAY").is_ok_and(|v| v == "1")
-}
-
-/// Says the test skipped, or fails it when a display is required.
-fn skip(why: &str) {
-    assert!(!required(), "{why} (MOUNTAINS_REQUIRE_DISPLAY=1)");
-    eprintln!("skipped: {why}");
-}
-
-struct Xvfb {
-    child: Child,
-    display: String,
-}
-
-impl Xvfb {
-    fn start() -> Option<Xvfb> {
-        let spawned = Command::new("Xvfb")
-            .args(["-noreset", "-nolisten", "tcp", "-displayfd", "1"])
-            // A busy machine may deliver a key release late; no autorepeat.
-            .args(["-ardelay", "60000"])
-            .args(["-screen", "0", "2560x1600x24"])
-            .stdout(Stdio::piped())
-            .stderr(Stdio::null())
-            .spawn();
-        let mut child = match spawned {
-            Ok(c) => c,
-            Err(e) => {
-                skip(&format!("cannot start Xvfb: {e}"));
-                return None;
-            }
-        };
-        let mut line = String::new();
-        let out = child.stdout.take().expect("piped stdout");
-        let _ = BufReader::new(out).read_line(&mut line);
-        let number = line.trim().to_string();
-        let mut x = Xvfb {
-            child,
-            display: format!(":{number}"),
-        };
-        if number.is_empty() || number.parse::<u32>().is_err() {
-            let _ = x.child.kill();
-            panic!("Xvfb did not report a display number: {line:?}");
-        }
-        if Command::new("xdotool").arg("version").output().is_err() {
-            skip("xdotool is not installed");
-            return None;
-        }
-        x.display = format!(":{number}");
-        Some(x)
+/// Starts a private Xvfb (the shared helper: fails instead of skipping when
+/// MOUNTAINS_REQUIRE_DISPLAY=1), with autorepeat off because a busy machine
+/// may deliver a key release late; `None` when Xvfb or xdotool is missing.
+fn start_display() -> Option<Xvfb> {
+    let x = Xvfb::start(2560, 1600, &["-ardelay", "60000"])?;
+    if Command::new("xdotool").arg("version").output().is_err() {
+        assert!(
+            !std::env::var("MOUNTAINS_REQUIRE_DISPLAY").is_ok_and(|v| v == "1"),
+            "xdotool is not installed (MOUNTAINS_REQUIRE_DISPLAY=1)"
+        );
+        eprintln!("skipped: xdotool is not installed");
+        return None;
     }
-
-    fn xdotool(&self, args: &[&str]) -> String {
-        let out = Command::new("xdotool")
-            .args(args)
-            .env("DISPLAY", &self.display)
-            .output()
-            .expect("xdotool runs");
-        String::from_utf8_lossy(&out.stdout).trim().to_string()
-    }
+    Some(x)
 }
 
-impl Drop for Xvfb {
-    fn drop(&mut self) {
-        let _ = self.child.kill();
-        let _ = self.child.wait();
-    }
+/// Runs xdotool against the test's display and returns what it printed.
+fn xdotool(x: &Xvfb, args: &[&str]) -> String {
+    let out = Command::new("xdotool")
+        .args(args)
+        .env("DISPLAY", x.display())
+        .output()
+        .expect("xdotool runs");
+    String::from_utf8_lossy(&out.stdout).trim().to_string()
 }
 
 /// The settings window process; killed if the test ends early.
@@ -110,7 +70,7 @@ impl App {
             .arg("--settings")
             .arg("--config")
             .arg(config)
-            .env("DISPLAY", &x.display)
+            .env("DISPLAY", x.display())
             .env("HOME", home)
             .env("WINIT_X11_SCALE_FACTOR", scale.to_string())
             .env_remove("XDG_CONFIG_HOME")
@@ -130,7 +90,10 @@ impl App {
     /// The window id, once the window is mapped.
     fn window(&mut self, x: &Xvfb) -> u32 {
         for _ in 0..MAX_POLLS {
-            let found = x.xdotool(&["search", "--onlyvisible", "--name", "^Mountains settings$"]);
+            let found = xdotool(
+                x,
+                &["search", "--onlyvisible", "--name", "^Mountains settings$"],
+            );
             if let Some(id) = found.lines().next().and_then(|l| l.trim().parse().ok()) {
                 return id;
             }
@@ -169,10 +132,10 @@ const COMMENTED: &str = "# my mountains\n\n# sharp ones\ncragginess = 40   # kee
 fn press(x: &Xvfb, window: u32, keys: &[&str]) {
     let id = window.to_string();
     // No window manager runs under Xvfb: give the window the focus ourselves.
-    x.xdotool(&["windowfocus", "--sync", &id]);
+    xdotool(x, &["windowfocus", "--sync", &id]);
     let mut args = vec!["key", "--delay", "80"];
     args.extend_from_slice(keys);
-    x.xdotool(&args);
+    xdotool(x, &args);
 }
 
 /// Waits until the window shows the dialog grey at `(x, y)`: drawn.
@@ -219,13 +182,13 @@ fn grab(conn: &impl Connection, window: u32) -> Option<(u32, u32, Vec<u32>)> {
 
 #[test]
 fn display_keys_change_a_value_and_enter_saves_keeping_comments() {
-    let Some(x) = Xvfb::start() else { return };
+    let Some(x) = start_display() else { return };
     let home = scratch("enter");
     let config = home.join("mountains.toml");
     std::fs::write(&config, COMMENTED).unwrap();
     let mut app = App::start(&x, &config, &home, 1);
     let window = app.window(&x);
-    wait_drawn(&x.display, window);
+    wait_drawn(x.display(), window);
     // Seed, Generator, Cragginess: two rows down, one step right, Enter = OK.
     press(&x, window, &["Down", "Down", "Right", "Return"]);
     let status = app.wait_exit();
@@ -236,13 +199,13 @@ fn display_keys_change_a_value_and_enter_saves_keeping_comments() {
 
 #[test]
 fn display_escape_leaves_the_file_byte_identical() {
-    let Some(x) = Xvfb::start() else { return };
+    let Some(x) = start_display() else { return };
     let home = scratch("escape");
     let config = home.join("mountains.toml");
     std::fs::write(&config, COMMENTED).unwrap();
     let mut app = App::start(&x, &config, &home, 1);
     let window = app.window(&x);
-    wait_drawn(&x.display, window);
+    wait_drawn(x.display(), window);
     press(&x, window, &["Down", "Down", "Right", "Right", "Escape"]);
     let status = app.wait_exit();
     assert!(status.success(), "{status}: {}", app.stderr());
@@ -252,13 +215,13 @@ fn display_escape_leaves_the_file_byte_identical() {
 #[test]
 fn display_mouse_clicks_plus_then_ok() {
     use mountains::settings_ui::layout::{Button, Layout};
-    let Some(x) = Xvfb::start() else { return };
+    let Some(x) = start_display() else { return };
     let home = scratch("mouse");
     let config = home.join("mountains.toml");
     std::fs::write(&config, COMMENTED).unwrap();
     let mut app = App::start(&x, &config, &home, 1);
     let window = app.window(&x);
-    wait_drawn(&x.display, window);
+    wait_drawn(x.display(), window);
     let l = Layout::new(960, 620, 1);
     let crag = mountains::settings::keys::KEYS
         .iter()
@@ -271,8 +234,8 @@ fn display_mouse_clicks_plus_then_ok() {
     let id = window.to_string();
     for (px, py) in [plus, plus, ok] {
         let (px, py) = (px.to_string(), py.to_string());
-        x.xdotool(&["mousemove", "--window", &id, &px, &py]);
-        x.xdotool(&["click", "1"]);
+        xdotool(&x, &["mousemove", "--window", &id, &px, &py]);
+        xdotool(&x, &["click", "1"]);
     }
     let status = app.wait_exit();
     assert!(status.success(), "{status}: {}", app.stderr());
@@ -283,13 +246,13 @@ fn display_mouse_clicks_plus_then_ok() {
 /// Opens the window at `scale`, checks its size, and writes a screenshot
 /// (`target/tmp/settings-ui-<scale>x.png`) for a person to look at.
 fn screenshot(scale: u32) {
-    let Some(x) = Xvfb::start() else { return };
+    let Some(x) = start_display() else { return };
     let home = scratch(&format!("shot{scale}"));
     let config = home.join("mountains.toml");
     std::fs::write(&config, COMMENTED).unwrap();
     let mut app = App::start(&x, &config, &home, scale);
     let window = app.window(&x);
-    wait_drawn(&x.display, window);
+    wait_drawn(x.display(), window);
     press(&x, window, &["Down", "Down", "Right"]);
     // Exactly two rows down: the Cragginess label is highlighted in navy.
     let l = mountains::settings_ui::layout::Layout::new(960 * scale, 620 * scale, scale);
@@ -297,13 +260,13 @@ fn screenshot(scale: u32) {
         let r = l.row(row);
         ((r.y0 + l.px(2)) * w + r.x0 + l.px(20)) as usize
     };
-    let mut shot = wait_drawn(&x.display, window);
+    let mut shot = wait_drawn(x.display(), window);
     for _ in 0..MAX_POLLS {
         if shot.2.get(probe(2, shot.0)) == Some(&0x000080) {
             break;
         }
         sleep(POLL);
-        shot = wait_drawn(&x.display, window);
+        shot = wait_drawn(x.display(), window);
     }
     let (w, h, px) = shot;
     assert_eq!(
