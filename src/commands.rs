@@ -26,16 +26,10 @@ pub fn mountain(
             Ok((data.field, data.seed))
         }
         None => {
-            let seed = settings.seed.unwrap_or_else(fresh_seed);
+            let seed = settings.next_seed();
             Ok((terrain::generate(settings, seed), Some(seed)))
         }
     }
-}
-
-/// A new random seed that also fits a TOML integer, so it can be pasted into
-/// `seed = ...` as printed.
-pub fn fresh_seed() -> u64 {
-    rand::random::<u64>() >> 1
 }
 
 /// `mountains render`: one complete mountain to a PNG.

@@ -163,6 +163,13 @@ impl Default for Settings {
 }
 
 impl Settings {
+    /// The seed for the next mountain: the one set, or a fresh random one
+    /// (`seed = "random"`). Fresh seeds fit a TOML integer, so a seed shown
+    /// in a title or printed by `render` can be pasted into `seed = ...`.
+    pub fn next_seed(&self) -> u64 {
+        self.seed.unwrap_or_else(|| rand::random::<u64>() >> 1)
+    }
+
     /// Points per side of the grid these settings generate, low detail included.
     pub fn grid_exponent(&self) -> u32 {
         if self.low_detail && self.detail > 4 {

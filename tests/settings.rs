@@ -199,3 +199,24 @@ fn invalid_utf8_is_a_problem_not_a_panic() {
     assert_eq!(problems[0].position, Some((2, 10)));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn next_seed_is_the_set_one_or_a_fresh_one_that_fits_toml() {
+    let set = Settings {
+        seed: Some(u64::MAX),
+        ..Settings::default()
+    };
+    assert_eq!(set.next_seed(), u64::MAX);
+    let random = Settings::default();
+    let seeds: Vec<u64> = (0..64).map(|_| random.next_seed()).collect();
+    // A fresh seed can be written back as `seed = N` (a TOML integer is an i64).
+    for &seed in &seeds {
+        let (s, problems) = load_text(&format!("seed = {seed}\n"));
+        assert!(problems.is_empty(), "{seed}: {problems:?}");
+        assert_eq!(s.seed, Some(seed));
+    }
+    assert!(
+        seeds.windows(2).any(|w| w[0] != w[1]),
+        "fresh seeds should differ"
+    );
+}

@@ -23,7 +23,7 @@ pub struct Mountain {
 impl Mountain {
     /// Generates a mountain from `settings`, with its seed or a fresh random one.
     pub fn generate(settings: &Settings) -> Self {
-        let seed = settings.seed.unwrap_or_else(rand::random);
+        let seed = settings.next_seed();
         Mountain {
             field: Arc::new(terrain::generate(settings, seed)),
             seed: Some(seed),

@@ -89,11 +89,7 @@ impl Screen {
     }
 
     fn new_mountain(&mut self) {
-        let seed = self
-            .model
-            .settings
-            .seed
-            .unwrap_or_else(crate::commands::fresh_seed);
+        let seed = self.model.settings.next_seed();
         self.preview
             .generate(&self.model.settings, seed, self.preview_size());
         self.model.preview_seed = self.preview.seed;
