@@ -1,5 +1,6 @@
-//! Where saved data sets and screenshots go and what they are called: one
-//! scheme for the window mode's S and P keys and the settings screen's Save.
+//! Saved data sets and screenshots: where they go, what they are called, and
+//! finding them again. One scheme for the window mode (S, P, O keys), the
+//! settings screen (Save, Open) and the slide show's `heightmaps_dir`.
 
 use std::path::{Path, PathBuf};
 
@@ -58,6 +59,59 @@ pub fn save_screenshot(dir: &Path, frame: &Frame, seed: Option<u64>) -> Result<P
     Ok(path)
 }
 
+/// At most this many folder entries are looked at: a huge folder must not
+/// stall the slide show or the settings screen.
+const MAX_ENTRIES: usize = 10_000;
+
+/// The folders saved data sets are looked for in: the data directory, then
+/// `heightmaps_dir` (empty = none), without repeats.
+pub fn folders(data_dir: Option<&Path>, heightmaps_dir: Option<&str>) -> Vec<PathBuf> {
+    let mut out: Vec<PathBuf> = data_dir.map(Path::to_path_buf).into_iter().collect();
+    if let Some(d) = heightmaps_dir.filter(|d| !d.is_empty()) {
+        let d = PathBuf::from(d);
+        if !out.contains(&d) {
+            out.push(d);
+        }
+    }
+    out
+}
+
+/// The `.png` files directly in `folders`, sorted by name within each
+/// folder. Folders that cannot be read are skipped.
+pub fn list_pngs(folders: &[PathBuf]) -> Vec<PathBuf> {
+    let mut all = Vec::new();
+    for dir in folders {
+        let Ok(entries) = std::fs::read_dir(dir) else {
+            continue;
+        };
+        let mut found: Vec<PathBuf> = entries
+            .take(MAX_ENTRIES)
+            .filter_map(Result::ok)
+            .map(|e| e.path())
+            .filter(|p| p.is_file() && is_png(p))
+            .collect();
+        found.sort();
+        all.extend(found);
+    }
+    all
+}
+
+fn is_png(p: &Path) -> bool {
+    p.extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case("png"))
+}
+
+/// The data set after `current` in `files` (the first if `current` is not
+/// among them), wrapping round: what Open shows next.
+pub fn next_after<'a>(files: &'a [PathBuf], current: Option<&Path>) -> Option<&'a PathBuf> {
+    let at = current.and_then(|c| files.iter().position(|f| f == c));
+    match at {
+        Some(i) => files.get((i + 1) % files.len()),
+        None => files.first(),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -79,5 +133,24 @@ mod tests {
         let p = free_path(&dir, "a", ".png").unwrap();
         assert_eq!(p, dir.join("a-2.png"));
         std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn next_after_cycles_and_starts_at_the_first() {
+        let files: Vec<PathBuf> = ["a.png", "b.png"].iter().map(PathBuf::from).collect();
+        assert_eq!(next_after(&files, None), Some(&files[0]));
+        assert_eq!(
+            next_after(&files, Some(Path::new("a.png"))),
+            Some(&files[1])
+        );
+        assert_eq!(
+            next_after(&files, Some(Path::new("b.png"))),
+            Some(&files[0])
+        );
+        assert_eq!(
+            next_after(&files, Some(Path::new("gone.png"))),
+            Some(&files[0])
+        );
+        assert_eq!(next_after(&[], None), None);
     }
 }

@@ -541,7 +541,6 @@ fn the_seed_button_keeps_the_preview_mountain_or_goes_back_to_random() {
 
 #[test]
 fn data_sets_are_listed_from_both_folders_and_saved_under_readable_names() {
-    use mountains::settings_ui::datasets;
     let dir = scratch("datasets");
     let (data, maps) = (dir.join("data"), dir.join("maps"));
     for d in [&data, &maps] {
@@ -553,16 +552,16 @@ fn data_sets_are_listed_from_both_folders_and_saved_under_readable_names() {
     std::fs::write(maps.join("world.png"), b"x").unwrap();
     std::fs::create_dir_all(maps.join("folder.png")).unwrap();
     let maps_str = maps.to_str().unwrap();
-    let folders = datasets::folders(Some(&data), Some(maps_str));
+    let folders = saved::folders(Some(&data), Some(maps_str));
     assert_eq!(
-        datasets::list_pngs(&folders),
+        saved::list_pngs(&folders),
         vec![
             data.join("a.PNG"),
             data.join("b.png"),
             maps.join("world.png")
         ]
     );
-    assert_eq!(datasets::folders(Some(&data), Some("")), vec![data.clone()]);
+    assert_eq!(saved::folders(Some(&data), Some("")), vec![data.clone()]);
     // Save names data sets by date, time and seed, and never replaces a file.
     let first = saved::new_path(&data, ".png", Some(1234)).unwrap();
     let name = first.file_name().unwrap().to_str().unwrap().to_string();

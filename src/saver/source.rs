@@ -1,30 +1,12 @@
 //! Where each slide's mountain comes from: a fresh generation, or now and
 //! then a heightmap from the user's `heightmaps_dir`.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::sync::Arc;
 
 use super::show::Mountain;
 use crate::settings::Settings;
 use crate::terrain::heightmap;
-
-/// Most files looked at in a heightmap folder: a huge folder must not stall the show.
-const MAX_FILES: usize = 10_000;
-
-/// The `.png` files in `dir`, sorted; empty when it cannot be read.
-pub fn heightmap_files(dir: &Path) -> Vec<PathBuf> {
-    let Ok(entries) = std::fs::read_dir(dir) else {
-        return Vec::new();
-    };
-    let mut files: Vec<PathBuf> = entries
-        .take(MAX_FILES)
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x.eq_ignore_ascii_case("png")))
-        .filter(|p| p.is_file())
-        .collect();
-    files.sort();
-    files
-}
 
 /// True when slide number `slide` shows a heightmap from the folder:
 /// every other slide, so generated and saved mountains alternate.
@@ -44,12 +26,15 @@ pub fn next_mountain(settings: &Settings, slide: u64) -> Mountain {
     Mountain::generate(settings)
 }
 
+/// Distinct warnings remembered at most, so the list stays bounded.
+const MAX_WARNINGS: usize = 10_000;
+
 /// Warns about each problem once: the slide show meets the same bad file
 /// or empty folder again and again, and the log must not grow without end.
 fn warn_once(message: String) {
     static SEEN: std::sync::Mutex<Vec<String>> = std::sync::Mutex::new(Vec::new());
     let mut seen = SEEN.lock().unwrap_or_else(|e| e.into_inner());
-    if seen.contains(&message) || seen.len() >= MAX_FILES {
+    if seen.contains(&message) || seen.len() >= MAX_WARNINGS {
         return;
     }
     crate::log::warn(&message);
@@ -57,7 +42,7 @@ fn warn_once(message: String) {
 }
 
 fn random_heightmap(dir: &Path) -> Option<Mountain> {
-    let files = heightmap_files(dir);
+    let files = crate::saved::list_pngs(&[dir.to_path_buf()]);
     if files.is_empty() {
         warn_once(format!(
             "{}: no PNG heightmaps to show; generating instead",
@@ -82,6 +67,7 @@ fn random_heightmap(dir: &Path) -> Option<Mountain> {
 mod tests {
     use super::*;
     use crate::terrain::Heightfield;
+    use std::path::PathBuf;
 
     fn folder(name: &str) -> PathBuf {
         let dir = std::env::temp_dir().join(format!("mountains-src-{name}-{}", std::process::id()));
@@ -97,12 +83,12 @@ mod tests {
             std::fs::write(dir.join(name), b"x").unwrap();
         }
         std::fs::create_dir(dir.join("d.png")).unwrap();
-        let names: Vec<_> = heightmap_files(&dir)
+        let names: Vec<_> = crate::saved::list_pngs(std::slice::from_ref(&dir))
             .iter()
             .map(|p| p.file_name().unwrap().to_string_lossy().into_owned())
             .collect();
         assert_eq!(names, ["a.PNG", "b.png"]);
-        assert!(heightmap_files(&dir.join("missing")).is_empty());
+        assert!(crate::saved::list_pngs(&[dir.join("missing")]).is_empty());
         std::fs::remove_dir_all(&dir).unwrap();
     }
 

@@ -7,7 +7,6 @@
 //! window; `screen` ties them to files and the preview; `window` is the
 //! winit + softbuffer shell.
 
-pub mod datasets;
 pub mod draw;
 pub mod editor;
 pub mod font;

@@ -5,7 +5,6 @@
 use std::path::{Path, PathBuf};
 use std::time::SystemTime;
 
-use super::datasets;
 use super::draw::{self, Extras};
 use super::layout::Layout;
 use super::model::{Effect, Input, Model};
@@ -131,7 +130,7 @@ impl Screen {
     }
 
     fn list_data_sets(&mut self) {
-        let dirs = datasets::folders(
+        let dirs = crate::saved::folders(
             self.data_dir.as_deref(),
             self.model.settings.heightmaps_dir.as_deref(),
         );
@@ -141,7 +140,8 @@ impl Screen {
         } else {
             names.join(" and ")
         };
-        self.model.show_list(datasets::list_pngs(&dirs), &searched);
+        self.model
+            .show_list(crate::saved::list_pngs(&dirs), &searched);
     }
 
     fn open_data_set(&mut self, path: &Path) {
