@@ -52,9 +52,10 @@ pub fn save_data_set(
     Ok(path)
 }
 
-/// Saves `frame` as a PNG screenshot in `dir`; returns where.
+/// Saves `frame` as a PNG screenshot in the `screenshots` folder of `dir`
+/// (kept apart so Open, which lists `dir`, offers only data sets); returns where.
 pub fn save_screenshot(dir: &Path, frame: &Frame, seed: Option<u64>) -> Result<PathBuf, String> {
-    let path = new_path(dir, "-screenshot.png", seed)?;
+    let path = new_path(&dir.join("screenshots"), "-screenshot.png", seed)?;
     crate::snapshot::write_png(&path, frame)?;
     Ok(path)
 }

@@ -232,7 +232,7 @@ fn display_fullscreen_at_4k_without_shm_falls_back_and_draws() {
 }
 
 #[test]
-fn display_window_keys_start_a_new_mountain_save_a_screenshot_and_quit() {
+fn display_window_keys_start_a_new_mountain_save_a_screenshot_open_and_quit() {
     let Some(x) = Xvfb::start(1280, 800, &[]) else {
         return;
     };
@@ -258,8 +258,8 @@ fn display_window_keys_start_a_new_mountain_save_a_screenshot_and_quit() {
     });
     x.key(33); // P
     let is_shot = |n: &str| n.starts_with("mountain-") && n.ends_with("-screenshot.png");
-    let names = || -> Vec<String> {
-        std::fs::read_dir(saver.data_dir())
+    let names_in = |dir: std::path::PathBuf| -> Vec<String> {
+        std::fs::read_dir(dir)
             .map(|d| {
                 d.filter_map(Result::ok)
                     .map(|e| e.file_name().to_string_lossy().into_owned())
@@ -267,11 +267,14 @@ fn display_window_keys_start_a_new_mountain_save_a_screenshot_and_quit() {
             })
             .unwrap_or_default()
     };
+    let names = || names_in(saver.data_dir());
+    // Screenshots have a folder of their own, so Open offers only data sets.
+    let shots = || names_in(saver.data_dir().join("screenshots"));
     let start = Instant::now();
-    while !names().iter().any(|n| is_shot(n)) && start.elapsed() < PATIENCE {
+    while !shots().iter().any(|n| is_shot(n)) && start.elapsed() < PATIENCE {
         std::thread::sleep(Duration::from_millis(20));
     }
-    let found = names();
+    let found = shots();
     assert!(
         found.iter().any(|n| is_shot(n)),
         "no screenshot in {found:?}\n{}",
@@ -293,6 +296,16 @@ fn display_window_keys_start_a_new_mountain_save_a_screenshot_and_quit() {
         "{saved} names another seed"
     );
     assert!(x.title(window).contains(&seed.to_string()));
+    x.key(57); // N: another mountain
+    poll(&mut saver, "another seed in the title after N", || {
+        !x.title(window).contains(&seed.to_string())
+    });
+    x.key(32); // O: opens the saved data set (the only one) again
+    poll(
+        &mut saver,
+        "the saved data set's seed in the title after O",
+        || x.title(window).contains(&seed.to_string()),
+    );
     x.key(24); // Q
     expect_exit(&mut saver, "Q");
 }

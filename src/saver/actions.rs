@@ -131,6 +131,27 @@ pub fn save_data_set(mountain: &Mountain, settings: &Settings) -> Result<PathBuf
     crate::saved::save_data_set(&data_dir()?, &mountain.field, mountain.seed, settings)
 }
 
+/// Loads the saved data set after `current` (data directory, then
+/// `heightmaps_dir`, by name, wrapping round); returns its path and mountain.
+pub fn open_next_data_set(
+    current: Option<&std::path::Path>,
+    settings: &Settings,
+) -> Result<(PathBuf, Mountain), String> {
+    let folders = crate::saved::folders(
+        crate::settings::paths::data_dir().as_deref(),
+        settings.heightmaps_dir.as_deref(),
+    );
+    let files = crate::saved::list_pngs(&folders);
+    let path =
+        crate::saved::next_after(&files, current).ok_or("no saved data sets yet (S saves one)")?;
+    let data = crate::terrain::heightmap::load(path).map_err(|e| e.to_string())?;
+    let mountain = Mountain {
+        field: std::sync::Arc::new(data.field),
+        seed: data.seed,
+    };
+    Ok((path.clone(), mountain))
+}
+
 /// Saves the frame as a PNG screenshot in the data directory; returns where.
 pub fn save_screenshot(frame: &Frame, seed: Option<u64>) -> Result<PathBuf, String> {
     crate::saved::save_screenshot(&data_dir()?, frame, seed)

@@ -52,6 +52,8 @@ struct Screen {
     window: Rc<Window>,
     presenter: Presenter<Rc<Window>>,
     show: Show,
+    /// The data set the O key opened last, so the next O opens the one after.
+    opened_path: Option<std::path::PathBuf>,
 }
 
 /// Runs `mode` with winit until it ends.
@@ -290,6 +292,7 @@ impl App {
             window,
             presenter,
             show,
+            opened_path: None,
         });
         let i = self.screens.len() - 1;
         self.update_title(i);
@@ -364,6 +367,21 @@ impl App {
                             .map(|m| actions::save_data_set(m, show.settings()));
                         actions::report(saved, "data set");
                         Rect::default()
+                    }
+                    Action::OpenDataSet => {
+                        let screen = &mut self.screens[i];
+                        let current = screen.opened_path.as_deref();
+                        match actions::open_next_data_set(current, screen.show.settings()) {
+                            Ok((path, mountain)) => {
+                                eprintln!("mountains: showing {}", path.display());
+                                screen.opened_path = Some(path);
+                                screen.show.open(mountain, now)
+                            }
+                            Err(e) => {
+                                crate::log::warn(&format!("cannot open a data set: {e}"));
+                                Rect::default()
+                            }
+                        }
                     }
                     Action::Screenshot => {
                         let seed = show.current().and_then(|m| m.seed);

@@ -12,6 +12,8 @@ pub enum Action {
     TogglePause,
     /// S: save the current data set into the data directory.
     SaveDataSet,
+    /// O: open the next saved data set (data directory, then heightmaps_dir).
+    OpenDataSet,
     /// P: save a PNG screenshot into the data directory.
     Screenshot,
     /// C: the next colour mode (redraws at once).
@@ -43,6 +45,7 @@ fn action_for_char(c: char) -> Option<Action> {
         'n' => Some(Action::NewMountain),
         ' ' => Some(Action::TogglePause),
         's' => Some(Action::SaveDataSet),
+        'o' => Some(Action::OpenDataSet),
         'p' => Some(Action::Screenshot),
         'c' => Some(Action::NextColor),
         'd' => Some(Action::ToggleRelativeDepth),
@@ -111,6 +114,8 @@ mod tests {
             ("n", Action::NewMountain),
             ("N", Action::NewMountain),
             ("s", Action::SaveDataSet),
+            ("o", Action::OpenDataSet),
+            ("O", Action::OpenDataSet),
             ("p", Action::Screenshot),
             ("c", Action::NextColor),
             ("d", Action::ToggleRelativeDepth),

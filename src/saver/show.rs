@@ -164,6 +164,17 @@ impl Show {
         self.advance(now)
     }
 
+    /// The O key: show `mountain` (a data set the user opened) from now on,
+    /// as `--open` does, until N asks for a new one.
+    pub fn open(&mut self, mountain: Mountain, now: Instant) -> Rect {
+        if self.current.is_none() {
+            return Rect::default();
+        }
+        self.opened = Some(mountain);
+        self.next = Next::None;
+        self.advance(now)
+    }
+
     /// Fits the show to a new window size and redraws the mountain fully at once.
     pub fn resize(&mut self, size: (u32, u32), now: Instant) -> Rect {
         if self.current.is_none() {
@@ -387,6 +398,28 @@ mod tests {
         show.new_mountain(t0);
         let shown = show.current().unwrap();
         assert_eq!((shown.seed, shown.field.exponent()), (Some(7), 5));
+    }
+
+    #[test]
+    fn an_opened_data_set_stays_on_screen_until_n() {
+        let t0 = Instant::now();
+        let mut show = Show::new(small_settings(), None, pacing(), (32, 32), t0);
+        let mut field = Heightfield::flat(4, 100.0);
+        field.set(3, 3, 9.0);
+        let opened = Mountain {
+            field: Arc::new(field),
+            seed: Some(99),
+        };
+        assert!(!show.open(opened, t0).is_empty());
+        assert_eq!(show.current().unwrap().seed, Some(99));
+        show.advance(t0);
+        assert_eq!(
+            show.current().unwrap().seed,
+            Some(99),
+            "the next slide shows it again"
+        );
+        show.new_mountain(t0);
+        assert_eq!(show.current().unwrap().seed, Some(7));
     }
 
     #[test]
