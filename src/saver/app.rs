@@ -5,7 +5,7 @@ use std::rc::Rc;
 use std::time::Instant;
 
 use winit::application::ApplicationHandler;
-use winit::dpi::PhysicalSize;
+use winit::dpi::{PhysicalPosition, PhysicalSize};
 use winit::event::{DeviceEvent, DeviceId, ElementState, WindowEvent};
 use winit::event_loop::{ActiveEventLoop, ControlFlow, DeviceEvents, EventLoop};
 use winit::keyboard::Key;
@@ -13,6 +13,7 @@ use winit::monitor::MonitorHandle;
 use winit::window::{Window, WindowAttributes, WindowId, WindowLevel};
 
 use super::actions;
+use super::heads::{self, Change, Head};
 use super::input::{Action, WakeDetector, action_for_key};
 use super::present::Presenter;
 use super::show::{Mountain, Show};
@@ -41,10 +42,13 @@ const PREVIEW_SIZE: PhysicalSize<u32> = PhysicalSize::new(320, 240);
 const WINDOW_SIZE: PhysicalSize<u32> = PhysicalSize::new(960, 600);
 
 /// Wakes the event loop from other threads.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 enum UserEvent {
     /// SIGTERM or SIGINT arrived.
     Terminate,
+    /// The monitors are now these (full screen on X11).
+    #[cfg_attr(not(unix), allow(dead_code))]
+    Heads(Vec<Head>),
 }
 
 /// One window and the slide show drawn in it.
@@ -54,6 +58,8 @@ struct Screen {
     show: Show,
     /// The data set the O key opened last, so the next O opens the one after.
     opened_path: Option<std::path::PathBuf>,
+    /// Full screen: the monitor this window covers.
+    head: Option<Head>,
 }
 
 /// Runs `mode` with winit until it ends.
@@ -74,6 +80,16 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
         let _ = proxy.send_event(UserEvent::Terminate);
     })
     .map_err(|e| SaverError::Other(format!("cannot watch for SIGTERM: {e}")))?;
+    #[cfg(unix)]
+    if mode == AppMode::Fullscreen {
+        let proxy = event_loop.create_proxy();
+        let watched = super::heads_x11::watch(move |heads| {
+            let _ = proxy.send_event(UserEvent::Heads(heads));
+        });
+        if let Err(e) = watched {
+            crate::log::warn(&format!("monitor changes will not be followed: {e}"));
+        }
+    }
     let mut app = App {
         mode,
         settings,
@@ -146,6 +162,7 @@ impl ApplicationHandler<UserEvent> for App {
     fn user_event(&mut self, event_loop: &ActiveEventLoop, event: UserEvent) {
         match event {
             UserEvent::Terminate => event_loop.exit(),
+            UserEvent::Heads(heads) => self.follow_heads(event_loop, &heads),
         }
     }
 
@@ -217,13 +234,16 @@ impl App {
             AppMode::Fullscreen => self.open_fullscreen(event_loop, base),
             AppMode::Preview => {
                 let attrs = base.with_inner_size(PREVIEW_SIZE).with_resizable(false);
-                self.add_screen(event_loop, attrs, true)
+                self.add_screen(event_loop, attrs, true, None)
             }
-            AppMode::Window => self.add_screen(event_loop, base.with_inner_size(WINDOW_SIZE), true),
+            AppMode::Window => {
+                let attrs = base.with_inner_size(WINDOW_SIZE);
+                self.add_screen(event_loop, attrs, true, None)
+            }
             #[cfg(windows)]
             AppMode::Child(parent) => {
                 let attrs = super::embed_win32::child_attributes(base, parent)?;
-                self.add_screen(event_loop, attrs, true)
+                self.add_screen(event_loop, attrs, true, None)
             }
         }
     }
@@ -235,23 +255,65 @@ impl App {
         event_loop: &ActiveEventLoop,
         base: WindowAttributes,
     ) -> Result<(), SaverError> {
-        let monitors: Vec<MonitorHandle> = event_loop.available_monitors().collect();
-        let primary = event_loop
-            .primary_monitor()
-            .or_else(|| monitors.first().cloned());
-        if monitors.is_empty() {
+        let found = find_heads(event_loop);
+        if found.is_empty() {
             let attrs = base
                 .with_decorations(false)
                 .with_fullscreen(Some(winit::window::Fullscreen::Borderless(None)));
-            return self.add_screen(event_loop, attrs, true);
+            return self.add_screen(event_loop, attrs, true, None);
         }
-        for monitor in monitors {
-            let mountain =
-                self.settings.monitors == Monitors::All || Some(&monitor) == primary.as_ref();
-            let attrs = covering(base.clone(), &monitor);
-            self.add_screen(event_loop, attrs, mountain)?;
+        for (head, monitor) in found {
+            self.open_head(event_loop, base.clone(), head, monitor.as_ref())?;
         }
         Ok(())
+    }
+
+    fn open_head(
+        &mut self,
+        event_loop: &ActiveEventLoop,
+        base: WindowAttributes,
+        head: Head,
+        monitor: Option<&MonitorHandle>,
+    ) -> Result<(), SaverError> {
+        let mountain = self.settings.monitors == Monitors::All || head.primary;
+        let attrs = covering(base, &head, monitor);
+        self.add_screen(event_loop, attrs, mountain, Some(head))
+    }
+
+    /// The monitors changed while running: windows move and resize to
+    /// their new places (a resize redraws for the new size), windows of
+    /// monitors that went close, new monitors get a window.
+    fn follow_heads(&mut self, event_loop: &ActiveEventLoop, new: &[Head]) {
+        let old: Vec<Head> = self.screens.iter().filter_map(|s| s.head).collect();
+        if self.mode != AppMode::Fullscreen || old.len() != self.screens.len() {
+            return;
+        }
+        for change in heads::plan(&old, new) {
+            match change {
+                Change::Fit(i, head) => self.fit(event_loop, i, head),
+                Change::Close(i) => drop(self.screens.remove(i)),
+                Change::Open(head) => {
+                    let base = Window::default_attributes().with_title("mountains");
+                    if let Err(e) = self.open_head(event_loop, base, head, None) {
+                        crate::log::warn(&format!("cannot cover a new monitor: {e}"));
+                    }
+                }
+            }
+        }
+    }
+
+    fn fit(&mut self, event_loop: &ActiveEventLoop, i: usize, head: Head) {
+        let screen = &mut self.screens[i];
+        screen.head = Some(head);
+        screen
+            .window
+            .set_outer_position(PhysicalPosition::new(head.x, head.y));
+        let asked = PhysicalSize::new(head.width, head.height);
+        // X11 answers with a Resized event; a platform that resizes at once
+        // says so here.
+        if let Some(size) = screen.window.request_inner_size(asked) {
+            self.resize(event_loop, i, size);
+        }
     }
 
     fn add_screen(
@@ -259,6 +321,7 @@ impl App {
         event_loop: &ActiveEventLoop,
         attrs: WindowAttributes,
         mountain: bool,
+        head: Option<Head>,
     ) -> Result<(), SaverError> {
         let window = event_loop
             .create_window(attrs)
@@ -293,6 +356,7 @@ impl App {
             presenter,
             show,
             opened_path: None,
+            head,
         });
         let i = self.screens.len() - 1;
         self.update_title(i);
@@ -425,15 +489,59 @@ impl App {
     }
 }
 
-/// Window attributes covering `monitor` exactly, above everything else.
-fn covering(base: WindowAttributes, monitor: &MonitorHandle) -> WindowAttributes {
+/// The monitors to cover, each with winit's handle where winit knows it.
+/// On X11 the server's own list wins: winit lists CRTCs only.
+fn find_heads(event_loop: &ActiveEventLoop) -> Vec<(Head, Option<MonitorHandle>)> {
+    #[cfg(unix)]
+    if let Some(found) = super::heads_x11::query() {
+        return found.into_iter().map(|h| (h, None)).collect();
+    }
+    let primary = event_loop.primary_monitor();
+    let monitors: Vec<(Head, MonitorHandle)> = event_loop
+        .available_monitors()
+        .map(|m| {
+            let (position, size) = (m.position(), m.size());
+            let head = Head {
+                x: position.x,
+                y: position.y,
+                width: size.width,
+                height: size.height,
+                primary: Some(&m) == primary.as_ref(),
+            };
+            (head, m)
+        })
+        .collect();
+    let heads: Vec<Head> = monitors.iter().map(|(h, _)| *h).collect();
+    heads::clean(&heads)
+        .into_iter()
+        .map(|h| {
+            let same = |(m, _): &&(Head, MonitorHandle)| {
+                (m.x, m.y, m.width, m.height) == (h.x, h.y, h.width, h.height)
+            };
+            (h, monitors.iter().find(same).map(|(_, m)| m.clone()))
+        })
+        .collect()
+}
+
+/// Window attributes covering `head` exactly, above everything else.
+#[cfg_attr(unix, allow(unused_variables))]
+fn covering(
+    base: WindowAttributes,
+    head: &Head,
+    monitor: Option<&MonitorHandle>,
+) -> WindowAttributes {
     let attrs = base
         .with_decorations(false)
         .with_window_level(WindowLevel::AlwaysOnTop);
     #[cfg(windows)]
-    let attrs = attrs.with_fullscreen(Some(winit::window::Fullscreen::Borderless(Some(
-        monitor.clone(),
-    ))));
+    let attrs = match monitor {
+        Some(monitor) => attrs.with_fullscreen(Some(winit::window::Fullscreen::Borderless(Some(
+            monitor.clone(),
+        )))),
+        None => attrs
+            .with_position(PhysicalPosition::new(head.x, head.y))
+            .with_inner_size(PhysicalSize::new(head.width, head.height)),
+    };
     #[cfg(unix)]
     let attrs = {
         // Works with and without a window manager: override-redirect windows
@@ -441,8 +549,8 @@ fn covering(base: WindowAttributes, monitor: &MonitorHandle) -> WindowAttributes
         use winit::platform::x11::WindowAttributesExtX11;
         attrs
             .with_override_redirect(true)
-            .with_position(monitor.position())
-            .with_inner_size(monitor.size())
+            .with_position(PhysicalPosition::new(head.x, head.y))
+            .with_inner_size(PhysicalSize::new(head.width, head.height))
     };
     attrs
 }

@@ -7,10 +7,12 @@
 //! The pure parts, unit-tested without a display: `slideshow` (pacing),
 //! `show` (one window's frame, painter and next mountain), `source` (where
 //! each slide comes from), `input` (keys and what wakes the saver),
-//! `actions` (settings steps, file names). The rest talks to the system:
-//! `present` and `bands_x11` put frames on screen, `grab_x11` keeps input
-//! from other programs, `signals` turns SIGTERM into a clean exit,
-//! `libcheck` names a missing X library before winit panics on it.
+//! `actions` (settings steps, file names), `heads` (which monitors get a
+//! window). The rest talks to the system: `heads_x11` asks the X server for
+//! its monitors and follows their changes, `present` and `bands_x11` put
+//! frames on screen, `grab_x11` keeps input from other programs, `signals`
+//! turns SIGTERM into a clean exit, `libcheck` names a missing X library
+//! before winit panics on it.
 
 pub mod actions;
 pub mod app;
@@ -22,6 +24,9 @@ pub mod embed_win32;
 pub mod embed_x11;
 #[cfg(unix)]
 pub mod grab_x11;
+pub mod heads;
+#[cfg(unix)]
+pub mod heads_x11;
 pub mod input;
 pub mod libcheck;
 pub mod present;
