@@ -21,6 +21,10 @@ pub struct Presenter<W: HasWindowHandle + HasDisplayHandle + Clone> {
     xid: Option<u32>,
     #[cfg(unix)]
     bands: Option<BandPresenter>,
+    /// ORed into every pixel softbuffer gets: 0xff000000 for a 32-bit (ARGB)
+    /// window, whose top byte is alpha (0 would be see-through under a
+    /// compositor); 0 for a 24-bit one.
+    alpha: u32,
 }
 
 /// The X11 window id behind a window handle, if it is an X11 window.
@@ -47,6 +51,7 @@ impl<W: HasWindowHandle + HasDisplayHandle + Clone> Presenter<W> {
             xid,
             #[cfg(unix)]
             bands: None,
+            alpha: 0,
         };
         match surface {
             Ok(surface) => {
@@ -84,7 +89,7 @@ impl<W: HasWindowHandle + HasDisplayHandle + Clone> Presenter<W> {
         let Some(surface) = self.surface.as_mut() else {
             return Err("nothing to present with".into());
         };
-        match present_soft(surface, frame, damage) {
+        match present_soft(surface, frame, damage, self.alpha) {
             Ok(()) => Ok(()),
             Err(e) => self.fall_back(frame, e.to_string()),
         }
@@ -92,13 +97,20 @@ impl<W: HasWindowHandle + HasDisplayHandle + Clone> Presenter<W> {
 
     /// Without MIT-SHM softbuffer sends the whole frame in one request on
     /// every present: too slow, and over the request limit for 4K frames.
+    /// The same look at the server learns the window's depth, for `alpha`.
     fn avoid_wire_transfers(&mut self) {
         #[cfg(unix)]
         if let Some(xid) = self.xid {
+            use x11rb::protocol::xproto::ConnectionExt as _;
             let Ok((conn, _)) = x11rb::rust_connection::RustConnection::connect(None) else {
                 return;
             };
-            if super::bands_x11::server_has_shm(&conn) {
+            // Sent before the MIT-SHM query, so both answers come in one round trip.
+            let geometry = conn.get_geometry(xid);
+            let has_shm = super::bands_x11::server_has_shm(&conn);
+            let depth = geometry.ok().and_then(|c| c.reply().ok()).map(|g| g.depth);
+            self.alpha = depth.map_or(0, opaque_alpha);
+            if has_shm {
                 return;
             }
             if let Ok(bands) = BandPresenter::with_connection(conn, xid) {
@@ -130,10 +142,17 @@ impl<W: HasWindowHandle + HasDisplayHandle + Clone> Presenter<W> {
     }
 }
 
+/// What to OR into pixels for a window of `depth` bits so that it is opaque.
+#[cfg_attr(not(unix), allow(dead_code))]
+fn opaque_alpha(depth: u8) -> u32 {
+    if depth == 32 { 0xff00_0000 } else { 0 }
+}
+
 fn present_soft<W: HasWindowHandle + HasDisplayHandle>(
     surface: &mut Surface<W, W>,
     frame: &Frame,
     damage: Rect,
+    alpha: u32,
 ) -> Result<(), softbuffer::SoftBufferError> {
     let (Some(w), Some(h)) = (
         NonZeroU32::new(frame.width()),
@@ -152,7 +171,7 @@ fn present_soft<W: HasWindowHandle + HasDisplayHandle>(
     if rect.is_empty() {
         return Ok(());
     }
-    copy_rect(frame, &mut buffer, rect);
+    copy_rect(frame, &mut buffer, rect, alpha);
     buffer.present_with_damage(&[softbuffer::Rect {
         x: rect.x0,
         y: rect.y0,
@@ -175,13 +194,25 @@ fn clip(damage: Rect, frame: &Frame) -> Rect {
     }
 }
 
-/// Copies the rows of `rect` from `frame` into a buffer of the same size.
-fn copy_rect(frame: &Frame, target: &mut [u32], rect: Rect) {
+/// Copies the rows of `rect` from `frame` into a buffer of the same size,
+/// ORing `alpha` into every pixel.
+fn copy_rect(frame: &Frame, target: &mut [u32], rect: Rect, alpha: u32) {
     let stride = frame.width() as usize;
     let (x0, x1) = (rect.x0 as usize, rect.x1 as usize);
     for y in rect.y0 as usize..rect.y1 as usize {
         let row = y * stride;
-        target[row + x0..row + x1].copy_from_slice(&frame.pixels()[row + x0..row + x1]);
+        let (to, from) = (
+            &mut target[row + x0..row + x1],
+            &frame.pixels()[row + x0..row + x1],
+        );
+        // The usual 24-bit window takes the plain copy (a memcpy).
+        if alpha == 0 {
+            to.copy_from_slice(from);
+        } else {
+            for (t, &p) in to.iter_mut().zip(from) {
+                *t = p | alpha;
+            }
+        }
     }
 }
 
@@ -196,17 +227,41 @@ mod tests {
             *p = i as u32 + 1;
         }
         let mut target = vec![0u32; 12];
-        copy_rect(
-            &frame,
-            &mut target,
-            Rect {
-                x0: 1,
-                y0: 1,
-                x1: 3,
-                y1: 3,
-            },
-        );
+        copy_rect(&frame, &mut target, middle_2x2(), 0);
         assert_eq!(target, vec![0, 0, 0, 0, 0, 6, 7, 0, 0, 10, 11, 0]);
+    }
+
+    fn middle_2x2() -> Rect {
+        Rect {
+            x0: 1,
+            y0: 1,
+            x1: 3,
+            y1: 3,
+        }
+    }
+
+    #[test]
+    fn copy_rect_makes_the_rectangle_opaque_for_32_bit_windows() {
+        let mut frame = Frame::new(4, 3).unwrap();
+        for (i, p) in frame.pixels_mut().iter_mut().enumerate() {
+            *p = 0x0012_3400 + i as u32;
+        }
+        let mut target = vec![7u32; 12];
+        copy_rect(&frame, &mut target, middle_2x2(), opaque_alpha(32));
+        let o = 0xff12_3400;
+        #[rustfmt::skip]
+        let expected = vec![
+            7, 7, 7, 7,
+            7, o + 5, o + 6, 7,
+            7, o + 9, o + 10, 7,
+        ];
+        assert_eq!(target, expected);
+    }
+
+    #[test]
+    fn only_32_bit_windows_get_alpha() {
+        assert_eq!(opaque_alpha(32), 0xff00_0000);
+        assert_eq!(opaque_alpha(24), 0);
     }
 
     #[test]

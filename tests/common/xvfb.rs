@@ -101,6 +101,16 @@ impl Xvfb {
 
     /// Pixels (0x00RRGGBB) of a window's `w` x `h` area at its origin.
     pub fn grab(&self, window: Window, w: u16, h: u16) -> Vec<u32> {
+        let mut pixels = self.grab_raw(window, w, h);
+        for p in &mut pixels {
+            *p &= 0x00ff_ffff;
+        }
+        pixels
+    }
+
+    /// Like `grab`, with the top byte as the server holds it (alpha on a
+    /// 32-bit window, padding on a 24-bit one).
+    pub fn grab_raw(&self, window: Window, w: u16, h: u16) -> Vec<u32> {
         let reply = self
             .conn
             .get_image(ImageFormat::Z_PIXMAP, window, 0, 0, w, h, !0)
@@ -110,8 +120,18 @@ impl Xvfb {
         reply
             .data
             .chunks_exact(4)
-            .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]) & 0x00ff_ffff)
+            .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]))
             .collect()
+    }
+
+    /// A window's depth in bits (24, or 32 for ARGB visuals).
+    pub fn depth(&self, window: Window) -> u8 {
+        self.conn
+            .get_geometry(window)
+            .unwrap()
+            .reply()
+            .unwrap()
+            .depth
     }
 
     /// The whole screen's pixels.
@@ -139,6 +159,51 @@ impl Xvfb {
                 &aux,
             )
             .unwrap();
+        self.conn.map_window(id).unwrap();
+        self.conn.flush().unwrap();
+        id
+    }
+
+    /// Like `create_window`, with a 32-bit TrueColor (ARGB) visual, as
+    /// compositing desktops give screensavers. Such a window needs its own
+    /// colormap and a border pixel, since it cannot copy the root's.
+    pub fn create_argb_window(&self, w: u16, h: u16) -> Window {
+        use x11rb::protocol::xproto::{ColormapAlloc, VisualClass};
+        let screen = &self.conn.setup().roots[0];
+        let visual = screen
+            .allowed_depths
+            .iter()
+            .filter(|d| d.depth == 32)
+            .flat_map(|d| &d.visuals)
+            .find(|v| v.class == VisualClass::TRUE_COLOR)
+            .expect("Xvfb offers a 32-bit TrueColor visual")
+            .visual_id;
+        let colormap = self.conn.generate_id().unwrap();
+        self.conn
+            .create_colormap(ColormapAlloc::NONE, colormap, self.root, visual)
+            .unwrap();
+        let id = self.conn.generate_id().unwrap();
+        let aux = CreateWindowAux::new()
+            .background_pixel(0)
+            .border_pixel(0)
+            .colormap(colormap);
+        self.conn
+            .create_window(
+                32,
+                id,
+                self.root,
+                10,
+                10,
+                w,
+                h,
+                0,
+                WindowClass::INPUT_OUTPUT,
+                visual,
+                &aux,
+            )
+            .unwrap()
+            .check()
+            .expect("create a 32-bit window");
         self.conn.map_window(id).unwrap();
         self.conn.flush().unwrap();
         id

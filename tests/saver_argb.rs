@@ -1,0 +1,66 @@
+//! The embedded modes on a 32-bit (ARGB) window, as compositing desktops and
+//! some xscreensaver setups give: the top byte of each pixel is alpha, and
+//! every pixel drawn must be opaque, or a compositor shows nothing.
+#![cfg(unix)]
+
+#[path = "common/xvfb.rs"]
+mod xvfb;
+
+use xvfb::{Saver, Xvfb, looks_drawn, poll};
+
+/// Runs `--window-id` on a fresh 320x200 ARGB window of a server started
+/// with `extra`, waits for the mountain, and checks every pixel's alpha.
+fn draws_opaque(name: &str, extra: &[&str]) {
+    let Some(x) = Xvfb::start(640, 480, extra) else {
+        return;
+    };
+    let window = x.create_argb_window(320, 200);
+    assert_eq!(x.depth(window), 32);
+    let id = format!("0x{window:x}");
+    let mut saver = Saver::start(&x, name, &["--window-id", &id], &[]);
+    let mut raw = Vec::new();
+    let took = poll(&mut saver, "a mountain in the 32-bit window", || {
+        raw = x.grab_raw(window, 320, 200);
+        let rgb: Vec<u32> = raw.iter().map(|p| p & 0x00ff_ffff).collect();
+        looks_drawn(&rgb)
+    });
+    eprintln!("{name}: drawn after {took:?}");
+    let see_through = raw.iter().filter(|&&p| p >> 24 != 0xff).count();
+    assert_eq!(
+        see_through,
+        0,
+        "{see_through} of {} pixels are not opaque (first: {:#010x})",
+        raw.len(),
+        raw.iter().find(|&&p| p >> 24 != 0xff).unwrap_or(&0)
+    );
+    saver.assert_running();
+}
+
+#[test]
+fn display_window_id_on_a_32bit_window_draws_opaque_pixels() {
+    draws_opaque("argb", &[]);
+}
+
+#[test]
+fn display_window_id_on_a_32bit_window_without_shm_draws_opaque_pixels() {
+    // No MIT-SHM: the bands path (plain PutImage) draws instead of softbuffer.
+    draws_opaque("argb-noshm", &["-extension", "MIT-SHM"]);
+}
+
+#[test]
+fn display_fullscreen_windows_are_24_bit() {
+    // We never ask winit for transparency, so it keeps the root's visual
+    // and the full-screen window needs no alpha.
+    let Some(x) = Xvfb::start(640, 480, &[]) else {
+        return;
+    };
+    let mut saver = Saver::start(&x, "fs-depth", &["/s"], &[]);
+    poll(&mut saver, "a mountain on the screen", || {
+        looks_drawn(&x.grab_screen())
+    });
+    let windows = x.mapped_windows();
+    assert!(!windows.is_empty());
+    for (window, geometry) in windows {
+        assert_eq!(x.depth(window), 24, "window {geometry:?}");
+    }
+}
