@@ -9,7 +9,8 @@
 //! each slide comes from), `input` (keys and what wakes the saver),
 //! `actions` (settings steps, file names). The rest talks to the system:
 //! `present` and `bands_x11` put frames on screen, `grab_x11` keeps input
-//! from other programs, `signals` turns SIGTERM into a clean exit,
+//! from other programs, `fullscreen_win32` refits full-screen windows
+//! after a Windows display change, `signals` turns SIGTERM into a clean exit,
 //! `libcheck` names a missing X library before winit panics on it.
 
 pub mod actions;
@@ -20,6 +21,7 @@ pub mod bands_x11;
 pub mod embed_win32;
 #[cfg(unix)]
 pub mod embed_x11;
+pub mod fullscreen_win32;
 #[cfg(unix)]
 pub mod grab_x11;
 pub mod input;
