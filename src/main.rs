@@ -1,5 +1,9 @@
 //! `mountains`: argv -> mode -> run.
 
+// A Windows GUI program: a .scr started by Windows (/s, /p, /c) must not open
+// a console window. Command-line use still prints: see `log::use_parent_console`.
+#![cfg_attr(windows, windows_subsystem = "windows")]
+
 use std::process::ExitCode;
 
 use mountains::cli::{self, Mode};
@@ -9,11 +13,18 @@ use mountains::{help, log, saver};
 
 fn main() -> ExitCode {
     saver::mark_start();
+    log::use_parent_console();
     let args: Vec<_> = std::env::args_os().skip(1).collect();
     let inv = match cli::parse(&args) {
         Ok(inv) => inv,
         Err(e) => {
             eprintln!("mountains: {e}\n\n{}", help::USAGE);
+            // Arguments Windows sent and we did not understand are invisible
+            // without a console: keep them in the log as well.
+            if cfg!(windows) {
+                gui_log();
+                log::record(&e.to_string());
+            }
             return ExitCode::from(EXIT_USAGE);
         }
     };
@@ -48,6 +59,7 @@ fn main() -> ExitCode {
         Mode::Heightmap { output } => refuse_problems(&loaded)
             .unwrap_or_else(|| commands::heightmap(&loaded.settings, open, output)),
         Mode::Settings { parent } => {
+            gui_log();
             mountains::settings_ui::run(inv.config.as_deref(), &loaded, *parent)
         }
         mode => run_saver(mode, loaded, open),
@@ -69,7 +81,7 @@ fn refuse_problems(loaded: &load::Loaded) -> Option<ExitCode> {
 /// The screensaver modes keep going on a broken file: each problem is logged
 /// (a .scr has no console) and its key keeps the default.
 fn run_saver(mode: &Mode, loaded: load::Loaded, open: Option<&std::path::Path>) -> ExitCode {
-    log::set_file(paths::data_dir().map(|d| d.join("mountains.log")));
+    gui_log();
     for p in &loaded.problems {
         log::warn(&format!("{p} (using the default)"));
     }
@@ -92,4 +104,10 @@ fn run_saver(mode: &Mode, loaded: load::Loaded, open: Option<&std::path::Path>) 
             ExitCode::FAILURE
         }
     }
+}
+
+/// The window modes have no console to print to (a .scr, xscreensaver):
+/// their messages also go to `mountains.log` in the data directory.
+fn gui_log() {
+    log::set_file(paths::data_dir().map(|d| d.join("mountains.log")));
 }

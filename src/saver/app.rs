@@ -323,12 +323,19 @@ impl App {
         mountain: bool,
         head: Option<Head>,
     ) -> Result<(), SaverError> {
+        // Before creating: the injected Alt may be read before create_window returns.
+        #[cfg(windows)]
+        if self.mode == AppMode::Fullscreen {
+            self.wake.expect_injected_alt();
+        }
         let window = event_loop
             .create_window(attrs)
             .map_err(|e| SaverError::Other(format!("cannot create a window: {e}")))?;
         let window = Rc::new(window);
         if self.mode == AppMode::Fullscreen {
             window.set_cursor_visible(false);
+            #[cfg(windows)]
+            super::fullscreen_win32::keep_covering(&window);
         }
         let size = window.inner_size();
         let size = (size.width, size.height);
@@ -400,7 +407,11 @@ impl App {
 
     fn key(&mut self, event_loop: &ActiveEventLoop, i: usize, key: &Key) {
         if self.mode == AppMode::Fullscreen {
-            event_loop.exit();
+            // Windows: raw input (`device_event`) sees every key, focused or
+            // not, and knows winit's injected Alt; this copy would not.
+            if cfg!(not(windows)) {
+                event_loop.exit();
+            }
             return;
         }
         if let Some(action) = action_for_key(key) {

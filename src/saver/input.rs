@@ -1,7 +1,7 @@
 //! What input means: window-mode keys to actions, and what ends the full-screen saver.
 
 use winit::event::{DeviceEvent, ElementState};
-use winit::keyboard::{Key, NamedKey};
+use winit::keyboard::{Key, KeyCode, NamedKey, PhysicalKey};
 
 /// Something a key asks the window mode to do.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -68,6 +68,8 @@ pub const MOTION_THRESHOLD: f64 = 10.0;
 pub struct WakeDetector {
     dx: f64,
     dy: f64,
+    /// Alt presses still to be taken as winit's own (see `expect_injected_alt`).
+    injected_alts: u32,
 }
 
 impl WakeDetector {
@@ -76,15 +78,36 @@ impl WakeDetector {
         Self::default()
     }
 
+    /// Announces that winit is about to tap Alt: on Windows, creating a
+    /// full-screen window sends a synthetic Alt press and release
+    /// (`SendInput`) to be allowed to take the foreground, and raw input
+    /// reports it like a real key. The next Alt press is then not a wake.
+    pub fn expect_injected_alt(&mut self) {
+        self.injected_alts += 1;
+    }
+
     /// Feeds one device event; true when it ends the saver.
     pub fn device_event(&mut self, event: &DeviceEvent) -> bool {
         match event {
-            DeviceEvent::Key(raw) => raw.state == ElementState::Pressed,
+            DeviceEvent::Key(raw) if raw.state == ElementState::Pressed => {
+                !self.injected_alt(raw.physical_key)
+            }
+            DeviceEvent::Key(_) => false,
             DeviceEvent::Button { state, .. } => *state == ElementState::Pressed,
             DeviceEvent::MouseWheel { .. } => true,
             DeviceEvent::MouseMotion { delta } => self.moved(delta.0, delta.1),
             _ => false,
         }
+    }
+
+    /// True (and counted) if this press is an Alt that winit injected.
+    fn injected_alt(&mut self, key: PhysicalKey) -> bool {
+        let alt = matches!(key, PhysicalKey::Code(KeyCode::AltLeft | KeyCode::AltRight));
+        if alt && self.injected_alts > 0 {
+            self.injected_alts -= 1;
+            return true;
+        }
+        false
     }
 
     /// Adds relative pointer motion; true once the net travel passes the threshold.
@@ -102,7 +125,6 @@ impl WakeDetector {
 mod tests {
     use super::*;
     use winit::event::RawKeyEvent;
-    use winit::keyboard::{KeyCode, PhysicalKey};
 
     fn ch(s: &str) -> Key {
         Key::Character(s.into())
@@ -179,6 +201,41 @@ mod tests {
         assert!(!w.device_event(&button(ElementState::Released)));
         assert!(w.device_event(&button(ElementState::Pressed)));
         assert!(!w.device_event(&DeviceEvent::Added));
+    }
+
+    fn raw_key(code: KeyCode, state: ElementState) -> DeviceEvent {
+        DeviceEvent::Key(RawKeyEvent {
+            physical_key: PhysicalKey::Code(code),
+            state,
+        })
+    }
+
+    #[test]
+    fn announced_alt_taps_do_not_wake_but_the_next_alt_does() {
+        let mut w = WakeDetector::new();
+        w.expect_injected_alt();
+        w.expect_injected_alt();
+        // Two monitors, two windows, two taps; releases use up nothing.
+        for _ in 0..2 {
+            assert!(!w.device_event(&raw_key(KeyCode::AltRight, ElementState::Pressed)));
+            assert!(!w.device_event(&raw_key(KeyCode::AltRight, ElementState::Released)));
+        }
+        assert!(w.device_event(&raw_key(KeyCode::AltLeft, ElementState::Pressed)));
+    }
+
+    #[test]
+    fn an_announced_alt_does_not_hide_other_keys() {
+        let mut w = WakeDetector::new();
+        w.expect_injected_alt();
+        assert!(w.device_event(&raw_key(KeyCode::KeyA, ElementState::Pressed)));
+        assert!(!w.device_event(&raw_key(KeyCode::AltLeft, ElementState::Pressed)));
+        assert!(w.device_event(&raw_key(KeyCode::AltLeft, ElementState::Pressed)));
+    }
+
+    #[test]
+    fn without_an_announcement_alt_wakes() {
+        let mut w = WakeDetector::new();
+        assert!(w.device_event(&raw_key(KeyCode::AltRight, ElementState::Pressed)));
     }
 
     #[test]

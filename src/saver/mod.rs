@@ -9,10 +9,11 @@
 //! each slide comes from), `input` (keys and what wakes the saver),
 //! `actions` (settings steps, file names), `heads` (which monitors get a
 //! window). The rest talks to the system: `heads_x11` asks the X server for
-//! its monitors and follows their changes, `present` and `bands_x11` put
-//! frames on screen, `grab_x11` keeps input from other programs, `signals`
-//! turns SIGTERM into a clean exit, `libcheck` names a missing X library
-//! before winit panics on it.
+//! its monitors and follows their changes, `fullscreen_win32` refits
+//! full-screen windows after a Windows display change, `present` and
+//! `bands_x11` put frames on screen, `grab_x11` keeps input from other
+//! programs, `signals` turns SIGTERM into a clean exit, `libcheck` names a
+//! missing X library before winit panics on it.
 
 pub mod actions;
 pub mod app;
@@ -22,6 +23,7 @@ pub mod bands_x11;
 pub mod embed_win32;
 #[cfg(unix)]
 pub mod embed_x11;
+pub mod fullscreen_win32;
 #[cfg(unix)]
 pub mod grab_x11;
 pub mod heads;

@@ -33,7 +33,7 @@ pub fn run(config: Option<&Path>, loaded: &load::Loaded, parent: Option<u64>) ->
     let problems = loaded.problems.clone();
     let make: window::MakeScreen =
         Box::new(move |size, scale| screen::Screen::new(settings, &problems, path, size, scale));
-    let owner = parent.or_else(default_owner);
+    let owner = parent.filter(|&h| window_exists(h));
     let _modal = ModalOwner::disable(owner);
     match window::run(make, owner) {
         Ok(()) => ExitCode::SUCCESS,
@@ -44,18 +44,22 @@ pub fn run(config: Option<&Path>, loaded: &load::Loaded, parent: Option<u64>) ->
     }
 }
 
-/// `/c` without a handle: Windows means "modal to the foreground window"
-/// (the Screen Saver Settings dialog that sent it).
+/// Whether `hwnd` names a window: a stale handle would make creating the
+/// owned window fail, so the settings then open on their own instead.
+///
+/// Without a handle (`/c`, no argument, `--settings`) there is no owner:
+/// the foreground window is not borrowed, because it is as likely the
+/// console, Explorer or the desktop as the Screen Saver dialog (which sends
+/// `/c:HWND`), and disabling it would leave it dead if we were killed.
 #[cfg(windows)]
-fn default_owner() -> Option<u64> {
-    // SAFETY: takes no arguments; returns a window handle or null.
-    let hwnd = unsafe { windows_sys::Win32::UI::WindowsAndMessaging::GetForegroundWindow() };
-    (!hwnd.is_null()).then_some(hwnd as usize as u64)
+fn window_exists(hwnd: u64) -> bool {
+    // SAFETY: IsWindow accepts any value and only reports whether it names a window.
+    unsafe { windows_sys::Win32::UI::WindowsAndMessaging::IsWindow(hwnd as usize as _) != 0 }
 }
 
 #[cfg(not(windows))]
-fn default_owner() -> Option<u64> {
-    None
+fn window_exists(_hwnd: u64) -> bool {
+    true
 }
 
 /// Makes the dialog modal: its owner takes no input while it is open, and
