@@ -137,7 +137,10 @@ impl ApplicationHandler<UserEvent> for App {
             return;
         };
         match event {
-            WindowEvent::CloseRequested | WindowEvent::Destroyed => event_loop.exit(),
+            WindowEvent::CloseRequested | WindowEvent::Destroyed => {
+                self.trace.ended_by(&event);
+                event_loop.exit()
+            }
             WindowEvent::Resized(size) => self.resize(event_loop, i, size),
             WindowEvent::RedrawRequested => self.present_all(event_loop, i),
             WindowEvent::KeyboardInput { event, .. }
@@ -148,20 +151,40 @@ impl ApplicationHandler<UserEvent> for App {
             WindowEvent::MouseInput {
                 state: ElementState::Pressed,
                 ..
-            } if self.mode == AppMode::Fullscreen => event_loop.exit(),
+            } if self.mode == AppMode::Fullscreen => {
+                self.trace.ended_by(&event);
+                event_loop.exit()
+            }
             _ => {}
         }
     }
 
     fn device_event(&mut self, event_loop: &ActiveEventLoop, _: DeviceId, event: DeviceEvent) {
+        #[cfg(windows)]
+        if let (AppMode::Fullscreen, DeviceEvent::MouseMotion { .. }) = (self.mode, &event) {
+            // winit passes absolute devices' coordinates on as deltas, and
+            // Wine sends one such motion when the window appears: the
+            // cursor's position is what counts.
+            if let Some((x, y)) = super::fullscreen_win32::cursor_position() {
+                if self.wake.moved_to(x.into(), y.into()) {
+                    self.trace.ended_by(&(x, y));
+                    event_loop.exit();
+                }
+                return;
+            }
+        }
         if self.mode == AppMode::Fullscreen && self.wake.device_event(&event) {
+            self.trace.ended_by(&event);
             event_loop.exit();
         }
     }
 
     fn user_event(&mut self, event_loop: &ActiveEventLoop, event: UserEvent) {
         match event {
-            UserEvent::Terminate => event_loop.exit(),
+            UserEvent::Terminate => {
+                self.trace.ended_by(&event);
+                event_loop.exit()
+            }
             UserEvent::Heads(heads) => self.follow_heads(event_loop, &heads),
         }
     }
@@ -410,6 +433,7 @@ impl App {
             // Windows: raw input (`device_event`) sees every key, focused or
             // not, and knows winit's injected Alt; this copy would not.
             if cfg!(not(windows)) {
+                self.trace.ended_by(key);
                 event_loop.exit();
             }
             return;

@@ -24,7 +24,7 @@ pub fn refit(window: Bounds, monitor: Bounds) -> Option<(i32, i32, i32, i32)> {
 }
 
 #[cfg(windows)]
-pub use win32::keep_covering;
+pub use win32::{cursor_position, keep_covering};
 
 #[cfg(windows)]
 mod win32 {
@@ -51,6 +51,14 @@ mod win32 {
         /// The full-screen windows to keep fitted (as HWND values), and the
         /// hidden watcher window once it exists. winit runs on this thread.
         static STATE: RefCell<(Vec<isize>, Option<isize>)> = const { RefCell::new((Vec::new(), None)) };
+    }
+
+    /// Where the mouse cursor is on the desktop, in physical pixels.
+    pub fn cursor_position() -> Option<(i32, i32)> {
+        let mut point = windows_sys::Win32::Foundation::POINT { x: 0, y: 0 };
+        // SAFETY: `point` is a valid POINT to write to.
+        let ok = unsafe { windows_sys::Win32::UI::WindowsAndMessaging::GetCursorPos(&mut point) };
+        (ok != 0).then_some((point.x, point.y))
     }
 
     /// Keeps `window` covering its monitor across display changes.

@@ -68,6 +68,8 @@ pub const MOTION_THRESHOLD: f64 = 10.0;
 pub struct WakeDetector {
     dx: f64,
     dy: f64,
+    /// The first pointer position `moved_to` saw.
+    origin: Option<(f64, f64)>,
     /// Alt presses still to be taken as winit's own (see `expect_injected_alt`).
     injected_alts: u32,
 }
@@ -108,6 +110,19 @@ impl WakeDetector {
             return true;
         }
         false
+    }
+
+    /// Takes the pointer's position on screen; true once it is further than
+    /// the threshold from the first position seen. For platforms whose
+    /// motion deltas cannot be trusted (winit on Windows reports absolute
+    /// devices' coordinates as deltas: remote desktops, virtual machines,
+    /// tablets, Wine), where the cursor's position is the truth.
+    pub fn moved_to(&mut self, x: f64, y: f64) -> bool {
+        if !x.is_finite() || !y.is_finite() {
+            return false;
+        }
+        let (x0, y0) = *self.origin.get_or_insert((x, y));
+        (x - x0).hypot(y - y0) > MOTION_THRESHOLD
     }
 
     /// Adds relative pointer motion; true once the net travel passes the threshold.
@@ -244,5 +259,19 @@ mod tests {
         assert!(!w.moved(f64::NAN, 0.0));
         assert!(!w.moved(f64::INFINITY, 0.0));
         assert!(!w.moved(1.0, 0.0));
+    }
+
+    #[test]
+    fn positions_wake_only_beyond_the_threshold_from_the_first() {
+        let mut w = WakeDetector::new();
+        // The first position is the origin, however far from 0,0 it is.
+        assert!(!w.moved_to(320.0, 240.0));
+        for _ in 0..50 {
+            assert!(!w.moved_to(323.0, 238.0));
+            assert!(!w.moved_to(317.0, 242.0));
+        }
+        assert!(!w.moved_to(330.0, 240.0));
+        assert!(w.moved_to(331.0, 240.0));
+        assert!(!WakeDetector::new().moved_to(f64::NAN, 0.0));
     }
 }

@@ -185,9 +185,11 @@ pub fn mark_start() {
     START.get_or_init(Instant::now);
 }
 
-/// With `MOUNTAINS_TRACE=1`, reports on stderr how long the first present took.
+/// With `MOUNTAINS_TRACE=1`, reports on stderr how long the first present
+/// took and what ended the saver (to tell a real wake from a spurious one).
 #[derive(Debug, Clone, Copy)]
 pub struct Trace {
+    on: bool,
     start: Option<Instant>,
 }
 
@@ -196,7 +198,15 @@ impl Trace {
     pub fn from_env() -> Self {
         let on = std::env::var("MOUNTAINS_TRACE").is_ok_and(|v| v == "1");
         Trace {
+            on,
             start: on.then(|| *START.get_or_init(Instant::now)),
+        }
+    }
+
+    /// Reports what ended the saver.
+    pub fn ended_by(&self, why: &dyn fmt::Debug) {
+        if self.on {
+            eprintln!("mountains: trace: ended by {why:?}");
         }
     }
 
