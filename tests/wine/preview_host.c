@@ -6,10 +6,12 @@
  *
  * Makes a top-level window titled "preview-host" with a 152x112 black
  * client area (the dialog's little monitor), starts `SAVER.EXE /p <HWND>`
- * with that window's handle in decimal, as Windows does, pumps messages for
- * SECONDS, destroys the window, then waits up to 10 s for the saver to end.
- * Prints on stdout, one fact a line:
+ * with that window's handle in decimal, as Windows does, pumps messages
+ * until the saver's child window shows up in it (up to 10 s) and then for
+ * SECONDS more, destroys the window, then waits up to 10 s for the saver to
+ * end. Prints on stdout, one fact a line:
  *   hwnd=<decimal>
+ *   child_after_ms=<ms from the start>   (or: no_child)
  *   destroyed
  *   exit_code=<code> ended_after_ms=<ms since the destroy>
  * or, instead of the last two, `ended_early exit_code=<code>` (the saver was
@@ -24,6 +26,7 @@
 #define CLIENT_W 152
 #define CLIENT_H 112
 #define END_WAIT_MS 10000
+#define CHILD_WAIT_MS 10000
 
 static LRESULT CALLBACK host_proc(HWND w, UINT msg, WPARAM wp, LPARAM lp) {
     return DefWindowProcW(w, msg, wp, lp);
@@ -59,17 +62,22 @@ static HANDLE start_saver(const char *saver, HWND w) {
     return pi.hProcess;
 }
 
-/* Dispatches this thread's messages until `ms` have passed. */
-static void pump(DWORD ms) {
+/* Dispatches this thread's messages until `ms` have passed, or until `w`
+ * has a child window if `w` is not NULL; TRUE if it has one. */
+static BOOL pump(DWORD ms, HWND w) {
     ULONGLONG end = GetTickCount64() + ms;
     for (ULONGLONG now; (now = GetTickCount64()) < end;) {
-        MsgWaitForMultipleObjects(0, NULL, FALSE, (DWORD)(end - now), QS_ALLINPUT);
+        if (w && GetWindow(w, GW_CHILD)) return TRUE;
+        /* Wake at least every 20 ms to look for the child. */
+        DWORD wait = (DWORD)(end - now) < 20 ? (DWORD)(end - now) : 20;
+        MsgWaitForMultipleObjects(0, NULL, FALSE, w ? wait : (DWORD)(end - now), QS_ALLINPUT);
         MSG msg;
         while (PeekMessageW(&msg, NULL, 0, 0, PM_REMOVE)) {
             TranslateMessage(&msg);
             DispatchMessageW(&msg);
         }
     }
+    return w && GetWindow(w, GW_CHILD);
 }
 
 int main(int argc, char **argv) {
@@ -89,7 +97,13 @@ int main(int argc, char **argv) {
         fprintf(stderr, "preview_host: cannot start %s (error %lu)\n", argv[1], GetLastError());
         return 2;
     }
-    pump((DWORD)(atof(argv[2]) * 1000));
+    ULONGLONG started = GetTickCount64();
+    if (pump(CHILD_WAIT_MS, w))
+        printf("child_after_ms=%llu\n", GetTickCount64() - started);
+    else
+        printf("no_child\n");
+    fflush(stdout);
+    pump((DWORD)(atof(argv[2]) * 1000), NULL);
     DWORD code = 0;
     if (WaitForSingleObject(saver, 0) == WAIT_OBJECT_0) {
         /* A preview must live as long as its window: ending before is a failure. */
