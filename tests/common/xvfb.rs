@@ -392,12 +392,42 @@ impl Saver {
     /// Runs `mountains ARGS` on `xvfb` with a private home (no user config,
     /// logs and saves in a temp dir), quick pacing (overridable), and `env` added.
     pub fn start(xvfb: &Xvfb, name: &str, args: &[&str], env: &[(&str, &str)]) -> Saver {
+        // The pacing comes before the test's own arguments, so that a test can override it.
+        let mut all = vec!["--set", "draw_seconds=0.5", "--set", "pause_seconds=1"];
+        all.extend_from_slice(args);
+        let program = Path::new(env!("CARGO_BIN_EXE_mountains"));
+        Saver::spawn(xvfb, name, program, &all, env, false)
+    }
+
+    /// Runs another `program ARGS` (Wine, say) on `xvfb` the same way, with
+    /// the same private home, but no arguments added and its stdout kept
+    /// (see `stdout`).
+    pub fn start_program(
+        xvfb: &Xvfb,
+        name: &str,
+        program: &Path,
+        args: &[&str],
+        env: &[(&str, &str)],
+    ) -> Saver {
+        Saver::spawn(xvfb, name, program, args, env, true)
+    }
+
+    fn spawn(
+        xvfb: &Xvfb,
+        name: &str,
+        program: &Path,
+        args: &[&str],
+        env: &[(&str, &str)],
+        keep_stdout: bool,
+    ) -> Saver {
         let home = TempDir::new(name);
         let stderr = home.0.join("stderr.txt");
-        let mut command = Command::new(env!("CARGO_BIN_EXE_mountains"));
+        let stdout = match keep_stdout {
+            true => Stdio::from(std::fs::File::create(home.0.join("stdout.txt")).unwrap()),
+            false => Stdio::null(),
+        };
+        let mut command = Command::new(program);
         command
-            // Before the test's own arguments, so that a test can override them.
-            .args(["--set", "draw_seconds=0.5", "--set", "pause_seconds=1"])
             .args(args)
             .env("DISPLAY", xvfb.display())
             .env("HOME", &home.0)
@@ -405,12 +435,14 @@ impl Saver {
             .env("XDG_DATA_HOME", home.0.join("data"))
             .env_remove("XSCREENSAVER_WINDOW")
             .stdin(Stdio::null())
-            .stdout(Stdio::null())
+            .stdout(stdout)
             .stderr(std::fs::File::create(&stderr).unwrap());
         for (k, v) in env {
             command.env(k, v);
         }
-        let child = command.spawn().expect("start mountains");
+        let child = command
+            .spawn()
+            .unwrap_or_else(|e| panic!("start {}: {e}", program.display()));
         Saver {
             child: Some(child),
             stderr,
@@ -422,6 +454,11 @@ impl Saver {
     /// Where it saves data sets and screenshots (`$XDG_DATA_HOME/mountains`).
     pub fn data_dir(&self) -> PathBuf {
         self._home.0.join("data").join("mountains")
+    }
+
+    /// What it wrote on stdout so far (empty unless started with `start_program`).
+    pub fn stdout(&self) -> String {
+        std::fs::read_to_string(self._home.0.join("stdout.txt")).unwrap_or_default()
     }
 
     /// What it wrote on stderr so far.

@@ -1,0 +1,180 @@
+//! End-to-end tests of the Windows build under Wine on a private Xvfb: the
+//! screensaver paths `/s` and `/p <HWND>`, which run nowhere else here. Wine
+//! implements Win32 over X11, so the test looks at the screen and types as
+//! in tests/saver_display.rs. They need the cross-built exe (see
+//! `wine::CROSS_BUILD`), Wine and mingw; without them they skip, unless
+//! `MOUNTAINS_REQUIRE_WINE=1`. Times are printed, not asserted.
+#![cfg(unix)]
+
+#[path = "common/wine.rs"]
+mod wine;
+#[path = "common/xvfb.rs"]
+mod xvfb;
+
+use std::time::{Duration, Instant};
+
+use wine::Session;
+use xvfb::{PATIENCE, Saver, Xvfb, looks_drawn, poll};
+
+/// Runs `PROGRAM.exe ARGS` from the test bin folder under Wine on `x`.
+fn start(session: &Session, x: &Xvfb, name: &str, program: &str, args: &[&str]) -> Saver {
+    let wine = session.wine;
+    let exe = wine.program(program);
+    let mut all = vec![exe.as_str()];
+    all.extend_from_slice(args);
+    let env = wine.env();
+    let env: Vec<(&str, &str)> = env.iter().map(|(k, v)| (*k, v.as_str())).collect();
+    Saver::start_program(x, name, &wine.loader, &all, &env)
+}
+
+/// Starts `/s` on a fresh 640x480 screen and waits until the mountain shows.
+fn fullscreen(name: &str) -> Option<(Session, Xvfb, Saver)> {
+    let session = Session::begin()?;
+    let x = Xvfb::start(640, 480, &[])?;
+    assert!(
+        !looks_drawn(&x.grab_screen()),
+        "the empty screen looks drawn"
+    );
+    let args = [
+        "/s",
+        "--set",
+        "draw_seconds=0.5",
+        "--set",
+        "pause_seconds=1",
+    ];
+    let mut saver = start(&session, &x, name, "mountains.exe", &args);
+    let took = poll(&mut saver, "a mountain on the screen", || {
+        looks_drawn(&x.grab_screen())
+    });
+    eprintln!("{name}: mountain on screen {took:?} after Wine started");
+    Some((session, x, saver))
+}
+
+fn expect_exit(saver: &mut Saver, what: &str) {
+    let asked = Instant::now();
+    let status = saver.wait(PATIENCE);
+    let status = status.unwrap_or_else(|| panic!("{what} did not end the saver"));
+    let trace = saver.stderr();
+    eprintln!("{what}: ended after {:?} with {status}", asked.elapsed());
+    eprintln!("{what}: {}", trace.trim());
+    assert!(status.success(), "{what}: {status}\n{trace}");
+    assert!(trace.contains("ended by"), "{what}: no trace:\n{trace}");
+}
+
+#[test]
+fn display_wine_fullscreen_covers_the_screen_with_a_mountain() {
+    let Some((_session, x, mut saver)) = fullscreen("wine-fs-cover") else {
+        return;
+    };
+    let windows = x.mapped_windows();
+    let covering = windows
+        .iter()
+        .any(|(_, g)| *g == (0, 0, x.size.0, x.size.1));
+    assert!(covering, "no window covers the screen: {windows:?}");
+    // Still there a moment later: it keeps running until told otherwise.
+    std::thread::sleep(Duration::from_millis(500));
+    saver.assert_running();
+    assert!(looks_drawn(&x.grab_screen()), "the mountain went away");
+}
+
+#[test]
+fn display_wine_fullscreen_ends_on_a_key() {
+    let Some((_session, x, mut saver)) = fullscreen("wine-fs-key") else {
+        return;
+    };
+    x.key(38);
+    expect_exit(&mut saver, "a key");
+}
+
+#[test]
+fn display_wine_fullscreen_ends_on_a_click() {
+    let Some((_session, x, mut saver)) = fullscreen("wine-fs-click") else {
+        return;
+    };
+    x.click(1);
+    expect_exit(&mut saver, "a click");
+}
+
+#[test]
+fn display_wine_fullscreen_ends_on_a_20px_move() {
+    let Some((_session, x, mut saver)) = fullscreen("wine-fs-move") else {
+        return;
+    };
+    x.move_by(20, 0);
+    expect_exit(&mut saver, "a 20 px move");
+}
+
+#[test]
+fn display_wine_fullscreen_ignores_a_3px_jitter() {
+    let Some((_session, x, mut saver)) = fullscreen("wine-fs-jitter") else {
+        return;
+    };
+    for _ in 0..5 {
+        x.move_by(3, 0);
+        std::thread::sleep(Duration::from_millis(50));
+        x.move_by(-3, 0);
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    std::thread::sleep(Duration::from_millis(700));
+    saver.assert_running();
+}
+
+/// The host's client area, as tests/wine/preview_host.c makes it.
+const HOST_SIZE: (u16, u16) = (152, 112);
+/// How long the host keeps its window once the saver's child is in it.
+const HOST_SECONDS: u64 = 2;
+
+// Not tested here: that the mountain shows in the host's window. Wine 8.0
+// does not show GDI drawing of a child window whose parent belongs to another
+// process: a minimal C child (`CreateWindow(WS_CHILD)` of the host's HWND,
+// FillRect in WM_PAINT and through GetDC) leaves the host's window showing
+// only its own background, just as mountains.exe /p does, while the saver
+// reports frames presented. On Windows that is how every preview works.
+
+#[test]
+fn display_wine_preview_runs_in_the_host_window_and_ends_with_it() {
+    let Some(session) = Session::begin() else {
+        return;
+    };
+    let Some(x) = Xvfb::start(640, 480, &[]) else {
+        return;
+    };
+    let saver_path = session.wine.windows_path("mountains.exe");
+    let seconds = HOST_SECONDS.to_string();
+    let args = [saver_path.as_str(), seconds.as_str()];
+    let mut host = start(&session, &x, "wine-preview", "preview_host.exe", &args);
+    let took = poll(&mut host, "the preview-host window", || {
+        x.mapped_windows()
+            .into_iter()
+            .any(|(w, g)| (g.2, g.3) == HOST_SIZE && x.title(w) == "preview-host")
+    });
+    eprintln!("preview: host window {took:?} after Wine started the host");
+    expect_host_end(&mut host);
+}
+
+/// Waits for the host to destroy its window and report on the saver.
+fn expect_host_end(host: &mut Saver) {
+    // The host waits up to 10 s for the child, then up to 10 s for the end.
+    let limit = Duration::from_secs(HOST_SECONDS) + PATIENCE * 3;
+    let status = host.wait(limit);
+    // The host writes Windows line ends.
+    let (out, err) = (host.stdout().replace("\r\n", "\n"), host.stderr());
+    eprintln!("preview host: {status:?}\n{}\n{}", out.trim(), err.trim());
+    let status = status.unwrap_or_else(|| panic!("the preview host did not end:\n{out}"));
+    assert!(
+        status.success(),
+        "the saver did not end with the window ({status}):\n{out}\n{err}"
+    );
+    // The saver's window became the host's child (as Windows' preview does).
+    assert!(out.contains("child_after_ms="), "host said:\n{out}\n{err}");
+    assert!(
+        out.contains("destroyed\nexit_code=0 "),
+        "host said:\n{out}\n{err}"
+    );
+    // It drew (as far as it can tell) and ended because the window went.
+    assert!(
+        err.contains("first frame presented"),
+        "the saver said:\n{err}"
+    );
+    assert!(err.contains("ended by Destroyed"), "the saver said:\n{err}");
+}
