@@ -154,8 +154,9 @@ fn display_wine_preview_runs_in_the_host_window_and_ends_with_it() {
 
 /// Waits for the host to destroy its window and report on the saver.
 fn expect_host_end(host: &mut Saver) {
-    // The host waits up to 10 s for the child, then up to 10 s for the end.
-    let limit = Duration::from_secs(HOST_SECONDS) + PATIENCE * 3;
+    // The host waits up to 10 s each for the child, its size, the resize
+    // and the end.
+    let limit = Duration::from_secs(HOST_SECONDS) + PATIENCE * 5;
     let status = host.wait(limit);
     // The host writes Windows line ends.
     let (out, err) = (host.stdout().replace("\r\n", "\n"), host.stderr());
@@ -165,8 +166,17 @@ fn expect_host_end(host: &mut Saver) {
         status.success(),
         "the saver did not end with the window ({status}):\n{out}\n{err}"
     );
-    // The saver's window became the host's child (as Windows' preview does).
+    // The saver's window became the host's child (as Windows' preview does),
+    // filling its client area, and followed it when it was resized.
     assert!(out.contains("child_after_ms="), "host said:\n{out}\n{err}");
+    assert!(
+        out.contains("child_size=152x112 "),
+        "the preview does not fill the host:\n{out}"
+    );
+    assert!(
+        out.contains("resized_child=200x150 "),
+        "the preview did not follow the host's new size:\n{out}"
+    );
     assert!(
         out.contains("destroyed\nexit_code=0 "),
         "host said:\n{out}\n{err}"

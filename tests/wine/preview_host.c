@@ -8,10 +8,14 @@
  * client area (the dialog's little monitor), starts `SAVER.EXE /p <HWND>`
  * with that window's handle in decimal, as Windows does, pumps messages
  * until the saver's child window shows up in it (up to 10 s) and then for
- * SECONDS more, destroys the window, then waits up to 10 s for the saver to
- * end. Prints on stdout, one fact a line:
+ * SECONDS more, half-way resizing its window to 200x150 and waiting (up to
+ * 10 s) for the child to follow, destroys the window, then waits up to 10 s
+ * for the saver to end. Prints on stdout, one fact a line:
  *   hwnd=<decimal>
  *   child_after_ms=<ms from the start>   (or: no_child)
+ *   child_size=<w>x<h> after_ms=<ms>     (the child's client area, once it
+ *                                         fills the host, or after 10 s)
+ *   resized_child=<w>x<h> after_ms=<ms since the resize>
  *   destroyed
  *   exit_code=<code> ended_after_ms=<ms since the destroy>
  * or, instead of the last two, `ended_early exit_code=<code>` (the saver was
@@ -25,6 +29,9 @@
 
 #define CLIENT_W 152
 #define CLIENT_H 112
+#define RESIZED_W 200
+#define RESIZED_H 150
+#define FOLLOW_WAIT_MS 10000
 #define END_WAIT_MS 10000
 #define CHILD_WAIT_MS 10000
 
@@ -80,6 +87,30 @@ static BOOL pump(DWORD ms, HWND w) {
     return w && GetWindow(w, GW_CHILD);
 }
 
+/* The client size of `w`'s first child; FALSE if it has none. */
+static BOOL child_size(HWND w, LONG *cw, LONG *ch) {
+    HWND c = GetWindow(w, GW_CHILD);
+    RECT r;
+    if (!c || !GetClientRect(c, &r)) return FALSE;
+    *cw = r.right - r.left;
+    *ch = r.bottom - r.top;
+    return TRUE;
+}
+
+/* Waits (up to FOLLOW_WAIT_MS) for `w`'s child to have a `tw` x `th`
+ * client area; prints `label=<w>x<h> after_ms=<ms>` with what it had last. */
+static void wait_child_size(HWND w, LONG tw, LONG th, const char *label) {
+    ULONGLONG since = GetTickCount64();
+    LONG cw = 0, ch = 0;
+    while (GetTickCount64() - since < FOLLOW_WAIT_MS) {
+        if (child_size(w, &cw, &ch) && cw == tw && ch == th) break;
+        pump(20, NULL);
+    }
+    child_size(w, &cw, &ch);
+    printf("%s=%ldx%ld after_ms=%llu\n", label, cw, ch, GetTickCount64() - since);
+    fflush(stdout);
+}
+
 int main(int argc, char **argv) {
     if (argc != 3) {
         fprintf(stderr, "usage: preview_host SAVER.EXE SECONDS\n");
@@ -102,8 +133,13 @@ int main(int argc, char **argv) {
         printf("child_after_ms=%llu\n", GetTickCount64() - started);
     else
         printf("no_child\n");
-    fflush(stdout);
-    pump((DWORD)(atof(argv[2]) * 1000), NULL);
+    wait_child_size(w, CLIENT_W, CLIENT_H, "child_size");
+    DWORD half = (DWORD)(atof(argv[2]) * 500);
+    pump(half, NULL);
+    /* As a user resizing the dialog would; the child must follow. */
+    SetWindowPos(w, NULL, 0, 0, RESIZED_W, RESIZED_H, SWP_NOMOVE | SWP_NOZORDER | SWP_NOACTIVATE);
+    wait_child_size(w, RESIZED_W, RESIZED_H, "resized_child");
+    pump(half, NULL);
     DWORD code = 0;
     if (WaitForSingleObject(saver, 0) == WAIT_OBJECT_0) {
         /* A preview must live as long as its window: ending before is a failure. */
