@@ -18,19 +18,20 @@ fn output_and_crtc(conn: &RustConnection, root: Window) -> (u32, u32, u32) {
     (res.outputs[0], res.crtcs[0], res.config_timestamp)
 }
 
+/// The name (an atom) of the `i`th monitor `set_monitors` defines.
+fn monitor_name(conn: &RustConnection, i: usize) -> u32 {
+    let name = format!("test-monitor-{i}");
+    let atom = conn.intern_atom(false, name.as_bytes()).unwrap();
+    atom.reply().unwrap().atom
+}
+
 /// Splits the screen into monitors at `rects` (x, y, w, h), like
 /// `xrandr --setmonitor`: the first takes over the output's own monitor,
 /// the others have no output. None of them is marked primary.
 pub fn set_monitors(conn: &RustConnection, root: Window, rects: &[(i16, i16, u16, u16)]) {
     let (output, _, _) = output_and_crtc(conn, root);
     for (i, &(x, y, width, height)) in rects.iter().enumerate() {
-        let name = format!("test-monitor-{i}");
-        let atom = conn
-            .intern_atom(false, name.as_bytes())
-            .unwrap()
-            .reply()
-            .unwrap()
-            .atom;
+        let atom = monitor_name(conn, i);
         let info = MonitorInfo {
             name: atom,
             primary: false,
@@ -146,13 +147,7 @@ fn find_or_add_mode(
 /// from the `first`th on.
 pub fn delete_monitors(conn: &RustConnection, root: Window, first: usize, count: usize) {
     for i in first..first + count {
-        let name = format!("test-monitor-{i}");
-        let atom = conn
-            .intern_atom(false, name.as_bytes())
-            .unwrap()
-            .reply()
-            .unwrap()
-            .atom;
+        let atom = monitor_name(conn, i);
         conn.randr_delete_monitor(root, atom).unwrap();
     }
     conn.sync().unwrap();
