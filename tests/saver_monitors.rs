@@ -40,7 +40,7 @@ const RIGHT: Geometry = (640, 0, 640, 480);
 /// A 1280x480 screen split into two 640x480 monitors side by side.
 fn two_monitors() -> Option<Xvfb> {
     let x = Xvfb::start(1280, 480, &[])?;
-    randr::set_monitors(&x.conn, x.root, &[LEFT, RIGHT]);
+    randr::set_monitors(&x.conn, x.root, &[LEFT, RIGHT], None);
     Some(x)
 }
 
@@ -84,6 +84,27 @@ fn display_fullscreen_primary_only_leaves_the_other_monitor_black() {
 }
 
 #[test]
+fn display_fullscreen_primary_only_follows_the_primary_flag() {
+    let Some(x) = Xvfb::start(1280, 480, &[]) else {
+        return;
+    };
+    randr::set_monitors(&x.conn, x.root, &[LEFT, RIGHT], Some(1));
+    let args = ["/s", "--set", "monitors=primary"];
+    let mut saver = Saver::start(&x, "mon-primary-right", &args, &[]);
+    poll(
+        &mut saver,
+        "a mountain on the primary (right) monitor",
+        || looks_drawn(&grab_rect(&x, RIGHT)),
+    );
+    assert_eq!(windows_at(&x), vec![LEFT, RIGHT], "one window per monitor");
+    assert!(
+        grab_rect(&x, LEFT).iter().all(|&p| p == 0),
+        "the monitor that is not primary is not black"
+    );
+    saver.assert_running();
+}
+
+#[test]
 fn display_fullscreen_follows_a_resolution_change() {
     let Some(x) = Xvfb::start(1280, 480, &[]) else {
         return;
@@ -122,7 +143,7 @@ fn display_fullscreen_opens_and_closes_windows_as_monitors_come_and_go() {
     let mut saver = Saver::start(&x, "mon-plug", &["/s"], &[]);
     let wide = (0, 0, 1280, 480);
     poll(&mut saver, "one window", || windows_at(&x) == vec![wide]);
-    randr::set_monitors(&x.conn, x.root, &[LEFT, RIGHT]);
+    randr::set_monitors(&x.conn, x.root, &[LEFT, RIGHT], None);
     randr::announce_change(&x.conn, x.root);
     poll(&mut saver, "a window per monitor", || {
         windows_at(&x) == vec![LEFT, RIGHT]
@@ -136,5 +157,9 @@ fn display_fullscreen_opens_and_closes_windows_as_monitors_come_and_go() {
     poll(&mut saver, "the second window to close", || {
         windows_at(&x) == vec![LEFT]
     });
-    saver.assert_running();
+    // The input grab survived the windows coming and going: a key ends it.
+    x.key(38);
+    let status = saver.wait(xvfb::PATIENCE);
+    let status = status.unwrap_or_else(|| panic!("a key did not end the saver"));
+    assert!(status.success(), "{status}\n{}", saver.stderr());
 }

@@ -142,6 +142,19 @@ impl ApplicationHandler<UserEvent> for App {
                 event_loop.exit()
             }
             WindowEvent::Resized(size) => self.resize(event_loop, i, size),
+            // winit scales a window it thinks moved to a monitor of another
+            // scale (after RandR or Xft.dpi changes); a full-screen window
+            // keeps covering its monitor exactly.
+            #[cfg(unix)]
+            WindowEvent::ScaleFactorChanged {
+                mut inner_size_writer,
+                ..
+            } => {
+                if let Some(h) = self.screens[i].head {
+                    let size = PhysicalSize::new(h.width, h.height);
+                    let _ = inner_size_writer.request_inner_size(size);
+                }
+            }
             WindowEvent::RedrawRequested => self.present_all(event_loop, i),
             WindowEvent::KeyboardInput { event, .. }
                 if event.state == ElementState::Pressed && !event.repeat =>
@@ -165,6 +178,9 @@ impl ApplicationHandler<UserEvent> for App {
             // winit passes absolute devices' coordinates on as deltas, and
             // Wine sends one such motion when the window appears: the
             // cursor's position is what counts.
+            if super::fullscreen_win32::take_display_change() {
+                self.wake.reset_origin();
+            }
             if let Some((x, y)) = super::fullscreen_win32::cursor_position() {
                 if self.wake.moved_to(x.into(), y.into()) {
                     self.trace.ended_by(&(x, y));
@@ -347,8 +363,9 @@ impl App {
         head: Option<Head>,
     ) -> Result<(), SaverError> {
         // Before creating: the injected Alt may be read before create_window returns.
+        // winit taps Alt for every window created full screen (Windows).
         #[cfg(windows)]
-        if self.mode == AppMode::Fullscreen {
+        if attrs.fullscreen.is_some() {
             self.wake.expect_injected_alt();
         }
         let window = event_loop
@@ -430,9 +447,12 @@ impl App {
 
     fn key(&mut self, event_loop: &ActiveEventLoop, i: usize, key: &Key) {
         if self.mode == AppMode::Fullscreen {
-            // Windows: raw input (`device_event`) sees every key, focused or
-            // not, and knows winit's injected Alt; this copy would not.
-            if cfg!(not(windows)) {
+            // Windows: raw input (`device_event`) sees every key and knows
+            // winit's injected Alt; here an Alt could be that tap, so only
+            // the other keys end it (in case raw input is not working).
+            let maybe_injected =
+                cfg!(windows) && *key == Key::Named(winit::keyboard::NamedKey::Alt);
+            if !maybe_injected {
                 self.trace.ended_by(key);
                 event_loop.exit();
             }
@@ -512,6 +532,7 @@ impl App {
     fn follow_parent(&mut self, event_loop: &ActiveEventLoop, parent: u64) {
         use super::embed_win32::{parent_alive, parent_client_size};
         if !parent_alive(parent) {
+            self.trace.ended_by(&"the parent window is gone");
             event_loop.exit();
             return;
         }

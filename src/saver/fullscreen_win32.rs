@@ -23,17 +23,29 @@ pub fn refit(window: Bounds, monitor: Bounds) -> Option<(i32, i32, i32, i32)> {
     Some((left, top, right - left, bottom - top))
 }
 
+/// The rectangle of the monitor named `device` among `monitors` (device
+/// name, bounds), else `nearest`: a window keeps its own monitor even when a
+/// layout change makes it overlap another one more.
+pub fn own_monitor<D: PartialEq>(device: &D, monitors: &[(D, Bounds)], nearest: Bounds) -> Bounds {
+    monitors
+        .iter()
+        .find(|(d, _)| d == device)
+        .map_or(nearest, |(_, b)| *b)
+}
+
 #[cfg(windows)]
-pub use win32::{cursor_position, keep_covering};
+pub use win32::{cursor_position, keep_covering, take_display_change};
 
 #[cfg(windows)]
 mod win32 {
     use std::cell::RefCell;
 
     use raw_window_handle::{HasWindowHandle, RawWindowHandle};
+    use windows_sys::Win32::Foundation::BOOL;
     use windows_sys::Win32::Foundation::{HWND, LPARAM, LRESULT, RECT, WPARAM};
     use windows_sys::Win32::Graphics::Gdi::{
-        GetMonitorInfoW, MONITOR_DEFAULTTONEAREST, MONITORINFO, MonitorFromWindow,
+        EnumDisplayMonitors, GetMonitorInfoW, HDC, HMONITOR, MONITOR_DEFAULTTONEAREST, MONITORINFO,
+        MONITORINFOEXW, MonitorFromWindow,
     };
     use windows_sys::Win32::System::LibraryLoader::GetModuleHandleW;
     use windows_sys::Win32::UI::WindowsAndMessaging::{
@@ -43,14 +55,31 @@ mod win32 {
     };
     use winit::window::Window;
 
+    use super::Bounds;
+
     /// The second refit, after the display settles (DPI change, taskbar).
     const SETTLE_MS: u32 = 500;
     const SETTLE_TIMER: usize = 1;
 
+    /// A monitor's device name (`\\.\DISPLAY1`), which stays the same
+    /// when its place or resolution changes.
+    type Device = [u16; 32];
+
+    /// The windows to keep fitted (HWND values) with their monitors, and
+    /// the hidden watcher window once it exists.
+    type State = (Vec<(isize, Device)>, Option<isize>);
+
     thread_local! {
-        /// The full-screen windows to keep fitted (as HWND values), and the
-        /// hidden watcher window once it exists. winit runs on this thread.
-        static STATE: RefCell<(Vec<isize>, Option<isize>)> = const { RefCell::new((Vec::new(), None)) };
+        /// winit runs on this thread, and so does the watcher's window procedure.
+        static STATE: RefCell<State> = const { RefCell::new((Vec::new(), None)) };
+        /// Set by WM_DISPLAYCHANGE, cleared by `take_display_change`.
+        static CHANGED: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+    }
+
+    /// True (once) if the display changed since the last call: the cursor
+    /// may have been moved by Windows, so its old position means nothing.
+    pub fn take_display_change() -> bool {
+        CHANGED.replace(false)
     }
 
     /// Where the mouse cursor is on the desktop, in physical pixels.
@@ -69,8 +98,12 @@ mod win32 {
         let RawWindowHandle::Win32(h) = handle.as_raw() else {
             return;
         };
+        let hwnd = h.hwnd.get();
+        let Some((device, _)) = monitor_of(hwnd as HWND) else {
+            return;
+        };
         STATE.with_borrow_mut(|(windows, watcher)| {
-            windows.push(h.hwnd.get());
+            windows.push((hwnd, device));
             if watcher.is_none() {
                 *watcher = create_watcher();
             }
@@ -113,6 +146,7 @@ mod win32 {
     unsafe extern "system" fn watch(hwnd: HWND, msg: u32, wp: WPARAM, lp: LPARAM) -> LRESULT {
         match msg {
             WM_DISPLAYCHANGE => {
+                CHANGED.set(true);
                 refit_all();
                 // SAFETY: a timer on our own window; it reports as WM_TIMER.
                 unsafe { SetTimer(hwnd, SETTLE_TIMER, SETTLE_MS, None) };
@@ -131,38 +165,77 @@ mod win32 {
 
     fn refit_all() {
         let windows = STATE.with_borrow(|(windows, _)| windows.clone());
-        for hwnd in windows {
-            fit(hwnd as HWND);
+        let monitors = all_monitors();
+        for (hwnd, device) in windows {
+            fit(hwnd as HWND, &device, &monitors);
         }
     }
 
-    /// Moves one window onto the whole of the monitor it is (mostly) on.
-    fn fit(hwnd: HWND) {
-        let zero = RECT {
+    fn bounds(r: RECT) -> Bounds {
+        (r.left, r.top, r.right, r.bottom)
+    }
+
+    /// The device name and bounds of a monitor.
+    fn describe(monitor: HMONITOR) -> Option<(Device, Bounds)> {
+        // SAFETY: an all-zero MONITORINFOEXW is valid; cbSize says which
+        // variant GetMonitorInfoW fills; a bad handle makes it fail.
+        unsafe {
+            let mut info: MONITORINFOEXW = std::mem::zeroed();
+            info.monitorInfo.cbSize = size_of::<MONITORINFOEXW>() as u32;
+            let ok = GetMonitorInfoW(
+                monitor,
+                &mut info as *mut MONITORINFOEXW as *mut MONITORINFO,
+            );
+            (ok != 0).then(|| (info.szDevice, bounds(info.monitorInfo.rcMonitor)))
+        }
+    }
+
+    /// The monitor a window is (mostly) on.
+    fn monitor_of(hwnd: HWND) -> Option<(Device, Bounds)> {
+        // SAFETY: MonitorFromWindow takes any handle and falls back to the nearest.
+        describe(unsafe { MonitorFromWindow(hwnd, MONITOR_DEFAULTTONEAREST) })
+    }
+
+    /// Every monitor now.
+    fn all_monitors() -> Vec<(Device, Bounds)> {
+        unsafe extern "system" fn add(m: HMONITOR, _: HDC, _: *mut RECT, list: LPARAM) -> BOOL {
+            // SAFETY: `list` is the Vec passed below, alive for the call.
+            let list = unsafe { &mut *(list as *mut Vec<(Device, Bounds)>) };
+            list.extend(describe(m));
+            1
+        }
+        let mut list: Vec<(Device, Bounds)> = Vec::new();
+        // SAFETY: the callback only runs during this call, while `list` lives.
+        unsafe {
+            EnumDisplayMonitors(
+                std::ptr::null_mut(),
+                std::ptr::null(),
+                Some(add),
+                &mut list as *mut Vec<(Device, Bounds)> as LPARAM,
+            )
+        };
+        list
+    }
+
+    /// Moves one window onto the whole of the monitor it covered.
+    fn fit(hwnd: HWND, device: &Device, monitors: &[(Device, Bounds)]) {
+        let mut window = RECT {
             left: 0,
             top: 0,
             right: 0,
             bottom: 0,
         };
-        let mut window = zero;
-        let mut info = MONITORINFO {
-            cbSize: size_of::<MONITORINFO>() as u32,
-            rcMonitor: zero,
-            rcWork: zero,
-            dwFlags: 0,
+        // SAFETY: a valid out-pointer; a window that is gone makes it fail.
+        if unsafe { GetWindowRect(hwnd, &mut window) } == 0 {
+            return;
+        }
+        let Some((_, nearest)) = monitor_of(hwnd) else {
+            return;
         };
-        // SAFETY: valid out-pointers; a window that is gone makes the calls
-        // fail, and then nothing is moved.
-        unsafe {
-            if GetWindowRect(hwnd, &mut window) == 0 {
-                return;
-            }
-            let monitor = MonitorFromWindow(hwnd, MONITOR_DEFAULTTONEAREST);
-            if GetMonitorInfoW(monitor, &mut info) == 0 {
-                return;
-            }
-            let bounds = |r: RECT| (r.left, r.top, r.right, r.bottom);
-            if let Some((x, y, w, h)) = super::refit(bounds(window), bounds(info.rcMonitor)) {
+        let monitor = super::own_monitor(device, monitors, nearest);
+        if let Some((x, y, w, h)) = super::refit(bounds(window), monitor) {
+            // SAFETY: moving our own window; no pointers.
+            unsafe {
                 SetWindowPos(
                     hwnd,
                     std::ptr::null_mut(),
@@ -171,8 +244,8 @@ mod win32 {
                     w,
                     h,
                     SWP_NOZORDER | SWP_NOACTIVATE,
-                );
-            }
+                )
+            };
         }
     }
 }
@@ -200,5 +273,20 @@ mod tests {
         let window = (0, 0, 1280, 1024);
         let monitor = (0, -1024, 1280, 0);
         assert_eq!(refit(window, monitor), Some((0, -1024, 1280, 1024)));
+    }
+
+    #[test]
+    fn a_window_keeps_its_own_monitor_when_the_layout_moves() {
+        // The primary shrank from 3840 to 1920 wide, so the second monitor
+        // moved from x=3840 to x=1920: its window follows it by name.
+        let monitors = [("one", (0, 0, 1920, 1080)), ("two", (1920, 0, 3840, 1080))];
+        let nearest = (0, 0, 1920, 1080);
+        assert_eq!(
+            own_monitor(&"two", &monitors, nearest),
+            (1920, 0, 3840, 1080)
+        );
+        assert_eq!(own_monitor(&"one", &monitors, nearest), (0, 0, 1920, 1080));
+        // A monitor that went: the nearest one.
+        assert_eq!(own_monitor(&"three", &monitors, nearest), nearest);
     }
 }

@@ -95,23 +95,47 @@ pub enum Change {
     Open(Head),
 }
 
-/// Turns the windows covering `old` into windows covering `new`: window i
-/// moves to head i, extra windows close (from the last, so indices stay
-/// valid), new heads get new windows. An empty `new` (a moment between two
-/// configurations) changes nothing.
+/// Turns the windows covering `old` into windows covering `new`, moving as
+/// few as it can: window 0 (it holds the input grab) always takes `new[0]`,
+/// the primary; another window whose monitor is still in the same place
+/// stays as it is (its mountain goes on); the rest move to the remaining
+/// heads; windows left over close (from the last, so indices stay valid)
+/// and heads left over get new windows. An empty `new` (a moment between
+/// two configurations) changes nothing.
 pub fn plan(old: &[Head], new: &[Head]) -> Vec<Change> {
-    if new.is_empty() {
-        return Vec::new();
+    let (Some(first), Some(_)) = (new.first(), old.first()) else {
+        return new.iter().map(|h| Change::Open(*h)).collect();
+    };
+    let mut taken = vec![false; old.len()];
+    taken[0] = true;
+    let mut changes = Vec::new();
+    if !old[0].same_place(first) {
+        changes.push(Change::Fit(0, *first));
     }
-    let mut changes: Vec<Change> = old
-        .iter()
-        .zip(new)
-        .enumerate()
-        .filter(|(_, (o, n))| !o.same_place(n))
-        .map(|(i, (_, n))| Change::Fit(i, *n))
-        .collect();
-    changes.extend((new.len()..old.len()).rev().map(Change::Close));
-    changes.extend(new.iter().skip(old.len()).map(|h| Change::Open(*h)));
+    let mut unplaced = Vec::new();
+    for head in &new[1..] {
+        let stays = (1..old.len()).find(|&j| !taken[j] && old[j].same_place(head));
+        match stays {
+            Some(j) => taken[j] = true,
+            None => unplaced.push(*head),
+        }
+    }
+    for head in unplaced {
+        match (1..old.len()).find(|&j| !taken[j]) {
+            Some(j) => {
+                taken[j] = true;
+                changes.push(Change::Fit(j, head));
+            }
+            None => changes.push(Change::Open(head)),
+        }
+    }
+    let closes = (1..old.len())
+        .rev()
+        .filter(|&j| !taken[j])
+        .map(Change::Close);
+    let opens_at = changes.iter().position(|c| matches!(c, Change::Open(_)));
+    let at = opens_at.unwrap_or(changes.len());
+    changes.splice(at..at, closes);
     changes
 }
 
@@ -213,5 +237,32 @@ mod tests {
             vec![Change::Open(b), Change::Open(c)]
         );
         assert_eq!(plan(&[a, b], &[]), vec![]);
+    }
+
+    #[test]
+    fn plan_leaves_windows_of_unchanged_monitors_alone() {
+        let (a, b, c) = (
+            head(0, 0, 800, 600),
+            head(800, 0, 800, 600),
+            head(1600, 0, 800, 600),
+        );
+        // The middle monitor goes: only its window closes.
+        assert_eq!(plan(&[a, b, c], &[a, c]), vec![Change::Close(1)]);
+        // A monitor comes back in the middle: a new window, the others stay.
+        assert_eq!(plan(&[a, c], &[a, b, c]), vec![Change::Open(b)]);
+        // The primary moves to the right monitor: window 0 (the grab) follows
+        // it, the window that covered it moves to the left one.
+        let (pa, pc) = (primary(a), primary(c));
+        assert_eq!(
+            plan(&[pa, c], &[pc, a]),
+            vec![Change::Fit(0, pc), Change::Fit(1, a)]
+        );
+        // Windows left over close before new ones open.
+        let d = head(0, 600, 800, 600);
+        assert_eq!(
+            plan(&[a, b, c], &[a, d]),
+            vec![Change::Fit(1, d), Change::Close(2)]
+        );
+        assert_eq!(plan(&[], &[a]), vec![Change::Open(a)]);
     }
 }

@@ -2,6 +2,11 @@
 //! monitors and Xinerama heads. winit 0.30 lists CRTCs only, which misses
 //! user-defined monitors (`xrandr --setmonitor`), tiled displays and
 //! Xinerama-only servers, and it never tells when they change.
+//!
+//! Changes are followed through RandR's screen, CRTC and output events (a
+//! mode change, a monitor plugged in or out). The server sends none when a
+//! monitor is only defined or deleted (`--setmonitor`, `--delmonitor`): that
+//! shows at the next such event, or the next start.
 
 use std::time::Duration;
 

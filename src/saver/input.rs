@@ -125,6 +125,12 @@ impl WakeDetector {
         (x - x0).hypot(y - y0) > MOTION_THRESHOLD
     }
 
+    /// Forgets the first position: the display changed and the system may
+    /// have moved the cursor itself; the next position is the new origin.
+    pub fn reset_origin(&mut self) {
+        self.origin = None;
+    }
+
     /// Adds relative pointer motion; true once the net travel passes the threshold.
     pub fn moved(&mut self, dx: f64, dy: f64) -> bool {
         if !dx.is_finite() || !dy.is_finite() {
@@ -272,6 +278,11 @@ mod tests {
         }
         assert!(!w.moved_to(330.0, 240.0));
         assert!(w.moved_to(331.0, 240.0));
+        // After a display change the cursor may sit elsewhere: a new origin.
+        w.reset_origin();
+        assert!(!w.moved_to(960.0, 540.0));
+        assert!(!w.moved_to(965.0, 540.0));
+        assert!(w.moved_to(971.0, 540.0));
         assert!(!WakeDetector::new().moved_to(f64::NAN, 0.0));
     }
 }

@@ -27,14 +27,19 @@ fn monitor_name(conn: &RustConnection, i: usize) -> u32 {
 
 /// Splits the screen into monitors at `rects` (x, y, w, h), like
 /// `xrandr --setmonitor`: the first takes over the output's own monitor,
-/// the others have no output. None of them is marked primary.
-pub fn set_monitors(conn: &RustConnection, root: Window, rects: &[(i16, i16, u16, u16)]) {
+/// the others have no output. The `primary`th, if any, is marked primary.
+pub fn set_monitors(
+    conn: &RustConnection,
+    root: Window,
+    rects: &[(i16, i16, u16, u16)],
+    primary: Option<usize>,
+) {
     let (output, _, _) = output_and_crtc(conn, root);
     for (i, &(x, y, width, height)) in rects.iter().enumerate() {
         let atom = monitor_name(conn, i);
         let info = MonitorInfo {
             name: atom,
-            primary: false,
+            primary: primary == Some(i),
             automatic: false,
             x,
             y,

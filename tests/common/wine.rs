@@ -109,7 +109,13 @@ fn set_up() -> Option<Wine> {
             exe.display()
         ));
     }
-    assert_fresh(&exe);
+    if let Some(newer) = newer_source(&exe) {
+        return skip(&format!(
+            "{} is older than {} (it would test old code): run `{CROSS_BUILD}`",
+            exe.display(),
+            newer.display()
+        ));
+    }
     let wine = Wine {
         loader,
         server,
@@ -151,18 +157,20 @@ fn skip<T>(why: &str) -> Option<T> {
     None
 }
 
-/// Fails when the exe is older than the code: it would test old code.
-fn assert_fresh(exe: &Path) {
+/// A source file newer than the exe, if any: everything that goes into it
+/// (src/, config/ through include_str!, Cargo.toml, Cargo.lock).
+fn newer_source(exe: &Path) -> Option<PathBuf> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut newest = (SystemTime::UNIX_EPOCH, root.join("Cargo.toml"));
-    newest.0 = modified(&newest.1);
+    for file in ["Cargo.toml", "Cargo.lock"] {
+        let path = root.join(file);
+        if modified(&path) > newest.0 {
+            newest = (modified(&path), path);
+        }
+    }
     newest_under(&root.join("src"), &mut newest);
-    assert!(
-        modified(exe) >= newest.0,
-        "{} is older than {}: rebuild it with `{CROSS_BUILD}`",
-        exe.display(),
-        newest.1.display()
-    );
+    newest_under(&root.join("config"), &mut newest);
+    (modified(exe) < newest.0).then_some(newest.1)
 }
 
 fn modified(path: &Path) -> SystemTime {
@@ -171,7 +179,7 @@ fn modified(path: &Path) -> SystemTime {
 }
 
 fn newest_under(dir: &Path, newest: &mut (SystemTime, PathBuf)) {
-    for entry in std::fs::read_dir(dir).expect("read src/") {
+    for entry in std::fs::read_dir(dir).unwrap_or_else(|e| panic!("{}: {e}", dir.display())) {
         let path = entry.expect("dir entry").path();
         if path.is_dir() {
             newest_under(&path, newest);
