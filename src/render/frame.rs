@@ -14,6 +14,26 @@ pub struct Rect {
 }
 
 impl Rect {
+    /// The `w` x `h` rectangle whose top left corner is (`x0`, `y0`).
+    pub fn sized(x0: u32, y0: u32, w: u32, h: u32) -> Rect {
+        Rect {
+            x0,
+            y0,
+            x1: x0 + w,
+            y1: y0 + h,
+        }
+    }
+
+    /// The part of `self` inside `other` (empty if they do not meet).
+    pub fn intersect(&self, other: &Rect) -> Rect {
+        Rect {
+            x0: self.x0.max(other.x0),
+            y0: self.y0.max(other.y0),
+            x1: self.x1.min(other.x1),
+            y1: self.y1.min(other.y1),
+        }
+    }
+
     /// True when the rectangle covers no pixel.
     pub fn is_empty(&self) -> bool {
         self.x0 >= self.x1 || self.y0 >= self.y1
@@ -95,5 +115,36 @@ impl Frame {
     /// Fills every pixel with one colour.
     pub fn clear(&mut self, color: u32) {
         self.pixels.fill(color);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sized_rectangles_end_past_their_last_pixel() {
+        assert_eq!(
+            Rect::sized(2, 3, 4, 5),
+            Rect {
+                x0: 2,
+                y0: 3,
+                x1: 6,
+                y1: 8
+            }
+        );
+        assert!(Rect::sized(7, 7, 0, 9).is_empty());
+    }
+
+    #[test]
+    fn intersect_keeps_the_common_part_or_nothing() {
+        let a = Rect::sized(0, 0, 10, 10);
+        assert_eq!(
+            a.intersect(&Rect::sized(5, 2, 20, 3)),
+            Rect::sized(5, 2, 5, 3)
+        );
+        assert_eq!(a.intersect(&a), a);
+        assert!(a.intersect(&Rect::sized(20, 0, 5, 5)).is_empty());
+        assert!(a.intersect(&Rect::sized(0, 10, 5, 5)).is_empty());
     }
 }

@@ -132,13 +132,9 @@ impl BandPresenter {
 
 /// `damage` limited to the frame and to X's 16-bit coordinates.
 fn clip(damage: Rect, frame: &Frame) -> Rect {
-    let limit = |v: u32, max: u32| v.min(max).min(i16::MAX as u32);
-    Rect {
-        x0: limit(damage.x0, frame.width()),
-        y0: limit(damage.y0, frame.height()),
-        x1: limit(damage.x1, frame.width()),
-        y1: limit(damage.y1, frame.height()),
-    }
+    let x_max = i16::MAX as u32;
+    let x_space = Rect::sized(0, 0, x_max, x_max);
+    damage.intersect(&frame.bounds()).intersect(&x_space)
 }
 
 #[cfg(test)]

@@ -166,7 +166,7 @@ fn present_soft<W: HasWindowHandle + HasDisplayHandle>(
     let rect = if buffer.age() == 0 {
         frame.bounds()
     } else {
-        clip(damage, frame)
+        damage.intersect(&frame.bounds())
     };
     if rect.is_empty() {
         return Ok(());
@@ -183,15 +183,6 @@ fn present_soft<W: HasWindowHandle + HasDisplayHandle>(
     // nobody else flushes (a foreign window's), the last frame before a hold
     // would stay unsent for the whole hold. Waiting here sends it now.
     surface.buffer_mut().map(drop)
-}
-
-fn clip(damage: Rect, frame: &Frame) -> Rect {
-    Rect {
-        x0: damage.x0.min(frame.width()),
-        y0: damage.y0.min(frame.height()),
-        x1: damage.x1.min(frame.width()),
-        y1: damage.y1.min(frame.height()),
-    }
 }
 
 /// Copies the rows of `rect` from `frame` into a buffer of the same size,
@@ -267,15 +258,13 @@ mod tests {
     #[test]
     fn damage_is_clipped_to_the_frame() {
         let frame = Frame::new(4, 3).unwrap();
-        let r = clip(
-            Rect {
-                x0: 2,
-                y0: 1,
-                x1: 9,
-                y1: 9,
-            },
-            &frame,
-        );
+        let damage = Rect {
+            x0: 2,
+            y0: 1,
+            x1: 9,
+            y1: 9,
+        };
+        let r = damage.intersect(&frame.bounds());
         assert_eq!(
             r,
             Rect {

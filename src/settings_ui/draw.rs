@@ -43,7 +43,7 @@ pub fn draw(frame: &mut Frame, layout: &Layout, model: &Model, extras: &Extras<'
         text(frame, layout, x, *y + layout.px(4), title, SELECT);
         let w = layout.px(font::text_width(title));
         let line_y = *y + layout.px(15);
-        fill(frame, rect(x, line_y, w, layout.px(1)), SELECT);
+        fill(frame, Rect::sized(x, line_y, w, layout.px(1)), SELECT);
     }
     for i in 0..KEYS.len() {
         draw_row(frame, layout, model, i);
@@ -54,27 +54,17 @@ pub fn draw(frame: &mut Frame, layout: &Layout, model: &Model, extras: &Extras<'
     }
 }
 
-fn rect(x0: u32, y0: u32, w: u32, h: u32) -> Rect {
-    Rect {
-        x0,
-        y0,
-        x1: x0 + w,
-        y1: y0 + h,
-    }
-}
-
 /// Fills `r`, clipped to the frame.
 pub fn fill(frame: &mut Frame, r: Rect, color: u32) {
-    let (w, h) = (frame.width(), frame.height());
-    let (x0, x1) = (r.x0.min(w), r.x1.min(w));
-    let (y0, y1) = (r.y0.min(h), r.y1.min(h));
-    if x0 >= x1 {
+    let r = r.intersect(&frame.bounds());
+    if r.is_empty() {
         return;
     }
+    let w = frame.width();
     let px = frame.pixels_mut();
-    for y in y0..y1 {
+    for y in r.y0..r.y1 {
         let row = (y * w) as usize;
-        px[row + x0 as usize..row + x1 as usize].fill(color);
+        px[row + r.x0 as usize..row + r.x1 as usize].fill(color);
     }
 }
 
@@ -89,7 +79,7 @@ pub fn text(frame: &mut Frame, layout: &Layout, x: u32, y: u32, s: &str, color: 
         for (row, bits) in font::glyph(c).iter().enumerate() {
             for col in 0..GLYPH_W {
                 if bits & (1 << (GLYPH_W - 1 - col)) != 0 {
-                    let r = rect(gx + col * k, y + row as u32 * k, k, k);
+                    let r = Rect::sized(gx + col * k, y + row as u32 * k, k, k);
                     fill(frame, r, color);
                 }
             }
@@ -114,17 +104,17 @@ fn bevel(frame: &mut Frame, layout: &Layout, r: Rect, sunken: bool) {
     } else {
         (LIGHT, DARK)
     };
-    fill(frame, rect(r.x0, r.y0, r.x1 - r.x0, t), tl);
-    fill(frame, rect(r.x0, r.y0, t, r.y1 - r.y0), tl);
-    fill(frame, rect(r.x0, r.y1 - t, r.x1 - r.x0, t), br);
-    fill(frame, rect(r.x1 - t, r.y0, t, r.y1 - r.y0), br);
+    fill(frame, Rect::sized(r.x0, r.y0, r.x1 - r.x0, t), tl);
+    fill(frame, Rect::sized(r.x0, r.y0, t, r.y1 - r.y0), tl);
+    fill(frame, Rect::sized(r.x0, r.y1 - t, r.x1 - r.x0, t), br);
+    fill(frame, Rect::sized(r.x1 - t, r.y0, t, r.y1 - r.y0), br);
 }
 
 fn outline(frame: &mut Frame, r: Rect, t: u32, color: u32) {
-    fill(frame, rect(r.x0, r.y0, r.x1 - r.x0, t), color);
-    fill(frame, rect(r.x0, r.y1 - t, r.x1 - r.x0, t), color);
-    fill(frame, rect(r.x0, r.y0, t, r.y1 - r.y0), color);
-    fill(frame, rect(r.x1 - t, r.y0, t, r.y1 - r.y0), color);
+    fill(frame, Rect::sized(r.x0, r.y0, r.x1 - r.x0, t), color);
+    fill(frame, Rect::sized(r.x0, r.y1 - t, r.x1 - r.x0, t), color);
+    fill(frame, Rect::sized(r.x0, r.y0, t, r.y1 - r.y0), color);
+    fill(frame, Rect::sized(r.x1 - t, r.y0, t, r.y1 - r.y0), color);
 }
 
 /// Centres in logical pixels, so a 200% screen is exactly the 100% one doubled.
@@ -166,14 +156,14 @@ fn draw_button(
 fn dotted(frame: &mut Frame, r: Rect, k: u32) {
     let mut x = r.x0;
     while x + k <= r.x1 {
-        fill(frame, rect(x, r.y0, k, k), DARK);
-        fill(frame, rect(x, r.y1 - k, k, k), DARK);
+        fill(frame, Rect::sized(x, r.y0, k, k), DARK);
+        fill(frame, Rect::sized(x, r.y1 - k, k, k), DARK);
         x += 2 * k;
     }
     let mut y = r.y0;
     while y + k <= r.y1 {
-        fill(frame, rect(r.x0, y, k, k), DARK);
-        fill(frame, rect(r.x1 - k, y, k, k), DARK);
+        fill(frame, Rect::sized(r.x0, y, k, k), DARK);
+        fill(frame, Rect::sized(r.x1 - k, y, k, k), DARK);
         y += 2 * k;
     }
 }
@@ -233,7 +223,7 @@ fn draw_row(frame: &mut Frame, layout: &Layout, model: &Model, i: usize) {
     if focused {
         fill(
             frame,
-            rect(
+            Rect::sized(
                 r.x0,
                 r.y0 + layout.px(1),
                 label_right - r.x0,
@@ -309,7 +299,7 @@ fn draw_slider(frame: &mut Frame, layout: &Layout, model: &Model, i: usize, edit
     let f = values::fraction(key, v);
     let travel = (t1 - t0) / layout.scale - 8;
     let x = t0 + layout.px((travel as f64 * f).round() as u32);
-    let thumb = rect(x, y + layout.px(2), layout.px(8), layout.px(ROW_H - 4));
+    let thumb = Rect::sized(x, y + layout.px(2), layout.px(8), layout.px(ROW_H - 4));
     fill(frame, thumb, FACE);
     bevel(frame, layout, thumb, false);
     let vx = layout.panel_x + layout.px(VALUE_X);
@@ -329,7 +319,7 @@ fn draw_slider(frame: &mut Frame, layout: &Layout, model: &Model, i: usize, edit
 
 /// A white field with typed text and a caret.
 fn typed_text(frame: &mut Frame, layout: &Layout, x: u32, y: u32, w: u32, t: &str) {
-    let r = rect(x - layout.px(2), y + layout.px(1), w, layout.px(ROW_H - 2));
+    let r = Rect::sized(x - layout.px(2), y + layout.px(1), w, layout.px(ROW_H - 2));
     fill(frame, r, FIELD);
     bevel(frame, layout, r, true);
     let chars = ((w / layout.scale).saturating_sub(10) / ADVANCE) as usize;
@@ -340,7 +330,7 @@ fn typed_text(frame: &mut Frame, layout: &Layout, x: u32, y: u32, w: u32, t: &st
     let cx = x + layout.px(font::text_width(&shown)) + layout.px(1);
     fill(
         frame,
-        rect(cx, ty - layout.px(1), layout.px(1), layout.px(GLYPH_H)),
+        Rect::sized(cx, ty - layout.px(1), layout.px(1), layout.px(GLYPH_H)),
         TEXT,
     );
 }
@@ -348,7 +338,7 @@ fn typed_text(frame: &mut Frame, layout: &Layout, x: u32, y: u32, w: u32, t: &st
 fn draw_check(frame: &mut Frame, layout: &Layout, model: &Model, i: usize) {
     let y = layout.row(i).y0;
     let x = layout.panel_x + layout.px(CTRL_X);
-    let boxr = rect(x, y + layout.px(3), layout.px(12), layout.px(12));
+    let boxr = Rect::sized(x, y + layout.px(3), layout.px(12), layout.px(12));
     fill(frame, boxr, FIELD);
     bevel(frame, layout, boxr, true);
     let on = keys::get(&model.settings, &KEYS[i]) == Value::Bool(true);
@@ -364,7 +354,11 @@ fn tick(frame: &mut Frame, layout: &Layout, x: u32, y: u32) {
     let k = layout.scale;
     let cols: [u32; 7] = [2, 3, 4, 3, 2, 1, 0];
     for (c, top) in cols.iter().enumerate() {
-        fill(frame, rect(x + c as u32 * k, y + top * k, k, 2 * k), TEXT);
+        fill(
+            frame,
+            Rect::sized(x + c as u32 * k, y + top * k, k, 2 * k),
+            TEXT,
+        );
     }
 }
 
@@ -400,7 +394,7 @@ fn draw_field(
     match editing {
         Some(t) => typed_text(frame, layout, x, y, w, t),
         None => {
-            let r = rect(x - layout.px(2), y + layout.px(2), w, layout.px(ROW_H - 4));
+            let r = Rect::sized(x - layout.px(2), y + layout.px(2), w, layout.px(ROW_H - 4));
             fill(frame, r, FIELD);
             bevel(frame, layout, r, true);
             let chars = ((right - CTRL_X - 8) / ADVANCE) as usize;

@@ -158,15 +158,6 @@ pub fn whole_scale(scale_factor: f64, monitor: Option<(u32, u32)>) -> u32 {
     s
 }
 
-fn rect(x0: u32, y0: u32, w: u32, h: u32) -> Rect {
-    Rect {
-        x0,
-        y0,
-        x1: x0 + w,
-        y1: y0 + h,
-    }
-}
-
 impl Layout {
     /// Plans a `width` x `height` frame at whole `scale`. A frame smaller
     /// than the window asks for keeps the panel's size and shrinks the preview.
@@ -193,7 +184,7 @@ impl Layout {
             .iter()
             .enumerate()
         {
-            let r = rect(MARGIN + i as u32 * (TOOL_W + 6), MARGIN, TOOL_W, BUTTON_H);
+            let r = Rect::sized(MARGIN + i as u32 * (TOOL_W + 6), MARGIN, TOOL_W, BUTTON_H);
             buttons.push((*b, r));
         }
         let bottom = [
@@ -204,10 +195,10 @@ impl Layout {
         ];
         for (i, b) in bottom.iter().enumerate() {
             let x = panel + PANEL_W - (4 - i as u32) * (BUTTON_W + 6) + 6;
-            buttons.push((*b, rect(x, by, BUTTON_W, BUTTON_H)));
+            buttons.push((*b, Rect::sized(x, by, BUTTON_W, BUTTON_H)));
         }
         let top = MARGIN + BUTTON_H + 6;
-        let preview = rect(MARGIN, top, panel - 2 * MARGIN, h_log - top - MARGIN);
+        let preview = Rect::sized(MARGIN, top, panel - 2 * MARGIN, h_log - top - MARGIN);
         let scaled = |r: Rect| Rect {
             x0: r.x0 * s,
             y0: r.y0 * s,
