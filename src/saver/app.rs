@@ -81,20 +81,18 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
     })
     .map_err(|e| SaverError::Other(format!("cannot watch for SIGTERM: {e}")))?;
     #[cfg(unix)]
-    if mode == AppMode::Fullscreen {
-        let proxy = event_loop.create_proxy();
-        let watched = super::heads_x11::watch(move |heads| {
-            let _ = proxy.send_event(UserEvent::Heads(heads));
-        });
-        if let Err(e) = watched {
-            crate::log::warn(&format!("monitor changes will not be followed: {e}"));
-        }
-    }
+    let server_heads = match mode {
+        AppMode::Fullscreen => watch_heads(&event_loop),
+        _ => Vec::new(),
+    };
+    #[cfg(not(unix))]
+    let server_heads = Vec::new();
     let mut app = App {
         mode,
         settings,
         opened,
         screens: Vec::new(),
+        server_heads,
         wake: WakeDetector::new(),
         error: None,
         trace: Trace::from_env(),
@@ -108,11 +106,28 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
     app.error.map_or(Ok(()), Err)
 }
 
+/// X11 full screen: the server's monitors at start and, from then on,
+/// `UserEvent::Heads` whenever they change. Without RandR: Xinerama's list,
+/// not followed.
+#[cfg(unix)]
+fn watch_heads(event_loop: &EventLoop<UserEvent>) -> Vec<Head> {
+    let proxy = event_loop.create_proxy();
+    let watched = super::heads_x11::watch(move |heads| {
+        let _ = proxy.send_event(UserEvent::Heads(heads));
+    });
+    watched.unwrap_or_else(|e| {
+        crate::log::warn(&format!("monitor changes will not be followed: {e}"));
+        super::heads_x11::query().unwrap_or_default()
+    })
+}
+
 struct App {
     mode: AppMode,
     settings: Settings,
     opened: Option<Mountain>,
     screens: Vec<Screen>,
+    /// The monitors the X server listed at start (empty: ask winit).
+    server_heads: Vec<Head>,
     wake: WakeDetector,
     error: Option<SaverError>,
     trace: Trace,
@@ -294,7 +309,7 @@ impl App {
         event_loop: &ActiveEventLoop,
         base: WindowAttributes,
     ) -> Result<(), SaverError> {
-        let found = find_heads(event_loop);
+        let found = find_heads(event_loop, &self.server_heads);
         if found.is_empty() {
             let attrs = base
                 .with_decorations(false)
@@ -546,11 +561,10 @@ impl App {
 }
 
 /// The monitors to cover, each with winit's handle where winit knows it.
-/// On X11 the server's own list wins: winit lists CRTCs only.
-fn find_heads(event_loop: &ActiveEventLoop) -> Vec<(Head, Option<MonitorHandle>)> {
-    #[cfg(unix)]
-    if let Some(found) = super::heads_x11::query() {
-        return found.into_iter().map(|h| (h, None)).collect();
+/// The X server's own list (`server`) wins: winit lists CRTCs only.
+fn find_heads(event_loop: &ActiveEventLoop, server: &[Head]) -> Vec<(Head, Option<MonitorHandle>)> {
+    if !server.is_empty() {
+        return server.iter().map(|h| (*h, None)).collect();
     }
     let primary = event_loop.primary_monitor();
     let monitors: Vec<(Head, MonitorHandle)> = event_loop

@@ -91,11 +91,12 @@ fn xinerama_heads(conn: &RustConnection) -> Vec<Head> {
         .collect()
 }
 
-/// Calls `tell` with the heads now, and again after every RandR change
-/// that alters them (a resolution change, a monitor plugged in or out),
-/// from a thread of its own with its own connection. Without RandR on the
-/// server nothing is watched.
-pub fn watch(tell: impl Fn(Vec<Head>) + Send + 'static) -> Result<(), String> {
+/// The heads now, read on the connection that then watches for RandR
+/// changes from a thread of its own: after every change that alters them (a
+/// resolution change, a monitor plugged in or out) `tell` gets the new list.
+/// Listening starts before the first read, so no change falls between.
+/// Without RandR on the server: an error, and nothing is watched.
+pub fn watch(tell: impl Fn(Vec<Head>) + Send + 'static) -> Result<Vec<Head>, String> {
     let (conn, screen) = RustConnection::connect(None).map_err(|e| e.to_string())?;
     let root = conn.setup().roots[screen].root;
     let selected = conn
@@ -108,16 +109,16 @@ pub fn watch(tell: impl Fn(Vec<Head>) + Send + 'static) -> Result<(), String> {
                 .map_err(|e| e.to_string())
         });
     selected.and_then(|_| conn.flush().map_err(|e| e.to_string()))?;
+    let heads = query_on(&conn, screen);
+    let last = heads.clone();
     std::thread::Builder::new()
         .name("mountains-heads".into())
-        .spawn(move || follow(&conn, screen, tell))
-        .map(drop)
-        .map_err(|e| e.to_string())
+        .spawn(move || follow(&conn, screen, last, tell))
+        .map_err(|e| e.to_string())?;
+    Ok(heads)
 }
 
-fn follow(conn: &RustConnection, screen: usize, tell: impl Fn(Vec<Head>)) {
-    let mut last = query_on(conn, screen);
-    tell(last.clone());
+fn follow(conn: &RustConnection, screen: usize, mut last: Vec<Head>, tell: impl Fn(Vec<Head>)) {
     while let Ok(event) = conn.wait_for_event() {
         if !is_randr(&event) {
             continue;
