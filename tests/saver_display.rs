@@ -7,7 +7,7 @@ mod xvfb;
 
 use std::time::{Duration, Instant};
 
-use xvfb::{PATIENCE, Saver, TempDir, Xvfb, arg, looks_drawn, poll, varied};
+use xvfb::{PATIENCE, Saver, TempDir, Xvfb, arg, looks_drawn, poll, varied, wait_for_window};
 
 /// Starts `/s` on a fresh 640x480 screen and waits until the mountain shows.
 fn fullscreen(name: &str) -> Option<(Xvfb, Saver)> {
@@ -106,15 +106,7 @@ fn display_preview_opens_a_small_window() {
         return;
     };
     let mut saver = Saver::start(&x, "preview", &["/p"], &[]);
-    let mut found = None;
-    poll(&mut saver, "a 320x240 window", || {
-        found = x
-            .mapped_windows()
-            .into_iter()
-            .find(|(_, g)| (g.2, g.3) == (320, 240));
-        found.is_some()
-    });
-    let (window, _) = found.unwrap();
+    let window = wait_for_window(&x, &mut saver, 320, 240);
     let took = poll(&mut saver, "a mountain in the preview", || {
         looks_drawn(&x.grab(window, 320, 240))
     });
@@ -237,15 +229,7 @@ fn display_window_keys_start_a_new_mountain_save_a_screenshot_open_and_quit() {
         return;
     };
     let mut saver = Saver::start(&x, "window-keys", &["--window"], &[]);
-    let mut found = None;
-    poll(&mut saver, "the 960x600 window", || {
-        found = x
-            .mapped_windows()
-            .into_iter()
-            .find(|(_, g)| (g.2, g.3) == (960, 600));
-        found.is_some()
-    });
-    let (window, _) = found.unwrap();
+    let window = wait_for_window(&x, &mut saver, 960, 600);
     poll(&mut saver, "a mountain in the window", || {
         looks_drawn(&x.grab(window, 960, 600))
     });
@@ -347,15 +331,7 @@ fn display_window_without_auto_redraw_holds_until_n() {
     };
     let args = ["--window", "--set", "auto_redraw=false"];
     let mut saver = Saver::start(&x, "no-auto", &args, &[]);
-    let mut found = None;
-    poll(&mut saver, "the window", || {
-        found = x
-            .mapped_windows()
-            .into_iter()
-            .find(|(_, g)| (g.2, g.3) == (960, 600));
-        found.is_some()
-    });
-    let (window, _) = found.unwrap();
+    let window = wait_for_window(&x, &mut saver, 960, 600);
     poll(&mut saver, "a mountain", || {
         looks_drawn(&x.grab(window, 960, 600))
     });

@@ -546,6 +546,19 @@ pub fn poll(saver: &mut Saver, what: &str, mut check: impl FnMut() -> bool) -> D
     );
 }
 
+/// Waits until the saver has a mapped `w` x `h` window; returns it.
+pub fn wait_for_window(x: &Xvfb, saver: &mut Saver, w: u16, h: u16) -> Window {
+    let mut found = None;
+    poll(saver, &format!("a {w}x{h} window"), || {
+        found = x
+            .mapped_windows()
+            .into_iter()
+            .find(|(_, g)| (g.2, g.3) == (w, h));
+        found.is_some()
+    });
+    found.expect("polled until found").0
+}
+
 /// Path of a file in a directory, as &str for arguments.
 pub fn arg(path: &Path) -> &str {
     path.to_str().expect("utf-8 temp path")
