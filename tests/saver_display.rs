@@ -7,7 +7,9 @@ mod xvfb;
 
 use std::time::{Duration, Instant};
 
-use xvfb::{PATIENCE, Saver, TempDir, Xvfb, arg, looks_drawn, poll, varied, wait_for_window};
+use xvfb::{
+    PATIENCE, Saver, TempDir, Xvfb, arg, expect_exit, looks_drawn, poll, varied, wait_for_window,
+};
 
 /// Starts `/s` on a fresh 640x480 screen and waits until the mountain shows.
 fn fullscreen(name: &str) -> Option<(Xvfb, Saver)> {
@@ -18,14 +20,6 @@ fn fullscreen(name: &str) -> Option<(Xvfb, Saver)> {
     });
     eprintln!("{name}: mountain on screen after {took:?}");
     Some((x, saver))
-}
-
-fn expect_exit(saver: &mut Saver, what: &str) {
-    let asked = Instant::now();
-    let status = saver.wait(PATIENCE);
-    let status = status.unwrap_or_else(|| panic!("{what} did not end the saver"));
-    eprintln!("{what}: ended after {:?} with {status}", asked.elapsed());
-    assert!(status.success(), "{what}: {status}\n{}", saver.stderr());
 }
 
 #[test]
@@ -77,12 +71,7 @@ fn display_fullscreen_ignores_a_3px_jitter() {
     let Some((x, mut saver)) = fullscreen("fs-jitter") else {
         return;
     };
-    for _ in 0..5 {
-        x.move_by(3, 0);
-        std::thread::sleep(Duration::from_millis(50));
-        x.move_by(-3, 0);
-        std::thread::sleep(Duration::from_millis(50));
-    }
+    x.jitter(3);
     std::thread::sleep(Duration::from_millis(700));
     saver.assert_running();
 }

@@ -14,7 +14,7 @@ mod wine;
 #[path = "common/xvfb.rs"]
 mod xvfb;
 
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use wine::Session;
 use xvfb::{PATIENCE, Saver, Xvfb, looks_drawn, poll};
@@ -58,14 +58,11 @@ fn fullscreen_at(name: &str, w: u16, h: u16) -> Option<(Session, Xvfb, Saver)> {
     Some((session, x, saver))
 }
 
-fn expect_exit(saver: &mut Saver, what: &str) {
-    let asked = Instant::now();
-    let status = saver.wait(PATIENCE);
-    let status = status.unwrap_or_else(|| panic!("{what} did not end the saver"));
+/// The saver ends with status 0 and its trace says what ended it.
+fn expect_traced_exit(saver: &mut Saver, what: &str) {
+    xvfb::expect_exit(saver, what);
     let trace = saver.stderr();
-    eprintln!("{what}: ended after {:?} with {status}", asked.elapsed());
     eprintln!("{what}: {}", trace.trim());
-    assert!(status.success(), "{what}: {status}\n{trace}");
     assert!(trace.contains("ended by"), "{what}: no trace:\n{trace}");
 }
 
@@ -91,7 +88,7 @@ fn display_wine_fullscreen_ends_on_a_key() {
         return;
     };
     x.key(38);
-    expect_exit(&mut saver, "a key");
+    expect_traced_exit(&mut saver, "a key");
 }
 
 #[test]
@@ -100,7 +97,7 @@ fn display_wine_fullscreen_ends_on_a_click() {
         return;
     };
     x.click(1);
-    expect_exit(&mut saver, "a click");
+    expect_traced_exit(&mut saver, "a click");
 }
 
 #[test]
@@ -109,7 +106,7 @@ fn display_wine_fullscreen_ends_on_a_20px_move() {
         return;
     };
     x.move_by(20, 0);
-    expect_exit(&mut saver, "a 20 px move");
+    expect_traced_exit(&mut saver, "a 20 px move");
 }
 
 #[test]
@@ -117,12 +114,7 @@ fn display_wine_fullscreen_ignores_a_3px_jitter() {
     let Some((_session, x, mut saver)) = fullscreen("wine-fs-jitter") else {
         return;
     };
-    for _ in 0..5 {
-        x.move_by(3, 0);
-        std::thread::sleep(Duration::from_millis(50));
-        x.move_by(-3, 0);
-        std::thread::sleep(Duration::from_millis(50));
-    }
+    x.jitter(3);
     std::thread::sleep(Duration::from_millis(700));
     saver.assert_running();
 }

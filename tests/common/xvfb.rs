@@ -333,6 +333,17 @@ impl Xvfb {
         self.fake(6, 1, dx, dy);
     }
 
+    /// Moves the pointer `px` right and back, five times, slowly: the hand
+    /// resting on the mouse, which must not end a screensaver.
+    pub fn jitter(&self, px: i16) {
+        for _ in 0..5 {
+            self.move_by(px, 0);
+            std::thread::sleep(Duration::from_millis(50));
+            self.move_by(-px, 0);
+            std::thread::sleep(Duration::from_millis(50));
+        }
+    }
+
     /// Puts the pointer at (x, y).
     pub fn move_to(&self, x: i16, y: i16) {
         self.fake(6, 0, x, y);
@@ -544,6 +555,15 @@ pub fn poll(saver: &mut Saver, what: &str, mut check: impl FnMut() -> bool) -> D
         "{what} did not happen within {PATIENCE:?}; stderr:\n{}",
         saver.stderr()
     );
+}
+
+/// Waits for `what` to end the saver and checks it ended with status 0.
+pub fn expect_exit(saver: &mut Saver, what: &str) {
+    let asked = Instant::now();
+    let status = saver.wait(PATIENCE);
+    let status = status.unwrap_or_else(|| panic!("{what} did not end the saver"));
+    eprintln!("{what}: ended after {:?} with {status}", asked.elapsed());
+    assert!(status.success(), "{what}: {status}\n{}", saver.stderr());
 }
 
 /// Waits until the saver has a mapped `w` x `h` window; returns it.
