@@ -40,6 +40,23 @@ fn display_fullscreen_covers_the_screen_with_a_mountain() {
 }
 
 #[test]
+fn display_fullscreen_hides_the_cursor() {
+    let Some(x) = Xvfb::start(640, 480, &[]) else {
+        return;
+    };
+    let before = x.visible_cursor_pixels();
+    assert!(before > 0, "the server's own cursor should be visible");
+    let mut saver = Saver::start(&x, "fs-cursor", &["/s"], &[]);
+    poll(&mut saver, "a mountain on the screen", || {
+        looks_drawn(&x.grab_screen())
+    });
+    poll(&mut saver, "the cursor to disappear", || {
+        x.visible_cursor_pixels() == 0
+    });
+    saver.assert_running();
+}
+
+#[test]
 fn display_fullscreen_ends_on_a_key() {
     let Some((x, mut saver)) = fullscreen("fs-key") else {
         return;

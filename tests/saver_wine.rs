@@ -83,6 +83,17 @@ fn display_wine_fullscreen_covers_the_screen_with_a_mountain() {
 }
 
 #[test]
+fn display_wine_fullscreen_hides_the_cursor() {
+    let Some((_session, x, mut saver)) = fullscreen("wine-fs-cursor") else {
+        return;
+    };
+    poll(&mut saver, "the cursor to disappear", || {
+        x.visible_cursor_pixels() == 0
+    });
+    saver.assert_running();
+}
+
+#[test]
 fn display_wine_fullscreen_ends_on_a_key() {
     let Some((_session, x, mut saver)) = fullscreen("wine-fs-key") else {
         return;

@@ -316,6 +316,24 @@ impl Xvfb {
             .collect()
     }
 
+    /// How many pixels of the pointer's current cursor image can be seen
+    /// (alpha above 0), by XFixes.
+    pub fn visible_cursor_pixels(&self) -> usize {
+        use x11rb::protocol::xfixes::ConnectionExt as _;
+        self.conn
+            .xfixes_query_version(4, 0)
+            .unwrap()
+            .reply()
+            .unwrap();
+        let image = self
+            .conn
+            .xfixes_get_cursor_image()
+            .unwrap()
+            .reply()
+            .unwrap();
+        image.cursor_image.iter().filter(|&&p| p >> 24 != 0).count()
+    }
+
     /// Presses and releases a key (keycode 38 is A on Xvfb's keymap).
     pub fn key(&self, keycode: u8) {
         self.fake(2, keycode, 0, 0);
