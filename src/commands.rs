@@ -47,6 +47,7 @@ pub fn render(
         );
         return ExitCode::from(EXIT_USAGE);
     };
+    let settings = &crate::render::detail::for_frame(settings, width, height);
     let (field, seed) = match mountain(settings, open) {
         Ok(m) => m,
         Err(e) => return fail(&e),

@@ -71,10 +71,54 @@ pub enum ColorMode {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum ViewKind {
+    /// A camera low in front of the land looking across it to the horizon,
+    /// fitted per frame so the land spans the whole width (xmountains' view).
+    Vista,
     /// The classic tilted, sheared parallelogram (orthographic).
     Oblique,
     /// Single-point perspective.
     Perspective,
+}
+
+/// How fine the grid is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Detail {
+    /// Chosen per frame, so a cell is a few pixels where the land is nearest.
+    Auto,
+    /// A grid of 2^n + 1 points a side.
+    Level(u32),
+}
+
+/// What `sea_level` is measured from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum WaterLine {
+    /// The height with [`COAST_SEA_SHARE`] of the map below it: every
+    /// mountain has land and a coast.
+    Coast,
+    /// The generator's own zero (Mountain Terrain 3.0: some maps all sea).
+    Generator,
+}
+
+/// Share of the map under water when `water_line = "coast"` and
+/// `sea_level = 0`.
+pub const COAST_SEA_SHARE: f32 = 0.3;
+
+/// Which light falls on the land.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Sun {
+    /// Morning, midday or evening, drawn from each mountain's heights.
+    Varied,
+    /// A low, cool light from the left and a pale sky.
+    Morning,
+    /// A high white light and a deep blue sky.
+    Midday,
+    /// A low, warm light from the right and a glowing horizon.
+    Evening,
+    /// Seed 000's light: from the back left, every face at least half bright.
+    Classic,
 }
 
 /// Which monitors the full-screen saver covers.
@@ -86,6 +130,10 @@ pub enum Monitors {
     /// Only the primary monitor; the others are blanked.
     Primary,
 }
+
+/// The detail `"auto"` means where no frame is known (a saved data set):
+/// what a 1920x1080 vista gets.
+pub const AUTO_DETAIL_FALLBACK: u32 = 10;
 
 /// Every preference a user can set. Ranges are checked in `settings::keys`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -106,18 +154,22 @@ pub struct Settings {
     pub profile: Profile,
     /// Height of the highest peak (1-10, seed 000's Height menu); also moves the treeline.
     pub height: u32,
-    /// Grid of 2^detail + 1 points a side (4-12).
-    pub detail: u32,
+    /// Grid of 2^detail + 1 points a side (4-12), or chosen per frame.
+    pub detail: Detail,
     /// Halve the points per side (a quarter of the data set).
     pub low_detail: bool,
-    /// Water line, as a fraction of the relief (-1.0 to 1.0; 0 = the generator's own).
+    /// Water line, as a fraction of the relief above or below `water_line` (-1.0 to 1.0).
     pub sea_level: f32,
+    /// What `sea_level` is measured from.
+    pub water_line: WaterLine,
     /// Colour mode or filter.
     pub color: ColorMode,
     /// Darken water with the depth of the ground below it.
     pub relative_depth: bool,
     /// Cast shadows from the light direction.
     pub shadows: bool,
+    /// The light: time of day, or drawn per mountain.
+    pub sun: Sun,
     /// Oblique or perspective projection.
     pub view: ViewKind,
     /// Which side the mountain is seen from, in degrees (0, 90, 180, 270).
@@ -145,13 +197,15 @@ impl Default for Settings {
             contour: 1.0,
             profile: Profile::Slope,
             height: 5,
-            detail: 8,
+            detail: Detail::Auto,
             low_detail: false,
             sea_level: 0.0,
+            water_line: WaterLine::Coast,
             color: ColorMode::Natural,
             relative_depth: true,
             shadows: true,
-            view: ViewKind::Oblique,
+            sun: Sun::Varied,
+            view: ViewKind::Vista,
             rotation: 0,
             auto_redraw: true,
             draw_seconds: 8.0,
@@ -170,12 +224,19 @@ impl Settings {
         self.seed.unwrap_or_else(|| rand::random::<u64>() >> 1)
     }
 
-    /// Points per side of the grid these settings generate, low detail included.
+    /// Points per side of the grid these settings generate, low detail
+    /// included; `detail = "auto"` counts as [`AUTO_DETAIL_FALLBACK`] here
+    /// (callers that know the frame resolve it first, see
+    /// `render::detail::for_frame`).
     pub fn grid_exponent(&self) -> u32 {
-        if self.low_detail && self.detail > 4 {
-            self.detail - 1
+        let detail = match self.detail {
+            Detail::Auto => AUTO_DETAIL_FALLBACK,
+            Detail::Level(n) => n,
+        };
+        if self.low_detail && detail > 4 {
+            detail - 1
         } else {
-            self.detail
+            detail
         }
     }
 }

@@ -8,7 +8,7 @@ use std::sync::Mutex;
 
 use super::canvas::Canvas;
 use super::frame::Frame;
-use super::painter::{Rows, background, draw_strips};
+use super::painter::{Rows, draw_strips};
 use super::scene::Scene;
 
 /// Most threads used; more bands would mostly repeat per-strip work.
@@ -29,7 +29,6 @@ pub(crate) fn render(scene: &Scene, frame: &mut Frame) {
     let bands = (threads * BANDS_PER_THREAD).min((height / MIN_BAND_ROWS).max(1) as usize);
     let bands = if threads < 2 { 1 } else { bands };
     let cuts = cut_rows(scene, height, bands);
-    let sky = background(scene);
     let strips = 0..scene.cells();
     let mut rest = frame.pixels_mut();
     let mut pieces = Vec::with_capacity(cuts.len() + 1);
@@ -42,7 +41,7 @@ pub(crate) fn render(scene: &Scene, frame: &mut Frame) {
     }
     let draw = |(band, y0): (&mut [u32], u32), rows: &mut Rows| {
         let mut canvas = Canvas::new(band, width, y0);
-        canvas.clear(sky);
+        scene.sky.paint(&mut canvas);
         draw_strips(scene, &mut canvas, rows, strips.clone());
     };
     let workers = threads.min(pieces.len());

@@ -45,17 +45,6 @@ impl<'a> Canvas<'a> {
         self.damage
     }
 
-    /// Fills the whole band with one colour.
-    pub(crate) fn clear(&mut self, color: u32) {
-        self.pixels.fill(color);
-        self.damage = self.damage.union(&Rect {
-            x0: 0,
-            y0: self.clip.y0 as u32,
-            x1: self.width,
-            y1: self.clip.y1 as u32,
-        });
-    }
-
     /// Adds a rectangle to the damage.
     #[inline]
     pub(crate) fn touch(&mut self, x0: u32, y0: u32, x1: u32, y1: u32) {

@@ -2,17 +2,23 @@
 
 mod bands;
 mod canvas;
+pub mod colour;
+pub mod detail;
 pub mod dither;
 mod edges;
 pub mod frame;
+mod haze;
+pub mod light;
 pub mod painter;
 pub mod palette;
 pub mod raster;
 pub mod ridges;
 mod scene;
 pub mod shadow;
+mod sky;
 mod strip;
 pub mod view;
+mod vista;
 
 pub use frame::{Frame, Rect};
 pub use painter::{Painter, render_full};

@@ -110,7 +110,7 @@ impl Painter {
             How::Mesh(scene, rows) => {
                 let mut canvas = Canvas::new(frame.pixels_mut(), self.width, 0);
                 if start == 0 {
-                    canvas.clear(background(scene));
+                    scene.sky.paint(&mut canvas);
                 }
                 draw_strips(scene, &mut canvas, rows, start..end);
                 canvas.damage()
@@ -127,15 +127,6 @@ impl Painter {
                 damage
             }
         }
-    }
-}
-
-/// The colour behind the mountain: the palette's sky, or black where the
-/// mode says so (Sonar and Outline draw on black, Mono has only two colours).
-pub(crate) fn background(scene: &Scene) -> u32 {
-    match scene.style {
-        Style::Shaded => scene.palette.sky(),
-        Style::Mono | Style::Sonar | Style::Outline => 0,
     }
 }
 

@@ -19,12 +19,11 @@
 //! lowland turns black under the red filter; the tint keeps every face's
 //! brightness, stays in the filter's hue family, and snow turns a pale tint.
 
-use crate::settings::{ColorMode, Settings};
+use super::colour::{Rgb, mix, scale_packed3, to_u32, unpack};
+use super::light::Lighting;
+use crate::settings::{ColorMode, Settings, Sun};
 use crate::terrain::Heightfield;
 use glam::Vec3;
-
-/// An sRGB colour with channels in `0.0..=1.0`.
-type Rgb = [f32; 3];
 
 /// Height classes in the land table, from sea level to the highest peak.
 const HEIGHT_BINS: usize = 512;
@@ -40,9 +39,8 @@ const JITTER_BINS: i32 = 10;
 /// colours (1 would keep their luminance but turn snow and sand white).
 const WHITENING: f32 = 0.6;
 
-/// Towards the light: from the back-left, 32 degrees above the horizon, so
-/// the faces the viewer sees are modelled and peaks cast shadows forwards.
-const LIGHT: Vec3 = Vec3::new(-0.6, 0.6, 0.53);
+/// How much of the sky's horizon colour water reflects (beyond the classic light).
+const WATER_REFLECTS: f32 = 0.12;
 
 /// Natural colours, shaded brightness 1 (full sun).
 mod natural {
@@ -59,13 +57,14 @@ mod natural {
     pub const SHALLOW: Rgb = [0.16, 0.46, 0.74];
     pub const DEEP: Rgb = [0.02, 0.10, 0.30];
     pub const SEA: Rgb = [0.10, 0.34, 0.66];
-    pub const SKY: u32 = 0x000a_1220;
 }
 
 /// Colours for one mountain under one set of settings.
 #[derive(Debug, Clone)]
 pub struct Palette {
-    light: Vec3,
+    lighting: Lighting,
+    /// Lighting in colour (natural) rather than in brightness only.
+    coloured: bool,
     mode: ColorMode,
     /// `STEEP_BINS` rows of `HEIGHT_BINS` filtered base colours, packed.
     land: Box<[u32]>,
@@ -95,10 +94,21 @@ impl Palette {
         let steep_ref = steepness_reference(field);
         let land = land_table(mode, &zones);
         let deepest = positive_or(-field.min(), 1.0);
-        let (water, depth_scale) =
-            water_table(mode, settings.relative_depth, deepest, gain, offset);
+        let sun = match mode {
+            // Mono's tone curve is tuned to seed 000's light.
+            ColorMode::Mono => Sun::Classic,
+            _ => settings.sun,
+        };
+        let lighting = Lighting::new(sun, field);
+        let waters = Waters {
+            relative: settings.relative_depth,
+            deepest,
+            reflected: (!lighting.classic).then_some(lighting.horizon),
+        };
+        let (water, depth_scale) = water_table(mode, &waters, gain, offset);
         Palette {
-            light: LIGHT.normalize(),
+            coloured: !lighting.classic && mode == ColorMode::Natural,
+            lighting,
             mode,
             land,
             height_scale: HEIGHT_BINS as f32 / top,
@@ -113,7 +123,12 @@ impl Palette {
 
     /// Unit vector pointing from the ground towards the light (z up, y towards the back).
     pub fn light(&self) -> Vec3 {
-        self.light
+        self.lighting.sun
+    }
+
+    /// The sun, sky and ambient light these colours were made with.
+    pub fn lighting(&self) -> &Lighting {
+        &self.lighting
     }
 
     /// The colour mode these colours were made for.
@@ -124,8 +139,9 @@ impl Palette {
     /// Colour of a land face: its mean height, unit normal (z up), and how
     /// much direct light reaches it (1 = lit, 0 = in cast shadow).
     ///
-    /// Faces turned away from the light, and faces in shadow, are exactly
-    /// half as bright as a face square to the light (seed 000's floor).
+    /// Under the classic light, faces turned away from it and faces in
+    /// shadow are exactly half as bright as a face square to it (seed 000's
+    /// floor); otherwise they get only the sky's light.
     #[inline]
     pub fn land(&self, mean_height: f32, normal: Vec3, lit: f32) -> u32 {
         // Clamped as floats (NaN stays NaN and casts to bin 0).
@@ -134,6 +150,9 @@ impl Palette {
         let s = ((1.0 - normal.z) * self.steep_scale).clamp(0.0, (STEEP_BINS - 1) as f32) as i32
             as usize;
         let base = self.land[s * HEIGHT_BINS + h];
+        if self.coloured {
+            return scale_packed3(base, self.lighting.on(normal, lit));
+        }
         let b = self.brightness(normal, lit);
         if self.offset == 0.0 {
             scale_packed(base, b)
@@ -161,12 +180,16 @@ impl Palette {
         pack(self.skirt, self.brightness(normal, 1.0), self.offset)
     }
 
-    /// Background colour behind the mountain.
-    pub fn sky(&self) -> u32 {
+    /// The sky behind the mountain, top and horizon colours, filtered
+    /// (black in Mono, Sonar and Outline).
+    pub fn sky(&self) -> (u32, u32) {
         match self.mode {
-            ColorMode::Natural | ColorMode::Ridges => natural::SKY,
-            ColorMode::Mono | ColorMode::Sonar | ColorMode::Outline => 0,
-            _ => to_u32(filter(self.mode, unpack(natural::SKY))),
+            ColorMode::Mono | ColorMode::Sonar | ColorMode::Outline => (0, 0),
+            mode => {
+                let l = &self.lighting;
+                let [top, bottom] = [l.zenith, l.horizon].map(|c| to_u32(filter(mode, c)));
+                (top, bottom)
+            }
         }
     }
 
@@ -188,21 +211,14 @@ impl Palette {
         }
     }
 
-    /// Brightness in 0.5..=1: Lambert cosine, floored at half, times cast light.
+    /// Brightness: Lambert cosine times cast light over the ambient floor
+    /// (0.5..=1 under the classic light).
     #[inline]
     fn brightness(&self, normal: Vec3, lit: f32) -> f32 {
-        let lit = unit(lit);
-        let cos = unit(normal.dot(self.light));
-        (0.5 + 0.5 * cos * lit) * self.gain
+        luminance(self.lighting.on(normal, lit)) * self.gain
     }
 }
 
-/// `v` limited to 0..=1, with NaN as 0 (a bad input gives a dim face, not a
-/// black one).
-#[inline]
-fn unit(v: f32) -> f32 {
-    if v > 0.0 { v.min(1.0) } else { 0.0 }
-}
 
 /// `value` if it is a positive finite number, else `fallback`.
 fn positive_or(value: f32, fallback: f32) -> f32 {
@@ -239,15 +255,7 @@ fn scale_packed(c: u32, b: f32) -> u32 {
     red_blue | green
 }
 
-/// A 0..=1 colour as `0x00RRGGBB`.
-fn to_u32(c: Rgb) -> u32 {
-    pack(c.map(|v| v * 255.0), 1.0, 0.0)
-}
 
-/// `0x00RRGGBB` as a 0..=1 colour.
-fn unpack(c: u32) -> Rgb {
-    [c >> 16, c >> 8, c].map(|v| (v & 0xff) as f32 / 255.0)
-}
 
 /// Rec. 709 luminance.
 fn luminance(c: Rgb) -> f32 {
@@ -387,14 +395,19 @@ fn land_table(mode: ColorMode, zones: &Zones) -> Box<[u32]> {
     table.into_boxed_slice()
 }
 
-/// Water colours by depth and the depth-to-bin scale.
-fn water_table(
-    mode: ColorMode,
+/// What decides the water's colours.
+struct Waters {
+    /// Darker over deeper ground.
     relative: bool,
+    /// Depth of the deepest point (> 0).
     deepest: f32,
-    gain: f32,
-    offset: f32,
-) -> (Box<[u32]>, f32) {
+    /// The sky colour the surface reflects, if any.
+    reflected: Option<Rgb>,
+}
+
+/// Water colours by depth and the depth-to-bin scale.
+fn water_table(mode: ColorMode, w: &Waters, gain: f32, offset: f32) -> (Box<[u32]>, f32) {
+    let (relative, deepest) = (w.relative, w.deepest);
     let table = (0..DEPTH_BINS)
         .map(|i| {
             let c = if relative {
@@ -404,6 +417,7 @@ fn water_table(
             } else {
                 natural::SEA
             };
+            let c = w.reflected.map_or(c, |sky| mix(c, sky, WATER_REFLECTS));
             match mode {
                 ColorMode::Mono => mono_water(c),
                 _ => pack(finish(mode, c), gain, offset),
@@ -454,10 +468,6 @@ fn ramp(stops: &[(f32, Rgb)], t: f32) -> Rgb {
     prev_c
 }
 
-/// Linear blend from `a` (t = 0) to `b` (t = 1).
-fn mix(a: Rgb, b: Rgb, t: f32) -> Rgb {
-    [0, 1, 2].map(|i| a[i] + (b[i] - a[i]) * t)
-}
 
 /// Hermite step from 0 at `e0` to 1 at `e1`.
 fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {

@@ -58,7 +58,7 @@ impl Ridges {
     /// Plans the ranges of `field` for a `width` x `height` frame.
     /// The height setting (1..=10) makes the ranges lower or taller.
     pub fn new(field: &Heightfield, settings: &Settings, width: u32, height: u32) -> Self {
-        let seed = field_hash(field);
+        let seed = field.fingerprint();
         let points = profile_points(width);
         let tallness = 0.6 + 0.08 * settings.height.clamp(1, 10) as f32;
         let layers = (0..LAYERS)
@@ -92,17 +92,6 @@ impl Ridges {
         }
         damage.union(&paint_layer(frame, layer))
     }
-}
-
-/// A value-stable hash of the field's size, extent and (sampled) heights.
-fn field_hash(field: &Heightfield) -> u64 {
-    let heights = field.heights();
-    let stride = (heights.len() / 4096).max(1);
-    let mut h = mix64(field.size() as u64 ^ (field.extent().to_bits() as u64) << 32);
-    for v in heights.iter().step_by(stride) {
-        h = mix64(h ^ v.to_bits() as u64);
-    }
-    h
 }
 
 /// SplitMix64's finaliser: a well-mixed 64-bit hash step.

@@ -8,8 +8,10 @@ use glam::Vec2;
 use super::palette::Palette;
 use super::raster::{Fixed2, to_fixed};
 use super::shadow::{self, ShadowMap};
+use super::haze::Haze;
+use super::sky::Sky;
 use super::view::View;
-use crate::settings::{ColorMode, Settings};
+use crate::settings::{ColorMode, Settings, ViewKind};
 use crate::terrain::Heightfield;
 
 /// How faces are put on screen.
@@ -46,6 +48,8 @@ pub(crate) struct Vert {
     pub h: f32,
     /// Direct light reaching the point.
     pub lit: f32,
+    /// How far the air has faded the point towards the horizon colour, in 1/256ths.
+    pub haze: u32,
 }
 
 /// A field a scene draws: shared with a painter, or borrowed for one frame
@@ -71,6 +75,10 @@ pub(crate) struct Scene<'a> {
     pub field: FieldRef<'a>,
     pub view: View,
     pub palette: Palette,
+    /// What is drawn behind the land.
+    pub sky: Sky,
+    /// Aerial haze, if the view has depth and the style has colours.
+    pub haze: Option<Haze>,
     shadow: Option<ShadowMap>,
     pub style: Style,
     /// Cells `0..split` of a row are drawn left to right, then the rest right
@@ -100,6 +108,9 @@ impl<'a> Scene<'a> {
             .collect();
         let zmax = row_top.iter().copied().fold(0.0, f32::max);
         let view = View::new(settings.view, size, field.extent(), zmax, width, height);
+        let sky = backdrop(&palette, &view, style, height);
+        let haze = (style == Style::Shaded && settings.view != ViewKind::Oblique)
+            .then(|| Haze::new(palette.sky().1));
         let cells = size - 1;
         let (split, sees_right, sees_front) = match view.camera_column() {
             Some(cx) => {
@@ -112,6 +123,8 @@ impl<'a> Scene<'a> {
             field,
             view,
             palette,
+            sky,
+            haze,
             shadow,
             style,
             split,
@@ -132,11 +145,16 @@ impl<'a> Scene<'a> {
         let row = self.field.row(y);
         out.extend(row.iter().enumerate().map(|(x, &h)| {
             let h = finite(h);
-            let p = self.view.project(x as f32, y as f32, h.max(0.0));
+            let (gx, gy, z) = (x as f32, y as f32, h.max(0.0));
+            let p = self.view.project(gx, gy, z);
             Vert {
                 p: to_fixed(p.x, p.y),
                 h,
                 lit: self.shadow.as_ref().map_or(1.0, |s| s.lit(x, y)),
+                haze: self
+                    .haze
+                    .as_ref()
+                    .map_or(0, |f| f.amount(self.view.distance(gx, gy, z))),
             }
         }));
     }
@@ -163,6 +181,18 @@ impl<'a> Scene<'a> {
         }
         (lo.floor() as i64 - 1, hi.ceil() as i64 + 1)
     }
+}
+
+/// The sky for this view: in a view with depth the horizon colour is
+/// reached at the back edge, where the land begins; the oblique view's
+/// gradient spans the frame.
+fn backdrop(palette: &Palette, view: &View, style: Style, height: u32) -> Sky {
+    let (top, horizon) = palette.sky();
+    let row = match (style, view.camera_column()) {
+        (Style::Shaded, Some(cx)) => view.project(cx, 0.0, 0.0).y,
+        _ => height as f32,
+    };
+    Sky::new(top, horizon, row)
 }
 
 /// Heights that are not numbers are drawn at sea level.

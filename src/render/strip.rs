@@ -4,6 +4,7 @@
 use glam::{Vec2, Vec3};
 
 use super::canvas::Canvas;
+use super::colour::blend_packed;
 use super::dither;
 use super::raster::{Fixed2, cell_covers_a_centre, fill_triangle};
 use super::scene::{Scene, Style, Vert};
@@ -26,6 +27,7 @@ struct Corner {
     h: f32,
     p: Fixed2,
     lit: f32,
+    haze: u32,
 }
 
 impl Corner {
@@ -35,6 +37,7 @@ impl Corner {
             h: v.h,
             p: v.p,
             lit: v.lit,
+            haze: v.haze,
         }
     }
 }
@@ -146,6 +149,7 @@ impl Scene<'_> {
             h: 0.0,
             p: self.project_sea(g),
             lit: a.lit + (b.lit - a.lit) * f,
+            haze: (a.haze as f32 + (b.haze as f32 - a.haze as f32) * f) as u32,
         }
     }
 
@@ -177,14 +181,14 @@ impl Scene<'_> {
             return;
         }
         let mean = (c[0].h + c[1].h + c[2].h) / 3.0;
-        let colour = || self.palette.land(mean.max(0.0), normal(), lit);
+        let colour = || self.hazed(self.palette.land(mean.max(0.0), normal(), lit), &c);
         self.paint(canvas, [c[0].p, c[1].p, c[2].p], colour);
     }
 
     fn fill_water(&self, canvas: &mut Canvas, c: [Corner; 3]) {
         let depth = -(c[0].h.min(0.0) + c[1].h.min(0.0) + c[2].h.min(0.0)) / 3.0;
         self.paint(canvas, [c[0].p, c[1].p, c[2].p], || {
-            self.palette.water(depth)
+            self.hazed(self.palette.water(depth), &c)
         });
     }
 
@@ -202,10 +206,25 @@ impl Scene<'_> {
             (true, false) => (a, self.shore(a, b)),
             (false, true) => (self.shore(a, b), b),
         };
-        let colour = self.palette.skirt((a.h + b.h) / 4.0, normal);
         let (fa, fb) = (foot(a), foot(b));
+        let colour = self.hazed(
+            self.palette.skirt((a.h + b.h) / 4.0, normal),
+            &[a, b, fa],
+        );
         self.paint(canvas, [a.p, b.p, fb.p], || colour);
         self.paint(canvas, [a.p, fb.p, fa.p], || colour);
+    }
+
+    /// `colour` faded by the air between the viewer and the face's corners.
+    #[inline]
+    fn hazed(&self, colour: u32, c: &[Corner; 3]) -> u32 {
+        match &self.haze {
+            Some(haze) => {
+                let t = (c[0].haze + c[1].haze + c[2].haze) / 3;
+                blend_packed(colour, haze.colour, t)
+            }
+            None => colour,
+        }
     }
 
     /// Fills one screen triangle with a colour (or its dither pattern in Mono).

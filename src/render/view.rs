@@ -7,6 +7,7 @@
 
 use glam::{Vec2, Vec3};
 
+use super::vista;
 use crate::settings::ViewKind;
 
 /// Sine and cosine of the classic view's tilt: the grid is tipped back 70
@@ -16,8 +17,9 @@ const TILT_SIN_COS: (f32, f32) = (0.939_692_6, 0.342_020_15);
 /// Seed 000's shear: each row forward moves half a step to the left, which
 /// turns the square into a parallelogram seen from the front right.
 const SHEAR: f32 = 0.5;
-/// Empty border around the fitted mountain, as a fraction of each side.
-const MARGIN: f32 = 0.04;
+/// Empty border around the fitted mountain, as a fraction of each side
+/// (oblique and perspective views).
+const MARGIN: f32 = 0.02;
 
 /// A projection fitted to one frame size.
 #[derive(Debug, Clone)]
@@ -31,35 +33,64 @@ pub struct View {
     tilt: (f32, f32),
 }
 
-/// The single-point perspective camera, in world units.
+/// A single-point perspective camera, in world units (x right, y towards
+/// the front, z up).
 #[derive(Debug, Clone, Copy)]
-struct Camera {
+pub(crate) struct Camera {
     eye: Vec3,
     up: Vec3,
     forward: Vec3,
     near: f32,
+    /// Depth of the middle of the back edge at sea level.
+    back_depth: f32,
 }
 
 impl Camera {
+    /// At `eye`, level sideways, looking towards `-y` and down by `pitch`
+    /// radians, for a grid `extent` units wide.
+    pub(crate) fn looking_back(eye: Vec3, pitch: f32, extent: f32) -> Self {
+        let (sin, cos) = pitch.sin_cos();
+        let forward = Vec3::new(0.0, -cos, -sin);
+        let up = Vec3::new(0.0, -sin, cos);
+        let mut cam = Camera {
+            eye,
+            up,
+            forward,
+            near: 1e-3 * extent,
+            back_depth: 1.0,
+        };
+        cam.back_depth = cam.depth(Vec3::new(0.5 * extent, 0.0, 0.0)).max(cam.near);
+        cam
+    }
+
+    /// How far `p` lies in front of the camera.
+    #[inline]
+    fn depth(&self, p: Vec3) -> f32 {
+        (p - self.eye).dot(self.forward).max(self.near)
+    }
+
     /// In front of the mountain's middle, above it, looking down at its centre.
     fn new(extent: f32, zmax: f32) -> Self {
         let eye = Vec3::new(0.5 * extent, 1.75 * extent, 0.4 * extent + 0.8 * zmax);
         let target = Vec3::new(0.5 * extent, 0.45 * extent, 0.0);
         let forward = (target - eye).normalize();
         let up = (Vec3::Z - forward * forward.z).normalize();
-        Camera {
+        let mut cam = Camera {
             eye,
             up,
             forward,
             near: 1e-3 * extent,
-        }
+            back_depth: 1.0,
+        };
+        cam.back_depth = cam.depth(Vec3::new(0.5 * extent, 0.0, 0.0)).max(cam.near);
+        cam
     }
 
     /// Unscaled screen position (x right, y down).
     #[inline]
     fn project(&self, p: Vec3) -> Vec2 {
         let d = p - self.eye;
-        let depth = d.dot(self.forward).max(self.near);
+        let depth = self.depth(p);
         Vec2::new(d.x / depth, -d.dot(self.up) / depth)
     }
 }
@@ -82,17 +113,42 @@ impl View {
             steps
         };
         let zmax = if zmax.is_finite() { zmax.max(0.0) } else { 0.0 };
-        let camera = (kind == ViewKind::Perspective).then(|| Camera::new(extent, zmax));
         let mut view = View {
             cell: extent / steps,
             scale: 1.0,
             offset: Vec2::ZERO,
-            camera,
+            camera: None,
             size,
             tilt: TILT_SIN_COS,
         };
-        view.fit(steps, zmax, width as f32, height as f32);
+        match kind {
+            ViewKind::Vista => {
+                let shot = vista::frame(extent, width as f32, height as f32);
+                view.camera = Some(shot.camera);
+                view.scale = shot.focal;
+                view.offset = Vec2::new(width as f32, height as f32) * 0.5;
+            }
+            ViewKind::Perspective => {
+                view.camera = Some(Camera::new(extent, zmax));
+                view.fit(steps, zmax, width as f32, height as f32);
+            }
+            ViewKind::Oblique => view.fit(steps, zmax, width as f32, height as f32),
+        }
         view
+    }
+
+    /// Distance of a point in front of the camera, as a fraction of the
+    /// distance to the middle of the back edge (0 for the oblique view,
+    /// which has no camera): what aerial haze grows with.
+    #[inline]
+    pub fn distance(&self, gx: f32, gy: f32, z: f32) -> f32 {
+        match &self.camera {
+            Some(cam) => {
+                let p = Vec3::new(gx * self.cell, gy * self.cell, z);
+                cam.depth(p) / cam.back_depth
+            }
+            None => 0.0,
+        }
     }
 
     /// Chooses scale and offset so the box holding the mountain fills the frame.

@@ -7,7 +7,7 @@ use std::time::Instant;
 
 use super::slideshow::{Due, Pacing, Slideshow};
 use super::source;
-use crate::render::{Frame, Painter, Rect};
+use crate::render::{Frame, Painter, Rect, detail};
 use crate::settings::Settings;
 use crate::terrain::{self, Heightfield};
 
@@ -65,7 +65,7 @@ impl Show {
     ) -> Self {
         let first = opened
             .clone()
-            .unwrap_or_else(|| Mountain::generate(&settings));
+            .unwrap_or_else(|| Mountain::generate(&detail::for_frame(&settings, size.0, size.1)));
         let mut show = Show {
             settings,
             opened,
@@ -262,7 +262,7 @@ impl Show {
         if !matches!(self.next, Next::None) || self.opened.is_some() {
             return;
         }
-        let settings = self.settings.clone();
+        let settings = self.generator_settings();
         let slide = self.slide + 1;
         let spawned = std::thread::Builder::new()
             .name("generate".into())
@@ -276,8 +276,17 @@ impl Show {
     fn make_next_now(&self) -> Mountain {
         match &self.opened {
             Some(m) => m.clone(),
-            None => source::next_mountain(&self.settings, self.slide + 1),
+            None => source::next_mountain(&self.generator_settings(), self.slide + 1),
         }
+    }
+
+    /// The settings with `detail = "auto"` fitted to this window's size.
+    fn generator_settings(&self) -> Settings {
+        let (w, h) = self
+            .frame
+            .as_ref()
+            .map_or((0, 0), |f| (f.width(), f.height()));
+        detail::for_frame(&self.settings, w, h)
     }
 }
 

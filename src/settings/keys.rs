@@ -6,7 +6,7 @@
 use serde::Deserialize;
 use serde::de::IntoDeserializer;
 
-use super::{ColorMode, Generator, Monitors, Profile, Settings, ViewKind};
+use super::{ColorMode, Detail, Generator, Monitors, Profile, Settings, Sun, ViewKind, WaterLine};
 
 /// A value as written by a user, before it is checked against a key.
 #[derive(Debug, Clone, PartialEq)]
@@ -61,6 +61,13 @@ pub enum Kind {
         /// Largest allowed.
         max: f64,
     },
+    /// "auto", or a whole number in `min..=max`.
+    IntOrAuto {
+        /// Smallest allowed.
+        min: i64,
+        /// Largest allowed.
+        max: i64,
+    },
     /// `true` or `false`.
     Bool,
     /// One of these strings.
@@ -79,6 +86,7 @@ impl Kind {
         match self {
             Kind::Int { min, max } => format!("an integer from {min} to {max}"),
             Kind::Float { min, max } => format!("a number from {min} to {max}"),
+            Kind::IntOrAuto { min, max } => format!("\"auto\" or an integer from {min} to {max}"),
             Kind::Bool => "true or false".into(),
             Kind::Choice(names) => format!("one of {}", quoted_list(names)),
             Kind::Seed => "\"random\" or an integer from 0 to 18446744073709551615".into(),
@@ -110,7 +118,9 @@ const COLORS: &[&str] = &[
     "natural", "gray", "red", "green", "blue", "yellow", "cyan", "purple", "sonar", "outline",
     "mono", "ridges",
 ];
-const VIEWS: &[&str] = &["oblique", "perspective"];
+const VIEWS: &[&str] = &["vista", "oblique", "perspective"];
+const WATER_LINES: &[&str] = &["coast", "generator"];
+const SUNS: &[&str] = &["varied", "morning", "midday", "evening", "classic"];
 const MONITORS: &[&str] = &["all", "primary"];
 
 const fn key(name: &'static str, kind: Kind, doc: &'static str) -> Key {
@@ -167,8 +177,8 @@ pub const KEYS: &[Key] = &[
     ),
     key(
         "detail",
-        Kind::Int { min: 4, max: 12 },
-        "grid of 2^detail+1 points a side",
+        Kind::IntOrAuto { min: 4, max: 12 },
+        "grid of 2^detail+1 points a side; \"auto\" fits it to the screen",
     ),
     key(
         "low_detail",
@@ -181,7 +191,12 @@ pub const KEYS: &[Key] = &[
             min: -1.0,
             max: 1.0,
         },
-        "water line as a fraction of the relief (0 = natural)",
+        "water line as a fraction of the relief above or below water_line",
+    ),
+    key(
+        "water_line",
+        Kind::Choice(WATER_LINES),
+        "sea_level 0: a coast on every mountain, or the generator's own zero",
     ),
     key("color", Kind::Choice(COLORS), "colour mode or filter"),
     key(
@@ -190,6 +205,11 @@ pub const KEYS: &[Key] = &[
         "darker water over deeper ground",
     ),
     key("shadows", Kind::Bool, "cast shadows from the light"),
+    key(
+        "sun",
+        Kind::Choice(SUNS),
+        "time of day of the light; \"varied\" draws one per mountain",
+    ),
     key("view", Kind::Choice(VIEWS), "projection"),
     key(
         "rotation",
@@ -271,12 +291,14 @@ pub fn apply(settings: &mut Settings, key: &Key, value: &Value) -> Result<(), St
         "contour" => s.contour = float(key, value).ok_or_else(bad)?,
         "profile" => s.profile = choice::<Profile>(key, value).ok_or_else(bad)?,
         "height" => s.height = int(key, value).ok_or_else(bad)? as u32,
-        "detail" => s.detail = int(key, value).ok_or_else(bad)? as u32,
+        "detail" => s.detail = detail(key, value).ok_or_else(bad)?,
         "low_detail" => s.low_detail = boolean(value).ok_or_else(bad)?,
         "sea_level" => s.sea_level = float(key, value).ok_or_else(bad)?,
+        "water_line" => s.water_line = choice::<WaterLine>(key, value).ok_or_else(bad)?,
         "color" => s.color = choice::<ColorMode>(key, value).ok_or_else(bad)?,
         "relative_depth" => s.relative_depth = boolean(value).ok_or_else(bad)?,
         "shadows" => s.shadows = boolean(value).ok_or_else(bad)?,
+        "sun" => s.sun = choice::<Sun>(key, value).ok_or_else(bad)?,
         "view" => s.view = choice::<ViewKind>(key, value).ok_or_else(bad)?,
         "rotation" => s.rotation = rotation(value).ok_or_else(bad)?,
         "auto_redraw" => s.auto_redraw = boolean(value).ok_or_else(bad)?,
@@ -302,12 +324,17 @@ pub fn get(settings: &Settings, key: &Key) -> Value {
         "contour" => Value::Float(s.contour.into()),
         "profile" => name(&s.profile),
         "height" => Value::Int(s.height.into()),
-        "detail" => Value::Int(s.detail.into()),
+        "detail" => match s.detail {
+            Detail::Auto => Value::Str("auto".into()),
+            Detail::Level(n) => Value::Int(n.into()),
+        },
         "low_detail" => Value::Bool(s.low_detail),
         "sea_level" => Value::Float(s.sea_level.into()),
+        "water_line" => name(&s.water_line),
         "color" => name(&s.color),
         "relative_depth" => Value::Bool(s.relative_depth),
         "shadows" => Value::Bool(s.shadows),
+        "sun" => name(&s.sun),
         "view" => name(&s.view),
         "rotation" => Value::Int(s.rotation.into()),
         "auto_redraw" => Value::Bool(s.auto_redraw),
@@ -348,6 +375,17 @@ fn int(key: &Key, value: &Value) -> Option<i64> {
     };
     match value {
         Value::Int(i) if (min..=max).contains(i) => Some(*i),
+        _ => None,
+    }
+}
+
+fn detail(key: &Key, value: &Value) -> Option<Detail> {
+    let Kind::IntOrAuto { min, max } = key.kind else {
+        return None;
+    };
+    match value {
+        Value::Str(s) if s == "auto" => Some(Detail::Auto),
+        Value::Int(i) if (min..=max).contains(i) => Some(Detail::Level(*i as u32)),
         _ => None,
     }
 }

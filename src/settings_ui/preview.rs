@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use crate::render::{Frame, Painter};
-use crate::settings::Settings;
+use crate::settings::{Detail, Settings};
 use crate::terrain::{self, Heightfield, heightmap};
 
 /// The preview never generates more than 2^9+1 points a side: the picture is
@@ -45,16 +45,19 @@ impl Preview {
         }
     }
 
-    /// The settings the preview generates with: the screen's, detail capped.
-    fn preview_settings(settings: &Settings) -> Settings {
-        let mut s = settings.clone();
-        s.detail = s.detail.min(MAX_PREVIEW_DETAIL);
+    /// The settings the preview generates with: the screen's, with the
+    /// detail fitted to the preview's size and capped.
+    fn preview_settings(settings: &Settings, size: (u32, u32)) -> Settings {
+        let mut s = crate::render::detail::for_frame(settings, size.0, size.1);
+        if let Detail::Level(n) = s.detail {
+            s.detail = Detail::Level(n.min(MAX_PREVIEW_DETAIL));
+        }
         s
     }
 
     /// A new mountain from `seed` under `settings`.
     pub fn generate(&mut self, settings: &Settings, seed: u64, size: (u32, u32)) {
-        let field = terrain::generate(&Self::preview_settings(settings), seed);
+        let field = terrain::generate(&Self::preview_settings(settings, size), seed);
         self.field = Some(Arc::new(field));
         self.seed = Some(seed);
         self.file = None;

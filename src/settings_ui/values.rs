@@ -25,7 +25,7 @@ pub fn widget(key: &Key) -> Widget {
     match key.kind {
         Kind::Int { .. } | Kind::Float { .. } => Widget::Slider,
         Kind::Bool => Widget::Check,
-        Kind::Choice(_) | Kind::QuarterTurn => Widget::Choice,
+        Kind::Choice(_) | Kind::QuarterTurn | Kind::IntOrAuto { .. } => Widget::Choice,
         Kind::Path => Widget::Text,
         Kind::Seed => Widget::Seed,
     }
@@ -33,7 +33,10 @@ pub fn widget(key: &Key) -> Widget {
 
 /// True when the key takes typed text (numbers may be typed too).
 pub fn accepts_typing(key: &Key) -> bool {
-    !matches!(key.kind, Kind::Bool | Kind::Choice(_) | Kind::QuarterTurn)
+    !matches!(
+        key.kind,
+        Kind::Bool | Kind::Choice(_) | Kind::QuarterTurn | Kind::IntOrAuto { .. }
+    )
 }
 
 const QUARTER_TURNS: &[i64] = &[0, 90, 180, 270];
@@ -160,6 +163,9 @@ pub fn choices(key: &Key) -> Vec<Value> {
     match key.kind {
         Kind::Choice(names) => names.iter().map(|n| Value::Str((*n).into())).collect(),
         Kind::QuarterTurn => QUARTER_TURNS.iter().map(|d| Value::Int(*d)).collect(),
+        Kind::IntOrAuto { min, max } => std::iter::once(Value::Str("auto".into()))
+            .chain((min..=max).map(Value::Int))
+            .collect(),
         _ => Vec::new(),
     }
 }

@@ -89,6 +89,19 @@ impl Heightfield {
         &self.heights[y * self.size..(y + 1) * self.size]
     }
 
+    /// A value-stable hash of the size, extent and (sampled) heights: the
+    /// same mountain always gives the same number, so choices drawn from it
+    /// (a time of day, ridge shapes) follow the seed.
+    pub fn fingerprint(&self) -> u64 {
+        let step = |z: u64| super::noise::mix(z.wrapping_add(super::noise::GOLDEN));
+        let stride = (self.heights.len() / 4096).max(1);
+        let mut h = step(self.size as u64 ^ u64::from(self.extent.to_bits()) << 32);
+        for v in self.heights.iter().step_by(stride) {
+            h = step(h ^ u64::from(v.to_bits()));
+        }
+        h
+    }
+
     /// All elevations, row-major.
     pub fn heights(&self) -> &[f32] {
         &self.heights

@@ -2,6 +2,7 @@
 
 pub mod heightfield;
 pub mod heightmap;
+mod coast;
 mod noise;
 mod normalize;
 mod params;
@@ -30,8 +31,9 @@ use crate::settings::{Generator, Settings};
 ///   `±elevation/2` (elevation 100 by default) and cragginess adds at most
 ///   `±cragginess` more. With the defaults (cragginess 96) the highest peak
 ///   averages about 45 above the generator's zero (30-70 by seed) and the
-///   relief about 90, over an extent of [`SQUARE_EXTENT`]: peaks 10-15% of
-///   the width. `height` scales the relief by `height / 5`, so the default
+///   relief about 90, over an extent of [`SQUARE_EXTENT`]: peaks 16-24% of
+///   the width, tall enough to read as mountains from the vista's low
+///   camera (at 400 wide they read as a bumpy plateau). `height` scales the relief by `height / 5`, so the default
 ///   5 leaves it as generated and cragginess still makes taller or flatter
 ///   mountains, as in Mountain Terrain.
 /// - Triangle (Fractal Mountain Climbing): the highest point is exactly
@@ -87,7 +89,7 @@ fn fill(field: &mut Heightfield, params: &Params, seed: u64, threads: usize) {
 }
 
 /// Width of the grid of the square generators, in height units.
-pub const SQUARE_EXTENT: f32 = 400.0;
+pub const SQUARE_EXTENT: f32 = 250.0;
 /// Width of the grid of the triangle generator, in height units.
 pub const TRIANGLE_EXTENT: f32 = 500.0;
 /// Height units of the triangle generator's highest point per step of

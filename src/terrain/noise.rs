@@ -9,7 +9,7 @@
 use super::heightfield::MAX_EXPONENT;
 
 /// SplitMix64's increment (2^64 / golden ratio).
-const GOLDEN: u64 = 0x9E37_79B9_7F4A_7C15;
+pub(crate) const GOLDEN: u64 = 0x9E37_79B9_7F4A_7C15;
 
 /// SplitMix64's output function: a bijective 64-bit mixer.
 #[inline]

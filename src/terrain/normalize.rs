@@ -3,7 +3,9 @@
 //! Each pass is elementwise (or a min/max), so cutting the field into
 //! chunks for threads cannot change a single bit of the result.
 
+use super::coast;
 use super::params::Params;
+use crate::settings::WaterLine;
 use super::subdivide::Extremes;
 use super::{Heightfield, TRIANGLE_PEAK_PER_HEIGHT};
 
@@ -24,19 +26,26 @@ pub(crate) fn finish_square(
     extremes: Option<Extremes>,
 ) {
     let scale = p.height / 5.0;
+    let zero = match p.water_line {
+        WaterLine::Coast => coast::reference(field.heights()),
+        WaterLine::Generator => 0.0,
+    };
     let shift = if p.sea_level == 0.0 {
-        0.0
+        zero
     } else {
         let e = extremes.unwrap_or_else(|| min_max(field.heights(), threads));
-        water_line(p.sea_level, e.lo, e.hi)
+        zero + water_line(p.sea_level, e.lo - zero, e.hi - zero)
     };
     if shift != 0.0 || scale != 1.0 {
         map_in_place(field.heights_mut(), threads, |h| (h - shift) * scale);
     }
+    if p.water_line == WaterLine::Coast {
+        coast::lower_the_front(field);
+    }
 }
 
-/// Where `sea_level` puts the water in a field spanning `lo..=hi`: that
-/// fraction of the way from the generator's zero up to the highest point
+/// Where `sea_level` puts the water in a field spanning `lo..=hi` around
+/// the reference zero: that fraction of the way from the zero up to the highest point
 /// (`sea_level > 0`) or down to the lowest (`sea_level < 0`).
 fn water_line(sea_level: f32, lo: f32, hi: f32) -> f32 {
     if sea_level >= 0.0 {

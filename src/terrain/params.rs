@@ -3,7 +3,7 @@
 
 use super::heightfield::{MAX_EXPONENT, MIN_EXPONENT};
 use super::{SQUARE_EXTENT, TRIANGLE_EXTENT};
-use crate::settings::{Generator, Profile, Settings};
+use crate::settings::{Generator, Profile, Settings, WaterLine};
 
 /// Validated generator parameters.
 #[derive(Debug, Clone, Copy)]
@@ -17,6 +17,7 @@ pub(crate) struct Params {
     pub(crate) profile: Profile,
     pub(crate) height: f32,
     pub(crate) sea_level: f32,
+    pub(crate) water_line: WaterLine,
 }
 
 impl Params {
@@ -34,6 +35,7 @@ impl Params {
             profile: s.profile,
             height: s.height.clamp(1, 10) as f32,
             sea_level: clamp(s.sea_level, -1.0, 1.0, d.sea_level),
+            water_line: s.water_line,
         }
     }
 

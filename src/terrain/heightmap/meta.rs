@@ -18,7 +18,7 @@ use serde::Serialize;
 
 use super::error::HeightmapError;
 use super::quantise::Quantisation;
-use crate::settings::{Generator, Profile, Settings, load};
+use crate::settings::{AUTO_DETAIL_FALLBACK, Detail, Generator, Profile, Settings, load};
 
 /// Version of this key set; bumped only if a key changes meaning.
 pub const FORMAT_VERSION: u32 = 1;
@@ -110,7 +110,10 @@ impl GeneratorParams {
             contour: s.contour,
             profile: s.profile,
             height: s.height,
-            detail: s.detail,
+            detail: match s.detail {
+                Detail::Level(n) => n,
+                Detail::Auto => AUTO_DETAIL_FALLBACK,
+            },
             low_detail: s.low_detail,
             sea_level: s.sea_level,
         }
@@ -125,7 +128,7 @@ impl GeneratorParams {
         s.contour = self.contour;
         s.profile = self.profile;
         s.height = self.height;
-        s.detail = self.detail;
+        s.detail = Detail::Level(self.detail);
         s.low_detail = self.low_detail;
         s.sea_level = self.sea_level;
     }

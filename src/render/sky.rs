@@ -1,0 +1,61 @@
+//! The sky behind the land: a gradient from the zenith colour at the top to
+//! the horizon colour where the land begins, ordered-dithered so that a
+//! slow gradient across a large screen shows no bands.
+
+use super::canvas::Canvas;
+use super::colour::{Rgb, unpack};
+
+/// 4x4 Bayer thresholds, 0..16.
+const BAYER: [[u8; 4]; 4] = [[0, 8, 2, 10], [12, 4, 14, 6], [3, 11, 1, 9], [15, 7, 13, 5]];
+/// How the blend to the horizon colour speeds up towards the horizon
+/// (1 = linear; above 1 keeps the upper sky deep and brightens near the land).
+const HORIZON_CURVE: f32 = 1.6;
+
+/// The background of one frame.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Sky {
+    top: Rgb,
+    horizon: Rgb,
+    /// Frame row where the horizon colour is reached.
+    horizon_row: f32,
+}
+
+impl Sky {
+    /// A gradient from packed `top` to packed `horizon` at row `horizon_row`.
+    pub(crate) fn new(top: u32, horizon: u32, horizon_row: f32) -> Self {
+        let horizon_row = if horizon_row.is_finite() {
+            horizon_row.max(1.0)
+        } else {
+            1.0
+        };
+        Sky {
+            top: unpack(top),
+            horizon: unpack(horizon),
+            horizon_row,
+        }
+    }
+
+    /// Fills every row of `canvas`.
+    pub(crate) fn paint(&self, canvas: &mut Canvas) {
+        let clip = *canvas.clip();
+        let (x0, x1) = (clip.x0 as u32, clip.x1 as u32);
+        for y in clip.y0 as u32..clip.y1 as u32 {
+            let phases = self.row_colours(y);
+            for (px, x) in canvas.span_mut(y, x0, x1).iter_mut().zip(x0..) {
+                *px = phases[(x & 3) as usize];
+            }
+        }
+    }
+
+    /// The packed colour of row `y` at each of the four dither columns.
+    fn row_colours(&self, y: u32) -> [u32; 4] {
+        let t = (y as f32 / self.horizon_row).clamp(0.0, 1.0).powf(HORIZON_CURVE);
+        let c: Rgb = [0, 1, 2].map(|i| (self.top[i] + (self.horizon[i] - self.top[i]) * t) * 255.0);
+        let row = &BAYER[(y & 3) as usize];
+        row.map(|b| {
+            let d = (f32::from(b) + 0.5) / 16.0;
+            let ch = |v: f32| ((v + d) as u32).min(255);
+            ch(c[0]) << 16 | ch(c[1]) << 8 | ch(c[2])
+        })
+    }
+}
