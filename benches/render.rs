@@ -12,7 +12,7 @@ use mountains::terrain::{Heightfield, generate};
 fn mountain(detail: u32) -> Heightfield {
     generate(
         &Settings {
-            detail,
+            detail: mountains::settings::Detail::Level(detail),
             ..Settings::default()
         },
         42,

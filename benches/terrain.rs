@@ -7,7 +7,7 @@ use mountains::terrain::{generate, generate_into, generate_with_threads};
 fn settings(generator: Generator, detail: u32) -> Settings {
     Settings {
         generator,
-        detail,
+        detail: mountains::settings::Detail::Level(detail),
         ..Settings::default()
     }
 }

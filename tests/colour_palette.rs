@@ -2,7 +2,7 @@
 
 use glam::Vec3;
 use mountains::render::palette::Palette;
-use mountains::settings::{ColorMode, Settings};
+use mountains::settings::{ColorMode, Settings, Sun};
 use mountains::terrain::Heightfield;
 
 const FILTERS: [ColorMode; 7] = [
@@ -27,11 +27,14 @@ fn pyramid() -> Heightfield {
     f
 }
 
+/// Seed 000's palette under its own light (`sun = "classic"`); the other
+/// suns are tested in tests/colour_light.rs.
 fn palette(color: ColorMode, height: u32, relative_depth: bool) -> Palette {
     let settings = Settings {
         color,
         height,
         relative_depth,
+        sun: Sun::Classic,
         ..Settings::default()
     };
     Palette::new(&settings, &pyramid())
@@ -181,7 +184,7 @@ fn each_filter_keeps_its_hue_family() {
             away(p.light()),
             Vec3::new(0.6, 0.0, 0.8),
         ];
-        let mut colours = vec![p.sky()];
+        let mut colours = vec![p.sky().0, p.sky().1];
         for h in heights() {
             for n in normals {
                 colours.push(p.land(h * 1.2, n, 1.0));
@@ -281,7 +284,7 @@ fn wire_modes_fill_black_and_outline_in_colour() {
         let p = palette(mode, 5, true);
         assert_eq!(p.land(50.0, Vec3::Z, 1.0), 0);
         assert_eq!(p.water(5.0), 0);
-        assert_eq!(p.sky(), 0);
+        assert_eq!(p.sky(), (0, 0));
     }
     let sonar = palette(ColorMode::Sonar, 5, true);
     assert_eq!(sonar.outline_land(), 0xffffff);

@@ -247,7 +247,7 @@ fn render_open_draws_a_saved_data_set() {
 fn settings_with(seed: u64, detail: u32) -> mountains::settings::Settings {
     mountains::settings::Settings {
         seed: Some(seed),
-        detail,
+        detail: mountains::settings::Detail::Level(detail),
         ..Default::default()
     }
 }

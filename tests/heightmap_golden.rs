@@ -8,6 +8,7 @@ mod heightmap_support;
 
 use std::path::{Path, PathBuf};
 
+use mountains::settings::Detail;
 use mountains::settings::{Generator, Profile, Settings};
 use mountains::terrain::heightmap::{self, GeneratorParams, decode, encode};
 
@@ -20,7 +21,7 @@ fn golden_settings() -> Settings {
         generator: Generator::Square,
         cragginess: 96,
         profile: Profile::Peak,
-        detail: 5,
+        detail: Detail::Level(5),
         ..Settings::default()
     }
 }

@@ -5,6 +5,7 @@ mod heightmap_support;
 use std::path::Path;
 
 use heightmap_support::field;
+use mountains::settings::Detail;
 use mountains::settings::{Generator, Profile, Settings};
 use mountains::terrain::Heightfield;
 use mountains::terrain::heightmap::{
@@ -23,7 +24,7 @@ fn odd_settings() -> Settings {
         contour: 0.5,
         profile: Profile::Bay,
         height: 9,
-        detail: 6,
+        detail: Detail::Level(6),
         low_detail: true,
         sea_level: -0.125,
         ..Settings::default()

@@ -54,8 +54,10 @@ fn white_pixels(frame: &Frame) -> HashSet<(u32, u32)> {
 }
 
 fn sonar(field: &Heightfield, w: u32, h: u32) -> Frame {
+    // Oblique: `edge_pixels` projects the mesh with that view.
     let s = Settings {
         color: ColorMode::Sonar,
+        view: ViewKind::Oblique,
         ..Settings::default()
     };
     let mut frame = Frame::new(w, h).unwrap();

@@ -2,7 +2,7 @@
 
 use mountains::settings::keys::{self, KEYS};
 use mountains::settings::load::{self, DEFAULT_TOML, Problem};
-use mountains::settings::{ColorMode, Settings};
+use mountains::settings::{ColorMode, Detail, Settings};
 
 fn load_text(text: &str) -> (Settings, Vec<Problem>) {
     let mut s = Settings::default();
@@ -21,7 +21,7 @@ fn shipped_file_is_exactly_the_defaults() {
     s.roughness = 4.0;
     s.contour = 3.0;
     s.height = 9;
-    s.detail = 5;
+    s.detail = Detail::Level(5);
     s.low_detail = !s.low_detail;
     s.sea_level = 0.5;
     s.color = ColorMode::Ridges;
@@ -153,7 +153,7 @@ fn set_accepts_bare_words_and_toml_values() {
     load::apply_set(&mut s, "rotation", "90").unwrap();
     assert_eq!(
         (s.color, s.detail, s.draw_seconds, s.rotation),
-        (ColorMode::Outline, 10, 0.5, 90)
+        (ColorMode::Outline, Detail::Level(10), 0.5, 90)
     );
     let e = load::apply_set(&mut s, "rotation", "45").unwrap_err();
     assert!(e.to_string().starts_with("--set: key `rotation`"), "{e}");
@@ -176,7 +176,7 @@ fn resolve_reports_file_problems_and_refuses_a_missing_explicit_file() {
     assert_eq!(loaded.problems.len(), 1);
     assert_eq!(
         (loaded.settings.color, loaded.settings.detail),
-        (ColorMode::Red, 6)
+        (ColorMode::Red, Detail::Level(6))
     );
     let missing = load::resolve(Some(&dir.join("nope.toml")), &[], false).unwrap_err();
     assert!(missing.message.starts_with("cannot read"), "{missing}");

@@ -3,6 +3,7 @@
 
 use std::path::{Path, PathBuf};
 
+use mountains::settings::Detail;
 use mountains::settings::load::{self, DEFAULT_TOML};
 use mountains::settings::save::{self, merge};
 use mountains::settings::{ColorMode, Settings};
@@ -76,7 +77,7 @@ fn a_value_written_differently_but_equal_is_kept_as_written() {
 
 #[test]
 fn every_key_round_trips_through_the_shipped_file() {
-    use mountains::settings::{Generator, Monitors, Profile, ViewKind};
+    use mountains::settings::{Generator, Monitors, Profile, Sun, ViewKind, WaterLine};
     let s = Settings {
         seed: Some(u64::MAX),
         generator: Generator::Triangle,
@@ -86,12 +87,14 @@ fn every_key_round_trips_through_the_shipped_file() {
         contour: 0.3,
         profile: Profile::Massif,
         height: 10,
-        detail: 4,
+        detail: Detail::Level(4),
         low_detail: true,
         sea_level: -0.14,
+        water_line: WaterLine::Generator,
         color: ColorMode::Ridges,
         relative_depth: false,
         shadows: false,
+        sun: Sun::Evening,
         view: ViewKind::Perspective,
         rotation: 270,
         auto_redraw: false,

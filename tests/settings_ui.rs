@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 
 use mountains::render::Rect;
 use mountains::saved;
+use mountains::settings::Detail;
 use mountains::settings::keys::{self, KEYS, Kind, Value};
 use mountains::settings::{ColorMode, Settings, load};
 use mountains::settings_ui::layout::{Button, Hit, Layout, Part, WINDOW_H, WINDOW_W};
@@ -23,7 +24,7 @@ fn start() -> Settings {
     Settings {
         seed: None,
         cragginess: 64,
-        detail: 8,
+        detail: Detail::Auto,
         sea_level: 0.0,
         color: ColorMode::Natural,
         relative_depth: true,
@@ -367,7 +368,11 @@ fn mouse_clicks_drags_and_wheel_change_values() {
         assert_eq!(m.settings.cragginess, 128, "no drag after release");
         let dy = f64::from(l.row(row("detail")).y0 + l.px(9));
         m.handle(Input::Wheel(f64::from(t0), dy, 1), &l);
-        assert_eq!(m.settings.detail, 9, "wheel up at {scale}x");
+        assert_eq!(
+            m.settings.detail,
+            Detail::Level(4),
+            "wheel up from auto at {scale}x"
+        );
         assert_eq!(m.focused_row(), Some(row("detail")));
         let cy = f64::from(l.row(row("shadows")).y0 + l.px(9));
         m.handle(Input::Press(f64::from(m0) + 2.0, cy), &l);

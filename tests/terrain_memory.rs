@@ -4,6 +4,7 @@
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
+use mountains::settings::Detail;
 use mountains::settings::{Generator, Settings};
 use mountains::terrain::generate_with_threads;
 
@@ -46,7 +47,7 @@ fn a_4097_field_needs_at_most_a_tenth_more_than_itself() {
     for generator in [Generator::Square, Generator::Diamond, Generator::Triangle] {
         let s = Settings {
             generator,
-            detail: 12,
+            detail: Detail::Level(12),
             contour: 1.5,
             sea_level: 0.1,
             ..Settings::default()

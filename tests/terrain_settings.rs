@@ -1,5 +1,6 @@
 //! No setting, however wild, panics a generator or leaves a non-finite height.
 
+use mountains::settings::Detail;
 use mountains::settings::{Generator, Profile, Settings};
 use mountains::terrain::generate;
 use proptest::prelude::*;
@@ -51,7 +52,9 @@ proptest! {
     ) {
         let s = Settings {
             generator, profile, cragginess, elevation, roughness, contour, height,
-            detail, low_detail, sea_level,
+            detail: Detail::Level(detail),
+            low_detail,
+            sea_level,
             ..Settings::default()
         };
         let f = generate(&s, seed);
@@ -65,7 +68,7 @@ proptest! {
 fn an_out_of_range_detail_is_clamped() {
     let small = generate(
         &Settings {
-            detail: 0,
+            detail: Detail::Level(0),
             ..Settings::default()
         },
         1,
@@ -73,7 +76,7 @@ fn an_out_of_range_detail_is_clamped() {
     assert_eq!(small.size(), 17);
     let huge = generate(
         &Settings {
-            detail: u32::MAX,
+            detail: Detail::Level(u32::MAX),
             generator: Generator::Square,
             ..Settings::default()
         },

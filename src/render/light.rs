@@ -108,7 +108,10 @@ impl Lighting {
     }
 
     fn at(time: &Time, turn: f32) -> Self {
-        let (el, az) = (time.elevation.to_radians(), (time.azimuth + turn).to_radians());
+        let (el, az) = (
+            time.elevation.to_radians(),
+            (time.azimuth + turn).to_radians(),
+        );
         let sun = Vec3::new(-az.cos() * el.cos(), az.sin() * el.cos(), el.sin());
         Lighting {
             sun: sun.normalize(),

@@ -219,7 +219,6 @@ impl Palette {
     }
 }
 
-
 /// `value` if it is a positive finite number, else `fallback`.
 fn positive_or(value: f32, fallback: f32) -> f32 {
     if value.is_finite() && value > 0.0 {
@@ -254,8 +253,6 @@ fn scale_packed(c: u32, b: f32) -> u32 {
     let green = (((c & 0x0000_ff00) * k) >> 8) & 0x0000_ff00;
     red_blue | green
 }
-
-
 
 /// Rec. 709 luminance.
 fn luminance(c: Rgb) -> f32 {
@@ -467,7 +464,6 @@ fn ramp(stops: &[(f32, Rgb)], t: f32) -> Rgb {
     }
     prev_c
 }
-
 
 /// Hermite step from 0 at `e0` to 1 at `e1`.
 fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {

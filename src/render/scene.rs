@@ -5,10 +5,10 @@ use std::sync::Arc;
 
 use glam::Vec2;
 
+use super::haze::Haze;
 use super::palette::Palette;
 use super::raster::{Fixed2, to_fixed};
 use super::shadow::{self, ShadowMap};
-use super::haze::Haze;
 use super::sky::Sky;
 use super::view::View;
 use crate::settings::{ColorMode, Settings, ViewKind};
@@ -106,8 +106,7 @@ impl<'a> Scene<'a> {
         let row_top: Vec<f32> = (0..size)
             .map(|y| field.row(y).iter().fold(0.0f32, |m, &h| finite(h).max(m)))
             .collect();
-        let zmax = row_top.iter().copied().fold(0.0, f32::max);
-        let view = View::new(settings.view, size, field.extent(), zmax, width, height);
+        let view = View::fitted(settings.view, size, field.extent(), &row_top, width, height);
         let sky = backdrop(&palette, &view, style, height);
         let haze = (style == Style::Shaded && settings.view != ViewKind::Oblique)
             .then(|| Haze::new(palette.sky().1));
@@ -224,10 +223,13 @@ fn legible<'a>(field: FieldRef<'a>, settings: &Settings, width: u32, height: u32
     let mid = cells / 2.0;
     let span = (view.project(cells, mid, 0.0) - view.project(0.0, mid, 0.0)).length();
     let px = span / cells;
-    if !(px.is_finite() && px > 0.0) || px >= MIN_WIRE_CELL_PX {
+    // Low detail is what makes Sonar appealing (seed 003): larger faces,
+    // so it doubles the legible size rather than being thinned away.
+    let min_px = MIN_WIRE_CELL_PX * if settings.low_detail { 2.0 } else { 1.0 };
+    if !(px.is_finite() && px > 0.0) || px >= min_px {
         return field;
     }
-    let levels = (MIN_WIRE_CELL_PX / px).log2().ceil() as u32;
+    let levels = (min_px / px).log2().ceil() as u32;
     FieldRef::Shared(Arc::new(field.coarsened(levels)))
 }
 

@@ -49,7 +49,9 @@ impl Sky {
 
     /// The packed colour of row `y` at each of the four dither columns.
     fn row_colours(&self, y: u32) -> [u32; 4] {
-        let t = (y as f32 / self.horizon_row).clamp(0.0, 1.0).powf(HORIZON_CURVE);
+        let t = (y as f32 / self.horizon_row)
+            .clamp(0.0, 1.0)
+            .powf(HORIZON_CURVE);
         let c: Rgb = [0, 1, 2].map(|i| (self.top[i] + (self.horizon[i] - self.top[i]) * t) * 255.0);
         let row = &BAYER[(y & 3) as usize];
         row.map(|b| {

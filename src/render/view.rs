@@ -106,13 +106,32 @@ impl View {
         width: u32,
         height: u32,
     ) -> Self {
+        let zmax = if zmax.is_finite() { zmax.max(0.0) } else { 0.0 };
+        Self::fitted(kind, size, extent, &[zmax, zmax], width, height)
+    }
+
+    /// Like [`View::new`], fitted to the mountain itself: `row_top[y]` is
+    /// the highest point of grid row `y` (a box with the highest peak over
+    /// every corner leaves a wide margin where the peak is not).
+    pub fn fitted(
+        kind: ViewKind,
+        size: usize,
+        extent: f32,
+        row_top: &[f32],
+        width: u32,
+        height: u32,
+    ) -> Self {
         let steps = size.saturating_sub(1).max(1) as f32;
+        let zmax = row_top
+            .iter()
+            .copied()
+            .filter(|z| z.is_finite())
+            .fold(0.0, f32::max);
         let extent = if extent.is_finite() && extent > 0.0 {
             extent
         } else {
             steps
         };
-        let zmax = if zmax.is_finite() { zmax.max(0.0) } else { 0.0 };
         let mut view = View {
             cell: extent / steps,
             scale: 1.0,
@@ -130,9 +149,9 @@ impl View {
             }
             ViewKind::Perspective => {
                 view.camera = Some(Camera::new(extent, zmax));
-                view.fit(steps, zmax, width as f32, height as f32);
+                view.fit(steps, row_top, width as f32, height as f32);
             }
-            ViewKind::Oblique => view.fit(steps, zmax, width as f32, height as f32),
+            ViewKind::Oblique => view.fit(steps, row_top, width as f32, height as f32),
         }
         view
     }
@@ -151,17 +170,21 @@ impl View {
         }
     }
 
-    /// Chooses scale and offset so the box holding the mountain fills the frame.
-    fn fit(&mut self, steps: f32, zmax: f32, width: f32, height: f32) {
+    /// Chooses scale and offset so the mountain fills the frame: each row's
+    /// ends at sea level and at the row's highest point (`row_top`, spread
+    /// evenly from back to front when it has fewer entries than rows).
+    fn fit(&mut self, steps: f32, row_top: &[f32], width: f32, height: f32) {
         let mut lo = Vec2::splat(f32::INFINITY);
         let mut hi = Vec2::splat(f32::NEG_INFINITY);
-        for corner in 0..8 {
-            let gx = if corner & 1 == 0 { 0.0 } else { steps };
-            let gy = if corner & 2 == 0 { 0.0 } else { steps };
-            let z = if corner & 4 == 0 { 0.0 } else { zmax };
-            let p = self.unscaled(gx, gy, z);
-            lo = lo.min(p);
-            hi = hi.max(p);
+        let last = row_top.len().saturating_sub(1).max(1) as f32;
+        for (i, &top) in row_top.iter().enumerate() {
+            let gy = steps * i as f32 / last;
+            let top = if top.is_finite() { top.max(0.0) } else { 0.0 };
+            for (gx, z) in [(0.0, 0.0), (steps, 0.0), (0.0, top), (steps, top)] {
+                let p = self.unscaled(gx, gy, z);
+                lo = lo.min(p);
+                hi = hi.max(p);
+            }
         }
         let span = (hi - lo).max(Vec2::splat(1e-6));
         let room = Vec2::new(width, height) * (1.0 - 2.0 * MARGIN);

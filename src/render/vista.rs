@@ -2,7 +2,7 @@
 //! the horizon, as xmountains frames its landscapes.
 //!
 //! It is fitted to each frame, in grid widths (the camera stands centred,
-//! [`STANDOFF`] grid widths in front of the near edge, level sideways):
+//! one of [`STANDOFFS`] grid widths in front of the near edge, level sideways):
 //! - the back edge at sea level spans exactly the frame's width; the grid's
 //!   side edges splay outwards towards the camera, so they never show;
 //! - the middle of the back edge at sea level sits [`SKYLINE`] of the
@@ -18,8 +18,10 @@ use glam::Vec3;
 use super::view::Camera;
 
 /// The camera's horizontal distance in front of the near edge, in grid
-/// widths: closer magnifies the foreground more.
-const STANDOFF: f32 = 0.6;
+/// widths: closer magnifies the foreground more. Tall frames (portrait)
+/// need a closer camera to see from the back edge down to the near edge;
+/// the first distance that can is taken.
+const STANDOFFS: [f32; 6] = [0.6, 0.45, 0.32, 0.22, 0.14, 0.08];
 /// Where the back edge at sea level sits, as a fraction of the height from
 /// the top: peaks behind it rise into the sky above.
 const SKYLINE: f32 = 0.4;
@@ -42,35 +44,46 @@ pub(crate) struct Shot {
 /// The vista for a grid `extent` units wide in a `width` x `height` frame.
 pub(crate) fn frame(extent: f32, width: f32, height: f32) -> Shot {
     let (w, h) = (width.max(1.0), height.max(1.0));
-    let near = |eye_h: f32| {
-        let pitch = pitch_for(eye_h, w, h);
-        let f = focal(eye_h, pitch, w);
-        f * (angle_below(eye_h, STANDOFF) - pitch).tan() - (0.5 * h + BELOW_PX)
-    };
-    let eye_h = bisect(HEIGHTS.0, HEIGHTS.1, near);
-    let pitch = pitch_for(eye_h, w, h);
-    let eye = Vec3::new(0.5, 1.0 + STANDOFF, eye_h) * extent;
+    let last = STANDOFFS[STANDOFFS.len() - 1];
+    let standoff = STANDOFFS
+        .into_iter()
+        .find(|&s| near_below_bottom(s, HEIGHTS.1, w, h) >= 0.0)
+        .unwrap_or(last);
+    let eye_h = bisect(HEIGHTS.0, HEIGHTS.1, |e| {
+        near_below_bottom(standoff, e, w, h)
+    });
+    let pitch = pitch_for(standoff, eye_h, w, h);
+    let eye = Vec3::new(0.5, 1.0 + standoff, eye_h) * extent;
     Shot {
         camera: Camera::looking_back(eye, pitch, extent),
-        focal: focal(eye_h, pitch, w),
+        focal: focal(standoff, eye_h, pitch, w),
     }
 }
 
+/// How far below the wanted row (just below the bottom) the near edge
+/// falls, in pixels, for a camera `standoff` in front and `eye_h` high,
+/// pitched to put the back edge at [`SKYLINE`].
+fn near_below_bottom(standoff: f32, eye_h: f32, w: f32, h: f32) -> f32 {
+    let pitch = pitch_for(standoff, eye_h, w, h);
+    let f = focal(standoff, eye_h, pitch, w);
+    f * (angle_below(eye_h, standoff) - pitch).tan() - (0.5 * h + BELOW_PX)
+}
+
 /// The pitch that puts the back edge at [`SKYLINE`] for a camera `eye_h`
-/// grid widths high.
-fn pitch_for(eye_h: f32, w: f32, h: f32) -> f32 {
-    let back = angle_below(eye_h, 1.0 + STANDOFF);
+/// grid widths high and `standoff` in front.
+fn pitch_for(standoff: f32, eye_h: f32, w: f32, h: f32) -> f32 {
+    let back = angle_below(eye_h, 1.0 + standoff);
     let above_centre = (0.5 - SKYLINE) * h;
     // At pitch `back` the edge is at the centre; pitching down raises it.
-    let rise = |pitch: f32| focal(eye_h, pitch, w) * (back - pitch).tan() + above_centre;
+    let rise = |pitch: f32| focal(standoff, eye_h, pitch, w) * (back - pitch).tan() + above_centre;
     bisect(back, back + 1.4, |p| -rise(p))
 }
 
 /// Focal length (pixels per unit of x / depth, grid width 1) that makes
 /// the back edge span `w` pixels.
-fn focal(eye_h: f32, pitch: f32, w: f32) -> f32 {
+fn focal(standoff: f32, eye_h: f32, pitch: f32, w: f32) -> f32 {
     let (sin, cos) = pitch.sin_cos();
-    let back_depth = (1.0 + STANDOFF) * cos + eye_h * sin;
+    let back_depth = (1.0 + standoff) * cos + eye_h * sin;
     w * back_depth
 }
 

@@ -293,12 +293,12 @@ impl Show {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::render::palette::Palette;
+    use crate::settings::Detail;
     use std::time::Duration;
 
     fn small_settings() -> Settings {
         Settings {
-            detail: 5,
+            detail: Detail::Level(5),
             seed: Some(7),
             ..Settings::default()
         }
@@ -352,7 +352,6 @@ mod tests {
         assert_eq!((frame.width(), frame.height()), (100, 30));
         let mut full = Frame::new(100, 30).unwrap();
         let m = show.current().unwrap();
-        full.clear(Palette::new(show.settings(), &m.field).sky());
         crate::render::render_full(&m.field, show.settings(), &mut full);
         assert_eq!(frame.pixels(), full.pixels());
     }
@@ -436,7 +435,7 @@ mod tests {
         let t0 = Instant::now();
         let mut show = Show::new(small_settings(), None, pacing(), (32, 32), t0);
         let mut s = small_settings();
-        s.detail = 6;
+        s.detail = Detail::Level(6);
         assert!(show.change_settings(s, false, t0).is_empty());
         assert_eq!(show.current().unwrap().field.exponent(), 5);
         show.advance(t0);

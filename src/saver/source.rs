@@ -66,6 +66,7 @@ fn random_heightmap(dir: &Path) -> Option<Mountain> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::settings::Detail;
     use crate::terrain::Heightfield;
     use std::path::PathBuf;
 
@@ -98,7 +99,7 @@ mod tests {
         let mut field = Heightfield::flat(4, 100.0);
         field.set(5, 5, 33.0);
         let settings = Settings {
-            detail: 5,
+            detail: Detail::Level(5),
             heightmaps_dir: Some(dir.to_string_lossy().into_owned()),
             ..Settings::default()
         };
@@ -115,7 +116,7 @@ mod tests {
     fn a_broken_file_or_empty_folder_falls_back_to_generating() {
         let dir = folder("broken");
         let settings = Settings {
-            detail: 5,
+            detail: Detail::Level(5),
             heightmaps_dir: Some(dir.to_string_lossy().into_owned()),
             ..Settings::default()
         };

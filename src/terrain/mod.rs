@@ -1,8 +1,8 @@
 //! Everything that makes a mountain's heights. Pure: no windows, no clocks.
 
+mod coast;
 pub mod heightfield;
 pub mod heightmap;
-mod coast;
 mod noise;
 mod normalize;
 mod params;
@@ -205,7 +205,7 @@ mod tests {
                 for threads in [1, 2, 5] {
                     let s = Settings {
                         generator,
-                        detail,
+                        detail: crate::settings::Detail::Level(detail),
                         sea_level,
                         ..Settings::default()
                     };

@@ -5,9 +5,9 @@
 
 use super::coast;
 use super::params::Params;
-use crate::settings::WaterLine;
 use super::subdivide::Extremes;
 use super::{Heightfield, TRIANGLE_PEAK_PER_HEIGHT};
+use crate::settings::WaterLine;
 
 /// Fields smaller than this many points are processed on one thread.
 const PARALLEL_POINTS: usize = 1 << 18;

@@ -1,7 +1,7 @@
 //! Helpers shared by the terrain tests.
 #![allow(dead_code)]
 
-use mountains::settings::{Generator, Profile, Settings};
+use mountains::settings::{Detail, Generator, Profile, Settings, WaterLine};
 
 /// Every generator.
 pub const GENERATORS: [Generator; 3] = [Generator::Square, Generator::Diamond, Generator::Triangle];
@@ -9,11 +9,14 @@ pub const GENERATORS: [Generator; 3] = [Generator::Square, Generator::Diamond, G
 /// Every triangle profile.
 pub const PROFILES: [Profile; 4] = [Profile::Slope, Profile::Peak, Profile::Bay, Profile::Massif];
 
-/// Default settings with a generator and detail level.
+/// Default settings with a generator and detail level, the water line at
+/// the generator's zero: the laws below are the subdivision's, and the
+/// coast pass (tests/terrain_coast.rs) moves and lowers heights after it.
 pub fn settings(generator: Generator, detail: u32) -> Settings {
     Settings {
         generator,
-        detail,
+        detail: Detail::Level(detail),
+        water_line: WaterLine::Generator,
         ..Settings::default()
     }
 }
