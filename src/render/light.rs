@@ -51,7 +51,7 @@ const MORNING: Time = Time {
     elevation: 17.0,
     azimuth: 18.0,
     direct: [1.00, 0.90, 0.76],
-    ambient: [0.30, 0.33, 0.40],
+    ambient: [0.36, 0.39, 0.46],
     zenith: [0.27, 0.45, 0.76],
     horizon: [0.86, 0.85, 0.80],
 };
@@ -60,7 +60,7 @@ const MIDDAY: Time = Time {
     elevation: 40.0,
     azimuth: 35.0,
     direct: [1.00, 0.98, 0.94],
-    ambient: [0.29, 0.32, 0.38],
+    ambient: [0.34, 0.37, 0.43],
     zenith: [0.17, 0.36, 0.72],
     horizon: [0.72, 0.82, 0.92],
 };
@@ -69,7 +69,7 @@ const EVENING: Time = Time {
     elevation: 13.0,
     azimuth: 165.0,
     direct: [1.00, 0.74, 0.48],
-    ambient: [0.27, 0.26, 0.36],
+    ambient: [0.33, 0.31, 0.42],
     zenith: [0.16, 0.22, 0.46],
     horizon: [0.95, 0.70, 0.50],
 };

@@ -16,9 +16,16 @@ use crate::settings::COAST_SEA_SHARE;
 /// fraction of a percent, few enough to cost well under a millisecond.
 const SAMPLES: usize = 1 << 16;
 /// Share of the rows, at the front, that are lowered into the sea.
-const FRONT_BAND: f32 = 0.18;
-/// Depth the front edge is lowered to, as a fraction of the grid's width.
+const FRONT_BAND: f32 = 0.3;
+/// How far the front edge is lowered, as a fraction of the grid's width:
+/// the band is tilted down by this much, so the new shore follows the
+/// land's own contours rather than a straight line.
+const FRONT_DROP: f32 = 0.1;
+/// Depth the front edge ends at, at least, as a fraction of the grid's width.
 const FRONT_DEPTH: f32 = 0.01;
+/// Where in the band (0 back, 1 front) land still standing above the sea
+/// starts to be pressed down to [`FRONT_DEPTH`].
+const FRONT_PRESS: f32 = 0.6;
 
 /// The height with [`COAST_SEA_SHARE`] of the (sampled) heights below it.
 /// NaN heights count as the lowest.
@@ -33,11 +40,13 @@ pub(crate) fn reference(heights: &[f32]) -> f32 {
     if at.is_finite() { at } else { 0.0 }
 }
 
-/// Lowers the front rows smoothly to [`FRONT_DEPTH`] below the water line
-/// (ground already deeper keeps its depth).
+/// Tilts the front rows down by up to [`FRONT_DROP`], and presses what
+/// still stands at the very front down to [`FRONT_DEPTH`] below the water
+/// line (ground already deeper keeps its depth).
 pub(crate) fn lower_the_front(field: &mut Heightfield) {
     let n = field.size();
     let floor = -FRONT_DEPTH * field.extent();
+    let drop = FRONT_DROP * field.extent();
     let last = (n - 1).max(1) as f32;
     let heights = field.heights_mut();
     for (y, row) in heights.chunks_mut(n).enumerate() {
@@ -45,10 +54,14 @@ pub(crate) fn lower_the_front(field: &mut Heightfield) {
         if t <= 0.0 {
             continue;
         }
+        let press = smoothstep(FRONT_PRESS, 1.0, t);
         for h in row {
-            if *h > floor {
-                *h += (floor - *h) * t;
-            }
+            let tilted = *h - drop * t;
+            *h = if tilted > floor {
+                tilted + (floor - tilted) * press
+            } else {
+                tilted
+            };
         }
     }
 }
