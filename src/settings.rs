@@ -17,7 +17,8 @@ pub enum Generator {
     /// Mountain Terrain 3.0: square subdivision, cragginess halved per level.
     Square,
     /// Square subdivision in diamond-square order (edge midpoints from the
-    /// neighbouring centres), which removes the straight creases.
+    /// neighbouring centres), which removes the straight creases, started
+    /// from a 5x5 lattice of heights (xmountains' `-t`) rather than four corners.
     Diamond,
     /// Fractal Mountain Climbing: triangle subdivision on a parallelogram.
     Triangle,

@@ -14,8 +14,11 @@ const WHITE: u32 = 0x00ff_ffff;
 /// own: the pixels a correct one-pixel outline may use.
 fn edge_pixels(field: &Heightfield, w: u32, h: u32) -> HashSet<(u32, u32)> {
     let n = field.size();
-    let zmax = field.max().max(0.0);
-    let view = View::new(ViewKind::Oblique, n, field.extent(), zmax, w, h);
+    // Fitted as the renderer fits it: to each row's highest point.
+    let row_top: Vec<f32> = (0..n)
+        .map(|y| field.row(y).iter().fold(0.0f32, |m, &h| m.max(h)))
+        .collect();
+    let view = View::fitted(ViewKind::Oblique, n, field.extent(), &row_top, w, h);
     let at = |x: usize, y: usize| {
         let p = view.project(x as f32, y as f32, field.get(x, y).max(0.0));
         to_fixed(p.x, p.y)

@@ -8,7 +8,7 @@
 /// No haze nearer than this fraction of the distance to the back edge.
 const CLEAR: f32 = 0.45;
 /// Haze at the back edge (0..=1).
-const FAR: f32 = 0.55;
+const FAR: f32 = 0.45;
 /// How quickly the haze thickens with distance beyond [`CLEAR`].
 const DENSITY: f32 = 2.2;
 

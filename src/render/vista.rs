@@ -6,7 +6,9 @@
 //! - the back edge at sea level spans exactly the frame's width; the grid's
 //!   side edges splay outwards towards the camera, so they never show;
 //! - the middle of the back edge at sea level sits [`SKYLINE`] of the
-//!   height from the top, leaving the sky above for the peaks to rise into;
+//!   height from the top, leaving the sky above for the peaks to rise into
+//!   (lower, down to [`SKYLINE_LOWEST`], when the land is so tall it would
+//!   fill the sky: see `View::fitted`);
 //! - the near edge at sea level falls just below the bottom.
 //!
 //! The width fixes the focal length for a given pitch and camera height;
@@ -24,7 +26,9 @@ use super::view::Camera;
 const STANDOFFS: [f32; 6] = [0.6, 0.45, 0.32, 0.22, 0.14, 0.08];
 /// Where the back edge at sea level sits, as a fraction of the height from
 /// the top: peaks behind it rise into the sky above.
-const SKYLINE: f32 = 0.4;
+pub(crate) const SKYLINE: f32 = 0.4;
+/// The lowest the back edge goes, for land so tall it would fill the sky.
+pub(crate) const SKYLINE_LOWEST: f32 = 0.72;
 /// How far below the bottom row the near edge falls, in pixels.
 const BELOW_PX: f32 = 2.0;
 /// Camera heights tried, in grid widths. Above the upper end a higher camera
@@ -41,18 +45,19 @@ pub(crate) struct Shot {
     pub focal: f32,
 }
 
-/// The vista for a grid `extent` units wide in a `width` x `height` frame.
-pub(crate) fn frame(extent: f32, width: f32, height: f32) -> Shot {
+/// The vista for a grid `extent` units wide in a `width` x `height` frame,
+/// the back edge `skyline` of the height from the top.
+pub(crate) fn frame(extent: f32, width: f32, height: f32, skyline: f32) -> Shot {
     let (w, h) = (width.max(1.0), height.max(1.0));
     let last = STANDOFFS[STANDOFFS.len() - 1];
     let standoff = STANDOFFS
         .into_iter()
-        .find(|&s| near_below_bottom(s, HEIGHTS.1, w, h) >= 0.0)
+        .find(|&s| near_below_bottom(s, HEIGHTS.1, w, h, skyline) >= 0.0)
         .unwrap_or(last);
     let eye_h = bisect(HEIGHTS.0, HEIGHTS.1, |e| {
-        near_below_bottom(standoff, e, w, h)
+        near_below_bottom(standoff, e, w, h, skyline)
     });
-    let pitch = pitch_for(standoff, eye_h, w, h);
+    let pitch = pitch_for(standoff, eye_h, w, h, skyline);
     let eye = Vec3::new(0.5, 1.0 + standoff, eye_h) * extent;
     Shot {
         camera: Camera::looking_back(eye, pitch, extent),
@@ -63,17 +68,17 @@ pub(crate) fn frame(extent: f32, width: f32, height: f32) -> Shot {
 /// How far below the wanted row (just below the bottom) the near edge
 /// falls, in pixels, for a camera `standoff` in front and `eye_h` high,
 /// pitched to put the back edge at [`SKYLINE`].
-fn near_below_bottom(standoff: f32, eye_h: f32, w: f32, h: f32) -> f32 {
-    let pitch = pitch_for(standoff, eye_h, w, h);
+fn near_below_bottom(standoff: f32, eye_h: f32, w: f32, h: f32, skyline: f32) -> f32 {
+    let pitch = pitch_for(standoff, eye_h, w, h, skyline);
     let f = focal(standoff, eye_h, pitch, w);
     f * (angle_below(eye_h, standoff) - pitch).tan() - (0.5 * h + BELOW_PX)
 }
 
 /// The pitch that puts the back edge at [`SKYLINE`] for a camera `eye_h`
-/// grid widths high and `standoff` in front.
-fn pitch_for(standoff: f32, eye_h: f32, w: f32, h: f32) -> f32 {
+/// grid widths high and `standoff` in front (`skyline` of the height from the top).
+fn pitch_for(standoff: f32, eye_h: f32, w: f32, h: f32, skyline: f32) -> f32 {
     let back = angle_below(eye_h, 1.0 + standoff);
-    let above_centre = (0.5 - SKYLINE) * h;
+    let above_centre = (0.5 - skyline) * h;
     // At pitch `back` the edge is at the centre; pitching down raises it.
     let rise = |pitch: f32| focal(standoff, eye_h, pitch, w) * (back - pitch).tan() + above_centre;
     bisect(back, back + 1.4, |p| -rise(p))

@@ -29,7 +29,8 @@ use crate::settings::{Generator, Settings};
 /// coarser grid is the finer one with points left out).
 /// - Square and Diamond (Mountain Terrain 3.0): the corners start within
 ///   `±elevation/2` (elevation 100 by default) and cragginess adds at most
-///   `±cragginess` more. With the defaults (cragginess 96) the highest peak
+///   `±cragginess` more. Diamond starts instead from a 5x5 lattice (see
+///   `square::LATTICE_DEPTH`), which gives every map several massifs. With the defaults (cragginess 96) the highest peak
 ///   averages about 45 above the generator's zero (30-70 by seed) and the
 ///   relief about 90, over an extent of [`SQUARE_EXTENT`]: peaks 16-24% of
 ///   the width, tall enough to read as mountains from the vista's low
@@ -156,7 +157,12 @@ fn subdivide_all<P: Put>(
                 ordering,
                 cragginess: p.cragginess,
             };
-            rule.set_corners(heights, size, p.elevation, &noise, put);
+            let first_depth = if p.generator == Generator::Square {
+                rule.set_corners(heights, size, p.elevation, &noise, put);
+                0
+            } else {
+                rule.set_lattice(heights, size, p.elevation, &noise, put)
+            };
             let job = Job {
                 rule: &rule,
                 put,
@@ -166,7 +172,7 @@ fn subdivide_all<P: Put>(
                 // Only a moved water line needs the extremes.
                 extremes: p.sea_level != 0.0,
             };
-            subdivide::subdivide(heights, size, 0, &job)
+            subdivide::subdivide(heights, size, first_depth, &job)
         }
         Generator::Triangle => {
             let rule = triangle::Triangle::new(p.roughness, p.profile);

@@ -55,6 +55,49 @@ impl Square {
     }
 }
 
+/// Depth of the diamond generator's starting lattice: 2^depth + 1 points
+/// a side (5x5), as xmountains starts from a coarse lattice (`-t`). Four
+/// corners make one tilted plane with a hill on it; a lattice makes
+/// several ranges, bays and valleys across the width.
+pub(crate) const LATTICE_DEPTH: u32 = 2;
+
+impl Square {
+    /// Sets the points of the [`LATTICE_DEPTH`] lattice to uniform values in
+    /// `[-a, a)`, with `a` half the elevation plus the displacements the
+    /// levels above the lattice would have added; returns the depth the
+    /// subdivision goes on from. Grids too coarse for the lattice keep the
+    /// four corners.
+    pub(crate) fn set_lattice<P: Put>(
+        &self,
+        heights: &mut [f32],
+        size: usize,
+        elevation: f32,
+        noise: &Noise,
+        put: &P,
+    ) -> u32 {
+        let last = size - 1;
+        let step = last >> LATTICE_DEPTH;
+        if step < 2 {
+            self.set_corners(heights, size, elevation, noise, put);
+            return 0;
+        }
+        let reach = 0.5 * elevation + (0..LATTICE_DEPTH).map(|d| self.amplitude(d)).sum::<f32>();
+        for y in (0..=last).step_by(step) {
+            for x in (0..=last).step_by(step) {
+                put.put(
+                    &mut heights[y * size + x],
+                    LATTICE_SPREAD * reach * noise.at(x, y),
+                );
+            }
+        }
+        LATTICE_DEPTH
+    }
+}
+
+/// The lattice's values use this share of their full reach: independent
+/// neighbours a quarter of the width apart would otherwise make cliffs.
+const LATTICE_SPREAD: f32 = 0.3;
+
 impl Rule for Square {
     /// `cragginess / 2^(depth + 1)`, halved by exact powers of two.
     fn amplitude(&self, depth: u32) -> f32 {
