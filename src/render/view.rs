@@ -185,7 +185,7 @@ impl View {
                 })
                 .fold(f32::INFINITY, f32::min);
             let short = SKY_ROOM * height - top;
-            if !(short > 0.5) || skyline >= vista::SKYLINE_LOWEST {
+            if short.is_nan() || short <= 0.5 || skyline >= vista::SKYLINE_LOWEST {
                 break;
             }
             skyline = (skyline + short / height).min(vista::SKYLINE_LOWEST);
