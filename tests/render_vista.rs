@@ -21,8 +21,34 @@ const ASPECTS: [(u32, u32); 6] = [
     (3840, 2160),
 ];
 
+/// A vista of a 1025 grid 250 wide whose land rises at most `zmax`.
+fn vista_over(zmax: f32, w: u32, h: u32) -> View {
+    View::new(ViewKind::Vista, 1025, 250.0, zmax, w, h)
+}
+
+/// A vista of low land: the framing rules without the room for tall peaks.
 fn vista(w: u32, h: u32) -> View {
-    View::new(ViewKind::Vista, 1025, 250.0, 60.0, w, h)
+    vista_over(10.0, w, h)
+}
+
+#[test]
+fn tall_land_keeps_a_strip_of_sky() {
+    for (w, h) in ASPECTS {
+        let (low, tall) = (vista(w, h), vista_over(80.0, w, h));
+        let hf = h as f32;
+        let low_edge = low.project(512.0, 0.0, 0.0).y;
+        let tall_edge = tall.project(512.0, 0.0, 0.0).y;
+        assert!(tall_edge >= low_edge, "{w}x{h}: the back edge moved up");
+        let top = (0..=1024)
+            .step_by(16)
+            .map(|gy| tall.project(512.0, gy as f32, 80.0).y)
+            .fold(f32::INFINITY, f32::min);
+        let lowest = tall_edge >= 0.71 * hf;
+        assert!(
+            top >= 0.11 * hf || lowest,
+            "{w}x{h}: land reaches {top} of {hf} rows"
+        );
+    }
 }
 
 #[test]

@@ -79,9 +79,10 @@ fn near_below_bottom(standoff: f32, eye_h: f32, w: f32, h: f32, skyline: f32) ->
 fn pitch_for(standoff: f32, eye_h: f32, w: f32, h: f32, skyline: f32) -> f32 {
     let back = angle_below(eye_h, 1.0 + standoff);
     let above_centre = (0.5 - skyline) * h;
-    // At pitch `back` the edge is at the centre; pitching down raises it.
+    // At pitch `back` the edge is at the centre; pitching down raises it,
+    // pitching up (a skyline below the centre) lowers it.
     let rise = |pitch: f32| focal(standoff, eye_h, pitch, w) * (back - pitch).tan() + above_centre;
-    bisect(back, back + 1.4, |p| -rise(p))
+    bisect(back - 1.4, back + 1.4, |p| -rise(p))
 }
 
 /// Focal length (pixels per unit of x / depth, grid width 1) that makes
