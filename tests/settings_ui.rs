@@ -203,6 +203,8 @@ fn only_drawing_keys_repaint_the_current_mountain() {
     assert_eq!(m.handle(Input::Right, &l), Effect::Repaint);
     focus_on(&mut m, &l, "relative_depth");
     assert_eq!(m.handle(Input::Space, &l), Effect::Repaint);
+    focus_on(&mut m, &l, "sun");
+    assert_eq!(m.handle(Input::Right, &l), Effect::Repaint);
     focus_on(&mut m, &l, "low_detail");
     assert_eq!(m.handle(Input::Space, &l), Effect::Regenerate);
     focus_on(&mut m, &l, "cragginess");

@@ -79,9 +79,16 @@ pub enum Effect {
 
 /// Keys whose change is shown on the current preview mountain at once; the
 /// rest shape the next mountain. Seed 003 names Color, Relative Depth and
-/// Low Detail; shadows, view and rotation only change how the same heights
-/// are drawn, so they follow at once too.
-const REPAINT_KEYS: &[&str] = &["color", "relative_depth", "shadows", "view", "rotation"];
+/// Low Detail; shadows, sun, view and rotation only change how the same
+/// heights are drawn, so they follow at once too.
+const REPAINT_KEYS: &[&str] = &[
+    "color",
+    "relative_depth",
+    "shadows",
+    "sun",
+    "view",
+    "rotation",
+];
 
 /// The settings screen's state.
 #[derive(Debug, Clone)]
