@@ -74,6 +74,10 @@ const EVENING: Time = Time {
     horizon: [0.95, 0.70, 0.50],
 };
 
+/// The sky light left on ground that sees none of the sky (light bounced
+/// off the land around it).
+const SKY_FLOOR: f32 = 0.35;
+
 /// Degrees either way a varied sun's azimuth may turn from its time's.
 const AZIMUTH_JITTER: f32 = 20.0;
 
@@ -127,12 +131,19 @@ impl Lighting {
     /// direct light (1 in the sun, 0 in cast shadow), per channel.
     #[inline]
     pub fn on(&self, normal: Vec3, lit: f32) -> Rgb {
+        self.on_under(normal, lit, 1.0)
+    }
+
+    /// [`Lighting::on`] for a face that sees `seen` (0..=1) of the sky.
+    #[inline]
+    pub fn on_under(&self, normal: Vec3, lit: f32, seen: f32) -> Rgb {
         let direct = unit(normal.dot(self.sun)) * unit(lit);
-        // Faces turned to the sky see more of it than steep ones.
+        // Faces turned to the sky see more of it than steep ones, and open
+        // ground more than a valley floor.
         let sky = if self.classic {
             1.0
         } else {
-            0.6 + 0.4 * unit(normal.z)
+            (0.6 + 0.4 * unit(normal.z)) * (SKY_FLOOR + (1.0 - SKY_FLOOR) * unit(seen))
         };
         [0, 1, 2].map(|i| self.direct[i] * direct + self.ambient[i] * sky)
     }

@@ -16,6 +16,7 @@ pub mod ridges;
 mod scene;
 pub mod shadow;
 mod sky;
+mod skylight;
 mod strip;
 pub mod view;
 mod vista;

@@ -144,6 +144,13 @@ impl Palette {
     /// floor); otherwise they get only the sky's light.
     #[inline]
     pub fn land(&self, mean_height: f32, normal: Vec3, lit: f32) -> u32 {
+        self.land_in(mean_height, normal, lit, 1.0)
+    }
+
+    /// [`Palette::land`] for a face that sees `sky` (0..=1) of the sky: the
+    /// sky's light on it scales with that share (the classic light ignores it).
+    #[inline]
+    pub fn land_in(&self, mean_height: f32, normal: Vec3, lit: f32, sky: f32) -> u32 {
         // Clamped as floats (NaN stays NaN and casts to bin 0).
         let h = (mean_height * self.height_scale + jitter(mean_height))
             .clamp(0.0, (HEIGHT_BINS - 1) as f32) as i32 as usize;
@@ -151,7 +158,7 @@ impl Palette {
             as usize;
         let base = self.land[s * HEIGHT_BINS + h];
         if self.coloured {
-            return scale_packed3(base, self.lighting.on(normal, lit));
+            return scale_packed3(base, self.lighting.on_under(normal, lit, sky));
         }
         let b = self.brightness(normal, lit);
         if self.offset == 0.0 {

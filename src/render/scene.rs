@@ -10,6 +10,7 @@ use super::palette::Palette;
 use super::raster::{Fixed2, to_fixed};
 use super::shadow::{self, ShadowMap};
 use super::sky::Sky;
+use super::skylight::SkyLight;
 use super::view::View;
 use crate::settings::{ColorMode, Settings, ViewKind};
 use crate::terrain::Heightfield;
@@ -48,6 +49,8 @@ pub(crate) struct Vert {
     pub h: f32,
     /// Direct light reaching the point.
     pub lit: f32,
+    /// Share of the sky the point sees.
+    pub sky: f32,
     /// How far the air has faded the point towards the horizon colour, in 1/256ths.
     pub haze: u32,
 }
@@ -80,6 +83,8 @@ pub(crate) struct Scene<'a> {
     /// Aerial haze, if the view has depth and the style has colours.
     pub haze: Option<Haze>,
     shadow: Option<ShadowMap>,
+    /// The sky each point sees, under the non-classic light.
+    skylight: Option<SkyLight>,
     pub style: Style,
     /// Cells `0..split` of a row are drawn left to right, then the rest right
     /// to left, so faces nearer the camera's column overwrite farther ones.
@@ -102,6 +107,8 @@ impl<'a> Scene<'a> {
         let palette = Palette::new(settings, &field);
         let shaded = matches!(style, Style::Shaded | Style::Mono);
         let shadow = (shaded && settings.shadows).then(|| shadow::cast(&field, palette.light()));
+        let skylight =
+            (style == Style::Shaded && !palette.lighting().classic).then(|| SkyLight::new(&field));
         let size = field.size();
         let row_top: Vec<f32> = (0..size)
             .map(|y| field.row(y).iter().fold(0.0f32, |m, &h| finite(h).max(m)))
@@ -125,6 +132,7 @@ impl<'a> Scene<'a> {
             sky,
             haze,
             shadow,
+            skylight,
             style,
             split,
             row_top,
@@ -150,6 +158,7 @@ impl<'a> Scene<'a> {
                 p: to_fixed(p.x, p.y),
                 h,
                 lit: self.shadow.as_ref().map_or(1.0, |s| s.lit(x, y)),
+                sky: self.skylight.as_ref().map_or(1.0, |s| s.at(x, y)),
                 haze: self
                     .haze
                     .as_ref()

@@ -27,6 +27,7 @@ struct Corner {
     h: f32,
     p: Fixed2,
     lit: f32,
+    sky: f32,
     haze: u32,
 }
 
@@ -37,6 +38,7 @@ impl Corner {
             h: v.h,
             p: v.p,
             lit: v.lit,
+            sky: v.sky,
             haze: v.haze,
         }
     }
@@ -149,6 +151,7 @@ impl Scene<'_> {
             h: 0.0,
             p: self.project_sea(g),
             lit: a.lit + (b.lit - a.lit) * f,
+            sky: a.sky + (b.sky - a.sky) * f,
             haze: (a.haze as f32 + (b.haze as f32 - a.haze as f32) * f) as u32,
         }
     }
@@ -181,7 +184,11 @@ impl Scene<'_> {
             return;
         }
         let mean = (c[0].h + c[1].h + c[2].h) / 3.0;
-        let colour = || self.hazed(self.palette.land(mean.max(0.0), normal(), lit), &c);
+        let sky = (c[0].sky + c[1].sky + c[2].sky) / 3.0;
+        let colour = || {
+            let land = self.palette.land_in(mean.max(0.0), normal(), lit, sky);
+            self.hazed(land, &c)
+        };
         self.paint(canvas, [c[0].p, c[1].p, c[2].p], colour);
     }
 
