@@ -73,3 +73,34 @@ impl SkyLight {
         top + (bottom - top) * ty
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A V-shaped valley running back to front between two ridges.
+    fn valley() -> Heightfield {
+        let mut f = Heightfield::flat(6, 64.0);
+        let n = f.size();
+        for y in 0..n {
+            for x in 0..n {
+                f.set(x, y, (x as f32 - 32.0).abs() * 2.0);
+            }
+        }
+        f
+    }
+
+    #[test]
+    fn a_valley_floor_sees_less_sky_than_the_ridge_above_it() {
+        let sky = SkyLight::new(&valley());
+        let (floor, ridge) = (sky.at(32, 32), sky.at(0, 32));
+        assert!(floor < 0.8 * ridge, "floor {floor}, ridge {ridge}");
+        assert!((0.0..=1.0).contains(&floor) && (0.0..=1.0).contains(&ridge));
+    }
+
+    #[test]
+    fn flat_ground_sees_the_whole_sky() {
+        let sky = SkyLight::new(&Heightfield::flat(5, 32.0));
+        assert!((sky.at(16, 16) - 1.0).abs() < 1e-6);
+    }
+}
