@@ -145,6 +145,15 @@ impl ApplicationHandler<UserEvent> for App {
         if let Err(e) = self.open_windows(event_loop) {
             self.fail(event_loop, e);
         }
+        // The cursor's place at start is the origin a move is measured
+        // from. Taken lazily, a move that arrives before the first motion
+        // event (Wine may deliver none until then) would become the origin.
+        #[cfg(windows)]
+        if self.mode == AppMode::Fullscreen {
+            if let Some((x, y)) = super::fullscreen_win32::cursor_position() {
+                self.wake.moved_to(x.into(), y.into());
+            }
+        }
     }
 
     fn window_event(&mut self, event_loop: &ActiveEventLoop, id: WindowId, event: WindowEvent) {
@@ -176,6 +185,12 @@ impl ApplicationHandler<UserEvent> for App {
             {
                 self.key(event_loop, i, &event.logical_key)
             }
+            // Raw motion may not arrive (Wine before its first one); the
+            // window's own pointer event is the second witness.
+            #[cfg(windows)]
+            WindowEvent::CursorMoved { .. } if self.mode == AppMode::Fullscreen => {
+                self.cursor_moved_win32(event_loop);
+            }
             WindowEvent::MouseInput {
                 state: ElementState::Pressed,
                 ..
@@ -193,14 +208,7 @@ impl ApplicationHandler<UserEvent> for App {
             // winit passes absolute devices' coordinates on as deltas, and
             // Wine sends one such motion when the window appears: the
             // cursor's position is what counts.
-            if super::fullscreen_win32::take_display_change() {
-                self.wake.reset_origin();
-            }
-            if let Some((x, y)) = super::fullscreen_win32::cursor_position() {
-                if self.wake.moved_to(x.into(), y.into()) {
-                    self.trace.ended_by(&(x, y));
-                    event_loop.exit();
-                }
+            if self.cursor_moved_win32(event_loop) {
                 return;
             }
         }
@@ -280,6 +288,23 @@ impl App {
     fn fail(&mut self, event_loop: &ActiveEventLoop, error: SaverError) {
         self.error.get_or_insert(error);
         event_loop.exit();
+    }
+
+    /// Full screen on Windows: ends the saver if the cursor is further than
+    /// the threshold from where it started. False when its place is unknown.
+    #[cfg(windows)]
+    fn cursor_moved_win32(&mut self, event_loop: &ActiveEventLoop) -> bool {
+        if super::fullscreen_win32::take_display_change() {
+            self.wake.reset_origin();
+        }
+        let Some((x, y)) = super::fullscreen_win32::cursor_position() else {
+            return false;
+        };
+        if self.wake.moved_to(x.into(), y.into()) {
+            self.trace.ended_by(&(x, y));
+            event_loop.exit();
+        }
+        true
     }
 
     fn open_windows(&mut self, event_loop: &ActiveEventLoop) -> Result<(), SaverError> {
