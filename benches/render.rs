@@ -1,9 +1,11 @@
-//! Speed of a complete frame (`render_full`), per grid size, frame size and mode.
+//! Speed of a complete frame (`render_full`, what `mountains render` and
+//! the saver's redraws run), per grid size, frame size and mode; and of the
+//! PNG encoding `render` and the P key's screenshots run.
 //!
 //! `cargo bench --bench render -- --warm-up-time 1 --measurement-time 4`
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use mountains::render::{Frame, render_full};
+use mountains::render::{Frame, detail, render_full};
 use mountains::settings::{ColorMode, Settings};
 use mountains::terrain::{Heightfield, generate};
 
@@ -44,9 +46,28 @@ fn bench(c: &mut Criterion) {
     }
 }
 
+/// The default frame as the program draws it: default settings with the
+/// detail `auto` picks for this frame size.
+fn bench_default(c: &mut Criterion) {
+    for (name, w, h) in [
+        ("default_auto_1080p", 1920, 1080),
+        ("default_auto_2160p", 3840, 2160),
+    ] {
+        let settings = detail::for_frame(&Settings::default(), w, h);
+        let field = generate(&settings, 42);
+        let mut frame = Frame::new(w, h).unwrap();
+        c.bench_function(name, |b| {
+            b.iter(|| render_full(&field, &settings, &mut frame))
+        });
+        c.bench_function(&format!("{name}_png"), |b| {
+            b.iter(|| mountains::snapshot::encode_png(&frame).unwrap())
+        });
+    }
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(10);
-    targets = bench
+    targets = bench, bench_default
 }
 criterion_main!(benches);

@@ -2,9 +2,8 @@
 
 use std::path::Path;
 use std::process::ExitCode;
-use std::sync::Arc;
 
-use crate::render::{Frame, Painter};
+use crate::render::{Frame, render_full};
 use crate::settings::{Settings, load, paths};
 use crate::terrain::{self, Heightfield, heightmap};
 
@@ -52,8 +51,7 @@ pub fn render(
         Ok(m) => m,
         Err(e) => return fail(&e),
     };
-    let mut painter = Painter::new(Arc::new(field), settings, width, height);
-    painter.step(&mut frame, usize::MAX);
+    render_full(&field, settings, &mut frame);
     if let Err(e) = crate::snapshot::write_png(output, &frame) {
         return fail(&e);
     }

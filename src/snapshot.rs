@@ -11,12 +11,15 @@ pub fn encode_png(frame: &Frame) -> Result<Vec<u8>, png::EncodingError> {
     let mut encoder = png::Encoder::new(&mut bytes, frame.width(), frame.height());
     encoder.set_color(png::ColorType::Rgb);
     encoder.set_depth(png::BitDepth::Eight);
+    // fdeflate: a 1080p frame in about a tenth of the default's time,
+    // for files some 10-20% larger; a screensaver's pictures are many
+    // and seldom kept.
+    encoder.set_compression(png::Compression::Fast);
     let mut writer = encoder.write_header()?;
-    let rgb: Vec<u8> = frame
-        .pixels()
-        .iter()
-        .flat_map(|&p| [(p >> 16) as u8, (p >> 8) as u8, p as u8])
-        .collect();
+    let mut rgb = Vec::with_capacity(frame.pixels().len() * 3);
+    for &p in frame.pixels() {
+        rgb.extend_from_slice(&[(p >> 16) as u8, (p >> 8) as u8, p as u8]);
+    }
     writer.write_image_data(&rgb)?;
     writer.finish()?;
     Ok(bytes)

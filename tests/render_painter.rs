@@ -88,6 +88,30 @@ fn stepping_equals_the_full_frame_in_every_mode() {
     }
 }
 
+/// `finish` (what the saver's redraw runs) draws the same pixels whether the
+/// painter is fresh (all cores) or part-way (the rest, strip by strip).
+#[test]
+fn finish_equals_the_full_frame_fresh_or_part_way() {
+    let f = field(5);
+    for color in [ColorMode::Natural, ColorMode::Sonar, ColorMode::Ridges] {
+        let s = settings(color, ViewKind::Vista, 0);
+        let all = full(&f, &s, 160, 120);
+        for begun in [0, 5] {
+            let mut frame = Frame::new(160, 120).unwrap();
+            frame.clear(0x00ab_cdef);
+            let mut p = Painter::new(Arc::new(f.clone()), &s, 160, 120);
+            p.step(&mut frame, begun);
+            let damage = p.finish(&mut frame);
+            assert!(p.is_done(), "{color:?}: not done after finish");
+            assert!(
+                frame == all,
+                "{color:?}: finish after {begun} strips differs"
+            );
+            assert!(!damage.is_empty(), "{color:?}: finish reported no damage");
+        }
+    }
+}
+
 #[test]
 fn damage_covers_every_changed_pixel() {
     let f = field(5);

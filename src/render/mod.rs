@@ -18,6 +18,7 @@ pub mod shadow;
 mod sky;
 mod skylight;
 mod strip;
+mod tones;
 pub mod view;
 mod vista;
 

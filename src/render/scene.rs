@@ -11,6 +11,7 @@ use super::raster::{Fixed2, to_fixed};
 use super::shadow::{self, ShadowMap};
 use super::sky::Sky;
 use super::skylight::SkyLight;
+use super::tones::Tones;
 use super::view::View;
 use crate::settings::{ColorMode, Settings, ViewKind};
 use crate::terrain::Heightfield;
@@ -83,8 +84,8 @@ pub(crate) struct Scene<'a> {
     /// Aerial haze, if the view has depth and the style has colours.
     pub haze: Option<Haze>,
     shadow: Option<ShadowMap>,
-    /// The sky each point sees, under the non-classic light.
-    skylight: Option<SkyLight>,
+    /// The sky each point sees and its haze.
+    tones: Tones,
     pub style: Style,
     /// Cells `0..split` of a row are drawn left to right, then the rest right
     /// to left, so faces nearer the camera's column overwrite farther ones.
@@ -117,6 +118,7 @@ impl<'a> Scene<'a> {
         let sky = backdrop(&palette, &view, style, height);
         let haze = (style == Style::Shaded && settings.view != ViewKind::Oblique)
             .then(|| Haze::new(palette.sky().1));
+        let tones = Tones::new(&field, &view, skylight.as_ref(), haze.as_ref());
         let cells = size - 1;
         let (split, sees_right, sees_front) = match view.camera_column() {
             Some(cx) => {
@@ -132,7 +134,7 @@ impl<'a> Scene<'a> {
             sky,
             haze,
             shadow,
-            skylight,
+            tones,
             style,
             split,
             row_top,
@@ -150,19 +152,16 @@ impl<'a> Scene<'a> {
     pub(crate) fn project_row(&self, y: usize, out: &mut Vec<Vert>) {
         out.clear();
         let row = self.field.row(y);
+        let first = y * row.len();
         out.extend(row.iter().enumerate().map(|(x, &h)| {
             let h = finite(h);
-            let (gx, gy, z) = (x as f32, y as f32, h.max(0.0));
-            let p = self.view.project(gx, gy, z);
+            let p = self.view.project(x as f32, y as f32, h.max(0.0));
             Vert {
                 p: to_fixed(p.x, p.y),
                 h,
                 lit: self.shadow.as_ref().map_or(1.0, |s| s.lit(x, y)),
-                sky: self.skylight.as_ref().map_or(1.0, |s| s.at(x, y)),
-                haze: self
-                    .haze
-                    .as_ref()
-                    .map_or(0, |f| f.amount(self.view.distance(gx, gy, z))),
+                sky: self.tones.sky(first + x),
+                haze: self.tones.haze(first + x),
             }
         }));
     }
@@ -205,7 +204,7 @@ fn backdrop(palette: &Palette, view: &View, style: Style, height: u32) -> Sky {
 
 /// Heights that are not numbers are drawn at sea level.
 #[inline]
-fn finite(h: f32) -> f32 {
+pub(crate) fn finite(h: f32) -> f32 {
     if h.is_finite() { h } else { 0.0 }
 }
 

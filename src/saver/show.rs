@@ -250,7 +250,7 @@ impl Show {
         let (Some(painter), Some(frame)) = (self.painter.as_mut(), self.frame.as_mut()) else {
             return Rect::default();
         };
-        painter.step(frame, usize::MAX);
+        painter.finish(frame);
         let bounds = frame.bounds();
         self.slideshow.finish_now(now);
         self.prepare_next();
