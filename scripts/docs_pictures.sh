@@ -6,7 +6,10 @@ set -eu
 cd "$(dirname "$0")/.."
 cargo build --release -q
 m=target/release/mountains
-r() { out=$1; shift; "$m" render --size 480x270 --set seed=1997 "$@" -o "docs/$out.png" >/dev/null; }
+# The defaults, whatever the preferences file of whoever runs this says.
+empty=$(mktemp)
+trap 'rm -f "$empty"' EXIT
+r() { out=$1; shift; "$m" render --config "$empty" --size 480x270 --set seed=1997 "$@" -o "docs/$out.png" >/dev/null; }
 r natural
 r morning --set sun=morning
 r evening --set sun=evening

@@ -247,6 +247,32 @@ fn a_varied_sun_follows_the_mountain_and_varies_between_mountains() {
     assert!(fixed.sun.x > 0.0, "evening light comes from the right");
 }
 
+/// A varied sun turns from its time's place only towards the viewer's side:
+/// never further behind the range (a low sun from behind leaves the whole
+/// foreground in one dark shadow).
+#[test]
+fn a_varied_sun_never_stands_further_behind_than_its_time() {
+    let s = Settings {
+        detail: Detail::Level(6),
+        ..Settings::default()
+    };
+    let field = terrain::generate(&s, 1);
+    let times = [Sun::Morning, Sun::Midday, Sun::Evening].map(|t| Lighting::new(t, &field));
+    for seed in 1..=40u64 {
+        let varied = Lighting::new(Sun::Varied, &terrain::generate(&s, seed));
+        let time = times
+            .iter()
+            .find(|t| t.horizon == varied.horizon)
+            .expect("a varied sun is one of the times of day");
+        assert!(
+            varied.sun.y <= time.sun.y + 1e-6,
+            "seed {seed}: sun {:?} stands further back than {:?}",
+            varied.sun,
+            time.sun
+        );
+    }
+}
+
 #[test]
 fn auto_detail_follows_the_frame() {
     let s = Settings::default();

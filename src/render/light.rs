@@ -78,7 +78,9 @@ const EVENING: Time = Time {
 /// off the land around it).
 const SKY_FLOOR: f32 = 0.35;
 
-/// Degrees either way a varied sun's azimuth may turn from its time's.
+/// Degrees a varied sun's azimuth may turn from its time's, always towards
+/// the viewer's side: turned the other way, a low evening sun from behind
+/// the range throws the whole foreground into one near-black shadow.
 const AZIMUTH_JITTER: f32 = 20.0;
 
 impl Lighting {
@@ -93,7 +95,8 @@ impl Lighting {
             Sun::Varied => {
                 let time = [&MORNING, &MIDDAY, &EVENING][(draw % 3) as usize];
                 let unit = ((draw >> 8) & 0xffff) as f32 / 65535.0;
-                (time, (2.0 * unit - 1.0) * AZIMUTH_JITTER)
+                let frontwards = if time.azimuth > 90.0 { 1.0 } else { -1.0 };
+                (time, frontwards * unit * AZIMUTH_JITTER)
             }
         };
         Self::at(time, turn)
