@@ -453,8 +453,7 @@ impl App {
 
     fn resize(&mut self, event_loop: &ActiveEventLoop, i: usize, size: PhysicalSize<u32>) {
         let screen = &mut self.screens[i];
-        let current = screen.show.frame().map(|f| (f.width(), f.height()));
-        if current == Some((size.width, size.height)) {
+        if screen.show.size() == (size.width, size.height) {
             return;
         }
         let damage = screen

@@ -204,8 +204,8 @@ impl Embedded {
                 Notice::Exposed => exposed = true,
             }
         }
-        let current = self.show.frame().map(|f| (f.width(), f.height()));
-        if let Some(size) = size.filter(|&s| Some(s) != current) {
+        let current = self.show.size();
+        if let Some(size) = size.filter(|&s| s != current) {
             self.show.resize(size, Instant::now());
             exposed = true;
         }

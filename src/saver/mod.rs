@@ -32,6 +32,7 @@ pub mod heads_x11;
 pub mod input;
 pub mod libcheck;
 pub mod present;
+mod redraw;
 pub mod show;
 pub mod signals;
 pub mod slideshow;

@@ -3,8 +3,9 @@
 
 use std::sync::Arc;
 use std::thread::JoinHandle;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
+use super::redraw::{Drawn, Redraw};
 use super::slideshow::{Due, Pacing, Slideshow};
 use super::source;
 use crate::render::{Frame, Painter, Rect, detail};
@@ -39,6 +40,10 @@ enum Next {
     Pending(JoinHandle<Mountain>),
 }
 
+/// How often the event loop looks whether a redraw is finished: a frame
+/// takes tens of milliseconds, and a look costs next to nothing.
+const REDRAW_POLL: Duration = Duration::from_millis(4);
+
 /// The slide show of one window: what is on screen and what comes next.
 pub struct Show {
     settings: Settings,
@@ -47,7 +52,11 @@ pub struct Show {
     current: Option<Mountain>,
     next: Next,
     frame: Option<Frame>,
+    /// The window's size: the frame's, or the one a redraw is drawing for.
+    size: (u32, u32),
     painter: Option<Painter>,
+    /// A complete redraw under way; the old frame stays up until it is done.
+    redraw: Option<Redraw>,
     slideshow: Slideshow,
     /// Number of the slide on screen, counted from 0: picks its source.
     slide: u64,
@@ -72,7 +81,9 @@ impl Show {
             current: Some(first),
             next: Next::None,
             frame: None,
+            size,
             painter: None,
+            redraw: None,
             slideshow: Slideshow::new(pacing, 0, now),
             slide: 0,
         };
@@ -89,7 +100,9 @@ impl Show {
             current: None,
             next: Next::None,
             frame: Frame::new(size.0, size.1),
+            size,
             painter: None,
+            redraw: None,
             slideshow: Slideshow::new(pacing, 0, now),
             slide: 0,
         }
@@ -112,12 +125,21 @@ impl Show {
 
     /// When this show next needs `tick`; `None`: not until an event arrives.
     pub fn wake_at(&self, now: Instant) -> Option<Instant> {
+        if self.redraw.is_some() {
+            return Some(now + REDRAW_POLL);
+        }
         self.painter.as_ref()?;
         self.slideshow.wake_at(now)
     }
 
     /// Does what is due at `now` and returns the rectangle that changed.
     pub fn tick(&mut self, now: Instant) -> Rect {
+        if self.redraw.as_ref().is_some_and(|r| !r.is_done()) {
+            return Rect::default();
+        }
+        if self.redraw.is_some() {
+            return self.settle(now);
+        }
         let (Some(painter), Some(frame)) = (self.painter.as_mut(), self.frame.as_mut()) else {
             return Rect::default();
         };
@@ -147,6 +169,8 @@ impl Show {
             Next::Pending(handle) => handle.join().ok(),
             Next::None => None,
         };
+        // A redraw of the old mountain still under way is not wanted now.
+        self.redraw = None;
         self.current = Some(next.unwrap_or_else(|| self.make_next_now()));
         self.slide += 1;
         let size = self.size();
@@ -175,14 +199,31 @@ impl Show {
         self.advance(now)
     }
 
-    /// Fits the show to a new window size and redraws the mountain fully at once.
+    /// Fits the show to a new window size: the mountain is redrawn whole on
+    /// other threads, and shown by the `tick` after it is done.
     pub fn resize(&mut self, size: (u32, u32), now: Instant) -> Rect {
+        self.size = size;
         if self.current.is_none() {
             self.frame = Frame::new(size.0, size.1);
             return self.frame.as_ref().map(Frame::bounds).unwrap_or_default();
         }
-        self.start_drawing(size, now);
-        self.redraw_now(now)
+        self.begin_redraw(now)
+    }
+
+    /// Waits for a redraw under way, if any, and shows it: the rectangle
+    /// that changed (empty when there was none).
+    pub fn settle(&mut self, now: Instant) -> Rect {
+        let Some(redraw) = self.redraw.take() else {
+            return Rect::default();
+        };
+        match redraw.wait() {
+            Some(drawn) => self.show_redrawn(drawn, now),
+            // The drawing thread failed: draw here, strip by strip.
+            None => {
+                self.start_drawing(self.size, now);
+                self.tick(now)
+            }
+        }
     }
 
     /// Pauses or resumes the drawing and the hold.
@@ -206,17 +247,41 @@ impl Show {
             self.prepare_next();
         }
         if redraw && self.current.is_some() {
-            let size = self.size();
-            self.start_drawing(size, now);
-            return self.redraw_now(now);
+            return self.begin_redraw(now);
         }
         Rect::default()
     }
 
-    fn size(&self) -> (u32, u32) {
-        self.frame
-            .as_ref()
-            .map_or((0, 0), |f| (f.width(), f.height()))
+    /// The size this show draws for (the window's); the frame on screen
+    /// keeps the old size until a redraw for a new one is done.
+    pub fn size(&self) -> (u32, u32) {
+        self.size
+    }
+
+    /// Starts redrawing the current mountain whole at the show's size; the
+    /// drawing under way stops where it is and the old frame stays up.
+    fn begin_redraw(&mut self, now: Instant) -> Rect {
+        let Some(mountain) = self.current.as_ref() else {
+            return Rect::default();
+        };
+        self.painter = None;
+        match Redraw::start(mountain.field.clone(), &self.settings, self.size) {
+            Ok(redraw) => {
+                self.redraw = Some(redraw);
+                Rect::default()
+            }
+            Err(drawn) => self.show_redrawn(drawn, now),
+        }
+    }
+
+    /// Puts a finished redraw on screen and starts the hold.
+    fn show_redrawn(&mut self, drawn: Drawn, now: Instant) -> Rect {
+        self.frame = drawn.frame;
+        self.slideshow.restart(drawn.painter.strips_total(), now);
+        self.painter = Some(drawn.painter);
+        self.slideshow.finish_now(now);
+        self.prepare_next();
+        self.frame.as_ref().map(Frame::bounds).unwrap_or_default()
     }
 
     /// Clears the frame (made at `size`) and plans drawing the current mountain into it.
@@ -245,18 +310,6 @@ impl Show {
         frame.bounds()
     }
 
-    /// Draws every remaining strip now and starts the hold.
-    fn redraw_now(&mut self, now: Instant) -> Rect {
-        let (Some(painter), Some(frame)) = (self.painter.as_mut(), self.frame.as_mut()) else {
-            return Rect::default();
-        };
-        painter.finish(frame);
-        let bounds = frame.bounds();
-        self.slideshow.finish_now(now);
-        self.prepare_next();
-        bounds
-    }
-
     /// Starts generating the next mountain in the background, once per hold.
     fn prepare_next(&mut self) {
         if !matches!(self.next, Next::None) || self.opened.is_some() {
@@ -282,11 +335,7 @@ impl Show {
 
     /// The settings with `detail = "auto"` fitted to this window's size.
     fn generator_settings(&self) -> Settings {
-        let (w, h) = self
-            .frame
-            .as_ref()
-            .map_or((0, 0), |f| (f.width(), f.height()));
-        detail::for_frame(&self.settings, w, h)
+        detail::for_frame(&self.settings, self.size.0, self.size.1)
     }
 }
 
@@ -338,7 +387,9 @@ mod tests {
     fn resize_redraws_fully_at_the_new_size() {
         let t0 = Instant::now();
         let mut show = Show::new(small_settings(), None, pacing(), (64, 48), t0);
-        let damage = show.resize((100, 30), t0);
+        assert!(show.resize((100, 30), t0).is_empty(), "drawn before done");
+        assert_eq!(show.size(), (100, 30));
+        let damage = show.settle(t0);
         assert_eq!(
             damage,
             Rect {
@@ -363,11 +414,49 @@ mod tests {
         show.tick(t0 + Duration::from_millis(1000));
         let t1 = t0 + Duration::from_millis(1200);
         show.resize((80, 60), t1);
+        show.settle(t1);
         assert!(
             show.tick(t1).is_empty(),
             "drew again right after the resize"
         );
         assert_eq!(show.wake_at(t1), Some(t1 + Duration::from_secs(2)));
+    }
+
+    /// The event loop is not held up by a redraw: the old picture stays
+    /// up, the show asks to be looked at again soon, and a later tick puts
+    /// the new frame up.
+    #[test]
+    fn a_redraw_runs_beside_the_event_loop_and_a_tick_shows_it() {
+        let t0 = Instant::now();
+        let mut show = Show::new(small_settings(), None, pacing(), (64, 48), t0);
+        show.tick(t0 + Duration::from_millis(1000));
+        let t1 = t0 + Duration::from_millis(1200);
+        assert!(show.resize((90, 40), t1).is_empty());
+        let old = show.frame().map(|f| (f.width(), f.height()));
+        assert_eq!(
+            old,
+            Some((64, 48)),
+            "the old frame left before the new one was done"
+        );
+        assert_eq!(show.wake_at(t1), Some(t1 + REDRAW_POLL));
+        let mut damage = Rect::default();
+        // No clock: a tick shows the redraw once its thread is done.
+        while damage.is_empty() {
+            std::thread::yield_now();
+            damage = show.tick(t1);
+        }
+        assert_eq!((damage.x1, damage.y1), (90, 40));
+        let mut full = Frame::new(90, 40).unwrap();
+        crate::render::render_full(&show.current().unwrap().field, show.settings(), &mut full);
+        assert!(
+            show.frame() == Some(&full),
+            "the redraw differs from a full frame"
+        );
+        assert_eq!(
+            show.wake_at(t1),
+            Some(t1 + Duration::from_secs(2)),
+            "not held"
+        );
     }
 
     #[test]
@@ -376,7 +465,8 @@ mod tests {
         let mut show = Show::new(small_settings(), None, pacing(), (0, 0), t0);
         assert!(show.frame().is_none());
         assert!(show.tick(t0 + Duration::from_secs(5)).is_empty());
-        assert!(!show.resize((10, 10), t0).is_empty());
+        show.resize((10, 10), t0);
+        assert!(!show.settle(t0).is_empty());
     }
 
     #[test]

@@ -1,0 +1,63 @@
+//! A complete redraw of the mountain on screen, after a resize or a change
+//! of colours, drawn on other threads (on all cores) while the event loop
+//! goes on answering input and the old picture stays up.
+
+use std::sync::Arc;
+use std::thread::JoinHandle;
+
+use crate::render::{Frame, Painter};
+use crate::settings::Settings;
+use crate::terrain::Heightfield;
+
+/// A finished redraw: the frame (none for a window without area) and the
+/// painter that drew it, done.
+pub struct Drawn {
+    /// The new pixels.
+    pub frame: Option<Frame>,
+    /// The painter, every strip drawn.
+    pub painter: Painter,
+}
+
+/// A redraw under way.
+pub struct Redraw {
+    handle: JoinHandle<Drawn>,
+}
+
+impl Redraw {
+    /// Starts drawing `field` under `settings` into a new `size` frame on
+    /// another thread; without a thread it is drawn here and given back.
+    pub fn start(
+        field: Arc<Heightfield>,
+        settings: &Settings,
+        size: (u32, u32),
+    ) -> Result<Self, Drawn> {
+        let (theirs, their_settings) = (field.clone(), settings.clone());
+        let spawned = std::thread::Builder::new()
+            .name("redraw".into())
+            .spawn(move || draw(theirs, &their_settings, size));
+        match spawned {
+            Ok(handle) => Ok(Redraw { handle }),
+            Err(_) => Err(draw(field, settings, size)),
+        }
+    }
+
+    /// True once the redraw is finished (`wait` will not block).
+    pub fn is_done(&self) -> bool {
+        self.handle.is_finished()
+    }
+
+    /// The finished redraw, waiting for it if need be; `None` if it failed.
+    pub fn wait(self) -> Option<Drawn> {
+        self.handle.join().ok()
+    }
+}
+
+/// Draws a whole frame: in bands on all cores (`Painter::finish`).
+fn draw(field: Arc<Heightfield>, settings: &Settings, size: (u32, u32)) -> Drawn {
+    let mut painter = Painter::new(field, settings, size.0, size.1);
+    let mut frame = Frame::new(size.0, size.1);
+    if let Some(frame) = frame.as_mut() {
+        painter.finish(frame);
+    }
+    Drawn { frame, painter }
+}
