@@ -11,10 +11,11 @@ pub fn encode_png(frame: &Frame) -> Result<Vec<u8>, png::EncodingError> {
     let mut encoder = png::Encoder::new(&mut bytes, frame.width(), frame.height());
     encoder.set_color(png::ColorType::Rgb);
     encoder.set_depth(png::BitDepth::Eight);
-    // fdeflate: a 1080p frame in about a tenth of the default's time,
-    // for files some 10-20% larger; a screensaver's pictures are many
-    // and seldom kept.
-    encoder.set_compression(png::Compression::Fast);
+    // fdeflate with the Up filter on every row: a 1080p frame in about a
+    // tenth of the default's time, for files some 10-20% larger (2-9% more
+    // than choosing each row's filter, which cost 4 ms of a 90 ms `render`);
+    // a screensaver's pictures are many and seldom kept.
+    encoder.set_compression(png::Compression::Fastest);
     let mut writer = encoder.write_header()?;
     let mut rgb = Vec::with_capacity(frame.pixels().len() * 3);
     for &p in frame.pixels() {

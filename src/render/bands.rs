@@ -1,8 +1,11 @@
-//! The full frame drawn in horizontal bands, shared out among threads.
+//! The full frame drawn in bands of columns, shared out among threads.
 //!
-//! Every band runs the whole painter's order but only touches its own rows,
-//! so each pixel receives the same writes in the same order as when one
-//! thread draws everything: the result does not depend on the thread count.
+//! Every band runs the whole painter's order but only touches its own
+//! columns, so each pixel receives the same writes in the same order as when
+//! one thread draws everything: the result does not depend on the thread
+//! count. Bands of columns, not rows: in the vista a strip spans much of the
+//! frame's height but only a few cells of it reach a given column, so a band
+//! walks and projects only those (`Scene::cells_reaching`).
 
 use std::sync::Mutex;
 
@@ -13,12 +16,19 @@ use super::scene::Scene;
 
 /// Most threads used; more bands would mostly repeat per-strip work.
 const MAX_THREADS: usize = 8;
-/// Bands per thread. The work is far from even down the frame (a dense
-/// mountain above, flat sea below), so the frame is cut into several bands
-/// per thread and each thread takes the next band left when it is done.
+/// Bands per thread: the work is not even across the frame (land in the
+/// middle, a plain margin at a side in the classic views), so there are
+/// more bands than threads and each thread takes the next band left.
 const BANDS_PER_THREAD: usize = 2;
-/// Bands thinner than this are not worth a thread.
-const MIN_BAND_ROWS: u32 = 16;
+/// Bands narrower than this are not worth a thread.
+const MIN_BAND_COLUMNS: u32 = 64;
+
+/// One band: its first column, its width and its own pixels (row by row).
+struct Band {
+    x0: u32,
+    width: u32,
+    pixels: Vec<u32>,
+}
 
 /// Draws every strip of `scene` into `frame`, background first.
 pub(crate) fn render(scene: &Scene, frame: &mut Frame) {
@@ -26,66 +36,65 @@ pub(crate) fn render(scene: &Scene, frame: &mut Frame) {
     let threads = std::thread::available_parallelism()
         .map_or(1, |n| n.get())
         .min(MAX_THREADS);
-    let bands = (threads * BANDS_PER_THREAD).min((height / MIN_BAND_ROWS).max(1) as usize);
-    let bands = if threads < 2 { 1 } else { bands };
-    let cuts = cut_rows(scene, height, bands);
-    let strips = 0..scene.cells();
-    let mut rest = frame.pixels_mut();
-    let mut pieces = Vec::with_capacity(cuts.len() + 1);
-    let mut y0 = 0;
-    for &y1 in cuts.iter().chain(std::iter::once(&height)) {
-        let (band, tail) = rest.split_at_mut(((y1 - y0) * width) as usize);
-        pieces.push((band, y0));
-        rest = tail;
-        y0 = y1;
+    let bands = (threads * BANDS_PER_THREAD).min((width / MIN_BAND_COLUMNS).max(1) as usize);
+    if threads < 2 || bands < 2 {
+        let mut canvas = Canvas::new(frame.pixels_mut(), width, 0);
+        draw(scene, &mut canvas, &mut Rows::new(), width);
+        return;
     }
-    let draw = |(band, y0): (&mut [u32], u32), rows: &mut Rows| {
-        let mut canvas = Canvas::new(band, width, y0);
-        scene.sky.paint(&mut canvas);
-        draw_strips(scene, &mut canvas, rows, strips.clone());
-    };
-    let workers = threads.min(pieces.len());
-    let queue = Mutex::new(pieces.into_iter());
+    let cuts: Vec<u32> = (0..=bands)
+        .map(|b| (u64::from(width) * b as u64 / bands as u64) as u32)
+        .collect();
+    let queue: Vec<(u32, u32)> = cuts.windows(2).map(|w| (w[0], w[1] - w[0])).collect();
+    let queue = Mutex::new(queue.into_iter());
+    let done = Mutex::new(Vec::with_capacity(bands));
     let work = || {
         let mut rows = Rows::new();
         loop {
             // The lock is held only to take the next band.
             let next = queue.lock().map_or(None, |mut q| q.next());
-            match next {
-                Some(piece) => draw(piece, &mut rows),
-                None => break,
+            let Some((x0, w)) = next else { break };
+            let mut pixels = vec![0u32; (w * height) as usize];
+            draw(
+                scene,
+                &mut Canvas::window(&mut pixels, x0, w, 0),
+                &mut rows,
+                width,
+            );
+            if let Ok(mut done) = done.lock() {
+                done.push(Band {
+                    x0,
+                    width: w,
+                    pixels,
+                });
             }
         }
     };
     let work = &work;
-    if workers < 2 {
-        work();
-        return;
-    }
     std::thread::scope(|s| {
-        for _ in 1..workers {
+        for _ in 1..threads.min(bands) {
             s.spawn(work);
         }
         work();
     });
+    let done = done.into_inner().unwrap_or_default();
+    for band in &done {
+        copy_band(band, frame);
+    }
 }
 
-/// Rows where the bands meet (ascending, each in `1..height`), chosen so each
-/// band holds about as many strips: the strips' middles split into quantiles.
-fn cut_rows(scene: &Scene, height: u32, bands: usize) -> Vec<u32> {
-    if bands < 2 {
-        return Vec::new();
+/// The sky, then every strip, into `canvas`.
+fn draw(scene: &Scene, canvas: &mut Canvas, rows: &mut Rows, frame_width: u32) {
+    scene.sky.paint(canvas);
+    draw_strips(scene, canvas, rows, 0..scene.cells(), frame_width);
+}
+
+/// Puts a band's pixels into its columns of `frame`.
+fn copy_band(band: &Band, frame: &mut Frame) {
+    let width = frame.width() as usize;
+    let (x0, w) = (band.x0 as usize, band.width as usize);
+    let rows = frame.pixels_mut().chunks_exact_mut(width);
+    for (row, from) in rows.zip(band.pixels.chunks_exact(w)) {
+        row[x0..x0 + w].copy_from_slice(from);
     }
-    let mut middles: Vec<i64> = (0..scene.cells())
-        .map(|s| {
-            let (lo, hi) = scene.strip_rows(s);
-            lo / 2 + hi / 2
-        })
-        .collect();
-    middles.sort_unstable();
-    let mut cuts: Vec<u32> = (1..bands)
-        .map(|b| middles[b * middles.len() / bands].clamp(1, height as i64 - 1) as u32)
-        .collect();
-    cuts.dedup();
-    cuts
 }

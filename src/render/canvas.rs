@@ -1,16 +1,18 @@
-//! A band of frame rows to draw into, with the damage it collects.
+//! A rectangle of frame pixels to draw into, with the damage it collects.
 //!
-//! The parallel full frame gives each thread its own band; stepping uses one
-//! band that is the whole frame. Either way a pixel only ever receives the
-//! writes of one band, in painter's order, so the results are identical.
+//! The parallel full frame gives each thread its own band of columns;
+//! stepping uses one canvas that is the whole frame. Either way a pixel only
+//! ever receives the writes of one canvas, in painter's order, so the results
+//! are identical.
 
 use super::frame::Rect;
 use super::raster::Clip;
 
-/// Rows `y0..y1` of a frame `width` pixels wide.
+/// Columns `x0..x0 + width` of rows `y0..` of a frame, stored row by row.
 pub(crate) struct Canvas<'a> {
     pixels: &'a mut [u32],
     width: u32,
+    x0: u32,
     y0: u32,
     clip: Clip,
     damage: Rect,
@@ -19,14 +21,20 @@ pub(crate) struct Canvas<'a> {
 impl<'a> Canvas<'a> {
     /// `pixels` holds rows `y0..` of the frame, whole rows.
     pub(crate) fn new(pixels: &'a mut [u32], width: u32, y0: u32) -> Self {
+        Self::window(pixels, 0, width, y0)
+    }
+
+    /// `pixels` holds columns `x0..x0 + width` of rows `y0..` of the frame.
+    pub(crate) fn window(pixels: &'a mut [u32], x0: u32, width: u32, y0: u32) -> Self {
         let rows = pixels.len() as u32 / width.max(1);
         Canvas {
             pixels,
             width,
+            x0,
             y0,
             clip: Clip {
-                x0: 0,
-                x1: width as i64,
+                x0: x0 as i64,
+                x1: (x0 + width) as i64,
                 y0: y0 as i64,
                 y1: (y0 + rows) as i64,
             },
@@ -64,7 +72,8 @@ impl<'a> Canvas<'a> {
     pub(crate) fn span_mut(&mut self, y: u32, x0: u32, x1: u32) -> &mut [u32] {
         self.touch(x0, y, x1, y + 1);
         let row = ((y - self.y0) * self.width) as usize;
-        &mut self.pixels[row + x0 as usize..row + x1 as usize]
+        let (a, b) = ((x0 - self.x0) as usize, (x1 - self.x0) as usize);
+        &mut self.pixels[row + a..row + b]
     }
 
     /// Adds the pixels of the fixed-point box `lo..=hi` (the pixels holding
@@ -83,7 +92,7 @@ impl<'a> Canvas<'a> {
     /// to the damage: the caller has covered it with `touch_box`.
     #[inline]
     pub(crate) fn plot(&mut self, x: u32, y: u32, color: u32) {
-        let i = ((y - self.y0) * self.width + x) as usize;
+        let i = ((y - self.y0) * self.width + (x - self.x0)) as usize;
         self.pixels[i] = color;
     }
 }

@@ -33,7 +33,11 @@ impl Haze {
     /// Haze at `distance` (fraction of the back edge's), in 1/256ths.
     #[inline]
     pub(crate) fn amount(&self, distance: f32) -> u32 {
-        let d = (distance - CLEAR).max(0.0);
+        let d = distance - CLEAR;
+        // The nearer half of the land is clear: no `exp` for it (nor for NaN).
+        if d.is_nan() || d <= 0.0 {
+            return 0;
+        }
         let h = FAR * (1.0 - (-DENSITY * d).exp()) / self.norm;
         (h.clamp(0.0, 1.0) * 256.0) as u32
     }

@@ -12,6 +12,7 @@ pub mod light;
 pub mod painter;
 pub mod palette;
 pub mod raster;
+mod reach;
 pub mod ridges;
 mod scene;
 pub mod shadow;

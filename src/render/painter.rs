@@ -1,5 +1,6 @@
 //! The strip-by-strip painter: a state machine that draws a mountain back to front.
 
+use std::ops::Range;
 use std::sync::Arc;
 
 use super::bands;
@@ -27,12 +28,13 @@ enum How {
     Ridges(Ridges),
 }
 
-/// Two projected grid rows, reused from strip to strip.
+/// Two projected grid rows, reused from strip to strip; only the points a
+/// strip's cells need are projected.
 pub(crate) struct Rows {
     top: Vec<Vert>,
     bottom: Vec<Vert>,
-    /// The grid row `bottom` holds, if any.
-    bottom_row: Option<usize>,
+    /// The grid row `bottom` holds, if any, and which of its points.
+    bottom_row: Option<(usize, Range<usize>)>,
 }
 
 impl Rows {
@@ -44,15 +46,26 @@ impl Rows {
         }
     }
 
-    /// Makes `top` and `bottom` grid rows `s` and `s + 1`.
-    fn load(&mut self, scene: &Scene, s: usize) {
-        if self.bottom_row == Some(s) {
-            std::mem::swap(&mut self.top, &mut self.bottom);
-        } else {
-            scene.project_row(s, &mut self.top);
+    /// Makes `top` and `bottom` hold points `xs` of grid rows `s` and `s + 1`.
+    fn load(&mut self, scene: &Scene, s: usize, xs: Range<usize>) {
+        let n = scene.cells() + 1;
+        self.top.resize(n, Vert::default());
+        self.bottom.resize(n, Vert::default());
+        match self.bottom_row.take() {
+            Some((row, had)) if row == s => {
+                std::mem::swap(&mut self.top, &mut self.bottom);
+                // Project only the points the last strip did not need.
+                scene.project_points(
+                    s,
+                    xs.start..had.start.clamp(xs.start, xs.end),
+                    &mut self.top,
+                );
+                scene.project_points(s, had.end.clamp(xs.start, xs.end)..xs.end, &mut self.top);
+            }
+            _ => scene.project_points(s, xs.clone(), &mut self.top),
         }
-        scene.project_row(s + 1, &mut self.bottom);
-        self.bottom_row = Some(s + 1);
+        scene.project_points(s + 1, xs.clone(), &mut self.bottom);
+        self.bottom_row = Some((s + 1, xs));
     }
 }
 
@@ -112,7 +125,7 @@ impl Painter {
                 if start == 0 {
                     scene.sky.paint(&mut canvas);
                 }
-                draw_strips(scene, &mut canvas, rows, start..end);
+                draw_strips(scene, &mut canvas, rows, start..end, self.width);
                 canvas.damage()
             }
             How::Ridges(ridges) => {
@@ -147,23 +160,37 @@ impl Painter {
 }
 
 /// Draws `strips` of `scene` into `canvas`, skipping strips that cannot
-/// touch the canvas's rows.
+/// touch the canvas's rows. A canvas narrower than the `frame_width` walks
+/// only the cells that can reach its columns (filled styles; the lines of
+/// Sonar and Outline are cheap and walk every cell).
 pub(crate) fn draw_strips(
     scene: &Scene,
     canvas: &mut Canvas,
     rows: &mut Rows,
-    strips: std::ops::Range<usize>,
+    strips: Range<usize>,
+    frame_width: u32,
 ) {
     let clip = *canvas.clip();
+    let narrow = clip.x0 > 0 || clip.x1 < i64::from(frame_width);
+    let n = scene.cells() + 1;
     for s in strips {
         let (lo, hi) = scene.strip_rows(s);
         if hi < clip.y0 || lo >= clip.y1 {
             continue;
         }
-        rows.load(scene, s);
+        let filled = matches!(scene.style, Style::Shaded | Style::Mono);
+        let cells = if narrow && filled {
+            scene.cells_reaching(s, &clip)
+        } else {
+            0..scene.cells()
+        };
+        if cells.is_empty() {
+            continue;
+        }
+        rows.load(scene, s, cells.start..(cells.end + 1).min(n));
         let (top, bottom) = (&rows.top[..], &rows.bottom[..]);
         match scene.style {
-            Style::Shaded | Style::Mono => scene.fill_strip(canvas, s, top, bottom),
+            Style::Shaded | Style::Mono => scene.fill_strip(canvas, s, cells, top, bottom),
             Style::Sonar => scene.edge_strip(canvas, s, top, bottom, true),
             Style::Outline => scene.edge_strip(canvas, s, top, bottom, false),
         }

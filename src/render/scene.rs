@@ -91,7 +91,7 @@ pub(crate) struct Scene<'a> {
     /// to left, so faces nearer the camera's column overwrite farther ones.
     pub split: usize,
     /// Highest point of each row, at least sea level.
-    row_top: Vec<f32>,
+    pub(super) row_top: Vec<f32>,
     /// Whether the right and front cut faces (skirts) face the viewer.
     pub sees_right: bool,
     pub sees_front: bool,
@@ -148,22 +148,22 @@ impl<'a> Scene<'a> {
         self.field.size() - 1
     }
 
-    /// Projects grid row `y` into `out`.
-    pub(crate) fn project_row(&self, y: usize, out: &mut Vec<Vert>) {
-        out.clear();
+    /// Projects points `xs` of grid row `y` into the same items of `out`
+    /// (which holds a whole row); the rest of `out` is left as it was.
+    pub(crate) fn project_points(&self, y: usize, xs: std::ops::Range<usize>, out: &mut [Vert]) {
         let row = self.field.row(y);
         let first = y * row.len();
-        out.extend(row.iter().enumerate().map(|(x, &h)| {
-            let h = finite(h);
+        for x in xs {
+            let h = finite(row[x]);
             let p = self.view.project(x as f32, y as f32, h.max(0.0));
-            Vert {
+            out[x] = Vert {
                 p: to_fixed(p.x, p.y),
                 h,
                 lit: self.shadow.as_ref().map_or(1.0, |s| s.lit(x, y)),
                 sky: self.tones.sky(first + x),
                 haze: self.tones.haze(first + x),
-            }
-        }));
+            };
+        }
     }
 
     /// Fixed-point screen position of a point between grid points, at sea level.

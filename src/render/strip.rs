@@ -45,23 +45,32 @@ impl Corner {
 }
 
 impl Scene<'_> {
-    /// Draws strip `s` filled: its cells in drawing order, then the skirts.
-    /// `top` and `bottom` are grid rows `s` and `s + 1`, projected.
-    pub(crate) fn fill_strip(&self, canvas: &mut Canvas, s: usize, top: &[Vert], bottom: &[Vert]) {
-        let cells = self.cells();
-        for x in 0..self.split {
+    /// Draws `cells` of strip `s` filled, in drawing order, then the skirts
+    /// below them. `top` and `bottom` are grid rows `s` and `s + 1`,
+    /// projected at least at the points of `cells`.
+    pub(crate) fn fill_strip(
+        &self,
+        canvas: &mut Canvas,
+        s: usize,
+        cells: std::ops::Range<usize>,
+        top: &[Vert],
+        bottom: &[Vert],
+    ) {
+        let last = self.cells();
+        let split = self.split.clamp(cells.start, cells.end);
+        for x in cells.start..split {
             self.fill_cell(canvas, s, x, top, bottom, true);
         }
-        for x in (self.split..cells).rev() {
+        for x in (split..cells.end).rev() {
             self.fill_cell(canvas, s, x, top, bottom, false);
         }
-        if self.sees_right {
-            let a = Corner::at(cells, s, &top[cells]);
-            let b = Corner::at(cells, s + 1, &bottom[cells]);
+        if self.sees_right && cells.end == last {
+            let a = Corner::at(last, s, &top[last]);
+            let b = Corner::at(last, s + 1, &bottom[last]);
             self.fill_skirt(canvas, a, b, Vec3::X);
         }
-        if self.sees_front && s + 1 == cells {
-            for x in 0..cells {
+        if self.sees_front && s + 1 == last {
+            for x in cells {
                 let a = Corner::at(x, s + 1, &bottom[x]);
                 let b = Corner::at(x + 1, s + 1, &bottom[x + 1]);
                 self.fill_skirt(canvas, a, b, Vec3::NEG_Y);

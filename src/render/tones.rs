@@ -37,15 +37,17 @@ impl Tones {
         let mut mist = vec![0u16; if haze.is_some() { n * n } else { 0 }];
         let fill_rows = |y0: usize, sky: &mut [f32], mist: &mut [u16]| {
             if let Some(s) = skylight {
-                for (i, out) in sky.iter_mut().enumerate() {
-                    *out = s.at(i % n, y0 + i / n);
+                for (dy, row) in sky.chunks_mut(n).enumerate() {
+                    s.fill_row(y0 + dy, row);
                 }
             }
             if let Some(h) = haze {
-                for (i, out) in mist.iter_mut().enumerate() {
-                    let (x, y) = (i % n, y0 + i / n);
-                    let z = finite(field.get(x, y)).max(0.0);
-                    *out = h.amount(view.distance(x as f32, y as f32, z)) as u16;
+                for (dy, row) in mist.chunks_mut(n).enumerate() {
+                    let y = y0 + dy;
+                    for ((x, out), &z) in row.iter_mut().enumerate().zip(field.row(y)) {
+                        let z = finite(z).max(0.0);
+                        *out = h.amount(view.distance(x as f32, y as f32, z)) as u16;
+                    }
                 }
             }
         };

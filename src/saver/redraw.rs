@@ -25,19 +25,20 @@ pub struct Redraw {
 
 impl Redraw {
     /// Starts drawing `field` under `settings` into a new `size` frame on
-    /// another thread; without a thread it is drawn here and given back.
+    /// another thread; without a thread it is drawn here and given back
+    /// (boxed: a finished frame is the rare, large case).
     pub fn start(
         field: Arc<Heightfield>,
         settings: &Settings,
         size: (u32, u32),
-    ) -> Result<Self, Drawn> {
+    ) -> Result<Self, Box<Drawn>> {
         let (theirs, their_settings) = (field.clone(), settings.clone());
         let spawned = std::thread::Builder::new()
             .name("redraw".into())
             .spawn(move || draw(theirs, &their_settings, size));
         match spawned {
             Ok(handle) => Ok(Redraw { handle }),
-            Err(_) => Err(draw(field, settings, size)),
+            Err(_) => Err(Box::new(draw(field, settings, size))),
         }
     }
 

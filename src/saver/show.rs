@@ -270,7 +270,7 @@ impl Show {
                 self.redraw = Some(redraw);
                 Rect::default()
             }
-            Err(drawn) => self.show_redrawn(drawn, now),
+            Err(drawn) => self.show_redrawn(*drawn, now),
         }
     }
 
