@@ -107,9 +107,15 @@ impl<'a> Scene<'a> {
         }
         let palette = Palette::new(settings, &field);
         let shaded = matches!(style, Style::Shaded | Style::Mono);
-        let shadow = (shaded && settings.shadows).then(|| shadow::cast(&field, palette.light()));
-        let skylight =
-            (style == Style::Shaded && !palette.lighting().classic).then(|| SkyLight::new(&field));
+        let wants_sky = style == Style::Shaded && !palette.lighting().classic;
+        // The two sweeps are independent: the sky's runs beside the sun's.
+        let (shadow, skylight) = std::thread::scope(|s| {
+            let sky = wants_sky.then(|| s.spawn(|| SkyLight::new(&field)));
+            let shadow =
+                (shaded && settings.shadows).then(|| shadow::cast(&field, palette.light()));
+            let skylight = sky.map(|t| t.join().unwrap_or_else(|p| std::panic::resume_unwind(p)));
+            (shadow, skylight)
+        });
         let size = field.size();
         let row_top: Vec<f32> = (0..size)
             .map(|y| field.row(y).iter().fold(0.0f32, |m, &h| finite(h).max(m)))
