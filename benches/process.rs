@@ -31,8 +31,8 @@ fn bench(c: &mut Criterion) {
         config,
         "--size",
         "1920x1080",
-        "--seed",
-        "42",
+        "--set",
+        "seed=42",
     ];
     let cases: [(&str, &[&str]); 2] = [
         ("render_1080p_default", &[]),
