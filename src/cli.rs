@@ -7,6 +7,8 @@
 use std::ffi::OsString;
 use std::path::PathBuf;
 
+pub mod key_flags;
+
 /// What the program was asked to do.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Mode {
@@ -46,8 +48,14 @@ pub enum Mode {
     },
     /// `--check-config [PATH]`: validate a preferences file.
     CheckConfig(Option<PathBuf>),
-    /// `--help`.
+    /// `--help`, `-help`.
     Help,
+    /// `--version`, `-V`.
+    Version,
+    /// `--xscreensaver-xml`: print xscreensaver's settings description.
+    XscreensaverXml,
+    /// `--man-page`: print the man page.
+    ManPage,
 }
 
 /// A parsed command line: the mode plus the options every mode shares.
@@ -61,6 +69,19 @@ pub struct Invocation {
     pub sets: Vec<(String, String)>,
     /// `--open FILE`: show a saved heightmap instead of generating.
     pub open: Option<PathBuf>,
+    /// The xscreensaver options every hack takes.
+    pub xss: XssOptions,
+}
+
+/// xscreensaver's common options, which it may pass to any hack.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct XssOptions {
+    /// `-fps`: draw the frame rate and load in a corner.
+    pub fps: bool,
+    /// `-delay N`: microseconds between frames, if given.
+    pub delay_us: Option<u64>,
+    /// `-display NAME`: the X display to use instead of `$DISPLAY`.
+    pub display: Option<String>,
 }
 
 /// A command line that could not be understood; the message names the flag.
@@ -93,6 +114,7 @@ pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
             config: None,
             sets: Vec::new(),
             open: None,
+            xss: XssOptions::default(),
         },
     };
     let mut mode: Option<(Mode, String)> = None;
@@ -103,12 +125,20 @@ pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
             Some(m) => m,
             None => continue,
         };
-        if let Some((_, old)) = &mode {
-            return Err(UsageError(format!(
-                "`{arg}` given after `{old}`: choose one mode"
-            )));
-        }
-        mode = Some((new_mode, arg));
+        mode = Some(match mode {
+            None => (new_mode, arg),
+            Some((old_mode, old)) => match (old_mode, new_mode) {
+                // What xscreensaver's settings dialog runs for its preview.
+                (Mode::XRoot, id @ Mode::XWindowId(_)) | (id @ Mode::XWindowId(_), Mode::XRoot) => {
+                    (id, arg)
+                }
+                _ => {
+                    return Err(UsageError(format!(
+                        "`{arg}` given after `{old}`: choose one mode"
+                    )));
+                }
+            },
+        });
     }
     let mode = mode.map_or_else(default_mode, |(m, _)| m);
     p.inv.mode = finish_mode(mode, output, size)?;
@@ -240,7 +270,28 @@ impl Parser<'_> {
                 return Ok(Some(Mode::XWindowId(parse_handle(&id)?)));
             }
             "--settings" => return Ok(Some(Mode::Settings { parent: None })),
-            "--help" | "-h" => return Ok(Some(Mode::Help)),
+            "--help" | "-h" | "-help" => return Ok(Some(Mode::Help)),
+            "--version" | "-V" | "-version" => return Ok(Some(Mode::Version)),
+            "--xscreensaver-xml" => return Ok(Some(Mode::XscreensaverXml)),
+            "--man-page" => return Ok(Some(Mode::ManPage)),
+            "-fps" | "--fps" => self.inv.xss.fps = true,
+            "-no-fps" | "--no-fps" => self.inv.xss.fps = false,
+            "-delay" | "--delay" => {
+                let v = self.value_str(&flag)?;
+                let us = v.trim().parse::<u64>().map_err(|_| {
+                    UsageError(format!(
+                        "`{flag} {v}`: expected microseconds, e.g. -delay 20000"
+                    ))
+                })?;
+                self.inv.xss.delay_us = Some(us);
+            }
+            "-display" | "--display" => self.inv.xss.display = Some(self.value_str(&flag)?),
+            // xscreensaver's colormap and visual choices: a true-colour
+            // framebuffer needs neither.
+            "-install" | "--install" => {}
+            "-visual" | "--visual" => {
+                self.value_str(&flag)?;
+            }
             "--check-config" => {
                 let path = match (inline, self.args.get(self.pos).and_then(|a| a.to_str())) {
                     (Some(v), _) => Some(PathBuf::from(v)),
@@ -264,9 +315,18 @@ impl Parser<'_> {
                     output: PathBuf::new(),
                 }));
             }
-            _ => return Err(UsageError(format!("unknown argument `{arg}`"))),
+            _ => return self.key_flag(arg).map(|()| None),
         }
         Ok(None)
+    }
+
+    /// A preference key given as a flag of its own (`-cragginess 40`).
+    fn key_flag(&mut self, arg: &str) -> Result<(), UsageError> {
+        let (key, own) = key_flags::lookup(arg)
+            .ok_or_else(|| UsageError(format!("unknown argument `{arg}`")))?;
+        let kv = key_flags::take(arg, key, own, || self.value_str(arg).ok())?;
+        self.inv.sets.push(kv);
+        Ok(())
     }
 
     /// The Windows screensaver letters: `/s`, `/p[:]<HWND>`, `/c[:<HWND>]`, `/a`.
@@ -311,7 +371,7 @@ impl Parser<'_> {
 fn long_name(arg: &str) -> String {
     match arg {
         "-root" | "-window" | "-window-id" | "-settings" | "-config" | "-set" | "-open"
-        | "-size" => format!("-{arg}"),
+        | "-size" | "-xscreensaver-xml" | "-man-page" => format!("-{arg}"),
         _ => arg.to_string(),
     }
 }

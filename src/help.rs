@@ -41,13 +41,24 @@ Usage:
   mountains render -o OUT.png [--size WxH] [OPTIONS]   one mountain to a PNG
   mountains heightmap -o OUT.png [OPTIONS]             generate and save a data set
   mountains --check-config [FILE]      check a preferences file; exit 0 if good, 1 if not
-  mountains --help
+  mountains --help | --version
+  mountains --xscreensaver-xml | --man-page   print contrib/mountains.xml or mountains.6
 
 Options (every mode):
   --config FILE      preferences file instead of the usual one
   --set KEY=VALUE    override one preference (repeatable), e.g. --set color=sonar
   --open FILE.png    show a saved data set or any grayscale PNG heightmap
+  -KEY VALUE         every preference key is a flag too (dashes for underscores):
+                     -cragginess 40, --color sonar; booleans -shadows / -no-shadows
+
+xscreensaver's common options:
+  -fps               draw the frame rate and load in a corner
+  -delay USECS       microseconds between frames while a mountain is drawn
+  -display NAME      the X display instead of $DISPLAY
+  -install, -visual V   accepted; a true-colour framebuffer needs neither
 
 Windows flags take / or -, any case: /s -S /p:1234 /c:1234.
-xscreensaver flags take one or two dashes: -root --root -window-id --window-id.
+xscreensaver flags take one or two dashes: -root --root -window-id --window-id;
+-root with -window-id (either order) draws into the window, as the settings
+dialog's preview asks.
 ";

@@ -7,6 +7,7 @@
 
 pub mod cli;
 pub mod commands;
+pub mod contrib;
 pub mod fsutil;
 pub mod help;
 pub mod log;

@@ -33,12 +33,30 @@ fn main() -> ExitCode {
             print!("{}", help::text());
             return ExitCode::SUCCESS;
         }
+        Mode::XscreensaverXml => {
+            print!("{}", mountains::contrib::xscreensaver::xml());
+            return ExitCode::SUCCESS;
+        }
+        Mode::ManPage => {
+            print!("{}", mountains::contrib::man_page::man_page());
+            return ExitCode::SUCCESS;
+        }
+        Mode::Version => {
+            println!("mountains {}", env!("CARGO_PKG_VERSION"));
+            return ExitCode::SUCCESS;
+        }
         Mode::CheckConfig(path) => return commands::check_config(path.as_deref()),
         Mode::ChangePassword => {
             println!("mountains: no password needed; Windows handles locking.");
             return ExitCode::SUCCESS;
         }
         _ => {}
+    }
+    if let Some(display) = &inv.xss.display {
+        // SAFETY: no other thread has started yet (the saver, the settings
+        // screen and the generators all start below), so nothing can read
+        // the environment while it changes.
+        unsafe { std::env::set_var("DISPLAY", display) };
     }
     let settings_screen = matches!(inv.mode, Mode::Settings { .. });
     let loaded = match load::resolve(inv.config.as_deref(), &inv.sets, settings_screen) {

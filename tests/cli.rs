@@ -133,3 +133,77 @@ fn handles_must_be_nonzero() {
     assert!(cli::parse_handle("0").is_err());
     assert_eq!(cli::parse_handle("0xff").unwrap(), 255);
 }
+
+/// Every preference key is a flag of its own, as xscreensaver hacks take them.
+#[test]
+fn every_key_is_a_flag_of_its_own() {
+    let inv = parse(&[
+        "-root",
+        "-cragginess",
+        "40",
+        "--color",
+        "sonar",
+        "-no-shadows",
+        "-low-detail",
+        "--draw_seconds",
+        "3",
+        "-sea-level",
+        "-0.25",
+    ])
+    .expect("key flags");
+    let want = [
+        ("cragginess", "40"),
+        ("color", "sonar"),
+        ("shadows", "false"),
+        ("low_detail", "true"),
+        ("draw_seconds", "3"),
+        ("sea_level", "-0.25"),
+    ];
+    let got: Vec<(&str, &str)> = inv
+        .sets
+        .iter()
+        .map(|(k, v)| (k.as_str(), v.as_str()))
+        .collect();
+    assert_eq!(got, want);
+    for key in mountains::settings::keys::KEYS {
+        let flag = format!("-{}", key.name.replace('_', "-"));
+        let boolean = key.kind == mountains::settings::keys::Kind::Bool;
+        let args: &[&str] = if boolean { &[&flag] } else { &[&flag, "1"] };
+        let inv = parse(args).unwrap_or_else(|e| panic!("{flag}: {e}"));
+        assert_eq!(inv.sets[0].0, key.name, "{flag}");
+    }
+    let e = parse(&["-cragginess"]).unwrap_err().0;
+    assert!(
+        e.contains("`-cragginess` needs a value: an integer from 1 to 128"),
+        "{e}"
+    );
+    let e = parse(&["-no-color", "x"]).unwrap_err().0;
+    assert!(e.contains("unknown argument `-no-color`"), "{e}");
+}
+
+/// xscreensaver's common options, `--version`, and its dialog's preview
+/// command (`-root` and `-window-id` together, in either order).
+#[test]
+fn xscreensavers_common_options_mean_what_they_mean_there() {
+    let inv = parse(&[
+        "-root", "-fps", "-delay", "20000", "-install", "-visual", "default",
+    ])
+    .expect("common options");
+    assert_eq!(inv.mode, Mode::XRoot);
+    assert!(inv.xss.fps);
+    assert_eq!(inv.xss.delay_us, Some(20000));
+    let inv = parse(&["-display", ":7", "--window"]).expect("-display");
+    assert_eq!(inv.xss.display.as_deref(), Some(":7"));
+    assert_eq!(mode(&["-help"]), Mode::Help);
+    for v in ["--version", "-V", "-version"] {
+        assert_eq!(mode(&[v]), Mode::Version, "{v}");
+    }
+    assert_eq!(
+        mode(&["-root", "-window-id", "0x42"]),
+        Mode::XWindowId(0x42)
+    );
+    assert_eq!(mode(&["--window-id", "66", "--root"]), Mode::XWindowId(66));
+    let e = parse(&["-delay", "soon"]).unwrap_err().0;
+    assert!(e.contains("-delay soon"), "{e}");
+    assert!(parse(&["--window", "--root"]).is_err());
+}

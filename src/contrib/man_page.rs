@@ -1,0 +1,129 @@
+//! `mountains.6`, the man page every xscreensaver hack has, in the plain
+//! man(7) macros: the modes, xscreensaver's common options and every key.
+
+use std::fmt::Write;
+
+use super::default_text;
+use crate::cli::key_flags::flag_name;
+use crate::settings::keys::{KEYS, Kind};
+
+/// The whole man page.
+pub fn man_page() -> String {
+    let mut m = String::from(HEAD);
+    for k in KEYS {
+        let flag = flag_name(k);
+        let synopsis = if k.kind == Kind::Bool {
+            format!(
+                "\\-{flag} | \\-no\\-{flag}",
+                flag = flag.replace('-', "\\-")
+            )
+        } else {
+            format!("\\-{} \\fIvalue\\fP", flag.replace('-', "\\-"))
+        };
+        let _ = writeln!(m, ".TP\n.B {synopsis}");
+        let _ = writeln!(
+            m,
+            "{}. Allowed: {}; default {}. In the preferences file: \\fB{}\\fP.",
+            escape(k.doc),
+            escape(&k.kind.allowed()),
+            escape(&default_text(k)),
+            k.name.replace('_', "\\_")
+        );
+    }
+    m.push_str(TAIL);
+    m
+}
+
+/// Text safe in a man page line: backslashes doubled, a leading dot or quote guarded.
+fn escape(s: &str) -> String {
+    let s = s.replace('\\', "\\e").replace('-', "\\-");
+    if s.starts_with('.') || s.starts_with('\'') {
+        format!("\\&{s}")
+    } else {
+        s
+    }
+}
+
+const HEAD: &str = r#".TH MOUNTAINS 6 "2026" "mountains" "XScreenSaver"
+.SH NAME
+mountains \- fractal mountains drawn strip by strip, as a slide show
+.SH SYNOPSIS
+.B mountains
+[\-root | \-window\-id \fIid\fP | \-\-window | /s | /p [\fIhwnd\fP] | \-\-settings]
+[\-\-config \fIfile\fP] [\-\-set \fIkey\fP=\fIvalue\fP] [\-\fIkey\fP \fIvalue\fP]
+[\-\-open \fIfile.png\fP] [\-fps] [\-delay \fIusecs\fP] [\-display \fIhost:display.screen\fP]
+.br
+.B mountains render \-o
+.I out.png
+[\-\-size \fIW\fPx\fIH\fP] [options]
+.br
+.B mountains heightmap \-o
+.I out.png
+[options]
+.SH DESCRIPTION
+A fractal mountain made by recursive subdivision (cragginess halved at every
+level), drawn from the back to the front as shaded triangles, held, and
+followed by a new one. It keeps the modes of Mountain Terrain 3.0 and Fractal
+Mountain Climbing: colour filters, Sonar, Outline, Mono, water coloured by its
+depth, low detail and saved data sets.
+.SH MODES
+.TP
+.B \-root
+Draw on the window in $XSCREENSAVER_WINDOW, else the root window.
+.TP
+.B \-window\-id \fIid\fP
+Draw into the window \fIid\fP (hex with 0x, or decimal); with \-root too, as
+xscreensaver's settings dialog runs its preview.
+.TP
+.B \-\-window
+A normal resizable window (the default outside Windows).
+.TP
+.B \-\-settings
+The settings screen.
+.TP
+.B render \-o \fIout.png\fP
+One complete mountain to a PNG, without a display.
+.TP
+.B \-\-check\-config [\fIfile\fP]
+Check a preferences file.
+.SH COMMON OPTIONS
+.TP
+.B \-fps
+Draw the frame rate and load in a corner.
+.TP
+.B \-delay \fIusecs\fP
+Microseconds between frames while a mountain is drawn.
+.TP
+.B \-display \fIhost:display.screen\fP
+The X display to use.
+.TP
+.B \-install, \-visual \fIvisual\fP
+Accepted for xscreensaver; a true-colour framebuffer needs neither.
+.TP
+.B \-\-version, \-V
+Print the version.
+.SH PREFERENCE KEYS
+Every key is read from the preferences file, from \fB\-\-set\fP \fIkey\fP=\fIvalue\fP,
+and from a flag of its own (one or two dashes; underscores written as dashes).
+"#;
+
+const TAIL: &str = r#".SH FILES
+.TP
+.I ~/.config/mountains/mountains.toml
+The preferences (\fBmountains \-\-settings\fP edits it).
+.TP
+.I ~/.local/share/mountains/mountains.log
+Problems met while running as a screensaver, whose output nobody sees.
+.SH ENVIRONMENT
+.TP
+.B XSCREENSAVER_WINDOW
+The window \-root draws on.
+.TP
+.B DISPLAY
+The X display, unless \-display is given.
+.SH SEE ALSO
+.BR xscreensaver (1),
+.BR xscreensaver\-settings (1)
+.SH AUTHOR
+Written by the mountains authors; 2026.
+"#;
