@@ -17,8 +17,12 @@ use crate::settings::keys::{KEYS, Key, Kind};
 /// xscreensaver, and xscreensaver itself chooses the monitors.
 const NO_WIDGET: &[&str] = &["seed", "monitors"];
 
-/// Widgets side by side per row: the dialog must fit a 720-pixel screen.
-const PER_ROW: usize = 2;
+/// Menus side by side per row, and check boxes: the dialog must fit a
+/// 720-pixel screen (two menus a row made it 753 pixels tall).
+const MENUS_PER_ROW: usize = 3;
+const BOXES_PER_ROW: usize = 4;
+/// Columns of sliders.
+const SLIDER_COLUMNS: usize = 2;
 
 /// The whole `mountains.xml`.
 pub fn xml() -> String {
@@ -42,9 +46,9 @@ pub fn xml() -> String {
     let booleans = is(|k| matches!(k, Kind::Bool));
     let strings = is(|k| matches!(k, Kind::Path));
     let mut x = String::from(HEAD);
-    rows(&mut x, &selects, select);
+    rows(&mut x, &selects, MENUS_PER_ROW, select);
     columns(&mut x, &numbers);
-    rows(&mut x, &booleans, boolean);
+    rows(&mut x, &booleans, BOXES_PER_ROW, boolean);
     for k in strings {
         x.push_str(&string(k));
     }
@@ -65,20 +69,17 @@ const HEAD: &str = r#"<?xml version="1.0" encoding="ISO-8859-1"?>
 
 const TAIL: &str = r#"
   <_description>
-Fractal mountains, drawn strip by strip from the back to the front as shaded
-triangles, then held, like a slide show. A descendant of Mountain Terrain 3.0
-(Windows 95), Fractal Mountain Climbing (MacTech, 1991) and xmountains, with
-their colour filters, Sonar, water coloured by its depth and saved data sets.
-What is not set here comes from ~/.config/mountains/mountains.toml.
+Fractal mountains drawn strip by strip, like a slide show, after Mountain
+Terrain 3.0 and xmountains. The rest: ~/.config/mountains/mountains.toml.
 
 Written by the mountains authors; 2026.
   </_description>
 </screensaver>
 "#;
 
-/// Widgets `PER_ROW` to a row.
-fn rows(x: &mut String, keys: &[&Key], widget: fn(&Key) -> String) {
-    for row in keys.chunks(PER_ROW) {
+/// Widgets `per_row` to a row.
+fn rows(x: &mut String, keys: &[&Key], per_row: usize, widget: fn(&Key) -> String) {
+    for row in keys.chunks(per_row) {
         x.push_str("  <hgroup>\n");
         for k in row {
             x.push_str(&widget(k));
@@ -87,10 +88,10 @@ fn rows(x: &mut String, keys: &[&Key], widget: fn(&Key) -> String) {
     }
 }
 
-/// Sliders in `PER_ROW` columns.
+/// Sliders in `SLIDER_COLUMNS` columns.
 fn columns(x: &mut String, keys: &[&Key]) {
     x.push_str("  <hgroup>\n");
-    for column in keys.chunks(keys.len().div_ceil(PER_ROW).max(1)) {
+    for column in keys.chunks(keys.len().div_ceil(SLIDER_COLUMNS).max(1)) {
         x.push_str("  <vgroup>\n");
         for k in column {
             x.push_str(&number(k));
