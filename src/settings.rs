@@ -155,6 +155,8 @@ pub struct Settings {
     pub profile: Profile,
     /// Height of the highest peak (1-10, seed 000's Height menu); also moves the treeline.
     pub height: u32,
+    /// Strength of the rain that wears gullies into the slopes (0-1, 0 = none).
+    pub erosion: f32,
     /// Grid of 2^detail + 1 points a side (4-12), or chosen per frame.
     pub detail: Detail,
     /// Halve the points per side (a quarter of the data set).
@@ -198,6 +200,7 @@ impl Default for Settings {
             contour: 1.0,
             profile: Profile::Slope,
             height: 5,
+            erosion: 0.5,
             detail: Detail::Auto,
             low_detail: false,
             sea_level: 0.0,

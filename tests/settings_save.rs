@@ -87,6 +87,7 @@ fn every_key_round_trips_through_the_shipped_file() {
         contour: 0.3,
         profile: Profile::Massif,
         height: 10,
+        erosion: 0.75,
         detail: Detail::Level(4),
         low_detail: true,
         sea_level: -0.14,

@@ -176,6 +176,11 @@ pub const KEYS: &[Key] = &[
         "height of the peaks; also raises the treeline and snow",
     ),
     key(
+        "erosion",
+        Kind::Float { min: 0.0, max: 1.0 },
+        "rain wearing gullies into the slopes and silt at their feet (0 = none)",
+    ),
+    key(
         "detail",
         Kind::IntOrAuto { min: 4, max: 12 },
         "grid of 2^detail+1 points a side; \"auto\" fits it to the screen",
@@ -286,6 +291,7 @@ pub fn apply(settings: &mut Settings, key: &Key, value: &Value) -> Result<(), St
         "seed" => s.seed = seed(value).ok_or_else(bad)?,
         "generator" => s.generator = choice::<Generator>(key, value).ok_or_else(bad)?,
         "cragginess" => s.cragginess = int(key, value).ok_or_else(bad)? as u32,
+        "erosion" => s.erosion = float(key, value).ok_or_else(bad)?,
         "elevation" => s.elevation = float(key, value).ok_or_else(bad)?,
         "roughness" => s.roughness = float(key, value).ok_or_else(bad)?,
         "contour" => s.contour = float(key, value).ok_or_else(bad)?,
@@ -319,6 +325,7 @@ pub fn get(settings: &Settings, key: &Key) -> Value {
         "seed" => s.seed.map_or(Value::Str("random".into()), seed_value),
         "generator" => name(&s.generator),
         "cragginess" => Value::Int(s.cragginess.into()),
+        "erosion" => Value::Float(s.erosion.into()),
         "elevation" => Value::Float(s.elevation.into()),
         "roughness" => Value::Float(s.roughness.into()),
         "contour" => Value::Float(s.contour.into()),

@@ -1,6 +1,7 @@
 //! Everything that makes a mountain's heights. Pure: no windows, no clocks.
 
 mod coast;
+mod erosion;
 pub mod heightfield;
 pub mod heightmap;
 mod noise;
@@ -86,6 +87,7 @@ pub fn generate_into(settings: &Settings, seed: u64, field: &mut Heightfield) {
 fn fill(field: &mut Heightfield, params: &Params, seed: u64, threads: usize) {
     let threads = threads.max(1);
     let extremes = subdivide_all(field, params, seed, threads, &Plain);
+    let extremes = weather(field, params, seed, threads, extremes);
     finish(field, params, threads, extremes);
 }
 
@@ -121,6 +123,7 @@ pub fn generate_audited(settings: &Settings, seed: u64, threads: usize) -> Audit
     let audit = Audited::default();
     let extremes = subdivide_all(&mut field, &params, seed, threads, &audit);
     let unset = field.heights().iter().filter(|h| h.is_nan()).count();
+    let extremes = weather(&mut field, &params, seed, threads, extremes);
     finish(&mut field, &params, threads, extremes);
     Audit {
         field,
@@ -130,6 +133,23 @@ pub fn generate_audited(settings: &Settings, seed: u64, threads: usize) -> Audit
 }
 
 /// Threads `generate` uses: the machine's, up to 8 (the work is memory-bound).
+/// Erosion, if asked for, after the subdivision and before the water line is
+/// placed (so the coast is found on the worn land); the subdivision's
+/// extremes no longer hold after it.
+fn weather(
+    field: &mut Heightfield,
+    p: &Params,
+    seed: u64,
+    threads: usize,
+    extremes: Option<Extremes>,
+) -> Option<Extremes> {
+    if p.erosion > 0.0 {
+        erosion::erode(field, p.erosion, seed, threads);
+        return None;
+    }
+    extremes
+}
+
 fn default_threads() -> usize {
     std::thread::available_parallelism().map_or(1, |n| n.get().min(8))
 }

@@ -16,6 +16,7 @@ pub(crate) struct Params {
     pub(crate) contour: f32,
     pub(crate) profile: Profile,
     pub(crate) height: f32,
+    pub(crate) erosion: f32,
     pub(crate) sea_level: f32,
     pub(crate) water_line: WaterLine,
 }
@@ -34,6 +35,7 @@ impl Params {
             contour: clamp(s.contour, 0.25, 5.0, d.contour),
             profile: s.profile,
             height: s.height.clamp(1, 10) as f32,
+            erosion: clamp(s.erosion, 0.0, 1.0, d.erosion),
             sea_level: clamp(s.sea_level, -1.0, 1.0, d.sea_level),
             water_line: s.water_line,
         }

@@ -10,13 +10,15 @@ pub const GENERATORS: [Generator; 3] = [Generator::Square, Generator::Diamond, G
 pub const PROFILES: [Profile; 4] = [Profile::Slope, Profile::Peak, Profile::Bay, Profile::Massif];
 
 /// Default settings with a generator and detail level, the water line at
-/// the generator's zero: the laws below are the subdivision's, and the
-/// coast pass (tests/terrain_coast.rs) moves and lowers heights after it.
+/// the generator's zero and no erosion: the laws below are the
+/// subdivision's, and the coast pass (tests/terrain_coast.rs) and erosion
+/// (tests/terrain_erosion.rs) move heights after it.
 pub fn settings(generator: Generator, detail: u32) -> Settings {
     Settings {
         generator,
         detail: Detail::Level(detail),
         water_line: WaterLine::Generator,
+        erosion: 0.0,
         ..Settings::default()
     }
 }

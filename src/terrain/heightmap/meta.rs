@@ -54,8 +54,10 @@ pub const KEY_DETAIL: &str = "mountains:detail";
 pub const KEY_LOW_DETAIL: &str = "mountains:low_detail";
 /// `Settings::sea_level`, the water-line setting as a fraction of the relief.
 pub const KEY_SEA_FRACTION: &str = "mountains:sea_fraction";
+/// `Settings::erosion`; absent in files made before erosion, which had none.
+pub const KEY_EROSION: &str = "mountains:erosion";
 
-const KNOWN_KEYS: [&str; 16] = [
+const KNOWN_KEYS: [&str; 17] = [
     KEY_FORMAT,
     KEY_SCALE,
     KEY_OFFSET,
@@ -72,6 +74,7 @@ const KNOWN_KEYS: [&str; 16] = [
     KEY_DETAIL,
     KEY_LOW_DETAIL,
     KEY_SEA_FRACTION,
+    KEY_EROSION,
 ];
 
 /// The generator settings that made a mountain, read back from its file.
@@ -97,6 +100,8 @@ pub struct GeneratorParams {
     pub low_detail: bool,
     /// Water line setting, fraction of the relief.
     pub sea_level: f32,
+    /// Erosion strength (0-1).
+    pub erosion: f32,
 }
 
 impl GeneratorParams {
@@ -116,6 +121,7 @@ impl GeneratorParams {
             },
             low_detail: s.low_detail,
             sea_level: s.sea_level,
+            erosion: s.erosion,
         }
     }
 
@@ -131,6 +137,7 @@ impl GeneratorParams {
         s.detail = Detail::Level(self.detail);
         s.low_detail = self.low_detail;
         s.sea_level = self.sea_level;
+        s.erosion = self.erosion;
     }
 
     fn to_pairs(&self) -> Vec<(&'static str, String)> {
@@ -145,6 +152,7 @@ impl GeneratorParams {
             (KEY_DETAIL, self.detail.to_string()),
             (KEY_LOW_DETAIL, self.low_detail.to_string()),
             (KEY_SEA_FRACTION, self.sea_level.to_string()),
+            (KEY_EROSION, self.erosion.to_string()),
         ]
     }
 }
@@ -303,9 +311,16 @@ fn read_params<'a>(
 ) -> Result<GeneratorParams, String> {
     // Each value is checked by the settings key table, so the ranges a file
     // may hold are exactly the ranges a user may set.
-    let mut settings = Settings::default();
+    let mut settings = Settings {
+        // A file from before erosion existed holds an uneroded mountain.
+        erosion: 0.0,
+        ..Settings::default()
+    };
     for (meta_key, key) in PARAM_KEYS {
         let Some(raw) = get(meta_key) else {
+            if *meta_key == KEY_EROSION {
+                continue;
+            }
             notes.push(format!("{meta_key} missing; the default is assumed"));
             continue;
         };
@@ -327,6 +342,7 @@ const PARAM_KEYS: &[(&str, &str)] = &[
     (KEY_DETAIL, "detail"),
     (KEY_LOW_DETAIL, "low_detail"),
     (KEY_SEA_FRACTION, "sea_level"),
+    (KEY_EROSION, "erosion"),
 ];
 
 #[cfg(test)]
