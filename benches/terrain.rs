@@ -4,12 +4,32 @@ use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use mountains::settings::{Generator, Settings};
 use mountains::terrain::{generate, generate_into, generate_with_threads};
 
+/// The subdivision alone (the targets above are the generators'); erosion
+/// is timed on its own below.
 fn settings(generator: Generator, detail: u32) -> Settings {
     Settings {
         generator,
         detail: mountains::settings::Detail::Level(detail),
+        erosion: 0.0,
         ..Settings::default()
     }
+}
+
+/// What the program runs for a 1080p slide: the default settings (erosion
+/// 0.5) on the 1025 grid auto detail picks, and the same without erosion.
+fn with_erosion(c: &mut Criterion) {
+    let mut group = c.benchmark_group("generate_default");
+    group.sample_size(10);
+    for erosion in [0.0, 0.5, 1.0] {
+        let s = Settings {
+            erosion,
+            detail: mountains::settings::Detail::Level(10),
+            ..Settings::default()
+        };
+        let id = BenchmarkId::new("erosion", erosion);
+        group.bench_with_input(id, &s, |b, s| b.iter(|| generate(s, 7)));
+    }
+    group.finish();
 }
 
 fn generators(c: &mut Criterion) {
@@ -58,5 +78,12 @@ fn reused_field(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, generators, one_thread, contour, reused_field);
+criterion_group!(
+    benches,
+    generators,
+    one_thread,
+    contour,
+    reused_field,
+    with_erosion
+);
 criterion_main!(benches);

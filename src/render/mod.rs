@@ -19,7 +19,6 @@ pub mod shadow;
 mod sky;
 mod skylight;
 mod strip;
-mod tones;
 pub mod view;
 mod vista;
 

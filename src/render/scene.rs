@@ -11,7 +11,6 @@ use super::raster::{Fixed2, to_fixed};
 use super::shadow::{self, ShadowMap};
 use super::sky::Sky;
 use super::skylight::SkyLight;
-use super::tones::Tones;
 use super::view::View;
 use crate::settings::{ColorMode, Settings, ViewKind};
 use crate::terrain::Heightfield;
@@ -84,8 +83,8 @@ pub(crate) struct Scene<'a> {
     /// Aerial haze, if the view has depth and the style has colours.
     pub haze: Option<Haze>,
     shadow: Option<ShadowMap>,
-    /// The sky each point sees and its haze.
-    tones: Tones,
+    /// How much of the sky each point sees, if the look has sky light.
+    skylight: Option<SkyLight>,
     pub style: Style,
     /// Cells `0..split` of a row are drawn left to right, then the rest right
     /// to left, so faces nearer the camera's column overwrite farther ones.
@@ -124,7 +123,6 @@ impl<'a> Scene<'a> {
         let sky = backdrop(&palette, &view, style, height);
         let haze = (style == Style::Shaded && settings.view != ViewKind::Oblique)
             .then(|| Haze::new(palette.sky().1));
-        let tones = Tones::new(&field, &view, skylight.as_ref(), haze.as_ref());
         let cells = size - 1;
         let (split, sees_right, sees_front) = match view.camera_column() {
             Some(cx) => {
@@ -140,7 +138,7 @@ impl<'a> Scene<'a> {
             sky,
             haze,
             shadow,
-            tones,
+            skylight,
             style,
             split,
             row_top,
@@ -158,7 +156,7 @@ impl<'a> Scene<'a> {
     /// (which holds a whole row); the rest of `out` is left as it was.
     pub(crate) fn project_points(&self, y: usize, xs: std::ops::Range<usize>, out: &mut [Vert]) {
         let row = self.field.row(y);
-        let first = y * row.len();
+        let sky_rows = self.skylight.as_ref().map(|s| (s, s.rows_at(y)));
         for x in xs {
             let h = finite(row[x]);
             let p = self.view.project(x as f32, y as f32, h.max(0.0));
@@ -166,8 +164,10 @@ impl<'a> Scene<'a> {
                 p: to_fixed(p.x, p.y),
                 h,
                 lit: self.shadow.as_ref().map_or(1.0, |s| s.lit(x, y)),
-                sky: self.tones.sky(first + x),
-                haze: self.tones.haze(first + x),
+                sky: sky_rows.map_or(1.0, |(s, rows)| s.blend(rows, x)),
+                haze: self.haze.as_ref().map_or(0, |haze| {
+                    haze.amount(self.view.distance(x as f32, y as f32, h.max(0.0)))
+                }),
             };
         }
     }

@@ -57,24 +57,16 @@ impl SkyLight {
         }
     }
 
-    /// The shares of the sky seen along fine grid row `y`, one per item of
-    /// `out`: the row's coarse rows and weight are found once, not per point.
-    pub(crate) fn fill_row(&self, y: usize, out: &mut [f32]) {
-        let rows = self.rows_at(y);
-        for (x, o) in out.iter_mut().enumerate() {
-            *o = self.blend(rows, x);
-        }
-    }
-
     /// The share of the sky seen at fine grid point (`x`, `y`).
     #[cfg(test)]
     pub(crate) fn at(&self, x: usize, y: usize) -> f32 {
         self.blend(self.rows_at(y), x)
     }
 
-    /// The coarse rows above and below fine row `y`, and the weight of the lower.
+    /// The coarse rows above and below fine row `y`, and the weight of the
+    /// lower: found once per row, then [`SkyLight::blend`] per point.
     #[inline]
-    fn rows_at(&self, y: usize) -> (usize, usize, f32) {
+    pub(crate) fn rows_at(&self, y: usize) -> (usize, usize, f32) {
         let fy = y as f32 / self.stride;
         let y0 = (fy as usize).min(self.size - 1);
         (y0, (y0 + 1).min(self.size - 1), fy - y0 as f32)
@@ -82,7 +74,7 @@ impl SkyLight {
 
     /// The bilinear sample at fine column `x` between coarse `rows`.
     #[inline]
-    fn blend(&self, (y0, y1, ty): (usize, usize, f32), x: usize) -> f32 {
+    pub(crate) fn blend(&self, (y0, y1, ty): (usize, usize, f32), x: usize) -> f32 {
         let fx = x as f32 / self.stride;
         let last = self.size - 1;
         let x0 = (fx as usize).min(last);
