@@ -80,7 +80,7 @@ fn main() -> ExitCode {
             gui_log();
             mountains::settings_ui::run(inv.config.as_deref(), &loaded, *parent)
         }
-        mode => run_saver(mode, loaded, open),
+        mode => run_saver(mode, loaded, open, &inv.xss),
     }
 }
 
@@ -98,7 +98,12 @@ fn refuse_problems(loaded: &load::Loaded) -> Option<ExitCode> {
 
 /// The screensaver modes keep going on a broken file: each problem is logged
 /// (a .scr has no console) and its key keeps the default.
-fn run_saver(mode: &Mode, loaded: load::Loaded, open: Option<&std::path::Path>) -> ExitCode {
+fn run_saver(
+    mode: &Mode,
+    loaded: load::Loaded,
+    open: Option<&std::path::Path>,
+    xss: &cli::XssOptions,
+) -> ExitCode {
     gui_log();
     for p in &loaded.problems {
         log::warn(&format!("{p} (using the default)"));
@@ -115,7 +120,7 @@ fn run_saver(mode: &Mode, loaded: load::Loaded, open: Option<&std::path::Path>) 
             None
         }
     });
-    match saver::run(mode, loaded.settings, data_set) {
+    match saver::run(mode, loaded.settings, data_set, xss) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             log::warn(&e.to_string());

@@ -437,3 +437,28 @@ fn display_fullscreen_keeps_keys_and_clicks_from_other_programs() {
     x.key(38);
     expect_exit(&mut saver, "a key while grabbed");
 }
+
+/// xscreensaver's `-fps` (with `-delay` and the dialog's `-root -window-id`):
+/// white text on black in the bottom-left corner, the rest a mountain.
+#[test]
+fn display_fps_draws_its_overlay_in_the_corner() {
+    let Some(x) = Xvfb::start(640, 480, &[]) else {
+        return;
+    };
+    let window = x.create_window(400, 300);
+    let id = format!("0x{window:x}");
+    let args = ["-root", "-window-id", &id, "-fps", "-delay", "100000"];
+    let mut saver = Saver::start(&x, "fps", &args, &[]);
+    poll(&mut saver, "the overlay in the corner", || {
+        let pixels = x.grab(window, 400, 300);
+        let corner: Vec<u32> = pixels
+            .chunks(400)
+            .skip(300 - 12)
+            .flat_map(|r| r[..40].to_vec())
+            .collect();
+        let white = corner.iter().filter(|&&p| p == 0x00ff_ffff).count();
+        let black = corner.iter().filter(|&&p| p == 0).count();
+        white > 10 && white + black == corner.len() && looks_drawn(&pixels[..400 * 200])
+    });
+    saver.assert_running();
+}

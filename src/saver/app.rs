@@ -428,7 +428,7 @@ impl App {
                 self.settings.pause_seconds,
                 self.mode != AppMode::Window || self.settings.auto_redraw,
             );
-            Show::new(
+            super::new_show(
                 self.settings.clone(),
                 self.opened.clone(),
                 pacing,

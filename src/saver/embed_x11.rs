@@ -104,7 +104,7 @@ pub fn run(
     let presenter =
         Presenter::new(target).map_err(|e| SaverError::Other(format!("window 0x{xid:x}: {e}")))?;
     let pacing = Pacing::from_seconds(settings.draw_seconds, settings.pause_seconds, true);
-    let show = Show::new(settings, opened, pacing, size, Instant::now());
+    let show = super::new_show(settings, opened, pacing, size, Instant::now());
     let mut embedded = Embedded {
         conn,
         xid,

@@ -23,6 +23,7 @@ pub mod bands_x11;
 pub mod embed_win32;
 #[cfg(unix)]
 pub mod embed_x11;
+mod fps;
 pub mod fullscreen_win32;
 #[cfg(unix)]
 pub mod grab_x11;
@@ -42,7 +43,7 @@ use std::fmt;
 use std::sync::Arc;
 use std::time::Instant;
 
-use crate::cli::Mode;
+use crate::cli::{Mode, XssOptions};
 use crate::settings::Settings;
 use crate::terrain::heightmap::DataSet;
 use show::Mountain;
@@ -100,9 +101,16 @@ impl SaverError {
     }
 }
 
-/// Runs a window mode until it ends. `open` is a data set to show instead of generating.
-pub fn run(mode: &Mode, settings: Settings, open: Option<DataSet>) -> Result<(), SaverError> {
+/// Runs a window mode until it ends. `open` is a data set to show instead
+/// of generating; `xss` are xscreensaver's common options (`-fps`, `-delay`).
+pub fn run(
+    mode: &Mode,
+    settings: Settings,
+    open: Option<DataSet>,
+    xss: &XssOptions,
+) -> Result<(), SaverError> {
     START.get_or_init(Instant::now);
+    let _ = XSS.set(xss.clone());
     let opened = open.map(|d| Mountain {
         field: Arc::new(d.field),
         seed: d.seed,
@@ -179,6 +187,29 @@ fn check_library(library: &str, package: &str) -> Result<(), SaverError> {
 /// The zero of the start-up trace: `main`'s first line (see `mark_start`),
 /// else when `run` was entered.
 static START: std::sync::OnceLock<Instant> = std::sync::OnceLock::new();
+
+/// xscreensaver's common options of this run, set once by `run`.
+static XSS: std::sync::OnceLock<XssOptions> = std::sync::OnceLock::new();
+
+/// A new window's show: its pacing with `-delay`, and `-fps` if asked for.
+pub(crate) fn new_show(
+    settings: Settings,
+    opened: Option<Mountain>,
+    pacing: slideshow::Pacing,
+    size: (u32, u32),
+    now: Instant,
+) -> show::Show {
+    let xss = XSS.get().cloned().unwrap_or_default();
+    let pacing = match xss.delay_us {
+        Some(us) => pacing.with_frame_interval(std::time::Duration::from_micros(us)),
+        None => pacing,
+    };
+    let mut show = show::Show::new(settings, opened, pacing, size, now);
+    if xss.fps {
+        show.show_fps();
+    }
+    show
+}
 
 /// Starts the start-up trace's clock; `main` calls it first, so the traced
 /// time to the first present includes reading the settings and the data set.

@@ -5,6 +5,7 @@ use std::sync::Arc;
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
+use super::fps::FpsOverlay;
 use super::redraw::{Drawn, Redraw};
 use super::slideshow::{Due, Pacing, Slideshow};
 use super::source;
@@ -60,6 +61,8 @@ pub struct Show {
     slideshow: Slideshow,
     /// Number of the slide on screen, counted from 0: picks its source.
     slide: u64,
+    /// xscreensaver's `-fps` overlay, when asked for.
+    fps: Option<FpsOverlay>,
 }
 
 impl Show {
@@ -86,6 +89,7 @@ impl Show {
             redraw: None,
             slideshow: Slideshow::new(pacing, 0, now),
             slide: 0,
+            fps: None,
         };
         show.start_drawing(size, now);
         show
@@ -105,7 +109,13 @@ impl Show {
             redraw: None,
             slideshow: Slideshow::new(pacing, 0, now),
             slide: 0,
+            fps: None,
         }
+    }
+
+    /// Draws the frame rate and load over the picture from now on (`-fps`).
+    pub fn show_fps(&mut self) {
+        self.fps = Some(FpsOverlay::new());
     }
 
     /// The pixels to present; `None` while the window has no area.
@@ -146,7 +156,11 @@ impl Show {
         match self.slideshow.due(now) {
             Due::Wait => Rect::default(),
             Due::Draw(strips) => {
-                let damage = painter.step(frame, strips);
+                let lifted = self.fps.as_mut().map(|o| o.lift(frame)).unwrap_or_default();
+                let mut damage = painter.step(frame, strips).union(&lifted);
+                if let Some(o) = self.fps.as_mut() {
+                    damage = damage.union(&o.draw(frame, now));
+                }
                 self.slideshow.drew(strips, now);
                 if painter.is_done() && !self.slideshow.is_holding() {
                     self.slideshow.finish_now(now);
@@ -277,6 +291,9 @@ impl Show {
     /// Puts a finished redraw on screen and starts the hold.
     fn show_redrawn(&mut self, drawn: Drawn, now: Instant) -> Rect {
         self.frame = drawn.frame;
+        if let Some(o) = self.fps.as_mut() {
+            o.forget();
+        }
         self.slideshow.restart(drawn.painter.strips_total(), now);
         self.painter = Some(drawn.painter);
         self.slideshow.finish_now(now);
@@ -294,6 +311,9 @@ impl Show {
             // Free the old pixels before allocating the new ones: peak memory.
             self.frame = None;
             self.frame = Frame::new(size.0, size.1);
+        }
+        if let Some(o) = self.fps.as_mut() {
+            o.forget();
         }
         let Some(frame) = self.frame.as_mut() else {
             self.painter = None;

@@ -15,6 +15,8 @@ pub struct Pacing {
     pub pause: Duration,
     /// Start the next mountain after the hold (false: hold until asked).
     pub auto_advance: bool,
+    /// Least time between two drawing frames (xscreensaver's `-delay`).
+    pub frame: Duration,
 }
 
 impl Pacing {
@@ -24,7 +26,15 @@ impl Pacing {
             draw: seconds(draw),
             pause: seconds(pause),
             auto_advance,
+            frame: FRAME_INTERVAL,
         }
+    }
+
+    /// The same pacing with `delay` between drawing frames (`-delay`, in
+    /// xscreensaver's sense), kept between a millisecond and a second.
+    pub fn with_frame_interval(self, delay: Duration) -> Self {
+        let frame = delay.clamp(Duration::from_millis(1), Duration::from_secs(1));
+        Pacing { frame, ..self }
     }
 }
 
@@ -141,7 +151,7 @@ impl Slideshow {
         }
         match self.hold_start {
             Some(hold) => self.pacing.auto_advance.then(|| hold + self.pacing.pause),
-            None => Some((now + FRAME_INTERVAL).max(self.strip_time(self.done))),
+            None => Some((now + self.pacing.frame).max(self.strip_time(self.done))),
         }
     }
 
@@ -189,7 +199,21 @@ mod tests {
             draw: Duration::from_millis(draw_ms),
             pause: Duration::from_millis(pause_ms),
             auto_advance: auto,
+            frame: FRAME_INTERVAL,
         }
+    }
+
+    /// `-delay`: drawing frames come that far apart, within sane bounds.
+    #[test]
+    fn a_delay_spaces_the_drawing_frames() {
+        let t0 = Instant::now();
+        let slow = pacing(10_000, 1000, true).with_frame_interval(Duration::from_millis(200));
+        let show = Slideshow::new(slow, 1000, t0);
+        assert_eq!(show.wake_at(t0), Some(t0 + Duration::from_millis(200)));
+        let zero = pacing(10_000, 1000, true).with_frame_interval(Duration::ZERO);
+        assert_eq!(zero.frame, Duration::from_millis(1));
+        let huge = pacing(10_000, 1000, true).with_frame_interval(Duration::from_secs(60));
+        assert_eq!(huge.frame, Duration::from_secs(1));
     }
 
     #[test]
