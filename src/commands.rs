@@ -84,29 +84,49 @@ fn fail(message: &str) -> ExitCode {
     ExitCode::FAILURE
 }
 
-/// `mountains --check-config [FILE]`: 0 if the file is good, 1 if not.
-pub fn check_config(path: Option<&Path>) -> ExitCode {
-    let Some(path) = path.map(Path::to_path_buf).or_else(paths::config_file) else {
+/// `--check-config [FILE]`: checks FILE, else `--config`'s, else the usual
+/// preferences file, and every `--set`. Exit 0 when all is good, also when
+/// there is no preferences file at the usual place (the defaults are in
+/// use, which is no mistake); 1 for any problem, or a named file missing.
+pub fn check_config(
+    path: Option<&Path>,
+    config: Option<&Path>,
+    sets: &[(String, String)],
+) -> ExitCode {
+    let named = path.or(config).map(Path::to_path_buf);
+    let Some(file) = named.clone().or_else(paths::config_file) else {
         return fail("no preferences file given and no home directory to look in");
     };
-    if !path.exists() && path.parent().is_some() {
-        eprintln!(
-            "mountains: {}: no such file (the defaults are in use)",
-            path.display()
-        );
-        return ExitCode::FAILURE;
-    }
     let mut settings = Settings::default();
-    let problems = load::apply_file(&mut settings, &path);
+    let mut problems = Vec::new();
+    if file.exists() {
+        problems = load::apply_file(&mut settings, &file);
+    } else if named.is_some() {
+        return fail(&format!("{}: no such file", file.display()));
+    } else {
+        println!(
+            "mountains: no preferences file at {}; the defaults are in use",
+            file.display()
+        );
+    }
+    for (key, value) in sets {
+        if let Err(p) = load::apply_set(&mut settings, key, value) {
+            problems.push(p);
+        }
+    }
     for p in &problems {
         eprintln!("{p}");
     }
-    if problems.is_empty() {
-        println!("{}: ok", path.display());
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::FAILURE
+    if !problems.is_empty() {
+        return ExitCode::FAILURE;
     }
+    if file.exists() {
+        println!("{}: ok", file.display());
+    }
+    if !sets.is_empty() {
+        println!("--set: ok");
+    }
+    ExitCode::SUCCESS
 }
 
 /// Opens the preferences file in the user's editor, creating it from the

@@ -45,7 +45,9 @@ fn main() -> ExitCode {
             println!("mountains {}", env!("CARGO_PKG_VERSION"));
             return ExitCode::SUCCESS;
         }
-        Mode::CheckConfig(path) => return commands::check_config(path.as_deref()),
+        Mode::CheckConfig(path) => {
+            return commands::check_config(path.as_deref(), inv.config.as_deref(), &inv.sets);
+        }
         Mode::ChangePassword => {
             println!("mountains: no password needed; Windows handles locking.");
             return ExitCode::SUCCESS;
@@ -84,13 +86,20 @@ fn main() -> ExitCode {
     }
 }
 
-/// One-shot commands stop on a broken preferences file: nothing is lost by
-/// saying so, and a picture made from half a file would surprise.
+/// One-shot commands stop on a broken value in the preferences file:
+/// nothing is lost by saying so, and a picture made from half a file would
+/// surprise. A key this version does not know is only warned about (the
+/// settings screen keeps such keys, and a newer version may have written it).
 fn refuse_problems(loaded: &load::Loaded) -> Option<ExitCode> {
-    if loaded.problems.is_empty() {
+    let (unknown, broken): (Vec<_>, Vec<_>) =
+        loaded.problems.iter().partition(|p| p.is_unknown_key());
+    for p in unknown {
+        eprintln!("warning: {p}; ignored");
+    }
+    if broken.is_empty() {
         return None;
     }
-    for p in &loaded.problems {
+    for p in broken {
         eprintln!("{p}");
     }
     Some(ExitCode::from(EXIT_USAGE))

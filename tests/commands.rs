@@ -251,3 +251,73 @@ fn settings_with(seed: u64, detail: u32) -> mountains::settings::Settings {
         ..Default::default()
     }
 }
+
+/// No preferences file is no mistake: the defaults are in use. A file named
+/// with `--config` is checked, and so is every `--set`.
+#[test]
+fn check_config_without_a_file_is_fine_and_honours_config_and_set() {
+    let o = mountains(&["--check-config"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(out.contains("the defaults are in use"), "{out}");
+    let dir = scratch("check-config-flags");
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, "cragginess = 500\n").unwrap();
+    let o = mountains(&["--config", bad.to_str().unwrap(), "--check-config"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        stderr(&o).contains("bad.toml:1:14: key `cragginess`"),
+        "{}",
+        stderr(&o)
+    );
+    let o = mountains(&["--check-config", "--set", "color=pink"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stderr(&o).contains("--set: key `color`"), "{}", stderr(&o));
+    let missing = dir.join("missing.toml");
+    let o = mountains(&["--check-config", missing.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        stderr(&o).contains("missing.toml: no such file"),
+        "{}",
+        stderr(&o)
+    );
+}
+
+/// A key this version does not know (the settings screen keeps it) is a
+/// warning with a suggestion for `render`, and still a failure for
+/// `--check-config`; a broken value still stops `render`.
+#[test]
+fn an_unknown_key_is_a_warning_for_render_and_an_error_for_check_config() {
+    let dir = scratch("unknown-key");
+    let config = dir.join("newer.toml");
+    std::fs::write(&config, "colour = \"sonar\"\nfuture_key = 3\n").unwrap();
+    let out = dir.join("m.png");
+    let o = mountains(&[
+        "render",
+        "--config",
+        config.to_str().unwrap(),
+        "--size",
+        "64x36",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(out.exists());
+    let err = stderr(&o);
+    assert!(
+        err.contains("warning: ") && err.contains("did you mean `color`?"),
+        "{err}"
+    );
+    assert!(err.contains("key `future_key`"), "{err}");
+    let o = mountains(&["--check-config", config.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1));
+    std::fs::write(&config, "color = \"pink\"\n").unwrap();
+    let o = mountains(&[
+        "render",
+        "--config",
+        config.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+}

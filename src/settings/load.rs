@@ -27,6 +27,14 @@ pub struct Problem {
     pub message: String,
 }
 
+impl Problem {
+    /// A key this version does not know (a newer version's, or a typo): the
+    /// rest of the file still means what it says.
+    pub fn is_unknown_key(&self) -> bool {
+        self.key.as_deref().is_some_and(|k| keys::find(k).is_none())
+    }
+}
+
 impl fmt::Display for Problem {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{}", self.source)?;
