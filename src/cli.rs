@@ -8,6 +8,7 @@ use std::ffi::OsString;
 use std::path::PathBuf;
 
 pub mod key_flags;
+pub mod output;
 
 /// What the program was asked to do.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -154,6 +155,7 @@ fn finish_mode(
     match mode {
         Mode::Render { .. } => {
             let output = output.ok_or_else(|| UsageError("render needs -o FILE.png".into()))?;
+            output::format_of(&output, output::PICTURES, "a picture")?;
             let (width, height) = size.unwrap_or((1920, 1080));
             Ok(Mode::Render {
                 width,
@@ -163,6 +165,7 @@ fn finish_mode(
         }
         Mode::Heightmap { .. } => {
             let output = output.ok_or_else(|| UsageError("heightmap needs -o FILE.png".into()))?;
+            output::format_of(&output, output::DATA_SETS, "a data set")?;
             if size.is_some() {
                 return Err(UsageError(
                     "--size goes with render, not heightmap (use --set detail=N)".into(),

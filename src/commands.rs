@@ -3,6 +3,7 @@
 use std::path::Path;
 use std::process::ExitCode;
 
+use crate::cli::output::{self, Format};
 use crate::render::{Frame, render_full};
 use crate::settings::{Settings, load, paths};
 use crate::terrain::{self, Heightfield, heightmap};
@@ -52,20 +53,34 @@ pub fn render(
         Err(e) => return fail(&e),
     };
     render_full(&field, settings, &mut frame);
-    if let Err(e) = crate::snapshot::write_png(output, &frame) {
+    let format = output::format_of(output, output::PICTURES, "a picture").unwrap_or(Format::Png);
+    if let Err(e) = crate::snapshot::write_picture(output, &frame, format) {
         return fail(&e);
     }
     print_seed(seed, output);
     ExitCode::SUCCESS
 }
 
-/// `mountains heightmap`: generate a data set and save it as a 16-bit PNG.
+/// `mountains heightmap`: generate a data set and save it as a 16-bit PNG,
+/// or as raw 16-bit samples (`.r16`, `.raw`), whose height range it prints.
 pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> ExitCode {
     let (field, seed) = match mountain(settings, open) {
         Ok(m) => m,
         Err(e) => return fail(&e),
     };
-    if let Err(e) = heightmap::save(output, &field, seed, settings) {
+    let format = output::format_of(output, output::DATA_SETS, "a data set").unwrap_or(Format::Png);
+    if format == Format::Raw16 {
+        let (bytes, q) = heightmap::raw16(&field);
+        if let Err(e) = crate::fsutil::write_atomic(output, &bytes) {
+            return fail(&format!("{}: cannot write: {e}", output.display()));
+        }
+        let n = field.size();
+        println!(
+            "{n}x{n} 16-bit little-endian samples; 0 is height {}, 65535 is {}",
+            q.height(0),
+            q.height(u16::MAX)
+        );
+    } else if let Err(e) = heightmap::save(output, &field, seed, settings) {
         return fail(&e.to_string());
     }
     print_seed(seed, output);

@@ -38,8 +38,8 @@ Usage:
   mountains /c[:HWND] | --settings     the settings
   mountains --root                     xscreensaver: draw on $XSCREENSAVER_WINDOW or the root
   mountains --window-id ID             xscreensaver preview: draw into window ID (0x.. or decimal)
-  mountains render -o OUT.png [--size WxH] [OPTIONS]   one mountain to a PNG
-  mountains heightmap -o OUT.png [OPTIONS]             generate and save a data set
+  mountains render -o OUT.png [--size WxH] [OPTIONS]   one mountain to a PNG (.jpg: JPEG)
+  mountains heightmap -o OUT.png [OPTIONS]             generate and save a data set (.r16: raw)
   mountains --check-config [FILE]      check a preferences file; exit 0 if good, 1 if not
   mountains --help | --version
   mountains --xscreensaver-xml | --man-page   print contrib/mountains.xml or mountains.6

@@ -1,7 +1,9 @@
-//! Frames to PNG files: `mountains render`, and the P key's screenshots.
+//! Frames to picture files: `mountains render` (PNG or JPEG, by the
+//! extension), and the P key's screenshots (PNG).
 
 use std::path::Path;
 
+use crate::cli::output::Format;
 use crate::fsutil::write_atomic;
 use crate::render::Frame;
 
@@ -17,13 +19,44 @@ pub fn encode_png(frame: &Frame) -> Result<Vec<u8>, png::EncodingError> {
     // a screensaver's pictures are many and seldom kept.
     encoder.set_compression(png::Compression::Fastest);
     let mut writer = encoder.write_header()?;
+    writer.write_image_data(&rgb(frame))?;
+    writer.finish()?;
+    Ok(bytes)
+}
+
+/// The frame's pixels as bytes, red, green, blue.
+fn rgb(frame: &Frame) -> Vec<u8> {
     let mut rgb = Vec::with_capacity(frame.pixels().len() * 3);
     for &p in frame.pixels() {
         rgb.extend_from_slice(&[(p >> 16) as u8, (p >> 8) as u8, p as u8]);
     }
-    writer.write_image_data(&rgb)?;
-    writer.finish()?;
+    rgb
+}
+
+/// JPEG's quality: fine gradients in the sky without visible blocks.
+const JPEG_QUALITY: u8 = 90;
+
+/// Encodes `frame` as a JPEG (at most 65535 pixels a side, JPEG's limit).
+pub fn encode_jpeg(frame: &Frame) -> Result<Vec<u8>, String> {
+    let (Ok(w), Ok(h)) = (u16::try_from(frame.width()), u16::try_from(frame.height())) else {
+        return Err("JPEG allows at most 65535 pixels a side".into());
+    };
+    let mut bytes = Vec::new();
+    jpeg_encoder::Encoder::new(&mut bytes, JPEG_QUALITY)
+        .encode(&rgb(frame), w, h, jpeg_encoder::ColorType::Rgb)
+        .map_err(|e| e.to_string())?;
     Ok(bytes)
+}
+
+/// Writes `frame` to `path` as `format` says (PNG or JPEG), atomically.
+/// The message names the file.
+pub fn write_picture(path: &Path, frame: &Frame, format: Format) -> Result<(), String> {
+    let bytes = match format {
+        Format::Jpeg => encode_jpeg(frame),
+        _ => encode_png(frame).map_err(|e| e.to_string()),
+    }
+    .map_err(|e| format!("{}: cannot encode: {e}", path.display()))?;
+    write_atomic(path, &bytes).map_err(|e| format!("{}: cannot write: {e}", path.display()))
 }
 
 /// Writes `frame` to `path` as a PNG, atomically (an existing file is

@@ -321,3 +321,52 @@ fn an_unknown_key_is_a_warning_for_render_and_an_error_for_check_config() {
     ]);
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
 }
+
+/// `-o` writes what its extension says, or refuses before any work.
+#[test]
+fn the_output_extension_chooses_the_format() {
+    let dir = scratch("formats");
+    let jpg = dir.join("m.JPG");
+    let o = mountains(&[
+        "render",
+        "--size",
+        "96x54",
+        "--set",
+        "seed=3",
+        "-o",
+        jpg.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let bytes = std::fs::read(&jpg).unwrap();
+    assert_eq!(&bytes[..3], &[0xff, 0xd8, 0xff], "not a JPEG");
+    let raw = dir.join("h.r16");
+    let o = mountains(&[
+        "heightmap",
+        "--set",
+        "detail=5",
+        "--set",
+        "seed=3",
+        "-o",
+        raw.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(std::fs::read(&raw).unwrap().len(), 33 * 33 * 2);
+    assert!(String::from_utf8_lossy(&o.stdout).contains("33x33 16-bit little-endian"));
+    for (args, allowed) in [
+        (&["render", "-o"][..], ".png, .jpg, .jpeg"),
+        (&["heightmap", "-o"][..], ".png, .r16, .raw"),
+    ] {
+        let bad = dir.join("out.gif");
+        let mut all = args.to_vec();
+        all.push(bad.to_str().unwrap());
+        let o = mountains(&all);
+        assert_eq!(o.status.code(), Some(2));
+        let err = stderr(&o);
+        assert!(
+            err.contains("-o ") && err.contains("cannot be written as .gif"),
+            "{err}"
+        );
+        assert!(err.contains(allowed), "{err}");
+        assert!(!bad.exists());
+    }
+}

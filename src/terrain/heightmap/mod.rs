@@ -75,6 +75,20 @@ pub struct DataSet {
     pub notes: Vec<String>,
 }
 
+/// The field as raw 16-bit little-endian samples, row by row from the back,
+/// spread over the whole range (what terrain tools import as `.r16`), and
+/// the heights the samples stand for.
+pub fn raw16(field: &Heightfield) -> (Vec<u8>, quantise::Quantisation) {
+    let (min, max) = quantise::min_max(field.heights());
+    let q = quantise::Quantisation::spanning(min, max);
+    let bytes = field
+        .heights()
+        .iter()
+        .flat_map(|&h| q.sample(h).to_le_bytes())
+        .collect();
+    (bytes, q)
+}
+
 /// Saves `field` as a 16-bit grayscale PNG with the seed and settings in text chunks.
 ///
 /// Writes atomically: on any failure an existing file at `path` is untouched.

@@ -1,0 +1,56 @@
+//! What `-o FILE` writes, from its extension: pictures as PNG or JPEG, data
+//! sets as a 16-bit PNG or as the raw 16-bit samples terrain tools import
+//! (`.r16`, `.raw`). Anything else is refused before any work is done.
+
+use std::path::Path;
+
+use super::UsageError;
+
+/// A file type `-o` can write.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Format {
+    /// PNG (8-bit RGB pictures, 16-bit gray data sets).
+    Png,
+    /// JPEG, quality 90 (pictures).
+    Jpeg,
+    /// Little-endian 16-bit samples, row by row from the back (data sets).
+    Raw16,
+}
+
+/// Extensions and formats `render -o` writes.
+pub const PICTURES: &[(&str, Format)] = &[
+    ("png", Format::Png),
+    ("jpg", Format::Jpeg),
+    ("jpeg", Format::Jpeg),
+];
+
+/// Extensions and formats `heightmap -o` writes.
+pub const DATA_SETS: &[(&str, Format)] = &[
+    ("png", Format::Png),
+    ("r16", Format::Raw16),
+    ("raw", Format::Raw16),
+];
+
+/// The format `path`'s extension names among `allowed` (no extension: PNG).
+pub fn format_of(
+    path: &Path,
+    allowed: &[(&str, Format)],
+    what: &str,
+) -> Result<Format, UsageError> {
+    let Some(ext) = path.extension() else {
+        return Ok(Format::Png);
+    };
+    let ext = ext.to_string_lossy().to_ascii_lowercase();
+    allowed
+        .iter()
+        .find(|(e, _)| *e == ext)
+        .map(|&(_, f)| f)
+        .ok_or_else(|| {
+            let names: Vec<String> = allowed.iter().map(|(e, _)| format!(".{e}")).collect();
+            UsageError(format!(
+                "-o {}: {what} cannot be written as .{ext}; use {}",
+                path.display(),
+                names.join(", ")
+            ))
+        })
+}
