@@ -462,3 +462,22 @@ fn display_fps_draws_its_overlay_in_the_corner() {
     });
     saver.assert_running();
 }
+
+/// The title follows the slide show when it moves on by itself.
+#[test]
+fn display_window_title_follows_the_slide_show() {
+    let Some(x) = Xvfb::start(1280, 800, &[]) else {
+        return;
+    };
+    let mut saver = Saver::start(&x, "title", &["--window"], &[]);
+    let window = wait_for_window(&x, &mut saver, 960, 600);
+    poll(&mut saver, "a seed in the title", || {
+        x.title(window).contains("seed")
+    });
+    let first = x.title(window);
+    let took = poll(&mut saver, "the next slide's seed in the title", || {
+        let now = x.title(window);
+        now.contains("seed") && now != first
+    });
+    eprintln!("title: {first:?} changed after {took:?}");
+}

@@ -93,18 +93,25 @@ pub fn changed_settings(action: Action, settings: &Settings) -> Option<(Settings
     Some((s, applies))
 }
 
-/// The window mode's title: the seed (to reproduce a mountain) and the
-/// settings the keys change.
-pub fn window_title(settings: &Settings, seed: Option<u64>, paused: bool) -> String {
+/// The window mode's title, describing the mountain on screen: its seed (to
+/// reproduce it), the colours it is drawn in (`now`: they apply at once) and
+/// the cragginess and detail it was made with (`made_with`: those keys only
+/// shape the next mountain).
+pub fn window_title(
+    now: &Settings,
+    made_with: &Settings,
+    seed: Option<u64>,
+    paused: bool,
+) -> String {
     let mut title = match seed {
         Some(seed) => format!("mountains: seed {seed}"),
         None => "mountains".to_string(),
     };
     title.push_str(&format!(
         ", {:?}, cragginess {}",
-        settings.color, settings.cragginess
+        now.color, made_with.cragginess
     ));
-    if settings.low_detail {
+    if made_with.low_detail {
         title.push_str(", low detail");
     }
     if paused {
@@ -206,14 +213,24 @@ mod tests {
             ..Settings::default()
         };
         assert_eq!(
-            window_title(&s, Some(42), false),
+            window_title(&s, &s, Some(42), false),
             "mountains: seed 42, Natural, cragginess 64"
         );
         s.low_detail = true;
         s.color = ColorMode::Sonar;
         assert_eq!(
-            window_title(&s, None, true),
+            window_title(&s, &s, None, true),
             "mountains, Sonar, cragginess 64, low detail, paused"
+        );
+        // Keys for the next mountain do not describe the one on screen.
+        let next = Settings {
+            cragginess: 128,
+            low_detail: false,
+            ..s.clone()
+        };
+        assert_eq!(
+            window_title(&next, &s, Some(7), false),
+            "mountains: seed 7, Sonar, cragginess 64, low detail"
         );
     }
 

@@ -60,6 +60,8 @@ struct Screen {
     opened_path: Option<std::path::PathBuf>,
     /// Full screen: the monitor this window covers.
     head: Option<Head>,
+    /// The title last given to the window.
+    title: String,
 }
 
 /// Runs `mode` with winit until it ends.
@@ -232,6 +234,8 @@ impl ApplicationHandler<UserEvent> for App {
         let now = Instant::now();
         for i in 0..self.screens.len() {
             let damage = self.screens[i].show.tick(now);
+            // The slide show moves on by itself: the title follows.
+            self.update_title(i);
             self.present(event_loop, i, damage);
         }
         #[cfg(windows)]
@@ -444,6 +448,7 @@ impl App {
             show,
             opened_path: None,
             head,
+            title: String::new(),
         });
         let i = self.screens.len() - 1;
         self.update_title(i);
@@ -556,13 +561,16 @@ impl App {
         self.present(event_loop, i, damage);
     }
 
-    /// The window title tells the seed (to reproduce a mountain) and the state.
-    fn update_title(&self, i: usize) {
+    /// The window title tells the seed (to reproduce a mountain) and the
+    /// state of the mountain on screen; sent only when it changes.
+    fn update_title(&mut self, i: usize) {
         if self.mode == AppMode::Window {
-            let show = &self.screens[i].show;
-            let seed = show.current().and_then(|m| m.seed);
-            let title = actions::window_title(show.settings(), seed, show.is_paused());
-            self.screens[i].window.set_title(&title);
+            let screen = &mut self.screens[i];
+            let title = screen.show.title();
+            if title != screen.title {
+                screen.window.set_title(&title);
+                screen.title = title;
+            }
         }
     }
 

@@ -48,6 +48,8 @@ const REDRAW_POLL: Duration = Duration::from_millis(4);
 /// The slide show of one window: what is on screen and what comes next.
 pub struct Show {
     settings: Settings,
+    /// The settings the mountain on screen was made with.
+    made_with: Settings,
     /// A data set opened by the user: shown every time instead of generating.
     opened: Option<Mountain>,
     current: Option<Mountain>,
@@ -79,6 +81,7 @@ impl Show {
             .clone()
             .unwrap_or_else(|| Mountain::generate(&detail::for_frame(&settings, size.0, size.1)));
         let mut show = Show {
+            made_with: settings.clone(),
             settings,
             opened,
             current: Some(first),
@@ -100,6 +103,7 @@ impl Show {
         let pacing = Pacing::from_seconds(0.0, 0.0, false);
         Show {
             settings: Settings::default(),
+            made_with: Settings::default(),
             opened: None,
             current: None,
             next: Next::None,
@@ -131,6 +135,12 @@ impl Show {
     /// The settings this show draws with.
     pub fn settings(&self) -> &Settings {
         &self.settings
+    }
+
+    /// The window title for what is on screen now (see `actions::window_title`).
+    pub fn title(&self) -> String {
+        let seed = self.current.as_ref().and_then(|m| m.seed);
+        super::actions::window_title(&self.settings, &self.made_with, seed, self.is_paused())
     }
 
     /// When this show next needs `tick`; `None`: not until an event arrives.
@@ -186,6 +196,9 @@ impl Show {
         // A redraw of the old mountain still under way is not wanted now.
         self.redraw = None;
         self.current = Some(next.unwrap_or_else(|| self.make_next_now()));
+        // Any change of settings dropped the mountain prepared before it, so
+        // the one now on screen was made with the settings of the moment.
+        self.made_with = self.settings.clone();
         self.slide += 1;
         let size = self.size();
         // The first strips go out with the cleared frame: no blank flash.
@@ -401,6 +414,41 @@ mod tests {
             }
         );
         assert_eq!(show.current().and_then(|m| m.seed), Some(7));
+    }
+
+    /// The title describes the mountain on screen: it follows the slide
+    /// show when it moves on by itself, and a key for the next mountain
+    /// (cragginess, low detail) shows only with that mountain.
+    #[test]
+    fn the_title_follows_the_mountain_on_screen() {
+        let t0 = Instant::now();
+        let first = Settings {
+            seed: None,
+            ..small_settings()
+        };
+        let mut show = Show::new(first.clone(), None, pacing(), (64, 48), t0);
+        let seed = |show: &Show| show.current().and_then(|m| m.seed).unwrap();
+        let one = seed(&show);
+        assert!(
+            show.title().contains(&format!("seed {one},")),
+            "{}",
+            show.title()
+        );
+        let craggier = Settings {
+            cragginess: 128,
+            ..first
+        };
+        show.change_settings(craggier, false, t0);
+        assert!(show.title().contains("cragginess 96"), "{}", show.title());
+        show.tick(t0 + Duration::from_millis(1000));
+        show.tick(t0 + Duration::from_millis(3000));
+        let two = seed(&show);
+        assert_ne!(one, two, "the slide show did not move on");
+        let title = show.title();
+        assert!(
+            title.contains(&format!("seed {two},")) && title.contains("cragginess 128"),
+            "{title}"
+        );
     }
 
     #[test]
