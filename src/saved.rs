@@ -8,10 +8,14 @@ use crate::render::Frame;
 use crate::settings::Settings;
 use crate::terrain::Heightfield;
 
-/// A readable file stem: `mountain-2026-11-22-023512-seed-42` (UTC).
+/// A readable file stem in local time: `mountain-2026-11-22-023512-seed-42`.
 pub fn file_stem(unix_seconds: u64, seed: Option<u64>) -> String {
-    let when = crate::log::format_utc(unix_seconds); // "2026-11-22 02:35:12"
-    let (date, time) = when.split_once(' ').unwrap_or((&when, ""));
+    stem_at(&crate::clock::local_plain(unix_seconds), seed)
+}
+
+/// The stem for a `YYYY-MM-DD HH:MM:SS` time.
+fn stem_at(when: &str, seed: Option<u64>) -> String {
+    let (date, time) = when.split_once(' ').unwrap_or((when, ""));
     let time: String = time.chars().filter(char::is_ascii_digit).collect();
     match seed {
         Some(seed) => format!("mountain-{date}-{time}-seed-{seed}"),
@@ -33,10 +37,7 @@ pub fn free_path(dir: &Path, stem: &str, suffix: &str) -> Option<PathBuf> {
 /// A new file name in `dir` (created if missing) for something saved now.
 pub fn new_path(dir: &Path, suffix: &str, seed: Option<u64>) -> Result<PathBuf, String> {
     std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
-    let now = std::time::SystemTime::now()
-        .duration_since(std::time::UNIX_EPOCH)
-        .map_or(0, |d| d.as_secs());
-    free_path(dir, &file_stem(now, seed), suffix)
+    free_path(dir, &file_stem(crate::clock::now(), seed), suffix)
         .ok_or_else(|| format!("{}: too many files with the same name", dir.display()))
 }
 
@@ -118,12 +119,21 @@ mod tests {
     use super::*;
 
     #[test]
-    fn file_names_hold_date_time_and_seed() {
-        assert_eq!(file_stem(0, Some(7)), "mountain-1970-01-01-000000-seed-7");
-        // 2026-11-22 02:35:12 UTC
-        assert_eq!(file_stem(1_795_314_912, None), "mountain-2026-11-22-023512");
-        // Leap day.
-        assert!(file_stem(951_782_400, None).starts_with("mountain-2000-02-29-"));
+    fn file_names_hold_local_date_time_and_seed() {
+        assert_eq!(
+            stem_at("1970-01-01 00:00:00", Some(7)),
+            "mountain-1970-01-01-000000-seed-7"
+        );
+        assert_eq!(
+            stem_at("2026-11-22 02:35:12", None),
+            "mountain-2026-11-22-023512"
+        );
+        // The stem of a moment is its local time.
+        let t = 1_795_314_912;
+        let local = crate::clock::local_plain(t)
+            .replace(' ', "-")
+            .replace(':', "");
+        assert_eq!(file_stem(t, None), format!("mountain-{local}"));
     }
 
     #[test]

@@ -36,6 +36,32 @@ fn without_display_the_saver_says_set_display() {
     }
 }
 
+/// Log lines are in local time and say so: a POSIX zone string works
+/// without the tz database.
+#[test]
+fn log_lines_carry_local_time_and_its_offset() {
+    let home = xvfb::TempDir::new("log-local-time");
+    let out = Command::new(env!("CARGO_BIN_EXE_mountains"))
+        .args(["--root"])
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .env("TZ", "IST-5:30")
+        .env("HOME", &home.0)
+        .env("XDG_CONFIG_HOME", home.0.join("config"))
+        .env("XDG_DATA_HOME", home.0.join("data"))
+        .output()
+        .expect("run mountains");
+    assert!(!out.status.success());
+    let log =
+        std::fs::read_to_string(home.0.join("data/mountains/mountains.log")).expect("the log");
+    let line = log.lines().next().unwrap_or_default();
+    // [YYYY-MM-DD HH:MM:SS +05:30] message
+    assert!(
+        line.starts_with('[') && line[20..28].eq(" +05:30]"),
+        "{line:?}"
+    );
+}
+
 #[test]
 fn display_a_window_id_that_does_not_exist_is_named() {
     let Some(x) = Xvfb::start(320, 240, &[]) else {
