@@ -114,7 +114,7 @@ const ROWS: [&str; 95] = [
 /// One glyph: `GLYPH_H` rows, bit 4 the leftmost pixel.
 pub type Glyph = [u8; GLYPH_H as usize];
 
-const fn parse(rows: &str) -> Glyph {
+pub(super) const fn parse(rows: &str) -> Glyph {
     let bytes = rows.as_bytes();
     let mut glyph = [0u8; GLYPH_H as usize];
     let (mut i, mut row, mut col) = (0, 0, 0);
@@ -148,13 +148,18 @@ const fn parse_all() -> [Glyph; 95] {
 
 static GLYPHS: [Glyph; 95] = parse_all();
 
-/// The glyph for `c`; characters the font lacks are drawn as `?`.
+/// The glyph for `c`: ASCII and Latin-1; characters the font lacks are drawn as `?`.
 pub fn glyph(c: char) -> &'static Glyph {
-    let i = match c {
-        ' '..='~' => c as usize - 32,
-        _ => '?' as usize - 32,
-    };
-    &GLYPHS[i]
+    match c {
+        ' '..='~' => &GLYPHS[c as usize - 32],
+        '\u{a0}'..='\u{ff}' => &super::font_latin1::LATIN1[c as usize - 0xa0],
+        _ => &GLYPHS['?' as usize - 32],
+    }
+}
+
+/// The glyph of ASCII character `c` (for composing others at compile time).
+pub(super) const fn ascii(c: char) -> &'static Glyph {
+    &GLYPHS[c as usize - 32]
 }
 
 /// Width of `text` in font pixels.
@@ -165,6 +170,28 @@ pub fn text_width(text: &str) -> u32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every printable Latin-1 character has a glyph of its own: none falls
+    /// back to `?`, and no two share a drawing (so é and è stay apart).
+    #[test]
+    fn latin1_letters_have_glyphs_of_their_own() {
+        let question = glyph('?');
+        let mut seen = std::collections::HashMap::new();
+        for code in (0x20u32..0x7f).chain(0xa1..=0xff) {
+            let c = char::from_u32(code).unwrap();
+            let g = glyph(c);
+            if c != '?' {
+                assert_ne!(g, question, "{c:?} is drawn as ?");
+            }
+            if c != ' ' {
+                assert!(g.iter().any(|&row| row != 0), "{c:?} is blank");
+            }
+            if let Some(other) = seen.insert(*g, c) {
+                panic!("{c:?} and {other:?} share a glyph");
+            }
+        }
+        assert_eq!(glyph('\u{100}'), question, "beyond Latin-1 is ?");
+    }
 
     #[test]
     fn every_glyph_has_seven_or_nine_rows_of_five() {
@@ -186,7 +213,8 @@ mod tests {
         for c in ('A'..='Z').chain('a'..='z').chain('0'..='9') {
             assert!(glyph(c).iter().any(|r| *r != 0), "{c}");
         }
-        assert_eq!(glyph('\u{e9}'), glyph('?'));
+        // Beyond Latin-1 (é has a glyph of its own now: see below).
+        assert_eq!(glyph('\u{101}'), glyph('?'));
     }
 
     #[test]

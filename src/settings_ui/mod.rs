@@ -10,6 +10,7 @@
 pub mod draw;
 pub mod editor;
 pub mod font;
+mod font_latin1;
 pub mod layout;
 pub mod model;
 pub mod preview;
