@@ -1,5 +1,6 @@
 //! The `--help` text, built from the key table so it can never fall behind.
 
+use crate::saver::input::WINDOW_KEYS;
 use crate::settings::keys::{self, KEYS};
 use crate::settings::{Settings, paths};
 
@@ -16,6 +17,10 @@ pub fn text() -> String {
             key.kind.allowed(),
             keys::get(&defaults, key)
         ));
+    }
+    t.push_str("\nKeys in a window (H or F1 shows them there too):\n");
+    for k in WINDOW_KEYS {
+        t.push_str(&format!("  {:<15} {}\n", k.label, k.doc));
     }
     let config =
         paths::config_file().map_or("(no home directory)".into(), |p| p.display().to_string());

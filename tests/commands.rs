@@ -165,6 +165,10 @@ fn help_lists_every_key() {
     for key in mountains::settings::keys::KEYS {
         assert!(text.contains(key.name), "--help lacks {}", key.name);
     }
+    for binding in mountains::saver::input::WINDOW_KEYS {
+        let line = format!("  {:<15} {}", binding.label, binding.doc);
+        assert!(text.contains(&line), "--help lacks the window key {line:?}");
+    }
 }
 
 #[test]

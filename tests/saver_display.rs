@@ -481,3 +481,40 @@ fn display_window_title_follows_the_slide_show() {
     });
     eprintln!("title: {first:?} changed after {took:?}");
 }
+
+/// H (and F1) shows the list of keys at the top left of the window; a
+/// second press hides it and the mountain is whole again.
+#[test]
+fn display_window_h_shows_the_keys_and_hides_them() {
+    let Some(x) = Xvfb::start(1280, 800, &[]) else {
+        return;
+    };
+    let args = ["--window", "--set", "pause_seconds=60"];
+    let mut saver = Saver::start(&x, "help-keys", &args, &[]);
+    let window = wait_for_window(&x, &mut saver, 960, 600);
+    poll(&mut saver, "a mountain in the window", || {
+        looks_drawn(&x.grab(window, 960, 600))
+    });
+    x.focus(window);
+    let corner = |x: &Xvfb| -> Vec<u32> {
+        let pixels = x.grab(window, 960, 600);
+        pixels
+            .chunks(960)
+            .take(40)
+            .flat_map(|r| r[..120].to_vec())
+            .collect()
+    };
+    let text_only =
+        |c: &[u32]| c.iter().all(|&p| p == 0 || p == 0x00ff_ffff) && c.contains(&0x00ff_ffff);
+    for keycode in [43, 67] {
+        // H, then F1.
+        x.key(keycode);
+        poll(&mut saver, "the list of keys at the top left", || {
+            text_only(&corner(&x))
+        });
+        x.key(keycode);
+        poll(&mut saver, "the mountain back under the list", || {
+            !text_only(&corner(&x))
+        });
+    }
+}

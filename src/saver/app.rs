@@ -520,6 +520,7 @@ impl App {
                         return;
                     }
                     Action::NewMountain => show.new_mountain(now),
+                    Action::ToggleHelp => show.toggle_help(now),
                     Action::TogglePause => {
                         show.toggle_pause(now);
                         Rect::default()

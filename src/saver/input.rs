@@ -4,7 +4,7 @@ use winit::event::{DeviceEvent, ElementState};
 use winit::keyboard::{Key, KeyCode, NamedKey, PhysicalKey};
 
 /// Something a key asks the window mode to do.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Action {
     /// N: start a new mountain now.
     NewMountain,
@@ -28,34 +28,98 @@ pub enum Action {
     LessCraggy,
     /// Esc, Q: quit.
     Quit,
+    /// H, F1: show or hide the list of keys.
+    ToggleHelp,
 }
+
+/// One window-mode key: what it is called, the characters that press it,
+/// what it does. `--help` and the H overlay list this table, and key presses
+/// are looked up in it, so the three never disagree.
+#[derive(Debug, Clone, Copy)]
+pub struct Binding {
+    /// The key's name for people.
+    pub label: &'static str,
+    /// The characters it types (lower case); named keys are matched apart.
+    pub chars: &'static [char],
+    /// What it does.
+    pub action: Action,
+    /// What it does, in words.
+    pub doc: &'static str,
+}
+
+const fn bind(
+    label: &'static str,
+    chars: &'static [char],
+    action: Action,
+    doc: &'static str,
+) -> Binding {
+    Binding {
+        label,
+        chars,
+        action,
+        doc,
+    }
+}
+
+/// Every key of the window mode, in the order they are listed.
+pub const WINDOW_KEYS: &[Binding] = &[
+    bind("N", &['n'], Action::NewMountain, "a new mountain now"),
+    bind("Space", &[' '], Action::TogglePause, "pause or resume"),
+    bind("S", &['s'], Action::SaveDataSet, "save the data set"),
+    bind(
+        "O",
+        &['o'],
+        Action::OpenDataSet,
+        "open the next saved data set",
+    ),
+    bind("P", &['p'], Action::Screenshot, "save a screenshot"),
+    bind("C", &['c'], Action::NextColor, "next colour (now)"),
+    bind(
+        "D",
+        &['d'],
+        Action::ToggleRelativeDepth,
+        "relative depth on/off (now)",
+    ),
+    bind(
+        "L",
+        &['l'],
+        Action::ToggleLowDetail,
+        "low detail on/off (next mountain)",
+    ),
+    // '=' is + without Shift on most layouts.
+    bind(
+        "+",
+        &['+', '='],
+        Action::MoreCraggy,
+        "craggier (next mountain)",
+    ),
+    bind(
+        "-",
+        &['-', '_'],
+        Action::LessCraggy,
+        "smoother (next mountain)",
+    ),
+    bind("H, F1", &['h'], Action::ToggleHelp, "this list on/off"),
+    bind("Esc, Q", &['q'], Action::Quit, "quit"),
+];
 
 /// The action a key press asks for in window mode, if any.
 pub fn action_for_key(key: &Key) -> Option<Action> {
     match key {
         Key::Named(NamedKey::Escape) => Some(Action::Quit),
         Key::Named(NamedKey::Space) => Some(Action::TogglePause),
+        Key::Named(NamedKey::F1) => Some(Action::ToggleHelp),
         Key::Character(text) => action_for_char(text.chars().next()?),
         _ => None,
     }
 }
 
 fn action_for_char(c: char) -> Option<Action> {
-    match c.to_ascii_lowercase() {
-        'n' => Some(Action::NewMountain),
-        ' ' => Some(Action::TogglePause),
-        's' => Some(Action::SaveDataSet),
-        'o' => Some(Action::OpenDataSet),
-        'p' => Some(Action::Screenshot),
-        'c' => Some(Action::NextColor),
-        'd' => Some(Action::ToggleRelativeDepth),
-        'l' => Some(Action::ToggleLowDetail),
-        // '=' is + without Shift on most layouts.
-        '+' | '=' => Some(Action::MoreCraggy),
-        '-' | '_' => Some(Action::LessCraggy),
-        'q' => Some(Action::Quit),
-        _ => None,
-    }
+    let c = c.to_ascii_lowercase();
+    WINDOW_KEYS
+        .iter()
+        .find(|b| b.chars.contains(&c))
+        .map(|b| b.action)
 }
 
 /// Net pointer travel, in pixels, that counts as the user coming back.
@@ -145,6 +209,33 @@ impl WakeDetector {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Each key in the table, typed, does what the table says (in either
+    /// case); named keys do what their labels say.
+    #[test]
+    fn the_key_table_is_what_the_keys_do() {
+        for b in WINDOW_KEYS {
+            for &c in b.chars {
+                for typed in [c, c.to_ascii_uppercase()] {
+                    let key = Key::Character(typed.to_string().into());
+                    assert_eq!(action_for_key(&key), Some(b.action), "{typed:?}");
+                }
+            }
+        }
+        assert_eq!(
+            action_for_key(&Key::Named(NamedKey::F1)),
+            Some(Action::ToggleHelp)
+        );
+        assert_eq!(
+            action_for_key(&Key::Named(NamedKey::Escape)),
+            Some(Action::Quit)
+        );
+        assert_eq!(action_for_key(&Key::Character("z".into())), None);
+        let mut seen = std::collections::HashSet::new();
+        for b in WINDOW_KEYS {
+            assert!(seen.insert(b.action), "{:?} listed twice", b.action);
+        }
+    }
     use winit::event::RawKeyEvent;
 
     fn ch(s: &str) -> Key {
@@ -186,7 +277,8 @@ mod tests {
     fn other_keys_do_nothing() {
         assert_eq!(action_for_key(&ch("x")), None);
         assert_eq!(action_for_key(&ch("")), None);
-        assert_eq!(action_for_key(&Key::Named(NamedKey::F1)), None);
+        // F1 shows the list of keys now (issue 10); other function keys do nothing.
+        assert_eq!(action_for_key(&Key::Named(NamedKey::F2)), None);
     }
 
     #[test]

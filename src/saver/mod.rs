@@ -23,7 +23,6 @@ pub mod bands_x11;
 pub mod embed_win32;
 #[cfg(unix)]
 pub mod embed_x11;
-mod fps;
 pub mod fullscreen_win32;
 #[cfg(unix)]
 pub mod grab_x11;
@@ -32,6 +31,7 @@ pub mod heads;
 pub mod heads_x11;
 pub mod input;
 pub mod libcheck;
+mod overlay;
 pub mod present;
 mod redraw;
 pub mod show;

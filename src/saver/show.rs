@@ -5,7 +5,7 @@ use std::sync::Arc;
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
-use super::fps::FpsOverlay;
+use super::overlay::Overlay;
 use super::redraw::{Drawn, Redraw};
 use super::slideshow::{Due, Pacing, Slideshow};
 use super::source;
@@ -63,8 +63,8 @@ pub struct Show {
     slideshow: Slideshow,
     /// Number of the slide on screen, counted from 0: picks its source.
     slide: u64,
-    /// xscreensaver's `-fps` overlay, when asked for.
-    fps: Option<FpsOverlay>,
+    /// Text over the picture: `-fps`, the list of keys.
+    overlay: Overlay,
 }
 
 impl Show {
@@ -92,7 +92,7 @@ impl Show {
             redraw: None,
             slideshow: Slideshow::new(pacing, 0, now),
             slide: 0,
-            fps: None,
+            overlay: Overlay::default(),
         };
         show.start_drawing(size, now);
         show
@@ -113,13 +113,28 @@ impl Show {
             redraw: None,
             slideshow: Slideshow::new(pacing, 0, now),
             slide: 0,
-            fps: None,
+            overlay: Overlay::default(),
         }
     }
 
     /// Draws the frame rate and load over the picture from now on (`-fps`).
     pub fn show_fps(&mut self) {
-        self.fps = Some(FpsOverlay::new());
+        self.overlay = Overlay::new(true);
+    }
+
+    /// H, F1: shows the list of keys for a while, or hides it.
+    pub fn toggle_help(&mut self, now: Instant) -> Rect {
+        self.overlay.toggle_help(now);
+        self.redraw_overlay(now)
+    }
+
+    /// Puts the picture back under the text and draws the text due now.
+    fn redraw_overlay(&mut self, now: Instant) -> Rect {
+        let Some(frame) = self.frame.as_mut() else {
+            return Rect::default();
+        };
+        let lifted = self.overlay.lift(frame);
+        lifted.union(&self.overlay.draw(frame, now))
     }
 
     /// The pixels to present; `None` while the window has no area.
@@ -149,7 +164,11 @@ impl Show {
             return Some(now + REDRAW_POLL);
         }
         self.painter.as_ref()?;
-        self.slideshow.wake_at(now)
+        let show = self.slideshow.wake_at(now);
+        match self.overlay.help_ends() {
+            Some(t) => Some(show.map_or(t, |s| s.min(t))),
+            None => show,
+        }
     }
 
     /// Does what is due at `now` and returns the rectangle that changed.
@@ -164,13 +183,15 @@ impl Show {
             return Rect::default();
         };
         match self.slideshow.due(now) {
+            Due::Wait if self.overlay.help_ends().is_some_and(|t| t <= now) => {
+                self.redraw_overlay(now)
+            }
             Due::Wait => Rect::default(),
             Due::Draw(strips) => {
-                let lifted = self.fps.as_mut().map(|o| o.lift(frame)).unwrap_or_default();
+                let lifted = self.overlay.lift(frame);
                 let mut damage = painter.step(frame, strips).union(&lifted);
-                if let Some(o) = self.fps.as_mut() {
-                    damage = damage.union(&o.draw(frame, now));
-                }
+                self.overlay.count_frame(now);
+                damage = damage.union(&self.overlay.draw(frame, now));
                 self.slideshow.drew(strips, now);
                 if painter.is_done() && !self.slideshow.is_holding() {
                     self.slideshow.finish_now(now);
@@ -304,9 +325,7 @@ impl Show {
     /// Puts a finished redraw on screen and starts the hold.
     fn show_redrawn(&mut self, drawn: Drawn, now: Instant) -> Rect {
         self.frame = drawn.frame;
-        if let Some(o) = self.fps.as_mut() {
-            o.forget();
-        }
+        self.overlay.forget();
         self.slideshow.restart(drawn.painter.strips_total(), now);
         self.painter = Some(drawn.painter);
         self.slideshow.finish_now(now);
@@ -325,9 +344,7 @@ impl Show {
             self.frame = None;
             self.frame = Frame::new(size.0, size.1);
         }
-        if let Some(o) = self.fps.as_mut() {
-            o.forget();
-        }
+        self.overlay.forget();
         let Some(frame) = self.frame.as_mut() else {
             self.painter = None;
             return Rect::default();
