@@ -88,7 +88,7 @@ impl Overlay {
             self.help_until = None;
         }
         let mut damage = Rect::default();
-        if let Some(lines) = self.frames.as_ref().map(|f| rate_lines(f)) {
+        if let Some(lines) = self.frames.as_ref().map(rate_lines) {
             damage = damage.union(&self.text_box(frame, &lines, false));
         }
         if self.help_until.is_some() {
