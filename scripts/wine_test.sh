@@ -7,4 +7,4 @@
 set -eu
 cd "$(dirname "$0")/.."
 cargo build --release --target x86_64-pc-windows-gnu
-MOUNTAINS_REQUIRE_WINE=1 MOUNTAINS_REQUIRE_DISPLAY=1 cargo test --test saver_wine "$@"
+MOUNTAINS_REQUIRE_WINE=1 MOUNTAINS_REQUIRE_DISPLAY=1 cargo test --test saver_wine -- --include-ignored "$@"

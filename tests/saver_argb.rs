@@ -3,6 +3,8 @@
 //! every pixel drawn must be opaque, or a compositor shows nothing.
 #![cfg(unix)]
 
+#[path = "common/tools.rs"]
+mod tools;
 #[path = "common/xvfb.rs"]
 mod xvfb;
 

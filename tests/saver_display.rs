@@ -2,6 +2,8 @@
 //! Each starts its own server and binary; times are printed, not asserted.
 #![cfg(unix)]
 
+#[path = "common/tools.rs"]
+mod tools;
 #[path = "common/xvfb.rs"]
 mod xvfb;
 

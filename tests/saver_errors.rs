@@ -1,6 +1,8 @@
 //! Window modes that cannot run say why, in words, without panicking.
 #![cfg(unix)]
 
+#[path = "common/tools.rs"]
+mod tools;
 #[path = "common/xvfb.rs"]
 mod xvfb;
 

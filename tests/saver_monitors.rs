@@ -2,6 +2,8 @@
 //! saver runs, under a private Xvfb whose monitors the test sets with RandR.
 #![cfg(unix)]
 
+#[path = "common/tools.rs"]
+mod tools;
 #[path = "common/xvfb.rs"]
 mod xvfb;
 

@@ -9,6 +9,8 @@
 
 #[path = "common/randr.rs"]
 mod randr;
+#[path = "common/tools.rs"]
+mod tools;
 #[path = "common/wine.rs"]
 mod wine;
 #[path = "common/xvfb.rs"]
@@ -67,6 +69,7 @@ fn expect_traced_exit(saver: &mut Saver, what: &str) {
 }
 
 #[test]
+#[ignore = "needs Wine, mingw and the cross-built exe: sh scripts/wine_test.sh"]
 fn display_wine_fullscreen_covers_the_screen_with_a_mountain() {
     let Some((_session, x, mut saver)) = fullscreen("wine-fs-cover") else {
         return;
@@ -83,6 +86,7 @@ fn display_wine_fullscreen_covers_the_screen_with_a_mountain() {
 }
 
 #[test]
+#[ignore = "needs Wine, mingw and the cross-built exe: sh scripts/wine_test.sh"]
 fn display_wine_fullscreen_hides_the_cursor() {
     let Some((_session, x, mut saver)) = fullscreen("wine-fs-cursor") else {
         return;
@@ -94,6 +98,7 @@ fn display_wine_fullscreen_hides_the_cursor() {
 }
 
 #[test]
+#[ignore = "needs Wine, mingw and the cross-built exe: sh scripts/wine_test.sh"]
 fn display_wine_fullscreen_ends_on_a_key() {
     let Some((_session, x, mut saver)) = fullscreen("wine-fs-key") else {
         return;
@@ -103,6 +108,7 @@ fn display_wine_fullscreen_ends_on_a_key() {
 }
 
 #[test]
+#[ignore = "needs Wine, mingw and the cross-built exe: sh scripts/wine_test.sh"]
 fn display_wine_fullscreen_ends_on_a_click() {
     let Some((_session, x, mut saver)) = fullscreen("wine-fs-click") else {
         return;
@@ -112,6 +118,7 @@ fn display_wine_fullscreen_ends_on_a_click() {
 }
 
 #[test]
+#[ignore = "needs Wine, mingw and the cross-built exe: sh scripts/wine_test.sh"]
 fn display_wine_fullscreen_ends_on_a_20px_move() {
     let Some((_session, x, mut saver)) = fullscreen("wine-fs-move") else {
         return;
@@ -121,6 +128,7 @@ fn display_wine_fullscreen_ends_on_a_20px_move() {
 }
 
 #[test]
+#[ignore = "needs Wine, mingw and the cross-built exe: sh scripts/wine_test.sh"]
 fn display_wine_fullscreen_ignores_a_3px_jitter() {
     let Some((_session, x, mut saver)) = fullscreen("wine-fs-jitter") else {
         return;
@@ -131,6 +139,7 @@ fn display_wine_fullscreen_ignores_a_3px_jitter() {
 }
 
 #[test]
+#[ignore = "needs Wine, mingw and the cross-built exe: sh scripts/wine_test.sh"]
 fn display_wine_fullscreen_follows_a_resolution_change() {
     let Some((_session, x, mut saver)) = fullscreen_at("wine-fs-mode", 1280, 480) else {
         return;
@@ -165,6 +174,7 @@ const HOST_SECONDS: u64 = 2;
 // reports frames presented. On Windows that is how every preview works.
 
 #[test]
+#[ignore = "needs Wine, mingw and the cross-built exe: sh scripts/wine_test.sh"]
 fn display_wine_preview_runs_in_the_host_window_and_ends_with_it() {
     let Some(session) = Session::begin() else {
         return;

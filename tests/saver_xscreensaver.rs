@@ -4,10 +4,12 @@
 //!
 //! xscreensaver refuses to launch hacks as root, so under root (CI) the daemon
 //! runs as `nobody` (setpriv), with a home and a copy of the binary in /tmp.
-//! Without xscreensaver the test says so and passes, unless
-//! `MOUNTAINS_REQUIRE_XSCREENSAVER=1` (CI), where that is a failure.
+//! Without xscreensaver the test fails, saying how to install it (or skips
+//! if asked to: see common/tools.rs).
 #![cfg(target_os = "linux")]
 
+#[path = "common/tools.rs"]
+mod tools;
 #[path = "common/xvfb.rs"]
 mod xvfb;
 
@@ -29,10 +31,11 @@ fn have_xscreensaver() -> bool {
         .status()
         .is_ok();
     if !found {
-        if std::env::var("MOUNTAINS_REQUIRE_XSCREENSAVER").is_ok_and(|v| v == "1") {
-            panic!("MOUNTAINS_REQUIRE_XSCREENSAVER=1 but xscreensaver is not installed");
-        }
-        eprintln!("skipped: xscreensaver is not installed (apt-get install xscreensaver)");
+        tools::missing(
+            "xscreensaver is not installed",
+            "apt-get install xscreensaver",
+            "MOUNTAINS_REQUIRE_XSCREENSAVER",
+        );
     }
     found
 }

@@ -6,6 +6,8 @@
 //! xdotool the tests say they skipped, unless `MOUNTAINS_REQUIRE_DISPLAY=1`.
 #![cfg(unix)]
 
+#[path = "common/tools.rs"]
+mod tools;
 #[path = "common/xvfb.rs"]
 mod xvfb;
 
@@ -23,17 +25,17 @@ use xvfb::Xvfb;
 const POLL: Duration = Duration::from_millis(100);
 const MAX_POLLS: u32 = 600;
 
-/// Starts a private Xvfb (the shared helper: fails instead of skipping when
-/// MOUNTAINS_REQUIRE_DISPLAY=1), with autorepeat off because a busy machine
-/// may deliver a key release late; `None` when Xvfb or xdotool is missing.
+/// Starts a private Xvfb with autorepeat off, because a busy machine may
+/// deliver a key release late; a missing Xvfb or xdotool fails the test
+/// (or skips it if asked to: see common/tools.rs).
 fn start_display() -> Option<Xvfb> {
     let x = Xvfb::start(2560, 1600, &["-ardelay", "60000"])?;
     if Command::new("xdotool").arg("version").output().is_err() {
-        assert!(
-            !std::env::var("MOUNTAINS_REQUIRE_DISPLAY").is_ok_and(|v| v == "1"),
-            "xdotool is not installed (MOUNTAINS_REQUIRE_DISPLAY=1)"
+        tools::missing(
+            "xdotool is not installed",
+            "apt-get install xdotool",
+            "MOUNTAINS_REQUIRE_DISPLAY",
         );
-        eprintln!("skipped: xdotool is not installed");
         return None;
     }
     Some(x)

@@ -36,8 +36,8 @@ pub struct Xvfb {
 
 impl Xvfb {
     /// Starts `Xvfb -noreset -displayfd 1 -screen 0 WxHx24` plus `extra`
-    /// arguments (`depth=16` among them changes the screen depth). Without Xvfb: `None` (the test skips), unless
-    /// `MOUNTAINS_REQUIRE_DISPLAY=1`, where that is a failure.
+    /// arguments (`depth=16` among them changes the screen depth). Without
+    /// Xvfb the test fails, or skips if asked to (see common/tools.rs).
     pub fn start(width: u16, height: u16, extra: &[&str]) -> Option<Xvfb> {
         let depth = extra_depth(extra).unwrap_or(24);
         let screen = format!("{width}x{height}x{depth}");
@@ -59,10 +59,8 @@ impl Xvfb {
         let mut child = match spawned {
             Ok(c) => c,
             Err(e) => {
-                if std::env::var("MOUNTAINS_REQUIRE_DISPLAY").is_ok_and(|v| v == "1") {
-                    panic!("MOUNTAINS_REQUIRE_DISPLAY=1 but Xvfb cannot start: {e}");
-                }
-                eprintln!("skipped: Xvfb is not available ({e})");
+                let what = format!("Xvfb cannot start ({e})");
+                crate::tools::missing(&what, "apt-get install xvfb", "MOUNTAINS_REQUIRE_DISPLAY");
                 return None;
             }
         };
