@@ -1,7 +1,75 @@
-//! File writing that never leaves a user's file half-written.
+//! File reading that never hangs or floods, and writing that never leaves
+//! a user's file half-written.
 
-use std::io::{self, Write};
+use std::fs::File;
+use std::io::{self, Read, Write};
 use std::path::Path;
+
+/// The largest preferences file read: a real one is a few KiB; a bigger one
+/// is a mistake (or `/dev/zero`), not something to read into memory.
+pub const MAX_PREFERENCES_BYTES: u64 = 4 << 20;
+
+/// Opens `path` for reading if it is a regular file (after following
+/// links) of at most `cap` bytes. A FIFO would block until someone writes
+/// to it, a device may never end: both get a message instead.
+pub fn open_regular(path: &Path, cap: u64) -> io::Result<File> {
+    let meta = std::fs::metadata(path)?;
+    if !meta.is_file() {
+        return Err(io::Error::new(
+            io::ErrorKind::InvalidInput,
+            format!("is {}, not a regular file", kind_of(&meta)),
+        ));
+    }
+    if meta.len() > cap {
+        return Err(too_big(meta.len(), cap));
+    }
+    File::open(path)
+}
+
+/// The bytes of the regular file at `path`, at most `cap` of them (a file
+/// that grows while it is read is cut off with an error, not followed).
+pub fn read_regular(path: &Path, cap: u64) -> io::Result<Vec<u8>> {
+    let file = open_regular(path, cap)?;
+    let mut bytes = Vec::new();
+    file.take(cap + 1).read_to_end(&mut bytes)?;
+    if bytes.len() as u64 > cap {
+        return Err(too_big(bytes.len() as u64, cap));
+    }
+    Ok(bytes)
+}
+
+fn too_big(len: u64, cap: u64) -> io::Error {
+    io::Error::new(
+        io::ErrorKind::InvalidData,
+        format!(
+            "is {} KiB; at most {} KiB is read",
+            len.div_ceil(1024),
+            cap / 1024
+        ),
+    )
+}
+
+/// What a non-regular file is, in words.
+fn kind_of(meta: &std::fs::Metadata) -> &'static str {
+    let t = meta.file_type();
+    if t.is_dir() {
+        return "a folder";
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        if t.is_fifo() {
+            return "a FIFO (named pipe)";
+        }
+        if t.is_char_device() || t.is_block_device() {
+            return "a device";
+        }
+        if t.is_socket() {
+            return "a socket";
+        }
+    }
+    "not a file"
+}
 
 /// Writes `bytes` to `path` atomically: a temporary file in the same folder,
 /// flushed to disk, then renamed over the target. A crash or a full disk

@@ -171,7 +171,7 @@ fn parse_set_value(raw: &str) -> Value {
 /// unreadable file is one problem; the settings are then left unchanged.
 pub fn apply_file(settings: &mut Settings, path: &Path) -> Vec<Problem> {
     let source = path.display().to_string();
-    match std::fs::read(path) {
+    match crate::fsutil::read_regular(path, crate::fsutil::MAX_PREFERENCES_BYTES) {
         Ok(bytes) => match String::from_utf8(bytes) {
             Ok(text) => apply_toml(settings, &text, &source),
             Err(e) => {

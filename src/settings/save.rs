@@ -94,7 +94,7 @@ pub fn save(path: &Path, settings: &Settings) -> Result<(), SaveError> {
         position,
         message,
     };
-    let text = match std::fs::read(path) {
+    let text = match crate::fsutil::read_regular(path, crate::fsutil::MAX_PREFERENCES_BYTES) {
         Ok(bytes) => String::from_utf8(bytes)
             .map_err(|_| error(None, "not valid UTF-8 text; fix it with Edit file".into()))?,
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => DEFAULT_TOML.to_string(),

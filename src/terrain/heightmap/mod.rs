@@ -104,14 +104,20 @@ pub fn save(
         .map_err(|e| HeightmapError::new(path, ErrorKind::Io, format!("cannot be written: {e}")))
 }
 
+/// The largest data set file read: a 4097x4097 16-bit PNG stored without
+/// compression is 32 MiB; anything far larger is not one of ours or a
+/// terrain tool's.
+pub const MAX_FILE_BYTES: u64 = 256 << 20;
+
 /// Loads an 8- or 16-bit grayscale PNG heightmap, ours or a terrain tool's.
 ///
+/// Only a regular file is read (a FIFO would block): see `fsutil::open_regular`.
 /// The file is streamed: memory is the fitted grid, never the whole image.
 pub fn load(path: &Path) -> Result<DataSet, HeightmapError> {
     let io = |e: std::io::Error| {
         HeightmapError::new(path, ErrorKind::Io, format!("cannot be read: {e}"))
     };
-    let file = std::fs::File::open(path).map_err(io)?;
+    let file = crate::fsutil::open_regular(path, MAX_FILE_BYTES).map_err(io)?;
     let len = file.metadata().map_err(io)?.len();
     let raw = decode::read(std::io::BufReader::new(file), len, path)?;
     finish(raw, path)

@@ -1,0 +1,91 @@
+//! Hostile inputs are refused quickly with a message that names them: a FIFO
+//! or a device where a file belongs, a preferences file far too large. Each
+//! run has a generous time bound (a hang is the defect, not slowness).
+#![cfg(unix)]
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+use std::time::{Duration, Instant};
+
+/// Far more than any of these takes; only a hang reaches it.
+const BOUND: Duration = Duration::from_secs(20);
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("mountains-hostile-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// Runs the binary, killing it (and failing) if it outlives `BOUND`.
+fn run(args: &[&str], home: &Path) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_mountains"))
+        .args(args)
+        .env("HOME", home)
+        .env("XDG_CONFIG_HOME", home.join("config"))
+        .env("XDG_DATA_HOME", home.join("data"))
+        .env_remove("DISPLAY")
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("run mountains");
+    let start = Instant::now();
+    while child.try_wait().expect("wait").is_none() {
+        if start.elapsed() > BOUND {
+            let _ = child.kill();
+            panic!("mountains {args:?} still running after {BOUND:?}");
+        }
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    child.wait_with_output().expect("output")
+}
+
+fn mkfifo(path: &Path) {
+    let status = Command::new("mkfifo").arg(path).status().expect("mkfifo");
+    assert!(status.success());
+}
+
+#[test]
+fn a_fifo_is_refused_not_waited_on() {
+    let dir = scratch("fifo");
+    let fifo = dir.join("f.png");
+    mkfifo(&fifo);
+    let f = fifo.to_str().unwrap();
+    let out = dir.join("o.png");
+    let o = out.to_str().unwrap();
+    for args in [
+        vec!["render", "--open", f, "-o", o],
+        vec!["render", "--config", f, "-o", o],
+        vec!["--check-config", f],
+        vec!["heightmap", "--open", f, "-o", o],
+    ] {
+        let got = run(&args, &dir);
+        let err = String::from_utf8_lossy(&got.stderr);
+        assert!(!got.status.success(), "{args:?}");
+        assert!(
+            err.contains(f) && err.contains("a FIFO (named pipe), not a regular file"),
+            "{args:?}: {err}"
+        );
+        assert!(!out.exists());
+    }
+}
+
+#[test]
+fn a_device_or_a_huge_file_is_not_read_into_memory() {
+    let dir = scratch("huge");
+    let got = run(&["render", "--config", "/dev/zero", "-o", "x.png"], &dir);
+    let err = String::from_utf8_lossy(&got.stderr);
+    assert!(
+        err.contains("/dev/zero: cannot read: is a device, not a regular file"),
+        "{err}"
+    );
+    let big = dir.join("big.toml");
+    std::fs::write(&big, "# padding\n".repeat(500_000)).unwrap();
+    let got = run(&["--check-config", big.to_str().unwrap()], &dir);
+    let err = String::from_utf8_lossy(&got.stderr);
+    assert_eq!(got.status.code(), Some(1));
+    assert!(
+        err.contains("big.toml: cannot read: is 4883 KiB; at most 4096 KiB is read"),
+        "{err}"
+    );
+}
