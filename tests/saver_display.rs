@@ -520,3 +520,49 @@ fn display_window_h_shows_the_keys_and_hides_them() {
         });
     }
 }
+
+/// SIGHUP (the session going away) ends a saver like SIGTERM, with status 0.
+#[test]
+fn display_sighup_ends_an_embedded_saver_with_status_0() {
+    let Some(x) = Xvfb::start(320, 240, &[]) else {
+        return;
+    };
+    let window = x.create_window(200, 150);
+    let id = window.to_string();
+    let mut saver = Saver::start(&x, "sighup", &["--window-id", &id], &[]);
+    poll(&mut saver, "a mountain", || {
+        looks_drawn(&x.grab(window, 200, 150))
+    });
+    saver.signal("HUP");
+    expect_exit(&mut saver, "SIGHUP");
+}
+
+/// A SIGHUP the parent chose to ignore (`nohup`) stays ignored.
+#[test]
+fn display_an_inherited_ignored_sighup_stays_ignored() {
+    let Some(x) = Xvfb::start(320, 240, &[]) else {
+        return;
+    };
+    let window = x.create_window(200, 150);
+    let id = window.to_string();
+    // `trap '' HUP` ignores SIGHUP, and exec keeps it ignored.
+    let script = format!(
+        "trap '' HUP; exec '{}' --window-id {id}",
+        env!("CARGO_BIN_EXE_mountains")
+    );
+    let mut saver = Saver::start_program(
+        &x,
+        "nohup",
+        std::path::Path::new("sh"),
+        &["-c", &script],
+        &[],
+    );
+    poll(&mut saver, "a mountain", || {
+        looks_drawn(&x.grab(window, 200, 150))
+    });
+    saver.signal("HUP");
+    std::thread::sleep(Duration::from_millis(300));
+    saver.assert_running();
+    saver.signal("TERM");
+    expect_exit(&mut saver, "SIGTERM after an ignored SIGHUP");
+}
