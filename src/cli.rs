@@ -325,8 +325,9 @@ impl Parser<'_> {
 
     /// A preference key given as a flag of its own (`-cragginess 40`).
     fn key_flag(&mut self, arg: &str) -> Result<(), UsageError> {
-        let (key, own) = key_flags::lookup(arg)
-            .ok_or_else(|| UsageError(format!("unknown argument `{arg}`")))?;
+        let (key, own) = key_flags::lookup(arg).ok_or_else(|| {
+            UsageError(format!("unknown argument `{}`", crate::quote::clipped(arg)))
+        })?;
         let kv = key_flags::take(arg, key, own, || self.value_str(arg).ok())?;
         self.inv.sets.push(kv);
         Ok(())

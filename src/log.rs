@@ -97,7 +97,12 @@ mod console {
     }
 }
 
+/// Longest message kept in the log: a line can never take the log far past
+/// its rotation size.
+const MAX_LINE_BYTES: usize = 4096;
+
 fn append(path: &PathBuf, message: &str) -> std::io::Result<()> {
+    let message = cut(message, MAX_LINE_BYTES);
     if let Some(dir) = path.parent() {
         std::fs::create_dir_all(dir)?;
     }
@@ -114,4 +119,34 @@ fn append(path: &PathBuf, message: &str) -> std::io::Result<()> {
         "[{}] {message}",
         crate::clock::local(crate::clock::now())
     )
+}
+
+/// `message` cut to at most `max` bytes, at a character boundary, saying so.
+fn cut(message: &str, max: usize) -> std::borrow::Cow<'_, str> {
+    if message.len() <= max {
+        return message.into();
+    }
+    let mut end = max;
+    while !message.is_char_boundary(end) {
+        end -= 1;
+    }
+    format!("{}... ({} bytes in all)", &message[..end], message.len()).into()
+}
+
+#[cfg(test)]
+mod cut_tests {
+    use super::*;
+
+    #[test]
+    fn a_huge_message_is_cut_at_a_character_boundary() {
+        assert_eq!(cut("short", 10), "short");
+        let long = "é".repeat(5000);
+        let c = cut(&long, MAX_LINE_BYTES);
+        assert!(c.len() < MAX_LINE_BYTES + 40, "{}", c.len());
+        assert!(
+            c.ends_with("... (10000 bytes in all)"),
+            "{}",
+            &c[c.len() - 30..]
+        );
+    }
 }

@@ -89,3 +89,36 @@ fn a_device_or_a_huge_file_is_not_read_into_memory() {
         "{err}"
     );
 }
+
+/// A value is echoed at most ~80 characters long, with its length: a flood
+/// in does not become a flood out.
+#[test]
+fn a_huge_value_is_quoted_short() {
+    let dir = scratch("flood");
+    let huge = "p".repeat(100_000);
+    let set = format!("color={huge}");
+    let got = run(&["render", "-o", "x.png", "--set", &set], &dir);
+    let err = String::from_utf8_lossy(&got.stderr);
+    assert_eq!(got.status.code(), Some(2));
+    assert!(err.len() < 2000, "{} bytes of message", err.len());
+    assert!(
+        err.contains("... (100000 characters) is not allowed"),
+        "{err}"
+    );
+    let config = dir.join("flood.toml");
+    std::fs::write(&config, format!("color = \"{}\"\n", "q".repeat(1_000_000))).unwrap();
+    let got = run(&["--check-config", config.to_str().unwrap()], &dir);
+    let err = String::from_utf8_lossy(&got.stderr);
+    assert!(
+        err.len() < 2000 && err.contains("(1000000 characters)"),
+        "{} bytes",
+        err.len()
+    );
+    let got = run(&[&format!("--{}", "z".repeat(50_000))], &dir);
+    let err = String::from_utf8_lossy(&got.stderr);
+    assert!(
+        err.contains("(50002 characters)") && err.len() < 4000,
+        "{} bytes",
+        err.len()
+    );
+}

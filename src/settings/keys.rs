@@ -33,6 +33,16 @@ impl Value {
     }
 }
 
+impl Value {
+    /// The value for a message: a long string is cut (see `quote::quoted`).
+    pub fn shown(&self) -> String {
+        match self {
+            Value::Str(s) => crate::quote::quoted(s),
+            v => v.to_string(),
+        }
+    }
+}
+
 impl std::fmt::Display for Value {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
@@ -285,7 +295,13 @@ fn edit_distance(a: &str, b: &str) -> usize {
 /// Checks `value` against `key` and stores it in `settings`; on refusal,
 /// says why in words that name the allowed values.
 pub fn apply(settings: &mut Settings, key: &Key, value: &Value) -> Result<(), String> {
-    let bad = || format!("{value} is not allowed; expected {}", key.kind.allowed());
+    let bad = || {
+        format!(
+            "{} is not allowed; expected {}",
+            value.shown(),
+            key.kind.allowed()
+        )
+    };
     let s = settings;
     match key.name {
         "seed" => s.seed = seed(value).ok_or_else(bad)?,

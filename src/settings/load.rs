@@ -42,7 +42,7 @@ impl fmt::Display for Problem {
             write!(f, ":{line}:{col}")?;
         }
         if let Some(key) = &self.key {
-            write!(f, ": key `{key}`")?;
+            write!(f, ": key `{}`", crate::quote::clipped(key))?;
         }
         write!(f, ": {}", self.message)
     }

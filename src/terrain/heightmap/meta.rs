@@ -12,6 +12,7 @@
 //! Keys outside this list are ignored; a known key given twice is an error.
 //! Values are plain ASCII decimal text.
 
+use crate::quote::quoted;
 use std::path::Path;
 
 use serde::Serialize;
@@ -264,16 +265,18 @@ fn check_format(v: &str) -> Result<(), String> {
         Ok(n) if n > FORMAT_VERSION => Err(format!(
             "format {n} is newer than this program, which reads format {FORMAT_VERSION}"
         )),
-        _ => Err(format!("{v:?} is not a known format")),
+        _ => Err(format!("{} is not a known format", quoted(v))),
     }
 }
 
 fn number(v: &str) -> Result<f64, String> {
-    let x: f64 = v.parse().map_err(|_| format!("{v:?} is not a number"))?;
+    let x: f64 = v
+        .parse()
+        .map_err(|_| format!("{} is not a number", quoted(v)))?;
     if x.is_finite() {
         Ok(x)
     } else {
-        Err(format!("{v:?} is not a finite number"))
+        Err(format!("{} is not a finite number", quoted(v)))
     }
 }
 
@@ -282,17 +285,19 @@ fn positive_f64(v: &str) -> Result<f64, String> {
     if x > 0.0 {
         Ok(x)
     } else {
-        Err(format!("{v:?} must be greater than 0"))
+        Err(format!("{} must be greater than 0", quoted(v)))
     }
 }
 
 fn finite_f32(v: &str) -> Result<f64, String> {
     number(v)?;
-    let x: f32 = v.parse().map_err(|_| format!("{v:?} is not a number"))?;
+    let x: f32 = v
+        .parse()
+        .map_err(|_| format!("{} is not a number", quoted(v)))?;
     if x.is_finite() {
         Ok(f64::from(x))
     } else {
-        Err(format!("{v:?} is too large"))
+        Err(format!("{} is too large", quoted(v)))
     }
 }
 
@@ -301,7 +306,7 @@ fn positive_f32(v: &str) -> Result<f64, String> {
     if x > 0.0 {
         Ok(x)
     } else {
-        Err(format!("{v:?} must be greater than 0"))
+        Err(format!("{} must be greater than 0", quoted(v)))
     }
 }
 
