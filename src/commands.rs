@@ -129,8 +129,8 @@ pub fn check_config(
             problems.push(p);
         }
     }
-    for p in &problems {
-        eprintln!("{p}");
+    for line in load::report(&problems) {
+        eprintln!("{line}");
     }
     if !problems.is_empty() {
         return ExitCode::FAILURE;

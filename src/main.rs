@@ -91,16 +91,19 @@ fn main() -> ExitCode {
 /// surprise. A key this version does not know is only warned about (the
 /// settings screen keeps such keys, and a newer version may have written it).
 fn refuse_problems(loaded: &load::Loaded) -> Option<ExitCode> {
-    let (unknown, broken): (Vec<_>, Vec<_>) =
-        loaded.problems.iter().partition(|p| p.is_unknown_key());
-    for p in unknown {
-        eprintln!("warning: {p}; ignored");
+    let (unknown, broken): (Vec<load::Problem>, Vec<load::Problem>) = loaded
+        .problems
+        .iter()
+        .cloned()
+        .partition(|p| p.is_unknown_key());
+    for line in load::report(&unknown) {
+        eprintln!("warning: {line}; ignored");
     }
     if broken.is_empty() {
         return None;
     }
-    for p in broken {
-        eprintln!("{p}");
+    for line in load::report(&broken) {
+        eprintln!("{line}");
     }
     Some(ExitCode::from(EXIT_USAGE))
 }
@@ -114,8 +117,8 @@ fn run_saver(
     xss: &cli::XssOptions,
 ) -> ExitCode {
     gui_log();
-    for p in &loaded.problems {
-        log::warn(&format!("{p} (using the default)"));
+    for line in load::report(&loaded.problems) {
+        log::warn(&format!("{line} (using the default)"));
     }
     let data_set = open.and_then(|path| match mountains::terrain::heightmap::load(path) {
         Ok(d) => {

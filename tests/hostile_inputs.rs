@@ -122,3 +122,31 @@ fn a_huge_value_is_quoted_short() {
         err.len()
     );
 }
+
+/// Checking a file with 100,000 unknown keys is linear (it took 49 s when a
+/// position was counted from the top for each key) and reports the first
+/// 20 problems and a count, not 100,000 lines.
+#[test]
+fn many_problems_are_checked_in_one_pass_and_counted() {
+    let dir = scratch("many");
+    let config = dir.join("many.toml");
+    let text: String = (0..100_000).map(|i| format!("k{i} = 1\n")).collect();
+    std::fs::write(&config, text).unwrap();
+    let got = run(&["--check-config", config.to_str().unwrap()], &dir);
+    assert_eq!(got.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&got.stderr);
+    let lines: Vec<&str> = err.lines().collect();
+    assert_eq!(lines.len(), 21, "{err}");
+    assert!(
+        lines[0]
+            .ends_with("many.toml:1:1: key `k0`: unknown key (`mountains --help` lists every key)"),
+        "{}",
+        lines[0]
+    );
+    assert!(
+        lines[19].contains("many.toml:20:1: key `k19`"),
+        "{}",
+        lines[19]
+    );
+    assert_eq!(lines[20], "... and 99980 more problems");
+}
