@@ -71,15 +71,16 @@ pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> Exi
     let format = output::format_of(output, output::DATA_SETS, "a data set").unwrap_or(Format::Png);
     if format == Format::Raw16 {
         let (bytes, q) = heightmap::raw16(&field);
-        if let Err(e) = crate::fsutil::write_atomic(output, &bytes) {
-            return fail(&format!("{}: cannot write: {e}", output.display()));
+        if let Err(e) = crate::fsutil::write_output(output, &bytes) {
+            return fail(&format!("-o {}: cannot write: {e}", output.display()));
         }
         let n = field.size();
-        println!(
+        let range = format!(
             "{n}x{n} 16-bit little-endian samples; 0 is height {}, 65535 is {}",
             q.height(0),
             q.height(u16::MAX)
         );
+        say(output, &range);
     } else if let Err(e) = heightmap::save(output, &field, seed, settings) {
         return fail(&e.to_string());
     }
@@ -87,10 +88,22 @@ pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> Exi
     ExitCode::SUCCESS
 }
 
+/// Says which seed made the file.
 fn print_seed(seed: Option<u64>, output: &Path) {
-    match seed {
-        Some(s) => println!("seed {s} -> {}", output.display()),
-        None => println!("-> {}", output.display()),
+    let line = match seed {
+        Some(s) => format!("seed {s} -> {}", output.display()),
+        None => format!("-> {}", output.display()),
+    };
+    say(output, &line);
+}
+
+/// A line about `output` for the user: on stdout, or on stderr when the
+/// file itself went to standard output (`-o -`).
+fn say(output: &Path, line: &str) {
+    if output == Path::new("-") {
+        eprintln!("{line}");
+    } else {
+        println!("{line}");
     }
 }
 

@@ -71,10 +71,44 @@ fn kind_of(meta: &std::fs::Metadata) -> &'static str {
     "not a file"
 }
 
-/// Writes `bytes` to `path` atomically: a temporary file in the same folder,
-/// flushed to disk, then renamed over the target. A crash or a full disk
-/// leaves either the old file or the new one, never a truncated mix.
+/// Writes `bytes` to `path`, or to standard output when `path` is `-`
+/// (`-o -`, for a pipe); see [`write_atomic`].
+pub fn write_output(path: &Path, bytes: &[u8]) -> io::Result<()> {
+    if path == Path::new("-") {
+        let mut out = io::stdout().lock();
+        out.write_all(bytes)?;
+        return out.flush();
+    }
+    write_atomic(path, bytes)
+}
+
+/// Writes `bytes` to `path` so a reader sees the old file or the new one,
+/// never a mix: a temporary file in the same folder, flushed to disk, then
+/// renamed over the target. A symbolic link is written through (its target
+/// is replaced, the link stays); a device or FIFO is written to directly
+/// (there is nothing to replace: `-o /dev/null` must not make a file); a
+/// folder is refused.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> io::Result<()> {
+    let target = match std::fs::canonicalize(path) {
+        Ok(real) => real,
+        // Not there yet (or a dangling link): the name itself.
+        Err(_) => path.to_path_buf(),
+    };
+    match std::fs::metadata(&target) {
+        Ok(m) if m.is_dir() => Err(io::Error::new(
+            io::ErrorKind::InvalidInput,
+            "is a folder, not a file",
+        )),
+        Ok(m) if !m.is_file() => std::fs::OpenOptions::new()
+            .write(true)
+            .open(&target)?
+            .write_all(bytes),
+        _ => replace_file(&target, bytes),
+    }
+}
+
+/// The temporary-file-and-rename write of `write_atomic`, for a regular file.
+fn replace_file(path: &Path, bytes: &[u8]) -> io::Result<()> {
     let dir = match path.parent() {
         Some(p) if !p.as_os_str().is_empty() => p,
         _ => Path::new("."),

@@ -4,7 +4,7 @@
 use std::path::Path;
 
 use crate::cli::output::Format;
-use crate::fsutil::write_atomic;
+use crate::fsutil::{write_atomic, write_output};
 use crate::render::Frame;
 
 /// Encodes `frame` as an 8-bit RGB PNG.
@@ -56,7 +56,7 @@ pub fn write_picture(path: &Path, frame: &Frame, format: Format) -> Result<(), S
         _ => encode_png(frame).map_err(|e| e.to_string()),
     }
     .map_err(|e| format!("{}: cannot encode: {e}", path.display()))?;
-    write_atomic(path, &bytes).map_err(|e| format!("{}: cannot write: {e}", path.display()))
+    write_output(path, &bytes).map_err(|e| format!("-o {}: cannot write: {e}", path.display()))
 }
 
 /// Writes `frame` to `path` as a PNG, atomically (an existing file is

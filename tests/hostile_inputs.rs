@@ -150,3 +150,76 @@ fn many_problems_are_checked_in_one_pass_and_counted() {
     );
     assert_eq!(lines[20], "... and 99980 more problems");
 }
+
+/// `-o` through a symbolic link replaces the link's target (the link stays
+/// a link); into a FIFO it writes into the FIFO (nothing is renamed over
+/// it); `-o -` writes to standard output; a folder is refused.
+#[test]
+fn writes_go_through_links_and_into_pipes() {
+    let dir = scratch("writes");
+    let real = dir.join("real.png");
+    std::fs::write(&real, "old").unwrap();
+    let link = dir.join("link.png");
+    std::os::unix::fs::symlink(&real, &link).unwrap();
+    let got = run(
+        &["render", "--size", "64x36", "-o", link.to_str().unwrap()],
+        &dir,
+    );
+    assert!(
+        got.status.success(),
+        "{}",
+        String::from_utf8_lossy(&got.stderr)
+    );
+    assert!(
+        std::fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+    assert!(std::fs::read(&real).unwrap().starts_with(b"\x89PNG"));
+
+    let fifo = dir.join("pipe.png");
+    mkfifo(&fifo);
+    let copy = dir.join("copied.png");
+    let reader = Command::new("sh")
+        .args([
+            "-c",
+            &format!("cat '{}' > '{}'", fifo.display(), copy.display()),
+        ])
+        .spawn()
+        .expect("a reader for the FIFO");
+    let got = run(
+        &["render", "--size", "64x36", "-o", fifo.to_str().unwrap()],
+        &dir,
+    );
+    assert!(
+        got.status.success(),
+        "{}",
+        String::from_utf8_lossy(&got.stderr)
+    );
+    let _ = reader.wait_with_output();
+    use std::os::unix::fs::FileTypeExt;
+    assert!(
+        std::fs::symlink_metadata(&fifo)
+            .unwrap()
+            .file_type()
+            .is_fifo()
+    );
+    assert!(std::fs::read(&copy).unwrap().starts_with(b"\x89PNG"));
+
+    let got = run(&["render", "--size", "64x36", "-o", "-"], &dir);
+    assert!(got.status.success());
+    assert!(got.stdout.starts_with(b"\x89PNG"), "stdout is not the PNG");
+    assert!(String::from_utf8_lossy(&got.stderr).contains("-> -"));
+
+    let got = run(
+        &["render", "--size", "64x36", "-o", dir.to_str().unwrap()],
+        &dir,
+    );
+    let err = String::from_utf8_lossy(&got.stderr);
+    assert_eq!(got.status.code(), Some(1));
+    assert!(
+        err.contains("cannot write: is a folder, not a file"),
+        "{err}"
+    );
+}
