@@ -41,11 +41,18 @@ pub fn render(
     output: &Path,
 ) -> ExitCode {
     let Some(mut frame) = Frame::new(width, height) else {
-        eprintln!(
-            "mountains: --size {width}x{height}: too large (at most {} pixels)",
-            crate::render::frame::MAX_PIXELS
-        );
-        return ExitCode::from(EXIT_USAGE);
+        let pixels = u64::from(width) * u64::from(height);
+        if pixels > crate::render::frame::MAX_PIXELS {
+            eprintln!(
+                "mountains: --size {width}x{height}: too large (at most {} pixels)",
+                crate::render::frame::MAX_PIXELS
+            );
+            return ExitCode::from(EXIT_USAGE);
+        }
+        return fail(&format!(
+            "--size {width}x{height}: not enough memory for the frame ({} MiB)",
+            pixels * 4 >> 20
+        ));
     };
     let settings = &crate::render::detail::for_frame(settings, width, height);
     let (field, seed) = match mountain(settings, open) {

@@ -19,18 +19,30 @@ pub fn encode_png(frame: &Frame) -> Result<Vec<u8>, png::EncodingError> {
     // a screensaver's pictures are many and seldom kept.
     encoder.set_compression(png::Compression::Fastest);
     let mut writer = encoder.write_header()?;
-    writer.write_image_data(&rgb(frame))?;
+    let rgb = rgb(frame).ok_or_else(|| {
+        png::EncodingError::from(std::io::Error::new(
+            std::io::ErrorKind::OutOfMemory,
+            no_memory(),
+        ))
+    })?;
+    writer.write_image_data(&rgb)?;
     writer.finish()?;
     Ok(bytes)
 }
 
-/// The frame's pixels as bytes, red, green, blue.
-fn rgb(frame: &Frame) -> Vec<u8> {
-    let mut rgb = Vec::with_capacity(frame.pixels().len() * 3);
+/// The frame's pixels as bytes, red, green, blue; `None` if the memory for
+/// them cannot be had.
+fn rgb(frame: &Frame) -> Option<Vec<u8>> {
+    let mut rgb = Vec::new();
+    rgb.try_reserve_exact(frame.pixels().len() * 3).ok()?;
     for &p in frame.pixels() {
         rgb.extend_from_slice(&[(p >> 16) as u8, (p >> 8) as u8, p as u8]);
     }
-    rgb
+    Some(rgb)
+}
+
+fn no_memory() -> String {
+    "not enough memory to encode the frame".into()
 }
 
 /// JPEG's quality: fine gradients in the sky without visible blocks.
@@ -43,7 +55,12 @@ pub fn encode_jpeg(frame: &Frame) -> Result<Vec<u8>, String> {
     };
     let mut bytes = Vec::new();
     jpeg_encoder::Encoder::new(&mut bytes, JPEG_QUALITY)
-        .encode(&rgb(frame), w, h, jpeg_encoder::ColorType::Rgb)
+        .encode(
+            &rgb(frame).ok_or_else(no_memory)?,
+            w,
+            h,
+            jpeg_encoder::ColorType::Rgb,
+        )
         .map_err(|e| e.to_string())?;
     Ok(bytes)
 }

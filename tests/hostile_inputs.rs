@@ -223,3 +223,31 @@ fn writes_go_through_links_and_into_pipes() {
         "{err}"
     );
 }
+
+/// A frame inside the allowed size that the memory limit cannot hold is a
+/// message and exit 1, not an abort (it was SIGABRT under a 1 GiB limit).
+#[test]
+fn a_frame_too_big_for_the_memory_limit_is_a_message() {
+    let dir = scratch("memory");
+    let out = dir.join("big.png");
+    let got = Command::new("prlimit")
+        .arg("--as=1073741824")
+        .arg(env!("CARGO_BIN_EXE_mountains"))
+        .args([
+            "render",
+            "--size",
+            "16384x16384",
+            "-o",
+            out.to_str().unwrap(),
+        ])
+        .env("HOME", &dir)
+        .output()
+        .expect("prlimit (util-linux)");
+    let err = String::from_utf8_lossy(&got.stderr);
+    assert_eq!(got.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains("--size 16384x16384: not enough memory for the frame (1024 MiB)"),
+        "{err}"
+    );
+    assert!(!out.exists());
+}

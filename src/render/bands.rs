@@ -37,7 +37,11 @@ pub(crate) fn render(scene: &Scene, frame: &mut Frame) {
         .map_or(1, |n| n.get())
         .min(MAX_THREADS);
     let bands = (threads * BANDS_PER_THREAD).min((width / MIN_BAND_COLUMNS).max(1) as usize);
-    if threads < 2 || bands < 2 {
+    // Each band draws into pixels of its own: a second frame's worth of
+    // memory. Without it (a huge frame under a memory limit), one band
+    // draws in place.
+    let spare = Vec::<u32>::new().try_reserve_exact(width as usize * height as usize);
+    if threads < 2 || bands < 2 || spare.is_err() {
         let mut canvas = Canvas::new(frame.pixels_mut(), width, 0);
         draw(scene, &mut canvas, &mut Rows::new(), width);
         return;

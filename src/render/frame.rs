@@ -64,12 +64,33 @@ pub struct Frame {
     pixels: Vec<u32>,
 }
 
+/// `count` zero pixels, or `None` if the allocator refuses. Zeroed memory
+/// from the allocator, like `vec![0; count]`: the kernel hands out zero pages
+/// lazily, so a fresh frame costs nothing until it is drawn.
+fn zeroed_pixels(count: usize) -> Option<Vec<u32>> {
+    let layout = std::alloc::Layout::array::<u32>(count).ok()?;
+    // SAFETY: `layout` has a non-zero size (count > 0, checked by the
+    // caller); a non-null result is an allocation of exactly that layout,
+    // all zero bytes, which are valid u32s. Vec::from_raw_parts takes it
+    // with the same element type, length and capacity, and will free it
+    // with the same layout.
+    unsafe {
+        let ptr = std::alloc::alloc_zeroed(layout).cast::<u32>();
+        if ptr.is_null() {
+            return None;
+        }
+        Some(Vec::from_raw_parts(ptr, count, count))
+    }
+}
+
 /// Largest frame accepted: 16384x16384 (1 GiB of pixels) would be absurd for
 /// a screensaver; 2^28 pixels (1 GiB of u32) is the hard cap.
 pub const MAX_PIXELS: u64 = 1 << 28;
 
 impl Frame {
-    /// A black frame, or `None` if either side is zero or it exceeds `MAX_PIXELS`.
+    /// A black frame, or `None` if either side is zero, it exceeds
+    /// `MAX_PIXELS`, or the memory for it cannot be had (a large frame under
+    /// a memory limit is a message, not an abort).
     pub fn new(width: u32, height: u32) -> Option<Self> {
         let count = width as u64 * height as u64;
         if count == 0 || count > MAX_PIXELS {
@@ -78,7 +99,7 @@ impl Frame {
         Some(Frame {
             width,
             height,
-            pixels: vec![0; count as usize],
+            pixels: zeroed_pixels(count as usize)?,
         })
     }
 
