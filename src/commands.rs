@@ -51,7 +51,7 @@ pub fn render(
         }
         return fail(&format!(
             "--size {width}x{height}: not enough memory for the frame ({} MiB)",
-            pixels * 4 >> 20
+            (pixels * 4) >> 20
         ));
     };
     let settings = &crate::render::detail::for_frame(settings, width, height);
