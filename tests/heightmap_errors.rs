@@ -194,6 +194,62 @@ fn a_scale_that_overflows_heights_is_refused() {
     assert_eq!(e.kind, ErrorKind::Metadata(meta::KEY_SCALE.into()), "{e}");
 }
 
+/// Accepted-looking but extreme metadata drew a one-colour frame with exit
+/// 0; each value now has a range, and the relief one against the width.
+#[test]
+fn extreme_metadata_is_refused_with_its_range() {
+    let samples: Vec<u16> = (0..17 * 17).map(|i| (i * 97 % 65536) as u16).collect();
+    let cases = [
+        (
+            &[(meta::KEY_SCALE, "13")][..],
+            meta::KEY_SCALE,
+            "13 is out of range (allowed: above 0 to 1)",
+        ),
+        (
+            &[(meta::KEY_OFFSET, "1e30")],
+            meta::KEY_OFFSET,
+            "out of range (allowed: -100000 to 100000)",
+        ),
+        (
+            &[(meta::KEY_SEA_LEVEL, "-1e9")],
+            meta::KEY_SEA_LEVEL,
+            "out of range",
+        ),
+        (
+            &[(meta::KEY_EXTENT, "1e-30")],
+            meta::KEY_EXTENT,
+            "out of range (allowed: 1 to 100000)",
+        ),
+        (
+            &[(meta::KEY_SCALE, "1"), (meta::KEY_EXTENT, "10")],
+            meta::KEY_SCALE,
+            "makes a relief of 65535 over a width of 10: more than 256 times the width",
+        ),
+    ];
+    for (text, key, message) in cases {
+        let e = fails(&gray_png(17, 17, 16, &samples, text));
+        assert_eq!(
+            e.kind,
+            ErrorKind::Metadata(key.to_string()),
+            "{text:?}: {e}"
+        );
+        assert!(e.problem.contains(message), "{text:?}: {e}");
+    }
+    // Our own values are well inside.
+    let ours = [
+        (meta::KEY_SCALE, "0.004"),
+        (meta::KEY_OFFSET, "-40"),
+        (meta::KEY_EXTENT, "250"),
+    ];
+    assert!(
+        decode(
+            &gray_png(17, 17, 16, &samples, &ours),
+            std::path::Path::new("ok.png")
+        )
+        .is_ok()
+    );
+}
+
 #[test]
 fn huge_text_chunk_is_refused_not_buffered() {
     let big = vec![b'x'; 40 << 20];

@@ -240,6 +240,7 @@ pub fn parse(pairs: &[(String, String)], path: &Path) -> Result<Metadata, Height
         extent: height_key(KEY_EXTENT, positive_f32)?.map(|v| v as f32),
         ..Metadata::default()
     };
+    check_ranges(&meta).map_err(|(key, e)| HeightmapError::metadata(path, key, e))?;
     if let Some(v) = get(KEY_SEED) {
         match v.parse::<u64>() {
             Ok(seed) => meta.seed = Some(seed),
@@ -257,6 +258,52 @@ pub fn parse(pairs: &[(String, String)], path: &Path) -> Result<Metadata, Height
         }
     }
     Ok(meta)
+}
+
+/// The values a file of ours can hold, with room to spare: the tallest
+/// mountain the settings make rises a few thousand units over a grid 250 or
+/// 500 wide. Beyond them the picture would be one colour (a needle, or a
+/// plain seen from a thousand miles), so the file is refused instead.
+/// (A tiny scale is a nearly flat field, which draws well: only > 0.)
+const SCALE_RANGE: (f64, f64) = (f64::MIN_POSITIVE, 1.0);
+const HEIGHT_RANGE: (f64, f64) = (-1e5, 1e5);
+const EXTENT_RANGE: (f64, f64) = (1.0, 1e5);
+/// Most relief (all 65535 steps) per unit of width.
+const MAX_RELIEF_PER_WIDTH: f64 = 256.0;
+
+/// Checks each value against its range, and the relief against the width.
+fn check_ranges(m: &Metadata) -> Result<(), (&'static str, String)> {
+    let within = |key: &'static str, v: Option<f64>, (lo, hi): (f64, f64)| match v {
+        Some(x) if !(lo..=hi).contains(&x) => {
+            let from = if lo == f64::MIN_POSITIVE {
+                "above 0".to_string()
+            } else {
+                format!("{lo}")
+            };
+            Err((
+                key,
+                format!("{x} is out of range (allowed: {from} to {hi})"),
+            ))
+        }
+        _ => Ok(()),
+    };
+    within(KEY_SCALE, m.scale, SCALE_RANGE)?;
+    within(KEY_OFFSET, m.offset.map(f64::from), HEIGHT_RANGE)?;
+    within(KEY_SEA_LEVEL, m.sea_level.map(f64::from), HEIGHT_RANGE)?;
+    within(KEY_EXTENT, m.extent.map(f64::from), EXTENT_RANGE)?;
+    if let (Some(scale), Some(extent)) = (m.scale, m.extent) {
+        let relief = scale * 65535.0;
+        if relief > MAX_RELIEF_PER_WIDTH * f64::from(extent) {
+            return Err((
+                KEY_SCALE,
+                format!(
+                    "{scale} makes a relief of {relief} over a width of {extent}: \
+                     more than {MAX_RELIEF_PER_WIDTH} times the width"
+                ),
+            ));
+        }
+    }
+    Ok(())
 }
 
 fn check_format(v: &str) -> Result<(), String> {
