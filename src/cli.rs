@@ -214,10 +214,11 @@ impl Parser<'_> {
             .map_err(|v| UsageError(format!("{flag}: {v:?} is not valid text")))
     }
 
-    /// A window handle may follow as the next argument (`/p 1234`).
+    /// A window handle may follow as the next argument (`/p 1234`); a word
+    /// that is not a flag is taken as one (`/p abc` says it is no handle).
     fn optional_handle(&mut self) -> Result<Option<u64>, UsageError> {
         match self.args.get(self.pos).and_then(|a| a.to_str()) {
-            Some(s) if s.chars().next().is_some_and(|c| c.is_ascii_digit()) => {
+            Some(s) if !s.is_empty() && !s.starts_with(['-', '/']) && !is_word(s) => {
                 self.pos += 1;
                 parse_handle(s).map(Some)
             }
@@ -240,11 +241,18 @@ impl Parser<'_> {
             Some((f, v)) if f.starts_with("--") => (f.to_string(), Some(v.to_string())),
             _ => (flag, None),
         };
-        let take = |p: &mut Self, name: &str| -> Result<OsString, UsageError> {
-            match &inline {
-                Some(v) => Ok(OsString::from(v)),
-                None => p.value(name),
+        // A value as typed, named by the flag as typed (`--output`, not `-o`).
+        let take = |p: &mut Self, _name: &str| -> Result<OsString, UsageError> {
+            let v = match &inline {
+                Some(v) => OsString::from(v),
+                None => p.value(arg)?,
+            };
+            if v.is_empty() {
+                return Err(UsageError(format!(
+                    "{arg}: an empty value; give a file name"
+                )));
             }
+            Ok(v)
         };
         match flag.as_str() {
             "--config" => self.inv.config = Some(take(self, "--config")?.into()),
@@ -268,9 +276,9 @@ impl Parser<'_> {
                 let id = if let Some(v) = inline {
                     v
                 } else {
-                    self.value_str("--window-id")?
+                    self.value_str(arg)?
                 };
-                return Ok(Some(Mode::XWindowId(parse_handle(&id)?)));
+                return Ok(Some(Mode::XWindowId(x_window_id(arg, &id)?)));
             }
             "--settings" => return Ok(Some(Mode::Settings { parent: None })),
             "--help" | "-h" | "-help" => return Ok(Some(Mode::Help)),
@@ -378,6 +386,22 @@ fn long_name(arg: &str) -> String {
         | "-size" | "-xscreensaver-xml" | "-man-page" => format!("-{arg}"),
         _ => arg.to_string(),
     }
+}
+
+/// Whether `s` is one of our subcommand words (not a window handle).
+fn is_word(s: &str) -> bool {
+    matches!(s, "render" | "heightmap")
+}
+
+/// An X window id for `flag`: a handle that fits X's 32 bits.
+fn x_window_id(flag: &str, text: &str) -> Result<u64, UsageError> {
+    let id = parse_handle(text)?;
+    if id > u64::from(u32::MAX) {
+        return Err(UsageError(format!(
+            "{flag} {text}: X window ids have 32 bits (at most 0xffffffff)"
+        )));
+    }
+    Ok(id)
 }
 
 /// A window handle: decimal, or hex with `0x` (xscreensaver writes both).

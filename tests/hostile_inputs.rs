@@ -251,3 +251,38 @@ fn a_frame_too_big_for_the_memory_limit_is_a_message() {
     );
     assert!(!out.exists());
 }
+
+/// Messages name what the user typed and what is allowed.
+#[test]
+fn messages_name_what_was_typed() {
+    let dir = scratch("messages");
+    let check = |text: &str| -> String {
+        let config = dir.join("m.toml");
+        std::fs::write(&config, text).unwrap();
+        let got = run(&["--check-config", config.to_str().unwrap()], &dir);
+        assert_eq!(got.status.code(), Some(1), "{text}");
+        String::from_utf8_lossy(&got.stderr).into_owned()
+    };
+    assert!(check("detail = 8.0\n").contains("key `detail`: 8.0 is not allowed"));
+    assert!(check("seed = 1e3\n").contains("key `seed`: 1000.0 is not allowed"));
+    let err = check("seed = 18446744073709551615\n");
+    assert!(
+        err.contains("is written in quotes, e.g. seed = \"18446744073709551615\""),
+        "{err}"
+    );
+    let usage = |args: &[&str]| -> String {
+        let got = run(args, &dir);
+        assert_eq!(got.status.code(), Some(2), "{args:?}");
+        String::from_utf8_lossy(&got.stderr).into_owned()
+    };
+    assert!(usage(&["render", "--output"]).contains("--output needs a value"));
+    assert!(usage(&["--config", ""]).contains("--config: an empty value"));
+    assert!(usage(&["render", "-o", ""]).contains("-o: an empty value"));
+    assert!(usage(&["--open", "", "render", "-o", "x.png"]).contains("--open: an empty value"));
+    assert!(usage(&["/p", "abc"]).contains("`abc` is not a window handle"));
+    let err = usage(&["--window-id", "0x100000000"]);
+    assert!(
+        err.contains("--window-id 0x100000000: X window ids have 32 bits"),
+        "{err}"
+    );
+}

@@ -61,6 +61,16 @@ pub(crate) fn line_col(text: &str, offset: usize) -> (usize, usize) {
     (line, col)
 }
 
+/// What to do about a TOML error a person is likely to meet.
+fn hint(message: &str) -> &'static str {
+    if message.contains("overflow") {
+        // TOML integers stop at 2^63-1; our seeds go to 2^64-1.
+        "; a seed above 9223372036854775807 is written in quotes, e.g. seed = \"18446744073709551615\""
+    } else {
+        ""
+    }
+}
+
 /// Where each line of a text starts, to turn byte offsets into positions.
 struct Lines<'a> {
     text: &'a str,
@@ -120,7 +130,7 @@ pub fn apply_toml(settings: &mut Settings, text: &str, source: &str) -> Vec<Prob
     let doc = match Document::parse(text) {
         Ok(doc) => doc,
         Err(e) => {
-            let message = format!("not valid TOML: {}", e.message());
+            let message = format!("not valid TOML: {}{}", e.message(), hint(e.message()));
             return vec![Problem {
                 source: source.into(),
                 position: at(e.span().map(|s| s.start)),
