@@ -36,6 +36,12 @@ pub fn free_path(dir: &Path, stem: &str, suffix: &str) -> Option<PathBuf> {
 
 /// A new file name in `dir` (created if missing) for something saved now.
 pub fn new_path(dir: &Path, suffix: &str, seed: Option<u64>) -> Result<PathBuf, String> {
+    if dir.is_file() {
+        return Err(format!(
+            "{}: is a file, so nothing can be saved in it (move it, or choose another folder)",
+            dir.display()
+        ));
+    }
     std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     free_path(dir, &file_stem(crate::clock::now(), seed), suffix)
         .ok_or_else(|| format!("{}: too many files with the same name", dir.display()))
@@ -134,6 +140,21 @@ mod tests {
             .replace(' ', "-")
             .replace(':', "");
         assert_eq!(file_stem(t, None), format!("mountain-{local}"));
+    }
+
+    #[test]
+    fn a_data_folder_that_is_a_file_is_named_as_such() {
+        let file =
+            std::env::temp_dir().join(format!("mountains-not-a-folder-{}", std::process::id()));
+        std::fs::write(&file, "x").unwrap();
+        let e = new_path(&file, ".png", Some(1)).unwrap_err();
+        assert!(
+            e.ends_with(
+                "is a file, so nothing can be saved in it (move it, or choose another folder)"
+            ),
+            "{e}"
+        );
+        let _ = std::fs::remove_file(&file);
     }
 
     #[test]
