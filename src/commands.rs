@@ -134,7 +134,10 @@ pub fn check_config(
     };
     let mut settings = Settings::default();
     let mut problems = Vec::new();
-    if file.exists() {
+    // A link that leads nowhere (or round in a loop) is there, and reading
+    // it says what is wrong with it; only a name with nothing at all is missing.
+    let present = std::fs::symlink_metadata(&file).is_ok();
+    if present {
         problems = load::apply_file(&mut settings, &file);
     } else if named.is_some() {
         return fail(&format!("{}: no such file", file.display()));
@@ -155,7 +158,7 @@ pub fn check_config(
     if !problems.is_empty() {
         return ExitCode::FAILURE;
     }
-    if file.exists() {
+    if present {
         println!("{}: ok", file.display());
     }
     if !sets.is_empty() {

@@ -270,6 +270,13 @@ fn messages_name_what_was_typed() {
         err.contains("is written in quotes, e.g. seed = \"18446744073709551615\""),
         "{err}"
     );
+    let (a, b) = (dir.join("loop-a.toml"), dir.join("loop-b.toml"));
+    std::os::unix::fs::symlink(&b, &a).unwrap();
+    std::os::unix::fs::symlink(&a, &b).unwrap();
+    let got = run(&["--check-config", a.to_str().unwrap()], &dir);
+    let err = String::from_utf8_lossy(&got.stderr);
+    assert!(err.contains("Too many levels of symbolic links"), "{err}");
+    assert!(!err.contains("no such file"), "{err}");
     let usage = |args: &[&str]| -> String {
         let got = run(args, &dir);
         assert_eq!(got.status.code(), Some(2), "{args:?}");
