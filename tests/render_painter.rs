@@ -295,10 +295,12 @@ fn golden_hashes_pin_each_mode() {
     let f = field(5);
     let cases: [(ColorMode, ViewKind, u64); 6] = [
         (ColorMode::Natural, ViewKind::Oblique, 0xc8480c05cf9b84e4),
+        // Re-pinned when crowded back rows began to be merged (src/render/
+        // rows.rs): a few pixels at the back changed, none visibly.
         (
             ColorMode::Natural,
             ViewKind::Perspective,
-            0x99f6c0e3aa887930,
+            0x666fde25abdc6ae1,
         ),
         (ColorMode::Sonar, ViewKind::Oblique, 0x90d4c97e929b5d67),
         (

@@ -90,7 +90,7 @@ pub(crate) fn render(scene: &Scene, frame: &mut Frame) {
 /// The sky, then every strip, into `canvas`.
 fn draw(scene: &Scene, canvas: &mut Canvas, rows: &mut Rows, frame_width: u32) {
     scene.sky.paint(canvas);
-    draw_strips(scene, canvas, rows, 0..scene.cells(), frame_width);
+    draw_strips(scene, canvas, rows, 0..scene.strips(), frame_width);
 }
 
 /// Puts a band's pixels into its columns of `frame`.

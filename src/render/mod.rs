@@ -14,6 +14,7 @@ pub mod palette;
 pub mod raster;
 mod reach;
 pub mod ridges;
+mod rows;
 mod scene;
 pub mod shadow;
 mod sky;

@@ -46,26 +46,26 @@ impl Rows {
         }
     }
 
-    /// Makes `top` and `bottom` hold points `xs` of grid rows `s` and `s + 1`.
+    /// Makes `top` and `bottom` hold points `xs` of the grid rows at the
+    /// back and the front of strip `s`.
     fn load(&mut self, scene: &Scene, s: usize, xs: Range<usize>) {
+        let (back, front) = scene.strip_grid_rows(s);
         let n = scene.cells() + 1;
         self.top.resize(n, Vert::default());
         self.bottom.resize(n, Vert::default());
         match self.bottom_row.take() {
-            Some((row, had)) if row == s => {
+            Some((row, had)) if row == back => {
                 std::mem::swap(&mut self.top, &mut self.bottom);
                 // Project only the points the last strip did not need.
-                scene.project_points(
-                    s,
-                    xs.start..had.start.clamp(xs.start, xs.end),
-                    &mut self.top,
-                );
-                scene.project_points(s, had.end.clamp(xs.start, xs.end)..xs.end, &mut self.top);
+                let before = xs.start..had.start.clamp(xs.start, xs.end);
+                scene.project_points(back, before, &mut self.top);
+                let after = had.end.clamp(xs.start, xs.end)..xs.end;
+                scene.project_points(back, after, &mut self.top);
             }
-            _ => scene.project_points(s, xs.clone(), &mut self.top),
+            _ => scene.project_points(back, xs.clone(), &mut self.top),
         }
-        scene.project_points(s + 1, xs.clone(), &mut self.bottom);
-        self.bottom_row = Some((s + 1, xs));
+        scene.project_points(front, xs.clone(), &mut self.bottom);
+        self.bottom_row = Some((front, xs));
     }
 }
 
@@ -91,7 +91,7 @@ impl Painter {
     /// How many strips the whole mountain takes.
     pub fn strips_total(&self) -> usize {
         match &self.how {
-            How::Mesh(scene, _) => scene.cells(),
+            How::Mesh(scene, _) => scene.strips(),
             How::Ridges(r) => r.strips_total(),
         }
     }

@@ -27,8 +27,9 @@ impl Scene<'_> {
     /// are one run, found by bisection.
     pub(crate) fn cells_reaching(&self, s: usize, clip: &Clip) -> Range<usize> {
         let cells = self.cells();
-        let top = self.row_top[s].max(self.row_top[s + 1]);
-        let lines = [(s, 0.0), (s, top), (s + 1, 0.0), (s + 1, top)];
+        let (y0, y1) = self.strip_grid_rows(s);
+        let top = self.row_top[y0].max(self.row_top[y1]);
+        let lines = [(y0, 0.0), (y0, top), (y1, 0.0), (y1, top)];
         let column =
             |gx: usize, (row, h): (usize, f32)| self.view.project(gx as f32, row as f32, h).x;
         let ordered = lines.iter().all(|&l| column(0, l) < column(cells, l));

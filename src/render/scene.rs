@@ -91,6 +91,9 @@ pub(crate) struct Scene<'a> {
     pub split: usize,
     /// Highest point of each row, at least sea level.
     pub(super) row_top: Vec<f32>,
+    /// The grid rows the mesh is drawn with (see `rows.rs`); strip `s` lies
+    /// between rows `rows[s]` and `rows[s + 1]`.
+    pub(super) rows: Vec<usize>,
     /// Whether the right and front cut faces (skirts) face the viewer.
     pub sees_right: bool,
     pub sees_front: bool,
@@ -124,6 +127,12 @@ impl<'a> Scene<'a> {
         let haze = (style == Style::Shaded && settings.view != ViewKind::Oblique)
             .then(|| Haze::new(palette.sky().1));
         let cells = size - 1;
+        // Sonar and Outline draw every line of their (already thinned) grid.
+        let rows = if shaded {
+            super::rows::kept_rows(size, &view)
+        } else {
+            (0..size).collect()
+        };
         let (split, sees_right, sees_front) = match view.camera_column() {
             Some(cx) => {
                 let split = cx.floor().clamp(0.0, cells as f32) as usize;
@@ -142,14 +151,26 @@ impl<'a> Scene<'a> {
             style,
             split,
             row_top,
+            rows,
             sees_right,
             sees_front,
         }
     }
 
-    /// Cells per row; also the number of strips.
+    /// Cells per row.
     pub(crate) fn cells(&self) -> usize {
         self.field.size() - 1
+    }
+
+    /// Strips in the mesh: one between each two kept rows.
+    pub(crate) fn strips(&self) -> usize {
+        self.rows.len() - 1
+    }
+
+    /// The grid rows at the back and the front of strip `s`.
+    #[inline]
+    pub(crate) fn strip_grid_rows(&self, s: usize) -> (usize, usize) {
+        (self.rows[s], self.rows[s + 1])
     }
 
     /// Projects points `xs` of grid row `y` into the same items of `out`
@@ -181,12 +202,10 @@ impl<'a> Scene<'a> {
     /// Screen rows strip `s` (cells between grid rows `s` and `s + 1`, with
     /// their skirts) can touch, widened by a pixel each way.
     pub(crate) fn strip_rows(&self, s: usize) -> (i64, i64) {
-        let top = self.view.project(0.0, s as f32, self.row_top[s]).y;
-        let top2 = self
-            .view
-            .project(0.0, (s + 1) as f32, self.row_top[s + 1])
-            .y;
-        let bottom = self.view.project(0.0, (s + 1) as f32, 0.0).y;
+        let (y0, y1) = self.strip_grid_rows(s);
+        let top = self.view.project(0.0, y0 as f32, self.row_top[y0]).y;
+        let top2 = self.view.project(0.0, y1 as f32, self.row_top[y1]).y;
+        let bottom = self.view.project(0.0, y1 as f32, 0.0).y;
         let lo = top.min(top2).min(bottom);
         let hi = bottom.max(top).max(top2);
         if !(lo.is_finite() && hi.is_finite()) {

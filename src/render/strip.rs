@@ -57,34 +57,36 @@ impl Scene<'_> {
         bottom: &[Vert],
     ) {
         let last = self.cells();
+        let (y0, y1) = self.strip_grid_rows(s);
         let split = self.split.clamp(cells.start, cells.end);
         for x in cells.start..split {
-            self.fill_cell(canvas, s, x, top, bottom, true);
+            self.fill_cell(canvas, (y0, y1), x, top, bottom, true);
         }
         for x in (split..cells.end).rev() {
-            self.fill_cell(canvas, s, x, top, bottom, false);
+            self.fill_cell(canvas, (y0, y1), x, top, bottom, false);
         }
         if self.sees_right && cells.end == last {
-            let a = Corner::at(last, s, &top[last]);
-            let b = Corner::at(last, s + 1, &bottom[last]);
+            let a = Corner::at(last, y0, &top[last]);
+            let b = Corner::at(last, y1, &bottom[last]);
             self.fill_skirt(canvas, a, b, Vec3::X);
         }
-        if self.sees_front && s + 1 == last {
+        if self.sees_front && s + 1 == self.strips() {
             for x in cells {
-                let a = Corner::at(x, s + 1, &bottom[x]);
-                let b = Corner::at(x + 1, s + 1, &bottom[x + 1]);
+                let a = Corner::at(x, y1, &bottom[x]);
+                let b = Corner::at(x + 1, y1, &bottom[x + 1]);
                 self.fill_skirt(canvas, a, b, Vec3::NEG_Y);
             }
         }
     }
 
-    /// The two triangles of cell (`x`, `s`), the farther one first. With the
+    /// The two triangles of the cell at column `x` between grid rows `ys`,
+    /// the farther one first. With the
     /// camera to the right (`rightward`) the diagonal runs from the back
     /// right, so the front-right triangle is the nearer; mirrored otherwise.
     fn fill_cell(
         &self,
         canvas: &mut Canvas,
-        s: usize,
+        (y0, y1): (usize, usize),
         x: usize,
         top: &[Vert],
         bottom: &[Vert],
@@ -98,10 +100,10 @@ impl Scene<'_> {
         if !crosses && !cell_covers_a_centre(corners, canvas.clip()) {
             return;
         }
-        let tl = Corner::at(x, s, &top[x]);
-        let tr = Corner::at(x + 1, s, &top[x + 1]);
-        let bl = Corner::at(x, s + 1, &bottom[x]);
-        let br = Corner::at(x + 1, s + 1, &bottom[x + 1]);
+        let tl = Corner::at(x, y0, &top[x]);
+        let tr = Corner::at(x + 1, y0, &top[x + 1]);
+        let bl = Corner::at(x, y1, &bottom[x]);
+        let br = Corner::at(x + 1, y1, &bottom[x + 1]);
         if rightward {
             self.fill_face(canvas, [tl, tr, bl]);
             self.fill_face(canvas, [tr, br, bl]);
