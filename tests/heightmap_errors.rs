@@ -155,6 +155,11 @@ fn corrupt_checksum_or_data_is_damaged() {
     raw[0] = 9; // no such filter type
     let e = fails(&hand_png(ihdr(17, 17, 16, 0, 0), &raw, &[]));
     assert_eq!(e.kind, ErrorKind::Damaged, "{e}");
+    assert!(
+        e.problem.contains("filter type 9, which PNG does not have"),
+        "{e}"
+    );
+    assert!(!e.problem.contains("ChunkType {"), "{e}");
 }
 
 #[test]
@@ -289,6 +294,11 @@ fn compressed_text_bomb_of_ours_is_refused() {
     w.finish().unwrap();
     let e = fails(&out);
     assert_eq!(e.kind, ErrorKind::Metadata(meta::KEY_SCALE.into()), "{e}");
+    // The cause is our cap, not damage: the message says which.
+    assert!(
+        e.problem.contains("longer than the 4 KiB a value may have"),
+        "{e}"
+    );
 }
 
 #[test]

@@ -241,14 +241,27 @@ fn text_chunks(info: &png::Info, path: &Path) -> Result<Vec<(String, String)>, H
         .filter(|c| c.keyword.starts_with(OUR_PREFIX))
         .map(|c| (c.keyword.clone(), c.text.clone()))
         .collect();
-    let unreadable =
-        |key: &str| HeightmapError::metadata(path, key, "compressed text is unreadable");
+    // The cause in words: a value over our cap is no damage.
+    let unreadable = |key: &str, e: DecodingError| {
+        // png says "out of decompression space" when our limit is hit.
+        let over = matches!(e, DecodingError::LimitsExceeded)
+            || e.to_string().to_lowercase().contains("decompression space");
+        let why = if over {
+            format!(
+                "compressed text longer than the {} KiB a value may have",
+                TEXT_LIMIT / 1024
+            )
+        } else {
+            "compressed text that cannot be inflated (damaged)".to_string()
+        };
+        HeightmapError::metadata(path, key, why)
+    };
     for chunk in &info.compressed_latin1_text {
         if chunk.keyword.starts_with(OUR_PREFIX) {
             let mut c = chunk.clone();
             c.decompress_text_with_limit(TEXT_LIMIT)
-                .map_err(|_| unreadable(&c.keyword))?;
-            let value = c.get_text().map_err(|_| unreadable(&c.keyword))?;
+                .map_err(|e| unreadable(&c.keyword, e))?;
+            let value = c.get_text().map_err(|e| unreadable(&c.keyword, e))?;
             text.push((c.keyword, value));
         }
     }
@@ -256,8 +269,8 @@ fn text_chunks(info: &png::Info, path: &Path) -> Result<Vec<(String, String)>, H
         if chunk.keyword.starts_with(OUR_PREFIX) {
             let mut c = chunk.clone();
             c.decompress_text_with_limit(TEXT_LIMIT)
-                .map_err(|_| unreadable(&c.keyword))?;
-            let value = c.get_text().map_err(|_| unreadable(&c.keyword))?;
+                .map_err(|e| unreadable(&c.keyword, e))?;
+            let value = c.get_text().map_err(|e| unreadable(&c.keyword, e))?;
             text.push((c.keyword, value));
         }
     }
@@ -288,7 +301,50 @@ fn png_error(path: &Path, e: DecodingError) -> HeightmapError {
         other => HeightmapError::new(
             path,
             ErrorKind::Damaged,
-            format!("is a damaged PNG: {other}"),
+            format!("is a damaged PNG: {}", plain(&other.to_string())),
         ),
+    }
+}
+
+/// The png crate's message in a person's words: chunk types by their four
+/// letters (not `ChunkType { type: IHDR, critical: true, ... }`), a bad
+/// filter byte said as such.
+fn plain(message: &str) -> String {
+    let mut out = String::new();
+    let mut rest = message;
+    while let Some(i) = rest.find("ChunkType { type: ") {
+        out.push_str(&rest[..i]);
+        let after = &rest[i + "ChunkType { type: ".len()..];
+        let name_end = after.find([',', ' ', '}']).unwrap_or(after.len());
+        out.push_str(&after[..name_end]);
+        rest = after.find('}').map_or("", |j| &after[j + 1..]);
+    }
+    out.push_str(rest);
+    if let Some(n) = out.strip_prefix("Unknown filter method ") {
+        let n = n.trim_end_matches('.');
+        return format!(
+            "filter type {n}, which PNG does not have (0 to 4 for a row, 0 in the header)"
+        );
+    }
+    out
+}
+
+#[cfg(test)]
+mod plain_tests {
+    use super::plain;
+
+    #[test]
+    fn png_messages_in_plain_words() {
+        assert_eq!(
+            plain(
+                "Chunk ChunkType { type: IHDR, critical: true, private: false, reserved: false, safecopy: false } must appear at most once."
+            ),
+            "Chunk IHDR must appear at most once."
+        );
+        assert_eq!(
+            plain("Unknown filter method 9."),
+            "filter type 9, which PNG does not have (0 to 4 for a row, 0 in the header)"
+        );
+        assert_eq!(plain("CRC error"), "CRC error");
     }
 }
