@@ -272,6 +272,11 @@ fn huge_text_chunk_is_refused_not_buffered() {
         &[huge],
     ));
     assert_eq!(e.kind, ErrorKind::TooLarge, "{e}");
+    assert!(
+        e.problem
+            .contains("needs more than the 32 MiB of memory a heightmap may use for its chunks"),
+        "{e}"
+    );
 }
 
 #[test]

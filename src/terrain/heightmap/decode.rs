@@ -293,8 +293,11 @@ fn png_error(path: &Path, e: DecodingError) -> HeightmapError {
         DecodingError::LimitsExceeded => HeightmapError::new(
             path,
             ErrorKind::TooLarge,
+            // The limit is on all the memory the chunks take together (a
+            // 16 MiB comment can reach it), not on one chunk.
             format!(
-                "has chunks larger than the {} MiB a heightmap may use",
+                "needs more than the {} MiB of memory a heightmap may use for its chunks \
+                 (pixels, text and others together)",
                 DECODER_BYTE_LIMIT >> 20
             ),
         ),
