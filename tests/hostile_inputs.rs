@@ -265,6 +265,18 @@ fn messages_name_what_was_typed() {
     };
     assert!(check("detail = 8.0\n").contains("key `detail`: 8.0 is not allowed"));
     assert!(check("seed = 1e3\n").contains("key `seed`: 1000.0 is not allowed"));
+    let err = check("detail =\n");
+    assert!(
+        err.contains("1:9: key `detail`: not valid TOML: nothing after `=`"),
+        "{err}"
+    );
+    let err = check("color = \"gray\"\ncolor = \"red\"\n");
+    assert!(
+        err.contains("2:1: key `color`: not valid TOML: the key is given twice"),
+        "{err}"
+    );
+    let err = check("seed = 2026-11-24T10:00:00\n");
+    assert!(err.contains("found a date and time"), "{err}");
     let err = check("seed = 18446744073709551615\n");
     assert!(
         err.contains("is written in quotes, e.g. seed = \"18446744073709551615\""),

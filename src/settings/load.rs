@@ -61,6 +61,35 @@ pub(crate) fn line_col(text: &str, offset: usize) -> (usize, usize) {
     (line, col)
 }
 
+/// What a TOML value that no key takes is, in words.
+fn kind_of(item: &Item) -> &'static str {
+    match item.as_value() {
+        Some(v) if v.is_datetime() => "a date and time",
+        Some(v) if v.is_array() => "an array",
+        _ => "a table",
+    }
+}
+
+/// toml_edit's `message` said better where it leaves out what matters: the
+/// key of a duplicate, a key with nothing after `=`. `line` is the line the
+/// error is on. Returns the key concerned, if known, and the words.
+fn explain(message: &str, line: &str) -> (Option<String>, String) {
+    let key = line
+        .split_once('=')
+        .map(|(k, _)| k.trim().to_string())
+        .filter(|k| !k.is_empty());
+    let value_missing = line
+        .split_once('=')
+        .is_some_and(|(_, v)| v.trim().is_empty());
+    if message.contains("duplicate key") {
+        return (key, "the key is given twice; keep one".to_string());
+    }
+    if value_missing {
+        return (key, "nothing after `=`; give a value".to_string());
+    }
+    (None, message.to_string())
+}
+
 /// What to do about a TOML error a person is likely to meet.
 fn hint(message: &str) -> &'static str {
     if message.contains("overflow") {
@@ -83,6 +112,15 @@ impl<'a> Lines<'a> {
             .chain(text.match_indices('\n').map(|(i, _)| i + 1))
             .collect();
         Lines { text, starts }
+    }
+
+    /// The text of the line holding byte `offset`.
+    fn line_of(&self, offset: usize) -> &'a str {
+        let offset = offset.min(self.text.len());
+        let line = self.starts.partition_point(|&s| s <= offset);
+        let start = self.starts[line - 1];
+        let end = self.starts.get(line).map_or(self.text.len(), |&e| e);
+        self.text[start..end].trim_end_matches(['\n', '\r'])
     }
 
     /// 1-based line and column (in characters) of byte `offset`.
@@ -130,11 +168,15 @@ pub fn apply_toml(settings: &mut Settings, text: &str, source: &str) -> Vec<Prob
     let doc = match Document::parse(text) {
         Ok(doc) => doc,
         Err(e) => {
-            let message = format!("not valid TOML: {}{}", e.message(), hint(e.message()));
+            let start = e.span().map(|s| s.start);
+            let line = start.map_or("", |o| lines.line_of(o));
+            // toml_edit names neither the key of a duplicate nor a missing value.
+            let (key, said) = explain(e.message(), line);
+            let message = format!("not valid TOML: {said}{}", hint(e.message()));
             return vec![Problem {
                 source: source.into(),
-                position: at(e.span().map(|s| s.start)),
-                key: None,
+                position: at(start),
+                key,
                 message,
             }];
         }
@@ -174,7 +216,7 @@ pub fn apply_toml(settings: &mut Settings, text: &str, source: &str) -> Vec<Prob
             }
             None => report(
                 value_pos,
-                format!("expected {}, found a table or array", key.kind.allowed()),
+                format!("expected {}, found {}", key.kind.allowed(), kind_of(item)),
             ),
         }
     }
