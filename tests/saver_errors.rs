@@ -75,6 +75,14 @@ fn display_a_window_id_that_does_not_exist_is_named() {
     let stderr = saver.stderr();
     assert!(stderr.contains("no X window 0x3fffff0"), "{stderr}");
     assert!(!stderr.contains("panicked"), "{stderr}");
+    // Typed in decimal, it is named in decimal too.
+    let mut saver = Saver::start(&x, "no-window-decimal", &["--window-id", "67108848"], &[]);
+    saver.wait(PATIENCE).expect("mountains should give up");
+    let stderr = saver.stderr();
+    assert!(
+        stderr.contains("no X window 0x3fffff0 (67108848)"),
+        "{stderr}"
+    );
 }
 
 #[test]

@@ -75,7 +75,8 @@ impl fmt::Display for SaverError {
             SaverError::MissingLibrary { library, package } => {
                 f.write_str(&libcheck::missing_message(library, package))
             }
-            SaverError::NoSuchWindow(id) => write!(f, "there is no X window 0x{id:x}"),
+            // Both spellings: the id may have been typed in either.
+            SaverError::NoSuchWindow(id) => write!(f, "there is no X window 0x{id:x} ({id})"),
             SaverError::Unsupported(what) => f.write_str(what),
             SaverError::Other(what) => f.write_str(what),
         }
