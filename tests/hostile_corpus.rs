@@ -173,7 +173,11 @@ fn spoil_text(text: &str, mix: &mut Mix) -> String {
         3 => {
             let i = mix.below(lines.len());
             let cut = mix.below(lines[i].len() + 1);
-            let cut = lines[i].floor_char_boundary(cut);
+            // Back to a character boundary (the file has non-ASCII text).
+            let mut cut = cut;
+            while !lines[i].is_char_boundary(cut) {
+                cut -= 1;
+            }
             lines[i].truncate(cut);
         }
         _ => {
