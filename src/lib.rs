@@ -18,5 +18,6 @@ pub mod saved;
 pub mod saver;
 pub mod settings;
 pub mod settings_ui;
+pub mod signals;
 pub mod snapshot;
 pub mod terrain;

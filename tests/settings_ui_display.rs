@@ -199,6 +199,29 @@ fn display_keys_change_a_value_and_enter_saves_keeping_comments() {
     assert_eq!(saved, COMMENTED.replace("= 40 ", "= 41 "));
 }
 
+/// SIGTERM and SIGHUP close the settings screen as Cancel does: exit 0,
+/// the file untouched (they used to kill it by the signal).
+#[test]
+fn display_sigterm_and_sighup_close_the_settings_like_cancel() {
+    for signal in ["TERM", "HUP"] {
+        let Some(x) = start_display() else { return };
+        let home = scratch(&format!("signal-{signal}"));
+        let config = home.join("mountains.toml");
+        std::fs::write(&config, COMMENTED).unwrap();
+        let mut app = App::start(&x, &config, &home, 1);
+        let window = app.window(&x);
+        wait_drawn(x.display(), window);
+        let sent = Command::new("kill")
+            .args([format!("-{signal}"), app.child.id().to_string()])
+            .status()
+            .expect("run kill");
+        assert!(sent.success());
+        let status = app.wait_exit();
+        assert!(status.success(), "SIG{signal}: {status}: {}", app.stderr());
+        assert_eq!(std::fs::read(&config).unwrap(), COMMENTED.as_bytes());
+    }
+}
+
 #[test]
 fn display_escape_leaves_the_file_byte_identical() {
     let Some(x) = start_display() else { return };

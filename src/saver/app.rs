@@ -78,7 +78,7 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
         _ => DeviceEvents::Never,
     });
     let proxy = event_loop.create_proxy();
-    super::signals::on_terminate(move || {
+    crate::signals::on_terminate(move || {
         let _ = proxy.send_event(UserEvent::Terminate);
     })
     .map_err(|e| SaverError::Other(format!("cannot watch for SIGTERM: {e}")))?;

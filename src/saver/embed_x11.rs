@@ -92,7 +92,7 @@ pub fn run(
     let size = watch_window(&conn, xid)?;
     let (tx, rx) = mpsc::channel();
     spawn_event_thread(conn.clone(), xid, tx.clone())?;
-    super::signals::on_terminate(move || {
+    crate::signals::on_terminate(move || {
         let _ = tx.send(Notice::Terminate);
     })
     .map_err(|e| SaverError::Other(format!("cannot watch for SIGTERM: {e}")))?;

@@ -12,7 +12,7 @@
 //! its monitors and follows their changes, `fullscreen_win32` refits
 //! full-screen windows after a Windows display change, `present` and
 //! `bands_x11` put frames on screen, `grab_x11` keeps input from other
-//! programs, `signals` turns SIGTERM into a clean exit, `libcheck` names a
+//! programs (crate::signals turns SIGTERM into a clean exit), `libcheck` names a
 //! missing X library before winit panics on it.
 
 pub mod actions;
@@ -35,7 +35,6 @@ mod overlay;
 pub mod present;
 mod redraw;
 pub mod show;
-pub mod signals;
 pub mod slideshow;
 pub mod source;
 

@@ -37,7 +37,15 @@ struct App {
 /// Opens the window and runs it until OK or Cancel. `parent` is the window
 /// that owns the dialog on Windows (`/c:<HWND>`).
 pub fn run(make: MakeScreen, parent: Option<u64>) -> Result<(), String> {
-    let event_loop = EventLoop::new().map_err(|e| format!("cannot open a window: {e}"))?;
+    let event_loop = EventLoop::<Terminate>::with_user_event()
+        .build()
+        .map_err(|e| format!("cannot open a window: {e}"))?;
+    // SIGTERM, SIGINT, SIGHUP: close as Cancel does (nothing written), exit 0.
+    let proxy = event_loop.create_proxy();
+    crate::signals::on_terminate(move || {
+        let _ = proxy.send_event(Terminate);
+    })
+    .map_err(|e| format!("cannot watch for SIGTERM: {e}"))?;
     let mut app = App {
         make: Some(make),
         parent,
@@ -217,7 +225,15 @@ fn named_input(key: NamedKey, shift: bool) -> Option<Input> {
     })
 }
 
-impl ApplicationHandler for App {
+/// A signal asked the settings screen to close.
+#[derive(Debug, Clone, Copy)]
+struct Terminate;
+
+impl ApplicationHandler<Terminate> for App {
+    fn user_event(&mut self, event_loop: &ActiveEventLoop, _: Terminate) {
+        event_loop.exit();
+    }
+
     fn resumed(&mut self, event_loop: &ActiveEventLoop) {
         if self.window.is_none()
             && let Err(e) = self.open(event_loop)
