@@ -55,6 +55,13 @@ pub fn render(
         ));
     };
     let settings = &crate::render::detail::for_frame(settings, width, height);
+    if let Err(mib) = crate::memory::room_to_work(work_exponent(settings, open)) {
+        return fail(&format!(
+            "--size {width}x{height}: not enough memory to draw it: about {mib} MiB more \
+             than the frame's {} MiB is needed",
+            frame.pixels().len() >> 18
+        ));
+    }
     let (field, seed) = match mountain(settings, open) {
         Ok(m) => m,
         Err(e) => return fail(&e),
@@ -68,9 +75,23 @@ pub fn render(
     ExitCode::SUCCESS
 }
 
+/// The grid exponent a command will work on: a data set's size is known
+/// only once it is read, so the largest is assumed for one.
+fn work_exponent(settings: &Settings, open: Option<&Path>) -> u32 {
+    match open {
+        Some(_) => crate::terrain::heightfield::MAX_EXPONENT,
+        None => settings.grid_exponent(),
+    }
+}
+
 /// `mountains heightmap`: generate a data set and save it as a 16-bit PNG,
 /// or as raw 16-bit samples (`.r16`, `.raw`), whose height range it prints.
 pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> ExitCode {
+    if let Err(mib) = crate::memory::room_to_work(work_exponent(settings, open)) {
+        return fail(&format!(
+            "not enough memory to make the data set: about {mib} MiB is needed"
+        ));
+    }
     let (field, seed) = match mountain(settings, open) {
         Ok(m) => m,
         Err(e) => return fail(&e),

@@ -74,21 +74,39 @@ fn kind_of(meta: &std::fs::Metadata) -> &'static str {
 /// Writes `bytes` to `path`, or to standard output when `path` is `-`
 /// (`-o -`, for a pipe); see [`write_atomic`].
 pub fn write_output(path: &Path, bytes: &[u8]) -> io::Result<()> {
+    write_output_with(path, |w| w.write_all(bytes))
+}
+
+/// [`write_output`] for a file made as it is written: `write` is given the
+/// destination (buffered), so a large picture never exists whole in memory.
+pub fn write_output_with(
+    path: &Path,
+    write: impl FnOnce(&mut dyn Write) -> io::Result<()>,
+) -> io::Result<()> {
     if path == Path::new("-") {
-        let mut out = io::stdout().lock();
-        out.write_all(bytes)?;
+        let mut out = io::BufWriter::new(io::stdout().lock());
+        write(&mut out)?;
         return out.flush();
     }
-    write_atomic(path, bytes)
+    write_atomic_with(path, write)
 }
 
 /// Writes `bytes` to `path` so a reader sees the old file or the new one,
-/// never a mix: a temporary file in the same folder, flushed to disk, then
-/// renamed over the target. A symbolic link is written through (its target
-/// is replaced, the link stays); a device or FIFO is written to directly
-/// (there is nothing to replace: `-o /dev/null` must not make a file); a
-/// folder is refused.
+/// never a mix; see [`write_atomic_with`].
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> io::Result<()> {
+    write_atomic_with(path, |w| w.write_all(bytes))
+}
+
+/// Writes what `write` makes to `path` so a reader sees the old file or
+/// the new one, never a mix: a temporary file in the same folder, flushed
+/// to disk, then renamed over the target. A symbolic link is written
+/// through (its target is replaced, the link stays); a device or FIFO is
+/// written to directly (there is nothing to replace: `-o /dev/null` must
+/// not make a file); a folder is refused.
+pub fn write_atomic_with(
+    path: &Path,
+    write: impl FnOnce(&mut dyn Write) -> io::Result<()>,
+) -> io::Result<()> {
     let target = match std::fs::canonicalize(path) {
         Ok(real) => real,
         // Not there yet (or a dangling link): the name itself.
@@ -99,16 +117,23 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> io::Result<()> {
             io::ErrorKind::InvalidInput,
             "is a folder, not a file",
         )),
-        Ok(m) if !m.is_file() => std::fs::OpenOptions::new()
-            .write(true)
-            .open(&target)?
-            .write_all(bytes),
-        _ => replace_file(&target, bytes),
+        Ok(m) if !m.is_file() => {
+            let file = std::fs::OpenOptions::new().write(true).open(&target)?;
+            let mut out = io::BufWriter::new(file);
+            write(&mut out)?;
+            out.flush()
+        }
+        _ => replace_file(&target, write),
     }
 }
 
-/// The temporary-file-and-rename write of `write_atomic`, for a regular file.
-fn replace_file(path: &Path, bytes: &[u8]) -> io::Result<()> {
+/// The temporary-file-and-rename write of `write_atomic_with`, for a
+/// regular file. The temporary file is known to [`partial`] while it
+/// exists, so a signal that ends the program can remove it.
+fn replace_file(
+    path: &Path,
+    write: impl FnOnce(&mut dyn Write) -> io::Result<()>,
+) -> io::Result<()> {
     let dir = match path.parent() {
         Some(p) if !p.as_os_str().is_empty() => p,
         _ => Path::new("."),
@@ -123,9 +148,11 @@ fn replace_file(path: &Path, bytes: &[u8]) -> io::Result<()> {
     tmp_name.push(name);
     tmp_name.push(format!(".{}.tmp", std::process::id()));
     let tmp = dir.join(tmp_name);
+    let _pending = partial::Pending::new(&tmp);
     let result = (|| {
-        let mut file = std::fs::File::create(&tmp)?;
-        file.write_all(bytes)?;
+        let mut out = io::BufWriter::new(File::create(&tmp)?);
+        write(&mut out)?;
+        let file = out.into_inner().map_err(|e| e.into_error())?;
         file.sync_all()?;
         std::fs::rename(&tmp, path)
     })();
@@ -133,4 +160,44 @@ fn replace_file(path: &Path, bytes: &[u8]) -> io::Result<()> {
         let _ = std::fs::remove_file(&tmp);
     }
     result
+}
+
+/// Temporary files of writes in progress, so that a program ended by a
+/// signal leaves none behind (see `signals::end_cleanly`).
+pub mod partial {
+    use std::path::{Path, PathBuf};
+    use std::sync::Mutex;
+
+    static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+    /// A temporary file being written; forgotten when dropped (renamed or
+    /// removed by then).
+    pub(super) struct Pending(PathBuf);
+
+    impl Pending {
+        pub(super) fn new(path: &Path) -> Self {
+            lock().push(path.to_path_buf());
+            Pending(path.to_path_buf())
+        }
+    }
+
+    impl Drop for Pending {
+        fn drop(&mut self) {
+            lock().retain(|p| *p != self.0);
+        }
+    }
+
+    /// Removes every temporary file still being written. Holding the lock
+    /// while removing means a write cannot finish (and be forgotten) half
+    /// way through; a file already renamed is simply not found.
+    pub fn remove_all() {
+        for path in lock().drain(..) {
+            let _ = std::fs::remove_file(path);
+        }
+    }
+
+    fn lock() -> std::sync::MutexGuard<'static, Vec<PathBuf>> {
+        // A panic elsewhere while holding it leaves a usable list.
+        PENDING.lock().unwrap_or_else(|e| e.into_inner())
+    }
 }

@@ -12,6 +12,7 @@ pub mod contrib;
 pub mod fsutil;
 pub mod help;
 pub mod log;
+pub mod memory;
 pub mod quote;
 pub mod render;
 pub mod saved;

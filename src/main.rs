@@ -60,6 +60,12 @@ fn main() -> ExitCode {
         // the environment while it changes.
         unsafe { std::env::set_var("DISPLAY", display) };
     }
+    if matches!(inv.mode, Mode::Render { .. } | Mode::Heightmap { .. }) {
+        mountains::memory::one_pool();
+        if let Err(e) = mountains::signals::end_cleanly() {
+            eprintln!("warning: cannot watch for SIGTERM: {e}");
+        }
+    }
     let settings_screen = matches!(inv.mode, Mode::Settings { .. });
     let loaded = match load::resolve(inv.config.as_deref(), &inv.sets, settings_screen) {
         Ok(l) => l,

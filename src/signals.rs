@@ -6,6 +6,27 @@
 /// status. A signal the parent set to be ignored (`nohup`) stays ignored.
 #[cfg(unix)]
 pub fn on_terminate(notify: impl Fn() + Send + 'static) -> std::io::Result<()> {
+    watch(move |_| notify())
+}
+
+/// For one-shot commands (`render`, `heightmap`): on SIGTERM, SIGINT or
+/// SIGHUP the temporary file of a write in progress is removed, then the
+/// program ends by that signal as if it had not been caught, so a script
+/// sees that no file was made (a clean exit 0 would claim one was).
+#[cfg(unix)]
+pub fn end_cleanly() -> std::io::Result<()> {
+    watch(|signal| {
+        crate::fsutil::partial::remove_all();
+        let _ = signal_hook::low_level::emulate_default_handler(signal);
+        // Only reached if the signal could not be raised again.
+        std::process::exit(128 + signal);
+    })
+}
+
+/// Calls `on_signal` on a watcher thread for each SIGTERM, SIGINT or SIGHUP
+/// not ignored when we were started.
+#[cfg(unix)]
+fn watch(on_signal: impl Fn(i32) + Send + 'static) -> std::io::Result<()> {
     use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
     let wanted: Vec<i32> = [SIGTERM, SIGINT, SIGHUP]
         .into_iter()
@@ -15,8 +36,8 @@ pub fn on_terminate(notify: impl Fn() + Send + 'static) -> std::io::Result<()> {
     std::thread::Builder::new()
         .name("signals".into())
         .spawn(move || {
-            for _ in signals.forever() {
-                notify();
+            for signal in signals.forever() {
+                on_signal(signal);
             }
         })
         .map(drop)
@@ -44,5 +65,12 @@ fn inherited_ignore(_signal: i32) -> bool {
 /// Windows ends a screensaver by window messages, not signals: nothing to watch.
 #[cfg(not(unix))]
 pub fn on_terminate(_notify: impl Fn() + Send + 'static) -> std::io::Result<()> {
+    Ok(())
+}
+
+/// Not watched on Windows: Ctrl+C there ends the console program at once
+/// (a temporary `.NAME.PID.tmp` file may be left beside the output).
+#[cfg(not(unix))]
+pub fn end_cleanly() -> std::io::Result<()> {
     Ok(())
 }

@@ -1,16 +1,17 @@
 //! Frames to picture files: `mountains render` (PNG or JPEG, by the
 //! extension), and the P key's screenshots (PNG).
 
+use std::io::{self, Write};
 use std::path::Path;
 
 use crate::cli::output::Format;
-use crate::fsutil::{write_atomic, write_output};
+use crate::fsutil::{write_atomic_with, write_output_with};
 use crate::render::Frame;
 
-/// Encodes `frame` as an 8-bit RGB PNG.
-pub fn encode_png(frame: &Frame) -> Result<Vec<u8>, png::EncodingError> {
-    let mut bytes = Vec::new();
-    let mut encoder = png::Encoder::new(&mut bytes, frame.width(), frame.height());
+/// Encodes `frame` as an 8-bit RGB PNG into `out`, a row at a time (a
+/// 16384x16384 frame's 768 MiB of RGB never exists at once).
+pub fn encode_png(frame: &Frame, out: &mut dyn Write) -> io::Result<()> {
+    let mut encoder = png::Encoder::new(out, frame.width(), frame.height());
     encoder.set_color(png::ColorType::Rgb);
     encoder.set_depth(png::BitDepth::Eight);
     // fdeflate with the Up filter on every row: a 1080p frame in about a
@@ -18,68 +19,112 @@ pub fn encode_png(frame: &Frame) -> Result<Vec<u8>, png::EncodingError> {
     // than choosing each row's filter, which cost 4 ms of a 90 ms `render`);
     // a screensaver's pictures are many and seldom kept.
     encoder.set_compression(png::Compression::Fastest);
-    let mut writer = encoder.write_header()?;
-    let rgb = rgb(frame).ok_or_else(|| {
-        png::EncodingError::from(std::io::Error::new(
-            std::io::ErrorKind::OutOfMemory,
-            no_memory(),
-        ))
-    })?;
-    writer.write_image_data(&rgb)?;
-    writer.finish()?;
-    Ok(bytes)
-}
-
-/// The frame's pixels as bytes, red, green, blue; `None` if the memory for
-/// them cannot be had.
-fn rgb(frame: &Frame) -> Option<Vec<u8>> {
-    let mut rgb = Vec::new();
-    rgb.try_reserve_exact(frame.pixels().len() * 3).ok()?;
-    for &p in frame.pixels() {
-        rgb.extend_from_slice(&[(p >> 16) as u8, (p >> 8) as u8, p as u8]);
+    let mut writer = encoder.write_header().map_err(png_error)?;
+    let mut stream = writer.stream_writer().map_err(png_error)?;
+    let mut rgb = Vec::with_capacity(frame.width() as usize * 3);
+    for row in frame.pixels().chunks_exact(frame.width() as usize) {
+        rgb.clear();
+        rgb.extend(
+            row.iter()
+                .flat_map(|&p| [(p >> 16) as u8, (p >> 8) as u8, p as u8]),
+        );
+        stream.write_all(&rgb)?;
     }
-    Some(rgb)
+    stream.finish().map_err(png_error)
 }
 
-fn no_memory() -> String {
-    "not enough memory to encode the frame".into()
+/// The png crate's error as an I/O error, keeping a real I/O error as it is.
+fn png_error(e: png::EncodingError) -> io::Error {
+    match e {
+        png::EncodingError::IoError(e) => e,
+        other => io::Error::other(EncodeError(other.to_string())),
+    }
 }
+
+/// A picture that could not be encoded (as opposed to written).
+#[derive(Debug)]
+struct EncodeError(String);
+
+impl std::fmt::Display for EncodeError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for EncodeError {}
 
 /// JPEG's quality: fine gradients in the sky without visible blocks.
 const JPEG_QUALITY: u8 = 90;
 
-/// Encodes `frame` as a JPEG (at most 65535 pixels a side, JPEG's limit).
-pub fn encode_jpeg(frame: &Frame) -> Result<Vec<u8>, String> {
+/// Encodes `frame` as a JPEG into `out` (at most 65535 pixels a side,
+/// JPEG's limit), reading the frame's pixels as they are (no RGB copy).
+pub fn encode_jpeg(frame: &Frame, out: &mut dyn Write) -> io::Result<()> {
     let (Ok(w), Ok(h)) = (u16::try_from(frame.width()), u16::try_from(frame.height())) else {
-        return Err("JPEG allows at most 65535 pixels a side".into());
+        return Err(io::Error::other(EncodeError(
+            "JPEG allows at most 65535 pixels a side".into(),
+        )));
     };
-    let mut bytes = Vec::new();
-    jpeg_encoder::Encoder::new(&mut bytes, JPEG_QUALITY)
-        .encode(
-            &rgb(frame).ok_or_else(no_memory)?,
-            w,
-            h,
-            jpeg_encoder::ColorType::Rgb,
-        )
-        .map_err(|e| e.to_string())?;
-    Ok(bytes)
+    jpeg_encoder::Encoder::new(out, JPEG_QUALITY)
+        .encode_image(FrameImage { frame, w, h })
+        .map_err(|e| match e {
+            jpeg_encoder::EncodingError::IoError(e) => e,
+            other => io::Error::other(EncodeError(other.to_string())),
+        })
+}
+
+/// A frame as jpeg-encoder reads an image: a row at a time, in YCbCr.
+struct FrameImage<'a> {
+    frame: &'a Frame,
+    w: u16,
+    h: u16,
+}
+
+impl jpeg_encoder::ImageBuffer for FrameImage<'_> {
+    fn get_jpeg_color_type(&self) -> jpeg_encoder::JpegColorType {
+        jpeg_encoder::JpegColorType::Ycbcr
+    }
+
+    fn width(&self) -> u16 {
+        self.w
+    }
+
+    fn height(&self) -> u16 {
+        self.h
+    }
+
+    fn fill_buffers(&self, y: u16, buffers: &mut [Vec<u8>; 4]) {
+        let w = usize::from(self.w);
+        let start = usize::from(y) * w;
+        for &p in &self.frame.pixels()[start..start + w] {
+            let (y, cb, cr) = jpeg_encoder::rgb_to_ycbcr((p >> 16) as u8, (p >> 8) as u8, p as u8);
+            buffers[0].push(y);
+            buffers[1].push(cb);
+            buffers[2].push(cr);
+        }
+    }
 }
 
 /// Writes `frame` to `path` as `format` says (PNG or JPEG), atomically.
-/// The message names the file.
+/// The message names the flag and the file.
 pub fn write_picture(path: &Path, frame: &Frame, format: Format) -> Result<(), String> {
-    let bytes = match format {
-        Format::Jpeg => encode_jpeg(frame),
-        _ => encode_png(frame).map_err(|e| e.to_string()),
-    }
-    .map_err(|e| format!("{}: cannot encode: {e}", path.display()))?;
-    write_output(path, &bytes).map_err(|e| format!("-o {}: cannot write: {e}", path.display()))
+    write_output_with(path, |out| match format {
+        Format::Jpeg => encode_jpeg(frame, out),
+        _ => encode_png(frame, out),
+    })
+    .map_err(|e| format!("-o {}: {}", path.display(), failure(&e)))
 }
 
 /// Writes `frame` to `path` as a PNG, atomically (an existing file is
 /// replaced whole or not at all). The message names the file.
 pub fn write_png(path: &Path, frame: &Frame) -> Result<(), String> {
-    let bytes =
-        encode_png(frame).map_err(|e| format!("{}: cannot encode PNG: {e}", path.display()))?;
-    write_atomic(path, &bytes).map_err(|e| format!("{}: cannot write: {e}", path.display()))
+    write_atomic_with(path, |out| encode_png(frame, out))
+        .map_err(|e| format!("{}: {}", path.display(), failure(&e)))
+}
+
+/// "cannot encode" or "cannot write", and why.
+fn failure(e: &io::Error) -> String {
+    match e.get_ref().and_then(|r| r.downcast_ref::<EncodeError>()) {
+        Some(EncodeError(why)) => format!("cannot encode: {why}"),
+        None => format!("cannot write: {e}"),
+    }
 }

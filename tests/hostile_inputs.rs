@@ -224,34 +224,6 @@ fn writes_go_through_links_and_into_pipes() {
     );
 }
 
-/// A frame inside the allowed size that the memory limit cannot hold is a
-/// message and exit 1, not an abort (it was SIGABRT under a 1 GiB limit).
-#[test]
-fn a_frame_too_big_for_the_memory_limit_is_a_message() {
-    let dir = scratch("memory");
-    let out = dir.join("big.png");
-    let got = Command::new("prlimit")
-        .arg("--as=1073741824")
-        .arg(env!("CARGO_BIN_EXE_mountains"))
-        .args([
-            "render",
-            "--size",
-            "16384x16384",
-            "-o",
-            out.to_str().unwrap(),
-        ])
-        .env("HOME", &dir)
-        .output()
-        .expect("prlimit (util-linux)");
-    let err = String::from_utf8_lossy(&got.stderr);
-    assert_eq!(got.status.code(), Some(1), "{err}");
-    assert!(
-        err.contains("--size 16384x16384: not enough memory for the frame (1024 MiB)"),
-        "{err}"
-    );
-    assert!(!out.exists());
-}
-
 /// Messages name what the user typed and what is allowed.
 #[test]
 fn messages_name_what_was_typed() {
@@ -304,4 +276,42 @@ fn messages_name_what_was_typed() {
         err.contains("--window-id 0x100000000: X window ids have 32 bits"),
         "{err}"
     );
+}
+
+/// SIGTERM, SIGINT or SIGHUP while `render` writes its file: the half-made
+/// temporary file is removed, no output appears, and the command ends by
+/// the signal (a script must not take it for a success). It used to leave
+/// `.NAME.PID.tmp` beside the output.
+#[test]
+fn a_signal_during_the_write_leaves_no_file() {
+    use std::os::unix::process::ExitStatusExt;
+    for (signal, number) in [("TERM", 15), ("INT", 2), ("HUP", 1)] {
+        let dir = scratch(&format!("signal-{signal}"));
+        let out = dir.join("out.png");
+        let mut child = Command::new(env!("CARGO_BIN_EXE_mountains"))
+            .args(["render", "--size", "8000x8000", "-o", out.to_str().unwrap()])
+            .env("HOME", &dir)
+            .stderr(Stdio::null())
+            .spawn()
+            .expect("run mountains");
+        let tmp = dir.join(format!(".out.png.{}.tmp", child.id()));
+        let start = Instant::now();
+        while !tmp.exists() {
+            assert!(start.elapsed() < BOUND, "no temporary file appeared");
+            assert!(child.try_wait().unwrap().is_none(), "ended before writing");
+            std::thread::sleep(Duration::from_millis(1));
+        }
+        let sent = Command::new("kill")
+            .args([format!("-{signal}"), child.id().to_string()])
+            .status()
+            .expect("kill");
+        assert!(sent.success());
+        let status = child.wait().unwrap();
+        assert_eq!(status.signal(), Some(number), "SIG{signal}: {status}");
+        let left: Vec<_> = std::fs::read_dir(&dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name())
+            .collect();
+        assert!(left.is_empty(), "SIG{signal} left {left:?}");
+    }
 }
