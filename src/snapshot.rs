@@ -21,17 +21,25 @@ pub fn encode_png(frame: &Frame, out: &mut dyn Write) -> io::Result<()> {
     encoder.set_compression(png::Compression::Fastest);
     let mut writer = encoder.write_header().map_err(png_error)?;
     let mut stream = writer.stream_writer().map_err(png_error)?;
-    let mut rgb = Vec::with_capacity(frame.width() as usize * 3);
-    for row in frame.pixels().chunks_exact(frame.width() as usize) {
+    // Whole rows at a time, at least 64 Ki pixels a batch: one write per
+    // row of a 1-pixel-wide frame cost more than its drawing.
+    let width = frame.width() as usize;
+    let rows = (BATCH_PIXELS / width).max(1);
+    let mut rgb = Vec::with_capacity(rows.min(frame.height() as usize) * width * 3);
+    for batch in frame.pixels().chunks(rows * width) {
         rgb.clear();
         rgb.extend(
-            row.iter()
+            batch
+                .iter()
                 .flat_map(|&p| [(p >> 16) as u8, (p >> 8) as u8, p as u8]),
         );
         stream.write_all(&rgb)?;
     }
     stream.finish().map_err(png_error)
 }
+
+/// Pixels converted to RGB and handed to the PNG encoder at once.
+const BATCH_PIXELS: usize = 1 << 16;
 
 /// The png crate's error as an I/O error, keeping a real I/O error as it is.
 fn png_error(e: png::EncodingError) -> io::Error {

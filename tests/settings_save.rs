@@ -210,3 +210,36 @@ fn saving_twice_changes_nothing_the_second_time() {
     save::save(&path, &s).unwrap();
     assert_eq!(read(&path), first);
 }
+
+/// The settings screen's advice follows the cause: Edit file mends a
+/// broken file, not a full disk or a folder in the way (it advised Edit
+/// file for every failure).
+#[test]
+fn the_advice_after_a_failed_save_follows_its_cause() {
+    let dir = scratch("advice");
+    let broken = dir.join("broken.toml");
+    std::fs::write(&broken, "cragginess = \n").unwrap();
+    let e = save::save(&broken, &Settings::default()).unwrap_err();
+    assert_eq!(e.io, None);
+    assert!(e.advice().contains("Edit file"), "{}", e.advice());
+
+    // A file where the preferences' folder should be.
+    std::fs::write(dir.join("in-the-way"), "").unwrap();
+    let blocked = dir.join("in-the-way").join("mountains.toml");
+    let e = save::save(&blocked, &Settings::default()).unwrap_err();
+    assert!(e.io.is_some(), "{e}");
+    assert!(!e.advice().contains("Edit file"), "{}", e.advice());
+
+    let full = save::SaveError {
+        path: dir.join("mountains.toml"),
+        position: None,
+        message: "cannot write: No space left on device (os error 28)".into(),
+        io: Some(std::io::ErrorKind::StorageFull),
+    };
+    assert!(full.advice().starts_with("Free some space on the disk"));
+    let read_only = save::SaveError {
+        io: Some(std::io::ErrorKind::ReadOnlyFilesystem),
+        ..full
+    };
+    assert!(read_only.advice().contains("writable"));
+}

@@ -39,19 +39,33 @@ impl Sky {
     pub(crate) fn paint(&self, canvas: &mut Canvas) {
         let clip = *canvas.clip();
         let (x0, x1) = (clip.x0 as u32, clip.x1 as u32);
+        // Below the horizon row every row is the horizon colour: its four
+        // dither rows once, not a power per row (a 1-pixel-wide frame is
+        // all rows).
+        let below: [[u32; 4]; 4] = std::array::from_fn(|y| self.colours_at(1.0, y as u32));
         for y in clip.y0 as u32..clip.y1 as u32 {
-            let phases = self.row_colours(y);
+            let phases = match self.blend(y) {
+                1.0 => below[(y & 3) as usize],
+                t => self.colours_at(t, y),
+            };
             for (px, x) in canvas.span_mut(y, x0, x1).iter_mut().zip(x0..) {
                 *px = phases[(x & 3) as usize];
             }
         }
     }
 
-    /// The packed colour of row `y` at each of the four dither columns.
-    fn row_colours(&self, y: u32) -> [u32; 4] {
-        let t = (y as f32 / self.horizon_row)
-            .clamp(0.0, 1.0)
-            .powf(HORIZON_CURVE);
+    /// How far row `y` is blended from the top colour (0) to the horizon
+    /// colour (1).
+    fn blend(&self, y: u32) -> f32 {
+        match y as f32 / self.horizon_row {
+            q if q >= 1.0 => 1.0,
+            q => q.max(0.0).powf(HORIZON_CURVE),
+        }
+    }
+
+    /// The packed colour of row `y`, blended `t` of the way to the
+    /// horizon, at each of the four dither columns.
+    fn colours_at(&self, t: f32, y: u32) -> [u32; 4] {
         let c: Rgb = [0, 1, 2].map(|i| (self.top[i] + (self.horizon[i] - self.top[i]) * t) * 255.0);
         let row = &BAYER[(y & 3) as usize];
         row.map(|b| {

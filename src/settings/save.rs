@@ -24,6 +24,30 @@ pub struct SaveError {
     pub position: Option<(usize, usize)>,
     /// What went wrong, for a person.
     pub message: String,
+    /// The system's reason when reading or writing failed; `None` when the
+    /// file's text is the trouble.
+    pub io: Option<std::io::ErrorKind>,
+}
+
+impl SaveError {
+    /// What the person can do about it, as the settings screen says it: a
+    /// broken file is mended with Edit file, a full disk by freeing space,
+    /// a file or folder that cannot be written by its permissions.
+    pub fn advice(&self) -> &'static str {
+        use std::io::ErrorKind as K;
+        match self.io {
+            None => "Use Edit file to fix it, or Cancel.",
+            Some(K::StorageFull | K::QuotaExceeded) => {
+                "Free some space on the disk, then OK again; Cancel keeps the file as it is."
+            }
+            Some(K::PermissionDenied | K::ReadOnlyFilesystem) => {
+                "Make the file and its folder writable, then OK again; Cancel keeps the file as it is."
+            }
+            // Not a regular file, or far too large: nothing here can mend it.
+            Some(K::InvalidInput | K::InvalidData) => "Cancel keeps the file as it is.",
+            Some(_) => "OK tries again; Cancel keeps the file as it is.",
+        }
+    }
 }
 
 impl fmt::Display for SaveError {
@@ -93,12 +117,17 @@ pub fn save(path: &Path, settings: &Settings) -> Result<(), SaveError> {
         path: path.to_path_buf(),
         position,
         message,
+        io: None,
+    };
+    let io_error = |message: String, e: &std::io::Error| SaveError {
+        io: Some(e.kind()),
+        ..error(None, message)
     };
     let text = match crate::fsutil::read_regular(path, crate::fsutil::MAX_PREFERENCES_BYTES) {
         Ok(bytes) => String::from_utf8(bytes)
             .map_err(|_| error(None, "not valid UTF-8 text; fix it with Edit file".into()))?,
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => DEFAULT_TOML.to_string(),
-        Err(e) => return Err(error(None, format!("cannot read: {e}"))),
+        Err(e) => return Err(io_error(format!("cannot read: {e}"), &e)),
     };
     let merged = merge(&text, settings).map_err(|e| {
         error(
@@ -111,10 +140,10 @@ pub fn save(path: &Path, settings: &Settings) -> Result<(), SaveError> {
     }
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir)
-            .map_err(|e| error(None, format!("cannot create {}: {e}", dir.display())))?;
+            .map_err(|e| io_error(format!("cannot create {}: {e}", dir.display()), &e))?;
     }
     crate::fsutil::write_atomic(path, merged.as_bytes())
-        .map_err(|e| error(None, format!("cannot write: {e}")))
+        .map_err(|e| io_error(format!("cannot write: {e}"), &e))
 }
 
 /// The value to write for `key`, after the key table has accepted it.

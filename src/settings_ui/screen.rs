@@ -123,7 +123,7 @@ impl Screen {
         match save::save(&self.config, &self.model.settings) {
             Ok(()) => Next::Close,
             Err(e) => {
-                self.model.message = format!("{e}. Use Edit file to fix it, or Cancel.");
+                self.model.message = format!("{e}. {}", e.advice());
                 Next::Stay
             }
         }
