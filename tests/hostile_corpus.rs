@@ -7,14 +7,14 @@
 //! theirs alone).
 
 mod heightmap_support;
+mod hostile_support;
 
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use heightmap_support::{field, gray_png};
 use mountains::settings::{Settings, load};
-use mountains::terrain::heightmap::{decode, encode, meta};
+use mountains::terrain::heightmap::decode;
 
 struct Counting;
 
@@ -48,23 +48,6 @@ const CASE_BOUND: usize = 8 << 20;
 /// Longest message a case may produce.
 const MESSAGE_BOUND: usize = 600;
 
-/// SplitMix64: the same corpus on every run and platform.
-struct Mix(u64);
-
-impl Mix {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-
-    fn below(&mut self, n: usize) -> usize {
-        (self.next() % n.max(1) as u64) as usize
-    }
-}
-
 /// Runs `case`, failing if it takes more than `CASE_BOUND` of new memory.
 fn bounded<T>(what: &str, case: impl FnOnce() -> T) -> T {
     let before = CURRENT.load(Ordering::SeqCst);
@@ -76,49 +59,11 @@ fn bounded<T>(what: &str, case: impl FnOnce() -> T) -> T {
     out
 }
 
-/// One way to spoil a PNG.
-fn spoil(png: &mut Vec<u8>, mix: &mut Mix) {
-    match mix.below(4) {
-        // Flip a few bytes.
-        0 => {
-            for _ in 0..1 + mix.below(6) {
-                let i = mix.below(png.len());
-                png[i] ^= 1 << mix.below(8);
-            }
-        }
-        // Cut it short.
-        1 => png.truncate(mix.below(png.len())),
-        // A chunk length that lies (chunks start after the 8-byte signature).
-        2 => {
-            let at = 8 + 4 * mix.below((png.len() - 12) / 4);
-            let lie =
-                [0x7f, 0xff, 0xff, 0xff, 0x00, 0x10, 0x00, 0x00][mix.below(2) * 4..][..4].to_vec();
-            png[at..at + 4].copy_from_slice(&lie);
-        }
-        // A huge value of ours in a text chunk.
-        _ => {
-            let big = "9".repeat(1 << (10 + mix.below(10)));
-            let samples: Vec<u16> = (0..33 * 33).map(|i| (i * 61 % 65536) as u16).collect();
-            *png = gray_png(33, 33, 16, &samples, &[(meta::KEY_SCALE, &big)]);
-        }
-    }
-}
-
 #[test]
 fn a_thousand_spoilt_data_sets_end_in_a_field_or_a_short_message() {
     let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
-    let good = encode(
-        &field(5, 250.0),
-        Some(7),
-        &Settings::default(),
-        Path::new("m.png"),
-    )
-    .unwrap();
-    let mut mix = Mix(1);
     let (mut refused, mut loaded) = (0, 0);
-    for case in 0..1000 {
-        let mut png = good.clone();
-        spoil(&mut png, &mut mix);
+    for (case, png) in hostile_support::data_sets().into_iter().enumerate() {
         match bounded(&format!("data set {case}"), || {
             decode(&png, Path::new("spoilt.png"))
         }) {
@@ -153,48 +98,11 @@ fn a_thousand_spoilt_data_sets_end_in_a_field_or_a_short_message() {
     );
 }
 
-/// One way to spoil a preferences file.
-fn spoil_text(text: &str, mix: &mut Mix) -> String {
-    let mut lines: Vec<String> = text.lines().map(String::from).collect();
-    match mix.below(5) {
-        0 => {
-            let i = mix.below(lines.len());
-            lines.remove(i);
-        }
-        1 => {
-            let i = mix.below(lines.len());
-            let copy = lines[i].clone();
-            lines.insert(i, copy);
-        }
-        2 => {
-            let i = mix.below(lines.len());
-            lines[i] = format!("color = \"{}\"", "x".repeat(1 << (8 + mix.below(12))));
-        }
-        3 => {
-            let i = mix.below(lines.len());
-            let cut = mix.below(lines[i].len() + 1);
-            // Back to a character boundary (the file has non-ASCII text).
-            let mut cut = cut;
-            while !lines[i].is_char_boundary(cut) {
-                cut -= 1;
-            }
-            lines[i].truncate(cut);
-        }
-        _ => {
-            let i = mix.below(lines.len());
-            lines.insert(i, format!("unknown_{} = {}", mix.next(), mix.next()));
-        }
-    }
-    lines.join("\n")
-}
-
 #[test]
 fn a_thousand_spoilt_preference_files_end_in_settings_or_short_messages() {
     let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
-    let mut mix = Mix(2);
     let mut with_problems = 0;
-    for case in 0..1000 {
-        let text = spoil_text(load::DEFAULT_TOML, &mut mix);
+    for (case, text) in hostile_support::preference_files().into_iter().enumerate() {
         let mut settings = Settings::default();
         let problems = bounded(&format!("preferences {case}"), || {
             load::apply_toml(&mut settings, &text, "spoilt.toml")
