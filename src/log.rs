@@ -106,19 +106,18 @@ fn append(path: &PathBuf, message: &str) -> std::io::Result<()> {
     if let Some(dir) = path.parent() {
         std::fs::create_dir_all(dir)?;
     }
-    if std::fs::metadata(path).is_ok_and(|m| m.len() > MAX_LOG_BYTES) {
+    // Local time with its offset: a person reads the log by their clock.
+    let line = format!("[{}] {message}\n", crate::clock::local(crate::clock::now()));
+    // Rotate before a line that would take the log past its size, so the
+    // log itself never exceeds it.
+    if std::fs::metadata(path).is_ok_and(|m| m.len() + line.len() as u64 > MAX_LOG_BYTES) {
         std::fs::rename(path, path.with_extension("log.old"))?;
     }
     let mut f = std::fs::OpenOptions::new()
         .create(true)
         .append(true)
         .open(path)?;
-    // Local time with its offset: a person reads the log by their clock.
-    writeln!(
-        f,
-        "[{}] {message}",
-        crate::clock::local(crate::clock::now())
-    )
+    f.write_all(line.as_bytes())
 }
 
 /// `message` cut to at most `max` bytes, at a character boundary, saying so.
@@ -148,5 +147,23 @@ mod cut_tests {
             "{}",
             &c[c.len() - 30..]
         );
+    }
+
+    #[test]
+    fn the_log_never_exceeds_its_rotation_size() {
+        let dir = std::env::temp_dir().join(format!("mountains-log-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        let path = dir.join("mountains.log");
+        let huge = "x".repeat(1 << 20);
+        for i in 0..400 {
+            append(&path, if i % 3 == 0 { &huge } else { "a short line" }).unwrap();
+            let len = std::fs::metadata(&path).unwrap().len();
+            assert!(len <= MAX_LOG_BYTES, "line {i}: {len} bytes");
+        }
+        let old = std::fs::metadata(path.with_extension("log.old"))
+            .unwrap()
+            .len();
+        assert!(old <= MAX_LOG_BYTES && old > MAX_LOG_BYTES / 2, "{old}");
+        let _ = std::fs::remove_dir_all(&dir);
     }
 }
