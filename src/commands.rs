@@ -1,4 +1,4 @@
-//! The one-shot commands: render a PNG, save a data set, check a file, edit it.
+//! The one-shot commands: render a picture, save a data set, check a file.
 
 use std::path::Path;
 use std::process::ExitCode;
@@ -186,35 +186,4 @@ pub fn check_config(
         println!("--set: ok");
     }
     ExitCode::SUCCESS
-}
-
-/// Opens the preferences file in the user's editor, creating it from the
-/// commented defaults if it does not exist yet (an existing file is never
-/// rewritten). Windows: Notepad; elsewhere `$VISUAL`, `$EDITOR`, else xdg-open.
-pub fn edit_config(config: Option<&Path>) -> ExitCode {
-    let Some(path) = config.map(Path::to_path_buf).or_else(paths::config_file) else {
-        return fail("no home directory: cannot find the preferences file");
-    };
-    if !path.exists() {
-        if let Some(dir) = path.parent() {
-            let _ = std::fs::create_dir_all(dir);
-        }
-        if let Err(e) = crate::fsutil::write_atomic(&path, load::DEFAULT_TOML.as_bytes()) {
-            return fail(&format!("{}: cannot create: {e}", path.display()));
-        }
-    }
-    let editor = if cfg!(windows) {
-        "notepad.exe".to_string()
-    } else {
-        std::env::var("VISUAL")
-            .or_else(|_| std::env::var("EDITOR"))
-            .unwrap_or_else(|_| "xdg-open".into())
-    };
-    match std::process::Command::new(&editor).arg(&path).status() {
-        Ok(_) => ExitCode::SUCCESS,
-        Err(e) => fail(&format!(
-            "cannot start {editor} for {}: {e}",
-            path.display()
-        )),
-    }
 }

@@ -670,3 +670,39 @@ fn any_window_size_lays_out_and_draws_without_panicking() {
     assert_eq!(l.button(Button::Ok).y1, 900 - 8);
     assert!(l.preview.x1 > Layout::new(960, 620, 1).preview.x1);
 }
+
+/// Edit file runs `$EDITOR` as the shell reads it, so an editor with
+/// arguments works (`code --wait` failed: it was run as one program name),
+/// the file's path is passed whole however it is spelt, and a missing
+/// editor is a failure status the screen can report.
+#[cfg(unix)]
+#[test]
+fn the_editor_command_takes_arguments_and_any_path() {
+    use mountains::settings_ui::editor;
+    let dir = std::env::temp_dir().join(format!("mountains-editor-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let script = dir.join("fake editor.sh");
+    let said = dir.join("args");
+    std::fs::write(
+        &script,
+        format!("printf '%s\\n' \"$@\" > '{}'\n", said.display()),
+    )
+    .unwrap();
+    let prefs = dir.join("my 'prefs' $HOME \"file\".toml");
+    let line = format!("sh '{}' --wait -n", script.display());
+    let status = editor::command(Some(&line), &prefs).status().unwrap();
+    assert!(status.success());
+    let args = std::fs::read_to_string(&said).unwrap();
+    assert_eq!(args, format!("--wait\n-n\n{}\n", prefs.display()));
+
+    let missing = editor::command(Some("no-such-editor-4711 --wait"), &prefs)
+        .status()
+        .unwrap();
+    assert_eq!(missing.code(), Some(127));
+    assert_eq!(editor::command(None, &prefs).get_program(), "xdg-open");
+    assert_eq!(
+        editor::command(Some("  "), &prefs).get_program(),
+        "xdg-open"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

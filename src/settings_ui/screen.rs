@@ -31,6 +31,7 @@ pub struct Screen {
     config: PathBuf,
     config_stamp: Option<SystemTime>,
     data_dir: Option<PathBuf>,
+    editing: super::editor::Editing,
 }
 
 fn stamp(path: &Path) -> Option<SystemTime> {
@@ -57,6 +58,7 @@ impl Screen {
             config_stamp: stamp(&config),
             config,
             data_dir: paths::data_dir(),
+            editing: Default::default(),
         };
         screen.new_mountain();
         screen
@@ -172,16 +174,20 @@ impl Screen {
     }
 
     fn edit_file(&mut self) {
-        match super::editor::open(&self.config) {
+        match super::editor::open(&self.config, &self.editing) {
             Ok(what) => self.model.message = what,
             Err(e) => self.model.message = e,
         }
     }
 
     /// Reloads the preferences file if it changed on disk (edited with Edit
-    /// file, or by hand), keeping the values changed on the screen. Returns
-    /// true when it did.
+    /// file, or by hand), keeping the values changed on the screen, and
+    /// says so if the editor failed. Returns true when either happened.
     pub fn poll_file(&mut self) -> bool {
+        if let Some(failure) = self.editing.take_failure() {
+            self.model.message = failure;
+            return true;
+        }
         let now = stamp(&self.config);
         if now == self.config_stamp {
             return false;
