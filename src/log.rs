@@ -28,6 +28,25 @@ pub fn warn(message: &str) {
     record(message);
 }
 
+/// The result of a worker thread, or `None` if it panicked: then the panic
+/// is reported (a Windows .scr has no stderr for the default report) and
+/// the caller carries on without it.
+pub fn joined<T>(handle: std::thread::JoinHandle<T>, what: &str) -> Option<T> {
+    handle
+        .join()
+        .map_err(|payload| {
+            let why = payload
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "no message".into());
+            warn(&format!(
+                "{what} failed (a panic: {why}); carrying on without it"
+            ));
+        })
+        .ok()
+}
+
 /// Writes `message` to the log file only (if one is set).
 pub fn record(message: &str) {
     if let Some(path) = file() {
@@ -133,7 +152,7 @@ fn cut(message: &str, max: usize) -> std::borrow::Cow<'_, str> {
 }
 
 #[cfg(test)]
-mod cut_tests {
+mod tests {
     use super::*;
 
     #[test]
@@ -147,6 +166,25 @@ mod cut_tests {
             "{}",
             &c[c.len() - 30..]
         );
+    }
+
+    #[test]
+    fn a_panicked_worker_is_reported_not_swallowed() {
+        let dir = std::env::temp_dir().join(format!("mountains-joined-{}", std::process::id()));
+        let path = dir.join("mountains.log");
+        set_file(Some(path.clone()));
+        let ok = std::thread::spawn(|| 7);
+        assert_eq!(joined(ok, "counting"), Some(7));
+        let bad = std::thread::spawn(|| -> u32 { panic!("boom {}", 42) });
+        assert_eq!(joined(bad, "making the next mountain"), None);
+        set_file(None);
+        let log = std::fs::read_to_string(&path).unwrap();
+        assert!(
+            log.contains("making the next mountain failed (a panic: boom 42)"),
+            "{log}"
+        );
+        assert!(!log.contains("counting"), "{log}");
+        let _ = std::fs::remove_dir_all(&dir);
     }
 
     #[test]

@@ -49,7 +49,7 @@ impl Redraw {
 
     /// The finished redraw, waiting for it if need be; `None` if it failed.
     pub fn wait(self) -> Option<Drawn> {
-        self.handle.join().ok()
+        crate::log::joined(self.handle, "redrawing the mountain")
     }
 }
 

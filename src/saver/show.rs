@@ -211,7 +211,8 @@ impl Show {
             return Rect::default();
         }
         let next = match std::mem::replace(&mut self.next, Next::None) {
-            Next::Pending(handle) => handle.join().ok(),
+            // Made again below, on this thread, if its thread failed.
+            Next::Pending(handle) => crate::log::joined(handle, "making the next mountain"),
             Next::None => None,
         };
         // A redraw of the old mountain still under way is not wanted now.
