@@ -211,6 +211,15 @@ fn only_drawing_keys_repaint_the_current_mountain() {
     assert_eq!(m.handle(Input::Right, &l), Effect::Redraw);
     assert!(m.message.contains("next mountain"), "{}", m.message);
     assert_eq!(m.handle(Input::Char('n'), &l), Effect::NewMountain);
+    // The slide show's pacing changes nothing drawn: no "next mountain"
+    // (it said so for every key it did not repaint).
+    focus_on(&mut m, &l, "pause_seconds");
+    assert_eq!(m.handle(Input::Right, &l), Effect::Redraw);
+    assert_eq!(m.message, "");
+    // The numeric detail remakes the preview as Low Detail does (it waited
+    // for the next mountain although Low Detail halves it).
+    focus_on(&mut m, &l, "detail");
+    assert_eq!(m.handle(Input::Right, &l), Effect::Regenerate);
 }
 
 #[test]

@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use super::input::Action;
 use super::show::Mountain;
 use crate::render::Frame;
-use crate::settings::keys::{self, Kind, Value};
+use crate::settings::keys::{self, Change, Kind, Value};
 use crate::settings::{ColorMode, Settings};
 
 /// The colour mode after `color`, wrapping round, in the key table's order
@@ -54,43 +54,35 @@ fn key(name: &str) -> &'static keys::Key {
     keys::find(name).unwrap_or_else(|| panic!("`{name}` is missing from the key table"))
 }
 
-/// Whether a settings change affects the mountain on screen or only the next one.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Applies {
-    /// Colours: redraw the current mountain at once.
-    Now,
-    /// Terrain: the next mountain is generated with it.
-    Next,
-}
-
-/// The settings a key action leads to, and when they apply; `None` for
-/// actions that do not change settings.
-pub fn changed_settings(action: Action, settings: &Settings) -> Option<(Settings, Applies)> {
+/// The settings a key action leads to, and what the change does to the
+/// mountain on screen (the key table's word, as in the settings screen);
+/// `None` for actions that do not change settings.
+pub fn changed_settings(action: Action, settings: &Settings) -> Option<(Settings, Change)> {
     let mut s = settings.clone();
-    let applies = match action {
+    let name = match action {
         Action::NextColor => {
             s.color = next_color(s.color);
-            Applies::Now
+            "color"
         }
         Action::ToggleRelativeDepth => {
             s.relative_depth = !s.relative_depth;
-            Applies::Now
+            "relative_depth"
         }
         Action::ToggleLowDetail => {
             s.low_detail = !s.low_detail;
-            Applies::Next
+            "low_detail"
         }
         Action::MoreCraggy => {
             s.cragginess = craggier(s.cragginess);
-            Applies::Next
+            "cragginess"
         }
         Action::LessCraggy => {
             s.cragginess = smoother(s.cragginess);
-            Applies::Next
+            "cragginess"
         }
         _ => return None,
     };
-    Some((s, applies))
+    Some((s, key(name).change))
 }
 
 /// The window mode's title, describing the mountain on screen: its seed (to
@@ -155,6 +147,7 @@ pub fn open_next_data_set(
     let mountain = Mountain {
         field: std::sync::Arc::new(data.field),
         seed: data.seed,
+        generated: false,
     };
     Ok((path.clone(), mountain))
 }
@@ -185,21 +178,24 @@ mod tests {
     }
 
     #[test]
-    fn colour_and_depth_apply_now_terrain_changes_next() {
+    fn colour_depth_and_low_detail_apply_now_cragginess_next() {
+        // Mountain Terrain's dialog: Color, Relative Depth and Low Detail
+        // apply to the current set; the saver waited for the next mountain
+        // on Low Detail while the settings screen remade it at once.
         let s = Settings::default();
         let (c, when) = changed_settings(Action::NextColor, &s).unwrap();
-        assert_eq!((c.color, when), (next_color(s.color), Applies::Now));
+        assert_eq!((c.color, when), (next_color(s.color), Change::Repaint));
         let (d, when) = changed_settings(Action::ToggleRelativeDepth, &s).unwrap();
-        assert_eq!((d.relative_depth, when), (!s.relative_depth, Applies::Now));
+        assert_eq!(
+            (d.relative_depth, when),
+            (!s.relative_depth, Change::Repaint)
+        );
         let (l, when) = changed_settings(Action::ToggleLowDetail, &s).unwrap();
-        assert_eq!((l.low_detail, when), (!s.low_detail, Applies::Next));
+        assert_eq!((l.low_detail, when), (!s.low_detail, Change::Remake));
         let (m, _) = changed_settings(Action::MoreCraggy, &s).unwrap();
         assert_eq!(m.cragginess, craggier(s.cragginess));
         let (n, when) = changed_settings(Action::LessCraggy, &s).unwrap();
-        assert_eq!(
-            (n.cragginess, when),
-            (smoother(s.cragginess), Applies::Next)
-        );
+        assert_eq!((n.cragginess, when), (smoother(s.cragginess), Change::Next));
         assert!(changed_settings(Action::Quit, &s).is_none());
         assert!(changed_settings(Action::Screenshot, &s).is_none());
     }

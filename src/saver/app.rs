@@ -511,8 +511,8 @@ impl App {
         let now = Instant::now();
         let show = &mut self.screens[i].show;
         let damage =
-            if let Some((settings, applies)) = actions::changed_settings(action, show.settings()) {
-                show.change_settings(settings, applies == actions::Applies::Now, now)
+            if let Some((settings, change)) = actions::changed_settings(action, show.settings()) {
+                show.change_settings(settings, change, now)
             } else {
                 match action {
                     Action::Quit => {

@@ -20,7 +20,7 @@ pub enum Action {
     NextColor,
     /// D: relative water depth on or off (redraws at once).
     ToggleRelativeDepth,
-    /// L: low detail on or off (next mountain).
+    /// L: low detail on or off (the mountain on screen made again).
     ToggleLowDetail,
     /// +: more cragginess (next mountain).
     MoreCraggy,
@@ -84,7 +84,7 @@ pub const WINDOW_KEYS: &[Binding] = &[
         "L",
         &['l'],
         Action::ToggleLowDetail,
-        "low detail on/off (next mountain)",
+        "low detail on/off (remakes this one)",
     ),
     // '=' is + without Shift on most layouts.
     bind(

@@ -114,6 +114,7 @@ pub fn run(
     let opened = open.map(|d| Mountain {
         field: Arc::new(d.field),
         seed: d.seed,
+        generated: false,
     });
     match mode {
         Mode::Fullscreen => app::run(app::AppMode::Fullscreen, settings, opened),

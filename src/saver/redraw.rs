@@ -16,6 +16,8 @@ pub struct Drawn {
     pub frame: Option<Frame>,
     /// The painter, every strip drawn.
     pub painter: Painter,
+    /// The heights drawn (new ones after a remake).
+    pub field: Arc<Heightfield>,
 }
 
 /// A redraw under way.
@@ -42,6 +44,29 @@ impl Redraw {
         }
     }
 
+    /// Starts making the mountain of `seed` again under `made` (the
+    /// generator's settings, detail fitted), then drawing it under
+    /// `settings`, on another thread; without a thread, here.
+    pub fn remake(
+        seed: u64,
+        made: Settings,
+        settings: &Settings,
+        size: (u32, u32),
+    ) -> Result<Self, Box<Drawn>> {
+        let their_settings = settings.clone();
+        let work = move || {
+            let field = Arc::new(crate::terrain::generate(&made, seed));
+            draw(field, &their_settings, size)
+        };
+        match std::thread::Builder::new()
+            .name("remake".into())
+            .spawn(work.clone())
+        {
+            Ok(handle) => Ok(Redraw { handle }),
+            Err(_) => Err(Box::new(work())),
+        }
+    }
+
     /// True once the redraw is finished (`wait` will not block).
     pub fn is_done(&self) -> bool {
         self.handle.is_finished()
@@ -55,10 +80,14 @@ impl Redraw {
 
 /// Draws a whole frame: in bands on all cores (`Painter::finish`).
 fn draw(field: Arc<Heightfield>, settings: &Settings, size: (u32, u32)) -> Drawn {
-    let mut painter = Painter::new(field, settings, size.0, size.1);
+    let mut painter = Painter::new(field.clone(), settings, size.0, size.1);
     let mut frame = Frame::new(size.0, size.1);
     if let Some(frame) = frame.as_mut() {
         painter.finish(frame);
     }
-    Drawn { frame, painter }
+    Drawn {
+        frame,
+        painter,
+        field,
+    }
 }

@@ -11,6 +11,7 @@ use super::slideshow::{Due, Pacing, Slideshow};
 use super::source;
 use crate::render::{Frame, Painter, Rect, detail};
 use crate::settings::Settings;
+use crate::settings::keys::{self, Change};
 use crate::terrain::{self, Heightfield};
 
 /// A mountain ready to draw and the seed that made it (none for a foreign heightmap).
@@ -20,6 +21,9 @@ pub struct Mountain {
     pub field: Arc<Heightfield>,
     /// The seed that generated them, when known.
     pub seed: Option<u64>,
+    /// Made here from `seed` (not read from a file), so it can be made
+    /// again, e.g. at another detail.
+    pub generated: bool,
 }
 
 impl Mountain {
@@ -29,6 +33,7 @@ impl Mountain {
         Mountain {
             field: Arc::new(terrain::generate(settings, seed)),
             seed: Some(seed),
+            generated: true,
         }
     }
 }
@@ -285,20 +290,50 @@ impl Show {
         self.slideshow.is_paused()
     }
 
-    /// Applies new settings. `redraw`: they change how the current mountain
-    /// looks (colours), so it is redrawn at once; otherwise they change the
-    /// terrain, so only the next mountain uses them.
-    pub fn change_settings(&mut self, settings: Settings, redraw: bool, now: Instant) -> Rect {
+    /// Applies new settings; `change` (the key table's word for the key that
+    /// changed) says whether the mountain on screen is drawn again, made
+    /// again, or left for the next mountain to use them.
+    pub fn change_settings(&mut self, settings: Settings, change: Change, now: Instant) -> Rect {
         self.settings = settings;
         // A mountain generated with the old settings would ignore the change.
         self.next = Next::None;
         if self.slideshow.is_holding() {
             self.prepare_next();
         }
-        if redraw && self.current.is_some() {
-            return self.begin_redraw(now);
+        match change {
+            Change::Repaint => self.begin_redraw(now),
+            Change::Remake => self.begin_remake(now),
+            Change::Next | Change::Nothing => Rect::default(),
         }
-        Rect::default()
+    }
+
+    /// Makes the mountain on screen again from its seed, with the settings
+    /// it was made with but the new values of the keys whose change remakes
+    /// (Low Detail: the same mountain, coarser or finer), then draws it. A
+    /// mountain read from a file is only drawn again.
+    fn begin_remake(&mut self, now: Instant) -> Rect {
+        let Some(Mountain {
+            seed: Some(seed),
+            generated: true,
+            ..
+        }) = self.current
+        else {
+            return self.begin_redraw(now);
+        };
+        for key in keys::KEYS.iter().filter(|k| k.change == Change::Remake) {
+            let value = keys::get(&self.settings, key);
+            // The value came from a valid Settings: it applies.
+            let _ = keys::apply(&mut self.made_with, key, &value);
+        }
+        let made = self.generator_settings_for(&self.made_with);
+        self.painter = None;
+        match Redraw::remake(seed, made, &self.settings, self.size) {
+            Ok(redraw) => {
+                self.redraw = Some(redraw);
+                Rect::default()
+            }
+            Err(drawn) => self.show_redrawn(*drawn, now),
+        }
     }
 
     /// The size this show draws for (the window's); the frame on screen
@@ -325,6 +360,9 @@ impl Show {
 
     /// Puts a finished redraw on screen and starts the hold.
     fn show_redrawn(&mut self, drawn: Drawn, now: Instant) -> Rect {
+        if let Some(mountain) = self.current.as_mut() {
+            mountain.field = drawn.field;
+        }
         self.frame = drawn.frame;
         self.overlay.forget();
         self.slideshow.restart(drawn.painter.strips_total(), now);
@@ -386,7 +424,12 @@ impl Show {
 
     /// The settings with `detail = "auto"` fitted to this window's size.
     fn generator_settings(&self) -> Settings {
-        detail::for_frame(&self.settings, self.size.0, self.size.1)
+        self.generator_settings_for(&self.settings)
+    }
+
+    /// `settings` with `detail = "auto"` fitted to this window's size.
+    fn generator_settings_for(&self, settings: &Settings) -> Settings {
+        detail::for_frame(settings, self.size.0, self.size.1)
     }
 }
 
@@ -456,7 +499,7 @@ mod tests {
             cragginess: 128,
             ..first
         };
-        show.change_settings(craggier, false, t0);
+        show.change_settings(craggier, Change::Next, t0);
         assert!(show.title().contains("cragginess 96"), "{}", show.title());
         show.tick(t0 + Duration::from_millis(1000));
         show.tick(t0 + Duration::from_millis(3000));
@@ -563,6 +606,7 @@ mod tests {
         let opened = Mountain {
             field: Arc::new(field),
             seed: None,
+            generated: false,
         };
         let mut show = Show::new(small_settings(), Some(opened), pacing(), (32, 32), t0);
         show.advance(t0);
@@ -577,6 +621,7 @@ mod tests {
         let opened = Mountain {
             field: Arc::new(Heightfield::flat(4, 100.0)),
             seed: None,
+            generated: false,
         };
         let mut show = Show::new(small_settings(), Some(opened), pacing(), (32, 32), t0);
         show.new_mountain(t0);
@@ -593,6 +638,7 @@ mod tests {
         let opened = Mountain {
             field: Arc::new(field),
             seed: Some(99),
+            generated: false,
         };
         assert!(!show.open(opened, t0).is_empty());
         assert_eq!(show.current().unwrap().seed, Some(99));
@@ -612,10 +658,40 @@ mod tests {
         let mut show = Show::new(small_settings(), None, pacing(), (32, 32), t0);
         let mut s = small_settings();
         s.detail = Detail::Level(6);
-        assert!(show.change_settings(s, false, t0).is_empty());
+        assert!(show.change_settings(s, Change::Next, t0).is_empty());
         assert_eq!(show.current().unwrap().field.exponent(), 5);
         show.advance(t0);
         assert_eq!(show.current().unwrap().field.exponent(), 6);
+    }
+
+    /// Low Detail remakes the mountain on screen (Mountain Terrain: OK
+    /// "redraws the mountains with the options that apply to the current
+    /// set (Color, Relative Depth, Low Detail)"): the same seed, a grid of
+    /// half the side, made and drawn beside the event loop; a terrain key
+    /// changed before it still waits for the next mountain.
+    #[test]
+    fn low_detail_remakes_the_mountain_on_screen() {
+        let t0 = Instant::now();
+        let mut show = Show::new(small_settings(), None, pacing(), (32, 32), t0);
+        let before = show.current().unwrap().field.clone();
+        let mut s = small_settings();
+        s.cragginess = 128;
+        show.change_settings(s.clone(), Change::Next, t0);
+        s.low_detail = true;
+        show.change_settings(s.clone(), Change::Remake, t0);
+        show.settle(t0);
+        let now = show.current().unwrap();
+        assert_eq!((now.seed, now.field.exponent()), (Some(7), 4));
+        assert_ne!(now.field.exponent(), before.exponent());
+        let title = show.title();
+        assert!(title.contains("low detail"), "{title}");
+        assert!(!title.contains("cragginess 128"), "{title}");
+        let mut expected = Frame::new(32, 32).unwrap();
+        let mut made = small_settings();
+        made.low_detail = true;
+        crate::render::render_full(&now.field, &s, &mut expected);
+        assert_eq!(now.field.as_ref(), &crate::terrain::generate(&made, 7));
+        assert_eq!(show.frame(), Some(&expected));
     }
 
     #[test]

@@ -55,6 +55,7 @@ fn random_heightmap(dir: &Path) -> Option<Mountain> {
         Ok(data) => Some(Mountain {
             field: Arc::new(data.field),
             seed: data.seed,
+            generated: false,
         }),
         Err(e) => {
             warn_once(format!("{e}; generating instead"));

@@ -112,6 +112,23 @@ fn quoted_list(names: &[&str]) -> String {
     quoted.join(", ")
 }
 
+/// What a changed key does to the mountain on screen. Mountain Terrain's
+/// settings dialog: "Choosing OK causes the program to redraw the mountains
+/// with the options that apply to the current set (Color, Relative Depth,
+/// Low Detail). Other changes will be used for the next data set."
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Change {
+    /// The same heights drawn again (colours, light, the camera).
+    Repaint,
+    /// The same mountain made again from its seed at the new value, then
+    /// drawn (Low Detail, and the detail it halves).
+    Remake,
+    /// Shapes the next mountain only.
+    Next,
+    /// Nothing on screen changes (the slide show's pacing, monitors, folders).
+    Nothing,
+}
+
 /// One preference key.
 #[derive(Debug, Clone, Copy)]
 pub struct Key {
@@ -119,6 +136,8 @@ pub struct Key {
     pub name: &'static str,
     /// What values it accepts.
     pub kind: Kind,
+    /// What a change of it does to the mountain on screen.
+    pub change: Change,
     /// One line for `--help` and the settings screen.
     pub doc: &'static str,
 }
@@ -134,8 +153,13 @@ const WATER_LINES: &[&str] = &["coast", "generator"];
 const SUNS: &[&str] = &["varied", "morning", "midday", "evening", "classic"];
 const MONITORS: &[&str] = &["all", "primary"];
 
-const fn key(name: &'static str, kind: Kind, doc: &'static str) -> Key {
-    Key { name, kind, doc }
+const fn key(name: &'static str, kind: Kind, change: Change, doc: &'static str) -> Key {
+    Key {
+        name,
+        kind,
+        change,
+        doc,
+    }
 }
 
 /// Every key, in the order the settings file and `--help` list them.
@@ -143,16 +167,19 @@ pub const KEYS: &[Key] = &[
     key(
         "seed",
         Kind::Seed,
+        Change::Next,
         "seed of the next mountain; \"random\" picks a new one each time",
     ),
     key(
         "generator",
         Kind::Choice(GENERATORS),
+        Change::Next,
         "how heights are made",
     ),
     key(
         "cragginess",
         Kind::Int { min: 1, max: 128 },
+        Change::Next,
         "square generators: how sharply heights crease",
     ),
     key(
@@ -161,11 +188,13 @@ pub const KEYS: &[Key] = &[
             min: 1.0,
             max: 1000.0,
         },
+        Change::Next,
         "square generators: range of the corner heights",
     ),
     key(
         "roughness",
         Kind::Float { min: 1.0, max: 5.0 },
+        Change::Next,
         "triangle generator: smoothness base (higher = smoother sides)",
     ),
     key(
@@ -174,31 +203,37 @@ pub const KEYS: &[Key] = &[
             min: 0.25,
             max: 5.0,
         },
+        Change::Next,
         "triangle generator: power on heights (<1 concave, >1 convex)",
     ),
     key(
         "profile",
         Kind::Choice(PROFILES),
+        Change::Next,
         "triangle generator: overall shape",
     ),
     key(
         "height",
         Kind::Int { min: 1, max: 10 },
+        Change::Next,
         "height of the peaks; also raises the treeline and snow",
     ),
     key(
         "erosion",
         Kind::Float { min: 0.0, max: 1.0 },
+        Change::Next,
         "rain wearing gullies into the slopes and silt at their feet (0 = none)",
     ),
     key(
         "detail",
         Kind::IntOrAuto { min: 4, max: 12 },
+        Change::Remake,
         "grid of 2^detail+1 points a side; \"auto\" fits it to the screen",
     ),
     key(
         "low_detail",
         Kind::Bool,
+        Change::Remake,
         "a quarter of the points: larger faces, faster drawing",
     ),
     key(
@@ -207,34 +242,50 @@ pub const KEYS: &[Key] = &[
             min: -1.0,
             max: 1.0,
         },
+        Change::Next,
         "water line as a fraction of the relief above or below water_line",
     ),
     key(
         "water_line",
         Kind::Choice(WATER_LINES),
+        Change::Next,
         "sea_level 0: a coast on every mountain, or the generator's own zero",
     ),
-    key("color", Kind::Choice(COLORS), "colour mode or filter"),
+    key(
+        "color",
+        Kind::Choice(COLORS),
+        Change::Repaint,
+        "colour mode or filter",
+    ),
     key(
         "relative_depth",
         Kind::Bool,
+        Change::Repaint,
         "darker water over deeper ground",
     ),
-    key("shadows", Kind::Bool, "cast shadows from the light"),
+    key(
+        "shadows",
+        Kind::Bool,
+        Change::Repaint,
+        "cast shadows from the light",
+    ),
     key(
         "sun",
         Kind::Choice(SUNS),
+        Change::Repaint,
         "time of day of the light; \"varied\" draws one per mountain",
     ),
-    key("view", Kind::Choice(VIEWS), "projection"),
+    key("view", Kind::Choice(VIEWS), Change::Repaint, "projection"),
     key(
         "rotation",
         Kind::QuarterTurn,
+        Change::Repaint,
         "side the mountain is seen from, in degrees",
     ),
     key(
         "auto_redraw",
         Kind::Bool,
+        Change::Nothing,
         "start a new mountain after the pause (slide show)",
     ),
     key(
@@ -243,6 +294,7 @@ pub const KEYS: &[Key] = &[
             min: 0.0,
             max: 600.0,
         },
+        Change::Nothing,
         "seconds to draw one mountain strip by strip",
     ),
     key(
@@ -251,16 +303,19 @@ pub const KEYS: &[Key] = &[
             min: 0.0,
             max: 3600.0,
         },
+        Change::Nothing,
         "seconds to hold a finished mountain",
     ),
     key(
         "monitors",
         Kind::Choice(MONITORS),
+        Change::Nothing,
         "full screen: a mountain on every monitor, or the primary only",
     ),
     key(
         "heightmaps_dir",
         Kind::Path,
+        Change::Nothing,
         "folder of PNG heightmaps mixed into the slide show",
     ),
 ];

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use super::layout::{Button, Hit, Layout, Part};
 use super::values::{self, Widget};
-use crate::settings::keys::{self, KEYS, Key, Value};
+use crate::settings::keys::{self, Change, KEYS, Key, Value};
 use crate::settings::{Settings, load};
 
 /// One input, already translated from the window system's events.
@@ -76,19 +76,6 @@ pub enum Effect {
     /// Close without writing anything.
     Close,
 }
-
-/// Keys whose change is shown on the current preview mountain at once; the
-/// rest shape the next mountain. Seed 003 names Color, Relative Depth and
-/// Low Detail; shadows, sun, view and rotation only change how the same
-/// heights are drawn, so they follow at once too.
-const REPAINT_KEYS: &[&str] = &[
-    "color",
-    "relative_depth",
-    "shadows",
-    "sun",
-    "view",
-    "rotation",
-];
 
 /// The settings screen's state.
 #[derive(Debug, Clone)]
@@ -436,19 +423,20 @@ impl Model {
         self.effect_of_change(key)
     }
 
+    /// What the preview does after `key` changed, as the key table says.
     fn effect_of_change(&mut self, key: &Key) -> Effect {
-        if key.name == "low_detail" {
-            self.message = String::new();
-            Effect::Regenerate
-        } else if REPAINT_KEYS.contains(&key.name) {
-            self.message = String::new();
-            Effect::Repaint
-        } else {
-            self.message = format!(
-                "{} applies to the next mountain: press N or New to see it.",
-                values::label(key)
-            );
-            Effect::Redraw
+        self.message = String::new();
+        match key.change {
+            Change::Repaint => Effect::Repaint,
+            Change::Remake => Effect::Regenerate,
+            Change::Next => {
+                self.message = format!(
+                    "{} applies to the next mountain: press N or New to see it.",
+                    values::label(key)
+                );
+                Effect::Redraw
+            }
+            Change::Nothing => Effect::Redraw,
         }
     }
 
