@@ -135,4 +135,9 @@ fn outline_uses_green_for_land_and_blue_for_water_only() {
     let colours: HashSet<u32> = frame.pixels().iter().copied().collect();
     assert_eq!(colours.len(), 3, "outline colours: {colours:x?}");
     assert!(colours.contains(&0), "outline is drawn on black");
+    // The lines are the palette's outline colours (the renderer kept its
+    // own copies, which disagreed with the palette's, tested elsewhere).
+    let palette = mountains::render::palette::Palette::new(&s, &field);
+    assert!(colours.contains(&palette.outline_land()), "{colours:x?}");
+    assert!(colours.contains(&palette.outline_water()), "{colours:x?}");
 }

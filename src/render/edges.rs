@@ -16,13 +16,6 @@ use super::raster::{
 };
 use super::scene::{Scene, Vert};
 
-/// Sonar's outline colour.
-pub(crate) const SONAR_LINE: u32 = 0x00ff_ffff;
-/// Outline mode: land lines (FL3's green).
-pub(crate) const OUTLINE_LAND: u32 = 0x0000_d000;
-/// Outline mode: water lines (FL3's blue).
-pub(crate) const OUTLINE_WATER: u32 = 0x0030_60ff;
-
 /// Which of a cell's edges it draws.
 struct CellEdges {
     top: bool,
@@ -120,11 +113,12 @@ impl Scene<'_> {
         own: &CellEdges,
     ) {
         let last = self.cells() - 1;
+        let white = self.palette.outline_land();
         let mut near = |a: Fixed2, b: Fixed2| {
             let clip = *canvas.clip();
             let one = SUBPIXEL;
             canvas.touch_box([b[0] - one, b[1] - one], [b[0] + one, b[1] + one]);
-            draw_line_end(a, b, &clip, |px, py| canvas.plot(px, py, SONAR_LINE));
+            draw_line_end(a, b, &clip, |px, py| canvas.plot(px, py, white));
         };
         if own.left && x > 0 {
             near(top[x - 1].p, top[x].p);
@@ -162,17 +156,18 @@ impl Scene<'_> {
     /// over water, changing colour where it crosses the water line.
     fn edge(&self, canvas: &mut Canvas, a: (&Vert, Vec2), b: (&Vert, Vec2), sonar: bool) {
         let (ha, hb) = (a.0.h, b.0.h);
+        let (land, water) = (self.palette.outline_land(), self.palette.outline_water());
         if sonar {
-            self.line(canvas, a.0.p, b.0.p, SONAR_LINE);
+            self.line(canvas, a.0.p, b.0.p, land);
         } else if (ha < 0.0) != (hb < 0.0) && ha.max(hb) > 0.0 {
             let f = ha / (ha - hb);
             let m = self.project_sea(a.1 + (b.1 - a.1) * f);
-            let colour = |h: f32| if h > 0.0 { OUTLINE_LAND } else { OUTLINE_WATER };
+            let colour = |h: f32| if h > 0.0 { land } else { water };
             self.line(canvas, a.0.p, m, colour(ha));
             self.line(canvas, m, b.0.p, colour(hb));
         } else {
             let wet = ha <= 0.0 && hb <= 0.0;
-            let colour = if wet { OUTLINE_WATER } else { OUTLINE_LAND };
+            let colour = if wet { water } else { land };
             self.line(canvas, a.0.p, b.0.p, colour);
         }
     }
@@ -190,12 +185,13 @@ impl Scene<'_> {
     /// along the right edge and (in the last strip) the front, and the foot line.
     fn outline_skirts(&self, canvas: &mut Canvas, s: usize, top: &[Vert], bottom: &[Vert]) {
         let cells = self.cells();
+        let land = self.palette.outline_land();
         let mut drop = |v: &Vert, g: Vec2, next: Option<(&Vert, Vec2)>| {
             if v.h > 0.0 {
                 let foot = self.project_sea(g);
-                self.line(canvas, v.p, foot, OUTLINE_LAND);
+                self.line(canvas, v.p, foot, land);
                 if let Some((_, gw)) = next.filter(|(w, _)| w.h > 0.0) {
-                    self.line(canvas, foot, self.project_sea(gw), OUTLINE_LAND);
+                    self.line(canvas, foot, self.project_sea(gw), land);
                 }
             }
         };

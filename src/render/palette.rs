@@ -200,20 +200,22 @@ impl Palette {
         }
     }
 
-    /// Edge colour of land faces in the wire modes: white for Sonar, green
-    /// for Outline (and white in every other mode, should one want edges).
+    /// Edge colour of land faces in the wire modes: white for Sonar, FL3's
+    /// green for Outline (and white in every other mode, should one want
+    /// edges). The renderer's edges read it here (an unused copy here once
+    /// disagreed with theirs).
     pub fn outline_land(&self) -> u32 {
         match self.mode {
-            ColorMode::Outline => 0x0000_d040,
+            ColorMode::Outline => 0x0000_d000,
             _ => 0x00ff_ffff,
         }
     }
 
-    /// Edge colour of water faces in the wire modes: white for Sonar, blue
-    /// for Outline.
+    /// Edge colour of water faces in the wire modes: white for Sonar, FL3's
+    /// blue for Outline.
     pub fn outline_water(&self) -> u32 {
         match self.mode {
-            ColorMode::Outline => 0x0030_70ff,
+            ColorMode::Outline => 0x0030_60ff,
             _ => 0x00ff_ffff,
         }
     }
