@@ -8,9 +8,10 @@
 //! nearer ones darker (aerial perspective), and each layer fades into mist
 //! below its crest, so the valleys between ranges read as haze.
 
+use super::colour::{Rgb, mix, to_u32};
 use super::frame::{Frame, Rect};
 use crate::settings::Settings;
-use crate::terrain::Heightfield;
+use crate::terrain::{Heightfield, noise};
 
 /// Number of ranges, from the horizon to the foreground.
 const LAYERS: usize = 8;
@@ -20,9 +21,6 @@ const MAX_PROFILE: usize = 4096;
 /// Depth below a crest, in fractions of the frame height, over which the
 /// layer fades from its crest colour into the mist.
 const MIST_DEPTH: f32 = 0.3;
-
-/// An sRGB colour, channels 0..=1.
-type Rgb = [f32; 3];
 
 /// Sky at the top of the frame and at the horizon (a dusk gradient).
 const SKY_TOP: Rgb = [0.10, 0.13, 0.27];
@@ -60,7 +58,8 @@ impl Ridges {
     pub fn new(field: &Heightfield, settings: &Settings, width: u32, height: u32) -> Self {
         let seed = field.fingerprint();
         let points = profile_points(width);
-        let tallness = 0.6 + 0.08 * settings.height.clamp(1, 10) as f32;
+        let tallness =
+            0.6 + 0.08 * crate::settings::keys::clamp_int("height", settings.height) as f32;
         let layers = (0..LAYERS)
             .map(|i| make_layer(field, seed, i, points, tallness))
             .collect();
@@ -94,12 +93,9 @@ impl Ridges {
     }
 }
 
-/// SplitMix64's finaliser: a well-mixed 64-bit hash step.
-fn mix64(mut z: u64) -> u64 {
-    z = z.wrapping_add(0x9e37_79b9_7f4a_7c15);
-    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-    z ^ (z >> 31)
+/// One SplitMix64 step: a well-mixed 64-bit hash (the terrain's noise).
+fn mix64(z: u64) -> u64 {
+    noise::mix(z.wrapping_add(noise::GOLDEN))
 }
 
 /// A uniform number in -1..1 for point `k` of layer `layer`.
@@ -281,15 +277,4 @@ fn blend(under: u32, over: u32, a: f32) -> u32 {
         ((v + 0.5) as u32).min(255) << s
     };
     one(16) | one(8) | one(0)
-}
-
-/// Linear blend from `a` (t = 0) to `b` (t = 1).
-fn mix(a: Rgb, b: Rgb, t: f32) -> Rgb {
-    [0, 1, 2].map(|i| a[i] + (b[i] - a[i]) * t)
-}
-
-/// A 0..=1 colour as `0x00RRGGBB`.
-fn to_u32(c: Rgb) -> u32 {
-    let v = c.map(|v| (v * 255.0 + 0.5).clamp(0.0, 255.0) as u32);
-    v[0] << 16 | v[1] << 8 | v[2]
 }

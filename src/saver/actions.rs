@@ -43,10 +43,7 @@ pub fn smoother(c: u32) -> u32 {
 
 /// Clamps to the range the key table allows for cragginess.
 fn clamp_cragginess(c: u64) -> u32 {
-    match key("cragginess").kind {
-        Kind::Int { min, max } => (c as i64).clamp(min, max) as u32,
-        _ => c as u32,
-    }
+    keys::clamp_int("cragginess", u32::try_from(c).unwrap_or(u32::MAX))
 }
 
 /// A key the table is known to hold (tests cover every name used here).

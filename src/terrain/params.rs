@@ -3,6 +3,7 @@
 
 use super::heightfield::{MAX_EXPONENT, MIN_EXPONENT};
 use super::{SQUARE_EXTENT, TRIANGLE_EXTENT};
+use crate::settings::keys::{clamp_float, clamp_int};
 use crate::settings::{Generator, Profile, Settings, WaterLine};
 
 /// Validated generator parameters.
@@ -22,21 +23,21 @@ pub(crate) struct Params {
 }
 
 impl Params {
-    /// Clamps each setting into the range `settings.rs` documents; a NaN
-    /// falls back to the default.
+    /// Clamps each setting into its range in the key table; a NaN falls
+    /// back to the default.
     pub(crate) fn from_settings(s: &Settings) -> Self {
         let d = Settings::default();
         Params {
             generator: s.generator,
             exponent: s.grid_exponent().clamp(MIN_EXPONENT, MAX_EXPONENT),
-            cragginess: s.cragginess.clamp(1, 128) as f32,
-            elevation: clamp(s.elevation, 0.0, 1000.0, d.elevation),
-            roughness: clamp(s.roughness, 1.0, 5.0, d.roughness),
-            contour: clamp(s.contour, 0.25, 5.0, d.contour),
+            cragginess: clamp_int("cragginess", s.cragginess) as f32,
+            elevation: clamp_float("elevation", s.elevation, d.elevation),
+            roughness: clamp_float("roughness", s.roughness, d.roughness),
+            contour: clamp_float("contour", s.contour, d.contour),
             profile: s.profile,
-            height: s.height.clamp(1, 10) as f32,
-            erosion: clamp(s.erosion, 0.0, 1.0, d.erosion),
-            sea_level: clamp(s.sea_level, -1.0, 1.0, d.sea_level),
+            height: clamp_int("height", s.height) as f32,
+            erosion: clamp_float("erosion", s.erosion, d.erosion),
+            sea_level: clamp_float("sea_level", s.sea_level, d.sea_level),
             water_line: s.water_line,
         }
     }
@@ -50,11 +51,66 @@ impl Params {
     }
 }
 
-/// `value` clamped to `lo..=hi`, or `fallback` if it is NaN.
-fn clamp(value: f32, lo: f32, hi: f32, fallback: f32) -> f32 {
-    if value.is_nan() {
-        fallback
-    } else {
-        value.clamp(lo, hi)
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::settings::keys::{Kind, find};
+
+    fn range(name: &str) -> (f32, f32) {
+        match find(name).unwrap().kind {
+            Kind::Float { min, max } => (min as f32, max as f32),
+            Kind::Int { min, max } => (min as f32, max as f32),
+            other => panic!("{name}: {other:?}"),
+        }
+    }
+
+    /// Out-of-range values land on the key table's bounds (elevation was
+    /// clamped at 0 here while the table's least is 1).
+    #[test]
+    fn ranges_are_the_key_tables() {
+        let low = Settings {
+            elevation: -5.0,
+            roughness: -5.0,
+            contour: -5.0,
+            erosion: -5.0,
+            sea_level: -5.0,
+            cragginess: 0,
+            height: 0,
+            ..Settings::default()
+        };
+        let p = Params::from_settings(&low);
+        let got = [
+            p.elevation,
+            p.roughness,
+            p.contour,
+            p.erosion,
+            p.sea_level,
+            p.cragginess,
+            p.height,
+        ];
+        let names = [
+            "elevation",
+            "roughness",
+            "contour",
+            "erosion",
+            "sea_level",
+            "cragginess",
+            "height",
+        ];
+        for (name, got) in names.iter().zip(got) {
+            assert_eq!(got, range(name).0, "{name}");
+        }
+        let high = Settings {
+            elevation: 1e9,
+            roughness: 1e9,
+            cragginess: u32::MAX,
+            height: u32::MAX,
+            ..Settings::default()
+        };
+        let p = Params::from_settings(&high);
+        assert_eq!(p.elevation, range("elevation").1);
+        assert_eq!(p.roughness, range("roughness").1);
+        assert_eq!(p.cragginess, range("cragginess").1);
+        assert_eq!(p.height, range("height").1);
     }
 }
