@@ -137,7 +137,7 @@ pub enum Monitors {
 pub const AUTO_DETAIL_FALLBACK: u32 = 10;
 
 /// Every preference a user can set. Ranges are checked in `settings::keys`.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Settings {
     /// Seed of the next mountain; `None` picks a fresh random one each time.
     pub seed: Option<u64>,

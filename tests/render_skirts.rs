@@ -82,7 +82,7 @@ fn check_front_face(frame: &Frame, v: &View, palette: &Palette, last: f32, hazy:
         v.project(last, last, 0.0),
         v.project(0.0, last, 0.0),
     ];
-    let colour = palette.skirt(H / 2.0, Vec3::NEG_Y);
+    let colour = palette.skirt(Vec3::NEG_Y);
     let haze = if hazy { palette.sky().1 } else { colour };
     let n = check_face(frame, front, colour, haze, "front skirt");
     assert!(n > 200, "front skirt too small: {n} pixels");
@@ -103,8 +103,8 @@ fn a_plateau_shows_its_front_and_right_cut_faces() {
     let n = check_face(
         &frame,
         right,
-        palette.skirt(H / 2.0, Vec3::X),
-        palette.skirt(H / 2.0, Vec3::X),
+        palette.skirt(Vec3::X),
+        palette.skirt(Vec3::X),
         "right skirt",
     );
     assert!(n > 100, "right skirt too small: {n} pixels");

@@ -183,7 +183,7 @@ impl Palette {
     /// Earth, shaded like land but never in cast shadow. One colour for
     /// all heights: painters give one height per skirt column, so any
     /// height banding would show as vertical stripes.
-    pub fn skirt(&self, _mean_height: f32, normal: Vec3) -> u32 {
+    pub fn skirt(&self, normal: Vec3) -> u32 {
         pack(self.skirt, self.brightness(normal, 1.0), self.offset)
     }
 

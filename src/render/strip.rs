@@ -225,7 +225,7 @@ impl Scene<'_> {
             (false, true) => (self.shore(a, b), b),
         };
         let (fa, fb) = (foot(a), foot(b));
-        let colour = self.hazed(self.palette.skirt((a.h + b.h) / 4.0, normal), &[a, b, fa]);
+        let colour = self.hazed(self.palette.skirt(normal), &[a, b, fa]);
         self.paint(canvas, [a.p, b.p, fb.p], || colour);
         self.paint(canvas, [a.p, fb.p, fa.p], || colour);
     }

@@ -22,18 +22,6 @@ pub enum Value {
 }
 
 impl Value {
-    /// How a person would name this kind of value in a message.
-    pub fn kind_name(&self) -> &'static str {
-        match self {
-            Value::Int(_) => "an integer",
-            Value::Float(_) => "a number",
-            Value::Bool(_) => "a boolean",
-            Value::Str(_) => "a string",
-        }
-    }
-}
-
-impl Value {
     /// The value for a message: a long string is cut (see `quote::quoted`).
     pub fn shown(&self) -> String {
         match self {
