@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use super::input::Action;
-use super::show::Mountain;
+use super::mountain::Mountain;
 use crate::render::Frame;
 use crate::settings::keys::{self, Change, Kind, Value};
 use crate::settings::{ColorMode, Settings};
@@ -141,11 +141,7 @@ pub fn open_next_data_set(
     let path =
         crate::saved::next_after(&files, current).ok_or("no saved data sets yet (S saves one)")?;
     let data = crate::terrain::heightmap::load(path).map_err(|e| e.to_string())?;
-    let mountain = Mountain {
-        field: std::sync::Arc::new(data.field),
-        seed: data.seed,
-        generated: false,
-    };
+    let mountain = Mountain::loaded(data);
     Ok((path.clone(), mountain))
 }
 

@@ -13,12 +13,14 @@ use winit::monitor::MonitorHandle;
 use winit::window::{Window, WindowAttributes, WindowId, WindowLevel};
 
 use super::actions;
+use super::error::SaverError;
 use super::heads::{self, Change, Head};
 use super::input::{Action, WakeDetector, action_for_key};
+use super::mountain::Mountain;
 use super::present::Presenter;
-use super::show::{Mountain, Show};
+use super::show::Show;
 use super::slideshow::Pacing;
-use super::{SaverError, Trace};
+use super::trace::Trace;
 use crate::render::Rect;
 use crate::settings::{Monitors, Settings};
 
@@ -432,7 +434,7 @@ impl App {
                 self.settings.pause_seconds,
                 self.mode != AppMode::Window || self.settings.auto_redraw,
             );
-            super::new_show(
+            super::options::new_show(
                 self.settings.clone(),
                 self.opened.clone(),
                 pacing,

@@ -10,7 +10,7 @@ use windows_sys::Win32::UI::WindowsAndMessaging::{GetClientRect, IsWindow};
 use winit::dpi::{PhysicalPosition, PhysicalSize};
 use winit::window::WindowAttributes;
 
-use super::SaverError;
+use super::error::SaverError;
 
 /// How often the child checks that its parent still exists and its size.
 pub const PARENT_POLL: Duration = Duration::from_millis(250);

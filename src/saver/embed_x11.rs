@@ -16,9 +16,10 @@ use x11rb::protocol::Event;
 use x11rb::protocol::xproto::{ChangeWindowAttributesAux, ConnectionExt as _, EventMask};
 use x11rb::rust_connection::RustConnection;
 
-use super::SaverError;
+use super::error::SaverError;
+use super::mountain::Mountain;
 use super::present::Presenter;
-use super::show::{Mountain, Show};
+use super::show::Show;
 use super::slideshow::Pacing;
 use crate::settings::Settings;
 
@@ -104,13 +105,13 @@ pub fn run(
     let presenter =
         Presenter::new(target).map_err(|e| SaverError::Other(format!("window 0x{xid:x}: {e}")))?;
     let pacing = Pacing::from_seconds(settings.draw_seconds, settings.pause_seconds, true);
-    let show = super::new_show(settings, opened, pacing, size, Instant::now());
+    let show = super::options::new_show(settings, opened, pacing, size, Instant::now());
     let mut embedded = Embedded {
         conn,
         xid,
         presenter,
         show,
-        trace: super::Trace::from_env(),
+        trace: super::trace::Trace::from_env(),
     };
     embedded.present_all()?;
     embedded.run(rx)
@@ -167,7 +168,7 @@ struct Embedded {
     xid: u32,
     presenter: Presenter<ForeignWindow>,
     show: Show,
-    trace: super::Trace,
+    trace: super::trace::Trace,
 }
 
 impl Embedded {

@@ -2,7 +2,7 @@
 //! panics inside its loader when one is missing, so look first and name it.
 
 #[cfg(unix)]
-use super::SaverError;
+use super::error::SaverError;
 
 /// Each library winit and softbuffer open under X11, and the Debian/Ubuntu package holding it.
 pub const X11_LIBRARIES: &[(&str, &str)] = &[
@@ -31,11 +31,6 @@ pub fn can_dlopen(name: &str) -> bool {
     unsafe { libloading::Library::new(name).is_ok() }
 }
 
-/// The message for a missing library, naming the package that provides it.
-pub fn missing_message(library: &str, package: &str) -> String {
-    format!("missing X library {library}: apt-get install {package}")
-}
-
 /// `$DISPLAY` and the libraries winit loads, checked before winit panics on them.
 #[cfg(unix)]
 pub fn check_x11() -> Result<(), SaverError> {
@@ -60,8 +55,12 @@ mod tests {
         let missing = first_missing(X11_LIBRARIES, |name| !name.starts_with("libxkbcommon"));
         assert_eq!(missing, Some(("libxkbcommon.so.0", "libxkbcommon0")));
         let (lib, pkg) = first_missing(X11_LIBRARIES, |n| n != "libxkbcommon-x11.so.0").unwrap();
+        let error = SaverError::MissingLibrary {
+            library: lib.into(),
+            package: pkg.into(),
+        };
         assert_eq!(
-            missing_message(lib, pkg),
+            error.to_string(),
             "missing X library libxkbcommon-x11.so.0: apt-get install libxkbcommon-x11-0"
         );
         assert_eq!(first_missing(X11_LIBRARIES, |_| true), None);

@@ -1,10 +1,10 @@
 //! One window's slide show: its frame, the mountain being drawn, the next one
 //! being generated in the background. Knows nothing about windows.
 
-use std::sync::Arc;
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
+use super::mountain::Mountain;
 use super::overlay::Overlay;
 use super::redraw::{Drawn, Redraw};
 use super::slideshow::{Due, Pacing, Slideshow};
@@ -12,31 +12,6 @@ use super::source;
 use crate::render::{Frame, Painter, Rect, detail};
 use crate::settings::Settings;
 use crate::settings::keys::{self, Change};
-use crate::terrain::{self, Heightfield};
-
-/// A mountain ready to draw and the seed that made it (none for a foreign heightmap).
-#[derive(Debug, Clone)]
-pub struct Mountain {
-    /// The heights.
-    pub field: Arc<Heightfield>,
-    /// The seed that generated them, when known.
-    pub seed: Option<u64>,
-    /// Made here from `seed` (not read from a file), so it can be made
-    /// again, e.g. at another detail.
-    pub generated: bool,
-}
-
-impl Mountain {
-    /// Generates a mountain from `settings`, with its seed or a fresh random one.
-    pub fn generate(settings: &Settings) -> Self {
-        let seed = settings.next_seed();
-        Mountain {
-            field: Arc::new(terrain::generate(settings, seed)),
-            seed: Some(seed),
-            generated: true,
-        }
-    }
-}
 
 /// Where the next mountain comes from.
 enum Next {
@@ -437,6 +412,8 @@ impl Show {
 mod tests {
     use super::*;
     use crate::settings::Detail;
+    use crate::terrain::Heightfield;
+    use std::sync::Arc;
     use std::time::Duration;
 
     fn small_settings() -> Settings {

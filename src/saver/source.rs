@@ -2,9 +2,8 @@
 //! then a heightmap from the user's `heightmaps_dir`.
 
 use std::path::Path;
-use std::sync::Arc;
 
-use super::show::Mountain;
+use super::mountain::Mountain;
 use crate::settings::Settings;
 use crate::terrain::heightmap;
 
@@ -52,11 +51,7 @@ fn random_heightmap(dir: &Path) -> Option<Mountain> {
     }
     let pick = &files[rand::random_range(0..files.len())];
     match heightmap::load(pick) {
-        Ok(data) => Some(Mountain {
-            field: Arc::new(data.field),
-            seed: data.seed,
-            generated: false,
-        }),
+        Ok(data) => Some(Mountain::loaded(data)),
         Err(e) => {
             warn_once(format!("{e}; generating instead"));
             None
