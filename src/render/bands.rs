@@ -11,8 +11,8 @@ use std::sync::Mutex;
 
 use super::canvas::Canvas;
 use super::frame::Frame;
-use super::painter::{Rows, draw_strips};
 use super::scene::Scene;
+use super::walk::{Rows, draw_strips};
 
 /// Most threads used; more bands would mostly repeat per-strip work.
 const MAX_THREADS: usize = 8;

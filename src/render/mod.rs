@@ -22,6 +22,7 @@ mod skylight;
 mod strip;
 pub mod view;
 mod vista;
+mod walk;
 
 pub use frame::{Frame, Rect};
 pub use painter::{Painter, render_full};
