@@ -1,6 +1,7 @@
 //! Everything a person sees, drawn into a `Frame`. Pure: no windows.
 
 mod bands;
+mod camera;
 mod canvas;
 pub mod colour;
 pub mod detail;

@@ -11,7 +11,7 @@
 use super::colour::{Rgb, mix, to_u32};
 use super::frame::{Frame, Rect};
 use crate::settings::Settings;
-use crate::terrain::{Heightfield, noise};
+use crate::terrain::{Heightfield, splitmix};
 
 /// Number of ranges, from the horizon to the foreground.
 const LAYERS: usize = 8;
@@ -93,9 +93,9 @@ impl Ridges {
     }
 }
 
-/// One SplitMix64 step: a well-mixed 64-bit hash (the terrain's noise).
+/// One SplitMix64 step: a well-mixed 64-bit hash.
 fn mix64(z: u64) -> u64 {
-    noise::mix(z.wrapping_add(noise::GOLDEN))
+    splitmix::mix(z.wrapping_add(splitmix::GOLDEN))
 }
 
 /// A uniform number in -1..1 for point `k` of layer `layer`.

@@ -7,6 +7,7 @@
 
 use glam::{Vec2, Vec3};
 
+use super::camera::Camera;
 use super::vista;
 use crate::settings::ViewKind;
 
@@ -33,68 +34,6 @@ pub struct View {
     size: usize,
     /// Sine and cosine of the tilt.
     tilt: (f32, f32),
-}
-
-/// A single-point perspective camera, in world units (x right, y towards
-/// the front, z up).
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct Camera {
-    eye: Vec3,
-    up: Vec3,
-    forward: Vec3,
-    near: f32,
-    /// Depth of the middle of the back edge at sea level.
-    back_depth: f32,
-}
-
-impl Camera {
-    /// At `eye`, level sideways, looking towards `-y` and down by `pitch`
-    /// radians, for a grid `extent` units wide.
-    pub(crate) fn looking_back(eye: Vec3, pitch: f32, extent: f32) -> Self {
-        let (sin, cos) = pitch.sin_cos();
-        let forward = Vec3::new(0.0, -cos, -sin);
-        let up = Vec3::new(0.0, -sin, cos);
-        let mut cam = Camera {
-            eye,
-            up,
-            forward,
-            near: 1e-3 * extent,
-            back_depth: 1.0,
-        };
-        cam.back_depth = cam.depth(Vec3::new(0.5 * extent, 0.0, 0.0)).max(cam.near);
-        cam
-    }
-
-    /// How far `p` lies in front of the camera.
-    #[inline]
-    fn depth(&self, p: Vec3) -> f32 {
-        (p - self.eye).dot(self.forward).max(self.near)
-    }
-
-    /// In front of the mountain's middle, above it, looking down at its centre.
-    fn new(extent: f32, zmax: f32) -> Self {
-        let eye = Vec3::new(0.5 * extent, 1.75 * extent, 0.4 * extent + 0.8 * zmax);
-        let target = Vec3::new(0.5 * extent, 0.45 * extent, 0.0);
-        let forward = (target - eye).normalize();
-        let up = (Vec3::Z - forward * forward.z).normalize();
-        let mut cam = Camera {
-            eye,
-            up,
-            forward,
-            near: 1e-3 * extent,
-            back_depth: 1.0,
-        };
-        cam.back_depth = cam.depth(Vec3::new(0.5 * extent, 0.0, 0.0)).max(cam.near);
-        cam
-    }
-
-    /// Unscaled screen position (x right, y down).
-    #[inline]
-    fn project(&self, p: Vec3) -> Vec2 {
-        let d = p - self.eye;
-        let depth = self.depth(p);
-        Vec2::new(d.x / depth, -d.dot(self.up) / depth)
-    }
 }
 
 impl View {
@@ -161,7 +100,7 @@ impl View {
         match &self.camera {
             Some(cam) => {
                 let p = Vec3::new(gx * self.cell, gy * self.cell, z);
-                cam.depth(p) / cam.back_depth
+                cam.relative_depth(p)
             }
             None => 0.0,
         }
@@ -244,7 +183,7 @@ impl View {
     /// is seen from the right and drawn left to right.
     pub fn camera_column(&self) -> Option<f32> {
         self.camera
-            .map(|c| c.eye.x / self.cell)
+            .map(|c| c.eye_x() / self.cell)
             .filter(|_| self.size > 0)
     }
 

@@ -17,7 +17,7 @@
 
 use glam::Vec3;
 
-use super::view::Camera;
+use super::camera::Camera;
 
 /// The camera's horizontal distance in front of the near edge, in grid
 /// widths: closer magnifies the foreground more. Tall frames (portrait)

@@ -7,7 +7,7 @@
 //! capital (five rows would make Ò the same drawing as ò). The rest are
 //! drawn here like the ASCII ones.
 
-use super::font::{GLYPH_H, Glyph, ascii, parse};
+use super::font_ascii::{GLYPH_H, Glyph, ascii, parse};
 
 /// An accent: two rows over a lower-case letter, one over a capital.
 #[derive(Clone, Copy)]

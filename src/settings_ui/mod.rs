@@ -10,6 +10,7 @@
 pub mod draw;
 pub mod editor;
 pub mod font;
+mod font_ascii;
 mod font_latin1;
 pub mod layout;
 pub mod model;

@@ -11,7 +11,7 @@
 //! the thread count.
 
 use super::heightfield::Heightfield;
-use super::noise::{GOLDEN, mix};
+use super::splitmix::{GOLDEN, mix};
 
 /// Cells a side of the grid the droplets run on.
 const COARSE_CELLS: usize = 128;

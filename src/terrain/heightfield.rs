@@ -93,7 +93,7 @@ impl Heightfield {
     /// same mountain always gives the same number, so choices drawn from it
     /// (a time of day, ridge shapes) follow the seed.
     pub fn fingerprint(&self) -> u64 {
-        let step = |z: u64| super::noise::mix(z.wrapping_add(super::noise::GOLDEN));
+        let step = |z: u64| super::splitmix::mix(z.wrapping_add(super::splitmix::GOLDEN));
         let stride = (self.heights.len() / 4096).max(1);
         let mut h = step(self.size as u64 ^ u64::from(self.extent.to_bits()) << 32);
         for v in self.heights.iter().step_by(stride) {

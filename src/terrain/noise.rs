@@ -7,17 +7,7 @@
 //! is therefore the same mountain with fewer points, not a different one.
 
 use super::heightfield::MAX_EXPONENT;
-
-/// SplitMix64's increment (2^64 / golden ratio).
-pub(crate) const GOLDEN: u64 = 0x9E37_79B9_7F4A_7C15;
-
-/// SplitMix64's output function: a bijective 64-bit mixer.
-#[inline]
-pub(crate) fn mix(mut z: u64) -> u64 {
-    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-    z ^ (z >> 31)
-}
+use super::splitmix::{GOLDEN, mix};
 
 /// Uniform random values in `[-1, 1)` keyed by seed and grid point.
 ///

@@ -1,0 +1,76 @@
+//! The perspective camera of the vista and perspective views.
+
+use glam::{Vec2, Vec3};
+
+/// A single-point perspective camera, in world units (x right, y towards
+/// the front, z up).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Camera {
+    eye: Vec3,
+    up: Vec3,
+    forward: Vec3,
+    near: f32,
+    /// Depth of the middle of the back edge at sea level.
+    back_depth: f32,
+}
+
+impl Camera {
+    /// At `eye`, level sideways, looking towards `-y` and down by `pitch`
+    /// radians, for a grid `extent` units wide.
+    pub(crate) fn looking_back(eye: Vec3, pitch: f32, extent: f32) -> Self {
+        let (sin, cos) = pitch.sin_cos();
+        let forward = Vec3::new(0.0, -cos, -sin);
+        let up = Vec3::new(0.0, -sin, cos);
+        let mut cam = Camera {
+            eye,
+            up,
+            forward,
+            near: 1e-3 * extent,
+            back_depth: 1.0,
+        };
+        cam.back_depth = cam.depth(Vec3::new(0.5 * extent, 0.0, 0.0)).max(cam.near);
+        cam
+    }
+
+    /// How far `p` lies in front of the camera.
+    #[inline]
+    pub(crate) fn depth(&self, p: Vec3) -> f32 {
+        (p - self.eye).dot(self.forward).max(self.near)
+    }
+
+    /// In front of the mountain's middle, above it, looking down at its centre.
+    pub(crate) fn new(extent: f32, zmax: f32) -> Self {
+        let eye = Vec3::new(0.5 * extent, 1.75 * extent, 0.4 * extent + 0.8 * zmax);
+        let target = Vec3::new(0.5 * extent, 0.45 * extent, 0.0);
+        let forward = (target - eye).normalize();
+        let up = (Vec3::Z - forward * forward.z).normalize();
+        let mut cam = Camera {
+            eye,
+            up,
+            forward,
+            near: 1e-3 * extent,
+            back_depth: 1.0,
+        };
+        cam.back_depth = cam.depth(Vec3::new(0.5 * extent, 0.0, 0.0)).max(cam.near);
+        cam
+    }
+
+    /// Unscaled screen position (x right, y down).
+    #[inline]
+    pub(crate) fn project(&self, p: Vec3) -> Vec2 {
+        let d = p - self.eye;
+        let depth = self.depth(p);
+        Vec2::new(d.x / depth, -d.dot(self.up) / depth)
+    }
+
+    /// How far `p` lies in front of the camera, as a share of the back
+    /// edge's middle (1 there).
+    pub(crate) fn relative_depth(&self, p: Vec3) -> f32 {
+        self.depth(p) / self.back_depth
+    }
+
+    /// Where the eye stands across the grid, in world units.
+    pub(crate) fn eye_x(&self) -> f32 {
+        self.eye.x
+    }
+}
