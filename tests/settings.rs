@@ -220,3 +220,50 @@ fn next_seed_is_the_set_one_or_a_fresh_one_that_fits_toml() {
         "fresh seeds should differ"
     );
 }
+
+/// Each row of the key table reads and writes its own field and no other:
+/// a new value written through a key reads back through it, and every
+/// other key still reads its default (each row carries its own accessors,
+/// so a row copied from its neighbour would show here).
+#[test]
+fn every_key_writes_and_reads_only_its_own_field() {
+    use mountains::settings::keys::{Kind, Value};
+    let defaults = Settings::default();
+    for key in KEYS {
+        let new = match key.kind {
+            Kind::Int { max, .. } => Value::Int(max),
+            Kind::Float { min, .. } => Value::Float(min),
+            Kind::IntOrAuto { min, .. } => Value::Int(min),
+            Kind::Bool => match keys::get(&defaults, key) {
+                Value::Bool(b) => Value::Bool(!b),
+                other => panic!("{}: {other:?}", key.name),
+            },
+            Kind::Choice(names) => {
+                let now = keys::get(&defaults, key);
+                let other = names.iter().find(|n| Value::Str(n.to_string()) != now);
+                Value::Str(other.unwrap().to_string())
+            }
+            Kind::Seed => Value::Int(4711),
+            Kind::Path => Value::Str("/some/folder".into()),
+            Kind::QuarterTurn => Value::Int(90),
+        };
+        assert_ne!(
+            keys::get(&defaults, key),
+            new,
+            "{}: pick another value",
+            key.name
+        );
+        let mut s = defaults.clone();
+        keys::apply(&mut s, key, &new).unwrap_or_else(|e| panic!("{}: {e}", key.name));
+        assert_eq!(keys::get(&s, key), new, "{} does not read back", key.name);
+        for other in KEYS.iter().filter(|o| o.name != key.name) {
+            assert_eq!(
+                keys::get(&s, other),
+                keys::get(&defaults, other),
+                "writing {} changed {}",
+                key.name,
+                other.name
+            );
+        }
+    }
+}

@@ -128,6 +128,10 @@ pub struct Key {
     pub change: Change,
     /// One line for `--help` and the settings screen.
     pub doc: &'static str,
+    /// Its value in a `Settings`.
+    read: fn(&Settings) -> Value,
+    /// Sets it in a `Settings` from a value `kind` allows; `None` otherwise.
+    write: fn(&mut Settings, &Key, &Value) -> Option<()>,
 }
 
 const GENERATORS: &[&str] = &["square", "diamond", "triangle"];
@@ -141,12 +145,23 @@ const WATER_LINES: &[&str] = &["coast", "generator"];
 const SUNS: &[&str] = &["varied", "morning", "midday", "evening", "classic"];
 const MONITORS: &[&str] = &["all", "primary"];
 
-const fn key(name: &'static str, kind: Kind, change: Change, doc: &'static str) -> Key {
+/// One row of the table: what the key is, then how it is read from and
+/// written into `Settings`.
+const fn key(
+    name: &'static str,
+    kind: Kind,
+    change: Change,
+    doc: &'static str,
+    read: fn(&Settings) -> Value,
+    write: fn(&mut Settings, &Key, &Value) -> Option<()>,
+) -> Key {
     Key {
         name,
         kind,
         change,
         doc,
+        read,
+        write,
     }
 }
 
@@ -157,18 +172,33 @@ pub const KEYS: &[Key] = &[
         Kind::Seed,
         Change::Next,
         "seed of the next mountain; \"random\" picks a new one each time",
+        |s| s.seed.map_or(Value::Str("random".into()), seed_value),
+        |s, _, value| {
+            s.seed = seed(value)?;
+            Some(())
+        },
     ),
     key(
         "generator",
         Kind::Choice(GENERATORS),
         Change::Next,
         "how heights are made",
+        |s| named(&s.generator),
+        |s, key, value| {
+            s.generator = choice::<Generator>(key, value)?;
+            Some(())
+        },
     ),
     key(
         "cragginess",
         Kind::Int { min: 1, max: 128 },
         Change::Next,
         "square generators: how sharply heights crease",
+        |s| Value::Int(s.cragginess.into()),
+        |s, key, value| {
+            s.cragginess = int(key, value)? as u32;
+            Some(())
+        },
     ),
     key(
         "elevation",
@@ -178,12 +208,22 @@ pub const KEYS: &[Key] = &[
         },
         Change::Next,
         "square generators: range of the corner heights",
+        |s| Value::Float(s.elevation.into()),
+        |s, key, value| {
+            s.elevation = float(key, value)?;
+            Some(())
+        },
     ),
     key(
         "roughness",
         Kind::Float { min: 1.0, max: 5.0 },
         Change::Next,
         "triangle generator: smoothness base (higher = smoother sides)",
+        |s| Value::Float(s.roughness.into()),
+        |s, key, value| {
+            s.roughness = float(key, value)?;
+            Some(())
+        },
     ),
     key(
         "contour",
@@ -193,36 +233,69 @@ pub const KEYS: &[Key] = &[
         },
         Change::Next,
         "triangle generator: power on heights (<1 concave, >1 convex)",
+        |s| Value::Float(s.contour.into()),
+        |s, key, value| {
+            s.contour = float(key, value)?;
+            Some(())
+        },
     ),
     key(
         "profile",
         Kind::Choice(PROFILES),
         Change::Next,
         "triangle generator: overall shape",
+        |s| named(&s.profile),
+        |s, key, value| {
+            s.profile = choice::<Profile>(key, value)?;
+            Some(())
+        },
     ),
     key(
         "height",
         Kind::Int { min: 1, max: 10 },
         Change::Next,
         "height of the peaks; also raises the treeline and snow",
+        |s| Value::Int(s.height.into()),
+        |s, key, value| {
+            s.height = int(key, value)? as u32;
+            Some(())
+        },
     ),
     key(
         "erosion",
         Kind::Float { min: 0.0, max: 1.0 },
         Change::Next,
         "rain wearing gullies into the slopes and silt at their feet (0 = none)",
+        |s| Value::Float(s.erosion.into()),
+        |s, key, value| {
+            s.erosion = float(key, value)?;
+            Some(())
+        },
     ),
     key(
         "detail",
         Kind::IntOrAuto { min: 4, max: 12 },
         Change::Remake,
         "grid of 2^detail+1 points a side; \"auto\" fits it to the screen",
+        |s| match s.detail {
+            Detail::Auto => Value::Str("auto".into()),
+            Detail::Level(n) => Value::Int(n.into()),
+        },
+        |s, key, value| {
+            s.detail = detail(key, value)?;
+            Some(())
+        },
     ),
     key(
         "low_detail",
         Kind::Bool,
         Change::Remake,
         "a quarter of the points: larger faces, faster drawing",
+        |s| Value::Bool(s.low_detail),
+        |s, _, value| {
+            s.low_detail = boolean(value)?;
+            Some(())
+        },
     ),
     key(
         "sea_level",
@@ -232,49 +305,99 @@ pub const KEYS: &[Key] = &[
         },
         Change::Next,
         "water line as a fraction of the relief above or below water_line",
+        |s| Value::Float(s.sea_level.into()),
+        |s, key, value| {
+            s.sea_level = float(key, value)?;
+            Some(())
+        },
     ),
     key(
         "water_line",
         Kind::Choice(WATER_LINES),
         Change::Next,
         "sea_level 0: a coast on every mountain, or the generator's own zero",
+        |s| named(&s.water_line),
+        |s, key, value| {
+            s.water_line = choice::<WaterLine>(key, value)?;
+            Some(())
+        },
     ),
     key(
         "color",
         Kind::Choice(COLORS),
         Change::Repaint,
         "colour mode or filter",
+        |s| named(&s.color),
+        |s, key, value| {
+            s.color = choice::<ColorMode>(key, value)?;
+            Some(())
+        },
     ),
     key(
         "relative_depth",
         Kind::Bool,
         Change::Repaint,
         "darker water over deeper ground",
+        |s| Value::Bool(s.relative_depth),
+        |s, _, value| {
+            s.relative_depth = boolean(value)?;
+            Some(())
+        },
     ),
     key(
         "shadows",
         Kind::Bool,
         Change::Repaint,
         "cast shadows from the light",
+        |s| Value::Bool(s.shadows),
+        |s, _, value| {
+            s.shadows = boolean(value)?;
+            Some(())
+        },
     ),
     key(
         "sun",
         Kind::Choice(SUNS),
         Change::Repaint,
         "time of day of the light; \"varied\" draws one per mountain",
+        |s| named(&s.sun),
+        |s, key, value| {
+            s.sun = choice::<Sun>(key, value)?;
+            Some(())
+        },
     ),
-    key("view", Kind::Choice(VIEWS), Change::Repaint, "projection"),
+    key(
+        "view",
+        Kind::Choice(VIEWS),
+        Change::Repaint,
+        "projection",
+        |s| named(&s.view),
+        |s, key, value| {
+            s.view = choice::<ViewKind>(key, value)?;
+            Some(())
+        },
+    ),
     key(
         "rotation",
         Kind::QuarterTurn,
         Change::Repaint,
         "side the mountain is seen from, in degrees",
+        |s| Value::Int(s.rotation.into()),
+        |s, _, value| {
+            s.rotation = rotation(value)?;
+            Some(())
+        },
     ),
     key(
         "auto_redraw",
         Kind::Bool,
         Change::Nothing,
         "start a new mountain after the pause (slide show)",
+        |s| Value::Bool(s.auto_redraw),
+        |s, _, value| {
+            s.auto_redraw = boolean(value)?;
+            Some(())
+        },
     ),
     key(
         "draw_seconds",
@@ -284,6 +407,11 @@ pub const KEYS: &[Key] = &[
         },
         Change::Nothing,
         "seconds to draw one mountain strip by strip",
+        |s| Value::Float(s.draw_seconds.into()),
+        |s, key, value| {
+            s.draw_seconds = float(key, value)?;
+            Some(())
+        },
     ),
     key(
         "pause_seconds",
@@ -293,18 +421,33 @@ pub const KEYS: &[Key] = &[
         },
         Change::Nothing,
         "seconds to hold a finished mountain",
+        |s| Value::Float(s.pause_seconds.into()),
+        |s, key, value| {
+            s.pause_seconds = float(key, value)?;
+            Some(())
+        },
     ),
     key(
         "monitors",
         Kind::Choice(MONITORS),
         Change::Nothing,
         "full screen: a mountain on every monitor, or the primary only",
+        |s| named(&s.monitors),
+        |s, key, value| {
+            s.monitors = choice::<Monitors>(key, value)?;
+            Some(())
+        },
     ),
     key(
         "heightmaps_dir",
         Kind::Path,
         Change::Nothing,
         "folder of PNG heightmaps mixed into the slide show",
+        |s| Value::Str(s.heightmaps_dir.clone().unwrap_or_default()),
+        |s, _, value| {
+            s.heightmaps_dir = path(value)?;
+            Some(())
+        },
     ),
 ];
 
@@ -362,78 +505,23 @@ fn edit_distance(a: &str, b: &str) -> usize {
 /// Checks `value` against `key` and stores it in `settings`; on refusal,
 /// says why in words that name the allowed values.
 pub fn apply(settings: &mut Settings, key: &Key, value: &Value) -> Result<(), String> {
-    let bad = || {
+    (key.write)(settings, key, value).ok_or_else(|| {
         format!(
             "{} is not allowed; expected {}",
             value.shown(),
             key.kind.allowed()
         )
-    };
-    let s = settings;
-    match key.name {
-        "seed" => s.seed = seed(value).ok_or_else(bad)?,
-        "generator" => s.generator = choice::<Generator>(key, value).ok_or_else(bad)?,
-        "cragginess" => s.cragginess = int(key, value).ok_or_else(bad)? as u32,
-        "erosion" => s.erosion = float(key, value).ok_or_else(bad)?,
-        "elevation" => s.elevation = float(key, value).ok_or_else(bad)?,
-        "roughness" => s.roughness = float(key, value).ok_or_else(bad)?,
-        "contour" => s.contour = float(key, value).ok_or_else(bad)?,
-        "profile" => s.profile = choice::<Profile>(key, value).ok_or_else(bad)?,
-        "height" => s.height = int(key, value).ok_or_else(bad)? as u32,
-        "detail" => s.detail = detail(key, value).ok_or_else(bad)?,
-        "low_detail" => s.low_detail = boolean(value).ok_or_else(bad)?,
-        "sea_level" => s.sea_level = float(key, value).ok_or_else(bad)?,
-        "water_line" => s.water_line = choice::<WaterLine>(key, value).ok_or_else(bad)?,
-        "color" => s.color = choice::<ColorMode>(key, value).ok_or_else(bad)?,
-        "relative_depth" => s.relative_depth = boolean(value).ok_or_else(bad)?,
-        "shadows" => s.shadows = boolean(value).ok_or_else(bad)?,
-        "sun" => s.sun = choice::<Sun>(key, value).ok_or_else(bad)?,
-        "view" => s.view = choice::<ViewKind>(key, value).ok_or_else(bad)?,
-        "rotation" => s.rotation = rotation(value).ok_or_else(bad)?,
-        "auto_redraw" => s.auto_redraw = boolean(value).ok_or_else(bad)?,
-        "draw_seconds" => s.draw_seconds = float(key, value).ok_or_else(bad)?,
-        "pause_seconds" => s.pause_seconds = float(key, value).ok_or_else(bad)?,
-        "monitors" => s.monitors = choice::<Monitors>(key, value).ok_or_else(bad)?,
-        "heightmaps_dir" => s.heightmaps_dir = path(value).ok_or_else(bad)?,
-        other => return Err(format!("unknown key `{other}`")),
-    }
-    Ok(())
+    })
 }
 
 /// The current value of `key` in `settings`, as it would be written in TOML.
 pub fn get(settings: &Settings, key: &Key) -> Value {
-    let s = settings;
-    let name = |v: &dyn erased::Named| Value::Str(v.name());
-    match key.name {
-        "seed" => s.seed.map_or(Value::Str("random".into()), seed_value),
-        "generator" => name(&s.generator),
-        "cragginess" => Value::Int(s.cragginess.into()),
-        "erosion" => Value::Float(s.erosion.into()),
-        "elevation" => Value::Float(s.elevation.into()),
-        "roughness" => Value::Float(s.roughness.into()),
-        "contour" => Value::Float(s.contour.into()),
-        "profile" => name(&s.profile),
-        "height" => Value::Int(s.height.into()),
-        "detail" => match s.detail {
-            Detail::Auto => Value::Str("auto".into()),
-            Detail::Level(n) => Value::Int(n.into()),
-        },
-        "low_detail" => Value::Bool(s.low_detail),
-        "sea_level" => Value::Float(s.sea_level.into()),
-        "water_line" => name(&s.water_line),
-        "color" => name(&s.color),
-        "relative_depth" => Value::Bool(s.relative_depth),
-        "shadows" => Value::Bool(s.shadows),
-        "sun" => name(&s.sun),
-        "view" => name(&s.view),
-        "rotation" => Value::Int(s.rotation.into()),
-        "auto_redraw" => Value::Bool(s.auto_redraw),
-        "draw_seconds" => Value::Float(s.draw_seconds.into()),
-        "pause_seconds" => Value::Float(s.pause_seconds.into()),
-        "monitors" => name(&s.monitors),
-        "heightmaps_dir" => Value::Str(s.heightmaps_dir.clone().unwrap_or_default()),
-        _ => Value::Str(String::new()),
-    }
+    (key.read)(settings)
+}
+
+/// A settings enum's value by its name in the file (serde's).
+fn named(v: &dyn erased::Named) -> Value {
+    Value::Str(v.name())
 }
 
 /// Seeds that fit a TOML integer are written as one; larger ones as a string.
