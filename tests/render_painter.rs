@@ -277,48 +277,74 @@ fn bands_of_columns_equal_one_band_in_every_view() {
     }
 }
 
-/// Pixel hash (FNV-1a) to pin the look of each mode.
-fn hash(frame: &Frame) -> u64 {
-    frame.pixels().iter().fold(0xcbf2_9ce4_8422_2325, |h, &p| {
-        (h ^ p as u64).wrapping_mul(0x0000_0100_0000_01b3)
-    })
-}
-
-/// Golden hashes of a 96x72 frame of `field(5)`, per mode and view.
+/// The pinned look of each mode: 96x72 pictures of `field(5)` under
+/// tests/golden/, one per mode and view, to be looked at (they were FNV
+/// hashes, which nobody could see).
 ///
-/// When the look changes on purpose (a new palette, a new fit), check the
-/// pictures (e.g. with `mountains render`), then replace each constant by the
-/// hash the failing assertion prints. Sonar and Outline do not depend on the
-/// palette; the others change when the palette does.
+/// When the look changes on purpose (a new palette, a new fit), look at the
+/// pictures the failing test writes to target/golden-actual/ beside the
+/// pinned ones; if they are right, run the test again with
+/// `MOUNTAINS_PIN_GOLDEN=1` to write them under tests/golden/, and commit
+/// them. Sonar and Outline do not depend on the palette; the others do.
 #[test]
-fn golden_hashes_pin_each_mode() {
+fn golden_pictures_pin_each_mode() {
     let f = field(5);
-    let cases: [(ColorMode, ViewKind, u64); 6] = [
-        (ColorMode::Natural, ViewKind::Oblique, 0xc8480c05cf9b84e4),
-        // Re-pinned when crowded back rows began to be merged (src/render/
-        // rows.rs): a few pixels at the back changed, none visibly.
+    let cases = [
+        (ColorMode::Natural, ViewKind::Vista, "natural-vista"),
+        (ColorMode::Natural, ViewKind::Oblique, "natural-oblique"),
         (
             ColorMode::Natural,
             ViewKind::Perspective,
-            0x666fde25abdc6ae1,
+            "natural-perspective",
         ),
-        (ColorMode::Sonar, ViewKind::Oblique, 0x90d4c97e929b5d67),
+        (ColorMode::Sonar, ViewKind::Oblique, "sonar-oblique"),
         (
             ColorMode::Outline,
             ViewKind::Perspective,
-            0xcc5e4068b63b663d,
+            "outline-perspective",
         ),
-        (ColorMode::Mono, ViewKind::Oblique, 0xe1473d82458abb54),
-        (ColorMode::Gray, ViewKind::Oblique, 0x346ca3974229e8c6),
+        (ColorMode::Mono, ViewKind::Oblique, "mono-oblique"),
+        (ColorMode::Gray, ViewKind::Oblique, "gray-oblique"),
     ];
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/golden");
+    let actual = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/golden-actual");
+    let pin = std::env::var_os("MOUNTAINS_PIN_GOLDEN").is_some();
     let mut wrong = Vec::new();
-    for (color, view, want) in cases {
-        let got = hash(&full(&f, &settings(color, view, 0), 96, 72));
-        if got != want {
-            wrong.push(format!("({color:?}, {view:?}, {got:#018x})"));
+    for (color, view, name) in cases {
+        let got = full(&f, &settings(color, view, 0), 96, 72);
+        let file = dir.join(format!("{name}.png"));
+        if pin {
+            mountains::snapshot::write_png(&file, &got).unwrap();
+            continue;
+        }
+        if read_png(&file).as_ref() != Some(&got) {
+            std::fs::create_dir_all(&actual).unwrap();
+            mountains::snapshot::write_png(&actual.join(format!("{name}.png")), &got).unwrap();
+            wrong.push(name);
         }
     }
-    assert!(wrong.is_empty(), "hashes changed: {}", wrong.join(", "));
+    assert!(
+        wrong.is_empty(),
+        "the look changed: {wrong:?}; compare target/golden-actual/ with tests/golden/"
+    );
+}
+
+/// An 8-bit RGB PNG as a frame (`None` if missing or not one).
+fn read_png(path: &std::path::Path) -> Option<Frame> {
+    let file = std::fs::File::open(path).ok()?;
+    let mut reader = png::Decoder::new(std::io::BufReader::new(file))
+        .read_info()
+        .ok()?;
+    let mut buf = vec![0; reader.output_buffer_size()?];
+    let info = reader.next_frame(&mut buf).ok()?;
+    if info.color_type != png::ColorType::Rgb || info.bit_depth != png::BitDepth::Eight {
+        return None;
+    }
+    let mut frame = Frame::new(info.width, info.height)?;
+    for (px, rgb) in frame.pixels_mut().iter_mut().zip(buf.chunks_exact(3)) {
+        *px = u32::from(rgb[0]) << 16 | u32::from(rgb[1]) << 8 | u32::from(rgb[2]);
+    }
+    Some(frame)
 }
 
 #[test]
