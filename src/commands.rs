@@ -4,32 +4,24 @@ use std::path::Path;
 use std::process::ExitCode;
 
 use crate::cli::output::{self, Format};
+use crate::mountain::Mountain;
 use crate::render::{Frame, render_full};
 use crate::settings::{Settings, load, paths};
-use crate::terrain::{self, Heightfield, heightmap};
+use crate::terrain::heightmap;
 
 /// Exit code for a mistake in what the user typed or pointed us at.
 pub const EXIT_USAGE: u8 = 2;
 
-/// The mountain to show: a data set from `--open`, else a generated one.
-/// Returns the field and the seed that made it (if known).
-pub fn mountain(
-    settings: &Settings,
-    open: Option<&Path>,
-) -> Result<(Heightfield, Option<u64>), String> {
-    match open {
-        Some(path) => {
-            let data = heightmap::load(path).map_err(|e| e.to_string())?;
-            for note in &data.notes {
-                eprintln!("mountains: {}: {note}", path.display());
-            }
-            Ok((data.field, data.seed))
-        }
-        None => {
-            let seed = settings.next_seed();
-            Ok((terrain::generate(settings, seed), Some(seed)))
+/// The mountain to show: a data set from `--open` (its notes said on
+/// stderr), else a generated one.
+pub fn mountain(settings: &Settings, open: Option<&Path>) -> Result<Mountain, String> {
+    let (mountain, notes) = Mountain::open_or_generate(settings, open)?;
+    if let Some(path) = open {
+        for note in &notes {
+            eprintln!("mountains: {}: {note}", path.display());
         }
     }
+    Ok(mountain)
 }
 
 /// `mountains render`: one complete mountain to a PNG.
@@ -62,7 +54,7 @@ pub fn render(
             frame.pixels().len() >> 18
         ));
     }
-    let (field, seed) = match mountain(settings, open) {
+    let Mountain { field, seed, .. } = match mountain(settings, open) {
         Ok(m) => m,
         Err(e) => return fail(&e),
     };
@@ -92,7 +84,7 @@ pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> Exi
             "not enough memory to make the data set: about {mib} MiB is needed"
         ));
     }
-    let (field, seed) = match mountain(settings, open) {
+    let Mountain { field, seed, .. } = match mountain(settings, open) {
         Ok(m) => m,
         Err(e) => return fail(&e),
     };

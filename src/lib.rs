@@ -13,6 +13,7 @@ pub mod fsutil;
 pub mod help;
 pub mod log;
 pub mod memory;
+pub mod mountain;
 pub mod quote;
 pub mod render;
 pub mod saved;

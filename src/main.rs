@@ -126,19 +126,19 @@ fn run_saver(
     for line in load::report(&loaded.problems) {
         log::warn(&format!("{line} (using the default)"));
     }
-    let data_set = open.and_then(|path| match mountains::terrain::heightmap::load(path) {
-        Ok(d) => {
-            for note in &d.notes {
+    let opened = open.and_then(|path| match mountains::mountain::Mountain::open(path) {
+        Ok((mountain, notes)) => {
+            for note in &notes {
                 log::warn(&format!("{}: {note}", path.display()));
             }
-            Some(d)
+            Some(mountain)
         }
         Err(e) => {
             log::warn(&format!("{e}; showing generated mountains instead"));
             None
         }
     });
-    match saver::run(mode, loaded.settings, data_set, xss) {
+    match saver::run(mode, loaded.settings, opened, xss) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             log::warn(&e.to_string());

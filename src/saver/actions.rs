@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use super::input::Action;
-use super::mountain::Mountain;
+use crate::mountain::Mountain;
 use crate::render::Frame;
 use crate::settings::keys::{self, Change, Kind, Value};
 use crate::settings::{ColorMode, Settings};
@@ -140,8 +140,7 @@ pub fn open_next_data_set(
     let files = crate::saved::list_pngs(&folders);
     let path =
         crate::saved::next_after(&files, current).ok_or("no saved data sets yet (S saves one)")?;
-    let data = crate::terrain::heightmap::load(path).map_err(|e| e.to_string())?;
-    let mountain = Mountain::loaded(data);
+    let (mountain, _notes) = Mountain::open(path)?;
     Ok((path.clone(), mountain))
 }
 

@@ -16,11 +16,11 @@ use super::actions;
 use super::error::SaverError;
 use super::heads::{self, Change, Head};
 use super::input::{Action, WakeDetector, action_for_key};
-use super::mountain::Mountain;
 use super::present::Presenter;
 use super::show::Show;
 use super::slideshow::Pacing;
 use super::trace::Trace;
+use crate::mountain::Mountain;
 use crate::render::Rect;
 use crate::settings::{Monitors, Settings};
 

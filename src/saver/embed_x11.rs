@@ -17,10 +17,10 @@ use x11rb::protocol::xproto::{ChangeWindowAttributesAux, ConnectionExt as _, Eve
 use x11rb::rust_connection::RustConnection;
 
 use super::error::SaverError;
-use super::mountain::Mountain;
 use super::present::Presenter;
 use super::show::Show;
 use super::slideshow::Pacing;
+use crate::mountain::Mountain;
 use crate::settings::Settings;
 
 /// A window owned by someone else, named by its XID, as softbuffer wants it.

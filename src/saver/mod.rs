@@ -32,7 +32,6 @@ pub mod heads;
 pub mod heads_x11;
 pub mod input;
 pub mod libcheck;
-pub mod mountain;
 mod options;
 mod overlay;
 pub mod present;
@@ -43,24 +42,22 @@ pub mod source;
 mod trace;
 
 use crate::cli::{Mode, XssOptions};
+use crate::mountain::Mountain;
 use crate::settings::Settings;
-use crate::terrain::heightmap::DataSet;
-use mountain::Mountain;
 
 pub use error::SaverError;
 pub use trace::{Trace, mark_start};
 
-/// Runs a window mode until it ends. `open` is a data set to show instead
+/// Runs a window mode until it ends. `opened` is a data set to show instead
 /// of generating; `xss` are xscreensaver's common options (`-fps`, `-delay`).
 pub fn run(
     mode: &Mode,
     settings: Settings,
-    open: Option<DataSet>,
+    opened: Option<Mountain>,
     xss: &XssOptions,
 ) -> Result<(), SaverError> {
     mark_start();
     options::set_options(xss);
-    let opened = open.map(Mountain::loaded);
     match mode {
         Mode::Fullscreen => app::run(app::AppMode::Fullscreen, settings, opened),
         Mode::Preview { parent: None } => app::run(app::AppMode::Preview, settings, opened),

@@ -3,10 +3,10 @@
 
 use std::time::Instant;
 
-use super::mountain::Mountain;
 use super::show::Show;
 use super::slideshow;
 use crate::cli::XssOptions;
+use crate::mountain::Mountain;
 use crate::settings::Settings;
 
 /// Remembers this run's xscreensaver options for every window's show.

@@ -4,11 +4,11 @@
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
-use super::mountain::Mountain;
 use super::overlay::Overlay;
 use super::redraw::{Drawn, Redraw};
 use super::slideshow::{Due, Pacing, Slideshow};
 use super::source;
+use crate::mountain::Mountain;
 use crate::render::{Frame, Painter, Rect, detail};
 use crate::settings::Settings;
 use crate::settings::keys::{self, Change};

@@ -3,9 +3,8 @@
 
 use std::path::Path;
 
-use super::mountain::Mountain;
+use crate::mountain::Mountain;
 use crate::settings::Settings;
-use crate::terrain::heightmap;
 
 /// True when slide number `slide` shows a heightmap from the folder:
 /// every other slide, so generated and saved mountains alternate.
@@ -50,8 +49,8 @@ fn random_heightmap(dir: &Path) -> Option<Mountain> {
         return None;
     }
     let pick = &files[rand::random_range(0..files.len())];
-    match heightmap::load(pick) {
-        Ok(data) => Some(Mountain::loaded(data)),
+    match Mountain::open(pick) {
+        Ok((mountain, _notes)) => Some(mountain),
         Err(e) => {
             warn_once(format!("{e}; generating instead"));
             None
@@ -63,7 +62,7 @@ fn random_heightmap(dir: &Path) -> Option<Mountain> {
 mod tests {
     use super::*;
     use crate::settings::Detail;
-    use crate::terrain::Heightfield;
+    use crate::terrain::{Heightfield, heightmap};
     use std::path::PathBuf;
 
     fn folder(name: &str) -> PathBuf {

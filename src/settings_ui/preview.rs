@@ -4,9 +4,10 @@
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
+use crate::mountain::Mountain;
 use crate::render::{Frame, Painter};
 use crate::settings::{Detail, Settings};
-use crate::terrain::{self, Heightfield, heightmap};
+use crate::terrain::Heightfield;
 
 /// The preview never generates more than 2^9+1 points a side: the picture is
 /// a few hundred pixels wide, so more detail would only cost time.
@@ -57,9 +58,9 @@ impl Preview {
 
     /// A new mountain from `seed` under `settings`.
     pub fn generate(&mut self, settings: &Settings, seed: u64, size: (u32, u32)) {
-        let field = terrain::generate(&Self::preview_settings(settings, size), seed);
-        self.field = Some(Arc::new(field));
-        self.seed = Some(seed);
+        let made = Mountain::from_seed(&Self::preview_settings(settings, size), seed);
+        self.field = Some(made.field);
+        self.seed = made.seed;
         self.file = None;
         self.repaint(settings, size);
     }
@@ -80,9 +81,9 @@ impl Preview {
         settings: &Settings,
         size: (u32, u32),
     ) -> Result<(), String> {
-        let data = heightmap::load(path).map_err(|e| e.to_string())?;
-        self.field = Some(Arc::new(data.field));
-        self.seed = data.seed;
+        let (opened, _notes) = Mountain::open(path)?;
+        self.field = Some(opened.field);
+        self.seed = opened.seed;
         self.file = Some(path.to_path_buf());
         self.repaint(settings, size);
         Ok(())

@@ -1,0 +1,100 @@
+//! A mountain to show: heights, and the seed that made them. The one way
+//! from a data set on disk, or from a seed, to something drawn: the slide
+//! show, the settings screen's preview and the one-shot commands all use it.
+
+use std::path::Path;
+use std::sync::Arc;
+
+use crate::settings::Settings;
+use crate::terrain::heightmap::{self, DataSet};
+use crate::terrain::{self, Heightfield};
+
+/// A mountain ready to draw and the seed that made it (none for a foreign heightmap).
+#[derive(Debug, Clone)]
+pub struct Mountain {
+    /// The heights.
+    pub field: Arc<Heightfield>,
+    /// The seed that generated them, when known.
+    pub seed: Option<u64>,
+    /// Made here from `seed` (not read from a file), so it can be made
+    /// again, e.g. at another detail.
+    pub generated: bool,
+}
+
+impl Mountain {
+    /// A data set read from a file: shown as it is, never made again.
+    pub fn loaded(data: DataSet) -> Self {
+        Mountain {
+            field: Arc::new(data.field),
+            seed: data.seed,
+            generated: false,
+        }
+    }
+
+    /// Generates a mountain from `settings`, with its seed or a fresh random one.
+    pub fn generate(settings: &Settings) -> Self {
+        Mountain::from_seed(settings, settings.next_seed())
+    }
+
+    /// The mountain of `seed` under `settings`.
+    pub fn from_seed(settings: &Settings, seed: u64) -> Self {
+        Mountain {
+            field: Arc::new(terrain::generate(settings, seed)),
+            seed: Some(seed),
+            generated: true,
+        }
+    }
+
+    /// The data set at `path`, and the notes its reading left (values it
+    /// set aside), for the caller to pass on; the message names the file.
+    pub fn open(path: &Path) -> Result<(Self, Vec<String>), String> {
+        let data = heightmap::load(path).map_err(|e| e.to_string())?;
+        let notes = data.notes.clone();
+        Ok((Mountain::loaded(data), notes))
+    }
+
+    /// `--open`'s data set if given, else a generated mountain.
+    pub fn open_or_generate(
+        settings: &Settings,
+        open: Option<&Path>,
+    ) -> Result<(Self, Vec<String>), String> {
+        match open {
+            Some(path) => Mountain::open(path),
+            None => Ok((Mountain::generate(settings), Vec::new())),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::settings::Detail;
+
+    fn small() -> Settings {
+        Settings {
+            detail: Detail::Level(5),
+            seed: Some(11),
+            ..Settings::default()
+        }
+    }
+
+    #[test]
+    fn a_seed_or_a_file_gives_the_same_heights_and_says_which() {
+        let made = Mountain::from_seed(&small(), 11);
+        assert_eq!(*made.field, terrain::generate(&small(), 11));
+        assert!(made.generated);
+        let dir = std::env::temp_dir().join(format!("mountains-mountain-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("m.png");
+        heightmap::save(&path, &made.field, made.seed, &small()).unwrap();
+        let (opened, _) = Mountain::open_or_generate(&small(), Some(&path)).unwrap();
+        assert_eq!((opened.seed, opened.generated), (Some(11), false));
+        assert_eq!(opened.field.size(), made.field.size());
+        let (generated, notes) = Mountain::open_or_generate(&small(), None).unwrap();
+        assert_eq!((generated.seed, generated.generated), (Some(11), true));
+        assert!(notes.is_empty());
+        let missing = Mountain::open(&dir.join("none.png")).unwrap_err();
+        assert!(missing.contains("none.png"), "{missing}");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
