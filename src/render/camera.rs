@@ -21,6 +21,12 @@ impl Camera {
         let (sin, cos) = pitch.sin_cos();
         let forward = Vec3::new(0.0, -cos, -sin);
         let up = Vec3::new(0.0, -sin, cos);
+        Camera::aimed(eye, up, forward, extent)
+    }
+
+    /// At `eye` looking along `forward` with `up` up, for a grid `extent`
+    /// units wide: depths are measured against the back edge's middle.
+    fn aimed(eye: Vec3, up: Vec3, forward: Vec3, extent: f32) -> Self {
         let mut cam = Camera {
             eye,
             up,
@@ -44,15 +50,7 @@ impl Camera {
         let target = Vec3::new(0.5 * extent, 0.45 * extent, 0.0);
         let forward = (target - eye).normalize();
         let up = (Vec3::Z - forward * forward.z).normalize();
-        let mut cam = Camera {
-            eye,
-            up,
-            forward,
-            near: 1e-3 * extent,
-            back_depth: 1.0,
-        };
-        cam.back_depth = cam.depth(Vec3::new(0.5 * extent, 0.0, 0.0)).max(cam.near);
-        cam
+        Camera::aimed(eye, up, forward, extent)
     }
 
     /// Unscaled screen position (x right, y down).
