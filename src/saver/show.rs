@@ -60,20 +60,9 @@ impl Show {
         let first = opened
             .clone()
             .unwrap_or_else(|| Mountain::generate(&detail::for_frame(&settings, size.0, size.1)));
-        let mut show = Show {
-            made_with: settings.clone(),
-            settings,
-            opened,
-            current: Some(first),
-            next: Next::None,
-            frame: None,
-            size,
-            painter: None,
-            redraw: None,
-            slideshow: Slideshow::new(pacing, 0, now),
-            slide: 0,
-            overlay: Overlay::default(),
-        };
+        let mut show = Show::empty(settings, pacing, size, now);
+        show.opened = opened;
+        show.current = Some(first);
         show.start_drawing(size, now);
         show
     }
@@ -81,13 +70,20 @@ impl Show {
     /// A black show that never draws a mountain (a monitor left blank).
     pub fn blank(size: (u32, u32), now: Instant) -> Self {
         let pacing = Pacing::from_seconds(0.0, 0.0, false);
+        let mut show = Show::empty(Settings::default(), pacing, size, now);
+        show.frame = Frame::new(size.0, size.1);
+        show
+    }
+
+    /// A show with no mountain and no frame yet.
+    fn empty(settings: Settings, pacing: Pacing, size: (u32, u32), now: Instant) -> Self {
         Show {
-            settings: Settings::default(),
-            made_with: Settings::default(),
+            made_with: settings.clone(),
+            settings,
             opened: None,
             current: None,
             next: Next::None,
-            frame: Frame::new(size.0, size.1),
+            frame: None,
             size,
             painter: None,
             redraw: None,
