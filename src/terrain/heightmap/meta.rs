@@ -15,11 +15,10 @@
 use crate::quote::quoted;
 use std::path::Path;
 
-use serde::Serialize;
-
 use super::error::HeightmapError;
 use super::quantise::Quantisation;
-use crate::settings::{AUTO_DETAIL_FALLBACK, Detail, Generator, Profile, Settings, load};
+use crate::settings::keys::{self, Value};
+use crate::settings::{AUTO_DETAIL_FALLBACK, Detail, Settings, load};
 
 /// Version of this key set; bumped only if a key changes meaning.
 pub const FORMAT_VERSION: u32 = 1;
@@ -78,91 +77,59 @@ const KNOWN_KEYS: [&str; 17] = [
     KEY_EROSION,
 ];
 
-/// The generator settings that made a mountain, read back from its file.
+/// The generator settings that made a mountain, read back from its file:
+/// the keys of [`PARAM_KEYS`], held in a `Settings` (every other key at its
+/// default). The key table reads, writes and checks each of them.
 #[derive(Debug, Clone, PartialEq)]
-pub struct GeneratorParams {
-    /// Which generator.
-    pub generator: Generator,
-    /// Square generators: initial random range.
-    pub cragginess: u32,
-    /// Square generators: range of the corner heights.
-    pub elevation: f32,
-    /// Triangle generator: smoothness base.
-    pub roughness: f32,
-    /// Triangle generator: power applied to heights.
-    pub contour: f32,
-    /// Triangle generator: starting corner heights.
-    pub profile: Profile,
-    /// Height of the highest peak (1-10).
-    pub height: u32,
-    /// Grid exponent setting.
-    pub detail: u32,
-    /// Whether low detail halved the grid.
-    pub low_detail: bool,
-    /// Water line setting, fraction of the relief.
-    pub sea_level: f32,
-    /// Erosion strength (0-1).
-    pub erosion: f32,
-}
+pub struct GeneratorParams(Settings);
 
 impl GeneratorParams {
-    /// The generator part of `settings`.
+    /// The generator part of `settings` (`detail = "auto"` stored as the
+    /// level it stands for when no frame is known).
     pub fn from_settings(s: &Settings) -> Self {
-        GeneratorParams {
-            generator: s.generator,
-            cragginess: s.cragginess,
-            elevation: s.elevation,
-            roughness: s.roughness,
-            contour: s.contour,
-            profile: s.profile,
-            height: s.height,
-            detail: match s.detail {
-                Detail::Level(n) => n,
-                Detail::Auto => AUTO_DETAIL_FALLBACK,
-            },
-            low_detail: s.low_detail,
-            sea_level: s.sea_level,
-            erosion: s.erosion,
+        let mut params = Settings::default();
+        copy_param_keys(s, &mut params);
+        if params.detail == Detail::Auto {
+            params.detail = Detail::Level(AUTO_DETAIL_FALLBACK);
         }
+        GeneratorParams(params)
     }
 
     /// Puts these parameters into `settings` (e.g. to regenerate or re-save).
     pub fn apply_to(&self, s: &mut Settings) {
-        s.generator = self.generator;
-        s.cragginess = self.cragginess;
-        s.elevation = self.elevation;
-        s.roughness = self.roughness;
-        s.contour = self.contour;
-        s.profile = self.profile;
-        s.height = self.height;
-        s.detail = Detail::Level(self.detail);
-        s.low_detail = self.low_detail;
-        s.sea_level = self.sea_level;
-        s.erosion = self.erosion;
+        copy_param_keys(&self.0, s);
     }
 
     fn to_pairs(&self) -> Vec<(&'static str, String)> {
-        vec![
-            (KEY_GENERATOR, enum_name(&self.generator)),
-            (KEY_CRAGGINESS, self.cragginess.to_string()),
-            (KEY_ELEVATION, self.elevation.to_string()),
-            (KEY_ROUGHNESS, self.roughness.to_string()),
-            (KEY_CONTOUR, self.contour.to_string()),
-            (KEY_PROFILE, enum_name(&self.profile)),
-            (KEY_HEIGHT, self.height.to_string()),
-            (KEY_DETAIL, self.detail.to_string()),
-            (KEY_LOW_DETAIL, self.low_detail.to_string()),
-            (KEY_SEA_FRACTION, self.sea_level.to_string()),
-            (KEY_EROSION, self.erosion.to_string()),
-        ]
+        PARAM_KEYS
+            .iter()
+            .map(|&(meta_key, name)| (meta_key, text(&keys::get(&self.0, table_key(name)))))
+            .collect()
     }
 }
 
-/// The config-file name of a settings enum value (serde's, so they agree).
-fn enum_name<T: Serialize>(value: &T) -> String {
-    match toml::Value::try_from(value) {
-        Ok(toml::Value::String(s)) => s,
-        _ => String::from("?"),
+/// Copies the generator keys from `from` into `to`, through the key table.
+fn copy_param_keys(from: &Settings, to: &mut Settings) {
+    for &(_, name) in PARAM_KEYS {
+        let key = table_key(name);
+        // A value read from a valid Settings always applies.
+        let _ = keys::apply(to, key, &keys::get(from, key));
+    }
+}
+
+/// A key [`PARAM_KEYS`] names (a test checks they are all in the table).
+fn table_key(name: &str) -> &'static keys::Key {
+    keys::find(name).unwrap_or_else(|| unreachable!("`{name}` is not in the key table"))
+}
+
+/// A value as the text chunk holds it: plain decimal, a float as the
+/// shortest text that reads back as the same f32, names as in the file.
+fn text(value: &Value) -> String {
+    match value {
+        Value::Int(n) => n.to_string(),
+        Value::Float(x) => (*x as f32).to_string(),
+        Value::Bool(b) => b.to_string(),
+        Value::Str(s) => s.clone(),
     }
 }
 
@@ -400,6 +367,14 @@ const PARAM_KEYS: &[(&str, &str)] = &[
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::settings::{Generator, Profile};
+
+    #[test]
+    fn every_stored_parameter_is_a_key_of_the_table() {
+        for (meta_key, name) in PARAM_KEYS {
+            assert!(keys::find(name).is_some(), "{meta_key}: `{name}`");
+        }
+    }
 
     fn pairs(list: &[(&str, &str)]) -> Vec<(String, String)> {
         list.iter()
