@@ -256,24 +256,20 @@ fn text_chunks(info: &png::Info, path: &Path) -> Result<Vec<(String, String)>, H
         };
         HeightmapError::metadata(path, key, why)
     };
-    for chunk in &info.compressed_latin1_text {
-        if chunk.keyword.starts_with(OUR_PREFIX) {
-            let mut c = chunk.clone();
-            c.decompress_text_with_limit(TEXT_LIMIT)
-                .map_err(|e| unreadable(&c.keyword, e))?;
-            let value = c.get_text().map_err(|e| unreadable(&c.keyword, e))?;
-            text.push((c.keyword, value));
-        }
+    // zTXt and iTXt chunks have the same methods but no common trait.
+    macro_rules! read_ours {
+        ($chunks:expr) => {
+            for chunk in $chunks.iter().filter(|c| c.keyword.starts_with(OUR_PREFIX)) {
+                let mut c = chunk.clone();
+                c.decompress_text_with_limit(TEXT_LIMIT)
+                    .map_err(|e| unreadable(&c.keyword, e))?;
+                let value = c.get_text().map_err(|e| unreadable(&c.keyword, e))?;
+                text.push((c.keyword, value));
+            }
+        };
     }
-    for chunk in &info.utf8_text {
-        if chunk.keyword.starts_with(OUR_PREFIX) {
-            let mut c = chunk.clone();
-            c.decompress_text_with_limit(TEXT_LIMIT)
-                .map_err(|e| unreadable(&c.keyword, e))?;
-            let value = c.get_text().map_err(|e| unreadable(&c.keyword, e))?;
-            text.push((c.keyword, value));
-        }
-    }
+    read_ours!(info.compressed_latin1_text);
+    read_ours!(info.utf8_text);
     Ok(text)
 }
 
