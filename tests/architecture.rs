@@ -1,0 +1,216 @@
+//! The layout keeps its promises: no two source files import each other,
+//! directly or round a circle (docs/architecture.md). A circle ties files
+//! that should be one, or hides a piece both need; this finds one as soon
+//! as it is written.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::{Path, PathBuf};
+
+/// Every `.rs` file under `dir`.
+fn sources(dir: &Path, out: &mut Vec<PathBuf>) {
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_dir() {
+            sources(&path, out);
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            out.push(path);
+        }
+    }
+}
+
+/// The module path a file holds: `src/a/b.rs` and `src/a/b/mod.rs` are
+/// `["a", "b"]`; `src/lib.rs` is `[]`.
+fn module_of(src: &Path, file: &Path) -> Vec<String> {
+    let rel = file.strip_prefix(src).unwrap().with_extension("");
+    let mut parts: Vec<String> = rel
+        .iter()
+        .map(|p| p.to_string_lossy().into_owned())
+        .collect();
+    if matches!(
+        parts.last().map(String::as_str),
+        Some("mod" | "lib" | "main")
+    ) {
+        parts.pop();
+    }
+    parts
+}
+
+/// The code of a file without comments and string contents (a doc comment
+/// that names `crate::x` is not an import).
+fn code(text: &str) -> String {
+    let mut out = String::new();
+    for line in text.lines() {
+        let line = line.split("//").next().unwrap_or("");
+        let mut in_str = false;
+        for c in line.chars() {
+            if c == '"' {
+                in_str = !in_str;
+            }
+            if !in_str {
+                out.push(c);
+            }
+        }
+        out.push('\n');
+    }
+    out
+}
+
+/// The paths a file names that start with `crate`, `super` or `self`,
+/// braces expanded one level at a time (`super::{a, b::c}`).
+fn paths(code: &str) -> Vec<Vec<String>> {
+    let mut found = Vec::new();
+    let bytes: Vec<char> = code.chars().collect();
+    let mut i = 0;
+    while i < bytes.len() {
+        let rest: String = bytes[i..bytes.len().min(i + 6)].iter().collect();
+        let starts = ["crate::", "super::", "self::"]
+            .iter()
+            .any(|p| rest.starts_with(&p[..p.len().min(6)]))
+            && (i == 0 || !(bytes[i - 1].is_alphanumeric() || bytes[i - 1] == '_'));
+        if !starts {
+            i += 1;
+            continue;
+        }
+        let mut j = i;
+        let mut depth = 0;
+        while j < bytes.len() {
+            let c = bytes[j];
+            if c == '{' {
+                depth += 1;
+            } else if c == '}' {
+                if depth == 0 {
+                    break;
+                }
+                depth -= 1;
+            } else if depth == 0 && !(c.is_alphanumeric() || c == '_' || c == ':') {
+                break;
+            }
+            j += 1;
+        }
+        let text: String = bytes[i..j].iter().collect();
+        expand(&text, &mut found);
+        i = j.max(i + 1);
+    }
+    found
+}
+
+/// `a::{b, c::d}` into `a::b` and `a::c::d`.
+fn expand(text: &str, out: &mut Vec<Vec<String>>) {
+    let Some(open) = text.find('{') else {
+        let parts: Vec<String> = text
+            .split("::")
+            .filter(|p| !p.is_empty())
+            .map(String::from)
+            .collect();
+        if !parts.is_empty() {
+            out.push(parts);
+        }
+        return;
+    };
+    let head = text[..open].trim_end_matches("::");
+    let inner = &text[open + 1..text.rfind('}').unwrap_or(text.len())];
+    let mut depth = 0;
+    let mut item = String::new();
+    for c in inner.chars().chain(std::iter::once(',')) {
+        match c {
+            '{' => depth += 1,
+            '}' => depth -= 1,
+            _ => {}
+        }
+        if c == ',' && depth == 0 {
+            let item_t = item.trim();
+            if !item_t.is_empty() {
+                let joined = if item_t == "self" {
+                    head.to_string()
+                } else {
+                    format!("{head}::{item_t}")
+                };
+                expand(&joined, out);
+            }
+            item.clear();
+        } else if !c.is_whitespace() {
+            item.push(c);
+        }
+    }
+}
+
+/// The file a path names, seen from `module`: its longest prefix that is
+/// a module of the crate.
+fn target(
+    module: &[String],
+    path: &[String],
+    modules: &BTreeMap<Vec<String>, PathBuf>,
+) -> Option<PathBuf> {
+    let mut at: Vec<String> = module.to_vec();
+    let mut rest = path;
+    match rest.first().map(String::as_str) {
+        Some("crate") => at.clear(),
+        Some("self") => {}
+        Some("super") => {
+            while rest.first().map(String::as_str) == Some("super") {
+                at.pop();
+                rest = &rest[1..];
+            }
+            let mut full = at.clone();
+            full.extend(rest.iter().cloned());
+            return longest(&full, modules);
+        }
+        _ => return None,
+    }
+    let mut full = at;
+    full.extend(rest[1..].iter().cloned());
+    longest(&full, modules)
+}
+
+fn longest(full: &[String], modules: &BTreeMap<Vec<String>, PathBuf>) -> Option<PathBuf> {
+    (0..=full.len())
+        .rev()
+        .find_map(|n| modules.get(&full[..n]).cloned())
+}
+
+#[test]
+fn no_source_file_imports_round_a_circle() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files = Vec::new();
+    sources(&src, &mut files);
+    let modules: BTreeMap<Vec<String>, PathBuf> = files
+        .iter()
+        .filter(|f| f.file_name().is_some_and(|n| n != "main.rs"))
+        .map(|f| (module_of(&src, f), f.clone()))
+        .collect();
+    let mut edges: BTreeMap<PathBuf, BTreeSet<PathBuf>> = BTreeMap::new();
+    for (module, file) in &modules {
+        let text = code(&std::fs::read_to_string(file).unwrap());
+        // A file's own tests may use anything.
+        let text = text.split("#[cfg(test)]").next().unwrap_or("").to_string();
+        for path in paths(&text) {
+            if let Some(to) = target(module, &path, &modules).filter(|to| to != file) {
+                edges.entry(file.clone()).or_default().insert(to);
+            }
+        }
+    }
+    // Depth-first search for a way back to where it started.
+    let name = |p: &PathBuf| p.strip_prefix(&src).unwrap().display().to_string();
+    for start in edges.keys() {
+        let mut stack = vec![(start.clone(), vec![start.clone()])];
+        let mut seen = BTreeSet::new();
+        while let Some((at, trail)) = stack.pop() {
+            for next in edges.get(&at).into_iter().flatten() {
+                if next == start {
+                    let circle: Vec<String> = trail.iter().map(name).collect();
+                    panic!("an import circle: {} -> back", circle.join(" -> "));
+                }
+                if seen.insert(next.clone()) {
+                    let mut t = trail.clone();
+                    t.push(next.clone());
+                    stack.push((next.clone(), t));
+                }
+            }
+        }
+    }
+    assert!(
+        edges.len() > 50,
+        "only {} files import anything: the scan is broken",
+        edges.len()
+    );
+}
