@@ -10,13 +10,15 @@ use winit::event::{DeviceEvent, DeviceId, ElementState, WindowEvent};
 use winit::event_loop::{ActiveEventLoop, ControlFlow, DeviceEvents, EventLoop};
 use winit::keyboard::Key;
 use winit::monitor::MonitorHandle;
-use winit::window::{Window, WindowAttributes, WindowId, WindowLevel};
+use winit::window::{Window, WindowAttributes, WindowId};
 
 use super::actions;
 use super::error::SaverError;
 use super::heads::{self, Change, Head};
 use super::input::{Action, WakeDetector, action_for_key};
+use super::placement::{covering, find_heads};
 use super::present::Presenter;
+use super::screen::Screen;
 use super::show::Show;
 use super::slideshow::Pacing;
 use super::trace::Trace;
@@ -51,19 +53,6 @@ enum UserEvent {
     /// The monitors are now these (full screen on X11).
     #[cfg_attr(not(unix), allow(dead_code))]
     Heads(Vec<Head>),
-}
-
-/// One window and the slide show drawn in it.
-struct Screen {
-    window: Rc<Window>,
-    presenter: Presenter<Rc<Window>>,
-    show: Show,
-    /// The data set the O key opened last, so the next O opens the one after.
-    opened_path: Option<std::path::PathBuf>,
-    /// Full screen: the monitor this window covers.
-    head: Option<Head>,
-    /// The title last given to the window.
-    title: String,
 }
 
 /// Runs `mode` with winit until it ends.
@@ -153,10 +142,10 @@ impl ApplicationHandler<UserEvent> for App {
         // from. Taken lazily, a move that arrives before the first motion
         // event (Wine may deliver none until then) would become the origin.
         #[cfg(windows)]
-        if self.mode == AppMode::Fullscreen {
-            if let Some((x, y)) = super::fullscreen_win32::cursor_position() {
-                self.wake.moved_to(x.into(), y.into());
-            }
+        if self.mode == AppMode::Fullscreen
+            && let Some((x, y)) = super::fullscreen_win32::cursor_position()
+        {
+            self.wake.moved_to(x.into(), y.into());
         }
     }
 
@@ -444,14 +433,8 @@ impl App {
         } else {
             Show::blank(size, now)
         };
-        self.screens.push(Screen {
-            window,
-            presenter,
-            show,
-            opened_path: None,
-            head,
-            title: String::new(),
-        });
+        self.screens
+            .push(Screen::new(window, presenter, show, head));
         let i = self.screens.len() - 1;
         self.update_title(i);
         self.present_all(event_loop, i);
@@ -470,24 +453,15 @@ impl App {
     }
 
     fn present_all(&mut self, event_loop: &ActiveEventLoop, i: usize) {
-        let bounds = self.screens[i].show.frame().map(|f| f.bounds());
-        self.present(event_loop, i, bounds.unwrap_or_default());
+        let bounds = self.screens[i].bounds();
+        self.present(event_loop, i, bounds);
     }
 
     fn present(&mut self, event_loop: &ActiveEventLoop, i: usize, damage: Rect) {
-        if damage.is_empty() {
-            return;
-        }
-        let screen = &mut self.screens[i];
-        let Some(frame) = screen.show.frame() else {
-            return;
-        };
-        match screen.presenter.present(frame, damage) {
-            Ok(()) => self.trace.presented(),
-            Err(e) => self.fail(
-                event_loop,
-                SaverError::Other(format!("cannot present: {e}")),
-            ),
+        match self.screens[i].present(damage) {
+            Ok(true) => self.trace.presented(),
+            Ok(false) => {}
+            Err(e) => self.fail(event_loop, SaverError::Other(e)),
         }
     }
 
@@ -568,12 +542,7 @@ impl App {
     /// state of the mountain on screen; sent only when it changes.
     fn update_title(&mut self, i: usize) {
         if self.mode == AppMode::Window {
-            let screen = &mut self.screens[i];
-            let title = screen.show.title();
-            if title != screen.title {
-                screen.window.set_title(&title);
-                screen.title = title;
-            }
+            self.screens[i].update_title();
         }
     }
 
@@ -593,69 +562,4 @@ impl App {
             }
         }
     }
-}
-
-/// The monitors to cover, each with winit's handle where winit knows it.
-/// The X server's own list (`server`) wins: winit lists CRTCs only.
-fn find_heads(event_loop: &ActiveEventLoop, server: &[Head]) -> Vec<(Head, Option<MonitorHandle>)> {
-    if !server.is_empty() {
-        return server.iter().map(|h| (*h, None)).collect();
-    }
-    let primary = event_loop.primary_monitor();
-    let monitors: Vec<(Head, MonitorHandle)> = event_loop
-        .available_monitors()
-        .map(|m| {
-            let (position, size) = (m.position(), m.size());
-            let head = Head {
-                x: position.x,
-                y: position.y,
-                width: size.width,
-                height: size.height,
-                primary: Some(&m) == primary.as_ref(),
-            };
-            (head, m)
-        })
-        .collect();
-    let heads: Vec<Head> = monitors.iter().map(|(h, _)| *h).collect();
-    heads::clean(&heads)
-        .into_iter()
-        .map(|h| {
-            let same = |(m, _): &&(Head, MonitorHandle)| {
-                (m.x, m.y, m.width, m.height) == (h.x, h.y, h.width, h.height)
-            };
-            (h, monitors.iter().find(same).map(|(_, m)| m.clone()))
-        })
-        .collect()
-}
-
-/// Window attributes covering `head` exactly, above everything else.
-#[cfg_attr(unix, allow(unused_variables))]
-fn covering(
-    base: WindowAttributes,
-    head: &Head,
-    monitor: Option<&MonitorHandle>,
-) -> WindowAttributes {
-    let attrs = base
-        .with_decorations(false)
-        .with_window_level(WindowLevel::AlwaysOnTop);
-    #[cfg(windows)]
-    let attrs = match monitor {
-        Some(monitor) => attrs.with_fullscreen(Some(winit::window::Fullscreen::Borderless(Some(
-            monitor.clone(),
-        )))),
-        None => attrs
-            .with_position(PhysicalPosition::new(head.x, head.y))
-            .with_inner_size(PhysicalSize::new(head.width, head.height)),
-    };
-    #[cfg(unix)]
-    let attrs = {
-        // Works with and without a window manager: override-redirect windows
-        // are placed exactly where asked.
-        use winit::platform::x11::WindowAttributesExtX11;
-        attrs
-            .with_override_redirect(true)
-            .with_position(PhysicalPosition::new(head.x, head.y))
-            .with_inner_size(PhysicalSize::new(head.width, head.height))
-    };
-    attrs
 }

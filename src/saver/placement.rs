@@ -1,0 +1,77 @@
+//! Where full-screen windows go: the monitors to cover (the X server's
+//! list, else winit's), and window attributes that cover one exactly.
+
+use winit::dpi::{PhysicalPosition, PhysicalSize};
+use winit::event_loop::ActiveEventLoop;
+use winit::monitor::MonitorHandle;
+use winit::window::{WindowAttributes, WindowLevel};
+
+use super::heads::{self, Head};
+
+/// The monitors to cover, each with winit's handle where winit knows it.
+/// The X server's own list (`server`) wins: winit lists CRTCs only.
+pub(super) fn find_heads(
+    event_loop: &ActiveEventLoop,
+    server: &[Head],
+) -> Vec<(Head, Option<MonitorHandle>)> {
+    if !server.is_empty() {
+        return server.iter().map(|h| (*h, None)).collect();
+    }
+    let primary = event_loop.primary_monitor();
+    let monitors: Vec<(Head, MonitorHandle)> = event_loop
+        .available_monitors()
+        .map(|m| {
+            let (position, size) = (m.position(), m.size());
+            let head = Head {
+                x: position.x,
+                y: position.y,
+                width: size.width,
+                height: size.height,
+                primary: Some(&m) == primary.as_ref(),
+            };
+            (head, m)
+        })
+        .collect();
+    let heads: Vec<Head> = monitors.iter().map(|(h, _)| *h).collect();
+    heads::clean(&heads)
+        .into_iter()
+        .map(|h| {
+            let same = |(m, _): &&(Head, MonitorHandle)| {
+                (m.x, m.y, m.width, m.height) == (h.x, h.y, h.width, h.height)
+            };
+            (h, monitors.iter().find(same).map(|(_, m)| m.clone()))
+        })
+        .collect()
+}
+
+/// Window attributes covering `head` exactly, above everything else.
+#[cfg_attr(unix, allow(unused_variables))]
+pub(super) fn covering(
+    base: WindowAttributes,
+    head: &Head,
+    monitor: Option<&MonitorHandle>,
+) -> WindowAttributes {
+    let attrs = base
+        .with_decorations(false)
+        .with_window_level(WindowLevel::AlwaysOnTop);
+    #[cfg(windows)]
+    let attrs = match monitor {
+        Some(monitor) => attrs.with_fullscreen(Some(winit::window::Fullscreen::Borderless(Some(
+            monitor.clone(),
+        )))),
+        None => attrs
+            .with_position(PhysicalPosition::new(head.x, head.y))
+            .with_inner_size(PhysicalSize::new(head.width, head.height)),
+    };
+    #[cfg(unix)]
+    let attrs = {
+        // Works with and without a window manager: override-redirect windows
+        // are placed exactly where asked.
+        use winit::platform::x11::WindowAttributesExtX11;
+        attrs
+            .with_override_redirect(true)
+            .with_position(PhysicalPosition::new(head.x, head.y))
+            .with_inner_size(PhysicalSize::new(head.width, head.height))
+    };
+    attrs
+}
