@@ -604,7 +604,7 @@ fn open_lists_the_data_directory_on_the_screen() {
     sc.model.activate(Button::Open);
     assert_eq!(sc.apply(Effect::ListDataSets), Next::Stay);
     assert_eq!(
-        sc.model.open_list,
+        sc.model.open_list.as_ref().map(|l| l.files.clone()),
         Some(vec![dir.join("data").join("m.png")])
     );
     assert_eq!(sc.input(Input::Enter), Next::Stay);

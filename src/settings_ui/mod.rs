@@ -12,11 +12,14 @@ pub mod editor;
 pub mod font;
 mod font_ascii;
 mod font_latin1;
+mod input;
 pub mod layout;
 pub mod model;
+pub mod open_list;
 pub mod preview;
 pub mod screen;
 pub mod values;
+mod widgets;
 pub mod window;
 
 use std::path::{Path, PathBuf};

@@ -3,54 +3,12 @@
 
 use std::path::PathBuf;
 
+pub use super::input::Input;
 use super::layout::{Button, Hit, Layout, Part};
+use super::open_list::{OpenList, Outcome};
 use super::values::{self, Widget};
 use crate::settings::keys::{self, Change, KEYS, Key, Value};
 use crate::settings::{Settings, load};
-
-/// One input, already translated from the window system's events.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Input {
-    /// Tab (or Shift+Tab when `back`).
-    Tab {
-        /// Shift was held.
-        back: bool,
-    },
-    /// Arrow up.
-    Up,
-    /// Arrow down.
-    Down,
-    /// Arrow left.
-    Left,
-    /// Arrow right.
-    Right,
-    /// Page up: a big step up.
-    PageUp,
-    /// Page down: a big step down.
-    PageDown,
-    /// Home: the smallest value.
-    Home,
-    /// End: the largest value.
-    End,
-    /// Enter / Return.
-    Enter,
-    /// Space bar.
-    Space,
-    /// Escape.
-    Escape,
-    /// Backspace.
-    Backspace,
-    /// A typed character.
-    Char(char),
-    /// Left mouse button pressed at a pixel.
-    Press(f64, f64),
-    /// The pointer moved to a pixel.
-    Move(f64, f64),
-    /// Left mouse button released at a pixel.
-    Release(f64, f64),
-    /// Wheel turned at a pixel; positive lines are away from the user.
-    Wheel(f64, f64, i32),
-}
 
 /// What the window layer must do after an input.
 #[derive(Debug, Clone, PartialEq)]
@@ -92,10 +50,8 @@ pub struct Model {
     pub message: String,
     /// Set when the preferences file does not parse: OK cannot save.
     pub file_error: Option<String>,
-    /// Data sets offered by Open, while the list is shown.
-    pub open_list: Option<Vec<PathBuf>>,
-    /// Highlighted entry of the open list.
-    pub list_pick: usize,
+    /// The Open list, while it is shown.
+    pub open_list: Option<OpenList>,
     /// The seed of the preview mountain, when it has one.
     pub preview_seed: Option<u64>,
     /// The row whose slider is being dragged.
@@ -120,7 +76,6 @@ impl Model {
             message: String::new(),
             file_error: None,
             open_list: None,
-            list_pick: 0,
             preview_seed: None,
             dragging: None,
             pressed: None,
@@ -569,45 +524,29 @@ impl Model {
             self.open_list = None;
         } else {
             self.message = "Choose a data set: arrows and Enter, or click; Esc closes.".into();
-            self.open_list = Some(files);
-            self.list_pick = 0;
+            self.open_list = Some(OpenList::new(files));
         }
     }
 
     /// Input while the open list is shown; `None` lets it through.
     fn handle_list(&mut self, input: &Input, layout: &Layout) -> Option<Effect> {
-        let n = self.open_list.as_ref().map_or(0, Vec::len);
-        let shown = n.min(layout.list_capacity());
-        match input {
-            Input::Up | Input::Left => self.list_pick = self.list_pick.saturating_sub(1),
-            Input::Down | Input::Right | Input::Tab { .. } => {
-                self.list_pick = (self.list_pick + 1).min(shown.saturating_sub(1))
-            }
-            Input::Escape => {
-                self.open_list = None;
-                self.message.clear();
-            }
-            Input::Enter | Input::Space => return Some(self.pick(self.list_pick)),
-            Input::Press(x, y) => {
-                return match layout.hit(*x, *y, Some(n)) {
-                    Some(Hit::ListItem(i)) => Some(self.pick(i)),
-                    _ => {
-                        self.open_list = None;
-                        None
-                    }
-                };
-            }
-            _ => return None,
+        let list = self.open_list.as_mut()?;
+        let outcome = list.handle(input, layout);
+        if !matches!(outcome, Outcome::Stays | Outcome::Passes) {
+            self.open_list = None;
         }
-        Some(Effect::Redraw)
-    }
-
-    fn pick(&mut self, i: usize) -> Effect {
-        let Some(path) = self.open_list.take().and_then(|l| l.get(i).cloned()) else {
-            return Effect::Redraw;
-        };
-        self.message.clear();
-        Effect::OpenDataSet(path)
+        match outcome {
+            Outcome::Stays => Some(Effect::Redraw),
+            Outcome::Closed => {
+                self.message.clear();
+                Some(Effect::Redraw)
+            }
+            Outcome::Picked(path) => {
+                self.message.clear();
+                Some(Effect::OpenDataSet(path))
+            }
+            Outcome::ClosedPassing | Outcome::Passes => None,
+        }
     }
 }
 
