@@ -12,7 +12,6 @@ use winit::keyboard::Key;
 use winit::monitor::MonitorHandle;
 use winit::window::{Window, WindowAttributes, WindowId};
 
-use super::actions;
 use super::error::SaverError;
 use super::heads::{self, Change, Head};
 use super::input::{Action, WakeDetector, action_for_key};
@@ -484,56 +483,10 @@ impl App {
     }
 
     fn act(&mut self, event_loop: &ActiveEventLoop, i: usize, action: Action) {
-        let now = Instant::now();
-        let show = &mut self.screens[i].show;
-        let damage =
-            if let Some((settings, change)) = actions::changed_settings(action, show.settings()) {
-                show.change_settings(settings, change, now)
-            } else {
-                match action {
-                    Action::Quit => {
-                        event_loop.exit();
-                        return;
-                    }
-                    Action::NewMountain => show.new_mountain(now),
-                    Action::ToggleHelp => show.toggle_help(now),
-                    Action::TogglePause => {
-                        show.toggle_pause(now);
-                        Rect::default()
-                    }
-                    Action::SaveDataSet => {
-                        let saved = show
-                            .current()
-                            .map(|m| actions::save_data_set(m, show.settings()));
-                        actions::report(saved, "data set");
-                        Rect::default()
-                    }
-                    Action::OpenDataSet => {
-                        let screen = &mut self.screens[i];
-                        let current = screen.opened_path.as_deref();
-                        match actions::open_next_data_set(current, screen.show.settings()) {
-                            Ok((path, mountain)) => {
-                                eprintln!("mountains: showing {}", path.display());
-                                screen.opened_path = Some(path);
-                                screen.show.open(mountain, now)
-                            }
-                            Err(e) => {
-                                crate::log::warn(&format!("cannot open a data set: {e}"));
-                                Rect::default()
-                            }
-                        }
-                    }
-                    Action::Screenshot => {
-                        let seed = show.current().and_then(|m| m.seed);
-                        actions::report(
-                            show.frame().map(|f| actions::save_screenshot(f, seed)),
-                            "screenshot",
-                        );
-                        Rect::default()
-                    }
-                    _ => Rect::default(),
-                }
-            };
+        let Some(damage) = self.screens[i].act(action, Instant::now()) else {
+            event_loop.exit();
+            return;
+        };
         self.update_title(i);
         self.present(event_loop, i, damage);
     }

@@ -1,10 +1,14 @@
-//! One window of the saver and the slide show drawn in it.
+//! One window of the saver and the slide show drawn in it: presenting it,
+//! its title, and what the window's keys do to it.
 
 use std::rc::Rc;
+use std::time::Instant;
 
 use winit::window::Window;
 
+use super::actions;
 use super::heads::Head;
+use super::input::Action;
 use super::present::Presenter;
 use super::show::Show;
 use crate::render::Rect;
@@ -64,6 +68,58 @@ impl Screen {
         if title != self.title {
             self.window.set_title(&title);
             self.title = title;
+        }
+    }
+
+    /// Carries out a window key's `action` on this window's show (saving
+    /// and opening files included); the part of the frame that changed, or
+    /// `None` when the action ends the saver.
+    pub(super) fn act(&mut self, action: Action, now: Instant) -> Option<Rect> {
+        let show = &mut self.show;
+        if let Some((settings, change)) = actions::changed_settings(action, show.settings()) {
+            return Some(show.change_settings(settings, change, now));
+        }
+        Some(match action {
+            Action::Quit => return None,
+            Action::NewMountain => show.new_mountain(now),
+            Action::ToggleHelp => show.toggle_help(now),
+            Action::TogglePause => {
+                show.toggle_pause(now);
+                Rect::default()
+            }
+            Action::SaveDataSet => {
+                let saved = show
+                    .current()
+                    .map(|m| actions::save_data_set(m, show.settings()));
+                actions::report(saved, "data set");
+                Rect::default()
+            }
+            Action::OpenDataSet => self.open_next(now),
+            Action::Screenshot => {
+                let seed = show.current().and_then(|m| m.seed);
+                actions::report(
+                    show.frame().map(|f| actions::save_screenshot(f, seed)),
+                    "screenshot",
+                );
+                Rect::default()
+            }
+            _ => Rect::default(),
+        })
+    }
+
+    /// The O key: the saved data set after the one opened last.
+    fn open_next(&mut self, now: Instant) -> Rect {
+        let current = self.opened_path.as_deref();
+        match actions::open_next_data_set(current, self.show.settings()) {
+            Ok((path, mountain)) => {
+                eprintln!("mountains: showing {}", path.display());
+                self.opened_path = Some(path);
+                self.show.open(mountain, now)
+            }
+            Err(e) => {
+                crate::log::warn(&format!("cannot open a data set: {e}"));
+                Rect::default()
+            }
         }
     }
 }
