@@ -189,37 +189,6 @@ pub struct Settings {
     pub heightmaps_dir: Option<String>,
 }
 
-impl Default for Settings {
-    fn default() -> Self {
-        Settings {
-            seed: None,
-            generator: Generator::Diamond,
-            cragginess: 96,
-            elevation: 100.0,
-            roughness: 2.0,
-            contour: 1.0,
-            profile: Profile::Slope,
-            height: 5,
-            erosion: 0.5,
-            detail: Detail::Auto,
-            low_detail: false,
-            sea_level: 0.0,
-            water_line: WaterLine::Coast,
-            color: ColorMode::Natural,
-            relative_depth: true,
-            shadows: true,
-            sun: Sun::Varied,
-            view: ViewKind::Vista,
-            rotation: 0,
-            auto_redraw: true,
-            draw_seconds: 8.0,
-            pause_seconds: 10.0,
-            monitors: Monitors::All,
-            heightmaps_dir: None,
-        }
-    }
-}
-
 impl Settings {
     /// The seed for the next mountain: the one set, or a fresh random one
     /// (`seed = "random"`). Fresh seeds fit a TOML integer, so a seed shown

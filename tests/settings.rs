@@ -230,6 +230,8 @@ fn every_key_writes_and_reads_only_its_own_field() {
     use mountains::settings::keys::{Kind, Value};
     let defaults = Settings::default();
     for key in KEYS {
+        // The row's default is what a default Settings holds.
+        assert_eq!(keys::get(&defaults, key), (key.default)(), "{}", key.name);
         let new = match key.kind {
             Kind::Int { max, .. } => Value::Int(max),
             Kind::Float { min, .. } => Value::Float(min),

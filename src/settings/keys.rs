@@ -128,6 +128,8 @@ pub struct Key {
     pub change: Change,
     /// One line for `--help` and the settings screen.
     pub doc: &'static str,
+    /// Its value when nothing sets it (what `Settings::default` holds).
+    pub default: fn() -> Value,
     /// Its value in a `Settings`.
     read: fn(&Settings) -> Value,
     /// Sets it in a `Settings` from a value `kind` allows; `None` otherwise.
@@ -145,13 +147,14 @@ const WATER_LINES: &[&str] = &["coast", "generator"];
 const SUNS: &[&str] = &["varied", "morning", "midday", "evening", "classic"];
 const MONITORS: &[&str] = &["all", "primary"];
 
-/// One row of the table: what the key is, then how it is read from and
-/// written into `Settings`.
+/// One row of the table: what the key is, its default, then how it is
+/// read from and written into `Settings`.
 const fn key(
     name: &'static str,
     kind: Kind,
     change: Change,
     doc: &'static str,
+    default: fn() -> Value,
     read: fn(&Settings) -> Value,
     write: fn(&mut Settings, &Key, &Value) -> Option<()>,
 ) -> Key {
@@ -160,6 +163,7 @@ const fn key(
         kind,
         change,
         doc,
+        default,
         read,
         write,
     }
@@ -172,6 +176,7 @@ pub const KEYS: &[Key] = &[
         Kind::Seed,
         Change::Next,
         "seed of the next mountain; \"random\" picks a new one each time",
+        || Value::Str("random".into()),
         |s| s.seed.map_or(Value::Str("random".into()), seed_value),
         |s, _, value| {
             s.seed = seed(value)?;
@@ -183,6 +188,7 @@ pub const KEYS: &[Key] = &[
         Kind::Choice(GENERATORS),
         Change::Next,
         "how heights are made",
+        || Value::Str("diamond".into()),
         |s| named(&s.generator),
         |s, key, value| {
             s.generator = choice::<Generator>(key, value)?;
@@ -194,6 +200,7 @@ pub const KEYS: &[Key] = &[
         Kind::Int { min: 1, max: 128 },
         Change::Next,
         "square generators: how sharply heights crease",
+        || Value::Int(96),
         |s| Value::Int(s.cragginess.into()),
         |s, key, value| {
             s.cragginess = int(key, value)? as u32;
@@ -208,6 +215,7 @@ pub const KEYS: &[Key] = &[
         },
         Change::Next,
         "square generators: range of the corner heights",
+        || Value::Float(100.0),
         |s| Value::Float(s.elevation.into()),
         |s, key, value| {
             s.elevation = float(key, value)?;
@@ -219,6 +227,7 @@ pub const KEYS: &[Key] = &[
         Kind::Float { min: 1.0, max: 5.0 },
         Change::Next,
         "triangle generator: smoothness base (higher = smoother sides)",
+        || Value::Float(2.0),
         |s| Value::Float(s.roughness.into()),
         |s, key, value| {
             s.roughness = float(key, value)?;
@@ -233,6 +242,7 @@ pub const KEYS: &[Key] = &[
         },
         Change::Next,
         "triangle generator: power on heights (<1 concave, >1 convex)",
+        || Value::Float(1.0),
         |s| Value::Float(s.contour.into()),
         |s, key, value| {
             s.contour = float(key, value)?;
@@ -244,6 +254,7 @@ pub const KEYS: &[Key] = &[
         Kind::Choice(PROFILES),
         Change::Next,
         "triangle generator: overall shape",
+        || Value::Str("slope".into()),
         |s| named(&s.profile),
         |s, key, value| {
             s.profile = choice::<Profile>(key, value)?;
@@ -255,6 +266,7 @@ pub const KEYS: &[Key] = &[
         Kind::Int { min: 1, max: 10 },
         Change::Next,
         "height of the peaks; also raises the treeline and snow",
+        || Value::Int(5),
         |s| Value::Int(s.height.into()),
         |s, key, value| {
             s.height = int(key, value)? as u32;
@@ -266,6 +278,7 @@ pub const KEYS: &[Key] = &[
         Kind::Float { min: 0.0, max: 1.0 },
         Change::Next,
         "rain wearing gullies into the slopes and silt at their feet (0 = none)",
+        || Value::Float(0.5),
         |s| Value::Float(s.erosion.into()),
         |s, key, value| {
             s.erosion = float(key, value)?;
@@ -277,6 +290,7 @@ pub const KEYS: &[Key] = &[
         Kind::IntOrAuto { min: 4, max: 12 },
         Change::Remake,
         "grid of 2^detail+1 points a side; \"auto\" fits it to the screen",
+        || Value::Str("auto".into()),
         |s| match s.detail {
             Detail::Auto => Value::Str("auto".into()),
             Detail::Level(n) => Value::Int(n.into()),
@@ -291,6 +305,7 @@ pub const KEYS: &[Key] = &[
         Kind::Bool,
         Change::Remake,
         "a quarter of the points: larger faces, faster drawing",
+        || Value::Bool(false),
         |s| Value::Bool(s.low_detail),
         |s, _, value| {
             s.low_detail = boolean(value)?;
@@ -305,6 +320,7 @@ pub const KEYS: &[Key] = &[
         },
         Change::Next,
         "water line as a fraction of the relief above or below water_line",
+        || Value::Float(0.0),
         |s| Value::Float(s.sea_level.into()),
         |s, key, value| {
             s.sea_level = float(key, value)?;
@@ -316,6 +332,7 @@ pub const KEYS: &[Key] = &[
         Kind::Choice(WATER_LINES),
         Change::Next,
         "sea_level 0: a coast on every mountain, or the generator's own zero",
+        || Value::Str("coast".into()),
         |s| named(&s.water_line),
         |s, key, value| {
             s.water_line = choice::<WaterLine>(key, value)?;
@@ -327,6 +344,7 @@ pub const KEYS: &[Key] = &[
         Kind::Choice(COLORS),
         Change::Repaint,
         "colour mode or filter",
+        || Value::Str("natural".into()),
         |s| named(&s.color),
         |s, key, value| {
             s.color = choice::<ColorMode>(key, value)?;
@@ -338,6 +356,7 @@ pub const KEYS: &[Key] = &[
         Kind::Bool,
         Change::Repaint,
         "darker water over deeper ground",
+        || Value::Bool(true),
         |s| Value::Bool(s.relative_depth),
         |s, _, value| {
             s.relative_depth = boolean(value)?;
@@ -349,6 +368,7 @@ pub const KEYS: &[Key] = &[
         Kind::Bool,
         Change::Repaint,
         "cast shadows from the light",
+        || Value::Bool(true),
         |s| Value::Bool(s.shadows),
         |s, _, value| {
             s.shadows = boolean(value)?;
@@ -360,6 +380,7 @@ pub const KEYS: &[Key] = &[
         Kind::Choice(SUNS),
         Change::Repaint,
         "time of day of the light; \"varied\" draws one per mountain",
+        || Value::Str("varied".into()),
         |s| named(&s.sun),
         |s, key, value| {
             s.sun = choice::<Sun>(key, value)?;
@@ -371,6 +392,7 @@ pub const KEYS: &[Key] = &[
         Kind::Choice(VIEWS),
         Change::Repaint,
         "projection",
+        || Value::Str("vista".into()),
         |s| named(&s.view),
         |s, key, value| {
             s.view = choice::<ViewKind>(key, value)?;
@@ -382,6 +404,7 @@ pub const KEYS: &[Key] = &[
         Kind::QuarterTurn,
         Change::Repaint,
         "side the mountain is seen from, in degrees",
+        || Value::Int(0),
         |s| Value::Int(s.rotation.into()),
         |s, _, value| {
             s.rotation = rotation(value)?;
@@ -393,6 +416,7 @@ pub const KEYS: &[Key] = &[
         Kind::Bool,
         Change::Nothing,
         "start a new mountain after the pause (slide show)",
+        || Value::Bool(true),
         |s| Value::Bool(s.auto_redraw),
         |s, _, value| {
             s.auto_redraw = boolean(value)?;
@@ -407,6 +431,7 @@ pub const KEYS: &[Key] = &[
         },
         Change::Nothing,
         "seconds to draw one mountain strip by strip",
+        || Value::Float(8.0),
         |s| Value::Float(s.draw_seconds.into()),
         |s, key, value| {
             s.draw_seconds = float(key, value)?;
@@ -421,6 +446,7 @@ pub const KEYS: &[Key] = &[
         },
         Change::Nothing,
         "seconds to hold a finished mountain",
+        || Value::Float(10.0),
         |s| Value::Float(s.pause_seconds.into()),
         |s, key, value| {
             s.pause_seconds = float(key, value)?;
@@ -432,6 +458,7 @@ pub const KEYS: &[Key] = &[
         Kind::Choice(MONITORS),
         Change::Nothing,
         "full screen: a mountain on every monitor, or the primary only",
+        || Value::Str("all".into()),
         |s| named(&s.monitors),
         |s, key, value| {
             s.monitors = choice::<Monitors>(key, value)?;
@@ -443,6 +470,7 @@ pub const KEYS: &[Key] = &[
         Kind::Path,
         Change::Nothing,
         "folder of PNG heightmaps mixed into the slide show",
+        || Value::Str(String::new()),
         |s| Value::Str(s.heightmaps_dir.clone().unwrap_or_default()),
         |s, _, value| {
             s.heightmaps_dir = path(value)?;
@@ -472,6 +500,52 @@ pub fn clamp_int(name: &str, value: u32) -> u32 {
         unreachable!("`{name}` is not a whole-number key")
     };
     (i64::from(value)).clamp(min, max) as u32
+}
+
+impl Default for Settings {
+    /// Every key at the default its row in the key table gives.
+    fn default() -> Self {
+        let mut s = Settings::unset();
+        for key in KEYS {
+            if let Err(e) = apply(&mut s, key, &(key.default)()) {
+                unreachable!("the default of `{}` is not allowed: {e}", key.name);
+            }
+        }
+        s
+    }
+}
+
+impl Settings {
+    /// Every field with a placeholder, each overwritten by `default` from
+    /// the key table (the values here mean nothing).
+    fn unset() -> Self {
+        Settings {
+            seed: None,
+            generator: Generator::Square,
+            cragginess: 0,
+            elevation: 0.0,
+            roughness: 0.0,
+            contour: 0.0,
+            profile: Profile::Slope,
+            height: 0,
+            erosion: 0.0,
+            detail: Detail::Auto,
+            low_detail: false,
+            sea_level: 0.0,
+            water_line: WaterLine::Coast,
+            color: ColorMode::Natural,
+            relative_depth: false,
+            shadows: false,
+            sun: Sun::Varied,
+            view: ViewKind::Vista,
+            rotation: 0,
+            auto_redraw: false,
+            draw_seconds: 0.0,
+            pause_seconds: 0.0,
+            monitors: Monitors::All,
+            heightmaps_dir: None,
+        }
+    }
 }
 
 /// Looks a key up by name.
