@@ -178,34 +178,15 @@ fn subdivide_all<P: Put>(
                 ordering,
                 cragginess: p.cragginess,
             };
-            let first_depth = if p.generator == Generator::Square {
-                rule.set_corners(heights, size, p.elevation, &noise, put);
-                0
-            } else {
-                rule.set_lattice(heights, size, p.elevation, &noise, put)
-            };
-            let job = Job {
-                rule: &rule,
-                put,
-                noise,
-                threads,
-                parallel_work: subdivide::PARALLEL_WORK,
-                // Only a moved water line needs the extremes.
-                extremes: p.sea_level != 0.0,
-            };
+            let first_depth = rule.start(heights, size, p.elevation, &noise, put);
+            // Only a moved water line needs the extremes.
+            let job = Job::new(&rule, put, noise, threads, p.sea_level != 0.0);
             subdivide::subdivide(heights, size, first_depth, &job)
         }
         Generator::Triangle => {
             let rule = triangle::Triangle::new(p.roughness, p.profile);
             rule.first_level(heights, size, &noise, put);
-            let job = Job {
-                rule: &rule,
-                put,
-                noise,
-                threads,
-                parallel_work: subdivide::PARALLEL_WORK,
-                extremes: true,
-            };
+            let job = Job::new(&rule, put, noise, threads, true);
             subdivide::subdivide(heights, size, 1, &job)
         }
     }

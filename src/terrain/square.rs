@@ -39,18 +39,38 @@ pub(crate) struct Square {
 }
 
 impl Square {
-    /// Sets the four corners to uniform values in `[-elevation/2, elevation/2)`.
-    pub(crate) fn set_corners<P: Put>(
+    /// Sets the starting points and returns the depth the subdivision goes
+    /// on from: the four corners for the midpoint generator (seed 003),
+    /// the [`LATTICE_DEPTH`] lattice for the diamond one.
+    pub(crate) fn start<P: Put>(
         &self,
         heights: &mut [f32],
         size: usize,
         elevation: f32,
         noise: &Noise,
         put: &P,
+    ) -> u32 {
+        let last = size - 1;
+        let step = last >> LATTICE_DEPTH;
+        if self.ordering == Ordering::Midpoint || step < 2 {
+            self.set_corners(heights, size, 0.5 * elevation, noise, put);
+            return 0;
+        }
+        self.set_lattice(heights, size, elevation, noise, put)
+    }
+
+    /// Sets the four corners to uniform values in `[-reach, reach)`.
+    fn set_corners<P: Put>(
+        &self,
+        heights: &mut [f32],
+        size: usize,
+        reach: f32,
+        noise: &Noise,
+        put: &P,
     ) {
         let last = size - 1;
         for (x, y) in [(0, 0), (last, 0), (0, last), (last, last)] {
-            put.put(&mut heights[y * size + x], 0.5 * elevation * noise.at(x, y));
+            put.put(&mut heights[y * size + x], reach * noise.at(x, y));
         }
     }
 }
@@ -65,9 +85,8 @@ impl Square {
     /// Sets the points of the [`LATTICE_DEPTH`] lattice to uniform values in
     /// `[-a, a)`, with `a` half the elevation plus the displacements the
     /// levels above the lattice would have added; returns the depth the
-    /// subdivision goes on from. Grids too coarse for the lattice keep the
-    /// four corners.
-    pub(crate) fn set_lattice<P: Put>(
+    /// subdivision goes on from (the grid is fine enough: see `start`).
+    fn set_lattice<P: Put>(
         &self,
         heights: &mut [f32],
         size: usize,
@@ -77,10 +96,6 @@ impl Square {
     ) -> u32 {
         let last = size - 1;
         let step = last >> LATTICE_DEPTH;
-        if step < 2 {
-            self.set_corners(heights, size, elevation, noise, put);
-            return 0;
-        }
         let reach = 0.5 * elevation + (0..LATTICE_DEPTH).map(|d| self.amplitude(d)).sum::<f32>();
         for y in (0..=last).step_by(step) {
             for x in (0..=last).step_by(step) {

@@ -153,6 +153,26 @@ pub(crate) struct Job<'a, R, P> {
     pub(crate) extremes: bool,
 }
 
+impl<'a, R, P> Job<'a, R, P> {
+    /// A job with the usual [`PARALLEL_WORK`].
+    pub(crate) fn new(
+        rule: &'a R,
+        put: &'a P,
+        noise: Noise,
+        threads: usize,
+        extremes: bool,
+    ) -> Self {
+        Job {
+            rule,
+            put,
+            noise,
+            threads,
+            parallel_work: PARALLEL_WORK,
+            extremes,
+        }
+    }
+}
+
 /// The usual [`Job::parallel_work`].
 pub(crate) const PARALLEL_WORK: usize = 1 << 17;
 
