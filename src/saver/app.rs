@@ -236,24 +236,20 @@ impl ApplicationHandler<UserEvent> for App {
         let grabbing = self.grab_input();
         #[cfg(not(unix))]
         let grabbing = false;
-        let wake = self
+        // Wake for the earliest of: a show's next strip or slide, the
+        // Windows preview's look at its parent, a retry of the input grab.
+        let shows = self
             .screens
             .iter()
             .filter_map(|s| s.show.wake_at(now))
             .min();
         #[cfg(windows)]
-        let wake = match self.mode {
-            AppMode::Child(_) => Some(wake.map_or(now + super::embed_win32::PARENT_POLL, |w| {
-                w.min(now + super::embed_win32::PARENT_POLL)
-            })),
-            _ => wake,
-        };
-        // Until the grab holds, look again at frame rate.
-        let retry = grabbing.then(|| now + super::slideshow::FRAME_INTERVAL);
-        let wake = match (wake, retry) {
-            (Some(w), Some(r)) => Some(w.min(r)),
-            (w, r) => w.or(r),
-        };
+        let parent =
+            matches!(self.mode, AppMode::Child(_)).then(|| now + super::embed_win32::PARENT_POLL);
+        #[cfg(not(windows))]
+        let parent = None;
+        let grab = grabbing.then(|| now + super::slideshow::FRAME_INTERVAL);
+        let wake = [shows, parent, grab].into_iter().flatten().min();
         event_loop.set_control_flow(wake.map_or(ControlFlow::Wait, ControlFlow::WaitUntil));
     }
 }
@@ -502,17 +498,14 @@ impl App {
     /// The preview child follows its parent's size and dies with it.
     #[cfg(windows)]
     fn follow_parent(&mut self, event_loop: &ActiveEventLoop, parent: u64) {
-        use super::embed_win32::{parent_alive, parent_client_size};
-        if !parent_alive(parent) {
+        use super::embed_win32::{follow_parent, parent_alive};
+        let alive = match self.screens.first() {
+            Some(s) => follow_parent(parent, &s.window),
+            None => parent_alive(parent),
+        };
+        if !alive {
             self.trace.ended_by(&"the parent window is gone");
             event_loop.exit();
-            return;
-        }
-        if let (Some((w, h)), Some(screen)) = (parent_client_size(parent), self.screens.first()) {
-            let size = screen.window.inner_size();
-            if (size.width, size.height) != (w, h) {
-                let _ = screen.window.request_inner_size(PhysicalSize::new(w, h));
-            }
         }
     }
 }

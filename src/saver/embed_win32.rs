@@ -25,6 +25,21 @@ pub fn parent_alive(handle: u64) -> bool {
     unsafe { IsWindow(hwnd(handle)) != 0 }
 }
 
+/// Keeps the preview `window` the size of its parent's client area; false
+/// once the parent is gone (the preview then ends).
+pub fn follow_parent(parent: u64, window: &winit::window::Window) -> bool {
+    if !parent_alive(parent) {
+        return false;
+    }
+    if let Some((w, h)) = parent_client_size(parent) {
+        let size = window.inner_size();
+        if (size.width, size.height) != (w, h) {
+            let _ = window.request_inner_size(PhysicalSize::new(w, h));
+        }
+    }
+    true
+}
+
 /// The parent's client area in pixels, if it can be read.
 pub fn parent_client_size(handle: u64) -> Option<(u32, u32)> {
     let mut rect = RECT {
