@@ -38,10 +38,20 @@ pub(crate) struct Square {
     pub(crate) cragginess: f32,
 }
 
+/// Depth of the diamond generator's starting lattice: 2^depth + 1 points
+/// a side (5x5), as xmountains starts from a coarse lattice (`-t`). Four
+/// corners make one tilted plane with a hill on it; a lattice makes
+/// several ranges, bays and valleys across the width.
+pub(crate) const LATTICE_DEPTH: u32 = 2;
+
 impl Square {
     /// Sets the starting points and returns the depth the subdivision goes
-    /// on from: the four corners for the midpoint generator (seed 003),
-    /// the [`LATTICE_DEPTH`] lattice for the diamond one.
+    /// on from. The midpoint generator (seed 003), and grids too coarse
+    /// for a lattice, start from the four corners, uniform in
+    /// `[-elevation/2, elevation/2)`. The diamond generator starts from the
+    /// [`LATTICE_DEPTH`] lattice, uniform in `[-a, a)` with `a` half the
+    /// elevation plus the displacements the levels above the lattice would
+    /// have added, times [`LATTICE_SPREAD`].
     pub(crate) fn start<P: Put>(
         &self,
         heights: &mut [f32],
@@ -52,60 +62,22 @@ impl Square {
     ) -> u32 {
         let last = size - 1;
         let step = last >> LATTICE_DEPTH;
-        if self.ordering == Ordering::Midpoint || step < 2 {
-            self.set_corners(heights, size, 0.5 * elevation, noise, put);
-            return 0;
-        }
-        self.set_lattice(heights, size, elevation, noise, put)
-    }
-
-    /// Sets the four corners to uniform values in `[-reach, reach)`.
-    fn set_corners<P: Put>(
-        &self,
-        heights: &mut [f32],
-        size: usize,
-        reach: f32,
-        noise: &Noise,
-        put: &P,
-    ) {
-        let last = size - 1;
-        for (x, y) in [(0, 0), (last, 0), (0, last), (last, last)] {
-            put.put(&mut heights[y * size + x], reach * noise.at(x, y));
-        }
-    }
-}
-
-/// Depth of the diamond generator's starting lattice: 2^depth + 1 points
-/// a side (5x5), as xmountains starts from a coarse lattice (`-t`). Four
-/// corners make one tilted plane with a hill on it; a lattice makes
-/// several ranges, bays and valleys across the width.
-pub(crate) const LATTICE_DEPTH: u32 = 2;
-
-impl Square {
-    /// Sets the points of the [`LATTICE_DEPTH`] lattice to uniform values in
-    /// `[-a, a)`, with `a` half the elevation plus the displacements the
-    /// levels above the lattice would have added; returns the depth the
-    /// subdivision goes on from (the grid is fine enough: see `start`).
-    fn set_lattice<P: Put>(
-        &self,
-        heights: &mut [f32],
-        size: usize,
-        elevation: f32,
-        noise: &Noise,
-        put: &P,
-    ) -> u32 {
-        let last = size - 1;
-        let step = last >> LATTICE_DEPTH;
-        let reach = 0.5 * elevation + (0..LATTICE_DEPTH).map(|d| self.amplitude(d)).sum::<f32>();
+        let (step, reach, depth) = if self.ordering == Ordering::Midpoint || step < 2 {
+            (last, 0.5 * elevation, 0)
+        } else {
+            let above: f32 = (0..LATTICE_DEPTH).map(|d| self.amplitude(d)).sum();
+            (
+                step,
+                LATTICE_SPREAD * (0.5 * elevation + above),
+                LATTICE_DEPTH,
+            )
+        };
         for y in (0..=last).step_by(step) {
             for x in (0..=last).step_by(step) {
-                put.put(
-                    &mut heights[y * size + x],
-                    LATTICE_SPREAD * reach * noise.at(x, y),
-                );
+                put.put(&mut heights[y * size + x], reach * noise.at(x, y));
             }
         }
-        LATTICE_DEPTH
+        depth
     }
 }
 
