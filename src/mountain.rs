@@ -48,8 +48,8 @@ impl Mountain {
     /// The data set at `path`, and the notes its reading left (values it
     /// set aside), for the caller to pass on; the message names the file.
     pub fn open(path: &Path) -> Result<(Self, Vec<String>), String> {
-        let data = heightmap::load(path).map_err(|e| e.to_string())?;
-        let notes = data.notes.clone();
+        let mut data = heightmap::load(path).map_err(|e| e.to_string())?;
+        let notes = std::mem::take(&mut data.notes);
         Ok((Mountain::loaded(data), notes))
     }
 

@@ -34,32 +34,33 @@ impl Redraw {
         settings: &Settings,
         size: (u32, u32),
     ) -> Result<Self, Box<Drawn>> {
-        let (theirs, their_settings) = (field.clone(), settings.clone());
-        let spawned = std::thread::Builder::new()
-            .name("redraw".into())
-            .spawn(move || draw(theirs, &their_settings, size));
-        match spawned {
-            Ok(handle) => Ok(Redraw { handle }),
-            Err(_) => Err(Box::new(draw(field, settings, size))),
-        }
+        let settings = settings.clone();
+        Redraw::run("redraw", move || draw(field, &settings, size))
     }
 
     /// Starts making the mountain of `seed` again under `made` (the
     /// generator's settings, detail fitted), then drawing it under
-    /// `settings`, on another thread; without a thread, here.
+    /// `settings`, as [`Redraw::start`] does.
     pub fn remake(
         seed: u64,
         made: Settings,
         settings: &Settings,
         size: (u32, u32),
     ) -> Result<Self, Box<Drawn>> {
-        let their_settings = settings.clone();
-        let work = move || {
+        let settings = settings.clone();
+        Redraw::run("remake", move || {
             let field = Arc::new(crate::terrain::generate(&made, seed));
-            draw(field, &their_settings, size)
-        };
+            draw(field, &settings, size)
+        })
+    }
+
+    /// `work` on a thread of its own, or here if none can be started.
+    fn run(
+        name: &str,
+        work: impl FnOnce() -> Drawn + Clone + Send + 'static,
+    ) -> Result<Self, Box<Drawn>> {
         match std::thread::Builder::new()
-            .name("remake".into())
+            .name(name.into())
             .spawn(work.clone())
         {
             Ok(handle) => Ok(Redraw { handle }),

@@ -292,9 +292,7 @@ impl Show {
             return self.begin_redraw(now);
         };
         for key in keys::KEYS.iter().filter(|k| k.change == Change::Remake) {
-            let value = keys::get(&self.settings, key);
-            // The value came from a valid Settings: it applies.
-            let _ = keys::apply(&mut self.made_with, key, &value);
+            keys::copy(key, &self.settings, &mut self.made_with);
         }
         let made = self.generator_settings_for(&self.made_with);
         self.painter = None;

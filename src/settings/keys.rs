@@ -479,15 +479,17 @@ pub const KEYS: &[Key] = &[
     ),
 ];
 
-/// `value` clamped into number key `name`'s range, or `fallback` if it is
-/// NaN: for code given `Settings` built by hand rather than read through
-/// this table (the generator, the palette), so no value can stall them.
-pub fn clamp_float(name: &str, value: f32, fallback: f32) -> f32 {
-    let Some(Kind::Float { min, max }) = find(name).map(|k| k.kind) else {
+/// `value` clamped into number key `name`'s range, or the key's default if
+/// it is NaN: for code given `Settings` built by hand rather than read
+/// through this table (the generator, the palette), so no value can stall
+/// them.
+pub fn clamp_float(name: &str, value: f32) -> f32 {
+    let key = find(name).unwrap_or_else(|| unreachable!("`{name}` is not a key"));
+    let (Kind::Float { min, max }, Value::Float(default)) = (key.kind, (key.default)()) else {
         unreachable!("`{name}` is not a number key")
     };
     if value.is_nan() {
-        fallback
+        default as f32
     } else {
         value.clamp(min as f32, max as f32)
     }
@@ -546,6 +548,12 @@ impl Settings {
             heightmaps_dir: None,
         }
     }
+}
+
+/// Gives `to` the value `key` has in `from`. A value read from a Settings
+/// is one the key allows, so this cannot fail.
+pub fn copy(key: &Key, from: &Settings, to: &mut Settings) {
+    let _ = (key.write)(to, key, &(key.read)(from));
 }
 
 /// Looks a key up by name.

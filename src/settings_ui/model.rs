@@ -107,7 +107,7 @@ impl Model {
         let mut merged = fresh.clone();
         for (i, key) in KEYS.iter().enumerate() {
             if self.changed(i) {
-                let _ = keys::apply(&mut merged, key, &keys::get(&self.settings, key));
+                keys::copy(key, &self.settings, &mut merged);
             }
         }
         let focus = self.focus;

@@ -26,18 +26,17 @@ impl Params {
     /// Clamps each setting into its range in the key table; a NaN falls
     /// back to the default.
     pub(crate) fn from_settings(s: &Settings) -> Self {
-        let d = Settings::default();
         Params {
             generator: s.generator,
             exponent: s.grid_exponent().clamp(MIN_EXPONENT, MAX_EXPONENT),
             cragginess: clamp_int("cragginess", s.cragginess) as f32,
-            elevation: clamp_float("elevation", s.elevation, d.elevation),
-            roughness: clamp_float("roughness", s.roughness, d.roughness),
-            contour: clamp_float("contour", s.contour, d.contour),
+            elevation: clamp_float("elevation", s.elevation),
+            roughness: clamp_float("roughness", s.roughness),
+            contour: clamp_float("contour", s.contour),
             profile: s.profile,
             height: clamp_int("height", s.height) as f32,
-            erosion: clamp_float("erosion", s.erosion, d.erosion),
-            sea_level: clamp_float("sea_level", s.sea_level, d.sea_level),
+            erosion: clamp_float("erosion", s.erosion),
+            sea_level: clamp_float("sea_level", s.sea_level),
             water_line: s.water_line,
         }
     }
@@ -109,6 +108,15 @@ mod tests {
         };
         let p = Params::from_settings(&high);
         assert_eq!(p.elevation, range("elevation").1);
+        // A NaN takes the key's default.
+        let nan = Settings {
+            roughness: f32::NAN,
+            ..Settings::default()
+        };
+        assert_eq!(
+            Params::from_settings(&nan).roughness,
+            Settings::default().roughness
+        );
         assert_eq!(p.roughness, range("roughness").1);
         assert_eq!(p.cragginess, range("cragginess").1);
         assert_eq!(p.height, range("height").1);

@@ -111,9 +111,7 @@ impl GeneratorParams {
 /// Copies the generator keys from `from` into `to`, through the key table.
 fn copy_param_keys(from: &Settings, to: &mut Settings) {
     for &(_, name) in PARAM_KEYS {
-        let key = table_key(name);
-        // A value read from a valid Settings always applies.
-        let _ = keys::apply(to, key, &keys::get(from, key));
+        keys::copy(table_key(name), from, to);
     }
 }
 
