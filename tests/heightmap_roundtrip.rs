@@ -177,6 +177,44 @@ fn unstorable_fields_are_refused() {
     }
 }
 
+/// A field the reader would refuse is refused by the writer, naming the key:
+/// a file of ours must always load again.
+#[test]
+fn fields_outside_the_files_ranges_are_refused_on_saving() {
+    let cases: [(f32, f32, &str); 4] = [
+        (100_037.46, 0.0, "mountains:offset"),
+        (-100_001.0, 10.0, "mountains:offset"),
+        (0.0, 70_000.0, "mountains:scale"),
+        (0.0, 1.0, "mountains:extent"),
+    ];
+    for (i, (base, relief, key)) in cases.into_iter().enumerate() {
+        let extent = if key == "mountains:extent" {
+            2e5
+        } else {
+            400.0
+        };
+        let mut f = Heightfield::flat(4, extent);
+        for (j, h) in f.heights_mut().iter_mut().enumerate() {
+            *h = base + relief * (j % 7) as f32 / 6.0;
+        }
+        let e = encode(&f, Some(1), &Settings::default(), Path::new(P)).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::BadField, "case {i}: {e}");
+        assert!(e.problem.contains(key), "case {i}: {e}");
+        assert!(e.problem.contains("loads again"), "case {i}: {e}");
+    }
+}
+
+/// Whether `f` lies outside what a data set file can hold (see meta.rs).
+fn outside_the_file_format(f: &Heightfield) -> bool {
+    let (lo, hi) = f
+        .heights()
+        .iter()
+        .fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), &h| {
+            (lo.min(h), hi.max(h))
+        });
+    !(-1e5..=1e5).contains(&lo) || f64::from(hi) - f64::from(lo) > 65535.0
+}
+
 #[test]
 fn refit_keeps_corners_and_relief() {
     let f = field(7, 400.0);
@@ -215,7 +253,14 @@ proptest! {
     #[test]
     fn roundtrip_exact_for_random_fields(f in arb_field(), seed in proptest::option::of(any::<u64>())) {
         let s = Settings::default();
-        let first = encode(&f, seed, &s, Path::new(P)).unwrap();
+        let first = match encode(&f, seed, &s, Path::new(P)) {
+            Ok(bytes) => bytes,
+            Err(e) => {
+                prop_assert_eq!(&e.kind, &ErrorKind::BadField);
+                prop_assert!(outside_the_file_format(&f), "refused a storable field: {}", e);
+                return Ok(());
+            }
+        };
         let loaded = decode(&first, Path::new(P)).unwrap();
         let second = encode(&loaded.field, seed, &s, Path::new(P)).unwrap();
         prop_assert!(first == second);

@@ -27,6 +27,11 @@ pub fn encode(
     }
     let (min, max) = min_max(field.heights());
     let q = Quantisation::spanning(min, max);
+    if let Err((key, why)) = meta::check_storable(&q, extent) {
+        return Err(bad(&format!(
+            "the heightfield cannot be stored so that it loads again: {key}: {why}"
+        )));
+    }
     let pixels: Vec<u8> = field
         .heights()
         .iter()

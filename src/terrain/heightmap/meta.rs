@@ -142,7 +142,7 @@ pub fn to_pairs(
         (KEY_FORMAT, FORMAT_VERSION.to_string()),
         (KEY_SCALE, q.scale.to_string()),
         (KEY_OFFSET, q.offset.to_string()),
-        (KEY_SEA_LEVEL, String::from("0")),
+        (KEY_SEA_LEVEL, WRITTEN_SEA_LEVEL.to_string()),
         (KEY_EXTENT, extent.to_string()),
     ];
     // Parameters without the seed could not regenerate anything, and a field
@@ -152,6 +152,23 @@ pub fn to_pairs(
         pairs.extend(GeneratorParams::from_settings(settings).to_pairs());
     }
     pairs
+}
+
+/// The sea level our files carry: heights are stored as the generator made
+/// them, whose sea is at 0.
+const WRITTEN_SEA_LEVEL: f32 = 0.0;
+
+/// Whether a field stored with `q` over `extent` would be read back: the
+/// writer holds itself to the reader's ranges, so no file of ours is refused
+/// on loading. On failure, the key and why.
+pub fn check_storable(q: &Quantisation, extent: f32) -> Result<(), (&'static str, String)> {
+    check_ranges(&Metadata {
+        scale: Some(q.scale),
+        offset: Some(q.offset),
+        sea_level: Some(WRITTEN_SEA_LEVEL),
+        extent: Some(extent),
+        ..Metadata::default()
+    })
 }
 
 /// What the text chunks said, checked.
