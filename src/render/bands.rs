@@ -42,7 +42,7 @@ pub(crate) fn render(scene: &Scene, frame: &mut Frame) {
     // draws in place.
     let spare = Vec::<u32>::new().try_reserve_exact(width as usize * height as usize);
     if threads < 2 || bands < 2 || spare.is_err() {
-        let mut canvas = Canvas::new(frame.pixels_mut(), width, 0);
+        let mut canvas = canvas_for(scene, frame.pixels_mut(), 0, width);
         draw(scene, &mut canvas, &mut Rows::new(), width);
         return;
     }
@@ -61,7 +61,7 @@ pub(crate) fn render(scene: &Scene, frame: &mut Frame) {
             let mut pixels = vec![0u32; (w * height) as usize];
             draw(
                 scene,
-                &mut Canvas::window(&mut pixels, x0, w, 0),
+                &mut canvas_for(scene, &mut pixels, x0, w),
                 &mut rows,
                 width,
             );
@@ -87,10 +87,29 @@ pub(crate) fn render(scene: &Scene, frame: &mut Frame) {
     }
 }
 
-/// The sky, then every strip, into `canvas`.
+/// A canvas over columns `x0..x0 + width` of whole frame rows: filled faces
+/// are drawn front to back keeping the first write, so the faces hidden
+/// behind nearer land are skipped (the same pixels as back to front); lines
+/// (Sonar, Outline) back to front.
+fn canvas_for<'a>(scene: &Scene, pixels: &'a mut [u32], x0: u32, width: u32) -> Canvas<'a> {
+    if scene.style.is_filled() {
+        Canvas::first_write(pixels, x0, width, 0)
+    } else {
+        Canvas::window(pixels, x0, width, 0)
+    }
+}
+
+/// The sky, then every strip, into `canvas`; on a canvas that keeps the
+/// first write, the strips front to back and then the sky where they left
+/// the canvas unwritten.
 fn draw(scene: &Scene, canvas: &mut Canvas, rows: &mut Rows, frame_width: u32) {
-    scene.sky.paint(canvas);
+    if !canvas.keeps_first() {
+        scene.sky.paint(canvas);
+    }
     draw_strips(scene, canvas, rows, 0..scene.strips(), frame_width);
+    if canvas.keeps_first() {
+        scene.sky.paint(canvas);
+    }
 }
 
 /// Puts a band's pixels into its columns of `frame`.

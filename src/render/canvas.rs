@@ -4,6 +4,11 @@
 //! stepping uses one canvas that is the whole frame. Either way a pixel only
 //! ever receives the writes of one canvas, in painter's order, so the results
 //! are identical.
+//!
+//! A canvas either keeps the last write to a pixel (the painter's order,
+//! back to front) or the first (the same order reversed, front to back).
+//! Both end with the same pixels; the second lets the full frame skip the
+//! faces hidden behind what is already drawn.
 
 use super::frame::Rect;
 use super::raster::Clip;
@@ -16,7 +21,14 @@ pub(crate) struct Canvas<'a> {
     y0: u32,
     clip: Clip,
     damage: Rect,
+    /// Keeping the first write: for each column, the top of the run of
+    /// written pixels that reaches the bottom row (`clip.y1` when empty).
+    solid: Option<Vec<i64>>,
 }
+
+/// What an unwritten pixel of a first-write canvas holds: drawn colours
+/// are `0x00RRGGBB`, so none is this.
+const UNSET: u32 = 0xff00_0000;
 
 impl<'a> Canvas<'a> {
     /// `pixels` holds rows `y0..` of the frame, whole rows.
@@ -39,6 +51,86 @@ impl<'a> Canvas<'a> {
                 y1: (y0 + rows) as i64,
             },
             damage: Rect::default(),
+            solid: None,
+        }
+    }
+
+    /// Like [`Canvas::window`], but a pixel keeps the first colour written to
+    /// it: draw front to back. All pixels start unwritten.
+    pub(crate) fn first_write(pixels: &'a mut [u32], x0: u32, width: u32, y0: u32) -> Self {
+        pixels.fill(UNSET);
+        let mut canvas = Self::window(pixels, x0, width, y0);
+        canvas.solid = Some(vec![canvas.clip.y1; width as usize]);
+        canvas
+    }
+
+    /// Whether this canvas keeps the first write (is drawn front to back).
+    #[inline]
+    pub(crate) fn keeps_first(&self) -> bool {
+        self.solid.is_some()
+    }
+
+    /// Whether every pixel of columns `x0..=x1` from row `y0` down is
+    /// written already: on a first-write canvas, nothing drawn there shows.
+    #[inline]
+    pub(crate) fn hidden(&self, x0: i64, x1: i64, y0: i64) -> bool {
+        let Some(solid) = &self.solid else {
+            return false;
+        };
+        let (a, b) = ((x0 - self.clip.x0) as usize, (x1 - self.clip.x0) as usize);
+        solid[a..=b].iter().all(|&top| top <= y0)
+    }
+
+    /// Sets row `y`, columns `x0..x1` (frame coordinates, already clipped)
+    /// to `colour(x)`, or on a first-write canvas its unwritten pixels.
+    #[inline]
+    pub(crate) fn fill_with(&mut self, y: u32, x0: u32, x1: u32, colour: impl Fn(u32) -> u32) {
+        if self.solid.is_none() {
+            for (px, x) in self.span_mut(y, x0, x1).iter_mut().zip(x0..) {
+                *px = colour(x);
+            }
+            return;
+        }
+        for (px, x) in self.span_mut(y, x0, x1).iter_mut().zip(x0..) {
+            if *px == UNSET {
+                *px = colour(x);
+            }
+        }
+        self.grow_solid(y, x0, x1);
+    }
+
+    /// Sets row `y`, columns `x0..x1` to one colour, as [`Canvas::fill_with`].
+    #[inline]
+    pub(crate) fn fill(&mut self, y: u32, x0: u32, x1: u32, colour: u32) {
+        if self.solid.is_none() {
+            self.span_mut(y, x0, x1).fill(colour);
+        } else {
+            self.fill_with(y, x0, x1, |_| colour);
+        }
+    }
+
+    /// After row `y`, columns `x0..x1` were written: lifts the solid run of
+    /// each column that the row joins, over the written pixels above it.
+    #[inline]
+    fn grow_solid(&mut self, y: u32, x0: u32, x1: u32) {
+        let Some(solid) = &mut self.solid else {
+            return;
+        };
+        let y = i64::from(y);
+        for x in x0..x1 {
+            let c = (x - self.x0) as usize;
+            if solid[c] != y + 1 {
+                continue;
+            }
+            let mut top = y;
+            while top > self.clip.y0 {
+                let i = (top - 1 - i64::from(self.y0)) as usize * self.width as usize + c;
+                if self.pixels[i] == UNSET {
+                    break;
+                }
+                top -= 1;
+            }
+            solid[c] = top;
         }
     }
 

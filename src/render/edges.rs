@@ -11,9 +11,7 @@
 use glam::Vec2;
 
 use super::canvas::Canvas;
-use super::raster::{
-    Clip, Fixed2, SUBPIXEL, cell_covers_a_centre, draw_line, draw_line_end, fill_triangle,
-};
+use super::raster::{Clip, Fixed2, SUBPIXEL, centre_box, draw_line, draw_line_end, fill_triangle};
 use super::scene::{Scene, Vert};
 
 /// Which of a cell's edges it draws.
@@ -137,7 +135,7 @@ impl Scene<'_> {
     /// Sonar: both triangles of a cell in black.
     fn black_cell(&self, canvas: &mut Canvas, [tl, tr, bl, br]: [&Vert; 4], rightward: bool) {
         let clip = *canvas.clip();
-        if !cell_covers_a_centre([tl.p, tr.p, bl.p, br.p], &clip) {
+        if centre_box([tl.p, tr.p, bl.p, br.p], &clip).is_none() {
             return;
         }
         let mut fill = |v: [Fixed2; 3]| {

@@ -271,26 +271,26 @@ fn scan_row(start: [i64; 3], step: [i64; 3], ix0: i64, ix1: i64) -> (i64, i64) {
     (ix0 + first, ix0 + last)
 }
 
-/// Whether the bounding box of a cell's corners holds the centre of a pixel
-/// inside `clip`: a cheap test that skips most cells of a fine grid, and
-/// the cells of other bands (both triangles lie inside that box).
+/// The pixels inside `clip` whose centres lie in the bounding box of a
+/// cell's corners, as first and last column and row (`[x0, x1, y0, y1]`),
+/// if any: a cheap test that skips most cells of a fine grid, and the cells
+/// of other bands (both triangles lie inside that box).
 #[inline]
-pub(crate) fn cell_covers_a_centre(p: [Fixed2; 4], clip: &Clip) -> bool {
+pub(crate) fn centre_box(p: [Fixed2; 4], clip: &Clip) -> Option<[i64; 4]> {
     let lo = |i: usize| p[0][i].min(p[1][i]).min(p[2][i]).min(p[3][i]);
     let hi = |i: usize| p[0][i].max(p[1][i]).max(p[2][i]).max(p[3][i]);
-    has_centre(lo(0), hi(0), clip.x0, clip.x1) && has_centre(lo(1), hi(1), clip.y0, clip.y1)
+    let (x0, x1) = centres_in(lo(0), hi(0), clip.x0, clip.x1)?;
+    let (y0, y1) = centres_in(lo(1), hi(1), clip.y0, clip.y1)?;
+    Some([x0, x1, y0, y1])
 }
 
-/// Whether the centre (n + 1/2) of a pixel n in `first..end` lies in
-/// `lo..=hi` (fixed point).
+/// The first and last pixel n in `first..end` whose centre (n + 1/2) lies
+/// in `lo..=hi` (fixed point), if any.
 #[inline]
-fn has_centre(lo: i64, hi: i64, first: i64, end: i64) -> bool {
-    let half = SUBPIXEL / 2;
-    let (a, b) = (
-        (-((half - lo) >> 8)).max(first),
-        ((hi - half) >> 8).min(end - 1),
-    );
-    a <= b
+fn centres_in(lo: i64, hi: i64, first: i64, end: i64) -> Option<(i64, i64)> {
+    let (a, b) = centres_within(lo, hi);
+    let (a, b) = (a.max(first), b.min(end - 1));
+    (a <= b).then_some((a, b))
 }
 
 /// Calls `plot(x, y)` for each pixel of the one-pixel-wide (8-connected)

@@ -29,6 +29,11 @@ pub(crate) enum Style {
 }
 
 impl Style {
+    /// Whether faces are filled (Shaded, Mono), not drawn as lines.
+    pub(crate) fn is_filled(self) -> bool {
+        matches!(self, Style::Shaded | Style::Mono)
+    }
+
     /// The style a colour mode draws with (Ridges is handled elsewhere).
     pub(crate) fn of(mode: ColorMode) -> Self {
         match mode {

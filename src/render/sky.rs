@@ -35,7 +35,7 @@ impl Sky {
         }
     }
 
-    /// Fills every row of `canvas`.
+    /// Fills every row of `canvas` (on a first-write canvas, what is left).
     pub(crate) fn paint(&self, canvas: &mut Canvas) {
         let clip = *canvas.clip();
         let (x0, x1) = (clip.x0 as u32, clip.x1 as u32);
@@ -48,9 +48,7 @@ impl Sky {
                 1.0 => below[(y & 3) as usize],
                 t => self.colours_at(t, y),
             };
-            for (px, x) in canvas.span_mut(y, x0, x1).iter_mut().zip(x0..) {
-                *px = phases[(x & 3) as usize];
-            }
+            canvas.fill_with(y, x0, x1, |x| phases[(x & 3) as usize]);
         }
     }
 

@@ -6,7 +6,7 @@ use glam::{Vec2, Vec3};
 use super::canvas::Canvas;
 use super::colour::blend_packed;
 use super::dither;
-use super::raster::{Fixed2, cell_covers_a_centre, fill_triangle};
+use super::raster::{Fixed2, centre_box, fill_triangle};
 use super::scene::{Scene, Style, Vert};
 
 /// White and black, the only two colours of Mono.
@@ -59,24 +59,32 @@ impl Scene<'_> {
         let last = self.cells();
         let (y0, y1) = self.strip_grid_rows(s);
         let split = self.split.clamp(cells.start, cells.end);
-        for x in cells.start..split {
-            self.fill_cell(canvas, (y0, y1), x, top, bottom, true);
-        }
-        for x in (split..cells.end).rev() {
-            self.fill_cell(canvas, (y0, y1), x, top, bottom, false);
-        }
-        if self.sees_right && cells.end == last {
-            let a = Corner::at(last, y0, &top[last]);
-            let b = Corner::at(last, y1, &bottom[last]);
-            self.fill_skirt(canvas, a, b, Vec3::X);
-        }
-        if self.sees_front && s + 1 == self.strips() {
-            for x in cells {
-                let a = Corner::at(x, y1, &bottom[x]);
-                let b = Corner::at(x + 1, y1, &bottom[x + 1]);
-                self.fill_skirt(canvas, a, b, Vec3::NEG_Y);
+        let cell = |canvas: &mut Canvas, x: usize, rightward: bool| {
+            self.fill_cell(canvas, (y0, y1), x, top, bottom, rightward);
+        };
+        let right_skirt = |canvas: &mut Canvas| {
+            if self.sees_right && cells.end == last {
+                let a = Corner::at(last, y0, &top[last]);
+                let b = Corner::at(last, y1, &bottom[last]);
+                self.fill_skirt(canvas, a, b, Vec3::X);
             }
-        }
+        };
+        let front_skirts = |canvas: &mut Canvas| {
+            if self.sees_front && s + 1 == self.strips() {
+                painter_order(canvas, cells.clone(), |canvas, x| {
+                    let a = Corner::at(x, y1, &bottom[x]);
+                    let b = Corner::at(x + 1, y1, &bottom[x + 1]);
+                    self.fill_skirt(canvas, a, b, Vec3::NEG_Y);
+                });
+            }
+        };
+        let parts: [&dyn Fn(&mut Canvas); 4] = [
+            &|canvas| painter_order(canvas, cells.start..split, |c, x| cell(c, x, true)),
+            &|canvas| painter_order(canvas, (split..cells.end).rev(), |c, x| cell(c, x, false)),
+            &right_skirt,
+            &front_skirts,
+        ];
+        painter_order(canvas, parts.into_iter(), |canvas, part| part(canvas));
     }
 
     /// The two triangles of the cell at column `x` between grid rows `ys`,
@@ -97,20 +105,24 @@ impl Scene<'_> {
         // plane, possibly outside its corners' box: never skip those.
         let crosses = h.iter().any(|&h| h < 0.0) && h.iter().any(|&h| h > 0.0);
         let corners = [top[x].p, top[x + 1].p, bottom[x].p, bottom[x + 1].p];
-        if !crosses && !cell_covers_a_centre(corners, canvas.clip()) {
-            return;
+        if !crosses {
+            match centre_box(corners, canvas.clip()) {
+                Some([x0, x1, y0, _]) if !canvas.hidden(x0, x1, y0) => {}
+                _ => return,
+            }
         }
         let tl = Corner::at(x, y0, &top[x]);
         let tr = Corner::at(x + 1, y0, &top[x + 1]);
         let bl = Corner::at(x, y1, &bottom[x]);
         let br = Corner::at(x + 1, y1, &bottom[x + 1]);
-        if rightward {
-            self.fill_face(canvas, [tl, tr, bl]);
-            self.fill_face(canvas, [tr, br, bl]);
+        let faces = if rightward {
+            [[tl, tr, bl], [tr, br, bl]]
         } else {
-            self.fill_face(canvas, [tl, tr, br]);
-            self.fill_face(canvas, [tl, br, bl]);
-        }
+            [[tl, tr, br], [tl, br, bl]]
+        };
+        painter_order(canvas, faces.into_iter(), |canvas, f| {
+            self.fill_face(canvas, f)
+        });
     }
 
     /// One grid triangle: water, land, or both split at the water line
@@ -142,15 +154,19 @@ impl Scene<'_> {
         let m1 = self.shore(a, s1);
         let normal = self.face_normal(&c);
         let lit = lit_of(&c);
-        if wet[odd] {
-            self.fill_water(canvas, [a, m0, m1]);
-            self.fill_land(canvas, [m0, s0, s1], || normal, lit);
-            self.fill_land(canvas, [m0, s1, m1], || normal, lit);
-        } else {
-            self.fill_land(canvas, [a, m0, m1], || normal, lit);
-            self.fill_water(canvas, [m0, s0, s1]);
-            self.fill_water(canvas, [m0, s1, m1]);
-        }
+        // The odd corner's part first, then the other side's two.
+        let parts = [[a, m0, m1], [m0, s0, s1], [m0, s1, m1]];
+        painter_order(
+            canvas,
+            parts.into_iter().enumerate(),
+            |canvas, (i, part)| {
+                if (i == 0) == wet[odd] {
+                    self.fill_water(canvas, part);
+                } else {
+                    self.fill_land(canvas, part, || normal, lit);
+                }
+            },
+        );
     }
 
     /// Where the edge from `a` to `b` (one wet, one dry) meets sea level.
@@ -226,8 +242,10 @@ impl Scene<'_> {
         };
         let (fa, fb) = (foot(a), foot(b));
         let colour = self.hazed(self.palette.skirt(normal), &[a, b, fa]);
-        self.paint(canvas, [a.p, b.p, fb.p], || colour);
-        self.paint(canvas, [a.p, fb.p, fa.p], || colour);
+        let halves = [[a.p, b.p, fb.p], [a.p, fb.p, fa.p]];
+        painter_order(canvas, halves.into_iter(), |canvas, v| {
+            self.paint(canvas, v, || colour)
+        });
     }
 
     /// `colour` faded by the air between the viewer and the face's corners.
@@ -266,17 +284,30 @@ impl Scene<'_> {
     #[inline]
     fn put(canvas: &mut Canvas, paint: Paint, y: u32, x0: u32, x1: u32) {
         match paint {
-            Paint::Solid(c) => canvas.span_mut(y, x0, x1).fill(c),
-            Paint::Dither(level) => {
-                for (px, x) in canvas.span_mut(y, x0, x1).iter_mut().zip(x0..) {
-                    *px = if dither::is_on(level, x, y) {
-                        WHITE
-                    } else {
-                        BLACK
-                    };
+            Paint::Solid(c) => canvas.fill(y, x0, x1, c),
+            Paint::Dither(level) => canvas.fill_with(y, x0, x1, |x| {
+                if dither::is_on(level, x, y) {
+                    WHITE
+                } else {
+                    BLACK
                 }
-            }
+            }),
         }
+    }
+}
+
+/// Calls `f` on each of `items` in the painter's order: as given, back to
+/// front, on a canvas that keeps the last write; reversed on one that keeps
+/// the first. Either way each pixel ends with the same colour.
+pub(crate) fn painter_order<I: DoubleEndedIterator>(
+    canvas: &mut Canvas,
+    items: I,
+    mut f: impl FnMut(&mut Canvas, I::Item),
+) {
+    if canvas.keeps_first() {
+        items.rev().for_each(|i| f(canvas, i));
+    } else {
+        items.for_each(|i| f(canvas, i));
     }
 }
 

@@ -6,14 +6,15 @@ use std::ops::Range;
 
 use super::canvas::Canvas;
 use super::scene::{Scene, Style, Vert};
+use super::strip::painter_order;
 
 /// Two projected grid rows, reused from strip to strip; only the points a
 /// strip's cells need are projected.
 pub(crate) struct Rows {
     top: Vec<Vert>,
     bottom: Vec<Vert>,
-    /// The grid row `bottom` holds, if any, and which of its points.
-    bottom_row: Option<(usize, Range<usize>)>,
+    /// The grid rows `top` and `bottom` hold, if any, and which points.
+    held: Option<[(usize, Range<usize>); 2]>,
 }
 
 impl Rows {
@@ -21,35 +22,58 @@ impl Rows {
         Rows {
             top: Vec::new(),
             bottom: Vec::new(),
-            bottom_row: None,
+            held: None,
         }
     }
 
     /// Makes `top` and `bottom` hold points `xs` of the grid rows at the
-    /// back and the front of strip `s`.
+    /// back and the front of strip `s`. Walking back to front, the last
+    /// strip's front row is this one's back row; front to back, its back
+    /// row is this one's front row: that row is kept, not projected again.
     fn load(&mut self, scene: &Scene, s: usize, xs: Range<usize>) {
         let (back, front) = scene.strip_grid_rows(s);
         let n = scene.cells() + 1;
         self.top.resize(n, Vert::default());
         self.bottom.resize(n, Vert::default());
-        match self.bottom_row.take() {
-            Some((row, had)) if row == back => {
+        let fresh = |row: usize, out: &mut [Vert]| scene.project_points(row, xs.clone(), out);
+        match self.held.take() {
+            Some([_, (row, had)]) if row == back => {
                 std::mem::swap(&mut self.top, &mut self.bottom);
-                // Project only the points the last strip did not need.
-                let before = xs.start..had.start.clamp(xs.start, xs.end);
-                scene.project_points(back, before, &mut self.top);
-                let after = had.end.clamp(xs.start, xs.end)..xs.end;
-                scene.project_points(back, after, &mut self.top);
+                project_missing(scene, back, &xs, &had, &mut self.top);
+                fresh(front, &mut self.bottom);
             }
-            _ => scene.project_points(back, xs.clone(), &mut self.top),
+            Some([(row, had), _]) if row == front => {
+                std::mem::swap(&mut self.top, &mut self.bottom);
+                project_missing(scene, front, &xs, &had, &mut self.bottom);
+                fresh(back, &mut self.top);
+            }
+            _ => {
+                fresh(back, &mut self.top);
+                fresh(front, &mut self.bottom);
+            }
         }
-        scene.project_points(front, xs.clone(), &mut self.bottom);
-        self.bottom_row = Some((front, xs));
+        self.held = Some([(back, xs.clone()), (front, xs)]);
     }
 }
 
-/// Draws `strips` of `scene` into `canvas`, skipping strips that cannot
-/// touch the canvas's rows. A canvas narrower than the `frame_width` walks
+/// Projects the points `xs` of grid `row` into `out`, which holds the
+/// points `had` of that row already.
+fn project_missing(
+    scene: &Scene,
+    row: usize,
+    xs: &Range<usize>,
+    had: &Range<usize>,
+    out: &mut [Vert],
+) {
+    let before = xs.start..had.start.clamp(xs.start, xs.end);
+    scene.project_points(row, before, out);
+    let after = had.end.clamp(xs.start, xs.end)..xs.end;
+    scene.project_points(row, after, out);
+}
+
+/// Draws `strips` of `scene` into `canvas` in the painter's order (back to
+/// front, or reversed on a canvas that keeps the first write), skipping
+/// strips that cannot touch the canvas's rows. A canvas narrower than the `frame_width` walks
 /// only the cells that can reach its columns (filled styles; the lines of
 /// Sonar and Outline are cheap and walk every cell).
 pub(crate) fn draw_strips(
@@ -62,19 +86,19 @@ pub(crate) fn draw_strips(
     let clip = *canvas.clip();
     let narrow = clip.x0 > 0 || clip.x1 < i64::from(frame_width);
     let n = scene.cells() + 1;
-    for s in strips {
+    painter_order(canvas, strips, |canvas, s| {
         let (lo, hi) = scene.strip_rows(s);
         if hi < clip.y0 || lo >= clip.y1 {
-            continue;
+            return;
         }
-        let filled = matches!(scene.style, Style::Shaded | Style::Mono);
+        let filled = scene.style.is_filled();
         let cells = if narrow && filled {
             scene.cells_reaching(s, &clip)
         } else {
             0..scene.cells()
         };
         if cells.is_empty() {
-            continue;
+            return;
         }
         rows.load(scene, s, cells.start..(cells.end + 1).min(n));
         let (top, bottom) = (&rows.top[..], &rows.bottom[..]);
@@ -83,5 +107,5 @@ pub(crate) fn draw_strips(
             Style::Sonar => scene.edge_strip(canvas, s, top, bottom, true),
             Style::Outline => scene.edge_strip(canvas, s, top, bottom, false),
         }
-    }
+    });
 }
