@@ -70,6 +70,17 @@ impl<'a> Canvas<'a> {
         self.solid.is_some()
     }
 
+    /// The first row from which every row is written in every column (the
+    /// canvas's end when nothing is): on a first-write canvas, nothing drawn
+    /// below it shows. The canvas's end on one that keeps the last write,
+    /// where later writes show anyway.
+    pub(crate) fn all_written_from(&self) -> i64 {
+        match &self.solid {
+            Some(solid) => solid.iter().copied().max().unwrap_or(self.clip.y0),
+            None => self.clip.y1,
+        }
+    }
+
     /// Whether every pixel of columns `x0..=x1` from row `y0` down is
     /// written already: on a first-write canvas, nothing drawn there shows.
     #[inline]
@@ -92,9 +103,10 @@ impl<'a> Canvas<'a> {
             return;
         }
         for (px, x) in self.span_mut(y, x0, x1).iter_mut().zip(x0..) {
-            if *px == UNSET {
-                *px = colour(x);
-            }
+            // A select, not a branch: written and unwritten pixels alternate
+            // unpredictably along a ridge.
+            let c = colour(x);
+            *px = if *px == UNSET { c } else { *px };
         }
         self.grow_solid(y, x0, x1);
     }

@@ -124,55 +124,84 @@ const SCAN_WIDTH: i64 = 4;
 ///
 /// Degenerate (zero-area) triangles cover nothing.
 #[inline]
-pub fn fill_triangle(v: [Fixed2; 3], clip: &Clip, mut span: impl FnMut(u32, u32, u32)) {
-    let (a, mut b, mut c) = (clamp(v[0]), clamp(v[1]), clamp(v[2]));
-    let (xmin, xmax) = (a[0].min(b[0]).min(c[0]), a[0].max(b[0]).max(c[0]));
-    let (ymin, ymax) = (a[1].min(b[1]).min(c[1]), a[1].max(b[1]).max(c[1]));
-    let (mut ix0, mut ix1) = centres_within(xmin, xmax);
-    let (mut iy0, mut iy1) = centres_within(ymin, ymax);
-    ix0 = ix0.max(clip.x0);
-    ix1 = ix1.min(clip.x1 - 1);
-    iy0 = iy0.max(clip.y0);
-    iy1 = iy1.min(clip.y1 - 1);
-    if ix0 > ix1 || iy0 > iy1 {
-        return;
+pub fn fill_triangle(v: [Fixed2; 3], clip: &Clip, span: impl FnMut(u32, u32, u32)) {
+    if let Some(t) = Triangle::new(v, clip) {
+        t.spans(span);
     }
-    let area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-    if area == 0 {
-        return;
+}
+
+/// A triangle with a pixel centre in its bounding box, within a clip: what
+/// it may cover is known before its edges are set up.
+pub struct Triangle {
+    v: [Fixed2; 3],
+    area: i64,
+    box_: [i64; 4],
+}
+
+impl Triangle {
+    /// `v` clamped and boxed; `None` when no pixel centre of `clip` lies in
+    /// its bounding box or it has no area.
+    #[inline]
+    pub fn new(v: [Fixed2; 3], clip: &Clip) -> Option<Self> {
+        let [a, b, c] = v.map(clamp);
+        let (xmin, xmax) = (a[0].min(b[0]).min(c[0]), a[0].max(b[0]).max(c[0]));
+        let (ymin, ymax) = (a[1].min(b[1]).min(c[1]), a[1].max(b[1]).max(c[1]));
+        let (ix0, ix1) = centres_in(xmin, xmax, clip.x0, clip.x1)?;
+        let (iy0, iy1) = centres_in(ymin, ymax, clip.y0, clip.y1)?;
+        let area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+        (area != 0).then_some(Triangle {
+            v: [a, b, c],
+            area,
+            box_: [ix0, ix1, iy0, iy1],
+        })
     }
-    // Edge functions below are positive inside when `area` is negative.
-    if area > 0 {
-        std::mem::swap(&mut b, &mut c);
+
+    /// First and last column and row of the pixels it may cover
+    /// (`[x0, x1, y0, y1]`, within the clip).
+    #[inline]
+    pub fn bounds(&self) -> [i64; 4] {
+        self.box_
     }
-    let edges = [Edge::new(a, b), Edge::new(b, c), Edge::new(c, a)];
-    if ix1 - ix0 < SCAN_WIDTH {
-        // Narrow boxes (most triangles of a fine grid): test the few centres,
-        // stepping the edge functions by additions from row to row.
-        let (px, py) = (ix0 * SUBPIXEL + HALF, iy0 * SUBPIXEL + HALF);
-        let mut row = edges.map(|e| e.eval(px, py));
-        let down = edges.map(|e| -e.dx * SUBPIXEL);
-        let across = edges.map(|e| e.dy * SUBPIXEL);
+
+    /// Calls `span(y, x0, x1)` for every row of pixels it covers, top to
+    /// bottom.
+    #[inline]
+    pub fn spans(&self, mut span: impl FnMut(u32, u32, u32)) {
+        let [a, mut b, mut c] = self.v;
+        let [ix0, ix1, iy0, iy1] = self.box_;
+        // Edge functions below are positive inside when `area` is negative.
+        if self.area > 0 {
+            std::mem::swap(&mut b, &mut c);
+        }
+        let edges = [Edge::new(a, b), Edge::new(b, c), Edge::new(c, a)];
+        if ix1 - ix0 < SCAN_WIDTH {
+            // Narrow boxes (most triangles of a fine grid): test the few
+            // centres, stepping the edge functions by additions row to row.
+            let (px, py) = (ix0 * SUBPIXEL + HALF, iy0 * SUBPIXEL + HALF);
+            let mut row = edges.map(|e| e.eval(px, py));
+            let down = edges.map(|e| -e.dx * SUBPIXEL);
+            let across = edges.map(|e| e.dy * SUBPIXEL);
+            for iy in iy0..iy1 + 1 {
+                let (lo, hi) = scan_row(row, across, ix0, ix1);
+                if lo <= hi {
+                    span(iy as u32, lo as u32, hi as u32 + 1);
+                }
+                row = [row[0] + down[0], row[1] + down[1], row[2] + down[2]];
+            }
+            return;
+        }
+        // Wider ones: each edge's bound on the row's columns, stepped row by row.
+        let py0 = iy0 * SUBPIXEL + HALF;
+        let mut walks = edges.map(|e| Walk::new(&e, py0));
         for iy in iy0..iy1 + 1 {
-            let (lo, hi) = scan_row(row, across, ix0, ix1);
+            let (mut lo, mut hi) = (ix0, ix1);
+            for w in &mut walks {
+                w.bound(&mut lo, &mut hi);
+                w.step();
+            }
             if lo <= hi {
                 span(iy as u32, lo as u32, hi as u32 + 1);
             }
-            row = [row[0] + down[0], row[1] + down[1], row[2] + down[2]];
-        }
-        return;
-    }
-    // Wider ones: each edge's bound on the row's columns, stepped row by row.
-    let py0 = iy0 * SUBPIXEL + HALF;
-    let mut walks = edges.map(|e| Walk::new(&e, py0));
-    for iy in iy0..iy1 + 1 {
-        let (mut lo, mut hi) = (ix0, ix1);
-        for w in &mut walks {
-            w.bound(&mut lo, &mut hi);
-            w.step();
-        }
-        if lo <= hi {
-            span(iy as u32, lo as u32, hi as u32 + 1);
         }
     }
 }

@@ -43,7 +43,8 @@ impl Sky {
         // dither rows once, not a power per row (a 1-pixel-wide frame is
         // all rows).
         let below: [[u32; 4]; 4] = std::array::from_fn(|y| self.colours_at(1.0, y as u32));
-        for y in clip.y0 as u32..clip.y1 as u32 {
+        let end = canvas.all_written_from();
+        for y in clip.y0 as u32..end as u32 {
             let phases = match self.blend(y) {
                 1.0 => below[(y & 3) as usize],
                 t => self.colours_at(t, y),

@@ -6,7 +6,7 @@ use glam::{Vec2, Vec3};
 use super::canvas::Canvas;
 use super::colour::blend_packed;
 use super::dither;
-use super::raster::{Fixed2, centre_box, fill_triangle};
+use super::raster::{Fixed2, Triangle, centre_box};
 use super::scene::{Scene, Style, Vert};
 
 /// White and black, the only two colours of Mono.
@@ -267,8 +267,14 @@ impl Scene<'_> {
     fn paint(&self, canvas: &mut Canvas, v: [Fixed2; 3], colour: impl FnOnce() -> u32) {
         let mut colour = Some(colour);
         let mut paint = Paint::Solid(0);
-        let clip = *canvas.clip();
-        fill_triangle(v, &clip, |y, x0, x1| {
+        let Some(t) = Triangle::new(v, canvas.clip()) else {
+            return;
+        };
+        let [x0, x1, y0, _] = t.bounds();
+        if canvas.hidden(x0, x1, y0) {
+            return;
+        }
+        t.spans(|y, x0, x1| {
             if let Some(colour) = colour.take() {
                 let c = colour();
                 paint = match self.style {
