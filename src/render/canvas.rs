@@ -102,13 +102,31 @@ impl<'a> Canvas<'a> {
             }
             return;
         }
-        for (px, x) in self.span_mut(y, x0, x1).iter_mut().zip(x0..) {
+        let Some(solid) = &mut self.solid else {
+            return;
+        };
+        let width = self.width as usize;
+        let row = (y - self.y0) as usize * width;
+        let (a, b) = ((x0 - self.x0) as usize, (x1 - self.x0) as usize);
+        let y = i64::from(y);
+        for (c, x) in (a..b).zip(x0..) {
+            let px = &mut self.pixels[row + c];
             // A select, not a branch: written and unwritten pixels alternate
             // unpredictably along a ridge.
-            let c = colour(x);
-            *px = if *px == UNSET { c } else { *px };
+            let colour = colour(x);
+            *px = if *px == UNSET { colour } else { *px };
+            if solid[c] == y + 1 {
+                // The row joins the column's solid run: lift the run over
+                // the written pixels above.
+                let mut i = row + c;
+                let mut top = y;
+                while top > self.clip.y0 && self.pixels[i - width] != UNSET {
+                    i -= width;
+                    top -= 1;
+                }
+                solid[c] = top;
+            }
         }
-        self.grow_solid(y, x0, x1);
     }
 
     /// Sets row `y`, columns `x0..x1` to one colour, as [`Canvas::fill_with`].
@@ -121,39 +139,20 @@ impl<'a> Canvas<'a> {
         }
     }
 
-    /// After row `y`, columns `x0..x1` were written: lifts the solid run of
-    /// each column that the row joins, over the written pixels above it.
-    #[inline]
-    fn grow_solid(&mut self, y: u32, x0: u32, x1: u32) {
-        let Some(solid) = &mut self.solid else {
-            return;
-        };
-        let y = i64::from(y);
-        for x in x0..x1 {
-            let c = (x - self.x0) as usize;
-            if solid[c] != y + 1 {
-                continue;
-            }
-            let mut top = y;
-            while top > self.clip.y0 {
-                let i = (top - 1 - i64::from(self.y0)) as usize * self.width as usize + c;
-                if self.pixels[i] == UNSET {
-                    break;
-                }
-                top -= 1;
-            }
-            solid[c] = top;
-        }
-    }
-
     /// The pixels this canvas may change.
     #[inline]
     pub(crate) fn clip(&self) -> &Clip {
         &self.clip
     }
 
-    /// What has been drawn so far, in frame coordinates.
+    /// What has been drawn so far, in frame coordinates. A canvas that
+    /// keeps the first write is drawn whole in one go, sky included, and
+    /// answers its whole rectangle (tracking each write cost 1%).
     pub(crate) fn damage(&self) -> Rect {
+        if self.solid.is_some() {
+            let c = self.clip;
+            return Rect::sized(c.x0 as u32, c.y0 as u32, self.width, (c.y1 - c.y0) as u32);
+        }
         self.damage
     }
 
