@@ -88,12 +88,13 @@ impl Palette {
     /// Prepares the colours for `field` (treeline, depth range) under `settings`.
     pub fn new(settings: &Settings, field: &Heightfield) -> Self {
         let mode = settings.color;
-        let top = positive_or(field.max(), 1.0);
+        let (lowest, highest) = field.min_max();
+        let top = positive_or(highest, 1.0);
         let (gain, offset) = tone(mode);
-        let zones = Zones::new(settings.height, field.min() < 0.0);
+        let zones = Zones::new(settings.height, lowest < 0.0);
         let steep_ref = steepness_reference(field);
         let land = land_table(mode, &zones);
-        let deepest = positive_or(-field.min(), 1.0);
+        let deepest = positive_or(-lowest, 1.0);
         let sun = match mode {
             // Mono's tone curve is tuned to seed 000's light.
             ColorMode::Mono => Sun::Classic,

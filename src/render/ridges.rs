@@ -144,7 +144,8 @@ fn measure_row(row: &[f32], field: &Heightfield) -> (f32, f32) {
     let (lo, hi) = row
         .iter()
         .fold((f32::MAX, f32::MIN), |(lo, hi), &v| (lo.min(v), hi.max(v)));
-    let span = field.max() - field.min();
+    let (lowest, highest) = field.min_max();
+    let span = highest - lowest;
     let relief = if span > 0.0 && hi >= lo {
         ((hi - lo) / span).clamp(0.4, 1.0)
     } else {

@@ -58,6 +58,8 @@ pub(crate) struct Vert {
     pub sky: f32,
     /// How far the air has faded the point towards the horizon colour, in 1/256ths.
     pub haze: u32,
+    /// Whether `lit`, `sky` and `haze` are worked out (see [`Scene::shade`]).
+    pub shaded: bool,
 }
 
 /// A field a scene draws: shared with a painter, or borrowed for one frame
@@ -179,23 +181,43 @@ impl<'a> Scene<'a> {
     }
 
     /// Projects points `xs` of grid row `y` into the same items of `out`
-    /// (which holds a whole row); the rest of `out` is left as it was.
+    /// (which holds a whole row); the rest of `out` is left as it was. Their
+    /// light is left to [`Scene::shade`]: most points of hidden cells never
+    /// need it.
     pub(crate) fn project_points(&self, y: usize, xs: std::ops::Range<usize>, out: &mut [Vert]) {
         let row = self.field.row(y);
-        let sky_rows = self.skylight.as_ref().map(|s| (s, s.rows_at(y)));
         for x in xs {
             let h = finite(row[x]);
             let p = self.view.project(x as f32, y as f32, h.max(0.0));
             out[x] = Vert {
                 p: to_fixed(p.x, p.y),
                 h,
-                lit: self.shadow.as_ref().map_or(1.0, |s| s.lit(x, y)),
-                sky: sky_rows.map_or(1.0, |(s, rows)| s.blend(rows, x)),
-                haze: self.haze.as_ref().map_or(0, |haze| {
-                    haze.amount(self.view.distance(x as f32, y as f32, h.max(0.0)))
-                }),
+                ..Vert::default()
             };
         }
+    }
+
+    /// Works out the light of point `x` of grid row `y`, once.
+    #[inline(always)]
+    pub(crate) fn shade(&self, v: &mut Vert, x: usize, y: usize) {
+        if !v.shaded {
+            self.shade_now(v, x, y);
+        }
+    }
+
+    /// [`Scene::shade`]'s work, apart so that the check inlines.
+    #[inline(never)]
+    fn shade_now(&self, v: &mut Vert, x: usize, y: usize) {
+        let ground = v.h.max(0.0);
+        v.lit = self.shadow.as_ref().map_or(1.0, |s| s.lit(x, y));
+        v.sky = self
+            .skylight
+            .as_ref()
+            .map_or(1.0, |s| s.blend(s.rows_at(y), x));
+        v.haze = self.haze.as_ref().map_or(0, |haze| {
+            haze.amount(self.view.distance(x as f32, y as f32, ground))
+        });
+        v.shaded = true;
     }
 
     /// Fixed-point screen position of a point between grid points, at sea level.

@@ -44,62 +44,78 @@ impl Corner {
     }
 }
 
+/// A strip's two projected grid rows: `y` are their grid rows, back first.
+struct StripRows<'r> {
+    y: [usize; 2],
+    top: &'r mut [Vert],
+    bottom: &'r mut [Vert],
+}
+
+impl StripRows<'_> {
+    /// Point `x` of the back (`row` 0) or front (1) grid row, shaded.
+    #[inline(always)]
+    fn corner(&mut self, scene: &Scene, row: usize, x: usize) -> Corner {
+        let v = if row == 0 {
+            &mut self.top[x]
+        } else {
+            &mut self.bottom[x]
+        };
+        scene.shade(v, x, self.y[row]);
+        Corner::at(x, self.y[row], v)
+    }
+}
+
 impl Scene<'_> {
     /// Draws `cells` of strip `s` filled, in drawing order, then the skirts
     /// below them. `top` and `bottom` are grid rows `s` and `s + 1`,
-    /// projected at least at the points of `cells`.
+    /// projected at least at the points of `cells`; their points are shaded
+    /// as drawn faces need them.
     pub(crate) fn fill_strip(
         &self,
         canvas: &mut Canvas,
         s: usize,
         cells: std::ops::Range<usize>,
-        top: &[Vert],
-        bottom: &[Vert],
+        top: &mut [Vert],
+        bottom: &mut [Vert],
     ) {
         let last = self.cells();
         let (y0, y1) = self.strip_grid_rows(s);
         let split = self.split.clamp(cells.start, cells.end);
-        let cell = |canvas: &mut Canvas, x: usize, rightward: bool| {
-            self.fill_cell(canvas, (y0, y1), x, top, bottom, rightward);
+        let mut rows = StripRows {
+            y: [y0, y1],
+            top,
+            bottom,
         };
-        let right_skirt = |canvas: &mut Canvas| {
-            if self.sees_right && cells.end == last {
-                let a = Corner::at(last, y0, &top[last]);
-                let b = Corner::at(last, y1, &bottom[last]);
+        let part = |canvas: &mut Canvas, part: usize| match part {
+            0 => painter_order(canvas, cells.start..split, |c, x| {
+                self.fill_cell(c, &mut rows, x, true)
+            }),
+            1 => painter_order(canvas, (split..cells.end).rev(), |c, x| {
+                self.fill_cell(c, &mut rows, x, false)
+            }),
+            2 if self.sees_right && cells.end == last => {
+                let a = rows.corner(self, 0, last);
+                let b = rows.corner(self, 1, last);
                 self.fill_skirt(canvas, a, b, Vec3::X);
             }
-        };
-        let front_skirts = |canvas: &mut Canvas| {
-            if self.sees_front && s + 1 == self.strips() {
+            3 if self.sees_front && s + 1 == self.strips() => {
                 painter_order(canvas, cells.clone(), |canvas, x| {
-                    let a = Corner::at(x, y1, &bottom[x]);
-                    let b = Corner::at(x + 1, y1, &bottom[x + 1]);
+                    let a = rows.corner(self, 1, x);
+                    let b = rows.corner(self, 1, x + 1);
                     self.fill_skirt(canvas, a, b, Vec3::NEG_Y);
                 });
             }
+            _ => {}
         };
-        let parts: [&dyn Fn(&mut Canvas); 4] = [
-            &|canvas| painter_order(canvas, cells.start..split, |c, x| cell(c, x, true)),
-            &|canvas| painter_order(canvas, (split..cells.end).rev(), |c, x| cell(c, x, false)),
-            &right_skirt,
-            &front_skirts,
-        ];
-        painter_order(canvas, parts.into_iter(), |canvas, part| part(canvas));
+        painter_order(canvas, 0..4, part);
     }
 
-    /// The two triangles of the cell at column `x` between grid rows `ys`,
-    /// the farther one first. With the
-    /// camera to the right (`rightward`) the diagonal runs from the back
-    /// right, so the front-right triangle is the nearer; mirrored otherwise.
-    fn fill_cell(
-        &self,
-        canvas: &mut Canvas,
-        (y0, y1): (usize, usize),
-        x: usize,
-        top: &[Vert],
-        bottom: &[Vert],
-        rightward: bool,
-    ) {
+    /// The two triangles of the cell at column `x` of `rows`, the farther
+    /// one first. With the camera to the right (`rightward`) the diagonal
+    /// runs from the back right, so the front-right triangle is the nearer;
+    /// mirrored otherwise.
+    fn fill_cell(&self, canvas: &mut Canvas, rows: &mut StripRows, x: usize, rightward: bool) {
+        let (top, bottom) = (&rows.top, &rows.bottom);
         let h = [top[x].h, top[x + 1].h, bottom[x].h, bottom[x + 1].h];
         // A cell crossing the water line puts its shore points on the sea
         // plane, possibly outside its corners' box: never skip those.
@@ -111,10 +127,10 @@ impl Scene<'_> {
                 _ => return,
             }
         }
-        let tl = Corner::at(x, y0, &top[x]);
-        let tr = Corner::at(x + 1, y0, &top[x + 1]);
-        let bl = Corner::at(x, y1, &bottom[x]);
-        let br = Corner::at(x + 1, y1, &bottom[x + 1]);
+        let tl = rows.corner(self, 0, x);
+        let tr = rows.corner(self, 0, x + 1);
+        let bl = rows.corner(self, 1, x);
+        let br = rows.corner(self, 1, x + 1);
         let faces = if rightward {
             [[tl, tr, bl], [tr, br, bl]]
         } else {

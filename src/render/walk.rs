@@ -101,7 +101,7 @@ pub(crate) fn draw_strips(
             return;
         }
         rows.load(scene, s, cells.start..(cells.end + 1).min(n));
-        let (top, bottom) = (&rows.top[..], &rows.bottom[..]);
+        let (top, bottom) = (&mut rows.top[..], &mut rows.bottom[..]);
         match scene.style {
             Style::Shaded | Style::Mono => scene.fill_strip(canvas, s, cells, top, bottom),
             Style::Sonar => scene.edge_strip(canvas, s, top, bottom, true),

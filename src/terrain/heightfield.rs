@@ -114,15 +114,18 @@ impl Heightfield {
 
     /// Lowest elevation.
     pub fn min(&self) -> f32 {
-        self.heights.iter().copied().fold(f32::INFINITY, f32::min)
+        self.min_max().0
     }
 
     /// Highest elevation.
     pub fn max(&self) -> f32 {
-        self.heights
-            .iter()
-            .copied()
-            .fold(f32::NEG_INFINITY, f32::max)
+        self.min_max().1
+    }
+
+    /// Lowest and highest elevation, in one pass over the field (a 4K
+    /// frame's grid holds four million points).
+    pub fn min_max(&self) -> (f32, f32) {
+        min_max(&self.heights)
     }
 
     /// Every `2^levels`-th point in both directions: the same mountain on a
@@ -185,3 +188,13 @@ fn advise_huge_pages(start: *mut u8, bytes: usize) {
 
 #[cfg(not(target_os = "linux"))]
 fn advise_huge_pages(_start: *mut u8, _bytes: usize) {}
+
+/// Lowest and highest of `heights` (NaN is skipped unless all are NaN:
+/// `f32::min` and `max` prefer the number).
+pub fn min_max(heights: &[f32]) -> (f32, f32) {
+    heights
+        .iter()
+        .fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), &h| {
+            (lo.min(h), hi.max(h))
+        })
+}

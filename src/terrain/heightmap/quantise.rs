@@ -49,14 +49,8 @@ impl Quantisation {
     }
 }
 
-/// Lowest and highest of `heights` (NaN-free input assumed).
-pub fn min_max(heights: &[f32]) -> (f32, f32) {
-    heights
-        .iter()
-        .fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), &h| {
-            (lo.min(h), hi.max(h))
-        })
-}
+/// Lowest and highest of a slice of heights: the field's own.
+pub use crate::terrain::heightfield::min_max;
 
 /// Rounds every height to the 16-bit grid a save would store it on, so a
 /// loaded field saves and loads back unchanged.
