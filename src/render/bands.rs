@@ -23,55 +23,41 @@ const BANDS_PER_THREAD: usize = 2;
 /// Bands narrower than this are not worth a thread.
 const MIN_BAND_COLUMNS: u32 = 64;
 
-/// One band: its first column, its width and its own pixels (row by row).
-struct Band {
+/// One band: its first column and its part of every frame row.
+struct Band<'f> {
     x0: u32,
-    width: u32,
-    pixels: Vec<u32>,
+    rows: Vec<&'f mut [u32]>,
 }
 
-/// Draws every strip of `scene` into `frame`, background first.
+/// Draws the sky and every strip of `scene` into `frame`, on all cores.
 pub(crate) fn render(scene: &Scene, frame: &mut Frame) {
-    let (width, height) = (frame.width(), frame.height());
+    let width = frame.width();
     let threads = std::thread::available_parallelism()
         .map_or(1, |n| n.get())
         .min(MAX_THREADS);
     let bands = (threads * BANDS_PER_THREAD).min((width / MIN_BAND_COLUMNS).max(1) as usize);
-    // Each band draws into pixels of its own: a second frame's worth of
-    // memory. Without it (a huge frame under a memory limit), one band
-    // draws in place.
-    let spare = Vec::<u32>::new().try_reserve_exact(width as usize * height as usize);
-    if threads < 2 || bands < 2 || spare.is_err() {
-        let mut canvas = canvas_for(scene, frame.pixels_mut(), 0, width);
-        draw(scene, &mut canvas, &mut Rows::new(), width);
+    if threads < 2 || bands < 2 {
+        let canvas = Canvas::new(frame.pixels_mut(), width, 0);
+        draw(
+            scene,
+            &mut canvas_for(scene, canvas),
+            &mut Rows::new(),
+            width,
+        );
         return;
     }
     let cuts: Vec<u32> = (0..=bands)
         .map(|b| (u64::from(width) * b as u64 / bands as u64) as u32)
         .collect();
-    let queue: Vec<(u32, u32)> = cuts.windows(2).map(|w| (w[0], w[1] - w[0])).collect();
-    let queue = Mutex::new(queue.into_iter());
-    let done = Mutex::new(Vec::with_capacity(bands));
+    let queue = Mutex::new(split(frame, &cuts).into_iter());
     let work = || {
         let mut rows = Rows::new();
         loop {
             // The lock is held only to take the next band.
             let next = queue.lock().map_or(None, |mut q| q.next());
-            let Some((x0, w)) = next else { break };
-            let mut pixels = vec![0u32; (w * height) as usize];
-            draw(
-                scene,
-                &mut canvas_for(scene, &mut pixels, x0, w),
-                &mut rows,
-                width,
-            );
-            if let Ok(mut done) = done.lock() {
-                done.push(Band {
-                    x0,
-                    width: w,
-                    pixels,
-                });
-            }
+            let Some(band) = next else { break };
+            let canvas = Canvas::from_rows(band.rows, band.x0, 0);
+            draw(scene, &mut canvas_for(scene, canvas), &mut rows, width);
         }
     };
     let work = &work;
@@ -81,21 +67,39 @@ pub(crate) fn render(scene: &Scene, frame: &mut Frame) {
         }
         work();
     });
-    let done = done.into_inner().unwrap_or_default();
-    for band in &done {
-        copy_band(band, frame);
-    }
 }
 
-/// A canvas over columns `x0..x0 + width` of whole frame rows: filled faces
-/// are drawn front to back keeping the first write, so the faces hidden
-/// behind nearer land are skipped (the same pixels as back to front); lines
-/// (Sonar, Outline) back to front.
-fn canvas_for<'a>(scene: &Scene, pixels: &'a mut [u32], x0: u32, width: u32) -> Canvas<'a> {
+/// The frame cut into bands of columns at `cuts` (first 0, last the width):
+/// each band holds its part of every row, so each thread draws straight
+/// into the frame and no two touch the same pixel.
+fn split<'f>(frame: &'f mut Frame, cuts: &[u32]) -> Vec<Band<'f>> {
+    let width = frame.width() as usize;
+    let mut bands: Vec<Band> = cuts[..cuts.len() - 1]
+        .iter()
+        .map(|&x0| Band {
+            x0,
+            rows: Vec::new(),
+        })
+        .collect();
+    for mut row in frame.pixels_mut().chunks_exact_mut(width) {
+        for (band, w) in bands.iter_mut().zip(cuts.windows(2)) {
+            let (part, rest) = row.split_at_mut((w[1] - w[0]) as usize);
+            band.rows.push(part);
+            row = rest;
+        }
+    }
+    bands
+}
+
+/// `canvas` made ready for `scene`: filled faces are drawn front to back
+/// keeping the first write, so the faces hidden behind nearer land are
+/// skipped (the same pixels as back to front); lines (Sonar, Outline) back
+/// to front.
+fn canvas_for<'a>(scene: &Scene, canvas: Canvas<'a>) -> Canvas<'a> {
     if scene.style.is_filled() {
-        Canvas::first_write(pixels, x0, width, 0)
+        canvas.keeping_first()
     } else {
-        Canvas::window(pixels, x0, width, 0)
+        canvas
     }
 }
 
@@ -109,15 +113,5 @@ fn draw(scene: &Scene, canvas: &mut Canvas, rows: &mut Rows, frame_width: u32) {
     draw_strips(scene, canvas, rows, 0..scene.strips(), frame_width);
     if canvas.keeps_first() {
         scene.sky.paint(canvas);
-    }
-}
-
-/// Puts a band's pixels into its columns of `frame`.
-fn copy_band(band: &Band, frame: &mut Frame) {
-    let width = frame.width() as usize;
-    let (x0, w) = (band.x0 as usize, band.width as usize);
-    let rows = frame.pixels_mut().chunks_exact_mut(width);
-    for (row, from) in rows.zip(band.pixels.chunks_exact(w)) {
-        row[x0..x0 + w].copy_from_slice(from);
     }
 }

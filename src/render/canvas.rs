@@ -1,9 +1,10 @@
 //! A rectangle of frame pixels to draw into, with the damage it collects.
 //!
-//! The parallel full frame gives each thread its own band of columns;
-//! stepping uses one canvas that is the whole frame. Either way a pixel only
-//! ever receives the writes of one canvas, in painter's order, so the results
-//! are identical.
+//! The parallel full frame gives each thread its own band of columns of the
+//! frame (each row's part of the band is a slice of its own, so the threads
+//! draw straight into the frame); stepping uses one canvas that is the whole
+//! frame. Either way a pixel only ever receives the writes of one canvas, in
+//! painter's order, so the results are identical.
 //!
 //! A canvas either keeps the last write to a pixel (the painter's order,
 //! back to front) or the first (the same order reversed, front to back).
@@ -13,9 +14,9 @@
 use super::frame::Rect;
 use super::raster::Clip;
 
-/// Columns `x0..x0 + width` of rows `y0..` of a frame, stored row by row.
+/// Columns `x0..x0 + width` of rows `y0..` of a frame, a slice per row.
 pub(crate) struct Canvas<'a> {
-    pixels: &'a mut [u32],
+    rows: Vec<&'a mut [u32]>,
     width: u32,
     x0: u32,
     y0: u32,
@@ -33,14 +34,17 @@ const UNSET: u32 = 0xff00_0000;
 impl<'a> Canvas<'a> {
     /// `pixels` holds rows `y0..` of the frame, whole rows.
     pub(crate) fn new(pixels: &'a mut [u32], width: u32, y0: u32) -> Self {
-        Self::window(pixels, 0, width, y0)
+        let rows = pixels.chunks_exact_mut(width.max(1) as usize).collect();
+        Self::from_rows(rows, 0, y0)
     }
 
-    /// `pixels` holds columns `x0..x0 + width` of rows `y0..` of the frame.
-    pub(crate) fn window(pixels: &'a mut [u32], x0: u32, width: u32, y0: u32) -> Self {
-        let rows = pixels.len() as u32 / width.max(1);
+    /// `rows` are columns `x0..x0 + width` of frame rows `y0..`, all `width`
+    /// long.
+    pub(crate) fn from_rows(rows: Vec<&'a mut [u32]>, x0: u32, y0: u32) -> Self {
+        let width = rows.first().map_or(0, |r| r.len() as u32);
+        let height = rows.len() as u32;
         Canvas {
-            pixels,
+            rows,
             width,
             x0,
             y0,
@@ -48,20 +52,21 @@ impl<'a> Canvas<'a> {
                 x0: x0 as i64,
                 x1: (x0 + width) as i64,
                 y0: y0 as i64,
-                y1: (y0 + rows) as i64,
+                y1: (y0 + height) as i64,
             },
             damage: Rect::default(),
             solid: None,
         }
     }
 
-    /// Like [`Canvas::window`], but a pixel keeps the first colour written to
-    /// it: draw front to back. All pixels start unwritten.
-    pub(crate) fn first_write(pixels: &'a mut [u32], x0: u32, width: u32, y0: u32) -> Self {
-        pixels.fill(UNSET);
-        let mut canvas = Self::window(pixels, x0, width, y0);
-        canvas.solid = Some(vec![canvas.clip.y1; width as usize]);
-        canvas
+    /// This canvas, turned to keep the first colour written to a pixel:
+    /// draw front to back. All pixels start unwritten.
+    pub(crate) fn keeping_first(mut self) -> Self {
+        for row in &mut self.rows {
+            row.fill(UNSET);
+        }
+        self.solid = Some(vec![self.clip.y1; self.width as usize]);
+        self
     }
 
     /// Whether this canvas keeps the first write (is drawn front to back).
@@ -107,26 +112,24 @@ impl<'a> Canvas<'a> {
         let Some(solid) = &mut self.solid else {
             return;
         };
-        let width = self.width as usize;
-        let row = (y - self.y0) as usize * width;
+        let r = (y - self.y0) as usize;
         let (a, b) = ((x0 - self.x0) as usize, (x1 - self.x0) as usize);
-        let y = i64::from(y);
-        for (c, x) in (a..b).zip(x0..) {
-            let px = &mut self.pixels[row + c];
+        let (upper, rest) = self.rows.split_at_mut(r);
+        let row = &mut rest[0][a..b];
+        let below = i64::from(y) + 1;
+        for ((px, top), (c, x)) in row.iter_mut().zip(&mut solid[a..b]).zip((a..).zip(x0..)) {
             // A select, not a branch: written and unwritten pixels alternate
             // unpredictably along a ridge.
             let colour = colour(x);
             *px = if *px == UNSET { colour } else { *px };
-            if solid[c] == y + 1 {
+            if *top == below {
                 // The row joins the column's solid run: lift the run over
                 // the written pixels above.
-                let mut i = row + c;
-                let mut top = y;
-                while top > self.clip.y0 && self.pixels[i - width] != UNSET {
-                    i -= width;
-                    top -= 1;
+                let mut above = r;
+                while above > 0 && upper[above - 1][c] != UNSET {
+                    above -= 1;
                 }
-                solid[c] = top;
+                *top = i64::from(self.y0) + above as i64;
             }
         }
     }
@@ -176,9 +179,8 @@ impl<'a> Canvas<'a> {
     #[inline]
     pub(crate) fn span_mut(&mut self, y: u32, x0: u32, x1: u32) -> &mut [u32] {
         self.touch(x0, y, x1, y + 1);
-        let row = ((y - self.y0) * self.width) as usize;
         let (a, b) = ((x0 - self.x0) as usize, (x1 - self.x0) as usize);
-        &mut self.pixels[row + a..row + b]
+        &mut self.rows[(y - self.y0) as usize][a..b]
     }
 
     /// Adds the pixels of the fixed-point box `lo..=hi` (the pixels holding
@@ -197,7 +199,6 @@ impl<'a> Canvas<'a> {
     /// to the damage: the caller has covered it with `touch_box`.
     #[inline]
     pub(crate) fn plot(&mut self, x: u32, y: u32, color: u32) {
-        let i = ((y - self.y0) * self.width + (x - self.x0)) as usize;
-        self.pixels[i] = color;
+        self.rows[(y - self.y0) as usize][(x - self.x0) as usize] = color;
     }
 }
