@@ -398,3 +398,33 @@ fn front_to_back_equals_back_to_front_on_generated_mountains() {
         assert_eq!(differ, 0, "seed {seed} {view:?} {rotation}: pixels differ");
     }
 }
+
+/// A sea of one depth, a hill at the back: down a column of the near water
+/// the vista's wind streaks make the brightness rise and fall (11 turns;
+/// without them 2). The classic views keep their plain water: their golden
+/// pictures above did not change.
+#[test]
+fn open_water_shows_wind_streaks_in_the_vista() {
+    let mut f = Heightfield::flat(6, 400.0);
+    let n = f.size();
+    for y in 0..n {
+        for x in 0..n {
+            let d = ((x as f32 - 8.0).powi(2) + (y as f32 - 6.0).powi(2)).sqrt();
+            f.set(x, y, (60.0 - 8.0 * d).max(-10.0));
+        }
+    }
+    let turns = || {
+        let (w, h) = (320, 180);
+        let frame = full(&f, &settings(ColorMode::Natural, ViewKind::Vista, 0), w, h);
+        let gray = |y: u32| {
+            let c = frame.pixels()[(y * w + w * 3 / 4) as usize];
+            (c >> 16 & 0xff) + (c >> 8 & 0xff) + (c & 0xff)
+        };
+        let column: Vec<i64> = (h * 3 / 4..h).map(|y| i64::from(gray(y))).collect();
+        let steps: Vec<i64> = column.windows(2).map(|p| (p[1] - p[0]).signum()).collect();
+        let steps: Vec<i64> = steps.into_iter().filter(|&s| s != 0).collect();
+        steps.windows(2).filter(|s| s[0] != s[1]).count()
+    };
+    let vista = turns();
+    assert!(vista >= 6, "the vista's near water turns {vista} times");
+}

@@ -15,6 +15,7 @@ pub mod palette;
 pub mod raster;
 mod reach;
 pub mod ridges;
+mod ripples;
 mod rows;
 mod scene;
 pub mod shadow;

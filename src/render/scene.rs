@@ -8,6 +8,7 @@ use glam::Vec2;
 use super::haze::Haze;
 use super::palette::Palette;
 use super::raster::{Fixed2, to_fixed};
+use super::ripples::Ripples;
 use super::shadow::{self, ShadowMap};
 use super::sky::Sky;
 use super::skylight::SkyLight;
@@ -89,6 +90,8 @@ pub(crate) struct Scene<'a> {
     pub sky: Sky,
     /// Aerial haze, if the view has depth and the style has colours.
     pub haze: Option<Haze>,
+    /// Wind on open water (the vista and perspective under a sun of the day).
+    pub ripples: Option<Ripples>,
     shadow: Option<ShadowMap>,
     /// How much of the sky each point sees, if the look has sky light.
     skylight: Option<SkyLight>,
@@ -133,6 +136,8 @@ impl<'a> Scene<'a> {
         let sky = backdrop(&palette, &view, style, height);
         let haze = (style == Style::Shaded && settings.view != ViewKind::Oblique)
             .then(|| Haze::new(palette.sky().1));
+        let ripples = (haze.is_some() && !palette.lighting().classic)
+            .then(|| Ripples::new(palette.sky().1, size - 1));
         let cells = size - 1;
         // Sonar and Outline draw every line of their (already thinned) grid.
         let rows = if shaded {
@@ -153,6 +158,7 @@ impl<'a> Scene<'a> {
             palette,
             sky,
             haze,
+            ripples,
             shadow,
             skylight,
             style,

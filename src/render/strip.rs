@@ -249,7 +249,15 @@ impl Scene<'_> {
     fn fill_water(&self, canvas: &mut Canvas, c: [Corner; 3]) {
         let depth = -(c[0].h.min(0.0) + c[1].h.min(0.0) + c[2].h.min(0.0)) / 3.0;
         self.paint(canvas, [c[0].p, c[1].p, c[2].p], || {
-            self.hazed(self.palette.water(depth), &c)
+            let water = self.palette.water(depth);
+            let water = match &self.ripples {
+                Some(r) => {
+                    let g = (c[0].g + c[1].g + c[2].g) / 3.0;
+                    r.on(water, g.x, g.y)
+                }
+                None => water,
+            };
+            self.hazed(water, &c)
         });
     }
 

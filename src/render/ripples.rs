@@ -1,0 +1,159 @@
+//! Wind on open water: streaks of lighter and darker water, long across the
+//! view and thin along it, so a wide sea reads as water rather than as one
+//! smooth gradient. Faces of waves turned towards the viewer mirror the sky
+//! by the horizon; those turned away show the darker water below.
+
+use super::colour::blend_packed;
+use crate::terrain::splitmix::{GOLDEN, mix};
+
+/// Streaks across the grid's width (their length).
+const ACROSS: f32 = 9.0;
+/// Streaks along the grid's depth (their thinness).
+const ALONG: f32 = 140.0;
+/// Strongest blend towards the sky or the dark, in 1/256ths.
+const STRENGTH: f32 = 40.0;
+
+/// Lattice points a side of the noise's table; the noise repeats after
+/// this many lattice cells (a power of two: the wrap is a mask).
+const LATTICE: usize = 64;
+
+/// The ripples of one sea, mirroring `sky` (the horizon colour).
+#[derive(Debug, Clone)]
+pub(crate) struct Ripples {
+    sky: u32,
+    /// Grid cells a side, to put the streaks in the grid's own proportions.
+    cells: f32,
+    /// The noise's values at the lattice points, -1..1, row by row: hashed
+    /// once, not four times per sample on every water face of a frame.
+    lattice: Box<[f32; LATTICE * LATTICE]>,
+}
+
+impl Ripples {
+    /// Ripples on a grid of `cells` a side mirroring packed `sky`.
+    pub(crate) fn new(sky: u32, cells: usize) -> Self {
+        let mut lattice = Box::new([0.0; LATTICE * LATTICE]);
+        for (i, value) in lattice.iter_mut().enumerate() {
+            *value = hashed((i % LATTICE) as u32, (i / LATTICE) as u32);
+        }
+        Ripples {
+            sky,
+            cells: cells.max(1) as f32,
+            lattice,
+        }
+    }
+
+    /// `colour` of the water at grid position (`x`, `y`) (in cells), with
+    /// its ripple.
+    #[inline]
+    pub(crate) fn on(&self, colour: u32, x: f32, y: f32) -> u32 {
+        let n = self.value(x, y);
+        let t = (n.abs() * STRENGTH) as u32;
+        if n > 0.0 {
+            blend_packed(colour, self.sky, t)
+        } else {
+            // Black: darker water of the same hue under every colour filter.
+            blend_packed(colour, 0, t)
+        }
+    }
+}
+
+impl Ripples {
+    /// The ripple at grid position (`x`, `y`), in -1..1: above 0 the water
+    /// mirrors the sky, below it is darker. In the grid's own proportions,
+    /// so the same at every detail.
+    #[inline]
+    fn value(&self, x: f32, y: f32) -> f32 {
+        let (u, v) = (x / self.cells * ACROSS, y / self.cells * ALONG);
+        // A second, finer layer slanted across the first breaks up its rows.
+        0.65 * self.noise(u, v) + 0.35 * self.noise(2.3 * u + 0.7 * v, 2.1 * v + 17.0)
+    }
+
+    /// Smooth value noise in -1..1 on the lattice, for `u`, `v` >= 0 (grid
+    /// positions are): truncation is the floor there, without a libm call
+    /// (and `as i32`, not `as usize`, which costs three times as much).
+    #[inline]
+    fn noise(&self, u: f32, v: f32) -> f32 {
+        let (a, b) = (u as i32, v as i32);
+        let (fu, fv) = (smooth(u - a as f32), smooth(v - b as f32));
+        let at = |da: i32, db: i32| {
+            let mask = LATTICE as i32 - 1;
+            let (i, j) = ((a + da) & mask, (b + db) & mask);
+            self.lattice[(j * LATTICE as i32 + i) as usize]
+        };
+        let top = at(0, 0) + (at(1, 0) - at(0, 0)) * fu;
+        let bottom = at(0, 1) + (at(1, 1) - at(0, 1)) * fu;
+        top + (bottom - top) * fv
+    }
+}
+
+#[inline]
+fn smooth(t: f32) -> f32 {
+    t * t * (3.0 - 2.0 * t)
+}
+
+/// A value in -1..1 for lattice point (`a`, `b`).
+fn hashed(a: u32, b: u32) -> f32 {
+    let h =
+        mix(u64::from(a).wrapping_mul(GOLDEN) ^ u64::from(b).wrapping_add(GOLDEN).rotate_left(29));
+    (h >> 40) as f32 / (1u64 << 23) as f32 - 1.0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Mean change of the ripple over `step` cells across (x) and along (y).
+    fn mean_change(r: &Ripples, step: f32) -> (f32, f32) {
+        let (mut across, mut along, mut n) = (0.0, 0.0, 0.0);
+        for i in 0..200 {
+            for j in 0..200 {
+                let (x, y) = (i as f32 * 5.1, j as f32 * 5.1);
+                let n0 = r.value(x, y);
+                across += (r.value(x + step, y) - n0).abs();
+                along += (r.value(x, y + step) - n0).abs();
+                n += 1.0;
+            }
+        }
+        (across / n, along / n)
+    }
+
+    #[test]
+    fn streaks_are_long_across_the_view_and_thin_along_it() {
+        let r = Ripples::new(0x00ff_ffff, 1024);
+        let (across, along) = mean_change(&r, 2.0);
+        assert!(along > 4.0 * across, "along {along} across {across}");
+        assert!(along > 0.05, "the water hardly changes: {along}");
+    }
+
+    #[test]
+    fn ripples_stay_in_range_and_follow_the_grid_not_the_detail() {
+        let (fine, coarse) = (Ripples::new(0, 1024), Ripples::new(0, 256));
+        for k in 0..5000 {
+            let (x, y) = ((k * 37 % 1024) as f32 + 0.3, (k * 91 % 1024) as f32 + 0.6);
+            let n = fine.value(x, y);
+            assert!((-1.0..=1.0).contains(&n), "{n}");
+            // The same place on a grid four times coarser: the same ripple.
+            assert!((coarse.value(x / 4.0, y / 4.0) - n).abs() < 1e-4);
+        }
+    }
+
+    #[test]
+    fn crests_mirror_the_sky_and_troughs_darken() {
+        let r = Ripples::new(0x00ff_ffff, 1024);
+        let water = 0x0020_4080;
+        let (mut lighter, mut darker) = (0, 0);
+        for k in 0..400 {
+            let c = r.on(water, 512.0, k as f32 * 0.7);
+            let sum = |c: u32| (c >> 16 & 0xff) + (c >> 8 & 0xff) + (c & 0xff);
+            match sum(c).cmp(&sum(water)) {
+                std::cmp::Ordering::Greater => lighter += 1,
+                std::cmp::Ordering::Less => darker += 1,
+                _ => {}
+            }
+        }
+        assert!(
+            lighter > 50 && darker > 50,
+            "{lighter} lighter, {darker} darker"
+        );
+    }
+}
