@@ -87,6 +87,23 @@ pub struct Palette {
 impl Palette {
     /// Prepares the colours for `field` (treeline, depth range) under `settings`.
     pub fn new(settings: &Settings, field: &Heightfield) -> Self {
+        Self::lit_by(settings, field, Self::lighting_for(settings, field))
+    }
+
+    /// The light `Palette::new` colours `field` under `settings` with: cheap,
+    /// so the shadows (which need only the sun) can start before the tables.
+    pub fn lighting_for(settings: &Settings, field: &Heightfield) -> Lighting {
+        let sun = match settings.color {
+            // Mono's tone curve is tuned to seed 000's light.
+            ColorMode::Mono => Sun::Classic,
+            _ => settings.sun,
+        };
+        Lighting::new(sun, field)
+    }
+
+    /// [`Palette::new`] with its light worked out already
+    /// ([`Palette::lighting_for`]).
+    pub fn lit_by(settings: &Settings, field: &Heightfield, lighting: Lighting) -> Self {
         let mode = settings.color;
         let (lowest, highest) = field.min_max();
         let top = positive_or(highest, 1.0);
@@ -95,12 +112,6 @@ impl Palette {
         let steep_ref = steepness_reference(field);
         let land = land_table(mode, &zones);
         let deepest = positive_or(-lowest, 1.0);
-        let sun = match mode {
-            // Mono's tone curve is tuned to seed 000's light.
-            ColorMode::Mono => Sun::Classic,
-            _ => settings.sun,
-        };
-        let lighting = Lighting::new(sun, field);
         let waters = Waters {
             relative: settings.relative_depth,
             deepest,

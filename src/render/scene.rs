@@ -117,16 +117,22 @@ impl<'a> Scene<'a> {
         if matches!(style, Style::Sonar | Style::Outline) {
             field = legible(field, settings, width, height);
         }
-        let palette = Palette::new(settings, &field);
+        let lighting = Palette::lighting_for(settings, &field);
         let shaded = matches!(style, Style::Shaded | Style::Mono);
-        let wants_sky = style == Style::Shaded && !palette.lighting().classic;
-        // The two sweeps are independent: the sky's runs beside the sun's.
-        let (shadow, skylight) = std::thread::scope(|s| {
-            let sky = wants_sky.then(|| s.spawn(|| SkyLight::new(&field)));
-            let shadow =
-                (shaded && settings.shadows).then(|| shadow::cast(&field, palette.light()));
-            let skylight = sky.map(|t| t.join().unwrap_or_else(|p| std::panic::resume_unwind(p)));
-            (shadow, skylight)
+        let wants_sky = style == Style::Shaded && !lighting.classic;
+        let light = lighting.sun;
+        // The shadow sweep is the long one: the palette's tables and the
+        // sky's sweep run beside it.
+        let (palette, shadow, skylight) = std::thread::scope(|s| {
+            let others = s.spawn(|| {
+                let palette = Palette::lit_by(settings, &field, lighting);
+                (palette, wants_sky.then(|| SkyLight::new(&field)))
+            });
+            let shadow = (shaded && settings.shadows).then(|| shadow::cast(&field, light));
+            let (palette, skylight) = others
+                .join()
+                .unwrap_or_else(|p| std::panic::resume_unwind(p));
+            (palette, shadow, skylight)
         });
         let size = field.size();
         let row_top: Vec<f32> = (0..size)
