@@ -103,13 +103,10 @@ impl<'a> Canvas<'a> {
     // frame.
     #[inline(always)]
     pub(crate) fn fill_with(&mut self, y: u32, x0: u32, x1: u32, colour: impl Fn(u32) -> u32) {
-        if self.solid.is_none() {
+        let Some(solid) = &mut self.solid else {
             for (px, x) in self.span_mut(y, x0, x1).iter_mut().zip(x0..) {
                 *px = colour(x);
             }
-            return;
-        }
-        let Some(solid) = &mut self.solid else {
             return;
         };
         let r = (y - self.y0) as usize;

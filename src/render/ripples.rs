@@ -4,7 +4,8 @@
 //! by the horizon; those turned away show the darker water below.
 
 use super::colour::blend_packed;
-use crate::terrain::splitmix::{GOLDEN, mix};
+use crate::terrain::heightfield::MAX_EXPONENT;
+use crate::terrain::noise::Noise;
 
 /// Streaks across the grid's width (their length).
 const ACROSS: f32 = 9.0;
@@ -17,23 +18,27 @@ const STRENGTH: f32 = 40.0;
 /// this many lattice cells (a power of two: the wrap is a mask).
 const LATTICE: usize = 64;
 
-/// The ripples of one sea, mirroring `sky` (the horizon colour).
+/// The ripples of one sea, mirroring `sky` (the horizon colour); each
+/// mountain's sea has its own.
 #[derive(Debug, Clone)]
 pub(crate) struct Ripples {
     sky: u32,
     /// Grid cells a side, to put the streaks in the grid's own proportions.
     cells: f32,
-    /// The noise's values at the lattice points, -1..1, row by row: hashed
+    /// The noise's values at the lattice points, -1..1, row by row: drawn
     /// once, not four times per sample on every water face of a frame.
     lattice: Box<[f32; LATTICE * LATTICE]>,
 }
 
 impl Ripples {
-    /// Ripples on a grid of `cells` a side mirroring packed `sky`.
-    pub(crate) fn new(sky: u32, cells: usize) -> Self {
+    /// Ripples on a grid of `cells` a side mirroring packed `sky`, their
+    /// pattern drawn from `seed` (the field's fingerprint: the same mountain
+    /// always has the same sea).
+    pub(crate) fn new(sky: u32, cells: usize, seed: u64) -> Self {
+        let noise = Noise::new(seed, MAX_EXPONENT);
         let mut lattice = Box::new([0.0; LATTICE * LATTICE]);
-        for (i, value) in lattice.iter_mut().enumerate() {
-            *value = hashed((i % LATTICE) as u32, (i / LATTICE) as u32);
+        for (j, row) in lattice.chunks_exact_mut(LATTICE).enumerate() {
+            noise.fill_row(j, 0, 1, 1.0, row);
         }
         Ripples {
             sky,
@@ -55,9 +60,7 @@ impl Ripples {
             blend_packed(colour, 0, t)
         }
     }
-}
 
-impl Ripples {
     /// The ripple at grid position (`x`, `y`), in -1..1: above 0 the water
     /// mirrors the sky, below it is darker. In the grid's own proportions,
     /// so the same at every detail.
@@ -91,13 +94,6 @@ fn smooth(t: f32) -> f32 {
     t * t * (3.0 - 2.0 * t)
 }
 
-/// A value in -1..1 for lattice point (`a`, `b`).
-fn hashed(a: u32, b: u32) -> f32 {
-    let h =
-        mix(u64::from(a).wrapping_mul(GOLDEN) ^ u64::from(b).wrapping_add(GOLDEN).rotate_left(29));
-    (h >> 40) as f32 / (1u64 << 23) as f32 - 1.0
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -119,7 +115,7 @@ mod tests {
 
     #[test]
     fn streaks_are_long_across_the_view_and_thin_along_it() {
-        let r = Ripples::new(0x00ff_ffff, 1024);
+        let r = Ripples::new(0x00ff_ffff, 1024, 1);
         let (across, along) = mean_change(&r, 2.0);
         assert!(along > 4.0 * across, "along {along} across {across}");
         assert!(along > 0.05, "the water hardly changes: {along}");
@@ -127,7 +123,7 @@ mod tests {
 
     #[test]
     fn ripples_stay_in_range_and_follow_the_grid_not_the_detail() {
-        let (fine, coarse) = (Ripples::new(0, 1024), Ripples::new(0, 256));
+        let (fine, coarse) = (Ripples::new(0, 1024, 1), Ripples::new(0, 256, 1));
         for k in 0..5000 {
             let (x, y) = ((k * 37 % 1024) as f32 + 0.3, (k * 91 % 1024) as f32 + 0.6);
             let n = fine.value(x, y);
@@ -138,8 +134,24 @@ mod tests {
     }
 
     #[test]
+    fn each_mountain_has_its_own_sea() {
+        let (a, b) = (Ripples::new(0, 1024, 1), Ripples::new(0, 1024, 2));
+        let same = (0..1000)
+            .filter(|&k| {
+                let (x, y) = ((k * 37 % 1024) as f32, (k * 91 % 1024) as f32);
+                a.value(x, y) == b.value(x, y)
+            })
+            .count();
+        assert!(same < 10, "{same} of 1000 places alike");
+        assert_eq!(
+            a.value(100.5, 200.5),
+            Ripples::new(0, 1024, 1).value(100.5, 200.5)
+        );
+    }
+
+    #[test]
     fn crests_mirror_the_sky_and_troughs_darken() {
-        let r = Ripples::new(0x00ff_ffff, 1024);
+        let r = Ripples::new(0x00ff_ffff, 1024, 1);
         let water = 0x0020_4080;
         let (mut lighter, mut darker) = (0, 0);
         for k in 0..400 {

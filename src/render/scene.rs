@@ -118,7 +118,7 @@ impl<'a> Scene<'a> {
             field = legible(field, settings, width, height);
         }
         let lighting = Palette::lighting_for(settings, &field);
-        let shaded = matches!(style, Style::Shaded | Style::Mono);
+        let shaded = style.is_filled();
         let wants_sky = style == Style::Shaded && !lighting.classic;
         let light = lighting.sun;
         // The shadow sweep is the long one: the palette's tables and the
@@ -143,7 +143,7 @@ impl<'a> Scene<'a> {
         let haze = (style == Style::Shaded && settings.view != ViewKind::Oblique)
             .then(|| Haze::new(palette.sky().1));
         let ripples = (haze.is_some() && !palette.lighting().classic)
-            .then(|| Ripples::new(palette.sky().1, size - 1));
+            .then(|| Ripples::new(palette.sky().1, size - 1, field.fingerprint()));
         let cells = size - 1;
         // Sonar and Outline draw every line of their (already thinned) grid.
         let rows = if shaded {

@@ -52,16 +52,17 @@ struct StripRows<'r> {
 }
 
 impl StripRows<'_> {
-    /// Point `x` of the back (`row` 0) or front (1) grid row, shaded.
+    /// The corners at column `x` of the back and the front row, their
+    /// points shaded first (each once).
     #[inline(always)]
-    fn corner(&mut self, scene: &Scene, row: usize, x: usize) -> Corner {
-        let v = if row == 0 {
-            &mut self.top[x]
-        } else {
-            &mut self.bottom[x]
-        };
-        scene.shade(v, x, self.y[row]);
-        Corner::at(x, self.y[row], v)
+    fn column(&mut self, scene: &Scene, x: usize) -> [Corner; 2] {
+        let [y0, y1] = self.y;
+        scene.shade(&mut self.top[x], x, y0);
+        scene.shade(&mut self.bottom[x], x, y1);
+        [
+            Corner::at(x, y0, &self.top[x]),
+            Corner::at(x, y1, &self.bottom[x]),
+        ]
     }
 }
 
@@ -94,14 +95,13 @@ impl Scene<'_> {
                 self.fill_cell(c, &mut rows, x, false)
             }),
             2 if self.sees_right && cells.end == last => {
-                let a = rows.corner(self, 0, last);
-                let b = rows.corner(self, 1, last);
+                let [a, b] = rows.column(self, last);
                 self.fill_skirt(canvas, a, b, Vec3::X);
             }
             3 if self.sees_front && s + 1 == self.strips() => {
                 painter_order(canvas, cells.clone(), |canvas, x| {
-                    let a = rows.corner(self, 1, x);
-                    let b = rows.corner(self, 1, x + 1);
+                    let [_, a] = rows.column(self, x);
+                    let [_, b] = rows.column(self, x + 1);
                     self.fill_skirt(canvas, a, b, Vec3::NEG_Y);
                 });
             }
@@ -127,16 +127,8 @@ impl Scene<'_> {
                 _ => return,
             }
         }
-        let [y0, y1] = rows.y;
-        for x in [x, x + 1] {
-            self.shade(&mut rows.top[x], x, y0);
-            self.shade(&mut rows.bottom[x], x, y1);
-        }
-        let (top, bottom) = (&rows.top, &rows.bottom);
-        let tl = Corner::at(x, y0, &top[x]);
-        let tr = Corner::at(x + 1, y0, &top[x + 1]);
-        let bl = Corner::at(x, y1, &bottom[x]);
-        let br = Corner::at(x + 1, y1, &bottom[x + 1]);
+        let [tl, bl] = rows.column(self, x);
+        let [tr, br] = rows.column(self, x + 1);
         let [far, near] = if rightward {
             [[tl, tr, bl], [tr, br, bl]]
         } else {

@@ -4,7 +4,7 @@ mod coast;
 mod erosion;
 pub mod heightfield;
 pub mod heightmap;
-mod noise;
+pub(crate) mod noise;
 mod normalize;
 mod params;
 pub(crate) mod splitmix;
