@@ -91,7 +91,7 @@ pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> Exi
     let format = output::format_of(output, output::DATA_SETS, "a data set").unwrap_or(Format::Png);
     if format == Format::Raw16 {
         let (bytes, q) = heightmap::raw16(&field);
-        if let Err(e) = crate::fsutil::write_output(output, &bytes) {
+        if let Err(e) = crate::fsutil::write_output_with(output, |w| w.write_all(&bytes)) {
             return fail(&format!("-o {}: cannot write: {e}", output.display()));
         }
         let n = field.size();

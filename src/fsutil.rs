@@ -71,14 +71,10 @@ fn kind_of(meta: &std::fs::Metadata) -> &'static str {
     "not a file"
 }
 
-/// Writes `bytes` to `path`, or to standard output when `path` is `-`
-/// (`-o -`, for a pipe); see [`write_atomic`].
-pub fn write_output(path: &Path, bytes: &[u8]) -> io::Result<()> {
-    write_output_with(path, |w| w.write_all(bytes))
-}
-
-/// [`write_output`] for a file made as it is written: `write` is given the
-/// destination (buffered), so a large picture never exists whole in memory.
+/// Writes what `write` makes to `path`, or to standard output when `path`
+/// is `-` (`-o -`, for a pipe); see [`write_atomic_with`]. `write` is given
+/// the destination (buffered), so a large picture never exists whole in
+/// memory.
 pub fn write_output_with(
     path: &Path,
     write: impl FnOnce(&mut dyn Write) -> io::Result<()>,
@@ -89,12 +85,6 @@ pub fn write_output_with(
         return out.flush();
     }
     write_atomic_with(path, write)
-}
-
-/// Writes `bytes` to `path` so a reader sees the old file or the new one,
-/// never a mix; see [`write_atomic_with`].
-pub fn write_atomic(path: &Path, bytes: &[u8]) -> io::Result<()> {
-    write_atomic_with(path, |w| w.write_all(bytes))
 }
 
 /// Writes what `write` makes to `path` so a reader sees the old file or

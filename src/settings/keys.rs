@@ -147,335 +147,211 @@ const WATER_LINES: &[&str] = &["coast", "generator"];
 const SUNS: &[&str] = &["varied", "morning", "midday", "evening", "classic"];
 const MONITORS: &[&str] = &["all", "primary"];
 
-/// One row of the table: what the key is, its default, then how it is
-/// read from and written into `Settings`.
-const fn key(
-    name: &'static str,
-    kind: Kind,
-    change: Change,
-    doc: &'static str,
-    default: fn() -> Value,
-    read: fn(&Settings) -> Value,
-    write: fn(&mut Settings, &Key, &Value) -> Option<()>,
-) -> Key {
-    Key {
-        name,
-        kind,
-        change,
-        doc,
-        default,
-        read,
-        write,
-    }
+/// One row of the table: key `$field` is the field of that name in
+/// `Settings`, read and written through its type's [`Field`] under `$kind`;
+/// the name is written once, so a row cannot read one field and write
+/// another.
+macro_rules! row {
+    ($field:ident, $kind:expr, $change:ident, $default:expr, $doc:literal) => {
+        Key {
+            name: stringify!($field),
+            kind: $kind,
+            change: Change::$change,
+            doc: $doc,
+            default: || $default,
+            read: |s| Field::value(&s.$field),
+            write: |s, key, value| {
+                s.$field = Field::parse(key, value)?;
+                Some(())
+            },
+        }
+    };
 }
 
 /// Every key, in the order the settings file and `--help` list them.
 pub const KEYS: &[Key] = &[
-    key(
-        "seed",
+    row!(
+        seed,
         Kind::Seed,
-        Change::Next,
-        "seed of the next mountain; \"random\" picks a new one each time",
-        || Value::Str("random".into()),
-        |s| s.seed.map_or(Value::Str("random".into()), seed_value),
-        |s, _, value| {
-            s.seed = seed(value)?;
-            Some(())
-        },
+        Next,
+        Value::Str("random".into()),
+        "seed of the next mountain; \"random\" picks a new one each time"
     ),
-    key(
-        "generator",
+    row!(
+        generator,
         Kind::Choice(GENERATORS),
-        Change::Next,
-        "how heights are made",
-        || Value::Str("diamond".into()),
-        |s| named(&s.generator),
-        |s, key, value| {
-            s.generator = choice::<Generator>(key, value)?;
-            Some(())
-        },
+        Next,
+        Value::Str("diamond".into()),
+        "how heights are made"
     ),
-    key(
-        "cragginess",
+    row!(
+        cragginess,
         Kind::Int { min: 1, max: 128 },
-        Change::Next,
-        "square generators: how sharply heights crease",
-        || Value::Int(96),
-        |s| Value::Int(s.cragginess.into()),
-        |s, key, value| {
-            s.cragginess = int(key, value)? as u32;
-            Some(())
-        },
+        Next,
+        Value::Int(96),
+        "square generators: how sharply heights crease"
     ),
-    key(
-        "elevation",
+    row!(
+        elevation,
         Kind::Float {
             min: 1.0,
-            max: 1000.0,
+            max: 1000.0
         },
-        Change::Next,
-        "square generators: range of the corner heights",
-        || Value::Float(100.0),
-        |s| Value::Float(s.elevation.into()),
-        |s, key, value| {
-            s.elevation = float(key, value)?;
-            Some(())
-        },
+        Next,
+        Value::Float(100.0),
+        "square generators: range of the corner heights"
     ),
-    key(
-        "roughness",
+    row!(
+        roughness,
         Kind::Float { min: 1.0, max: 5.0 },
-        Change::Next,
-        "triangle generator: smoothness base (higher = smoother sides)",
-        || Value::Float(2.0),
-        |s| Value::Float(s.roughness.into()),
-        |s, key, value| {
-            s.roughness = float(key, value)?;
-            Some(())
-        },
+        Next,
+        Value::Float(2.0),
+        "triangle generator: smoothness base (higher = smoother sides)"
     ),
-    key(
-        "contour",
+    row!(
+        contour,
         Kind::Float {
             min: 0.25,
-            max: 5.0,
+            max: 5.0
         },
-        Change::Next,
-        "triangle generator: power on heights (<1 concave, >1 convex)",
-        || Value::Float(1.0),
-        |s| Value::Float(s.contour.into()),
-        |s, key, value| {
-            s.contour = float(key, value)?;
-            Some(())
-        },
+        Next,
+        Value::Float(1.0),
+        "triangle generator: power on heights (<1 concave, >1 convex)"
     ),
-    key(
-        "profile",
+    row!(
+        profile,
         Kind::Choice(PROFILES),
-        Change::Next,
-        "triangle generator: overall shape",
-        || Value::Str("slope".into()),
-        |s| named(&s.profile),
-        |s, key, value| {
-            s.profile = choice::<Profile>(key, value)?;
-            Some(())
-        },
+        Next,
+        Value::Str("slope".into()),
+        "triangle generator: overall shape"
     ),
-    key(
-        "height",
+    row!(
+        height,
         Kind::Int { min: 1, max: 10 },
-        Change::Next,
-        "height of the peaks; also raises the treeline and snow",
-        || Value::Int(5),
-        |s| Value::Int(s.height.into()),
-        |s, key, value| {
-            s.height = int(key, value)? as u32;
-            Some(())
-        },
+        Next,
+        Value::Int(5),
+        "height of the peaks; also raises the treeline and snow"
     ),
-    key(
-        "erosion",
+    row!(
+        erosion,
         Kind::Float { min: 0.0, max: 1.0 },
-        Change::Next,
-        "rain wearing gullies into the slopes and silt at their feet (0 = none)",
-        || Value::Float(0.5),
-        |s| Value::Float(s.erosion.into()),
-        |s, key, value| {
-            s.erosion = float(key, value)?;
-            Some(())
-        },
+        Next,
+        Value::Float(0.5),
+        "rain wearing gullies into the slopes and silt at their feet (0 = none)"
     ),
-    key(
-        "detail",
+    row!(
+        detail,
         Kind::IntOrAuto { min: 4, max: 12 },
-        Change::Remake,
-        "grid of 2^detail+1 points a side; \"auto\" fits it to the screen",
-        || Value::Str("auto".into()),
-        |s| match s.detail {
-            Detail::Auto => Value::Str("auto".into()),
-            Detail::Level(n) => Value::Int(n.into()),
-        },
-        |s, key, value| {
-            s.detail = detail(key, value)?;
-            Some(())
-        },
+        Remake,
+        Value::Str("auto".into()),
+        "grid of 2^detail+1 points a side; \"auto\" fits it to the screen"
     ),
-    key(
-        "low_detail",
+    row!(
+        low_detail,
         Kind::Bool,
-        Change::Remake,
-        "a quarter of the points: larger faces, faster drawing",
-        || Value::Bool(false),
-        |s| Value::Bool(s.low_detail),
-        |s, _, value| {
-            s.low_detail = boolean(value)?;
-            Some(())
-        },
+        Remake,
+        Value::Bool(false),
+        "a quarter of the points: larger faces, faster drawing"
     ),
-    key(
-        "sea_level",
+    row!(
+        sea_level,
         Kind::Float {
             min: -1.0,
-            max: 1.0,
+            max: 1.0
         },
-        Change::Next,
-        "water line as a fraction of the relief above or below water_line",
-        || Value::Float(0.0),
-        |s| Value::Float(s.sea_level.into()),
-        |s, key, value| {
-            s.sea_level = float(key, value)?;
-            Some(())
-        },
+        Next,
+        Value::Float(0.0),
+        "water line as a fraction of the relief above or below water_line"
     ),
-    key(
-        "water_line",
+    row!(
+        water_line,
         Kind::Choice(WATER_LINES),
-        Change::Next,
-        "sea_level 0: a coast on every mountain, or the generator's own zero",
-        || Value::Str("coast".into()),
-        |s| named(&s.water_line),
-        |s, key, value| {
-            s.water_line = choice::<WaterLine>(key, value)?;
-            Some(())
-        },
+        Next,
+        Value::Str("coast".into()),
+        "sea_level 0: a coast on every mountain, or the generator's own zero"
     ),
-    key(
-        "color",
+    row!(
+        color,
         Kind::Choice(COLORS),
-        Change::Repaint,
-        "colour mode or filter",
-        || Value::Str("natural".into()),
-        |s| named(&s.color),
-        |s, key, value| {
-            s.color = choice::<ColorMode>(key, value)?;
-            Some(())
-        },
+        Repaint,
+        Value::Str("natural".into()),
+        "colour mode or filter"
     ),
-    key(
-        "relative_depth",
+    row!(
+        relative_depth,
         Kind::Bool,
-        Change::Repaint,
-        "darker water over deeper ground",
-        || Value::Bool(true),
-        |s| Value::Bool(s.relative_depth),
-        |s, _, value| {
-            s.relative_depth = boolean(value)?;
-            Some(())
-        },
+        Repaint,
+        Value::Bool(true),
+        "darker water over deeper ground"
     ),
-    key(
-        "shadows",
+    row!(
+        shadows,
         Kind::Bool,
-        Change::Repaint,
-        "cast shadows from the light",
-        || Value::Bool(true),
-        |s| Value::Bool(s.shadows),
-        |s, _, value| {
-            s.shadows = boolean(value)?;
-            Some(())
-        },
+        Repaint,
+        Value::Bool(true),
+        "cast shadows from the light"
     ),
-    key(
-        "sun",
+    row!(
+        sun,
         Kind::Choice(SUNS),
-        Change::Repaint,
-        "time of day of the light; \"varied\" draws one per mountain",
-        || Value::Str("varied".into()),
-        |s| named(&s.sun),
-        |s, key, value| {
-            s.sun = choice::<Sun>(key, value)?;
-            Some(())
-        },
+        Repaint,
+        Value::Str("varied".into()),
+        "time of day of the light; \"varied\" draws one per mountain"
     ),
-    key(
-        "view",
+    row!(
+        view,
         Kind::Choice(VIEWS),
-        Change::Repaint,
-        "projection",
-        || Value::Str("vista".into()),
-        |s| named(&s.view),
-        |s, key, value| {
-            s.view = choice::<ViewKind>(key, value)?;
-            Some(())
-        },
+        Repaint,
+        Value::Str("vista".into()),
+        "projection"
     ),
-    key(
-        "rotation",
+    row!(
+        rotation,
         Kind::QuarterTurn,
-        Change::Repaint,
-        "side the mountain is seen from, in degrees",
-        || Value::Int(0),
-        |s| Value::Int(s.rotation.into()),
-        |s, _, value| {
-            s.rotation = rotation(value)?;
-            Some(())
-        },
+        Repaint,
+        Value::Int(0),
+        "side the mountain is seen from, in degrees"
     ),
-    key(
-        "auto_redraw",
+    row!(
+        auto_redraw,
         Kind::Bool,
-        Change::Nothing,
-        "start a new mountain after the pause (slide show)",
-        || Value::Bool(true),
-        |s| Value::Bool(s.auto_redraw),
-        |s, _, value| {
-            s.auto_redraw = boolean(value)?;
-            Some(())
-        },
+        Nothing,
+        Value::Bool(true),
+        "start a new mountain after the pause (slide show)"
     ),
-    key(
-        "draw_seconds",
+    row!(
+        draw_seconds,
         Kind::Float {
             min: 0.0,
-            max: 600.0,
+            max: 600.0
         },
-        Change::Nothing,
-        "seconds to draw one mountain strip by strip",
-        || Value::Float(8.0),
-        |s| Value::Float(s.draw_seconds.into()),
-        |s, key, value| {
-            s.draw_seconds = float(key, value)?;
-            Some(())
-        },
+        Nothing,
+        Value::Float(8.0),
+        "seconds to draw one mountain strip by strip"
     ),
-    key(
-        "pause_seconds",
+    row!(
+        pause_seconds,
         Kind::Float {
             min: 0.0,
-            max: 3600.0,
+            max: 3600.0
         },
-        Change::Nothing,
-        "seconds to hold a finished mountain",
-        || Value::Float(10.0),
-        |s| Value::Float(s.pause_seconds.into()),
-        |s, key, value| {
-            s.pause_seconds = float(key, value)?;
-            Some(())
-        },
+        Nothing,
+        Value::Float(10.0),
+        "seconds to hold a finished mountain"
     ),
-    key(
-        "monitors",
+    row!(
+        monitors,
         Kind::Choice(MONITORS),
-        Change::Nothing,
-        "full screen: a mountain on every monitor, or the primary only",
-        || Value::Str("all".into()),
-        |s| named(&s.monitors),
-        |s, key, value| {
-            s.monitors = choice::<Monitors>(key, value)?;
-            Some(())
-        },
+        Nothing,
+        Value::Str("all".into()),
+        "full screen: a mountain on every monitor, or the primary only"
     ),
-    key(
-        "heightmaps_dir",
+    row!(
+        heightmaps_dir,
         Kind::Path,
-        Change::Nothing,
-        "folder of PNG heightmaps mixed into the slide show",
-        || Value::Str(String::new()),
-        |s| Value::Str(s.heightmaps_dir.clone().unwrap_or_default()),
-        |s, _, value| {
-            s.heightmaps_dir = path(value)?;
-            Some(())
-        },
+        Nothing,
+        Value::Str(String::new()),
+        "folder of PNG heightmaps mixed into the slide show"
     ),
 ];
 
@@ -561,8 +437,19 @@ pub fn find(name: &str) -> Option<&'static Key> {
     KEYS.iter().find(|k| k.name == name)
 }
 
+/// Looks a key up by name; for an unknown one, a message naming the
+/// closest known key, if any is close, for a file's line or `--set`.
+pub fn known(name: &str) -> Result<&'static Key, String> {
+    find(name).ok_or_else(|| {
+        let hint = suggest(name)
+            .map(|s| format!("; did you mean `{s}`?"))
+            .unwrap_or_default();
+        format!("unknown key{hint} (`mountains --help` lists every key)")
+    })
+}
+
 /// The known key closest to a misspelt one, if any is close.
-pub fn suggest(name: &str) -> Option<&'static str> {
+fn suggest(name: &str) -> Option<&'static str> {
     KEYS.iter()
         .map(|k| (edit_distance(name, k.name), k.name))
         .filter(|(d, k)| *d <= 2.max(k.len() / 3))
@@ -601,15 +488,104 @@ pub fn get(settings: &Settings, key: &Key) -> Value {
     (key.read)(settings)
 }
 
-/// A settings enum's value by its name in the file (serde's).
-fn named(v: &dyn erased::Named) -> Value {
-    Value::Str(v.name())
+/// How a `Settings` field's type is written as a [`Value`] and read back
+/// under its key's [`Kind`] (the row macro picks the impl by the field).
+trait Field: Sized {
+    /// The field's value as it would be written in TOML.
+    fn value(&self) -> Value;
+    /// The field's value from one `key` allows; `None` if it does not.
+    fn parse(key: &Key, value: &Value) -> Option<Self>;
 }
 
-/// Seeds that fit a TOML integer are written as one; larger ones as a string.
-fn seed_value(seed: u64) -> Value {
-    i64::try_from(seed).map_or(Value::Str(seed.to_string()), Value::Int)
+impl Field for u32 {
+    fn value(&self) -> Value {
+        Value::Int((*self).into())
+    }
+    fn parse(key: &Key, value: &Value) -> Option<Self> {
+        match key.kind {
+            Kind::QuarterTurn => rotation(value),
+            _ => int(key, value).and_then(|i| u32::try_from(i).ok()),
+        }
+    }
 }
+
+impl Field for f32 {
+    fn value(&self) -> Value {
+        Value::Float((*self).into())
+    }
+    fn parse(key: &Key, value: &Value) -> Option<Self> {
+        float(key, value)
+    }
+}
+
+impl Field for bool {
+    fn value(&self) -> Value {
+        Value::Bool(*self)
+    }
+    fn parse(_: &Key, value: &Value) -> Option<Self> {
+        match value {
+            Value::Bool(b) => Some(*b),
+            _ => None,
+        }
+    }
+}
+
+/// The seed: "random" (`None`) or a number.
+impl Field for Option<u64> {
+    fn value(&self) -> Value {
+        // Seeds that fit a TOML integer are written as one; larger ones as a string.
+        self.map_or(Value::Str("random".into()), |seed| {
+            i64::try_from(seed).map_or(Value::Str(seed.to_string()), Value::Int)
+        })
+    }
+    fn parse(_: &Key, value: &Value) -> Option<Self> {
+        seed(value)
+    }
+}
+
+impl Field for Detail {
+    fn value(&self) -> Value {
+        match self {
+            Detail::Auto => Value::Str("auto".into()),
+            Detail::Level(n) => Value::Int((*n).into()),
+        }
+    }
+    fn parse(key: &Key, value: &Value) -> Option<Self> {
+        detail(key, value)
+    }
+}
+
+/// A folder: "" is none.
+impl Field for Option<String> {
+    fn value(&self) -> Value {
+        Value::Str(self.clone().unwrap_or_default())
+    }
+    fn parse(_: &Key, value: &Value) -> Option<Self> {
+        match value {
+            Value::Str(s) if s.is_empty() => Some(None),
+            Value::Str(s) => Some(Some(s.clone())),
+            _ => None,
+        }
+    }
+}
+
+/// The settings enums, each written by its name in the file (serde's).
+macro_rules! choice_fields {
+    ($($t:ty),*) => {$(
+        impl Field for $t {
+            fn value(&self) -> Value {
+                Value::Str(erased::Named::name(self))
+            }
+            fn parse(key: &Key, value: &Value) -> Option<Self> {
+                choice(key, value)
+            }
+        }
+    )*};
+}
+
+choice_fields!(
+    Generator, Profile, WaterLine, ColorMode, Sun, ViewKind, Monitors
+);
 
 mod erased {
     use serde::Serialize;
@@ -662,13 +638,6 @@ fn float(key: &Key, value: &Value) -> Option<f32> {
     (x.is_finite() && (min..=max).contains(&x)).then_some(x as f32)
 }
 
-fn boolean(value: &Value) -> Option<bool> {
-    match value {
-        Value::Bool(b) => Some(*b),
-        _ => None,
-    }
-}
-
 fn choice<T: for<'de> Deserialize<'de>>(key: &Key, value: &Value) -> Option<T> {
     let (Kind::Choice(names), Value::Str(s)) = (key.kind, value) else {
         return None;
@@ -693,12 +662,4 @@ fn seed(value: &Value) -> Option<Option<u64>> {
 fn rotation(value: &Value) -> Option<u32> {
     let Value::Int(r) = *value else { return None };
     matches!(r, 0 | 90 | 180 | 270).then_some(r as u32)
-}
-
-fn path(value: &Value) -> Option<Option<String>> {
-    match value {
-        Value::Str(s) if s.is_empty() => Some(None),
-        Value::Str(s) => Some(Some(s.clone())),
-        _ => None,
-    }
 }

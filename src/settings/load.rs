@@ -198,15 +198,12 @@ pub fn apply_toml(settings: &mut Settings, text: &str, source: &str) -> Vec<Prob
                 message,
             })
         };
-        let Some(key) = keys::find(name) else {
-            let hint = keys::suggest(name)
-                .map(|s| format!("; did you mean `{s}`?"))
-                .unwrap_or_default();
-            report(
-                key_pos,
-                format!("unknown key{hint} (`mountains --help` lists every key)"),
-            );
-            continue;
+        let key = match keys::known(name) {
+            Ok(key) => key,
+            Err(message) => {
+                report(key_pos, message);
+                continue;
+            }
         };
         match item_value(item) {
             Some(value) => {
@@ -247,14 +244,7 @@ pub fn apply_set(settings: &mut Settings, key: &str, raw: &str) -> Result<(), Pr
         key: Some(key.into()),
         message,
     };
-    let Some(spec) = keys::find(key) else {
-        let hint = keys::suggest(key)
-            .map(|s| format!("; did you mean `{s}`?"))
-            .unwrap_or_default();
-        return Err(problem(format!(
-            "unknown key{hint} (`mountains --help` lists every key)"
-        )));
-    };
+    let spec = keys::known(key).map_err(problem)?;
     let value = parse_set_value(raw);
     keys::apply(settings, spec, &value).map_err(problem)
 }

@@ -142,7 +142,7 @@ pub fn save(path: &Path, settings: &Settings) -> Result<(), SaveError> {
         std::fs::create_dir_all(dir)
             .map_err(|e| io_error(format!("cannot create {}: {e}", dir.display()), &e))?;
     }
-    crate::fsutil::write_atomic(path, merged.as_bytes())
+    crate::fsutil::write_atomic_with(path, |w| w.write_all(merged.as_bytes()))
         .map_err(|e| io_error(format!("cannot write: {e}"), &e))
 }
 

@@ -84,7 +84,7 @@ fn create_default(path: &Path) -> Result<(), String> {
         std::fs::create_dir_all(dir)
             .map_err(|e| format!("Cannot create {}: {e}", dir.display()))?;
     }
-    crate::fsutil::write_atomic(path, load::DEFAULT_TOML.as_bytes())
+    crate::fsutil::write_atomic_with(path, |w| w.write_all(load::DEFAULT_TOML.as_bytes()))
         .map_err(|e| format!("Cannot create {}: {e}", path.display()))
 }
 

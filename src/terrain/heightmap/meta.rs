@@ -309,15 +309,6 @@ fn number(v: &str) -> Result<f64, String> {
     }
 }
 
-fn positive_f64(v: &str) -> Result<f64, String> {
-    let x = number(v)?;
-    if x > 0.0 {
-        Ok(x)
-    } else {
-        Err(format!("{} must be greater than 0", quoted(v)))
-    }
-}
-
 fn finite_f32(v: &str) -> Result<f64, String> {
     number(v)?;
     let x: f32 = v
@@ -330,8 +321,16 @@ fn finite_f32(v: &str) -> Result<f64, String> {
     }
 }
 
+fn positive_f64(v: &str) -> Result<f64, String> {
+    positive(v, number(v)?)
+}
+
 fn positive_f32(v: &str) -> Result<f64, String> {
-    let x = finite_f32(v)?;
+    positive(v, finite_f32(v)?)
+}
+
+/// `x` (read from `v`) if it is greater than 0.
+fn positive(v: &str, x: f64) -> Result<f64, String> {
     if x > 0.0 {
         Ok(x)
     } else {

@@ -100,7 +100,7 @@ pub fn save(
     settings: &Settings,
 ) -> Result<(), HeightmapError> {
     let bytes = encode(field, seed, settings, path)?;
-    crate::fsutil::write_output(path, &bytes)
+    crate::fsutil::write_output_with(path, |w| w.write_all(&bytes))
         .map_err(|e| HeightmapError::new(path, ErrorKind::Io, format!("cannot be written: {e}")))
 }
 
