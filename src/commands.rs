@@ -95,10 +95,11 @@ pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> Exi
             return fail(&format!("-o {}: cannot write: {e}", output.display()));
         }
         let n = field.size();
+        let top = heightmap::quantise::MAX_SAMPLE;
         let range = format!(
-            "{n}x{n} 16-bit little-endian samples; 0 is height {}, 65535 is {}",
+            "{n}x{n} 16-bit little-endian samples; 0 is height {}, {top} is {}",
             q.height(0),
-            q.height(u16::MAX)
+            q.height(top)
         );
         say(output, &range);
     } else if let Err(e) = heightmap::save(output, &field, seed, settings) {

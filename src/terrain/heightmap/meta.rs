@@ -16,7 +16,7 @@ use crate::quote::quoted;
 use std::path::Path;
 
 use super::error::HeightmapError;
-use super::quantise::Quantisation;
+use super::quantise::{MAX_SAMPLE, Quantisation};
 use crate::settings::keys::{self, Value};
 use crate::settings::{AUTO_DETAIL_FALLBACK, Detail, Settings, load};
 
@@ -250,7 +250,7 @@ pub fn parse(pairs: &[(String, String)], path: &Path) -> Result<Metadata, Height
 const SCALE_RANGE: (f64, f64) = (f64::MIN_POSITIVE, 1.0);
 const HEIGHT_RANGE: (f64, f64) = (-1e5, 1e5);
 const EXTENT_RANGE: (f64, f64) = (1.0, 1e5);
-/// Most relief (all 65535 steps) per unit of width.
+/// Most relief (all `MAX_SAMPLE` steps) per unit of width.
 const MAX_RELIEF_PER_WIDTH: f64 = 256.0;
 
 /// Checks each value against its range, and the relief against the width.
@@ -274,7 +274,7 @@ fn check_ranges(m: &Metadata) -> Result<(), (&'static str, String)> {
     within(KEY_SEA_LEVEL, m.sea_level.map(f64::from), HEIGHT_RANGE)?;
     within(KEY_EXTENT, m.extent.map(f64::from), EXTENT_RANGE)?;
     if let (Some(scale), Some(extent)) = (m.scale, m.extent) {
-        let relief = scale * 65535.0;
+        let relief = scale * f64::from(MAX_SAMPLE);
         if relief > MAX_RELIEF_PER_WIDTH * f64::from(extent) {
             return Err((
                 KEY_SCALE,

@@ -234,9 +234,10 @@ fn natural_scale(lo: f32, hi: f32, extent: f32) -> f64 {
 
 /// The sample value at the sea percentile, at least half a step above `lo`.
 fn sea_sample(samples: &[f32], lo: f32) -> f64 {
-    let mut histogram = vec![0u32; 65536];
+    let top = quantise::MAX_SAMPLE;
+    let mut histogram = vec![0u32; usize::from(top) + 1];
     for &s in samples {
-        histogram[s.floor().clamp(0.0, 65535.0) as usize] += 1;
+        histogram[s.floor().clamp(0.0, f32::from(top)) as usize] += 1;
     }
     let wanted = (samples.len() as f64 * SEA_PERCENTILE / 100.0).ceil() as u64;
     let mut seen = 0u64;
