@@ -11,8 +11,25 @@ pub fn mix(a: Rgb, b: Rgb, t: f32) -> Rgb {
 
 /// A 0..=1 colour as `0x00RRGGBB`.
 pub fn to_u32(c: Rgb) -> u32 {
-    let c = c.map(|v| (v * 255.0 + 0.5).clamp(0.0, 255.0) as u32);
+    pack(c, 255.0, 0.0)
+}
+
+/// `base` times `scale` less `offset` (the palette's tone offset, in
+/// 0..=255 steps), rounded, clamped and packed as `0x00RRGGBB`.
+#[inline]
+pub fn pack(base: Rgb, scale: f32, offset: f32) -> u32 {
+    let c = base.map(|v| (v * scale - offset + 0.5).clamp(0.0, 255.0) as u32);
     c[0] << 16 | c[1] << 8 | c[2]
+}
+
+/// A packed colour times `b` (0..=1), two channels per multiply.
+#[inline]
+pub fn scale_packed(c: u32, b: f32) -> u32 {
+    // 0 ..= 256 in 1/256ths; NaN casts to 0.
+    let k = ((b * 256.0 + 0.5) as u32).min(256);
+    let red_blue = (((c & 0x00ff_00ff) * k) >> 8) & 0x00ff_00ff;
+    let green = (((c & 0x0000_ff00) * k) >> 8) & 0x0000_ff00;
+    red_blue | green
 }
 
 /// `0x00RRGGBB` as a 0..=1 colour.

@@ -19,7 +19,7 @@
 //! lowland turns black under the red filter; the tint keeps every face's
 //! brightness, stays in the filter's hue family, and snow turns a pale tint.
 
-use super::colour::{Rgb, mix, scale_packed3, to_u32, unpack};
+use super::colour::{Rgb, mix, pack, scale_packed, scale_packed3, to_u32, unpack};
 use super::light::Lighting;
 use crate::settings::{ColorMode, Settings, Sun};
 use crate::terrain::Heightfield;
@@ -255,24 +255,6 @@ fn jitter(mean_height: f32) -> f32 {
     let mixed = mean_height.to_bits().wrapping_mul(0x9e37_79b1) >> 16;
     // Multiply-shift maps 16 random bits onto 0..=2J without a division.
     (((mixed * (2 * JITTER_BINS as u32 + 1)) >> 16) as i32 - JITTER_BINS) as f32
-}
-
-/// Scales a table colour (0..=255 per channel), subtracts the tone offset
-/// and packs it as `0x00RRGGBB`.
-#[inline]
-fn pack(base: Rgb, scale: f32, offset: f32) -> u32 {
-    let c = base.map(|v| (v * scale - offset + 0.5).clamp(0.0, 255.0) as u32);
-    c[0] << 16 | c[1] << 8 | c[2]
-}
-
-/// A packed colour times `b` (0..=1), two channels per multiply.
-#[inline]
-fn scale_packed(c: u32, b: f32) -> u32 {
-    // 0 ..= 256 in 1/256ths; NaN casts to 0.
-    let k = ((b * 256.0 + 0.5) as u32).min(256);
-    let red_blue = (((c & 0x00ff_00ff) * k) >> 8) & 0x00ff_00ff;
-    let green = (((c & 0x0000_ff00) * k) >> 8) & 0x0000_ff00;
-    red_blue | green
 }
 
 /// Rec. 709 luminance.
