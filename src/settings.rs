@@ -132,6 +132,12 @@ pub enum Monitors {
     Primary,
 }
 
+/// Smallest grid exponent (17x17 points): the `detail` key's least value
+/// and the smallest heightfield, generated or loaded.
+pub const MIN_GRID_EXPONENT: u32 = 4;
+/// Largest grid exponent (4097x4097 points), as [`MIN_GRID_EXPONENT`].
+pub const MAX_GRID_EXPONENT: u32 = 12;
+
 /// The detail `"auto"` means where no frame is known (a saved data set):
 /// what a 1920x1080 vista gets.
 pub const AUTO_DETAIL_FALLBACK: u32 = 10;

@@ -6,7 +6,10 @@
 use serde::Deserialize;
 use serde::de::IntoDeserializer;
 
-use super::{ColorMode, Detail, Generator, Monitors, Profile, Settings, Sun, ViewKind, WaterLine};
+use super::{
+    ColorMode, Detail, Generator, MAX_GRID_EXPONENT, MIN_GRID_EXPONENT, Monitors, Profile,
+    Settings, Sun, ViewKind, WaterLine,
+};
 
 /// A value as written by a user, before it is checked against a key.
 #[derive(Debug, Clone, PartialEq)]
@@ -241,7 +244,11 @@ pub const KEYS: &[Key] = &[
     ),
     row!(
         detail,
-        Kind::IntOrAuto { min: 4, max: 12 },
+        // The grid sizes a heightfield can have.
+        Kind::IntOrAuto {
+            min: MIN_GRID_EXPONENT as i64,
+            max: MAX_GRID_EXPONENT as i64
+        },
         Remake,
         Value::Str("auto".into()),
         "grid of 2^detail+1 points a side; \"auto\" fits it to the screen"

@@ -1,9 +1,7 @@
 //! The square grid of elevations every generator fills and every renderer reads.
 
-/// Smallest grid exponent: 17x17 points.
-pub const MIN_EXPONENT: u32 = 4;
-/// Largest grid exponent: 4097x4097 points.
-pub const MAX_EXPONENT: u32 = 12;
+/// The grid exponents a heightfield can have (the `detail` key's range).
+pub use crate::settings::{MAX_GRID_EXPONENT as MAX_EXPONENT, MIN_GRID_EXPONENT as MIN_EXPONENT};
 
 /// A square grid of `2^n + 1` points a side of `f32` elevations, sea level at 0.
 ///
