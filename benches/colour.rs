@@ -1,4 +1,5 @@
-//! Speed of the colour work: cast shadows on a 1025x1025 field, the per-face
+//! Speed of the colour work: cast shadows on a 1025x1025 field (1080p) and a
+//! 2049x2049 one (4K: swept on every second point), the per-face
 //! palette lookup, dithering and a full Ridges picture at 1080p.
 
 use std::hint::black_box;
@@ -35,6 +36,10 @@ fn shadows(c: &mut Criterion) {
     let side = Vec3::new(-0.8, 0.3, 0.5).normalize();
     c.bench_function("shadow::cast 1025x1025 side light", |b| {
         b.iter(|| shadow::cast(black_box(&f), black_box(side)))
+    });
+    let f = field(11);
+    c.bench_function("shadow::cast 2049x2049 default light", |b| {
+        b.iter(|| shadow::cast(black_box(&f), black_box(light)))
     });
 }
 

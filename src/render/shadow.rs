@@ -27,11 +27,23 @@ const PENUMBRA: f32 = 2.0;
 /// written `a * (1 - w) + b * w` so a weight of 1 returns `b` exactly.
 const NONE: f32 = -1.0e30;
 
+/// Finest grid the sweep runs on, in points a side: a finer field (a 4K
+/// frame's 2049) is swept on every second point and its light read back
+/// bilinearly. The sweep's lines wait on memory, so a 2049 field took 16 ms
+/// of a 4K frame's ~150 with one core idle; its shadows at 4 to 8 pixels a
+/// swept cell look no different (seeds 42 and 8 compared at 1:1), the
+/// faces keep their own slopes.
+const MAX_SWEPT: usize = 1025;
+
 /// Per grid point, how much direct light arrives (1 lit, 0 shadowed).
 #[derive(Debug, Clone)]
 pub struct ShadowMap {
+    /// Points a side of the field it answers for.
     size: usize,
-    /// Light per point in 1/255ths, row-major.
+    /// Points a side of the swept grid: every `2^shift`-th of the field's.
+    swept: usize,
+    shift: u32,
+    /// Light per swept point in 1/255ths, row-major.
     lit: Vec<u8>,
 }
 
@@ -45,6 +57,8 @@ impl ShadowMap {
     fn uniform(field: &Heightfield, level: u8) -> Self {
         ShadowMap {
             size: field.size(),
+            swept: field.size(),
+            shift: 0,
             lit: vec![level; field.size() * field.size()],
         }
     }
@@ -57,7 +71,18 @@ impl ShadowMap {
     /// Light reaching the grid point at column `x`, row `y`.
     #[inline]
     pub fn lit(&self, x: usize, y: usize) -> f32 {
-        self.lit[y * self.size + x] as f32 * (1.0 / 255.0)
+        if self.shift == 0 {
+            return self.lit[y * self.swept + x] as f32 * (1.0 / 255.0);
+        }
+        let (step, mask) = (1u32 << self.shift, (1usize << self.shift) - 1);
+        let (x0, y0) = (x >> self.shift, y >> self.shift);
+        let (x1, y1) = ((x0 + 1).min(self.swept - 1), (y0 + 1).min(self.swept - 1));
+        let (tx, ty) = ((x & mask) as u32, (y & mask) as u32);
+        let at = |x: usize, y: usize| u32::from(self.lit[y * self.swept + x]);
+        let top = at(x0, y0) * (step - tx) + at(x1, y0) * tx;
+        let bottom = at(x0, y1) * (step - tx) + at(x1, y1) * tx;
+        let sum = top * (step - ty) + bottom * ty;
+        sum as f32 * (1.0 / (255 << (2 * self.shift)) as f32)
     }
 }
 
@@ -67,6 +92,11 @@ impl ShadowMap {
 /// (row 0). A light straight overhead (or an unusable vector) casts no
 /// shadows; a light at or below the horizon leaves every point dark.
 pub fn cast(field: &Heightfield, light: Vec3) -> ShadowMap {
+    cast_within(field, light, MAX_SWEPT)
+}
+
+/// [`cast`], sweeping at most `max_swept` points a side.
+fn cast_within(field: &Heightfield, light: Vec3, max_swept: usize) -> ShadowMap {
     // Grid rows run from the back, so the light's grid direction flips y.
     let (gx, gy) = (light.x, -light.y);
     let flat = gx.hypot(gy);
@@ -76,11 +106,24 @@ pub fn cast(field: &Heightfield, light: Vec3) -> ShadowMap {
     if light.z <= 0.0 {
         return ShadowMap::uniform(field, 0);
     }
-    let n = field.size();
-    let spacing = field.extent().abs() / (n - 1) as f32;
+    let mut shift = 0;
+    while (field.size() - 1) >> shift > max_swept - 1 {
+        shift += 1;
+    }
+    let coarse;
+    let swept = if shift == 0 {
+        field
+    } else {
+        coarse = field.coarsened(shift);
+        &coarse
+    };
+    let n = swept.size();
+    let spacing = swept.extent().abs() / (n - 1) as f32;
     let rise = light.z / flat * spacing;
-    let mut map = ShadowMap::uniform(field, 255);
-    let heights = field.heights();
+    let mut map = ShadowMap::uniform(swept, 255);
+    map.size = field.size();
+    map.shift = shift;
+    let heights = swept.heights();
     if gy.abs() >= gx.abs() {
         sweep(
             heights,
@@ -218,5 +261,65 @@ impl Sweeper {
             horizon[x] = ray.max(heights[x]);
         }
         std::mem::swap(&mut self.prev, &mut self.next);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::settings::{Detail, Settings};
+
+    fn mountain(exponent: u32) -> Heightfield {
+        let settings = Settings {
+            detail: Detail::Level(exponent),
+            ..Settings::default()
+        };
+        crate::terrain::generate(&settings, 42)
+    }
+
+    const SUN: Vec3 = Vec3::new(0.6, 0.55, 0.35);
+
+    #[test]
+    fn a_fine_field_is_swept_on_every_second_point_and_read_between_them() {
+        let field = mountain(11);
+        let map = cast(&field, SUN);
+        let swept = cast(&field.coarsened(1), SUN);
+        assert_eq!((map.size(), swept.size()), (2049, 1025));
+        for y in (0..1024).step_by(7) {
+            for x in (0..1024).step_by(5) {
+                let at = |x, y| swept.lit(x, y);
+                assert_eq!(map.lit(2 * x, 2 * y), at(x, y));
+                let across = (at(x, y) + at(x + 1, y)) / 2.0;
+                let down = (at(x, y) + at(x, y + 1)) / 2.0;
+                assert!((map.lit(2 * x + 1, 2 * y) - across).abs() < 1e-6);
+                assert!((map.lit(2 * x, 2 * y + 1) - down).abs() < 1e-6);
+            }
+        }
+        assert_eq!(map.lit(2048, 2048), swept.lit(1024, 1024));
+    }
+
+    #[test]
+    fn shadows_swept_coarse_match_the_full_sweep() {
+        let field = mountain(11);
+        for sun in [SUN, Vec3::new(-0.3, 0.8, 0.25), Vec3::new(0.9, -0.1, 0.3)] {
+            let fine = cast_within(&field, sun, usize::MAX);
+            let coarse = cast(&field, sun);
+            let n = field.size();
+            let (mut off, mut shade_fine, mut shade_coarse) = (0usize, 0.0, 0.0);
+            for y in 0..n {
+                for x in 0..n {
+                    let (a, b) = (fine.lit(x, y), coarse.lit(x, y));
+                    off += usize::from((a - b).abs() > 0.5);
+                    shade_fine += 1.0 - a;
+                    shade_coarse += 1.0 - b;
+                }
+            }
+            let points = (n * n) as f32;
+            // The same share of the land in shadow, and few points whose
+            // light is turned round (at the shadows' edges).
+            assert!(shade_fine / points > 0.05, "{sun}: hardly any shadow");
+            assert!((shade_coarse / shade_fine - 1.0).abs() < 0.08, "{sun}");
+            assert!((off as f32) < 0.02 * points, "{sun}: {off} points");
+        }
     }
 }
