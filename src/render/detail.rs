@@ -9,8 +9,9 @@
 //!
 //! Faces stay flat-shaded, one colour each, as in the classics. Shading
 //! interpolated across a face (Gouraud) was weighed for large foreground
-//! cells and left out: at this rule's ~4 px it changes nothing a viewer can
-//! see, for 5-13% of a frame (LOOKS.md); larger faces come only from a
+//! cells and left out: at this rule's ~4 px a face is a grain of the land's
+//! texture (seen at 1:1), which interpolation would only smooth away, for
+//! 5-13% of a frame (LOOKS.md); larger faces come only from a
 //! detail the user picks or from `low_detail`, whose big facets are the
 //! look Mountain Terrain asks for.
 
