@@ -10,7 +10,7 @@
 //! once: O(points), rows in memory order, one row of state per pass, and the
 //! points of a row are independent (a light closer to the x axis sweeps the
 //! transposed grid). One thread: the output cannot depend on thread count.
-//! A field finer than [`MAX_SWEPT`] is swept on a coarser copy of itself.
+//! A field finer than `MAX_SWEPT` points a side is swept on a coarser copy.
 //!
 //! A point is fully lit when it stands at or above the horizon arriving from
 //! its neighbour, and fully dark once it is as far below it as the light
