@@ -37,7 +37,7 @@ pub fn for_frame(settings: &Settings, width: u32, height: u32) -> Settings {
     s
 }
 
-/// The detail level whose nearest cells are about [`TARGET_CELL_PX`] wide
+/// The detail level whose nearest cells are about `TARGET_CELL_PX` wide
 /// in this frame, before `low_detail` halves it.
 pub fn auto_level(settings: &Settings, width: u32, height: u32) -> u32 {
     let cells = (1usize << REFERENCE_EXPONENT) as f32;

@@ -78,7 +78,7 @@ const KNOWN_KEYS: [&str; 17] = [
 ];
 
 /// The generator settings that made a mountain, read back from its file:
-/// the keys of [`PARAM_KEYS`], held in a `Settings` (every other key at its
+/// the keys of `PARAM_KEYS`, held in a `Settings` (every other key at its
 /// default). The key table reads, writes and checks each of them.
 #[derive(Debug, Clone, PartialEq)]
 pub struct GeneratorParams(Settings);
