@@ -121,36 +121,28 @@ impl<'a> Scene<'a> {
         let shaded = style.is_filled();
         let wants_sky = style == Style::Shaded && !lighting.classic;
         let light = lighting.sun;
-        // The shadow sweep is the long one: the palette's tables and the
-        // sky's sweep run beside it.
-        let (palette, shadow, skylight) = std::thread::scope(|s| {
+        // The shadow sweep is the long one: the palette's tables, the sky's
+        // sweep and the view run beside it.
+        let ((palette, skylight, row_top, view, rows), shadow) = std::thread::scope(|s| {
             let others = s.spawn(|| {
                 let palette = Palette::lit_by(settings, &field, lighting);
-                (palette, wants_sky.then(|| SkyLight::new(&field)))
+                let skylight = wants_sky.then(|| SkyLight::new(&field));
+                let (row_top, view, rows) = framed(&field, settings, shaded, width, height);
+                (palette, skylight, row_top, view, rows)
             });
             let shadow = (shaded && settings.shadows).then(|| shadow::cast(&field, light));
-            let (palette, skylight) = others
+            let others = others
                 .join()
                 .unwrap_or_else(|p| std::panic::resume_unwind(p));
-            (palette, shadow, skylight)
+            (others, shadow)
         });
         let size = field.size();
-        let row_top: Vec<f32> = (0..size)
-            .map(|y| field.row(y).iter().fold(0.0f32, |m, &h| finite(h).max(m)))
-            .collect();
-        let view = View::fitted(settings.view, size, field.extent(), &row_top, width, height);
         let sky = backdrop(&palette, &view, style, height);
         let haze = (style == Style::Shaded && settings.view != ViewKind::Oblique)
             .then(|| Haze::new(palette.sky().1));
         let ripples = (haze.is_some() && !palette.lighting().classic)
             .then(|| Ripples::new(palette.sky().1, size - 1, field.fingerprint()));
         let cells = size - 1;
-        // Sonar and Outline draw every line of their (already thinned) grid.
-        let rows = if shaded {
-            super::rows::kept_rows(size, &view)
-        } else {
-            (0..size).collect()
-        };
         let (split, sees_right, sees_front) = match view.camera_column() {
             Some(cx) => {
                 let split = cx.floor().clamp(0.0, cells as f32) as usize;
@@ -252,6 +244,30 @@ impl<'a> Scene<'a> {
         }
         (lo.floor() as i64 - 1, hi.ceil() as i64 + 1)
     }
+}
+
+/// The highest point of each row (at least sea level), the view fitted to
+/// `field` in a `width` x `height` frame, and the grid rows its mesh is
+/// drawn with.
+fn framed(
+    field: &Heightfield,
+    settings: &Settings,
+    shaded: bool,
+    width: u32,
+    height: u32,
+) -> (Vec<f32>, View, Vec<usize>) {
+    let size = field.size();
+    let row_top: Vec<f32> = (0..size)
+        .map(|y| field.row(y).iter().fold(0.0f32, |m, &h| finite(h).max(m)))
+        .collect();
+    let view = View::fitted(settings.view, size, field.extent(), &row_top, width, height);
+    // Sonar and Outline draw every line of their (already thinned) grid.
+    let rows = if shaded {
+        super::rows::kept_rows(size, &view)
+    } else {
+        (0..size).collect()
+    };
+    (row_top, view, rows)
 }
 
 /// The sky for this view: in a view with depth the horizon colour is
