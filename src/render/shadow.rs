@@ -194,6 +194,7 @@ fn sweep(
         let count = COLUMN_BLOCK.min(n - k0);
         let lo = order(k0).min(order(k0 + count - 1));
         for (j, row) in heights.chunks_exact(n).enumerate() {
+            prefetch(heights.get((j + AHEAD) * n + lo..(j + AHEAD) * n + lo + count));
             for (b, &h) in row[lo..lo + count].iter().enumerate() {
                 block[b * stride + j] = h;
             }
@@ -202,12 +203,39 @@ fn sweep(
             let span = (order(k) - lo) * stride..(order(k) - lo) * stride + n;
             sweeper.line(&block[span.clone()], &mut block_lit[span]);
         }
-        for (j, row) in lit.chunks_exact_mut(n).enumerate() {
+        for j in 0..n {
+            prefetch(lit.get((j + AHEAD) * n + lo..(j + AHEAD) * n + lo + count));
+            let row = &mut lit[j * n..(j + 1) * n];
             for (b, l) in row[lo..lo + count].iter_mut().enumerate() {
                 *l = block_lit[b * stride + j];
             }
         }
     }
+}
+
+/// Rows ahead whose part of a block is fetched early: every row lies a page
+/// or more from the next, where the processor's own prefetching stops, so a
+/// block's gather and scatter otherwise wait on a miss per row. 8 rows took
+/// the 1025 sweep from 5.9-6.9 to 3.0-3.6 ms and the 2049 one from 8.4-9.6
+/// to 4.9-5.4 ms on a slow evening (4 to 24 measured: 4-8 alike).
+const AHEAD: usize = 8;
+
+/// Asks for the cache lines holding the first and last item of `items`
+/// (none: nothing), ahead of their use. Only a hint: the same results
+/// without it.
+#[inline(always)]
+fn prefetch<T>(items: Option<&[T]>) {
+    #[cfg(target_arch = "x86_64")]
+    if let Some(items) = items {
+        use std::arch::x86_64::{_MM_HINT_T0, _mm_prefetch};
+        for p in [items.first(), items.last()].into_iter().flatten() {
+            // SAFETY: SSE is part of every x86-64 processor, and a prefetch
+            // never faults or changes memory; both pointers lie in `items`.
+            unsafe { _mm_prefetch::<_MM_HINT_T0>((p as *const T).cast()) };
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = items;
 }
 
 /// Columns swept per block in a column sweep: two cache lines of heights
