@@ -222,3 +222,62 @@ fn line_ends_are_the_lines_own_pixels_next_to_the_end() {
         );
     }
 }
+
+/// Whether the centre of pixel (`x`, `y`) is covered by triangle `v` under
+/// the top-left rule, worked out from scratch: the reference every fill
+/// path (narrow scans, wide scans, walked edges) must agree with.
+fn covers(v: [Fixed2; 3], x: i64, y: i64) -> bool {
+    let (px, py) = (x * SUBPIXEL + SUBPIXEL / 2, y * SUBPIXEL + SUBPIXEL / 2);
+    let [a, mut b, mut c] = v;
+    let area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    if area == 0 {
+        return false;
+    }
+    if area > 0 {
+        std::mem::swap(&mut b, &mut c);
+    }
+    [(a, b), (b, c), (c, a)].iter().all(|&(p, q)| {
+        let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
+        let e = (px - p[0]) * dy - (py - p[1]) * dx;
+        let top_left = dy > 0 || (dy == 0 && dx < 0);
+        if top_left { e >= 0 } else { e > 0 }
+    })
+}
+
+/// Random triangles of every box shape the filler tells apart (a few
+/// columns, up to eight columns and four rows, larger), slivers a row
+/// high among them: the spans cover exactly the pixels whose centres the
+/// reference finds inside.
+#[test]
+fn spans_cover_exactly_the_centres_inside() {
+    let mut rng = Pcg32::seed_from_u64(11);
+    let clip = Clip::frame(W as u32, H as u32);
+    for i in 0..5_000 {
+        let (w, h) = match i % 4 {
+            0 => (4.0, 4.0),
+            1 => (9.0, 1.5),
+            2 => (9.0, 5.0),
+            _ => (30.0, 30.0),
+        };
+        // Some cross the frame's edges, where the clip cuts their boxes.
+        let (ox, oy) = (rng.random_range(-10.0..90.0), rng.random_range(-10.0..75.0));
+        let mut corner = || to_fixed(ox + rng.random_range(0.0..w), oy + rng.random_range(0.0..h));
+        let v = [corner(), corner(), corner()];
+        let mut got = vec![false; W * H];
+        fill_triangle(v, &clip, |y, xa, xb| {
+            for x in xa..xb {
+                assert!(!got[y as usize * W + x as usize], "{v:?}: a pixel twice");
+                got[y as usize * W + x as usize] = true;
+            }
+        });
+        for y in 0..H {
+            for x in 0..W {
+                assert_eq!(
+                    got[y * W + x],
+                    covers(v, x as i64, y as i64),
+                    "{v:?}: pixel ({x}, {y})"
+                );
+            }
+        }
+    }
+}

@@ -115,9 +115,18 @@ impl Edge {
     }
 }
 
-/// Bounding boxes at most this many columns wide are scanned pixel by pixel;
-/// wider ones get their span ends by division (identical results).
+/// Bounding boxes at most this many columns wide are scanned pixel by pixel,
+/// four centres a row; larger ones (but see [`WIDE_SCAN_WIDTH`]) get their
+/// span ends by division (identical results).
 const SCAN_WIDTH: i64 = 4;
+/// Boxes up to this wide and [`WIDE_SCAN_ROWS`] tall are scanned too, eight
+/// centres a row: the far land's cells are flat slivers a row or two high
+/// and three to six pixels wide, and setting up a [`Walk`] costs each edge
+/// two 64-bit divisions.
+const WIDE_SCAN_WIDTH: i64 = 8;
+/// See [`WIDE_SCAN_WIDTH`]: past this many rows the walk's cheaper rows
+/// repay its set-up.
+const WIDE_SCAN_ROWS: i64 = 4;
 
 /// Calls `span(y, x0, x1)` for every row of pixels the triangle covers
 /// (columns `x0..x1`, exclusive end), top to bottom, within `clip`.
@@ -174,20 +183,13 @@ impl Triangle {
             std::mem::swap(&mut b, &mut c);
         }
         let edges = [Edge::new(a, b), Edge::new(b, c), Edge::new(c, a)];
-        if ix1 - ix0 < SCAN_WIDTH {
-            // Narrow boxes (most triangles of a fine grid): test the few
-            // centres, stepping the edge functions by additions row to row.
-            let (px, py) = (ix0 * SUBPIXEL + HALF, iy0 * SUBPIXEL + HALF);
-            let mut row = edges.map(|e| e.eval(px, py));
-            let down = edges.map(|e| -e.dx * SUBPIXEL);
-            let across = edges.map(|e| e.dy * SUBPIXEL);
-            for iy in iy0..iy1 + 1 {
-                let (lo, hi) = scan_row(row, across, ix0, ix1);
-                if lo <= hi {
-                    span(iy as u32, lo as u32, hi as u32 + 1);
-                }
-                row = [row[0] + down[0], row[1] + down[1], row[2] + down[2]];
-            }
+        let (w, h) = (ix1 - ix0 + 1, iy1 - iy0 + 1);
+        if w <= SCAN_WIDTH {
+            scan::<{ SCAN_WIDTH as usize }>(&edges, self.box_, span);
+            return;
+        }
+        if w <= WIDE_SCAN_WIDTH && h <= WIDE_SCAN_ROWS {
+            scan::<{ WIDE_SCAN_WIDTH as usize }>(&edges, self.box_, span);
             return;
         }
         // Wider ones: each edge's bound on the row's columns, stepped row by row.
@@ -274,20 +276,39 @@ impl Walk {
     }
 }
 
+/// Calls `span` for each covered row of a triangle whose box (`[x0, x1, y0,
+/// y1]`) is at most `N` columns wide, testing the few centres and stepping
+/// the edge functions by additions row to row.
+#[inline(always)]
+fn scan<const N: usize>(edges: &[Edge; 3], box_: [i64; 4], mut span: impl FnMut(u32, u32, u32)) {
+    let [ix0, ix1, iy0, iy1] = box_;
+    let (px, py) = (ix0 * SUBPIXEL + HALF, iy0 * SUBPIXEL + HALF);
+    let mut row = edges.map(|e| e.eval(px, py));
+    let down = edges.map(|e| -e.dx * SUBPIXEL);
+    let across = edges.map(|e| e.dy * SUBPIXEL);
+    for iy in iy0..iy1 + 1 {
+        let (lo, hi) = scan_row::<N>(row, across, ix0, ix1);
+        if lo <= hi {
+            span(iy as u32, lo as u32, hi as u32 + 1);
+        }
+        row = [row[0] + down[0], row[1] + down[1], row[2] + down[2]];
+    }
+}
+
 /// The inside columns of one row, found by testing each pixel centre.
 /// `start` holds the three edge functions at column `ix0`, `step` their
-/// change per column; the row holds at most `SCAN_WIDTH` columns.
+/// change per column; the row holds at most `N` columns.
 ///
 /// Every centre is tested without branching (the tiny triangles of a fine
 /// grid made a scanning loop mispredict at every turn); the inside of a row
 /// of a triangle is one run, so its first and last inside column give it.
 #[inline]
-fn scan_row(start: [i64; 3], step: [i64; 3], ix0: i64, ix1: i64) -> (i64, i64) {
+fn scan_row<const N: usize>(start: [i64; 3], step: [i64; 3], ix0: i64, ix1: i64) -> (i64, i64) {
     let [mut e0, mut e1, mut e2] = start;
     let [s0, s1, s2] = step;
     let columns = ix1 - ix0 + 1;
     let mut inside = 0u32;
-    for k in 0..SCAN_WIDTH {
+    for k in 0..N as i64 {
         let hit = (k < columns) & ((e0 | e1 | e2) >= 0);
         inside |= (hit as u32) << k;
         (e0, e1, e2) = (e0 + s0, e1 + s1, e2 + s2);
