@@ -2,7 +2,7 @@
 
 use std::sync::Arc;
 
-use mountains::render::{Frame, Painter, render_full};
+use mountains::render::{Frame, Painter, Rect, render_full};
 use mountains::settings::{ColorMode, Settings, ViewKind};
 use mountains::terrain::Heightfield;
 
@@ -112,33 +112,51 @@ fn finish_equals_the_full_frame_fresh_or_part_way() {
     }
 }
 
+/// A step's damage holds every pixel it changed; in the vista, where a
+/// strip winds across the frame over its peaks, the damage follows the
+/// strip instead of boxing it (what the saver copies and sends).
 #[test]
 fn damage_covers_every_changed_pixel() {
     let f = field(5);
-    for color in [ColorMode::Natural, ColorMode::Sonar, ColorMode::Outline] {
-        let s = settings(color, ViewKind::Oblique, 0);
-        let (w, h) = (120u32, 90u32);
+    let cases = [
+        (ColorMode::Natural, ViewKind::Oblique),
+        (ColorMode::Sonar, ViewKind::Oblique),
+        (ColorMode::Outline, ViewKind::Oblique),
+        (ColorMode::Natural, ViewKind::Vista),
+    ];
+    for (color, view) in cases {
+        let s = settings(color, view, 0);
+        let (w, h) = (640u32, 240u32);
         let mut frame = Frame::new(w, h).unwrap();
         let mut p = Painter::new(Arc::new(f.clone()), &s, w, h);
         let first = p.step(&mut frame, 1);
         assert_eq!(
-            first,
+            first.bounds(),
             frame.bounds(),
             "the first step paints the background"
         );
+        let (mut kept, mut boxed) = (0u64, 0u64);
         while !p.is_done() {
             let before = frame.clone();
             let d = p.step(&mut frame, 2);
             for y in 0..h {
                 for x in 0..w {
                     let i = (y * w + x) as usize;
-                    let inside = x >= d.x0 && x < d.x1 && y >= d.y0 && y < d.y1;
                     assert!(
-                        inside || before.pixels()[i] == frame.pixels()[i],
+                        d.contains(x, y) || before.pixels()[i] == frame.pixels()[i],
                         "{color:?}: pixel ({x}, {y}) changed outside the damage {d:?}"
                     );
                 }
             }
+            let area = |r: Rect| u64::from(r.x1 - r.x0) * u64::from(r.y1 - r.y0);
+            kept += d.rects().map(area).sum::<u64>();
+            boxed += area(d.bounds());
+        }
+        if view == ViewKind::Vista {
+            assert!(
+                kept * 10 < boxed * 7,
+                "the damage boxes the strips: {kept} of {boxed} pixels"
+            );
         }
         assert!(
             p.step(&mut frame, 5).is_empty(),

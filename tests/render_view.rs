@@ -125,7 +125,7 @@ fn strips_run_back_to_front() {
         p.step(&mut frame, 1);
         let mut last = 0;
         while !p.is_done() {
-            let d = p.step(&mut frame, 1);
+            let d = p.step(&mut frame, 1).bounds();
             assert!(
                 d.y1 >= last,
                 "{view:?}: strip {} drawn above the one behind it",

@@ -11,6 +11,7 @@
 //! Both end with the same pixels; the second lets the full frame skip the
 //! faces hidden behind what is already drawn.
 
+use super::damage::Damage;
 use super::frame::Rect;
 use super::raster::Clip;
 
@@ -21,7 +22,7 @@ pub(crate) struct Canvas<'a> {
     x0: u32,
     y0: u32,
     clip: Clip,
-    damage: Rect,
+    damage: Damage,
     /// Keeping the first write: for each column, the top of the run of
     /// written pixels that reaches the bottom row (`clip.y1` when empty).
     solid: Option<Vec<i64>>,
@@ -54,7 +55,7 @@ impl<'a> Canvas<'a> {
                 y0: y0 as i64,
                 y1: (y0 + height) as i64,
             },
-            damage: Rect::default(),
+            damage: Damage::default(),
             solid: None,
         }
     }
@@ -150,26 +151,19 @@ impl<'a> Canvas<'a> {
     /// What has been drawn so far, in frame coordinates. A canvas that
     /// keeps the first write is drawn whole in one go, sky included, and
     /// answers its whole rectangle (tracking each write cost 1%).
-    pub(crate) fn damage(&self) -> Rect {
+    pub(crate) fn damage(&self) -> Damage {
         if self.solid.is_some() {
             let c = self.clip;
-            return Rect::sized(c.x0 as u32, c.y0 as u32, self.width, (c.y1 - c.y0) as u32);
+            let all = Rect::sized(c.x0 as u32, c.y0 as u32, self.width, (c.y1 - c.y0) as u32);
+            return all.into();
         }
-        self.damage
+        self.damage.clone()
     }
 
     /// Adds a rectangle to the damage.
     #[inline]
     pub(crate) fn touch(&mut self, x0: u32, y0: u32, x1: u32, y1: u32) {
-        let d = &mut self.damage;
-        if d.is_empty() {
-            *d = Rect { x0, y0, x1, y1 };
-        } else {
-            d.x0 = d.x0.min(x0);
-            d.y0 = d.y0.min(y0);
-            d.x1 = d.x1.max(x1);
-            d.y1 = d.y1.max(y1);
-        }
+        self.damage.add(Rect { x0, y0, x1, y1 });
     }
 
     /// Row `y`, columns `x0..x1` (frame coordinates, already clipped).

@@ -4,6 +4,7 @@ mod bands;
 mod camera;
 mod canvas;
 pub mod colour;
+pub mod damage;
 pub mod detail;
 pub mod dither;
 mod edges;
@@ -26,5 +27,6 @@ pub mod view;
 mod vista;
 mod walk;
 
+pub use damage::Damage;
 pub use frame::{Frame, Rect};
 pub use painter::{Painter, render_full};

@@ -4,6 +4,7 @@ use std::sync::Arc;
 
 use super::bands;
 use super::canvas::Canvas;
+use super::damage::Damage;
 use super::frame::{Frame, Rect};
 use super::ridges::Ridges;
 use super::scene::{FieldRef, Scene};
@@ -66,16 +67,16 @@ impl Painter {
     }
 
     /// Draws up to `budget` more strips, back to front, and returns the
-    /// rectangle of pixels it changed (empty when nothing was left, or when
-    /// `frame` is not the size this painter was made for).
-    pub fn step(&mut self, frame: &mut Frame, budget: usize) -> Rect {
+    /// pixels it changed (empty when nothing was left, or when `frame` is
+    /// not the size this painter was made for).
+    pub fn step(&mut self, frame: &mut Frame, budget: usize) -> Damage {
         if frame.width() != self.width || frame.height() != self.height {
-            return Rect::default();
+            return Damage::default();
         }
         let start = self.next;
         let end = start.saturating_add(budget).min(self.strips_total());
         if start >= end && start > 0 {
-            return Rect::default();
+            return Damage::default();
         }
         self.next = end;
         match &mut self.how {
@@ -96,7 +97,7 @@ impl Painter {
                 for i in start..end {
                     damage = damage.union(&ridges.draw_strip(frame, i));
                 }
-                damage
+                damage.into()
             }
         }
     }
@@ -113,7 +114,7 @@ impl Painter {
                 self.next = self.strips_total();
                 frame.bounds()
             }
-            _ => self.step(frame, usize::MAX),
+            _ => self.step(frame, usize::MAX).bounds(),
         }
     }
 }

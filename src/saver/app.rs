@@ -22,7 +22,7 @@ use super::show::Show;
 use super::slideshow::Pacing;
 use super::trace::Trace;
 use crate::mountain::Mountain;
-use crate::render::Rect;
+use crate::render::Damage;
 use crate::settings::{Monitors, Settings};
 
 /// Which kind of winit window to run.
@@ -444,16 +444,16 @@ impl App {
         let damage = screen
             .show
             .resize((size.width, size.height), Instant::now());
-        self.present(event_loop, i, damage);
+        self.present(event_loop, i, damage.into());
     }
 
     fn present_all(&mut self, event_loop: &ActiveEventLoop, i: usize) {
         let bounds = self.screens[i].bounds();
-        self.present(event_loop, i, bounds);
+        self.present(event_loop, i, bounds.into());
     }
 
-    fn present(&mut self, event_loop: &ActiveEventLoop, i: usize, damage: Rect) {
-        match self.screens[i].present(damage) {
+    fn present(&mut self, event_loop: &ActiveEventLoop, i: usize, damage: Damage) {
+        match self.screens[i].present(&damage) {
             Ok(true) => self.trace.presented(),
             Ok(false) => {}
             Err(e) => self.fail(event_loop, SaverError::Other(e)),
@@ -484,7 +484,7 @@ impl App {
             return;
         };
         self.update_title(i);
-        self.present(event_loop, i, damage);
+        self.present(event_loop, i, damage.into());
     }
 
     /// The window title tells the seed (to reproduce a mountain) and the

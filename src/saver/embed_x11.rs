@@ -218,16 +218,16 @@ impl Embedded {
 
     fn present_all(&mut self) -> Result<(), SaverError> {
         match self.show.frame().map(|f| f.bounds()) {
-            Some(bounds) => self.present(bounds),
+            Some(bounds) => self.present(bounds.into()),
             None => Ok(()),
         }
     }
 
-    fn present(&mut self, damage: crate::render::Rect) -> Result<(), SaverError> {
+    fn present(&mut self, damage: crate::render::Damage) -> Result<(), SaverError> {
         let Some(frame) = self.show.frame() else {
             return Ok(());
         };
-        match self.presenter.present(frame, damage) {
+        match self.presenter.present(frame, &damage) {
             Ok(()) => {
                 self.trace.presented();
                 Ok(())

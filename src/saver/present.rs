@@ -8,7 +8,7 @@ use raw_window_handle::RawWindowHandle;
 use raw_window_handle::{HasDisplayHandle, HasWindowHandle};
 use softbuffer::{Context, Surface};
 
-use crate::render::{Frame, Rect};
+use crate::render::{Damage, Frame, Rect};
 
 #[cfg(unix)]
 use super::bands_x11::BandPresenter;
@@ -81,10 +81,10 @@ impl<W: HasWindowHandle + HasDisplayHandle + Clone> Presenter<W> {
     /// Shows the pixels of `damage` (the whole frame if the window lost its
     /// previous contents). Switches to the fallback once, with a warning,
     /// if softbuffer fails.
-    pub fn present(&mut self, frame: &Frame, damage: Rect) -> Result<(), String> {
+    pub fn present(&mut self, frame: &Frame, damage: &Damage) -> Result<(), String> {
         #[cfg(unix)]
         if let Some(bands) = self.bands.as_mut() {
-            return bands.present(frame, damage);
+            return damage.rects().try_for_each(|r| bands.present(frame, r));
         }
         let Some(surface) = self.surface.as_mut() else {
             return Err("nothing to present with".into());
@@ -151,7 +151,7 @@ fn opaque_alpha(depth: u8) -> u32 {
 fn present_soft<W: HasWindowHandle + HasDisplayHandle>(
     surface: &mut Surface<W, W>,
     frame: &Frame,
-    damage: Rect,
+    damage: &Damage,
     alpha: u32,
 ) -> Result<(), softbuffer::SoftBufferError> {
     let (Some(w), Some(h)) = (
@@ -163,21 +163,29 @@ fn present_soft<W: HasWindowHandle + HasDisplayHandle>(
     surface.resize(w, h)?;
     let mut buffer = surface.buffer_mut()?;
     // Age 0: the buffer is new or was not presented, so it holds nothing of ours.
-    let rect = if buffer.age() == 0 {
-        frame.bounds()
+    let rects: Vec<Rect> = if buffer.age() == 0 {
+        vec![frame.bounds()]
     } else {
-        damage.intersect(&frame.bounds())
+        let bounds = frame.bounds();
+        damage.rects().map(|r| r.intersect(&bounds)).collect()
     };
-    if rect.is_empty() {
+    let rects: Vec<softbuffer::Rect> = rects
+        .into_iter()
+        .filter(|r| !r.is_empty())
+        .map(|r| {
+            copy_rect(frame, &mut buffer, r, alpha);
+            softbuffer::Rect {
+                x: r.x0,
+                y: r.y0,
+                width: NonZeroU32::new(r.x1 - r.x0).unwrap_or(w),
+                height: NonZeroU32::new(r.y1 - r.y0).unwrap_or(h),
+            }
+        })
+        .collect();
+    if rects.is_empty() {
         return Ok(());
     }
-    copy_rect(frame, &mut buffer, rect, alpha);
-    buffer.present_with_damage(&[softbuffer::Rect {
-        x: rect.x0,
-        y: rect.y0,
-        width: NonZeroU32::new(rect.x1 - rect.x0).unwrap_or(w),
-        height: NonZeroU32::new(rect.y1 - rect.y0).unwrap_or(h),
-    }])?;
+    buffer.present_with_damage(&rects)?;
     // softbuffer's X11 backend leaves the image request in the connection's
     // output buffer until the next `buffer_mut` waits for it. On a connection
     // nobody else flushes (a foreign window's), the last frame before a hold

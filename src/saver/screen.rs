@@ -11,7 +11,7 @@ use super::heads::Head;
 use super::input::Action;
 use super::present::Presenter;
 use super::show::Show;
-use crate::render::Rect;
+use crate::render::{Damage, Rect};
 
 /// One window and the slide show drawn in it.
 pub(super) struct Screen {
@@ -46,7 +46,7 @@ impl Screen {
 
     /// Puts the `damage` part of the show's frame on the window; `Ok(false)`
     /// when there was nothing to put.
-    pub(super) fn present(&mut self, damage: Rect) -> Result<bool, String> {
+    pub(super) fn present(&mut self, damage: &Damage) -> Result<bool, String> {
         let Some(frame) = self.show.frame().filter(|_| !damage.is_empty()) else {
             return Ok(false);
         };

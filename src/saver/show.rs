@@ -9,7 +9,7 @@ use super::redraw::{Drawn, Redraw};
 use super::slideshow::{Due, Pacing, Slideshow};
 use super::source;
 use crate::mountain::Mountain;
-use crate::render::{Frame, Painter, Rect, detail};
+use crate::render::{Damage, Frame, Painter, Rect, detail};
 use crate::settings::Settings;
 use crate::settings::keys::{self, Change};
 
@@ -147,27 +147,28 @@ impl Show {
         }
     }
 
-    /// Does what is due at `now` and returns the rectangle that changed.
-    pub fn tick(&mut self, now: Instant) -> Rect {
+    /// Does what is due at `now` and returns the pixels that changed.
+    pub fn tick(&mut self, now: Instant) -> Damage {
         if self.redraw.as_ref().is_some_and(|r| !r.is_done()) {
-            return Rect::default();
+            return Damage::default();
         }
         if self.redraw.is_some() {
-            return self.settle(now);
+            return self.settle(now).into();
         }
         let (Some(painter), Some(frame)) = (self.painter.as_mut(), self.frame.as_mut()) else {
-            return Rect::default();
+            return Damage::default();
         };
         match self.slideshow.due(now) {
             Due::Wait if self.overlay.help_ends().is_some_and(|t| t <= now) => {
-                self.redraw_overlay(now)
+                self.redraw_overlay(now).into()
             }
-            Due::Wait => Rect::default(),
+            Due::Wait => Damage::default(),
             Due::Draw(strips) => {
                 let lifted = self.overlay.lift(frame);
-                let mut damage = painter.step(frame, strips).union(&lifted);
+                let mut damage = painter.step(frame, strips);
+                damage.add(lifted);
                 self.overlay.count_frame(now);
-                damage = damage.union(&self.overlay.draw(frame, now));
+                damage.add(self.overlay.draw(frame, now));
                 self.slideshow.drew(strips, now);
                 if painter.is_done() && !self.slideshow.is_holding() {
                     self.slideshow.finish_now(now);
@@ -177,7 +178,7 @@ impl Show {
                 }
                 damage
             }
-            Due::Advance => self.advance(now),
+            Due::Advance => self.advance(now).into(),
         }
     }
 
@@ -201,7 +202,7 @@ impl Show {
         let size = self.size();
         // The first strips go out with the cleared frame: no blank flash.
         let cleared = self.start_drawing(size, now);
-        cleared.union(&self.tick(now))
+        cleared.union(&self.tick(now).bounds())
     }
 
     /// The N key: a freshly generated mountain, also after `--open`
@@ -246,7 +247,7 @@ impl Show {
             // The drawing thread failed: draw here, strip by strip.
             None => {
                 self.start_drawing(self.size, now);
-                self.tick(now)
+                self.tick(now).bounds()
             }
         }
     }
@@ -435,7 +436,7 @@ mod tests {
             Some(t0 + Duration::from_millis(3000))
         );
         assert!(show.tick(t0 + Duration::from_millis(2000)).is_empty());
-        let next = show.tick(t0 + Duration::from_millis(3000));
+        let next = show.tick(t0 + Duration::from_millis(3000)).bounds();
         assert_eq!(
             next,
             Rect {
@@ -543,7 +544,7 @@ mod tests {
         // No clock: a tick shows the redraw once its thread is done.
         while damage.is_empty() {
             std::thread::yield_now();
-            damage = show.tick(t1);
+            damage = show.tick(t1).bounds();
         }
         assert_eq!((damage.x1, damage.y1), (90, 40));
         let mut full = Frame::new(90, 40).unwrap();
