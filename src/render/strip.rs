@@ -44,6 +44,9 @@ impl Corner {
     }
 }
 
+/// A grid triangle's corners, in drawing order.
+type Face<'c> = [&'c Corner; 3];
+
 /// A strip's two projected grid rows: `y` are their grid rows, back first.
 struct StripRows<'r> {
     y: [usize; 2],
@@ -130,9 +133,9 @@ impl Scene<'_> {
         let [tl, bl] = rows.column(self, x);
         let [tr, br] = rows.column(self, x + 1);
         let [far, near] = if rightward {
-            [[tl, tr, bl], [tr, br, bl]]
+            [[&tl, &tr, &bl], [&tr, &br, &bl]]
         } else {
-            [[tl, tr, br], [tl, br, bl]]
+            [[&tl, &tr, &br], [&tl, &br, &bl]]
         };
         // The painter's order, written out: the hottest call of a frame.
         if canvas.keeps_first() {
@@ -146,7 +149,7 @@ impl Scene<'_> {
 
     /// One grid triangle: water, land, or both split at the water line
     /// (seed 000's DrawTriangle).
-    fn fill_face(&self, canvas: &mut Canvas, c: [Corner; 3]) {
+    fn fill_face(&self, canvas: &mut Canvas, c: Face) {
         let wet = c.map(|k| k.h < 0.0);
         if c.iter().all(|k| k.h <= 0.0) {
             self.fill_water(canvas, c);
@@ -158,7 +161,7 @@ impl Scene<'_> {
     }
 
     /// A triangle crossing the water line, cut into its land and water parts.
-    fn fill_split(&self, canvas: &mut Canvas, c: [Corner; 3], wet: [bool; 3]) {
+    fn fill_split(&self, canvas: &mut Canvas, c: Face, wet: [bool; 3]) {
         // `odd` is the corner alone on its side; keep the winding of `c`.
         let odd = if wet[0] != wet[1] && wet[0] != wet[2] {
             0
@@ -174,7 +177,7 @@ impl Scene<'_> {
         let normal = self.face_normal(&c);
         let lit = lit_of(&c);
         // The odd corner's part first, then the other side's two.
-        let parts = [[a, m0, m1], [m0, s0, s1], [m0, s1, m1]];
+        let parts = [[a, &m0, &m1], [&m0, s0, s1], [&m0, s1, &m1]];
         painter_order(
             canvas,
             parts.into_iter().enumerate(),
@@ -189,7 +192,7 @@ impl Scene<'_> {
     }
 
     /// Where the edge from `a` to `b` (one wet, one dry) meets sea level.
-    fn shore(&self, a: Corner, b: Corner) -> Corner {
+    fn shore(&self, a: &Corner, b: &Corner) -> Corner {
         let f = a.h / (a.h - b.h);
         let g = a.g + (b.g - a.g) * f;
         Corner {
@@ -204,10 +207,10 @@ impl Scene<'_> {
 
     /// Upward unit normal of a grid triangle, in the palette's frame (z up,
     /// y towards the back).
-    fn face_normal(&self, c: &[Corner; 3]) -> Vec3 {
+    fn face_normal(&self, c: &Face) -> Vec3 {
         let cell = self.view.cell();
         let world = |k: &Corner| Vec3::new(k.g.x * cell, -k.g.y * cell, k.h);
-        let (p0, p1, p2) = (world(&c[0]), world(&c[1]), world(&c[2]));
+        let (p0, p1, p2) = (world(c[0]), world(c[1]), world(c[2]));
         let n = (p1 - p0).cross(p2 - p0);
         let n = if n.z < 0.0 { -n } else { n };
         n.try_normalize().unwrap_or(Vec3::Z)
@@ -219,13 +222,7 @@ impl Scene<'_> {
     /// first surface a sight line meets always faces it (or is a skirt), so
     /// those faces would only be painted over. On rugged ground that is a
     /// good share of the triangles, and the tallest, thinnest ones.
-    fn fill_land(
-        &self,
-        canvas: &mut Canvas,
-        c: [Corner; 3],
-        normal: impl FnOnce() -> Vec3,
-        lit: f32,
-    ) {
+    fn fill_land(&self, canvas: &mut Canvas, c: Face, normal: impl FnOnce() -> Vec3, lit: f32) {
         if faces_away([c[0].p, c[1].p, c[2].p]) {
             return;
         }
@@ -238,7 +235,7 @@ impl Scene<'_> {
         self.paint(canvas, [c[0].p, c[1].p, c[2].p], colour);
     }
 
-    fn fill_water(&self, canvas: &mut Canvas, c: [Corner; 3]) {
+    fn fill_water(&self, canvas: &mut Canvas, c: Face) {
         let depth = -(c[0].h.min(0.0) + c[1].h.min(0.0) + c[2].h.min(0.0)) / 3.0;
         self.paint(canvas, [c[0].p, c[1].p, c[2].p], || {
             let water = self.palette.water(depth);
@@ -264,11 +261,11 @@ impl Scene<'_> {
         let (a, b) = match (a.h > 0.0, b.h > 0.0) {
             (false, false) => return,
             (true, true) => (a, b),
-            (true, false) => (a, self.shore(a, b)),
-            (false, true) => (self.shore(a, b), b),
+            (true, false) => (a, self.shore(&a, &b)),
+            (false, true) => (self.shore(&a, &b), b),
         };
         let (fa, fb) = (foot(a), foot(b));
-        let colour = self.hazed(self.palette.skirt(normal), &[a, b, fa]);
+        let colour = self.hazed(self.palette.skirt(normal), &[&a, &b, &fa]);
         let halves = [[a.p, b.p, fb.p], [a.p, fb.p, fa.p]];
         painter_order(canvas, halves.into_iter(), |canvas, v| {
             self.paint(canvas, v, || colour)
@@ -277,7 +274,7 @@ impl Scene<'_> {
 
     /// `colour` faded by the air between the viewer and the face's corners.
     #[inline]
-    fn hazed(&self, colour: u32, c: &[Corner; 3]) -> u32 {
+    fn hazed(&self, colour: u32, c: &Face) -> u32 {
         match &self.haze {
             Some(haze) => {
                 let t = (c[0].haze + c[1].haze + c[2].haze) / 3;
@@ -355,7 +352,7 @@ fn faces_away(p: [Fixed2; 3]) -> bool {
 }
 
 /// Light on a face: the mean of its corners'.
-fn lit_of(c: &[Corner; 3]) -> f32 {
+fn lit_of(c: &Face) -> f32 {
     (c[0].lit + c[1].lit + c[2].lit) / 3.0
 }
 
