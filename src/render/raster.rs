@@ -189,7 +189,12 @@ impl Triangle {
             return;
         }
         if w <= WIDE_SCAN_WIDTH && h <= WIDE_SCAN_ROWS {
-            scan::<{ WIDE_SCAN_WIDTH as usize }>(&edges, self.box_, span);
+            // Most are five or six columns: no more centres tested than that.
+            if w <= 6 {
+                scan::<6>(&edges, self.box_, span);
+            } else {
+                scan::<{ WIDE_SCAN_WIDTH as usize }>(&edges, self.box_, span);
+            }
             return;
         }
         // Wider ones: each edge's bound on the row's columns, stepped row by row.
