@@ -113,12 +113,13 @@ impl<'a> Canvas<'a> {
         let r = (y - self.y0) as usize;
         let (a, b) = ((x0 - self.x0) as usize, (x1 - self.x0) as usize);
         let (upper, rest) = self.rows.split_at_mut(r);
-        let row = &mut rest[0][a..b];
+        let (row, solid) = (&mut rest[0][a..b], &mut solid[a..b]);
         let below = i64::from(y) + 1;
-        for ((px, top), (c, x)) in row.iter_mut().zip(&mut solid[a..b]).zip((a..).zip(x0..)) {
+        for i in 0..row.len().min(solid.len()) {
+            let (px, top, c) = (&mut row[i], &mut solid[i], a + i);
             // A select, not a branch: written and unwritten pixels alternate
             // unpredictably along a ridge.
-            let colour = colour(x);
+            let colour = colour(x0 + i as u32);
             *px = if *px == UNSET { colour } else { *px };
             if *top == below {
                 // The row joins the column's solid run: lift the run over
