@@ -86,6 +86,9 @@ pub(crate) fn draw_strips(
     let clip = *canvas.clip();
     let narrow = clip.x0 > 0 || clip.x1 < i64::from(frame_width);
     let n = scene.cells() + 1;
+    // The cells reaching the band in the strip drawn last, where the next
+    // strip's search starts.
+    let mut reaching = 0..scene.cells();
     painter_order(canvas, strips, |canvas, s| {
         let (lo, hi) = scene.strip_rows(s);
         if hi < clip.y0 || lo >= clip.y1 {
@@ -93,7 +96,8 @@ pub(crate) fn draw_strips(
         }
         let filled = scene.style.is_filled();
         let cells = if narrow && filled {
-            scene.cells_reaching(s, &clip)
+            reaching = scene.cells_reaching(s, &clip, &reaching);
+            reaching.clone()
         } else {
             0..scene.cells()
         };
