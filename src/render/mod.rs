@@ -23,6 +23,7 @@ pub mod shadow;
 mod sky;
 mod skylight;
 mod strip;
+mod tops;
 pub mod view;
 mod vista;
 mod walk;

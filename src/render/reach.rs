@@ -36,7 +36,7 @@ impl Scene<'_> {
     ) -> Range<usize> {
         let cells = self.cells();
         let (y0, y1) = self.strip_grid_rows(s);
-        let top = self.row_top[y0].max(self.row_top[y1]);
+        let top = self.row_top.row(y0).max(self.row_top.row(y1));
         let lines = [(y0, 0.0), (y0, top), (y1, 0.0), (y1, top)];
         let column =
             |gx: usize, (row, h): (usize, f32)| self.view.project(gx as f32, row as f32, h).x;

@@ -12,6 +12,7 @@ use super::ripples::Ripples;
 use super::shadow::{self, ShadowMap};
 use super::sky::Sky;
 use super::skylight::SkyLight;
+use super::tops::RowTops;
 use super::view::View;
 use crate::settings::{ColorMode, Settings, ViewKind};
 use crate::terrain::Heightfield;
@@ -99,8 +100,8 @@ pub(crate) struct Scene<'a> {
     /// Cells `0..split` of a row are drawn left to right, then the rest right
     /// to left, so faces nearer the camera's column overwrite farther ones.
     pub split: usize,
-    /// Highest point of each row, at least sea level.
-    pub(super) row_top: Vec<f32>,
+    /// Highest point of each row and of each block of it, at least sea level.
+    pub(super) row_top: RowTops,
     /// The grid rows the mesh is drawn with (see `rows.rs`); strip `s` lies
     /// between rows `rows[s]` and `rows[s + 1]`.
     pub(super) rows: Vec<usize>,
@@ -234,8 +235,24 @@ impl<'a> Scene<'a> {
     /// their skirts) can touch, widened by a pixel each way.
     pub(crate) fn strip_rows(&self, s: usize) -> (i64, i64) {
         let (y0, y1) = self.strip_grid_rows(s);
-        let top = self.view.project(0.0, y0 as f32, self.row_top[y0]).y;
-        let top2 = self.view.project(0.0, y1 as f32, self.row_top[y1]).y;
+        self.rows_reached([y0, y1], [self.row_top.row(y0), self.row_top.row(y1)])
+    }
+
+    /// The first screen row the cells `cells` of strip `s` can touch (the
+    /// strip's faces lie wholly below it).
+    pub(crate) fn strip_top(&self, s: usize, cells: &std::ops::Range<usize>) -> i64 {
+        let (y0, y1) = self.strip_grid_rows(s);
+        let points = cells.start..=cells.end;
+        let tops = [y0, y1].map(|y| self.row_top.within(y, points.clone()));
+        self.rows_reached([y0, y1], tops).0
+    }
+
+    /// [`Scene::strip_rows`] for a strip between grid rows `y0` and `y1`
+    /// whose points reach heights `top0` and `top1`. Screen rows do not
+    /// depend on the grid column in any view (the cameras do not roll).
+    fn rows_reached(&self, [y0, y1]: [usize; 2], [top0, top1]: [f32; 2]) -> (i64, i64) {
+        let top = self.view.project(0.0, y0 as f32, top0).y;
+        let top2 = self.view.project(0.0, y1 as f32, top1).y;
         let bottom = self.view.project(0.0, y1 as f32, 0.0).y;
         let lo = top.min(top2).min(bottom);
         let hi = bottom.max(top).max(top2);
@@ -255,12 +272,17 @@ fn framed(
     shaded: bool,
     width: u32,
     height: u32,
-) -> (Vec<f32>, View, Vec<usize>) {
+) -> (RowTops, View, Vec<usize>) {
     let size = field.size();
-    let row_top: Vec<f32> = (0..size)
-        .map(|y| field.row(y).iter().fold(0.0f32, |m, &h| finite(h).max(m)))
-        .collect();
-    let view = View::fitted(settings.view, size, field.extent(), &row_top, width, height);
+    let row_top = RowTops::of(field);
+    let view = View::fitted(
+        settings.view,
+        size,
+        field.extent(),
+        row_top.rows(),
+        width,
+        height,
+    );
     // Sonar and Outline draw every line of their (already thinned) grid.
     let rows = if shaded {
         super::rows::kept_rows(size, &view)

@@ -101,7 +101,12 @@ pub(crate) fn draw_strips(
         } else {
             0..scene.cells()
         };
-        if cells.is_empty() {
+        // Drawing front to back, a strip whose cells here all lie below
+        // what the band holds across its width is hidden: not projected.
+        if cells.is_empty()
+            || (canvas.keeps_first()
+                && canvas.hidden(clip.x0, clip.x1 - 1, scene.strip_top(s, &cells)))
+        {
             return;
         }
         rows.load(scene, s, cells.start..(cells.end + 1).min(n));
