@@ -26,8 +26,8 @@ impl Scene<'_> {
     /// monotone functions of its grid column, and the cells reaching a band
     /// are one run, found by bisection, starting from `near` (the run of
     /// the strip before, which is seldom far off: each band walks every
-    /// strip, so a bisection over the whole row per strip was 2% of a
-    /// frame's instructions).
+    /// strip, and bisecting the whole row each time cost 0.8% of the
+    /// bands' instructions at 1080p).
     pub(crate) fn cells_reaching(
         &self,
         s: usize,
