@@ -12,7 +12,7 @@ use super::ripples::Ripples;
 use super::shadow::{self, ShadowMap};
 use super::sky::Sky;
 use super::skylight::SkyLight;
-use super::tops::RowTops;
+use super::tops::{RowTops, finite};
 use super::view::View;
 use crate::settings::{ColorMode, Settings, ViewKind};
 use crate::terrain::Heightfield;
@@ -302,12 +302,6 @@ fn backdrop(palette: &Palette, view: &View, style: Style, height: u32) -> Sky {
         _ => height as f32,
     };
     Sky::new(top, horizon, row)
-}
-
-/// Heights that are not numbers are drawn at sea level.
-#[inline]
-pub(crate) fn finite(h: f32) -> f32 {
-    if h.is_finite() { h } else { 0.0 }
 }
 
 /// The field seen from another side: `rotation` degrees, in quarter turns

@@ -1,11 +1,17 @@
 //! The highest point of each grid row, whole and per block of columns:
 //! how high a strip can reach on screen, for the view's fit and for
-//! skipping strips hidden behind nearer land.
+//! skipping strips hidden behind nearer land. Heights that are not
+//! numbers count as sea level, here and wherever a point is drawn.
 
 use std::ops::RangeInclusive;
 
-use super::scene::finite;
 use crate::terrain::Heightfield;
+
+/// Heights that are not numbers are drawn at sea level.
+#[inline]
+pub(crate) fn finite(h: f32) -> f32 {
+    if h.is_finite() { h } else { 0.0 }
+}
 
 /// Grid points per block.
 const BLOCK: usize = 16;
