@@ -49,14 +49,6 @@ impl Damage {
         }
     }
 
-    /// This damage and `other`'s.
-    pub fn union(mut self, other: &Damage) -> Damage {
-        for r in other.rects() {
-            self.add(r);
-        }
-        self
-    }
-
     /// True when no pixel changed.
     pub fn is_empty(&self) -> bool {
         self.blocks.iter().all(Rect::is_empty)
@@ -168,8 +160,8 @@ mod tests {
             [Rect::sized(56, 5, 20, 1), Rect::sized(5000, 7, 9, 1)]
         );
         assert!(Damage::default().is_empty() && Damage::from(Rect::default()).is_empty());
-        let both =
-            Damage::from(Rect::sized(0, 0, 1, 1)).union(&Damage::from(Rect::sized(900, 9, 1, 1)));
+        let mut both = Damage::from(Rect::sized(0, 0, 1, 1));
+        both.add(Rect::sized(900, 9, 1, 1));
         assert_eq!(both.rects().count(), 2);
     }
 }

@@ -89,15 +89,15 @@ impl Painter {
                 canvas.damage()
             }
             How::Ridges(ridges) => {
-                let mut damage = Rect::default();
+                let mut damage = Damage::default();
                 if start == 0 {
                     frame.clear(0);
-                    damage = frame.bounds();
+                    damage.add(frame.bounds());
                 }
                 for i in start..end {
-                    damage = damage.union(&ridges.draw_strip(frame, i));
+                    damage.add(ridges.draw_strip(frame, i));
                 }
-                damage.into()
+                damage
             }
         }
     }

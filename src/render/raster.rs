@@ -120,10 +120,13 @@ impl Edge {
 /// span ends by division (identical results).
 const SCAN_WIDTH: i64 = 4;
 /// Boxes up to this wide and [`WIDE_SCAN_ROWS`] tall are scanned too, eight
-/// centres a row: the far land's cells are flat slivers a row or two high
-/// and three to six pixels wide, and setting up a [`Walk`] costs each edge
-/// two 64-bit divisions.
+/// centres a row ([`SLIVER_SCAN_WIDTH`] up to that width): the far land's
+/// cells are flat slivers a row or two high and three to six pixels wide,
+/// and setting up a [`Walk`] costs each edge two 64-bit divisions.
 const WIDE_SCAN_WIDTH: i64 = 8;
+/// Most of those boxes are five or six columns wide: they test six centres
+/// a row, not eight.
+const SLIVER_SCAN_WIDTH: i64 = 6;
 /// See [`WIDE_SCAN_WIDTH`]: past this many rows the walk's cheaper rows
 /// repay its set-up.
 const WIDE_SCAN_ROWS: i64 = 4;
@@ -189,9 +192,8 @@ impl Triangle {
             return;
         }
         if w <= WIDE_SCAN_WIDTH && h <= WIDE_SCAN_ROWS {
-            // Most are five or six columns: no more centres tested than that.
-            if w <= 6 {
-                scan::<6>(&edges, self.box_, span);
+            if w <= SLIVER_SCAN_WIDTH {
+                scan::<{ SLIVER_SCAN_WIDTH as usize }>(&edges, self.box_, span);
             } else {
                 scan::<{ WIDE_SCAN_WIDTH as usize }>(&edges, self.box_, span);
             }

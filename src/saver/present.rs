@@ -162,15 +162,18 @@ fn present_soft<W: HasWindowHandle + HasDisplayHandle>(
     };
     surface.resize(w, h)?;
     let mut buffer = surface.buffer_mut()?;
+    let bounds = frame.bounds();
     // Age 0: the buffer is new or was not presented, so it holds nothing of ours.
-    let rects: Vec<Rect> = if buffer.age() == 0 {
-        vec![frame.bounds()]
+    let whole;
+    let damage = if buffer.age() == 0 {
+        whole = Damage::from(bounds);
+        &whole
     } else {
-        let bounds = frame.bounds();
-        damage.rects().map(|r| r.intersect(&bounds)).collect()
+        damage
     };
-    let rects: Vec<softbuffer::Rect> = rects
-        .into_iter()
+    let rects: Vec<softbuffer::Rect> = damage
+        .rects()
+        .map(|r| r.intersect(&bounds))
         .filter(|r| !r.is_empty())
         .map(|r| {
             copy_rect(frame, &mut buffer, r, alpha);
