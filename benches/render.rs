@@ -6,7 +6,7 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use mountains::render::{Frame, detail, render_full};
-use mountains::settings::{ColorMode, Settings};
+use mountains::settings::{ColorMode, Settings, Shading};
 use mountains::terrain::{Heightfield, generate};
 
 /// The real generator's mountain (seed 42), so triangle sizes, water and
@@ -47,13 +47,20 @@ fn bench(c: &mut Criterion) {
 }
 
 /// The default frame as the program draws it: default settings with the
-/// detail `auto` picks for this frame size.
+/// detail `auto` picks for this frame size; and the same with flat shading
+/// (one colour a face), which smooth shading's cost is held against.
 fn bench_default(c: &mut Criterion) {
-    for (name, w, h) in [
-        ("default_auto_1080p", 1920, 1080),
-        ("default_auto_2160p", 3840, 2160),
+    for (name, w, h, shading) in [
+        ("default_auto_1080p", 1920, 1080, Shading::Smooth),
+        ("default_auto_2160p", 3840, 2160, Shading::Smooth),
+        ("flat_auto_1080p", 1920, 1080, Shading::Flat),
+        ("flat_auto_2160p", 3840, 2160, Shading::Flat),
     ] {
-        let settings = detail::for_frame(&Settings::default(), w, h);
+        let chosen = Settings {
+            shading,
+            ..Settings::default()
+        };
+        let settings = detail::for_frame(&chosen, w, h);
         let field = generate(&settings, 42);
         let mut frame = Frame::new(w, h).unwrap();
         c.bench_function(name, |b| {

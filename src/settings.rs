@@ -122,6 +122,18 @@ pub enum Sun {
     Classic,
 }
 
+/// How light falls across a land face.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Shading {
+    /// Light worked out at every grid point and blended across each face,
+    /// so slopes read as continuous ground (the vista and perspective view
+    /// in colour; the classic looks stay flat).
+    Smooth,
+    /// One colour per face, as the seed programs draw them.
+    Flat,
+}
+
 /// Which monitors the full-screen saver covers.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -179,6 +191,8 @@ pub struct Settings {
     pub shadows: bool,
     /// The light: time of day, or drawn per mountain.
     pub sun: Sun,
+    /// Faces lit smoothly across or one colour each.
+    pub shading: Shading,
     /// Oblique or perspective projection.
     pub view: ViewKind,
     /// Which side the mountain is seen from, in degrees (0, 90, 180, 270).

@@ -1,6 +1,7 @@
 //! Everything a person sees, drawn into a `Frame`. Pure: no windows.
 
 mod bands;
+mod blend;
 mod camera;
 mod canvas;
 pub mod colour;
@@ -11,6 +12,7 @@ mod edges;
 pub mod frame;
 mod haze;
 pub mod light;
+mod normals;
 pub mod painter;
 pub mod palette;
 pub mod raster;
@@ -20,6 +22,7 @@ mod ripples;
 mod rows;
 mod scene;
 pub mod shadow;
+mod shore;
 mod sky;
 mod skylight;
 mod strip;

@@ -5,7 +5,9 @@ use std::sync::Arc;
 
 use glam::Vec2;
 
+use super::colour::blend_packed;
 use super::haze::Haze;
+use super::normals::Normals;
 use super::palette::Palette;
 use super::raster::{Fixed2, to_fixed};
 use super::ripples::Ripples;
@@ -14,7 +16,7 @@ use super::sky::Sky;
 use super::skylight::SkyLight;
 use super::tops::{RowTops, finite};
 use super::view::View;
-use crate::settings::{ColorMode, Settings, ViewKind};
+use crate::settings::{ColorMode, Settings, Shading, ViewKind};
 use crate::terrain::Heightfield;
 
 /// How faces are put on screen.
@@ -60,6 +62,8 @@ pub(crate) struct Vert {
     pub sky: f32,
     /// How far the air has faded the point towards the horizon colour, in 1/256ths.
     pub haze: u32,
+    /// Under smooth shading, the land's colour at the point (hazed).
+    pub colour: u32,
     /// Whether `lit`, `sky` and `haze` are worked out (see [`Scene::shade`]).
     pub shaded: bool,
 }
@@ -96,7 +100,13 @@ pub(crate) struct Scene<'a> {
     shadow: Option<ShadowMap>,
     /// How much of the sky each point sees, if the look has sky light.
     skylight: Option<SkyLight>,
+    /// Each point's normal, when land is shaded smoothly (each point lit,
+    /// the light blended across faces); `None`: one colour a face.
+    normals: Option<Normals>,
     pub style: Style,
+    /// Whether the coast and the skyline are drawn anti-aliased (the
+    /// shaded looks with depth; the classic looks keep their pixels).
+    pub clean_edges: bool,
     /// Cells `0..split` of a row are drawn left to right, then the rest right
     /// to left, so faces nearer the camera's column overwrite farther ones.
     pub split: usize,
@@ -143,6 +153,14 @@ impl<'a> Scene<'a> {
             .then(|| Haze::new(palette.sky().1));
         let ripples = (haze.is_some() && !palette.lighting().classic)
             .then(|| Ripples::new(palette.sky().1, size - 1, field.fingerprint()));
+        let smooth = settings.shading == Shading::Smooth
+            && style == Style::Shaded
+            && settings.view != ViewKind::Oblique
+            && !palette.lighting().classic;
+        let clean_edges = style == Style::Shaded
+            && settings.view != ViewKind::Oblique
+            && !palette.lighting().classic;
+        let normals = smooth.then(|| Normals::new(size, &rows, view.cell()));
         let cells = size - 1;
         let (split, sees_right, sees_front) = match view.camera_column() {
             Some(cx) => {
@@ -160,7 +178,9 @@ impl<'a> Scene<'a> {
             ripples,
             shadow,
             skylight,
+            normals,
             style,
+            clean_edges,
             split,
             row_top,
             rows,
@@ -222,7 +242,28 @@ impl<'a> Scene<'a> {
         v.haze = self.haze.as_ref().map_or(0, |haze| {
             haze.amount(self.view.distance(x as f32, y as f32, ground))
         });
+        if let Some(normals) = &self.normals {
+            let n = normals.at(&self.field, x, y);
+            let land = self.palette.land_in(ground, n, v.lit, v.sky);
+            v.colour = self.hazed(land, v.haze);
+        }
         v.shaded = true;
+    }
+
+    /// Whether land faces are shaded smoothly (each point's colour blended
+    /// across them) rather than one colour each.
+    #[inline]
+    pub(crate) fn smooth(&self) -> bool {
+        self.normals.is_some()
+    }
+
+    /// `colour` faded `haze` (1/256ths) towards the horizon colour.
+    #[inline]
+    pub(crate) fn hazed(&self, colour: u32, haze: u32) -> u32 {
+        match &self.haze {
+            Some(h) => blend_packed(colour, h.colour, haze),
+            None => colour,
+        }
     }
 
     /// Fixed-point screen position of a point between grid points, at sea level.

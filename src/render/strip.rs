@@ -3,11 +3,13 @@
 
 use glam::{Vec2, Vec3};
 
+use super::blend::{Blend, mix_packed};
 use super::canvas::Canvas;
 use super::colour::blend_packed;
 use super::dither;
 use super::raster::{Fixed2, Triangle, centre_box};
 use super::scene::{Scene, Style, Vert};
+use super::shore::{ShoreLine, ShorePoint};
 
 /// White and black, the only two colours of Mono.
 const WHITE: u32 = 0x00ff_ffff;
@@ -29,6 +31,8 @@ struct Corner {
     lit: f32,
     sky: f32,
     haze: u32,
+    /// Under smooth shading, the land's colour here.
+    colour: u32,
 }
 
 impl Corner {
@@ -40,7 +44,17 @@ impl Corner {
             lit: v.lit,
             sky: v.sky,
             haze: v.haze,
+            colour: v.colour,
         }
+    }
+}
+
+impl ShorePoint for Corner {
+    fn screen(&self) -> Fixed2 {
+        self.p
+    }
+    fn land(&self) -> u32 {
+        self.colour
     }
 }
 
@@ -178,15 +192,47 @@ impl Scene<'_> {
         let lit = lit_of(&c);
         // The odd corner's part first, then the other side's two.
         let parts = [[a, &m0, &m1], [&m0, s0, s1], [&m0, s1, &m1]];
+        let coast = self.clean_edges.then(|| ShoreLine::new(&m0, &m1)).flatten();
         painter_order(
             canvas,
             parts.into_iter().enumerate(),
             |canvas, (i, part)| {
-                if (i == 0) == wet[odd] {
-                    self.fill_water(canvas, part);
+                let water = (i == 0) == wet[odd];
+                let Some(coast) = &coast else {
+                    return if water {
+                        self.fill_water(canvas, part);
+                    } else {
+                        self.fill_land(canvas, part, || normal, lit);
+                    };
+                };
+                // The part across the shore line from this one.
+                let across = parts[if i == 0 { 2 } else { 0 }];
+                let (own, other) = if water {
+                    (
+                        self.water_colour(&part),
+                        self.land_colour(&across, normal, lit),
+                    )
+                } else if faces_away([part[0].p, part[1].p, part[2].p]) {
+                    return;
                 } else {
-                    self.fill_land(canvas, part, || normal, lit);
-                }
+                    (
+                        self.land_colour(&part, normal, lit),
+                        self.water_colour(&across),
+                    )
+                };
+                let smooth = self.smooth();
+                let blend = (smooth && !water)
+                    .then(|| Blend::new(part.map(|k| k.p), part.map(|k| k.colour)));
+                self.paint_pixels(canvas, part.map(|k| k.p), || {
+                    move |x, y| {
+                        let (own, other) = match &blend {
+                            Some(b) => (b.at(&b.row(x, y), 0), other),
+                            None if water && smooth => (own, coast.land_at(x, y)),
+                            None => (own, other),
+                        };
+                        blend_packed(own, other, coast.weight(x, y))
+                    }
+                });
             },
         );
     }
@@ -202,6 +248,7 @@ impl Scene<'_> {
             lit: a.lit + (b.lit - a.lit) * f,
             sky: a.sky + (b.sky - a.sky) * f,
             haze: (a.haze as f32 + (b.haze as f32 - a.haze as f32) * f) as u32,
+            colour: mix_packed(a.colour, b.colour, f),
         }
     }
 
@@ -226,28 +273,47 @@ impl Scene<'_> {
         if faces_away([c[0].p, c[1].p, c[2].p]) {
             return;
         }
+        if self.smooth() {
+            let colours = [c[0].colour, c[1].colour, c[2].colour];
+            return self.paint_blend(canvas, [c[0].p, c[1].p, c[2].p], colours);
+        }
+        self.paint(canvas, [c[0].p, c[1].p, c[2].p], || {
+            self.land_colour(&c, normal(), lit)
+        });
+    }
+
+    /// The one colour of a land face (flat shading; under smooth shading the
+    /// colours its corners blend from near the shore line).
+    fn land_colour(&self, c: &Face, normal: Vec3, lit: f32) -> u32 {
+        if self.smooth() {
+            return mix_packed(
+                mix_packed(c[0].colour, c[1].colour, 0.5),
+                c[2].colour,
+                1.0 / 3.0,
+            );
+        }
         let mean = (c[0].h + c[1].h + c[2].h) / 3.0;
         let sky = (c[0].sky + c[1].sky + c[2].sky) / 3.0;
-        let colour = || {
-            let land = self.palette.land_in(mean.max(0.0), normal(), lit, sky);
-            self.hazed(land, &c)
-        };
-        self.paint(canvas, [c[0].p, c[1].p, c[2].p], colour);
+        let land = self.palette.land_in(mean.max(0.0), normal, lit, sky);
+        self.hazed_face(land, c)
     }
 
     fn fill_water(&self, canvas: &mut Canvas, c: Face) {
+        self.paint(canvas, [c[0].p, c[1].p, c[2].p], || self.water_colour(&c));
+    }
+
+    /// The colour of a water face: by its depth, with the wind's streaks.
+    fn water_colour(&self, c: &Face) -> u32 {
         let depth = -(c[0].h.min(0.0) + c[1].h.min(0.0) + c[2].h.min(0.0)) / 3.0;
-        self.paint(canvas, [c[0].p, c[1].p, c[2].p], || {
-            let water = self.palette.water(depth);
-            let water = match &self.ripples {
-                Some(r) => {
-                    let g = (c[0].g + c[1].g + c[2].g) / 3.0;
-                    r.on(water, g.x, g.y)
-                }
-                None => water,
-            };
-            self.hazed(water, &c)
-        });
+        let water = self.palette.water(depth);
+        let water = match &self.ripples {
+            Some(r) => {
+                let g = (c[0].g + c[1].g + c[2].g) / 3.0;
+                r.on(water, g.x, g.y)
+            }
+            None => water,
+        };
+        self.hazed_face(water, c)
     }
 
     /// The cut face below the edge from `a` to `b`, down to sea level, facing
@@ -265,7 +331,7 @@ impl Scene<'_> {
             (false, true) => (self.shore(&a, &b), b),
         };
         let (fa, fb) = (foot(a), foot(b));
-        let colour = self.hazed(self.palette.skirt(normal), &[&a, &b, &fa]);
+        let colour = self.hazed_face(self.palette.skirt(normal), &[&a, &b, &fa]);
         let halves = [[a.p, b.p, fb.p], [a.p, fb.p, fa.p]];
         painter_order(canvas, halves.into_iter(), |canvas, v| {
             self.paint(canvas, v, || colour)
@@ -274,14 +340,8 @@ impl Scene<'_> {
 
     /// `colour` faded by the air between the viewer and the face's corners.
     #[inline]
-    fn hazed(&self, colour: u32, c: &Face) -> u32 {
-        match &self.haze {
-            Some(haze) => {
-                let t = (c[0].haze + c[1].haze + c[2].haze) / 3;
-                blend_packed(colour, haze.colour, t)
-            }
-            None => colour,
-        }
+    fn hazed_face(&self, colour: u32, c: &Face) -> u32 {
+        self.hazed(colour, (c[0].haze + c[1].haze + c[2].haze) / 3)
     }
 
     /// Fills one screen triangle with a colour (or its dither pattern in Mono).
@@ -307,6 +367,47 @@ impl Scene<'_> {
                 };
             }
             Self::put(canvas, paint, y, x0, x1);
+        });
+    }
+
+    /// Fills one screen triangle blending the colours of its corners across
+    /// it (smooth shading); `colours` go with `v`'s corners.
+    fn paint_blend(&self, canvas: &mut Canvas, v: [Fixed2; 3], colours: [u32; 3]) {
+        let Some(t) = Triangle::new(v, canvas.clip()) else {
+            return;
+        };
+        let [x0, x1, y0, _] = t.bounds();
+        if canvas.hidden(x0, x1, y0) {
+            return;
+        }
+        let mut blend = None;
+        t.spans(|y, x0, x1| {
+            let b = blend.get_or_insert_with(|| Blend::new(v, colours));
+            let row = b.row(x0, y);
+            canvas.fill_with(y, x0, x1, |x| b.at(&row, x - x0));
+        });
+    }
+
+    /// Fills one screen triangle pixel by pixel with `make()`'s colour at
+    /// each pixel (`make` runs once a first pixel is covered).
+    fn paint_pixels<F: Fn(u32, u32) -> u32>(
+        &self,
+        canvas: &mut Canvas,
+        v: [Fixed2; 3],
+        make: impl FnOnce() -> F,
+    ) {
+        let Some(t) = Triangle::new(v, canvas.clip()) else {
+            return;
+        };
+        let [x0, x1, y0, _] = t.bounds();
+        if canvas.hidden(x0, x1, y0) {
+            return;
+        }
+        let mut make = Some(make);
+        let mut colour = None;
+        t.spans(|y, x0, x1| {
+            let f = colour.get_or_insert_with(|| make.take().map(|m| m()).unwrap());
+            canvas.fill_with(y, x0, x1, |x| f(x, y));
         });
     }
 

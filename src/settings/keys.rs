@@ -8,7 +8,7 @@ use serde::de::IntoDeserializer;
 
 use super::{
     ColorMode, Detail, Generator, MAX_GRID_EXPONENT, MIN_GRID_EXPONENT, Monitors, Profile,
-    Settings, Sun, ViewKind, WaterLine,
+    Settings, Shading, Sun, ViewKind, WaterLine,
 };
 
 /// A value as written by a user, before it is checked against a key.
@@ -149,6 +149,7 @@ const VIEWS: &[&str] = &["vista", "oblique", "perspective"];
 const WATER_LINES: &[&str] = &["coast", "generator"];
 const SUNS: &[&str] = &["varied", "morning", "midday", "evening", "classic"];
 const MONITORS: &[&str] = &["all", "primary"];
+const SHADINGS: &[&str] = &["smooth", "flat"];
 
 /// One row of the table: key `$field` is the field of that name in
 /// `Settings`, read and written through its type's [`Field`] under `$kind`;
@@ -306,6 +307,13 @@ pub const KEYS: &[Key] = &[
         "time of day of the light; \"varied\" draws one per mountain"
     ),
     row!(
+        shading,
+        Kind::Choice(SHADINGS),
+        Repaint,
+        Value::Str("smooth".into()),
+        "light blended across each face, or one colour a face (classic looks are flat)"
+    ),
+    row!(
         view,
         Kind::Choice(VIEWS),
         Repaint,
@@ -422,6 +430,7 @@ impl Settings {
             relative_depth: false,
             shadows: false,
             sun: Sun::Varied,
+            shading: Shading::Smooth,
             view: ViewKind::Vista,
             rotation: 0,
             auto_redraw: false,
@@ -591,7 +600,7 @@ macro_rules! choice_fields {
 }
 
 choice_fields!(
-    Generator, Profile, WaterLine, ColorMode, Sun, ViewKind, Monitors
+    Generator, Profile, WaterLine, ColorMode, Sun, Shading, ViewKind, Monitors
 );
 
 mod erased {
