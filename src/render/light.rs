@@ -2,8 +2,9 @@
 //! colour, the ambient light from the sky, and the sky's own colours.
 //!
 //! `sun = "varied"` draws morning, midday or evening per mountain from the
-//! mountain's own heights, so one seed always gets the same light and a long
-//! slide show gets many. `sun = "classic"` is seed 000's light: from the back
+//! mountain's identity ([`Heightfield::identity`]: its seed, or the heights
+//! of a data set without one), so one seed always gets the same light, at
+//! every frame size, detail and `low_detail`, and a long slide show gets many. `sun = "classic"` is seed 000's light: from the back
 //! left, 32 degrees up, every face at least half bright.
 
 use glam::Vec3;
@@ -86,7 +87,7 @@ const AZIMUTH_JITTER: f32 = 20.0;
 impl Lighting {
     /// The light `sun` asks for on `field`.
     pub fn new(sun: Sun, field: &Heightfield) -> Self {
-        let draw = field.fingerprint();
+        let draw = field.identity();
         let (time, turn) = match sun {
             Sun::Classic => return Self::classic(),
             Sun::Morning => (&MORNING, 0.0),

@@ -9,6 +9,7 @@ pub mod damage;
 pub mod detail;
 pub mod dither;
 mod edges;
+pub mod facts;
 pub mod frame;
 mod haze;
 pub mod light;

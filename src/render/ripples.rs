@@ -2,15 +2,21 @@
 //! view and thin along it, so a wide sea reads as water rather than as one
 //! smooth gradient. Faces of waves turned towards the viewer mirror the sky
 //! by the horizon; those turned away show the darker water below.
+//!
+//! The streaks belong to the world, not to the grid: their size is in height
+//! units and their pattern is drawn from the mountain's identity, so a seed
+//! has the same sea at every frame size, detail and `low_detail`.
 
 use super::colour::blend_packed;
+use crate::terrain::Heightfield;
 use crate::terrain::heightfield::MAX_EXPONENT;
 use crate::terrain::noise::Noise;
 
-/// Streaks across the grid's width (their length).
-const ACROSS: f32 = 9.0;
-/// Streaks along the grid's depth (their thinness).
-const ALONG: f32 = 140.0;
+/// Length of the streaks (one noise cell across the view), in height units:
+/// a ninth of the square generators' width.
+const ACROSS: f32 = crate::terrain::SQUARE_EXTENT / 9.0;
+/// Thinness of the streaks (one noise cell along the view), in height units.
+const ALONG: f32 = crate::terrain::SQUARE_EXTENT / 140.0;
 /// Strongest blend towards the sky or the dark, in 1/256ths.
 const STRENGTH: f32 = 40.0;
 
@@ -23,18 +29,35 @@ const LATTICE: usize = 64;
 #[derive(Debug, Clone)]
 pub(crate) struct Ripples {
     sky: u32,
-    /// Grid cells a side, to put the streaks in the grid's own proportions.
-    cells: f32,
+    /// Noise cells per grid step across the view and along it: the streaks'
+    /// size in the world, in this grid's steps.
+    across: f32,
+    along: f32,
+    /// What the pattern is drawn from.
+    seed: u64,
     /// The noise's values at the lattice points, -1..1, row by row: drawn
     /// once, not four times per sample on every water face of a frame.
     lattice: Box<[f32; LATTICE * LATTICE]>,
 }
 
 impl Ripples {
-    /// Ripples on a grid of `cells` a side mirroring packed `sky`, their
-    /// pattern drawn from `seed` (the field's fingerprint: the same mountain
-    /// always has the same sea).
-    pub(crate) fn new(sky: u32, cells: usize, seed: u64) -> Self {
+    /// The ripples of `field`'s sea mirroring packed `sky`: the pattern
+    /// drawn from the field's identity, the streaks sized in its units.
+    pub(crate) fn new(sky: u32, field: &Heightfield) -> Self {
+        let cells = field.size().saturating_sub(1).max(1) as f32;
+        let extent = field.extent();
+        // As the view does, a field of no usable width is a unit a step.
+        let width = if extent.is_finite() && extent > 0.0 {
+            extent
+        } else {
+            cells
+        };
+        Self::drawn(sky, width / cells, field.identity())
+    }
+
+    /// Ripples on a grid whose steps are `step` height units, mirroring
+    /// packed `sky`, their pattern drawn from `seed`.
+    fn drawn(sky: u32, step: f32, seed: u64) -> Self {
         let noise = Noise::new(seed, MAX_EXPONENT);
         let mut lattice = Box::new([0.0; LATTICE * LATTICE]);
         for (j, row) in lattice.chunks_exact_mut(LATTICE).enumerate() {
@@ -42,9 +65,16 @@ impl Ripples {
         }
         Ripples {
             sky,
-            cells: cells.max(1) as f32,
+            across: step / ACROSS,
+            along: step / ALONG,
+            seed,
             lattice,
         }
+    }
+
+    /// What the pattern is drawn from (the field's identity).
+    pub(crate) fn seed(&self) -> u64 {
+        self.seed
     }
 
     /// `colour` of the water at grid position (`x`, `y`) (in cells), with
@@ -62,11 +92,11 @@ impl Ripples {
     }
 
     /// The ripple at grid position (`x`, `y`), in -1..1: above 0 the water
-    /// mirrors the sky, below it is darker. In the grid's own proportions,
-    /// so the same at every detail.
+    /// mirrors the sky, below it is darker. Sized in the world, so the same
+    /// place has the same ripple at every detail.
     #[inline]
-    fn value(&self, x: f32, y: f32) -> f32 {
-        let (u, v) = (x / self.cells * ACROSS, y / self.cells * ALONG);
+    pub(crate) fn value(&self, x: f32, y: f32) -> f32 {
+        let (u, v) = (x * self.across, y * self.along);
         // A second, finer layer slanted across the first breaks up its rows.
         0.65 * self.noise(u, v) + 0.35 * self.noise(2.3 * u + 0.7 * v, 2.1 * v + 17.0)
     }
@@ -97,6 +127,12 @@ fn smooth(t: f32) -> f32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::terrain::SQUARE_EXTENT;
+
+    /// Ripples on a square generator's field of `cells` a side.
+    fn square(sky: u32, cells: usize, seed: u64) -> Ripples {
+        Ripples::drawn(sky, SQUARE_EXTENT / cells as f32, seed)
+    }
 
     /// Mean change of the ripple over `step` cells across (x) and along (y).
     fn mean_change(r: &Ripples, step: f32) -> (f32, f32) {
@@ -115,15 +151,15 @@ mod tests {
 
     #[test]
     fn streaks_are_long_across_the_view_and_thin_along_it() {
-        let r = Ripples::new(0x00ff_ffff, 1024, 1);
+        let r = square(0x00ff_ffff, 1024, 1);
         let (across, along) = mean_change(&r, 2.0);
         assert!(along > 4.0 * across, "along {along} across {across}");
         assert!(along > 0.05, "the water hardly changes: {along}");
     }
 
     #[test]
-    fn ripples_stay_in_range_and_follow_the_grid_not_the_detail() {
-        let (fine, coarse) = (Ripples::new(0, 1024, 1), Ripples::new(0, 256, 1));
+    fn ripples_stay_in_range_and_follow_the_world_not_the_detail() {
+        let (fine, coarse) = (square(0, 1024, 1), square(0, 256, 1));
         for k in 0..5000 {
             let (x, y) = ((k * 37 % 1024) as f32 + 0.3, (k * 91 % 1024) as f32 + 0.6);
             let n = fine.value(x, y);
@@ -135,7 +171,7 @@ mod tests {
 
     #[test]
     fn each_mountain_has_its_own_sea() {
-        let (a, b) = (Ripples::new(0, 1024, 1), Ripples::new(0, 1024, 2));
+        let (a, b) = (square(0, 1024, 1), square(0, 1024, 2));
         let same = (0..1000)
             .filter(|&k| {
                 let (x, y) = ((k * 37 % 1024) as f32, (k * 91 % 1024) as f32);
@@ -145,13 +181,13 @@ mod tests {
         assert!(same < 10, "{same} of 1000 places alike");
         assert_eq!(
             a.value(100.5, 200.5),
-            Ripples::new(0, 1024, 1).value(100.5, 200.5)
+            square(0, 1024, 1).value(100.5, 200.5)
         );
     }
 
     #[test]
     fn crests_mirror_the_sky_and_troughs_darken() {
-        let r = Ripples::new(0x00ff_ffff, 1024, 1);
+        let r = square(0x00ff_ffff, 1024, 1);
         let water = 0x0020_4080;
         let (mut lighter, mut darker) = (0, 0);
         for k in 0..400 {
@@ -167,5 +203,30 @@ mod tests {
             lighter > 50 && darker > 50,
             "{lighter} lighter, {darker} darker"
         );
+    }
+
+    #[test]
+    fn a_seed_has_the_same_sea_on_every_grid_and_streaks_keep_their_size() {
+        let field = |exponent: u32, extent: f32, seed: Option<u64>| {
+            let mut f = Heightfield::flat(exponent, extent);
+            f.set_seed(seed);
+            f
+        };
+        let fine = Ripples::new(0, &field(10, 250.0, Some(9)));
+        let coarse = Ripples::new(0, &field(8, 250.0, Some(9)));
+        assert_eq!(fine.seed(), coarse.seed());
+        assert_ne!(
+            fine.seed(),
+            Ripples::new(0, &field(10, 250.0, Some(10))).seed()
+        );
+        // A field twice as wide on the same grid: its steps are twice as
+        // long, so a streak spans half as many of them.
+        let wide = Ripples::new(0, &field(10, 500.0, Some(9)));
+        for k in 0..2000 {
+            let (x, y) = ((k * 37 % 1024) as f32 + 0.3, (k * 91 % 1024) as f32 + 0.6);
+            let n = fine.value(x, y);
+            assert!((coarse.value(x / 4.0, y / 4.0) - n).abs() < 1e-4);
+            assert!((wide.value(x / 2.0, y / 2.0) - n).abs() < 1e-4);
+        }
     }
 }

@@ -152,7 +152,7 @@ impl<'a> Scene<'a> {
         let haze = (style == Style::Shaded && settings.view != ViewKind::Oblique)
             .then(|| Haze::new(palette.sky().1));
         let ripples = (haze.is_some() && !palette.lighting().classic)
-            .then(|| Ripples::new(palette.sky().1, size - 1, field.fingerprint()));
+            .then(|| Ripples::new(palette.sky().1, &field));
         let smooth = settings.shading == Shading::Smooth
             && style == Style::Shaded
             && settings.view != ViewKind::Oblique
@@ -316,14 +316,15 @@ fn framed(
 ) -> (RowTops, View, Vec<usize>) {
     let size = field.size();
     let row_top = RowTops::of(field);
-    let view = View::fitted(
-        settings.view,
-        size,
-        field.extent(),
-        row_top.rows(),
-        width,
-        height,
-    );
+    // Framed on the lattice every detail shares, so a seed is framed alike
+    // at every detail (the classic oblique view keeps its own fit).
+    let shared = field
+        .exponent()
+        .saturating_sub(crate::terrain::SHARED_EXPONENT);
+    let lattice = (shared > 0 && settings.view != ViewKind::Oblique)
+        .then(|| RowTops::of(&field.coarsened(shared)));
+    let tops = lattice.as_ref().unwrap_or(&row_top).rows();
+    let view = View::fitted(settings.view, size, field.extent(), tops, width, height);
     // Sonar and Outline draw every line of their (already thinned) grid.
     let rows = if shaded {
         super::rows::kept_rows(size, &view)
@@ -385,6 +386,7 @@ fn turned(field: FieldRef<'_>, rotation: u32) -> FieldRef<'_> {
     }
     let n = field.size();
     let mut out = Heightfield::flat(field.exponent(), field.extent());
+    out.set_seed(field.seed());
     for y in 0..n {
         for x in 0..n {
             // Each quarter turn brings the old right edge to the back.

@@ -18,8 +18,6 @@ const TILT_SIN_COS: (f32, f32) = (0.939_692_6, 0.342_020_15);
 /// Seed 000's shear: each row forward moves half a step to the left, which
 /// turns the square into a parallelogram seen from the front right.
 const SHEAR: f32 = 0.5;
-/// Sky kept above the highest land in the vista, as a fraction of the height.
-const SKY_ROOM: f32 = 0.12;
 /// Empty border around the fitted mountain, as a fraction of each side
 /// (oblique and perspective views).
 const MARGIN: f32 = 0.02;
@@ -106,29 +104,22 @@ impl View {
         }
     }
 
-    /// Places the vista camera; if the land would rise within [`SKY_ROOM`]
-    /// of the top, the back edge is put lower so a strip of sky stays.
+    /// Places the vista camera over the land whose row tops are `row_top`
+    /// (spread evenly from back to front); tall land puts the back edge
+    /// lower (`vista::fitted`).
     fn frame_vista(&mut self, steps: f32, row_top: &[f32], width: f32, height: f32) {
         let extent = self.cell * steps;
-        let mut skyline = vista::SKYLINE;
-        for _ in 0..3 {
-            let shot = vista::frame(extent, width, height, skyline);
-            self.camera = Some(shot.camera);
-            self.scale = shot.focal;
-            self.offset = Vec2::new(width, height) * 0.5;
-            let last = row_top.len().saturating_sub(1).max(1) as f32;
-            let top = (row_top.iter().enumerate())
-                .map(|(i, &z)| {
-                    let z = if z.is_finite() { z.max(0.0) } else { 0.0 };
-                    self.project(0.5 * steps, steps * i as f32 / last, z).y
-                })
-                .fold(f32::INFINITY, f32::min);
-            let short = SKY_ROOM * height - top;
-            if short.is_nan() || short <= 0.5 || skyline >= vista::SKYLINE_LOWEST {
-                break;
-            }
-            skyline = (skyline + short / height).min(vista::SKYLINE_LOWEST);
-        }
+        let last = row_top.len().saturating_sub(1).max(1) as f32;
+        let tops: Vec<Vec3> = (row_top.iter().enumerate())
+            .map(|(i, &z)| {
+                let z = if z.is_finite() { z.max(0.0) } else { 0.0 };
+                Vec3::new(0.5 * extent, extent * i as f32 / last, z)
+            })
+            .collect();
+        let shot = vista::fitted(extent, width, height, &tops);
+        self.camera = Some(shot.camera);
+        self.scale = shot.focal;
+        self.offset = Vec2::new(width, height) * 0.5;
     }
 
     /// Chooses scale and offset so the mountain fills the frame: each row's

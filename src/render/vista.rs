@@ -8,14 +8,18 @@
 //! - the middle of the back edge at sea level sits [`SKYLINE`] of the
 //!   height from the top, leaving the sky above for the peaks to rise into
 //!   (lower, down to [`SKYLINE_LOWEST`], when the land is so tall it would
-//!   fill the sky: see `View::fitted`);
+//!   fill the sky: exactly as low as keeps [`SKY_ROOM`] clear, see [`fitted`]);
 //! - the near edge at sea level falls just below the bottom.
 //!
 //! The width fixes the focal length for a given pitch and camera height;
 //! the two vertical conditions then fix the pitch and the height, found by
 //! nested bisection (each condition is monotonic in its unknown).
+//!
+//! Every condition is a fraction of the frame, none a number of pixels, and
+//! each is solved to the end rather than to a tolerance: a frame k times
+//! larger is the same framing, k times finer.
 
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 
 use super::camera::Camera;
 
@@ -29,13 +33,18 @@ const STANDOFFS: [f32; 6] = [0.6, 0.45, 0.32, 0.22, 0.14, 0.08];
 pub(crate) const SKYLINE: f32 = 0.4;
 /// The lowest the back edge goes, for land so tall it would fill the sky.
 pub(crate) const SKYLINE_LOWEST: f32 = 0.72;
-/// How far below the bottom row the near edge falls, in pixels.
-const BELOW_PX: f32 = 2.0;
+/// Sky kept above the highest land, as a fraction of the height.
+const SKY_ROOM: f32 = 0.12;
+/// How far below the bottom the near edge falls, as a fraction of the
+/// height (two pixels at 1080 rows), so no row of sky shows under the sea.
+const BELOW: f32 = 2.0 / 1080.0;
 /// Camera heights tried, in grid widths. Above the upper end a higher camera
 /// no longer widens the angle between the near and back edges.
 const HEIGHTS: (f32, f32) = (1e-3, 0.97);
-/// Bisection steps: far below a pixel at any frame size.
+/// Bisection steps for the camera: far below a pixel at any frame size.
 const STEPS: usize = 48;
+/// Bisection steps for the skyline: its 0.32 range down to f32's precision.
+const SKYLINE_STEPS: usize = 24;
 
 /// A camera and its focal length in pixels.
 pub(crate) struct Shot {
@@ -43,6 +52,38 @@ pub(crate) struct Shot {
     pub camera: Camera,
     /// Pixels per unit of `x / depth`.
     pub focal: f32,
+}
+
+impl Shot {
+    /// Frame position of world point `p` in a `width` x `height` frame.
+    fn project(&self, p: Vec3, width: f32, height: f32) -> Vec2 {
+        Vec2::new(width, height) * 0.5 + self.focal * self.camera.project(p)
+    }
+}
+
+/// The vista for a grid `extent` units wide in a `width` x `height` frame,
+/// over land whose highest points are `tops` (world positions, e.g. each
+/// row's highest point): the back edge at [`SKYLINE`], or, where the land
+/// would rise within [`SKY_ROOM`] of the top, exactly as much lower as
+/// keeps that strip of sky (at most down to [`SKYLINE_LOWEST`]).
+pub(crate) fn fitted(extent: f32, width: f32, height: f32, tops: &[Vec3]) -> Shot {
+    let shot = |skyline: f32| frame(extent, width, height, skyline);
+    // The highest land's distance below the strip of sky, in heights: it
+    // grows as the back edge goes down.
+    let clear = |s: &Shot| {
+        let top = (tops.iter())
+            .map(|&p| s.project(p, width, height).y)
+            .fold(f32::INFINITY, f32::min);
+        top / height.max(1.0) - SKY_ROOM
+    };
+    let first = shot(SKYLINE);
+    // Not below zero (or not a number: no land to fit): the sky is clear.
+    let short = clear(&first);
+    if short >= 0.0 || short.is_nan() {
+        return first;
+    }
+    let skyline = bisect_steps(SKYLINE, SKYLINE_LOWEST, SKYLINE_STEPS, |s| clear(&shot(s)));
+    shot(skyline)
 }
 
 /// The vista for a grid `extent` units wide in a `width` x `height` frame,
@@ -71,7 +112,7 @@ pub(crate) fn frame(extent: f32, width: f32, height: f32, skyline: f32) -> Shot 
 fn near_below_bottom(standoff: f32, eye_h: f32, w: f32, h: f32, skyline: f32) -> f32 {
     let pitch = pitch_for(standoff, eye_h, w, h, skyline);
     let f = focal(standoff, eye_h, pitch, w);
-    f * (angle_below(eye_h, standoff) - pitch).tan() - (0.5 * h + BELOW_PX)
+    f * (angle_below(eye_h, standoff) - pitch).tan() - (0.5 + BELOW) * h
 }
 
 /// The pitch that puts the back edge at [`SKYLINE`] for a camera `eye_h`
@@ -99,14 +140,19 @@ fn angle_below(eye_h: f32, dist: f32) -> f32 {
 }
 
 /// The root of an increasing `f` in `lo..=hi` (an end if it has none).
-fn bisect(mut lo: f32, mut hi: f32, f: impl Fn(f32) -> f32) -> f32 {
+fn bisect(lo: f32, hi: f32, f: impl Fn(f32) -> f32) -> f32 {
+    bisect_steps(lo, hi, STEPS, f)
+}
+
+/// [`bisect`] in `steps` halvings.
+fn bisect_steps(mut lo: f32, mut hi: f32, steps: usize, f: impl Fn(f32) -> f32) -> f32 {
     if f(lo) >= 0.0 {
         return lo;
     }
     if f(hi) <= 0.0 {
         return hi;
     }
-    for _ in 0..STEPS {
+    for _ in 0..steps {
         let mid = 0.5 * (lo + hi);
         if f(mid) < 0.0 {
             lo = mid;

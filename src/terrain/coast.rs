@@ -12,9 +12,6 @@
 use super::Heightfield;
 use crate::settings::COAST_SEA_SHARE;
 
-/// Heights sampled for the water line: enough for a percentile good to a
-/// fraction of a percent, few enough to cost well under a millisecond.
-const SAMPLES: usize = 1 << 16;
 /// Share of the rows, at the front, that are lowered into the sea.
 const FRONT_BAND: f32 = 0.3;
 /// How far the front edge is lowered, as a fraction of the grid's width:
@@ -27,14 +24,21 @@ const FRONT_DEPTH: f32 = 0.01;
 /// starts to be pressed down to [`FRONT_DEPTH`].
 const FRONT_PRESS: f32 = 0.6;
 
-/// The height with [`COAST_SEA_SHARE`] of the (sampled) heights below it.
+/// The height with [`COAST_SEA_SHARE`] of the heights below it, among
+/// the points of the lattice every detail shares
+/// ([`SHARED_EXPONENT`](super::SHARED_EXPONENT): 16641 points, a percentile
+/// good to a fraction of a percent, for well under a millisecond), so the
+/// water line, and with it every height, is the same at every detail.
 /// NaN heights count as the lowest.
-pub(crate) fn reference(heights: &[f32]) -> f32 {
-    if heights.is_empty() {
+pub(crate) fn reference(field: &Heightfield) -> f32 {
+    let stride = 1usize << field.exponent().saturating_sub(super::SHARED_EXPONENT);
+    let mut sample: Vec<f32> = (0..field.size())
+        .step_by(stride)
+        .flat_map(|y| field.row(y).iter().step_by(stride).copied())
+        .collect();
+    if sample.is_empty() {
         return 0.0;
     }
-    let stride = heights.len().div_ceil(SAMPLES).max(1);
-    let mut sample: Vec<f32> = heights.iter().step_by(stride).copied().collect();
     let k = ((sample.len() - 1) as f32 * COAST_SEA_SHARE) as usize;
     let (_, &mut at, _) = sample.select_nth_unstable_by(k, |a, b| a.total_cmp(b));
     if at.is_finite() { at } else { 0.0 }

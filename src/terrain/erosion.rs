@@ -14,7 +14,7 @@ use super::heightfield::Heightfield;
 use super::splitmix::{GOLDEN, mix};
 
 /// Cells a side of the grid the droplets run on.
-const COARSE_CELLS: usize = 128;
+pub(crate) const COARSE_CELLS: usize = 128;
 /// Droplets per coarse cell at full strength.
 const DROPLETS_PER_CELL: f32 = 0.5;
 /// Steps a droplet lives.

@@ -8,13 +8,15 @@ pub use crate::settings::{MAX_GRID_EXPONENT as MAX_EXPONENT, MIN_GRID_EXPONENT a
 /// Row `y` runs from the back of the mountain (`y = 0`) to the front
 /// (`y = size - 1`); column `x` from left to right. `extent` is the width of
 /// the whole grid in the same units as the heights, so a renderer knows the
-/// true aspect of the relief.
+/// true aspect of the relief. `seed` is the seed that made the heights,
+/// where one did: the mountain's identity at every grid size.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Heightfield {
     exponent: u32,
     size: usize,
     extent: f32,
     heights: Vec<f32>,
+    seed: Option<u64>,
 }
 
 impl Heightfield {
@@ -33,6 +35,7 @@ impl Heightfield {
             size,
             extent,
             heights: zeroed(size * size),
+            seed: None,
         }
     }
 
@@ -47,6 +50,7 @@ impl Heightfield {
             size,
             extent,
             heights,
+            seed: None,
         })
     }
 
@@ -87,9 +91,35 @@ impl Heightfield {
         &self.heights[y * self.size..(y + 1) * self.size]
     }
 
+    /// The seed that made these heights, if known (a generated field, or a
+    /// data set whose file names its seed).
+    pub fn seed(&self) -> Option<u64> {
+        self.seed
+    }
+
+    /// Records the seed that made these heights (`None`: not known).
+    pub fn set_seed(&mut self, seed: Option<u64>) {
+        self.seed = seed;
+    }
+
+    /// The number a mountain's scene is drawn from (its time of day, its
+    /// sea): the same at every grid size, so a seed looks the same at every
+    /// frame size, detail and `low_detail`. It comes from the seed where
+    /// there is one: the heights at the points every grid size shares are
+    /// not the same at every size (erosion runs on the grid itself below
+    /// 129 points a side, and the water line is a percentile of each grid's
+    /// own heights). A field without a seed (a foreign data set) is shown as
+    /// it is at every frame size, so its [`Heightfield::fingerprint`] serves.
+    pub fn identity(&self) -> u64 {
+        match self.seed {
+            Some(seed) => super::splitmix::mix(seed ^ IDENTITY_KEY),
+            None => self.fingerprint(),
+        }
+    }
+
     /// A value-stable hash of the size, extent and (sampled) heights: the
-    /// same mountain always gives the same number, so choices drawn from it
-    /// (a time of day, ridge shapes) follow the seed.
+    /// same grid always gives the same number. It changes with the grid
+    /// size; [`Heightfield::identity`] does not.
     pub fn fingerprint(&self) -> u64 {
         let step = |z: u64| super::splitmix::mix(z.wrapping_add(super::splitmix::GOLDEN));
         let stride = (self.heights.len() / 4096).max(1);
@@ -145,9 +175,14 @@ impl Heightfield {
             size,
             extent: self.extent,
             heights,
+            seed: self.seed,
         }
     }
 }
+
+/// Mixed into a seed for [`Heightfield::identity`], so the scene's draws
+/// are not the terrain noise's own first numbers.
+const IDENTITY_KEY: u64 = 0x7363_656e_6520_6964;
 
 /// Fields this large ask the kernel for huge pages: faulting in a fresh
 /// 64 MiB field one 4 KiB page at a time costs about as much as generating

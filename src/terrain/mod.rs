@@ -87,10 +87,18 @@ pub fn generate_into(settings: &Settings, seed: u64, field: &mut Heightfield) {
 /// Runs the generator and the finishing passes over `field`.
 fn fill(field: &mut Heightfield, params: &Params, seed: u64, threads: usize) {
     let threads = threads.max(1);
+    field.set_seed(Some(seed));
     let extremes = subdivide_all(field, params, seed, threads, &Plain);
     let extremes = weather(field, params, seed, threads, extremes);
     finish(field, params, threads, extremes);
 }
+
+/// Grids of this exponent or finer hold the same mountain on their nested
+/// `2^SHARED_EXPONENT + 1`-point lattice at every detail (up to the water
+/// line's small shift, a percentile of each grid's own heights): erosion
+/// runs on that lattice whatever the detail. Coarser grids are eroded on
+/// themselves, into a somewhat different mountain.
+pub const SHARED_EXPONENT: u32 = erosion::COARSE_CELLS.ilog2();
 
 /// Width of the grid of the square generators, in height units.
 pub const SQUARE_EXTENT: f32 = 250.0;
@@ -121,6 +129,7 @@ pub fn generate_audited(settings: &Settings, seed: u64, threads: usize) -> Audit
     let threads = threads.max(1);
     let mut field = Heightfield::flat(params.exponent, params.extent());
     field.heights_mut().fill(f32::NAN);
+    field.set_seed(Some(seed));
     let audit = Audited::default();
     let extremes = subdivide_all(&mut field, &params, seed, threads, &audit);
     let unset = field.heights().iter().filter(|h| h.is_nan()).count();

@@ -27,7 +27,7 @@ pub(crate) fn finish_square(
 ) {
     let scale = p.height / 5.0;
     let zero = match p.water_line {
-        WaterLine::Coast => coast::reference(field.heights()),
+        WaterLine::Coast => coast::reference(field),
         WaterLine::Generator => 0.0,
     };
     let shift = if p.sea_level == 0.0 {

@@ -161,8 +161,10 @@ fn to_dataset(raw: RawGrid, mut meta: Metadata, path: &Path) -> Result<DataSet, 
     }
     samples.iter_mut().for_each(|s| *s = v.height(*s));
     quantise::snap_to_grid(&mut samples);
-    let field = Heightfield::from_heights(fit.size, v.extent, samples)
+    let mut field = Heightfield::from_heights(fit.size, v.extent, samples)
         .ok_or_else(|| HeightmapError::new(path, ErrorKind::Damaged, "fits no grid size"))?;
+    // A saved mountain keeps its seed's scene (light, sea) when opened.
+    field.set_seed(meta.seed);
     Ok(DataSet {
         field,
         seed: meta.seed,
@@ -259,6 +261,7 @@ fn sea_sample(samples: &[f32], lo: f32) -> f64 {
 pub fn refit(field: &Heightfield, exponent: u32) -> Heightfield {
     let side = field.size();
     let mut out = Heightfield::flat(exponent, field.extent());
+    out.set_seed(field.seed());
     if out.size() == side {
         return field.clone();
     }

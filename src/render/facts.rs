@@ -1,0 +1,75 @@
+//! What a prepared scene is, in terms that do not depend on the frame's size
+//! or the grid: its light, its sky, its sea and where it puts the land in
+//! the frame (as fractions of the frame). For tests and tools that hold one
+//! mountain's scene at several frame sizes, details and `low_detail`
+//! against each other: only the grid may differ between them.
+
+use glam::Vec2;
+
+use super::light::Lighting;
+use super::scene::{FieldRef, Scene};
+use crate::settings::Settings;
+use crate::terrain::Heightfield;
+
+/// The scene of one mountain in one frame, as a drawing would have it.
+#[derive(Debug, Clone)]
+pub struct SceneFacts {
+    /// The light on the land (sun, colours) and the sky's colours.
+    pub lighting: Lighting,
+    /// The sky's colours as drawn, packed `0x00RRGGBB`: top and horizon.
+    pub sky: (u32, u32),
+    /// The sea's wind streaks, if the look has them.
+    pub ripples: Option<RippleFacts>,
+    view: super::view::View,
+    /// Grid steps a side.
+    cells: f32,
+    width: f32,
+    height: f32,
+}
+
+/// The wind on a scene's sea.
+#[derive(Debug, Clone)]
+pub struct RippleFacts {
+    /// What the pattern is drawn from.
+    pub seed: u64,
+    ripples: super::ripples::Ripples,
+    cells: f32,
+}
+
+impl SceneFacts {
+    /// Prepares `field` as `settings` ask in a `width` x `height` frame,
+    /// exactly as drawing it would, and reports the scene.
+    pub fn of(field: &Heightfield, settings: &Settings, width: u32, height: u32) -> Self {
+        let scene = Scene::new(FieldRef::Borrowed(field), settings, width, height);
+        let cells = scene.cells().max(1) as f32;
+        SceneFacts {
+            lighting: scene.palette.lighting().clone(),
+            sky: scene.palette.sky(),
+            ripples: scene.ripples.as_ref().map(|r| RippleFacts {
+                seed: r.seed(),
+                ripples: r.clone(),
+                cells,
+            }),
+            view: scene.view.clone(),
+            cells,
+            width: width.max(1) as f32,
+            height: height.max(1) as f32,
+        }
+    }
+
+    /// Where the point `x` of the field's width and `y` of its depth (both
+    /// 0..=1, from the back left corner) at height `z` appears, as fractions
+    /// of the frame's width and height from its top left corner.
+    pub fn place(&self, x: f32, y: f32, z: f32) -> Vec2 {
+        let p = self.view.project(x * self.cells, y * self.cells, z);
+        p / Vec2::new(self.width, self.height)
+    }
+}
+
+impl RippleFacts {
+    /// The ripple (-1..1) at `x` of the field's width and `y` of its depth
+    /// (both 0..=1): above 0 the water mirrors the sky, below it is darker.
+    pub fn at(&self, x: f32, y: f32) -> f32 {
+        self.ripples.value(x * self.cells, y * self.cells)
+    }
+}
