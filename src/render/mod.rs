@@ -3,6 +3,8 @@
 mod bands;
 mod camera;
 mod canvas;
+#[doc(hidden)]
+pub mod classes;
 pub mod colour;
 pub mod damage;
 pub mod detail;
