@@ -62,9 +62,7 @@ fn main() {
         Ok(a) => a,
         Err(e) => {
             eprintln!("quality: {e}");
-            eprintln!(
-                "usage: quality --size WxH --seeds 1,2,3 [--set key=value ...] [--k 4]"
-            );
+            eprintln!("usage: quality --size WxH --seeds 1,2,3 [--set key=value ...] [--k 4]");
             std::process::exit(2);
         }
     };
@@ -75,9 +73,23 @@ fn main() {
         args.settings.sun
     );
     println!(
-        "{:>5} {:>7} {:>7} {:>8} {:>6} {:>6} {:>6} {:>6} {:>6} {:>6} {:>6} {:>6} {:>6} {:>6} {:>13} {:>6}  {}",
-        "seed", "PSNR", "SSIM", "edgePSNR", "edge%", "err%", "sky", "water", "land", "off8%",
-        "facet%", "step%", "pair%", "refpr%", "shift dx,dy", "geom", "seconds: frame, reference, measuring"
+        "{:>5} {:>7} {:>7} {:>8} {:>6} {:>6} {:>6} {:>6} {:>6} {:>6} {:>6} {:>6} {:>6} {:>6} {:>13} {:>6}  seconds: frame, reference, measuring",
+        "seed",
+        "PSNR",
+        "SSIM",
+        "edgePSNR",
+        "edge%",
+        "err%",
+        "sky",
+        "water",
+        "land",
+        "off8%",
+        "facet%",
+        "step%",
+        "pair%",
+        "refpr%",
+        "shift dx,dy",
+        "geom",
     );
     let mut all = Vec::new();
     for &seed in &args.seeds {
@@ -158,7 +170,10 @@ fn measure(args: &Args, seed: u64) -> Figures {
     render_full(&field, settings, &mut frame);
     let t1 = Instant::now();
     let (hk, crop, geometry_px) = fair_reference(&field, settings, w, h, k);
-    eprintln!("seed {seed}: reference {}x{hk}, its rows from {crop} on", k * w);
+    eprintln!(
+        "seed {seed}: reference {}x{hk}, its rows from {crop} on",
+        k * w
+    );
     let mut big = Frame::new(k * w, hk).expect("room for the reference");
     render_full(&field, settings, &mut big);
     let t2 = Instant::now();
@@ -211,14 +226,21 @@ fn measure(args: &Args, seed: u64) -> Figures {
 /// The reference's height and the rows to drop from its top so that it is
 /// the base view sampled `k` times finer, and the largest mismatch left
 /// (base pixels) over grid points projected through both views.
-fn fair_reference(field: &Heightfield, settings: &Settings, w: u32, h: u32, k: u32) -> (u32, i32, f64) {
+fn fair_reference(
+    field: &Heightfield,
+    settings: &Settings,
+    w: u32,
+    h: u32,
+    k: u32,
+) -> (u32, i32, f64) {
     let tops: Vec<f32> = (0..field.size())
         .map(|y| {
             let row = field.row(y).iter().filter(|v| v.is_finite());
             row.fold(0.0f32, |m, &v| m.max(v))
         })
         .collect();
-    let view = |w: u32, h: u32| View::fitted(settings.view, field.size(), field.extent(), &tops, w, h);
+    let view =
+        |w: u32, h: u32| View::fitted(settings.view, field.size(), field.extent(), &tops, w, h);
     let steps = (field.size() - 1) as f32;
     let edges = |v: &View| {
         let back = v.project(0.5 * steps, 0.0, 0.0).y;
@@ -294,16 +316,26 @@ fn parse(argv: Vec<String>) -> Result<Args, String> {
             "--seeds" => {
                 let v = value()?;
                 seeds = (v.split(','))
-                    .map(|s| s.trim().parse().map_err(|_| format!("--seeds {v}: not a seed: {s}")))
+                    .map(|s| {
+                        s.trim()
+                            .parse()
+                            .map_err(|_| format!("--seeds {v}: not a seed: {s}"))
+                    })
                     .collect::<Result<_, _>>()?;
             }
             "--k" => {
                 let v = value()?;
-                k = v.parse().ok().filter(|&n| (1..=8).contains(&n)).ok_or(format!("--k {v}: want 1 to 8"))?;
+                k = v
+                    .parse()
+                    .ok()
+                    .filter(|&n| (1..=8).contains(&n))
+                    .ok_or(format!("--k {v}: want 1 to 8"))?;
             }
             "--set" => {
                 let v = value()?;
-                let (key, raw) = v.split_once('=').ok_or(format!("--set {v}: want key=value"))?;
+                let (key, raw) = v
+                    .split_once('=')
+                    .ok_or(format!("--set {v}: want key=value"))?;
                 sun_set |= key.trim() == "sun";
                 load::apply_set(&mut settings, key.trim(), raw).map_err(|p| p.to_string())?;
             }

@@ -22,7 +22,11 @@ pub const FACET_MIN_PX: u32 = 6;
 pub fn lab(c: [f32; 3]) -> [f32; 3] {
     let lin = c.map(|v| {
         let v = v / 255.0;
-        if v <= 0.04045 { v / 12.92 } else { ((v + 0.055) / 1.055).powf(2.4) }
+        if v <= 0.04045 {
+            v / 12.92
+        } else {
+            ((v + 0.055) / 1.055).powf(2.4)
+        }
     });
     let xyz = [
         (0.412_456_4 * lin[0] + 0.357_576_1 * lin[1] + 0.180_437_5 * lin[2]) / 0.950_47,
@@ -30,9 +34,17 @@ pub fn lab(c: [f32; 3]) -> [f32; 3] {
         (0.019_333_9 * lin[0] + 0.119_192 * lin[1] + 0.950_304_1 * lin[2]) / 1.088_83,
     ];
     let f = xyz.map(|t| {
-        if t > 216.0 / 24389.0 { t.cbrt() } else { (24389.0 / 27.0 * t + 16.0) / 116.0 }
+        if t > 216.0 / 24389.0 {
+            t.cbrt()
+        } else {
+            (24389.0 / 27.0 * t + 16.0) / 116.0
+        }
     });
-    [116.0 * f[1] - 16.0, 500.0 * (f[0] - f[1]), 200.0 * (f[1] - f[2])]
+    [
+        116.0 * f[1] - 16.0,
+        500.0 * (f[0] - f[1]),
+        200.0 * (f[1] - f[2]),
+    ]
 }
 
 /// CIE76 colour difference: the distance in L*a*b*.
@@ -136,7 +148,9 @@ fn facet_labels(pixels: &[u32], land: &[bool], width: usize) -> Vec<u32> {
             }
         }
     }
-    (0..pixels.len() as u32).map(|i| root(&mut parent, i)).collect()
+    (0..pixels.len() as u32)
+        .map(|i| root(&mut parent, i))
+        .collect()
 }
 
 #[cfg(test)]
@@ -161,7 +175,9 @@ mod tests {
         // A 10 x 6 picture: left half grey 100, right half grey 140.
         let (w, h) = (10, 6);
         let grey = |v: u32| v << 16 | v << 8 | v;
-        let two: Vec<u32> = (0..w * h).map(|i| grey(if i % w < 5 { 100 } else { 140 })).collect();
+        let two: Vec<u32> = (0..w * h)
+            .map(|i| grey(if i % w < 5 { 100 } else { 140 }))
+            .collect();
         let land = vec![true; w * h];
         let f = measure(&two, &land, w);
         // Columns 4 and 5 lie on the edge: 2 of 10 columns.

@@ -38,7 +38,13 @@ impl Image {
     /// `frame` averaged down in `k` x `k` boxes to `width` x `height`: the
     /// box of pixel (x, y) starts at frame pixel (`x0 + k x`, `y0 + k y`).
     /// Boxes reaching past the frame repeat its edge pixels.
-    pub fn box_down(frame: &Frame, k: usize, (x0, y0): (i64, i64), width: usize, height: usize) -> Image {
+    pub fn box_down(
+        frame: &Frame,
+        k: usize,
+        (x0, y0): (i64, i64),
+        width: usize,
+        height: usize,
+    ) -> Image {
         let (fw, fh) = (frame.width() as i64, frame.height() as i64);
         let pixels = frame.pixels();
         let xs: Vec<usize> = (0..width * k)

@@ -14,7 +14,11 @@ const C2: f64 = (0.03 * PEAK) * (0.03 * PEAK);
 /// Summed squared error over the three channels and the number of channel
 /// values it covers, over the pixels `keep` accepts (by index).
 pub fn squared_error(a: &Image, b: &Image, keep: impl Fn(usize) -> bool) -> (f64, u64) {
-    assert_eq!((a.width, a.height), (b.width, b.height), "pictures differ in size");
+    assert_eq!(
+        (a.width, a.height),
+        (b.width, b.height),
+        "pictures differ in size"
+    );
     let mut sum = 0.0f64;
     let mut n = 0u64;
     for (i, (p, q)) in a.rgb.iter().zip(&b.rgb).enumerate() {
@@ -63,8 +67,8 @@ pub fn ssim(a: &[f32], b: &[f32], width: usize) -> f64 {
     for i in 0..mu_a.len() {
         let (ma, mb) = (mu_a[i], mu_b[i]);
         let (va, vb, cov) = (aa[i] - ma * ma, bb[i] - mb * mb, ab[i] - ma * mb);
-        sum += ((2.0 * ma * mb + C1) * (2.0 * cov + C2))
-            / ((ma * ma + mb * mb + C1) * (va + vb + C2));
+        sum +=
+            ((2.0 * ma * mb + C1) * (2.0 * cov + C2)) / ((ma * ma + mb * mb + C1) * (va + vb + C2));
     }
     sum / mu_a.len().max(1) as f64
 }
@@ -112,7 +116,11 @@ mod tests {
         let rgb = (0..width * height)
             .map(|i| {
                 let (x, y) = ((i % width) as f32, (i / width) as f32);
-                [x * 2.0, 100.0 + 50.0 * (y * 0.3).sin(), ((x + y) % 7.0) * 30.0]
+                [
+                    x * 2.0,
+                    100.0 + 50.0 * (y * 0.3).sin(),
+                    ((x + y) % 7.0) * 30.0,
+                ]
             })
             .collect();
         Image { width, height, rgb }
@@ -147,7 +155,9 @@ mod tests {
         let a = scene(64, 48).luma();
         // Pseudo-random noise of +-20.
         let noisy: Vec<f32> = (a.iter().enumerate())
-            .map(|(i, &v)| v + ((i as u32).wrapping_mul(2_654_435_761) >> 27) as f32 * 40.0 / 31.0 - 20.0)
+            .map(|(i, &v)| {
+                v + ((i as u32).wrapping_mul(2_654_435_761) >> 27) as f32 * 40.0 / 31.0 - 20.0
+            })
             .collect();
         let shifted: Vec<f32> = a.iter().map(|&v| v + 5.0).collect();
         let (s_noise, s_shift) = (ssim(&a, &noisy, 64), ssim(&a, &shifted, 64));

@@ -26,13 +26,23 @@ pub struct Shift {
 /// The shift, within `reach` reference pixels each way, of the boxes of
 /// `reference` (the picture's pixel (x, y) averages its `k` x `k` box from
 /// `origin + k (x, y)`) that best matches `picture`.
-pub fn best_shift(picture: &Image, reference: &Frame, k: usize, origin: (i64, i64), reach: i64) -> Shift {
+pub fn best_shift(
+    picture: &Image,
+    reference: &Frame,
+    k: usize,
+    origin: (i64, i64),
+    reach: i64,
+) -> Shift {
     let (w, h) = (picture.width, picture.height);
     let target = halved(&picture.luma(), w, h);
     let side = (2 * reach + 1) as usize;
     let mut mse = vec![f64::INFINITY; side * side];
     let (fw, fh) = (reference.width() as i64, reference.height() as i64);
-    let lumas: Vec<f32> = reference.pixels().iter().map(|&p| luma(channels(p))).collect();
+    let lumas: Vec<f32> = reference
+        .pixels()
+        .iter()
+        .map(|&p| luma(channels(p)))
+        .collect();
     for (a, i) in (-reach..=reach).enumerate() {
         // Each reference row summed across the boxes of this shift.
         let xs: Vec<usize> = (0..(w * k) as i64)
@@ -124,8 +134,12 @@ mod tests {
     fn drawn(w: u32, h: u32, k: f32, (ox, oy): (f32, f32)) -> Frame {
         let mut f = Frame::new(w, h).unwrap();
         for (i, p) in f.pixels_mut().iter_mut().enumerate() {
-            let (x, y) = (((i as u32 % w) as f32 + ox) / k, ((i as u32 / w) as f32 + oy) / k);
-            let v = 128.0 + 60.0 * (x * 0.21).sin() * (y * 0.17).cos() + 40.0 * ((x + y) * 0.05).sin();
+            let (x, y) = (
+                ((i as u32 % w) as f32 + ox) / k,
+                ((i as u32 / w) as f32 + oy) / k,
+            );
+            let v =
+                128.0 + 60.0 * (x * 0.21).sin() * (y * 0.17).cos() + 40.0 * ((x + y) * 0.05).sin();
             let v = v.clamp(0.0, 255.0) as u32;
             *p = v << 16 | v << 8 | v;
         }
@@ -141,7 +155,10 @@ mod tests {
         // reference pixels back.
         let shifted = drawn(256, 192, 4.0, (2.0, 1.0));
         let s = best_shift(&picture, &shifted, k, (0, 0), 4);
-        assert!((s.dx + 0.5).abs() < 0.06 && (s.dy + 0.25).abs() < 0.06, "{s:?}");
+        assert!(
+            (s.dx + 0.5).abs() < 0.06 && (s.dy + 0.25).abs() < 0.06,
+            "{s:?}"
+        );
         let same = best_shift(&picture, &drawn(256, 192, 4.0, (0.0, 0.0)), k, (0, 0), 4);
         assert!(same.dx.abs() < 0.02 && same.dy.abs() < 0.02, "{same:?}");
         assert_eq!(same.mse_at_zero, same.mse_best);

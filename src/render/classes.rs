@@ -90,9 +90,15 @@ mod tests {
             assert_ne!(f, SKY);
             assert_ne!(f, WATER);
         }
-        assert!(counts.iter().all(|&n| n > 0), "sky, water, land: {counts:?}");
+        assert!(
+            counts.iter().all(|&n| n > 0),
+            "sky, water, land: {counts:?}"
+        );
         // The sky rows at the top are sky in both pictures.
         assert_eq!(Class::of(classes.pixels()[0]), Class::Sky);
-        assert_eq!(Class::of(classes.pixels()[(w * h - 1) as usize]), Class::Water);
+        assert_eq!(
+            Class::of(classes.pixels()[(w * h - 1) as usize]),
+            Class::Water
+        );
     }
 }
