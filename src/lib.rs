@@ -14,6 +14,7 @@ pub mod help;
 pub mod log;
 pub mod memory;
 pub mod mountain;
+pub mod quality;
 pub mod quote;
 pub mod render;
 pub mod saved;

@@ -4,6 +4,8 @@ mod bands;
 mod blend;
 mod camera;
 mod canvas;
+#[doc(hidden)]
+pub mod classes;
 pub mod colour;
 pub mod damage;
 pub mod detail;

@@ -77,6 +77,19 @@ impl Ripples {
         self.seed
     }
 
+    /// Ripples that paint every water face `colour` exactly (a noise far
+    /// above 1 blends all the way): how the class picture of `classes.rs`
+    /// tells water from land, with no test in the drawing's own path.
+    pub(crate) fn covering(colour: u32) -> Self {
+        Ripples {
+            sky: colour,
+            across: 1.0,
+            along: 1.0,
+            seed: 0,
+            lattice: Box::new([256.0; LATTICE * LATTICE]),
+        }
+    }
+
     /// `colour` of the water at grid position (`x`, `y`) (in cells), with
     /// its ripple.
     #[inline]
@@ -183,6 +196,16 @@ mod tests {
             a.value(100.5, 200.5),
             square(0, 1024, 1).value(100.5, 200.5)
         );
+    }
+
+    #[test]
+    fn covering_ripples_paint_every_water_face_one_colour() {
+        let r = Ripples::covering(0x0000_ffff);
+        for k in 0..2000 {
+            let (x, y) = ((k * 37 % 1024) as f32 + 0.3, (k * 91 % 1024) as f32 + 0.6);
+            let water = (k as u32).wrapping_mul(0x9e37_79b9) & 0x00ff_ffff;
+            assert_eq!(r.on(water, x, y), 0x0000_ffff, "at {x}, {y}");
+        }
     }
 
     #[test]
