@@ -12,6 +12,7 @@ use std::sync::Mutex;
 use super::canvas::Canvas;
 use super::frame::Frame;
 use super::scene::Scene;
+use super::skyline;
 use super::walk::{Rows, draw_strips};
 
 /// Most threads used; more bands would mostly repeat per-strip work.
@@ -87,6 +88,14 @@ impl<'f> Columns<'f> {
 
 /// Draws the sky and every strip of `scene` into `frame`, on all cores.
 pub(crate) fn render(scene: &Scene, frame: &mut Frame) {
+    draw_bands(scene, frame);
+    if scene.clean_edges {
+        skyline::smooth(frame, &scene.sky);
+    }
+}
+
+/// [`render`]'s drawing, the skyline left as drawn.
+fn draw_bands(scene: &Scene, frame: &mut Frame) {
     let width = frame.width();
     let threads = std::thread::available_parallelism()
         .map_or(1, |n| n.get())

@@ -137,6 +137,18 @@ impl Frame {
     pub fn clear(&mut self, color: u32) {
         self.pixels.fill(color);
     }
+
+    /// The pixel at column `x`, row `y` (inside the frame).
+    #[inline]
+    pub fn get(&self, x: u32, y: u32) -> u32 {
+        self.pixels[y as usize * self.width as usize + x as usize]
+    }
+
+    /// Sets the pixel at column `x`, row `y` (inside the frame).
+    #[inline]
+    pub fn set(&mut self, x: u32, y: u32, color: u32) {
+        self.pixels[y as usize * self.width as usize + x as usize] = color;
+    }
 }
 
 #[cfg(test)]

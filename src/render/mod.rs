@@ -28,6 +28,7 @@ pub mod shadow;
 mod shore;
 mod sky;
 mod skylight;
+mod skyline;
 mod strip;
 mod tops;
 pub mod view;

@@ -8,6 +8,7 @@ use super::damage::Damage;
 use super::frame::{Frame, Rect};
 use super::ridges::Ridges;
 use super::scene::{FieldRef, Scene};
+use super::skyline;
 use super::walk::{Rows, draw_strips};
 use crate::settings::{ColorMode, Settings};
 use crate::terrain::Heightfield;
@@ -86,7 +87,14 @@ impl Painter {
                     scene.sky.paint(&mut canvas);
                 }
                 draw_strips(scene, &mut canvas, rows, start..end, self.width);
-                canvas.damage()
+                let mut damage = canvas.damage();
+                if end == scene.strips() && scene.clean_edges {
+                    // The full frame's last touch, once every strip is in.
+                    for r in skyline::smooth(frame, &scene.sky).rects() {
+                        damage.add(r);
+                    }
+                }
+                damage
             }
             How::Ridges(ridges) => {
                 let mut damage = Damage::default();

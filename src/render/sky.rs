@@ -53,6 +53,17 @@ impl Sky {
         }
     }
 
+    /// The packed colours of row `y` at each of the four dither columns
+    /// (column `x` has colour `x & 3`).
+    pub(crate) fn row_colours(&self, y: u32) -> [u32; 4] {
+        self.colours_at(self.blend(y), y)
+    }
+
+    /// The packed colour [`Sky::paint`] gives pixel (`x`, `y`).
+    pub(crate) fn colour(&self, x: u32, y: u32) -> u32 {
+        self.row_colours(y)[(x & 3) as usize]
+    }
+
     /// How far row `y` is blended from the top colour (0) to the horizon
     /// colour (1).
     fn blend(&self, y: u32) -> f32 {

@@ -1,0 +1,296 @@
+//! The skyline drawn clean: where the land meets the sky, each pixel is
+//! mixed from the sky and the land by how much of it lies under the edge,
+//! so the skyline is a smooth line, not a staircase of whole pixels.
+//!
+//! The land's top in each column is where the frame stops showing the sky
+//! (the sky is a known gradient, and in the views with depth the land runs
+//! from there to the bottom). Columns with the same top form runs; the true
+//! edge passes through each run's middle at its top, and between the
+//! middles of neighbouring runs it is taken to be straight. A run higher
+//! (or lower) than both its neighbours is a peak (or a notch): the edge is
+//! kept level across it, so a sharp peak keeps its tip and a narrow notch
+//! stays open. Each pixel's share of land is the mean of the edge's height
+//! at four places across its width.
+//!
+//! This runs once the frame is complete (it needs each column's
+//! neighbours), on the full frame and at the painter's last step alike, so
+//! both end with the same pixels.
+
+use super::colour::blend_packed;
+use super::damage::Damage;
+use super::frame::{Frame, Rect};
+use super::sky::Sky;
+
+/// Places across a pixel's width where the edge's height is read.
+const SAMPLES: usize = 4;
+
+/// A run of columns whose land starts at the same row.
+#[derive(Clone, Copy)]
+struct Run {
+    /// First and last column.
+    x0: u32,
+    x1: u32,
+    /// The first row of land.
+    top: u32,
+}
+
+impl Run {
+    /// The run's middle, in pixels from the frame's left.
+    fn middle(&self) -> f32 {
+        (self.x0 + self.x1 + 1) as f32 / 2.0
+    }
+}
+
+/// Mixes the pixels along the skyline of a complete `frame` whose sky is
+/// `sky`; returns the pixels it changed.
+pub(crate) fn smooth(frame: &mut Frame, sky: &Sky) -> Damage {
+    let tops = land_tops(frame, sky);
+    let runs = runs_of(&tops, frame.height());
+    let (middles, level) = middles(&runs, tops.len());
+    let mut damage = Damage::default();
+    for run in &runs {
+        for x in run.x0..=run.x1 {
+            let edge: [f32; SAMPLES] = std::array::from_fn(|k| {
+                let at = (k as f32 + 0.5) / SAMPLES as f32;
+                edge_in(&middles, &level, x as usize, at)
+            });
+            if let Some(rows) = mix_column(frame, sky, x, run.top, &edge) {
+                damage.add(Rect {
+                    x0: x,
+                    y0: rows.0,
+                    x1: x + 1,
+                    y1: rows.1,
+                });
+            }
+        }
+    }
+    damage
+}
+
+/// The edge's height at the middle of each column (NaN where the column
+/// has no land), and whether the column lies in a peak or a notch, where
+/// the edge stays level. A middle is held within half a row of the
+/// column's own top: the edge cannot pass where the column's pixel centres
+/// say it does not.
+fn middles(runs: &[Run], width: usize) -> (Vec<f32>, Vec<bool>) {
+    let mut middle = vec![f32::NAN; width];
+    let mut level = vec![false; width];
+    for (i, run) in runs.iter().enumerate() {
+        let (left, right) = (neighbour(runs, i, -1), neighbour(runs, i, 1));
+        let extreme = match (left, right) {
+            (Some(l), Some(r)) => (l.top > run.top) == (r.top > run.top),
+            _ => false,
+        };
+        let top = run.top as f32;
+        for x in run.x0..=run.x1 {
+            let e = if extreme {
+                top
+            } else {
+                edge_at(run, left, right, x as f32 + 0.5)
+            };
+            middle[x as usize] = e.clamp(top - 0.5, top + 0.5);
+            level[x as usize] = extreme;
+        }
+    }
+    (middle, level)
+}
+
+/// The edge's height `at` (0..1) across column `x`: straight between the
+/// middles of neighbouring columns, level in a peak or a notch.
+fn edge_in(middles: &[f32], level: &[bool], x: usize, at: f32) -> f32 {
+    let own = middles[x];
+    if level[x] {
+        return own;
+    }
+    let (other, t) = if at < 0.5 {
+        (x.checked_sub(1).and_then(|l| middles.get(l)), 0.5 - at)
+    } else {
+        (middles.get(x + 1), at - 0.5)
+    };
+    match other {
+        Some(&o) if !o.is_nan() => own + (o - own) * t,
+        _ => own,
+    }
+}
+
+/// The first row of each column that is not the sky (the height when the
+/// whole column is sky).
+fn land_tops(frame: &Frame, sky: &Sky) -> Vec<u32> {
+    let (w, h) = (frame.width() as usize, frame.height());
+    let mut tops = vec![h; w];
+    let mut open = w;
+    for y in 0..h {
+        let phases = sky.row_colours(y);
+        let row = &frame.pixels()[y as usize * w..][..w];
+        for (x, (&px, top)) in row.iter().zip(tops.iter_mut()).enumerate() {
+            if *top == h && px != phases[x & 3] {
+                *top = y;
+                open -= 1;
+            }
+        }
+        if open == 0 {
+            break;
+        }
+    }
+    tops
+}
+
+/// Runs of neighbouring columns with the same top; columns with no land
+/// belong to none.
+fn runs_of(tops: &[u32], height: u32) -> Vec<Run> {
+    let mut runs: Vec<Run> = Vec::new();
+    for (x, &top) in tops.iter().enumerate() {
+        let x = x as u32;
+        match runs.last_mut() {
+            Some(r) if r.top == top && r.x1 + 1 == x => r.x1 = x,
+            _ if top < height => runs.push(Run { x0: x, x1: x, top }),
+            _ => {}
+        }
+    }
+    runs
+}
+
+/// The run beside run `i` (`step` -1 left, 1 right), if it touches it.
+fn neighbour(runs: &[Run], i: usize, step: isize) -> Option<&Run> {
+    let j = i.checked_add_signed(step)?;
+    let other = runs.get(j)?;
+    let touches = if step < 0 {
+        other.x1 + 1 == runs[i].x0
+    } else {
+        runs[i].x1 + 1 == other.x0
+    };
+    touches.then_some(other)
+}
+
+/// The edge's height (rows from the top) at `x` (pixels) within `run`:
+/// straight between the middles of the neighbouring runs.
+fn edge_at(run: &Run, left: Option<&Run>, right: Option<&Run>, x: f32) -> f32 {
+    let top = run.top as f32;
+    let middle = run.middle();
+    let other = if x < middle { left } else { right };
+    match other {
+        Some(n) => {
+            let t = (x - middle) / (n.middle() - middle);
+            top + (n.top as f32 - top) * t
+        }
+        None => top,
+    }
+}
+
+/// Mixes column `x` where the edge (its height at each sample across the
+/// column) cuts pixels; `top` is the column's first row of land. Returns
+/// the rows changed, if any.
+fn mix_column(
+    frame: &mut Frame,
+    sky: &Sky,
+    x: u32,
+    top: u32,
+    edge: &[f32; SAMPLES],
+) -> Option<(u32, u32)> {
+    let lo = edge.iter().copied().fold(f32::INFINITY, f32::min);
+    let hi = edge.iter().copied().fold(f32::NEG_INFINITY, f32::max);
+    let first = (lo.floor().max(0.0) as u32).min(top);
+    // Rows between the edge and the column's top are land all across.
+    let end = (hi.ceil().max(0.0) as u32).max(top).min(frame.height());
+    let land = frame.get(x, top);
+    let mut changed = None;
+    for y in first..end {
+        let cover: f32 = edge
+            .iter()
+            .map(|&e| (y as f32 + 1.0 - e).clamp(0.0, 1.0))
+            .sum::<f32>()
+            / SAMPLES as f32;
+        let own = if y >= top { frame.get(x, y) } else { land };
+        let mixed = blend_packed(sky.colour(x, y), own, (cover * 256.0 + 0.5) as u32);
+        if mixed != frame.get(x, y) {
+            frame.set(x, y, mixed);
+            let (a, _) = changed.get_or_insert((y, y + 1));
+            changed = Some((*a, y + 1));
+        }
+    }
+    changed
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const LAND: u32 = 0x0020_4010;
+
+    /// A frame of `w` x `h` sky with land from row `tops[x]` down.
+    fn framed(tops: &[u32], h: u32, sky: &Sky) -> Frame {
+        let w = tops.len() as u32;
+        let mut f = Frame::new(w, h).unwrap();
+        for y in 0..h {
+            for x in 0..w {
+                let c = if y >= tops[x as usize] {
+                    LAND
+                } else {
+                    sky.colour(x, y)
+                };
+                f.set(x, y, c);
+            }
+        }
+        f
+    }
+
+    fn sky() -> Sky {
+        Sky::new(0x0000_0080, 0x0080_00ff, 40.0)
+    }
+
+    /// Land's share of pixel (`x`, `y`) in 1/64ths: its green (the sky has none).
+    fn green(f: &Frame, x: u32, y: u32) -> u32 {
+        (f.get(x, y) >> 8) & 0xff
+    }
+
+    #[test]
+    fn a_gentle_staircase_becomes_a_ramp() {
+        // Land one row higher every 8 columns: a slope of 1/8.
+        let tops: Vec<u32> = (0..48).map(|x| 20 - x / 8).collect();
+        let sky = sky();
+        let mut f = framed(&tops, 30, &sky);
+        let before = f.clone();
+        let damage = smooth(&mut f, &sky);
+        assert!(!damage.is_empty());
+        // Above each run's right half a pixel of sky takes some land, more
+        // the nearer the step: a blend, not a stair.
+        let shares: Vec<u32> = (8..16).map(|x| green(&f, x, 18)).collect();
+        assert!(shares[0] == 0 && shares[7] > 0, "{shares:?}");
+        assert!(shares.windows(2).all(|w| w[0] <= w[1]), "{shares:?}");
+        let blends = (0..48).filter(|&x| {
+            let c = f.get(x, 18);
+            c != before.get(x, 18) && c != LAND
+        });
+        assert!(blends.count() >= 8);
+        // The land below the edge stays land.
+        assert_eq!(f.get(12, 25), LAND);
+    }
+
+    #[test]
+    fn a_peak_keeps_its_tip_and_a_flat_skyline_is_left_alone() {
+        let mut tops = vec![20u32; 16];
+        tops[8] = 12;
+        let sky = sky();
+        let mut f = framed(&tops, 30, &sky);
+        smooth(&mut f, &sky);
+        assert_eq!(f.get(8, 12), LAND, "the tip");
+        for x in [0, 1, 2, 13, 14, 15] {
+            for y in 0..30 {
+                let want = if y >= 20 { LAND } else { sky.colour(x, y) };
+                assert_eq!(f.get(x, y), want, "({x}, {y})");
+            }
+        }
+        // Its flanks grow a little land into the sky beside the tip.
+        assert!(green(&f, 7, 17) > 0 || green(&f, 9, 17) > 0);
+    }
+
+    #[test]
+    fn a_frame_of_sky_only_is_unchanged() {
+        let sky = sky();
+        let tops = vec![30u32; 10];
+        let mut f = framed(&tops, 30, &sky);
+        let before = f.clone();
+        assert!(smooth(&mut f, &sky).is_empty());
+        assert_eq!(f.pixels(), before.pixels());
+    }
+}
