@@ -20,7 +20,9 @@ fn exe() -> Option<Vec<u8>> {
 
 /// The one resource `kind`/`id`, whatever its language.
 fn only<'a>(pe: &Pe<'a>, kind: u16, id: u16, what: &str) -> pe::Resource<'a> {
-    let mut found = pe.resource(kind, id).unwrap_or_else(|e| panic!("{what}: {e}"));
+    let mut found = pe
+        .resource(kind, id)
+        .unwrap_or_else(|e| panic!("{what}: {e}"));
     assert!(
         pe.has_resources(),
         "the exe has no resources at all (no {what})"
@@ -63,10 +65,7 @@ fn windows_exe_has_version_information_from_cargo_toml() {
         Some("Mountains screensaver")
     );
     assert_eq!(info.string("ProductName"), Some("Mountains"));
-    assert_eq!(
-        info.string("FileVersion"),
-        Some(env!("CARGO_PKG_VERSION"))
-    );
+    assert_eq!(info.string("FileVersion"), Some(env!("CARGO_PKG_VERSION")));
     assert_eq!(info.string("OriginalFilename"), Some("mountains.scr"));
 }
 

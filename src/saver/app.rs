@@ -318,7 +318,8 @@ impl App {
             #[cfg(windows)]
             AppMode::Child(parent) => {
                 let matched = super::embed_win32::match_parent_dpi(parent);
-                self.trace.note(&format!("preview DPI awareness as the parent's: {matched}"));
+                self.trace
+                    .note(&format!("preview DPI awareness as the parent's: {matched}"));
                 let attrs = super::embed_win32::child_attributes(base, parent)?;
                 self.add_screen(event_loop, attrs, true, None)
             }

@@ -73,7 +73,11 @@ impl<'a> Pe<'a> {
         let sections = (0..sections)
             .map(|i| {
                 let s = table + 40 * i;
-                Ok((u32_at(bytes, s + 12)?, u32_at(bytes, s + 8)?, u32_at(bytes, s + 20)?))
+                Ok((
+                    u32_at(bytes, s + 12)?,
+                    u32_at(bytes, s + 8)?,
+                    u32_at(bytes, s + 20)?,
+                ))
             })
             .collect::<Result<_, String>>()?;
         Ok(Pe {
@@ -118,7 +122,9 @@ impl<'a> Pe<'a> {
         let found = self.entries(dir)?.into_iter().find(|e| e.0 == id);
         match found {
             Some((_, offset, true)) => Ok(Some(offset)),
-            Some(_) => Err(format!("resource entry {id} is data where a directory belongs")),
+            Some(_) => Err(format!(
+                "resource entry {id} is data where a directory belongs"
+            )),
             None => Ok(None),
         }
     }
@@ -205,7 +211,8 @@ impl VersionInfo {
         let mut strings = Vec::new();
         root.walk(data, &mut |node| {
             // Text values (type 1) are counted in UTF-16 units, NUL included.
-            if node.text {
+            // Blocks (StringFileInfo, a language) are text-typed but hold no value.
+            if node.text && node.value_len > 0 {
                 let value = utf16(data, node.value_at, node.value_len)?;
                 let value = value.trim_end_matches('\0').to_string();
                 strings.push((node.key.clone(), value));
