@@ -176,6 +176,25 @@ const HOST_SECONDS: u64 = 2;
 #[test]
 #[ignore = "needs Wine, mingw and the cross-built exe: sh scripts/wine_test.sh"]
 fn display_wine_preview_runs_in_the_host_window_and_ends_with_it() {
+    // A DPI-unaware host, as the classic Screen Saver Settings dialog.
+    preview("wine-preview", "unaware", UNAWARE);
+}
+
+#[test]
+#[ignore = "needs Wine, mingw and the cross-built exe: sh scripts/wine_test.sh"]
+fn display_wine_preview_in_a_per_monitor_aware_host_is_per_monitor_aware() {
+    preview("wine-preview-pm", "per-monitor", PER_MONITOR);
+}
+
+/// DPI_AWARENESS values, as tests/wine/preview_host.c prints them.
+const UNAWARE: i32 = 0;
+const PER_MONITOR: i32 = 2;
+
+/// Runs the preview host (`awareness`: its DPI argument) and
+/// checks the saver's child in it, which must share the host's `expected`
+/// DPI awareness: a child of another awareness is what Windows' DPI
+/// hosting rules forbid or scale oddly.
+fn preview(name: &str, awareness: &str, expected: i32) {
     let Some(session) = Session::begin() else {
         return;
     };
@@ -184,19 +203,33 @@ fn display_wine_preview_runs_in_the_host_window_and_ends_with_it() {
     };
     let saver_path = session.wine.windows_path("mountains.exe");
     let seconds = HOST_SECONDS.to_string();
-    let args = [saver_path.as_str(), seconds.as_str()];
-    let mut host = start(&session, &x, "wine-preview", "preview_host.exe", &args);
+    let args = [saver_path.as_str(), seconds.as_str(), awareness];
+    let mut host = start(&session, &x, name, "preview_host.exe", &args);
     let took = poll(&mut host, "the preview-host window", || {
         x.mapped_windows()
             .into_iter()
             .any(|(w, g)| (g.2, g.3) == HOST_SIZE && x.title(w) == "preview-host")
     });
     eprintln!("preview: host window {took:?} after Wine started the host");
-    expect_host_end(&mut host);
+    let (out, err) = expect_host_end(&mut host);
+    // Wine 8 gives a child its parent's awareness whatever the saver asks
+    // (checked with the saver before it matched the parent's), so this
+    // holds on Wine either way; on Windows it need not.
+    let line = format!("dpi_awareness host={expected} child={expected}\n");
+    assert!(
+        out.contains(&line),
+        "the preview's DPI awareness is not its host's ({expected}):\n{out}"
+    );
+    // What the saver itself did: took the parent's awareness, and said so.
+    assert!(
+        err.contains("preview DPI awareness as the parent's: true"),
+        "the saver did not take its parent's DPI awareness:\n{err}"
+    );
 }
 
-/// Waits for the host to destroy its window and report on the saver.
-fn expect_host_end(host: &mut Saver) {
+/// Waits for the host to destroy its window and report on the saver;
+/// returns what the host and the saver printed.
+fn expect_host_end(host: &mut Saver) -> (String, String) {
     // The host waits up to 10 s each for the child, its size, the resize
     // and the end.
     let limit = Duration::from_secs(HOST_SECONDS) + PATIENCE * 5;
@@ -238,4 +271,5 @@ fn expect_host_end(host: &mut Saver) {
         why.iter().any(|w| err.contains(w)),
         "the saver said:\n{err}"
     );
+    (out, err)
 }

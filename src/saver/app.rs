@@ -58,7 +58,13 @@ enum UserEvent {
 pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Result<(), SaverError> {
     #[cfg(unix)]
     super::libcheck::check_x11()?;
-    let event_loop = EventLoop::<UserEvent>::with_user_event()
+    #[cfg_attr(not(windows), allow(unused_mut))]
+    let mut builder = EventLoop::<UserEvent>::with_user_event();
+    #[cfg(windows)]
+    if let AppMode::Child(_) = mode {
+        super::embed_win32::leave_dpi_to_the_parent(&mut builder);
+    }
+    let event_loop = builder
         .build()
         .map_err(|e| SaverError::no_display(&e.to_string()))?;
     // Without a window manager our windows never get keyboard focus, so the
@@ -311,6 +317,9 @@ impl App {
             }
             #[cfg(windows)]
             AppMode::Child(parent) => {
+                let matched = super::embed_win32::match_parent_dpi(parent);
+                self.trace
+                    .note(&format!("preview DPI awareness as the parent's: {matched}"));
                 let attrs = super::embed_win32::child_attributes(base, parent)?;
                 self.add_screen(event_loop, attrs, true, None)
             }

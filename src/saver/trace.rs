@@ -39,6 +39,14 @@ impl Trace {
         }
     }
 
+    /// Reports a fact worth knowing when a platform misbehaves.
+    #[cfg_attr(not(windows), allow(dead_code))]
+    pub fn note(&self, fact: &str) {
+        if self.on {
+            eprintln!("mountains: trace: {fact}");
+        }
+    }
+
     /// Call after each present; the first one prints the time since start.
     pub fn presented(&mut self) {
         if let Some(start) = self.start.take() {

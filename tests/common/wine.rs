@@ -97,12 +97,10 @@ impl Drop for Session {
     }
 }
 
-fn set_up() -> Option<Wine> {
-    let target = target_dir();
-    let exe = target.join("x86_64-pc-windows-gnu/release/mountains.exe");
-    let loader = find(&LOADERS, "Wine (apt-get install wine64)")?;
-    let server = find(&SERVERS, "wineserver (apt-get install wine64)")?;
-    find(&[MINGW], "mingw (apt-get install gcc-mingw-w64-x86-64)")?;
+/// The cross-built mountains.exe, if it is there and at least as new as its
+/// sources. `None` (the test skips) otherwise, unless `MOUNTAINS_REQUIRE_WINE=1`.
+pub fn cross_built_exe() -> Option<PathBuf> {
+    let exe = target_dir().join("x86_64-pc-windows-gnu/release/mountains.exe");
     if !exe.exists() {
         return skip(&format!(
             "{} is missing: run `{CROSS_BUILD}`",
@@ -116,6 +114,15 @@ fn set_up() -> Option<Wine> {
             newer.display()
         ));
     }
+    Some(exe)
+}
+
+fn set_up() -> Option<Wine> {
+    let target = target_dir();
+    let loader = find(&LOADERS, "Wine (apt-get install wine64)")?;
+    let server = find(&SERVERS, "wineserver (apt-get install wine64)")?;
+    find(&[MINGW], "mingw (apt-get install gcc-mingw-w64-x86-64)")?;
+    let exe = cross_built_exe()?;
     let wine = Wine {
         loader,
         server,
@@ -158,11 +165,12 @@ fn skip<T>(why: &str) -> Option<T> {
 }
 
 /// A source file newer than the exe, if any: everything that goes into it
-/// (src/, config/ through include_str!, Cargo.toml, Cargo.lock).
+/// (src/, config/ through include_str!, Cargo.toml, Cargo.lock, and the
+/// resources build.rs makes from assets/).
 fn newer_source(exe: &Path) -> Option<PathBuf> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut newest = (SystemTime::UNIX_EPOCH, root.join("Cargo.toml"));
-    for file in ["Cargo.toml", "Cargo.lock"] {
+    for file in ["Cargo.toml", "Cargo.lock", "build.rs"] {
         let path = root.join(file);
         if modified(&path) > newest.0 {
             newest = (modified(&path), path);
@@ -170,6 +178,7 @@ fn newer_source(exe: &Path) -> Option<PathBuf> {
     }
     newest_under(&root.join("src"), &mut newest);
     newest_under(&root.join("config"), &mut newest);
+    newest_under(&root.join("assets"), &mut newest);
     (modified(exe) < newest.0).then_some(newest.1)
 }
 

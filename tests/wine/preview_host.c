@@ -2,8 +2,12 @@
  * A test stand-in for the Control Panel's Screen Saver dialog, run under
  * Wine by tests/saver_wine.rs.
  *
- *   preview_host.exe SAVER.EXE SECONDS
+ *   preview_host.exe SAVER.EXE SECONDS unaware|per-monitor
  *
+ * The host's window is DPI-unaware, as an old dialog is, or per-monitor
+ * aware (v2, else v1: Wine 8 has no v2), as a modern Settings app is. Set
+ * for the thread that makes the window: Wine 8 has already made the process
+ * per-monitor aware, and a process's awareness is set only once.
  * Makes a top-level window titled "preview-host" with a 152x112 black
  * client area (the dialog's little monitor), starts `SAVER.EXE /p <HWND>`
  * with that window's handle in decimal, as Windows does, pumps messages
@@ -13,6 +17,8 @@
  * for the saver to end. Prints on stdout, one fact a line:
  *   hwnd=<decimal>
  *   child_after_ms=<ms from the start>   (or: no_child)
+ *   dpi_awareness host=<n> child=<n>     (DPI_AWARENESS of each window:
+ *                                         0 unaware, 1 system, 2 per monitor)
  *   child_size=<w>x<h> after_ms=<ms>     (the child's client area, once it
  *                                         fills the host, or after 10 s)
  *   resized_child=<w>x<h> after_ms=<ms since the resize>
@@ -23,9 +29,13 @@
  * after it; then it is terminated).
  * Exits 0 if the saver ended after the destroy, 1 if not, 2 on a setup error.
  */
+/* Windows 10 1607: the DPI awareness context functions. */
+#define WINVER 0x0A00
+#define _WIN32_WINNT 0x0A00
 #include <windows.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define CLIENT_W 152
 #define CLIENT_H 112
@@ -87,6 +97,11 @@ static BOOL pump(DWORD ms, HWND w) {
     return w && GetWindow(w, GW_CHILD);
 }
 
+/* The DPI awareness of a window (of any process); -1 if unknown. */
+static int awareness(HWND w) {
+    return (int)GetAwarenessFromDpiAwarenessContext(GetWindowDpiAwarenessContext(w));
+}
+
 /* The client size of `w`'s first child; FALSE if it has none. */
 static BOOL child_size(HWND w, LONG *cw, LONG *ch) {
     HWND c = GetWindow(w, GW_CHILD);
@@ -112,8 +127,18 @@ static void wait_child_size(HWND w, LONG tw, LONG th, const char *label) {
 }
 
 int main(int argc, char **argv) {
-    if (argc != 3) {
-        fprintf(stderr, "usage: preview_host SAVER.EXE SECONDS\n");
+    BOOL unaware = argc == 4 && strcmp(argv[3], "unaware") == 0;
+    BOOL per_monitor = argc == 4 && strcmp(argv[3], "per-monitor") == 0;
+    if (!unaware && !per_monitor) {
+        fprintf(stderr, "usage: preview_host SAVER.EXE SECONDS unaware|per-monitor\n");
+        return 2;
+    }
+    BOOL set = unaware ? SetThreadDpiAwarenessContext(DPI_AWARENESS_CONTEXT_UNAWARE) != NULL
+                       : SetThreadDpiAwarenessContext(DPI_AWARENESS_CONTEXT_PER_MONITOR_AWARE_V2) ||
+                             SetThreadDpiAwarenessContext(DPI_AWARENESS_CONTEXT_PER_MONITOR_AWARE);
+    if (!set) {
+        fprintf(stderr, "preview_host: cannot set DPI awareness %s (error %lu)\n", argv[3],
+                GetLastError());
         return 2;
     }
     HWND w = make_window();
@@ -129,10 +154,12 @@ int main(int argc, char **argv) {
         return 2;
     }
     ULONGLONG started = GetTickCount64();
-    if (pump(CHILD_WAIT_MS, w))
+    if (pump(CHILD_WAIT_MS, w)) {
         printf("child_after_ms=%llu\n", GetTickCount64() - started);
-    else
+        printf("dpi_awareness host=%d child=%d\n", awareness(w), awareness(GetWindow(w, GW_CHILD)));
+    } else {
         printf("no_child\n");
+    }
     wait_child_size(w, CLIENT_W, CLIENT_H, "child_size");
     DWORD half = (DWORD)(atof(argv[2]) * 500);
     pump(half, NULL);
