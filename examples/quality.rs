@@ -3,12 +3,15 @@
 //! coast, visible facet edges, pixels far off.
 //!
 //! cargo run --release --example quality -- --size 1920x1080 \
-//!     --seeds 1,2,3,5,8,13,21,42 [--set key=value ...] [--k 4]
+//!     --seeds 1,2,3,5,8,13,21,42 [--set key=value ...] [--k 4] [--dump DIR]
+//!
+//! `--dump DIR` writes each seed's frame, reference and difference (eight
+//! times enlarged) there as PNGs.
 //!
 //! The reference (LOOKS.md, "At 1:1"): the grid is fixed to what
-//! `detail = "auto"` picks at the base size and the sun is pinned to
-//! `evening` (the varied sun depends on the grid), unless `--set` says
-//! otherwise. The vista puts its near edge a fixed number of pixels below the
+//! `detail = "auto"` picks at the base size, unless `--set` says otherwise;
+//! everything else is the seed's own scene (its light and sea are the same
+//! at every size). The vista puts its near edge a fixed number of pixels below the
 //! bottom at every size, so the reference is drawn kW x Hk and its rows from
 //! `crop` on are used, Hk and crop chosen so that the back and near edges
 //! land where a k-times-finer sampling of the base camera puts them (worked
@@ -26,7 +29,7 @@ use mountains::quality::registration::best_shift;
 use mountains::render::classes::{Class, render_classes};
 use mountains::render::view::View;
 use mountains::render::{Frame, detail, render_full};
-use mountains::settings::{Detail, Settings, Sun, load};
+use mountains::settings::{Detail, Settings, load};
 use mountains::terrain::{self, Heightfield};
 
 /// What the command line asks for.
@@ -36,6 +39,8 @@ struct Args {
     seeds: Vec<u64>,
     k: u32,
     settings: Settings,
+    /// Where to write each seed's frame, reference and difference, if asked.
+    dump: Option<std::path::PathBuf>,
 }
 
 /// One seed's figures.
@@ -198,6 +203,9 @@ fn measure(args: &Args, seed: u64) -> Figures {
             v[0] << 16 | v[1] << 8 | v[2]
         })
         .collect();
+    if let Some(dir) = &args.dump {
+        dump(dir, seed, &frame, &reference);
+    }
     let shift = best_shift(&picture, &big, ku, (0, i64::from(crop)), i64::from(k));
     let figures = Figures {
         psnr: psnr(&picture, &reference),
@@ -220,6 +228,28 @@ fn measure(args: &Args, seed: u64) -> Figures {
     Figures {
         seconds: [t1 - t0, t2 - t1, t3 - t2].map(|d| d.as_secs_f64()),
         ..figures
+    }
+}
+
+/// Writes `frame`, `reference` (rounded) and their difference (eight
+/// times enlarged) as PNGs into `dir`, named by `seed`.
+fn dump(dir: &std::path::Path, seed: u64, frame: &Frame, reference: &Image) {
+    let pack = |c: [f32; 3]| {
+        let v = c.map(|v| (v + 0.5).clamp(0.0, 255.0) as u32);
+        v[0] << 16 | v[1] << 8 | v[2]
+    };
+    let mut refr = Frame::new(frame.width(), frame.height()).expect("room");
+    let mut diff = refr.clone();
+    for (i, (&p, r)) in frame.pixels().iter().zip(&reference.rgb).enumerate() {
+        refr.pixels_mut()[i] = pack(*r);
+        let own = mountains::quality::image::channels(p);
+        diff.pixels_mut()[i] = pack([0, 1, 2].map(|k| (own[k] - r[k]).abs() * 8.0));
+    }
+    for (name, f) in [("frame", frame), ("reference", &refr), ("diff", &diff)] {
+        let path = dir.join(format!("{seed}-{name}.png"));
+        if let Err(e) = mountains::snapshot::write_png(&path, f) {
+            eprintln!("quality: {e}");
+        }
     }
 }
 
@@ -301,8 +331,8 @@ fn boundary(classes: &[Class], w: usize, h: usize) -> Vec<bool> {
 
 fn parse(argv: Vec<String>) -> Result<Args, String> {
     let mut settings = Settings::default();
+    let mut dump = None;
     let (mut size, mut seeds, mut k) = ((1920, 1080), vec![1, 2, 3, 5, 8, 13, 21, 42], 4);
-    let mut sun_set = false;
     let mut it = argv.into_iter();
     while let Some(flag) = it.next() {
         let mut value = || it.next().ok_or(format!("{flag} needs a value"));
@@ -331,19 +361,16 @@ fn parse(argv: Vec<String>) -> Result<Args, String> {
                     .filter(|&n| (1..=8).contains(&n))
                     .ok_or(format!("--k {v}: want 1 to 8"))?;
             }
+            "--dump" => dump = Some(std::path::PathBuf::from(value()?)),
             "--set" => {
                 let v = value()?;
                 let (key, raw) = v
                     .split_once('=')
                     .ok_or(format!("--set {v}: want key=value"))?;
-                sun_set |= key.trim() == "sun";
                 load::apply_set(&mut settings, key.trim(), raw).map_err(|p| p.to_string())?;
             }
             other => return Err(format!("unknown flag {other}")),
         }
-    }
-    if !sun_set {
-        settings.sun = Sun::Evening;
     }
     if settings.detail == Detail::Auto {
         settings.detail = Detail::Level(detail::auto_level(&settings, size.0, size.1));
@@ -354,5 +381,6 @@ fn parse(argv: Vec<String>) -> Result<Args, String> {
         seeds,
         k,
         settings,
+        dump,
     })
 }
