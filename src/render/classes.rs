@@ -6,11 +6,11 @@
 //! `render_full`, so each pixel's class is the surface `render_full`
 //! leaves there.
 
-use super::bands;
 use super::frame::Frame;
-use super::ripples::Ripples;
+use super::order::bands;
 use super::scene::{FieldRef, Scene, Style};
-use super::sky::Sky;
+use super::shade::ripples::Ripples;
+use super::shade::sky::Sky;
 use crate::settings::Settings;
 use crate::terrain::Heightfield;
 

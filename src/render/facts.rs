@@ -6,8 +6,8 @@
 
 use glam::Vec2;
 
-use super::light::Lighting;
 use super::scene::{FieldRef, Scene};
+use super::shade::light::Lighting;
 use crate::settings::Settings;
 use crate::terrain::Heightfield;
 
@@ -20,7 +20,7 @@ pub struct SceneFacts {
     pub sky: (u32, u32),
     /// The sea's wind streaks, if the look has them.
     pub ripples: Option<RippleFacts>,
-    view: super::view::View,
+    view: super::framing::view::View,
     /// Grid steps a side.
     cells: f32,
     width: f32,
@@ -32,7 +32,7 @@ pub struct SceneFacts {
 pub struct RippleFacts {
     /// What the pattern is drawn from.
     pub seed: u64,
-    ripples: super::ripples::Ripples,
+    ripples: super::shade::ripples::Ripples,
     cells: f32,
 }
 

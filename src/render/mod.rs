@@ -1,39 +1,30 @@
 //! Everything a person sees, drawn into a `Frame`. Pure: no windows.
+//!
+//! The folders are the pipeline's stages: `framing/` (camera, view, which
+//! rows), `shade/` (light and colour), `order/` (painting order: strips,
+//! bands), `scan/` (triangles and lines into pixels). The files at the top
+//! tie them together: `scene.rs` (everything fixed for one frame),
+//! `painter.rs` (the slide show's steps), `frame.rs` and `damage.rs` (the
+//! output), `ridges.rs` (Ridges mode, its own look), `facts.rs` and
+//! `classes.rs` (what tests and measurements read).
 
-mod bands;
-mod blend;
-mod camera;
-mod canvas;
 #[doc(hidden)]
 pub mod classes;
-pub mod colour;
 pub mod damage;
-pub mod detail;
-pub mod dither;
-mod edges;
 pub mod facts;
 pub mod frame;
-mod haze;
-pub mod light;
-mod normals;
+mod framing;
+mod order;
 pub mod painter;
-pub mod palette;
-pub mod raster;
-mod reach;
 pub mod ridges;
-mod ripples;
-mod rows;
+mod scan;
 mod scene;
-pub mod shadow;
-mod shore;
-mod sky;
-mod skylight;
-mod skyline;
-mod strip;
-mod tops;
-pub mod view;
-mod vista;
-mod walk;
+mod shade;
+
+// The public paths from before the rooms (`render::palette`, ...) stay.
+pub use framing::{detail, view};
+pub use scan::raster;
+pub use shade::{colour, dither, light, palette, shadow};
 
 pub use damage::Damage;
 pub use frame::{Frame, Rect};

@@ -2,14 +2,14 @@
 
 use std::sync::Arc;
 
-use super::bands;
-use super::canvas::Canvas;
 use super::damage::Damage;
 use super::frame::{Frame, Rect};
+use super::order::bands;
+use super::order::walk::{Rows, draw_strips};
 use super::ridges::Ridges;
+use super::scan::canvas::Canvas;
+use super::scan::skyline;
 use super::scene::{FieldRef, Scene};
-use super::skyline;
-use super::walk::{Rows, draw_strips};
 use crate::settings::{ColorMode, Settings};
 use crate::terrain::Heightfield;
 

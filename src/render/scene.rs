@@ -5,17 +5,17 @@ use std::sync::Arc;
 
 use glam::Vec2;
 
-use super::colour::blend_packed;
-use super::haze::Haze;
-use super::normals::Normals;
-use super::palette::Palette;
-use super::raster::{Fixed2, to_fixed};
-use super::ripples::Ripples;
-use super::shadow::{self, ShadowMap};
-use super::sky::Sky;
-use super::skylight::SkyLight;
-use super::tops::{RowTops, finite};
-use super::view::View;
+use super::framing::tops::{RowTops, finite};
+use super::framing::view::View;
+use super::scan::raster::{Fixed2, to_fixed};
+use super::shade::colour::blend_packed;
+use super::shade::haze::Haze;
+use super::shade::normals::Normals;
+use super::shade::palette::Palette;
+use super::shade::ripples::Ripples;
+use super::shade::shadow::{self, ShadowMap};
+use super::shade::sky::Sky;
+use super::shade::skylight::SkyLight;
 use crate::settings::{ColorMode, Settings, Shading, ViewKind};
 use crate::terrain::Heightfield;
 
@@ -327,7 +327,7 @@ fn framed(
     let view = View::fitted(settings.view, size, field.extent(), tops, width, height);
     // Sonar and Outline draw every line of their (already thinned) grid.
     let rows = if shaded {
-        super::rows::kept_rows(size, &view)
+        super::framing::rows::kept_rows(size, &view)
     } else {
         (0..size).collect()
     };

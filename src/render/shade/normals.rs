@@ -14,7 +14,7 @@
 
 use glam::Vec3;
 
-use super::tops::finite;
+use crate::render::framing::tops::finite;
 use crate::terrain::Heightfield;
 
 /// Grid steps, towards each side, over which each grid row's slope is taken.

@@ -3,13 +3,13 @@
 
 use glam::{Vec2, Vec3};
 
-use super::blend::{Blend, mix_packed};
-use super::canvas::Canvas;
-use super::colour::blend_packed;
-use super::dither;
-use super::raster::{Fixed2, Triangle, centre_box};
-use super::scene::{Scene, Style, Vert};
-use super::shore::{ShoreLine, ShorePoint};
+use crate::render::scan::blend::{Blend, mix_packed};
+use crate::render::scan::canvas::Canvas;
+use crate::render::scan::raster::{Fixed2, Triangle, centre_box};
+use crate::render::scan::shore::{ShoreLine, ShorePoint};
+use crate::render::scene::{Scene, Style, Vert};
+use crate::render::shade::colour::blend_packed;
+use crate::render::shade::dither;
 
 /// White and black, the only two colours of Mono.
 const WHITE: u32 = 0x00ff_ffff;

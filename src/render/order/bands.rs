@@ -9,11 +9,11 @@
 
 use std::sync::Mutex;
 
-use super::canvas::Canvas;
-use super::frame::Frame;
-use super::scene::Scene;
-use super::skyline;
 use super::walk::{Rows, draw_strips};
+use crate::render::frame::Frame;
+use crate::render::scan::canvas::Canvas;
+use crate::render::scan::skyline;
+use crate::render::scene::Scene;
 
 /// Most threads used; more bands would mostly repeat per-strip work.
 const MAX_THREADS: usize = 8;

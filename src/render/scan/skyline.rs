@@ -16,10 +16,10 @@
 //! neighbours), on the full frame and at the painter's last step alike, so
 //! both end with the same pixels.
 
-use super::colour::blend_packed;
-use super::damage::Damage;
-use super::frame::{Frame, Rect};
-use super::sky::Sky;
+use crate::render::damage::Damage;
+use crate::render::frame::{Frame, Rect};
+use crate::render::shade::colour::blend_packed;
+use crate::render::shade::sky::Sky;
 
 /// Places across a pixel's width where the edge's height is read.
 const SAMPLES: usize = 4;

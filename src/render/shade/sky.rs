@@ -2,8 +2,8 @@
 //! the horizon colour where the land begins, ordered-dithered so that a
 //! slow gradient across a large screen shows no bands.
 
-use super::canvas::Canvas;
 use super::colour::{Rgb, unpack};
+use crate::render::scan::canvas::Canvas;
 
 /// 4x4 Bayer thresholds, 0..16.
 const BAYER: [[u8; 4]; 4] = [[0, 8, 2, 10], [12, 4, 14, 6], [3, 11, 1, 9], [15, 7, 13, 5]];

@@ -10,9 +10,11 @@
 
 use glam::Vec2;
 
-use super::canvas::Canvas;
-use super::raster::{Clip, Fixed2, SUBPIXEL, centre_box, draw_line, draw_line_end, fill_triangle};
-use super::scene::{Scene, Vert};
+use crate::render::scan::canvas::Canvas;
+use crate::render::scan::raster::{
+    Clip, Fixed2, SUBPIXEL, centre_box, draw_line, draw_line_end, fill_triangle,
+};
+use crate::render::scene::{Scene, Vert};
 
 /// Which of a cell's edges it draws.
 struct CellEdges {

@@ -4,9 +4,9 @@
 
 use std::ops::Range;
 
-use super::canvas::Canvas;
-use super::scene::{Scene, Style, Vert};
 use super::strip::painter_order;
+use crate::render::scan::canvas::Canvas;
+use crate::render::scene::{Scene, Style, Vert};
 
 /// Two projected grid rows, reused from strip to strip; only the points a
 /// strip's cells need are projected.

@@ -7,8 +7,8 @@
 
 use std::ops::Range;
 
-use super::raster::Clip;
-use super::scene::Scene;
+use crate::render::scan::raster::Clip;
+use crate::render::scene::Scene;
 
 /// Pixels added on each side of a band: fixed-point rounding and the lines
 /// of Sonar and Outline (a pixel either side of their points) stay inside.

@@ -1,0 +1,10 @@
+//! Camera and framing: where the land sits in the frame (the oblique view,
+//! the vista and perspective cameras, `detail = "auto"`), which grid rows are
+//! drawn and how high each row reaches on screen.
+
+pub(super) mod camera;
+pub mod detail;
+pub(super) mod rows;
+pub(super) mod tops;
+pub mod view;
+pub(super) mod vista;
