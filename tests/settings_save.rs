@@ -77,7 +77,7 @@ fn a_value_written_differently_but_equal_is_kept_as_written() {
 
 #[test]
 fn every_key_round_trips_through_the_shipped_file() {
-    use mountains::settings::{Generator, Monitors, Profile, Sun, ViewKind, WaterLine};
+    use mountains::settings::{Generator, Monitors, Profile, Shading, Sun, ViewKind, WaterLine};
     let s = Settings {
         seed: Some(u64::MAX),
         generator: Generator::Triangle,
@@ -96,6 +96,7 @@ fn every_key_round_trips_through_the_shipped_file() {
         relative_depth: false,
         shadows: false,
         sun: Sun::Evening,
+        shading: Shading::Flat,
         view: ViewKind::Perspective,
         rotation: 270,
         auto_redraw: false,

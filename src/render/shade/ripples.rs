@@ -123,7 +123,7 @@ impl Ripples {
         let (fu, fv) = (smooth(u - a as f32), smooth(v - b as f32));
         let at = |da: i32, db: i32| {
             let mask = LATTICE as i32 - 1;
-            let (i, j) = ((a + da) & mask, (b + db) & mask);
+            let (i, j) = (a.wrapping_add(da) & mask, b.wrapping_add(db) & mask);
             self.lattice[(j * LATTICE as i32 + i) as usize]
         };
         let top = at(0, 0) + (at(1, 0) - at(0, 0)) * fu;
