@@ -68,7 +68,8 @@ impl App {
     fn start(x: &Xvfb, config: &Path, home: &Path, scale: u32) -> App {
         let stderr_path = home.join("stderr.txt");
         let stderr = std::fs::File::create(&stderr_path).unwrap();
-        let child = Command::new(env!("CARGO_BIN_EXE_mountains"))
+        let mut command = Command::new(env!("CARGO_BIN_EXE_mountains"));
+        let child = xvfb::signals::as_from_a_terminal(&mut command)
             .arg("--settings")
             .arg("--config")
             .arg(config)
