@@ -26,4 +26,5 @@ pub mod settings;
 pub mod settings_ui;
 pub mod signals;
 pub mod snapshot;
+pub mod spelling;
 pub mod terrain;

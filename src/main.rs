@@ -21,7 +21,11 @@ fn main() -> ExitCode {
     let inv = match cli::parse(&args) {
         Ok(inv) => inv,
         Err(e) => {
-            console::err(&format!("mountains: {e}\n\n{}", help::USAGE));
+            // The message names what was wrong; the usage after it would
+            // push it off a small terminal.
+            console::err(&format!(
+                "mountains: {e}\n`mountains --help` lists every mode, flag and key."
+            ));
             // Arguments Windows sent and we did not understand are invisible
             // without a console: keep them in the log as well.
             if cfg!(windows) {

@@ -128,6 +128,38 @@ fn mistakes_name_the_flag() {
     }
 }
 
+/// A mistyped flag or word is answered with the nearest one, as a
+/// mistyped key is (`--set colour=sonar`): the keys' own flags, the fixed
+/// flags and the subcommands, offered with two dashes however many were
+/// typed; nothing is offered when nothing is near.
+#[test]
+fn a_mistyped_flag_offers_the_nearest() {
+    for (args, offered) in [
+        (
+            &["--colour", "sonar"][..],
+            "`--colour`; did you mean `--color`?",
+        ),
+        (&["-colour", "sonar"][..], "did you mean `--color`?"),
+        (&["--craggines", "40"][..], "did you mean `--cragginess`?"),
+        (
+            &["--draw_second", "3"][..],
+            "did you mean `--draw-seconds`?",
+        ),
+        (&["--no-shadow"][..], "did you mean `--no-shadows`?"),
+        (&["--confg", "m.toml"][..], "did you mean `--config`?"),
+        (&["--check-confg"][..], "did you mean `--check-config`?"),
+        (&["--verison"][..], "did you mean `--version`?"),
+        (&["rendr", "-o", "x.png"][..], "did you mean `render`?"),
+    ] {
+        let e = parse(args).expect_err(&format!("{args:?} should fail"));
+        assert!(e.0.contains(offered), "{args:?}: {e}");
+    }
+    for args in [&["--bogus"][..], &["--zzzzzzzzzz"], &["/x"]] {
+        let e = parse(args).expect_err(&format!("{args:?} should fail"));
+        assert!(!e.0.contains("did you mean"), "{args:?}: {e}");
+    }
+}
+
 #[test]
 fn handles_must_be_nonzero() {
     assert!(cli::parse_handle("0").is_err());

@@ -110,6 +110,24 @@ fn bad_arguments_exit_2_and_name_the_flag() {
     }
 }
 
+/// A mistake on the command line is said in a line that stays on the
+/// screen: the message with the nearest flag, and where to read the rest,
+/// not the whole usage after it.
+#[test]
+fn a_mistyped_flag_is_answered_in_two_lines() {
+    let o = mountains(&["--colour", "sonar"]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    assert_eq!(
+        err.lines().collect::<Vec<_>>(),
+        [
+            "mountains: unknown argument `--colour`; did you mean `--color`?",
+            "`mountains --help` lists every mode, flag and key."
+        ],
+        "{err}"
+    );
+}
+
 #[test]
 fn render_refuses_a_broken_config_and_leaves_it_untouched() {
     let dir = scratch("broken");
