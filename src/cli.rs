@@ -467,6 +467,13 @@ pub fn parse_handle(text: &str) -> Result<u64, UsageError> {
     }
 }
 
+/// The longest side `--size` takes, in pixels. No screen or picture needs
+/// more, and a frame one pixel high and 2^28 wide (inside the frame's
+/// pixel count) took 97 s and 3.5 GB: the work of a frame grows with each
+/// side, not only with its pixels.
+pub const MAX_SIDE: u32 = 32768;
+
+/// `--size WIDTHxHEIGHT`: both sides from 1 to [`MAX_SIDE`].
 fn parse_size(text: &str) -> Result<(u32, u32), UsageError> {
     let bad = || {
         UsageError(format!(
@@ -477,6 +484,11 @@ fn parse_size(text: &str) -> Result<(u32, u32), UsageError> {
     let (w, h): (u32, u32) = (w.parse().map_err(|_| bad())?, h.parse().map_err(|_| bad())?);
     if w == 0 || h == 0 {
         return Err(bad());
+    }
+    if w.max(h) > MAX_SIDE {
+        return Err(UsageError(format!(
+            "--size {text}: too large (each side at most {MAX_SIDE} pixels)"
+        )));
     }
     Ok((w, h))
 }

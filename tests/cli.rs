@@ -160,6 +160,23 @@ fn a_mistyped_flag_offers_the_nearest() {
     }
 }
 
+/// `--size` bounds each side (a frame 2^28 pixels wide and one high took
+/// 97 s and 3.5 GB though its pixel count is allowed), and says so naming
+/// the flag; the bound itself is taken.
+#[test]
+fn size_bounds_each_side() {
+    let side = cli::MAX_SIDE.to_string();
+    for size in [format!("{side}x2"), format!("2x{side}")] {
+        let inv = parse(&["render", "-o", "x.png", "--size", &size]);
+        assert!(inv.is_ok(), "{size}: {:?}", inv.err());
+    }
+    for size in ["268435456x1", "1x268435456", "32769x2", "2x32769"] {
+        let e = parse(&["render", "-o", "x.png", "--size", size]).unwrap_err();
+        let want = format!("--size {size}: too large (each side at most 32768 pixels)");
+        assert!(e.0.contains(&want), "{e}");
+    }
+}
+
 #[test]
 fn handles_must_be_nonzero() {
     assert!(cli::parse_handle("0").is_err());
