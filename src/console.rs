@@ -37,9 +37,30 @@ pub fn outln(line: &str) -> io::Result<()> {
 /// Writes `line` and a newline to stderr; a stderr that cannot take it
 /// loses it.
 pub fn err(line: &str) {
-    let _ = io::stderr()
-        .lock()
-        .write_all(format!("{line}\n").as_bytes());
+    // `eprintln!`, not a write of our own: a test harness captures what it
+    // writes (a test's expected messages stay in its captured output). Its
+    // panic on a failed write is caught, and [`quiet_failed_messages`]
+    // keeps that panic from being reported (on the same broken stderr).
+    QUIET.with(|q| q.set(true));
+    #[allow(clippy::print_stderr)]
+    let _ = std::panic::catch_unwind(|| eprintln!("{line}"));
+    QUIET.with(|q| q.set(false));
+}
+
+std::thread_local! {
+    /// Set while [`err`] writes: a panic then is its failed write.
+    static QUIET: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Installs a panic hook that reports every panic as before, except a
+/// failed write inside [`err`]. Called once at the start of `main`.
+pub fn quiet_failed_messages() {
+    let report = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        if !QUIET.with(std::cell::Cell::get) {
+            report(info);
+        }
+    }));
 }
 
 /// `code`, or 1 with a message when stdout failed other than by a reader

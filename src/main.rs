@@ -16,6 +16,7 @@ use mountains::{console, help, log, saver};
 
 fn main() -> ExitCode {
     saver::mark_start();
+    console::quiet_failed_messages();
     log::use_parent_console();
     let args: Vec<_> = std::env::args_os().skip(1).collect();
     let inv = match cli::parse(&args) {
