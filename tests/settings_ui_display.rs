@@ -223,6 +223,29 @@ fn display_sigterm_and_sighup_close_the_settings_like_cancel() {
     }
 }
 
+/// Another client destroying the settings window (as `xdotool search
+/// --pid`, then XDestroyWindow) ends the screen as Cancel does: exit 0,
+/// the file untouched. It used to run on with no window until SIGTERM,
+/// where `--window` and `/p` end at once.
+#[test]
+fn display_a_destroyed_window_ends_the_settings_like_cancel() {
+    let Some(x) = start_display() else { return };
+    let home = scratch("destroyed");
+    let config = home.join("mountains.toml");
+    std::fs::write(&config, COMMENTED).unwrap();
+    let mut app = App::start(&x, &config, &home, 1);
+    let window = app.window(&x);
+    wait_drawn(x.display(), window);
+    x.conn
+        .destroy_window(window)
+        .expect("send DestroyWindow")
+        .check()
+        .expect("DestroyWindow");
+    let status = app.wait_exit();
+    assert!(status.success(), "{status}: {}", app.stderr());
+    assert_eq!(std::fs::read(&config).unwrap(), COMMENTED.as_bytes());
+}
+
 #[test]
 fn display_escape_leaves_the_file_byte_identical() {
     let Some(x) = start_display() else { return };
