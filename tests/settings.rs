@@ -314,7 +314,9 @@ fn an_unknown_key_costs_only_its_message() {
         (long.as_str(), None),
     ] {
         let (found, allocations) = allocations_of(|| keys::known(typed));
-        let message = found.err().expect("an unknown key");
+        let Err(message) = found else {
+            panic!("{typed:.20} is no key")
+        };
         let hint = offered.map(|k| format!("did you mean `{k}`?"));
         assert_eq!(
             message.contains("did you mean"),
