@@ -333,9 +333,7 @@ impl Parser<'_> {
 
     /// A preference key given as a flag of its own (`-cragginess 40`).
     fn key_flag(&mut self, arg: &str) -> Result<(), UsageError> {
-        let (key, own) = key_flags::lookup(arg).ok_or_else(|| {
-            UsageError(format!("unknown argument `{}`", crate::quote::clipped(arg)))
-        })?;
+        let (key, own) = key_flags::lookup(arg).ok_or_else(|| unknown_argument(arg))?;
         let kv = key_flags::take(arg, key, own, || self.value_str(arg).ok())?;
         self.inv.sets.push(kv);
         Ok(())
@@ -388,9 +386,59 @@ fn long_name(arg: &str) -> String {
     }
 }
 
+/// Our subcommand words.
+const WORDS: [&str; 2] = ["render", "heightmap"];
+
+/// The flags `Parser::option` takes besides the keys' own, without their
+/// dashes (each also works with two): the names a mistyped flag is
+/// compared with.
+const FLAGS: [&str; 20] = [
+    "config",
+    "open",
+    "set",
+    "output",
+    "size",
+    "root",
+    "window",
+    "window-id",
+    "settings",
+    "help",
+    "version",
+    "xscreensaver-xml",
+    "man-page",
+    "fps",
+    "no-fps",
+    "delay",
+    "display",
+    "install",
+    "visual",
+    "check-config",
+];
+
 /// Whether `s` is one of our subcommand words (not a window handle).
 fn is_word(s: &str) -> bool {
-    matches!(s, "render" | "heightmap")
+    WORDS.contains(&s)
+}
+
+/// An argument nothing takes, with the flag or word nearest to it
+/// (`--colour`: `--color`), written with two dashes whatever was typed.
+fn unknown_argument(arg: &str) -> UsageError {
+    let nearest = match arg.strip_prefix('-') {
+        Some(flag) => {
+            let bare = flag.trim_start_matches('-').replace('_', "-");
+            let names = FLAGS
+                .iter()
+                .map(|f| f.to_string())
+                .chain(key_flags::names());
+            crate::spelling::nearest(&bare, names).map(|f| format!("--{f}"))
+        }
+        None => crate::spelling::nearest(arg, WORDS).map(str::to_string),
+    };
+    UsageError(format!(
+        "unknown argument `{}`{}",
+        crate::quote::clipped(arg),
+        crate::spelling::offer(nearest.as_deref())
+    ))
 }
 
 /// An X window id for `flag`: a handle that fits X's 32 bits.
@@ -419,6 +467,13 @@ pub fn parse_handle(text: &str) -> Result<u64, UsageError> {
     }
 }
 
+/// The longest side `--size` takes, in pixels. No screen or picture needs
+/// more, and a frame one pixel high and 2^28 wide (inside the frame's
+/// pixel count) took 97 s and 3.5 GB: the work of a frame grows with each
+/// side, not only with its pixels.
+pub const MAX_SIDE: u32 = 32768;
+
+/// `--size WIDTHxHEIGHT`: both sides from 1 to [`MAX_SIDE`].
 fn parse_size(text: &str) -> Result<(u32, u32), UsageError> {
     let bad = || {
         UsageError(format!(
@@ -430,5 +485,29 @@ fn parse_size(text: &str) -> Result<(u32, u32), UsageError> {
     if w == 0 || h == 0 {
         return Err(bad());
     }
+    if w.max(h) > MAX_SIDE {
+        return Err(UsageError(format!(
+            "--size {text}: too large (each side at most {MAX_SIDE} pixels)"
+        )));
+    }
     Ok((w, h))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The names a mistyped flag is compared with are ones `parse` takes.
+    #[test]
+    fn every_name_offered_is_taken() {
+        let flags = FLAGS.iter().map(|f| format!("--{f}"));
+        for arg in flags.chain(WORDS.iter().map(|w| w.to_string())) {
+            let args = [OsString::from(&arg), OsString::from("1")];
+            // A flag that takes no value leaves the `1` unknown.
+            if let Err(e) = parse(&args) {
+                let unknown = format!("unknown argument `{arg}`");
+                assert!(!e.0.contains(&unknown), "{e}");
+            }
+        }
+    }
 }

@@ -4,6 +4,7 @@ use std::path::Path;
 use std::process::ExitCode;
 
 use crate::cli::output::{self, Format};
+use crate::console;
 use crate::mountain::Mountain;
 use crate::render::{Frame, render_full};
 use crate::settings::{Settings, load, paths};
@@ -18,7 +19,7 @@ pub fn mountain(settings: &Settings, open: Option<&Path>) -> Result<Mountain, St
     let (mountain, notes) = Mountain::open_or_generate(settings, open)?;
     if let Some(path) = open {
         for note in &notes {
-            eprintln!("mountains: {}: {note}", path.display());
+            console::err(&format!("mountains: {}: {note}", path.display()));
         }
     }
     Ok(mountain)
@@ -35,10 +36,10 @@ pub fn render(
     let Some(mut frame) = Frame::new(width, height) else {
         let pixels = u64::from(width) * u64::from(height);
         if pixels > crate::render::frame::MAX_PIXELS {
-            eprintln!(
+            console::err(&format!(
                 "mountains: --size {width}x{height}: too large (at most {} pixels)",
                 crate::render::frame::MAX_PIXELS
-            );
+            ));
             return ExitCode::from(EXIT_USAGE);
         }
         return fail(&format!(
@@ -63,8 +64,7 @@ pub fn render(
     if let Err(e) = crate::snapshot::write_picture(output, &frame, format) {
         return fail(&e);
     }
-    print_seed(seed, output);
-    ExitCode::SUCCESS
+    console::status(print_seed(seed, output), ExitCode::SUCCESS)
 }
 
 /// The grid exponent a command will work on: a data set's size is known
@@ -101,35 +101,37 @@ pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> Exi
             q.height(0),
             q.height(top)
         );
-        say(output, &range);
+        if let Err(e) = say(output, &range) {
+            return console::status(Err(e), ExitCode::SUCCESS);
+        }
     } else if let Err(e) = heightmap::save(output, &field, seed, settings) {
         return fail(&e.to_string());
     }
-    print_seed(seed, output);
-    ExitCode::SUCCESS
+    console::status(print_seed(seed, output), ExitCode::SUCCESS)
 }
 
 /// Says which seed made the file.
-fn print_seed(seed: Option<u64>, output: &Path) {
+fn print_seed(seed: Option<u64>, output: &Path) -> std::io::Result<()> {
     let line = match seed {
         Some(s) => format!("seed {s} -> {}", output.display()),
         None => format!("-> {}", output.display()),
     };
-    say(output, &line);
+    say(output, &line)
 }
 
 /// A line about `output` for the user: on stdout, or on stderr when the
 /// file itself went to standard output (`-o -`).
-fn say(output: &Path, line: &str) {
+fn say(output: &Path, line: &str) -> std::io::Result<()> {
     if output == Path::new("-") {
-        eprintln!("{line}");
+        console::err(line);
+        Ok(())
     } else {
-        println!("{line}");
+        console::outln(line)
     }
 }
 
 fn fail(message: &str) -> ExitCode {
-    eprintln!("mountains: {message}");
+    console::err(&format!("mountains: {message}"));
     ExitCode::FAILURE
 }
 
@@ -148,6 +150,7 @@ pub fn check_config(
     };
     let mut settings = Settings::default();
     let mut problems = Vec::new();
+    let mut printed = Ok(());
     // A link that leads nowhere (or round in a loop) is there, and reading
     // it says what is wrong with it; only a name with nothing at all is missing.
     let present = std::fs::symlink_metadata(&file).is_ok();
@@ -156,10 +159,10 @@ pub fn check_config(
     } else if named.is_some() {
         return fail(&format!("{}: no such file", file.display()));
     } else {
-        println!(
+        printed = console::outln(&format!(
             "mountains: no preferences file at {}; the defaults are in use",
             file.display()
-        );
+        ));
     }
     for (key, value) in sets {
         if let Err(p) = load::apply_set(&mut settings, key, value) {
@@ -167,16 +170,16 @@ pub fn check_config(
         }
     }
     for line in load::report(&problems) {
-        eprintln!("{line}");
+        console::err(&line);
     }
     if !problems.is_empty() {
         return ExitCode::FAILURE;
     }
     if present {
-        println!("{}: ok", file.display());
+        printed = printed.and_then(|()| console::outln(&format!("{}: ok", file.display())));
     }
     if !sets.is_empty() {
-        println!("--set: ok");
+        printed = printed.and_then(|()| console::outln("--set: ok"));
     }
-    ExitCode::SUCCESS
+    console::status(printed, ExitCode::SUCCESS)
 }

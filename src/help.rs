@@ -31,7 +31,7 @@ pub fn text() -> String {
     t
 }
 
-/// The short usage printed after a command-line mistake.
+/// How each mode is started: the top of `--help`.
 pub const USAGE: &str = "\
 mountains: fractal mountains, drawn strip by strip, as a slide show.
 

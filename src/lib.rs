@@ -4,10 +4,14 @@
 //! preferences, `saver` puts frames on screens. Only `saver` knows about windows.
 
 #![warn(missing_docs)]
+// Printing goes through `console`: `println!` and `eprintln!` panic on a
+// closed pipe.
+#![warn(clippy::print_stdout, clippy::print_stderr)]
 
 pub mod cli;
 pub mod clock;
 pub mod commands;
+pub mod console;
 pub mod contrib;
 pub mod fsutil;
 pub mod help;
@@ -23,4 +27,5 @@ pub mod settings;
 pub mod settings_ui;
 pub mod signals;
 pub mod snapshot;
+pub mod spelling;
 pub mod terrain;

@@ -24,7 +24,7 @@ pub fn file() -> Option<PathBuf> {
 
 /// Reports a problem the program works around (e.g. a broken config key).
 pub fn warn(message: &str) {
-    eprintln!("mountains: {message}");
+    crate::console::err(&format!("mountains: {message}"));
     record(message);
 }
 

@@ -3,22 +3,30 @@
 // A Windows GUI program: a .scr started by Windows (/s, /p, /c) must not open
 // a console window. Command-line use still prints: see `log::use_parent_console`.
 #![cfg_attr(windows, windows_subsystem = "windows")]
+// Printing goes through `console`: `println!` and `eprintln!` panic on a
+// closed pipe.
+#![warn(clippy::print_stdout, clippy::print_stderr)]
 
 use std::process::ExitCode;
 
 use mountains::cli::{self, Mode};
 use mountains::commands::{self, EXIT_USAGE};
 use mountains::settings::{load, paths};
-use mountains::{help, log, saver};
+use mountains::{console, help, log, saver};
 
 fn main() -> ExitCode {
     saver::mark_start();
+    console::quiet_failed_messages();
     log::use_parent_console();
     let args: Vec<_> = std::env::args_os().skip(1).collect();
     let inv = match cli::parse(&args) {
         Ok(inv) => inv,
         Err(e) => {
-            eprintln!("mountains: {e}\n\n{}", help::USAGE);
+            // The message names what was wrong; the usage after it would
+            // push it off a small terminal.
+            console::err(&format!(
+                "mountains: {e}\n`mountains --help` lists every mode, flag and key."
+            ));
             // Arguments Windows sent and we did not understand are invisible
             // without a console: keep them in the log as well.
             if cfg!(windows) {
@@ -29,28 +37,22 @@ fn main() -> ExitCode {
         }
     };
     match &inv.mode {
-        Mode::Help => {
-            print!("{}", help::text());
-            return ExitCode::SUCCESS;
-        }
+        Mode::Help => return printed(console::out(&help::text())),
         Mode::XscreensaverXml => {
-            print!("{}", mountains::contrib::xscreensaver::xml());
-            return ExitCode::SUCCESS;
+            return printed(console::out(&mountains::contrib::xscreensaver::xml()));
         }
-        Mode::ManPage => {
-            print!("{}", mountains::contrib::man_page::man_page());
-            return ExitCode::SUCCESS;
-        }
+        Mode::ManPage => return printed(console::out(&mountains::contrib::man_page::man_page())),
         Mode::Version => {
-            println!("mountains {}", env!("CARGO_PKG_VERSION"));
-            return ExitCode::SUCCESS;
+            let version = format!("mountains {}", env!("CARGO_PKG_VERSION"));
+            return printed(console::outln(&version));
         }
         Mode::CheckConfig(path) => {
             return commands::check_config(path.as_deref(), inv.config.as_deref(), &inv.sets);
         }
         Mode::ChangePassword => {
-            println!("mountains: no password needed; Windows handles locking.");
-            return ExitCode::SUCCESS;
+            return printed(console::outln(
+                "mountains: no password needed; Windows handles locking.",
+            ));
         }
         _ => {}
     }
@@ -63,14 +65,14 @@ fn main() -> ExitCode {
     if matches!(inv.mode, Mode::Render { .. } | Mode::Heightmap { .. }) {
         mountains::memory::one_pool();
         if let Err(e) = mountains::signals::end_cleanly() {
-            eprintln!("warning: cannot watch for SIGTERM: {e}");
+            console::err(&format!("warning: cannot watch for SIGTERM: {e}"));
         }
     }
     let settings_screen = matches!(inv.mode, Mode::Settings { .. });
     let loaded = match load::resolve(inv.config.as_deref(), &inv.sets, settings_screen) {
         Ok(l) => l,
         Err(p) => {
-            eprintln!("mountains: {p}");
+            console::err(&format!("mountains: {p}"));
             return ExitCode::from(EXIT_USAGE);
         }
     };
@@ -92,6 +94,11 @@ fn main() -> ExitCode {
     }
 }
 
+/// Success once the text is out (or its reader has left: see `console`).
+fn printed(result: std::io::Result<()>) -> ExitCode {
+    console::status(result, ExitCode::SUCCESS)
+}
+
 /// One-shot commands stop on a broken value in the preferences file:
 /// nothing is lost by saying so, and a picture made from half a file would
 /// surprise. A key this version does not know is only warned about (the
@@ -103,13 +110,13 @@ fn refuse_problems(loaded: &load::Loaded) -> Option<ExitCode> {
         .cloned()
         .partition(|p| p.is_unknown_key());
     for line in load::report(&unknown) {
-        eprintln!("warning: {line}; ignored");
+        console::err(&format!("warning: {line}; ignored"));
     }
     if broken.is_empty() {
         return None;
     }
     for line in load::report(&broken) {
-        eprintln!("{line}");
+        console::err(&line);
     }
     Some(ExitCode::from(EXIT_USAGE))
 }

@@ -44,7 +44,10 @@ fn watch(on_signal: impl Fn(i32) + Send + 'static) -> std::io::Result<()> {
 }
 
 /// Whether `signal` was set to be ignored when we were started (`nohup`
-/// does that for SIGHUP): such a signal is left alone.
+/// does that for SIGHUP, a POSIX shell for SIGINT in a background job, so
+/// that Ctrl+C at the terminal leaves the job running): such a signal is
+/// left alone, as the parent asked. SIGTERM, how xscreensaver and `kill`
+/// end a program, is not ignored that way.
 #[cfg(target_os = "linux")]
 fn inherited_ignore(signal: i32) -> bool {
     // SAFETY: with a null new action, sigaction only reads the current one

@@ -128,6 +128,55 @@ fn mistakes_name_the_flag() {
     }
 }
 
+/// A mistyped flag or word is answered with the nearest one, as a
+/// mistyped key is (`--set colour=sonar`): the keys' own flags, the fixed
+/// flags and the subcommands, offered with two dashes however many were
+/// typed; nothing is offered when nothing is near.
+#[test]
+fn a_mistyped_flag_offers_the_nearest() {
+    for (args, offered) in [
+        (
+            &["--colour", "sonar"][..],
+            "`--colour`; did you mean `--color`?",
+        ),
+        (&["-colour", "sonar"][..], "did you mean `--color`?"),
+        (&["--craggines", "40"][..], "did you mean `--cragginess`?"),
+        (
+            &["--draw_second", "3"][..],
+            "did you mean `--draw-seconds`?",
+        ),
+        (&["--no-shadow"][..], "did you mean `--no-shadows`?"),
+        (&["--confg", "m.toml"][..], "did you mean `--config`?"),
+        (&["--check-confg"][..], "did you mean `--check-config`?"),
+        (&["--verison"][..], "did you mean `--version`?"),
+        (&["rendr", "-o", "x.png"][..], "did you mean `render`?"),
+    ] {
+        let e = parse(args).expect_err(&format!("{args:?} should fail"));
+        assert!(e.0.contains(offered), "{args:?}: {e}");
+    }
+    for args in [&["--bogus"][..], &["--zzzzzzzzzz"], &["/x"]] {
+        let e = parse(args).expect_err(&format!("{args:?} should fail"));
+        assert!(!e.0.contains("did you mean"), "{args:?}: {e}");
+    }
+}
+
+/// `--size` bounds each side (a frame 2^28 pixels wide and one high took
+/// 97 s and 3.5 GB though its pixel count is allowed), and says so naming
+/// the flag; the bound itself is taken.
+#[test]
+fn size_bounds_each_side() {
+    let side = cli::MAX_SIDE.to_string();
+    for size in [format!("{side}x2"), format!("2x{side}")] {
+        let inv = parse(&["render", "-o", "x.png", "--size", &size]);
+        assert!(inv.is_ok(), "{size}: {:?}", inv.err());
+    }
+    for size in ["268435456x1", "1x268435456", "32769x2", "2x32769"] {
+        let e = parse(&["render", "-o", "x.png", "--size", size]).unwrap_err();
+        let want = format!("--size {size}: too large (each side at most 32768 pixels)");
+        assert!(e.0.contains(&want), "{e}");
+    }
+}
+
 #[test]
 fn handles_must_be_nonzero() {
     assert!(cli::parse_handle("0").is_err());

@@ -110,6 +110,24 @@ fn bad_arguments_exit_2_and_name_the_flag() {
     }
 }
 
+/// A mistake on the command line is said in a line that stays on the
+/// screen: the message with the nearest flag, and where to read the rest,
+/// not the whole usage after it.
+#[test]
+fn a_mistyped_flag_is_answered_in_two_lines() {
+    let o = mountains(&["--colour", "sonar"]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    assert_eq!(
+        err.lines().collect::<Vec<_>>(),
+        [
+            "mountains: unknown argument `--colour`; did you mean `--color`?",
+            "`mountains --help` lists every mode, flag and key."
+        ],
+        "{err}"
+    );
+}
+
 #[test]
 fn render_refuses_a_broken_config_and_leaves_it_untouched() {
     let dir = scratch("broken");
@@ -373,4 +391,114 @@ fn the_output_extension_chooses_the_format() {
         assert!(err.contains(allowed), "{err}");
         assert!(!bad.exists());
     }
+}
+
+/// Which standard stream [`unread`] leaves with no reader.
+#[derive(Clone, Copy, Debug)]
+enum Stream {
+    Stdout,
+    Stderr,
+}
+
+/// Runs the binary with `stream` a pipe whose read end is closed before the
+/// program starts (as `mountains --help | true` ends up when `true` is
+/// quick): every write to it fails with EPIPE. The other stream is kept.
+/// There is no display, so a window mode ends at once with its messages.
+fn unread(args: &[&str], stream: Stream) -> Output {
+    let (reader, writer) = std::io::pipe().expect("a pipe");
+    drop(reader);
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_mountains"));
+    cmd.args(args)
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .env("HOME", scratch("home"))
+        .env("XDG_CONFIG_HOME", scratch("home").join("config"))
+        .env("XDG_DATA_HOME", scratch("home").join("data"));
+    match stream {
+        Stream::Stdout => cmd.stdout(writer),
+        Stream::Stderr => cmd.stderr(writer),
+    };
+    cmd.output().expect("run mountains")
+}
+
+/// A closed stdout is a reader that left (`| head -1`, `| true`): every
+/// printing command drops what it had to say there, without a panic (exit
+/// 101) or a word on stderr, and ends with the status it would have had: a
+/// file written is still a success, a check's verdict still its verdict.
+/// The product itself not delivered (`-o -`) stays a failure.
+#[test]
+fn a_closed_stdout_loses_only_the_printed_lines() {
+    let dir = scratch("closed-stdout");
+    let (png, data, raw) = (dir.join("m.png"), dir.join("h.png"), dir.join("h.r16"));
+    let good = dir.join("good.toml");
+    std::fs::write(&good, "color = \"sonar\"\n").unwrap();
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, "color = \"pink\"\n").unwrap();
+    let render = ["render", "--size", "32x24", "--set", "detail=4", "-o"];
+    let heightmap = ["heightmap", "--set", "detail=4", "-o"];
+    let cases: Vec<(Vec<&str>, i32)> = vec![
+        (vec!["--help"], 0),
+        (vec!["--version"], 0),
+        (vec!["--xscreensaver-xml"], 0),
+        (vec!["--man-page"], 0),
+        (vec!["/a"], 0),
+        ([&render[..], &[png.to_str().unwrap()]].concat(), 0),
+        ([&heightmap[..], &[data.to_str().unwrap()]].concat(), 0),
+        ([&heightmap[..], &[raw.to_str().unwrap()]].concat(), 0),
+        (vec!["--check-config"], 0),
+        (vec!["--check-config", good.to_str().unwrap()], 0),
+        (vec!["--check-config", "--set", "seed=4"], 0),
+        (vec!["--check-config", bad.to_str().unwrap()], 1),
+        ([&render[..], &["-"]].concat(), 1),
+    ];
+    for (args, code) in cases {
+        let o = unread(&args, Stream::Stdout);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(code), "{args:?}: {err}");
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+        if code == 0 {
+            assert!(err.is_empty(), "{args:?} said: {err}");
+        }
+    }
+    for file in [&png, &data, &raw] {
+        assert!(file.exists(), "{} was not written", file.display());
+    }
+    let o = unread(&[&render[..], &["-"]].concat(), Stream::Stdout);
+    assert!(stderr(&o).contains("-o -: cannot write"), "{}", stderr(&o));
+}
+
+/// A closed stderr (`2>&1 | head -1`) does not turn a message into a panic:
+/// a usage error is still exit 2, a warning still lets the work finish, and
+/// a window mode (here `--root` with no display, warned about a bad value
+/// first) still ends by its own failure, exit 1.
+#[test]
+fn a_closed_stderr_keeps_the_exit_status() {
+    let dir = scratch("closed-stderr");
+    let config = dir.join("m.toml");
+    std::fs::write(&config, "no_such_key = 1\n").unwrap();
+    let out = dir.join("m.png");
+    let warned = [
+        "render",
+        "--size",
+        "32x24",
+        "--set",
+        "detail=4",
+        "--config",
+        config.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ];
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, "color = \"pink\"\n").unwrap();
+    for (args, code) in [
+        (&["/x"][..], 2),
+        (&["render", "-o", "x.png", "--set", "colour=red"][..], 2),
+        (&warned[..], 0),
+        (&["--check-config", bad.to_str().unwrap()][..], 1),
+        (&["--root", "--config", bad.to_str().unwrap()][..], 1),
+    ] {
+        let o = unread(args, Stream::Stderr);
+        assert_eq!(o.status.code(), Some(code), "{args:?}");
+    }
+    assert!(out.exists());
 }

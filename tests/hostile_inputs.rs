@@ -3,6 +3,9 @@
 //! run has a generous time bound (a hang is the defect, not slowness).
 #![cfg(unix)]
 
+#[path = "common/signals.rs"]
+mod signals;
+
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
@@ -278,34 +281,51 @@ fn messages_name_what_was_typed() {
     );
 }
 
+/// Starts `render` of a large picture into `dir` with the signals set up
+/// by `setup`, and waits until it is writing its temporary file.
+fn render_until_writing(
+    dir: &Path,
+    setup: impl FnOnce(&mut Command) -> &mut Command,
+) -> std::process::Child {
+    let out = dir.join("out.png");
+    let mut command = Command::new(env!("CARGO_BIN_EXE_mountains"));
+    command
+        .args(["render", "--size", "8000x8000", "-o", out.to_str().unwrap()])
+        .env("HOME", dir)
+        .stdout(Stdio::null())
+        .stderr(Stdio::null());
+    let mut child = setup(&mut command).spawn().expect("run mountains");
+    let tmp = dir.join(format!(".out.png.{}.tmp", child.id()));
+    let start = Instant::now();
+    while !tmp.exists() {
+        assert!(start.elapsed() < BOUND, "no temporary file appeared");
+        assert!(child.try_wait().unwrap().is_none(), "ended before writing");
+        std::thread::sleep(Duration::from_millis(1));
+    }
+    child
+}
+
+/// Sends SIG`name` to `child` with kill(1).
+fn kill(child: &std::process::Child, name: &str) {
+    let sent = Command::new("kill")
+        .args([format!("-{name}"), child.id().to_string()])
+        .status()
+        .expect("kill");
+    assert!(sent.success());
+}
+
 /// SIGTERM, SIGINT or SIGHUP while `render` writes its file: the half-made
 /// temporary file is removed, no output appears, and the command ends by
 /// the signal (a script must not take it for a success). It used to leave
-/// `.NAME.PID.tmp` beside the output.
+/// `.NAME.PID.tmp` beside the output. The child starts with each signal at
+/// its default action, as from a terminal, however the test was started.
 #[test]
 fn a_signal_during_the_write_leaves_no_file() {
     use std::os::unix::process::ExitStatusExt;
-    for (signal, number) in [("TERM", 15), ("INT", 2), ("HUP", 1)] {
+    for (signal, number) in signals::ENDING {
         let dir = scratch(&format!("signal-{signal}"));
-        let out = dir.join("out.png");
-        let mut child = Command::new(env!("CARGO_BIN_EXE_mountains"))
-            .args(["render", "--size", "8000x8000", "-o", out.to_str().unwrap()])
-            .env("HOME", &dir)
-            .stderr(Stdio::null())
-            .spawn()
-            .expect("run mountains");
-        let tmp = dir.join(format!(".out.png.{}.tmp", child.id()));
-        let start = Instant::now();
-        while !tmp.exists() {
-            assert!(start.elapsed() < BOUND, "no temporary file appeared");
-            assert!(child.try_wait().unwrap().is_none(), "ended before writing");
-            std::thread::sleep(Duration::from_millis(1));
-        }
-        let sent = Command::new("kill")
-            .args([format!("-{signal}"), child.id().to_string()])
-            .status()
-            .expect("kill");
-        assert!(sent.success());
+        let mut child = render_until_writing(&dir, signals::as_from_a_terminal);
+        kill(&child, signal);
         let status = child.wait().unwrap();
         assert_eq!(status.signal(), Some(number), "SIG{signal}: {status}");
         let left: Vec<_> = std::fs::read_dir(&dir)
@@ -313,5 +333,22 @@ fn a_signal_during_the_write_leaves_no_file() {
             .map(|e| e.unwrap().file_name())
             .collect();
         assert!(left.is_empty(), "SIG{signal} left {left:?}");
+    }
+}
+
+/// A signal ignored when `render` was started stays ignored: a shell starts
+/// a background job with SIGINT ignored so that Ctrl+C at the terminal
+/// does not end it, and `nohup` ignores SIGHUP; the picture is still made.
+/// SIGTERM (what xscreensaver and `kill` send) is never ignored that way.
+#[cfg(target_os = "linux")]
+#[test]
+fn a_signal_ignored_when_started_stays_ignored() {
+    for (signal, number) in [("INT", 2), ("HUP", 1)] {
+        let dir = scratch(&format!("ignored-{signal}"));
+        let mut child = render_until_writing(&dir, |c| signals::ignoring(c, number));
+        kill(&child, signal);
+        let status = child.wait().unwrap();
+        assert!(status.success(), "SIG{signal} ignored: {status}");
+        assert!(dir.join("out.png").exists(), "SIG{signal}: no picture");
     }
 }

@@ -372,7 +372,8 @@ fn headless_render(w: u16, h: u16) -> Vec<u32> {
     let dir = TempDir::new(&format!("render-{w}x{h}"));
     let png = dir.0.join("render.png");
     let size = format!("{w}x{h}");
-    let status = std::process::Command::new(env!("CARGO_BIN_EXE_mountains"))
+    // Its output is captured: the seed line it prints is the test's own.
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_mountains"))
         .args([
             "render",
             "-o",
@@ -383,9 +384,15 @@ fn headless_render(w: u16, h: u16) -> Vec<u32> {
             "seed=5",
         ])
         .env("XDG_CONFIG_HOME", dir.0.join("config"))
-        .status()
+        .output()
         .unwrap();
-    assert!(status.success());
+    let said = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(said.starts_with("seed 5 -> "), "{said}");
     read_rgb_png(&png)
 }
 

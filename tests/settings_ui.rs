@@ -704,10 +704,13 @@ fn the_editor_command_takes_arguments_and_any_path() {
     let args = std::fs::read_to_string(&said).unwrap();
     assert_eq!(args, format!("--wait\n-n\n{}\n", prefs.display()));
 
+    // The shell's "not found" is captured: expected, and the test's own.
     let missing = editor::command(Some("no-such-editor-4711 --wait"), &prefs)
-        .status()
+        .output()
         .unwrap();
-    assert_eq!(missing.code(), Some(127));
+    assert_eq!(missing.status.code(), Some(127));
+    let said = String::from_utf8_lossy(&missing.stderr);
+    assert!(said.contains("no-such-editor-4711"), "{said}");
     assert_eq!(editor::command(None, &prefs).get_program(), "xdg-open");
     assert_eq!(
         editor::command(Some("  "), &prefs).get_program(),

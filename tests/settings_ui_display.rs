@@ -68,7 +68,8 @@ impl App {
     fn start(x: &Xvfb, config: &Path, home: &Path, scale: u32) -> App {
         let stderr_path = home.join("stderr.txt");
         let stderr = std::fs::File::create(&stderr_path).unwrap();
-        let child = Command::new(env!("CARGO_BIN_EXE_mountains"))
+        let mut command = Command::new(env!("CARGO_BIN_EXE_mountains"));
+        let child = xvfb::signals::as_from_a_terminal(&mut command)
             .arg("--settings")
             .arg("--config")
             .arg(config)
@@ -220,6 +221,29 @@ fn display_sigterm_and_sighup_close_the_settings_like_cancel() {
         assert!(status.success(), "SIG{signal}: {status}: {}", app.stderr());
         assert_eq!(std::fs::read(&config).unwrap(), COMMENTED.as_bytes());
     }
+}
+
+/// Another client destroying the settings window (as `xdotool search
+/// --pid`, then XDestroyWindow) ends the screen as Cancel does: exit 0,
+/// the file untouched. It used to run on with no window until SIGTERM,
+/// where `--window` and `/p` end at once.
+#[test]
+fn display_a_destroyed_window_ends_the_settings_like_cancel() {
+    let Some(x) = start_display() else { return };
+    let home = scratch("destroyed");
+    let config = home.join("mountains.toml");
+    std::fs::write(&config, COMMENTED).unwrap();
+    let mut app = App::start(&x, &config, &home, 1);
+    let window = app.window(&x);
+    wait_drawn(x.display(), window);
+    x.conn
+        .destroy_window(window)
+        .expect("send DestroyWindow")
+        .check()
+        .expect("DestroyWindow");
+    let status = app.wait_exit();
+    assert!(status.success(), "{status}: {}", app.stderr());
+    assert_eq!(std::fs::read(&config).unwrap(), COMMENTED.as_bytes());
 }
 
 #[test]

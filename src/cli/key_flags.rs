@@ -12,6 +12,16 @@ pub fn flag_name(key: &Key) -> String {
     key.name.replace('_', "-")
 }
 
+/// Every key's flag without its dashes, and `no-NAME` for a boolean's: what
+/// a mistyped flag is compared with.
+pub(super) fn names() -> impl Iterator<Item = String> {
+    keys::KEYS.iter().flat_map(|key| {
+        let name = flag_name(key);
+        let negated = (key.kind == Kind::Bool).then(|| format!("no-{name}"));
+        std::iter::once(name).chain(negated)
+    })
+}
+
 /// What an argument names, if it is a key's flag: the key, and for a
 /// boolean the value the flag itself says (`-shadows` true, `-no-shadows` false).
 pub(super) fn lookup(arg: &str) -> Option<(&'static Key, Option<bool>)> {

@@ -112,7 +112,10 @@ pub fn window_title(
 /// Tells the person where a file went, or why it did not.
 pub fn report(result: Option<Result<PathBuf, String>>, what: &str) {
     match result {
-        Some(Ok(path)) => eprintln!("mountains: saved the {what} as {}", path.display()),
+        Some(Ok(path)) => crate::console::err(&format!(
+            "mountains: saved the {what} as {}",
+            path.display()
+        )),
         Some(Err(e)) => crate::log::warn(&format!("could not save the {what}: {e}")),
         None => crate::log::warn(&format!("no {what} to save yet")),
     }

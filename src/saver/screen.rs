@@ -112,7 +112,7 @@ impl Screen {
         let current = self.opened_path.as_deref();
         match actions::open_next_data_set(current, self.show.settings()) {
             Ok((path, mountain)) => {
-                eprintln!("mountains: showing {}", path.display());
+                crate::console::err(&format!("mountains: showing {}", path.display()));
                 self.opened_path = Some(path);
                 self.show.open(mountain, now)
             }

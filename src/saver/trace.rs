@@ -35,7 +35,7 @@ impl Trace {
     /// Reports what ended the saver.
     pub fn ended_by(&self, why: &dyn fmt::Debug) {
         if self.on {
-            eprintln!("mountains: trace: ended by {why:?}");
+            crate::console::err(&format!("mountains: trace: ended by {why:?}"));
         }
     }
 
@@ -51,7 +51,9 @@ impl Trace {
     pub fn presented(&mut self) {
         if let Some(start) = self.start.take() {
             let ms = start.elapsed().as_secs_f64() * 1000.0;
-            eprintln!("mountains: trace: first frame presented after {ms:.1} ms");
+            crate::console::err(&format!(
+                "mountains: trace: first frame presented after {ms:.1} ms"
+            ));
         }
     }
 }

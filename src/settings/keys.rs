@@ -457,34 +457,9 @@ pub fn find(name: &str) -> Option<&'static Key> {
 /// closest known key, if any is close, for a file's line or `--set`.
 pub fn known(name: &str) -> Result<&'static Key, String> {
     find(name).ok_or_else(|| {
-        let hint = suggest(name)
-            .map(|s| format!("; did you mean `{s}`?"))
-            .unwrap_or_default();
+        let hint = crate::spelling::did_you_mean(name, KEYS.iter().map(|k| k.name));
         format!("unknown key{hint} (`mountains --help` lists every key)")
     })
-}
-
-/// The known key closest to a misspelt one, if any is close.
-fn suggest(name: &str) -> Option<&'static str> {
-    KEYS.iter()
-        .map(|k| (edit_distance(name, k.name), k.name))
-        .filter(|(d, k)| *d <= 2.max(k.len() / 3))
-        .min_by_key(|(d, _)| *d)
-        .map(|(_, k)| k)
-}
-
-fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut prev: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut cur = vec![i + 1];
-        for (j, cb) in b.iter().enumerate() {
-            let sub = prev[j] + usize::from(ca != *cb);
-            cur.push(sub.min(prev[j + 1] + 1).min(cur[j] + 1));
-        }
-        prev = cur;
-    }
-    prev[b.len()]
 }
 
 /// Checks `value` against `key` and stores it in `settings`; on refusal,

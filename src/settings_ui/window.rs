@@ -244,7 +244,10 @@ impl ApplicationHandler<Terminate> for App {
 
     fn window_event(&mut self, event_loop: &ActiveEventLoop, _id: WindowId, event: WindowEvent) {
         match event {
-            WindowEvent::CloseRequested => event_loop.exit(),
+            // Destroyed: another client destroyed the window (as the
+            // saver's windows, it then ends rather than run on unseen).
+            // Either way nothing is written, as Cancel.
+            WindowEvent::CloseRequested | WindowEvent::Destroyed => event_loop.exit(),
             WindowEvent::Resized(_) => self.resized(),
             WindowEvent::ScaleFactorChanged { .. } => {
                 if let Some(w) = &self.window {

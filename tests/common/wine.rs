@@ -213,15 +213,21 @@ fn build_bin(wine: &Wine, exe: &Path) {
 }
 
 fn mingw(wine: &Wine, args: &[&str], sources: &[PathBuf], lib: &str) {
-    let status = Command::new(MINGW)
+    // The compiler's words go with the failure, not onto the test's stderr.
+    let out = Command::new(MINGW)
         .current_dir(&wine.bin)
         .args(["-O2", "-Wall"])
         .args(args)
         .args(sources)
         .arg(lib)
-        .status()
+        .output()
         .expect("run mingw");
-    assert!(status.success(), "mingw {args:?} failed: {status}");
+    assert!(
+        out.status.success(),
+        "mingw {args:?} failed: {}: {}",
+        out.status,
+        String::from_utf8_lossy(&out.stderr)
+    );
 }
 
 /// Creates the prefix the first time (some seconds), with no display.

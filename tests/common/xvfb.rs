@@ -10,6 +10,10 @@ use std::path::{Path, PathBuf};
 use std::process::{Child, Command, ExitStatus, Stdio};
 use std::time::{Duration, Instant};
 
+// The program a test signals must not inherit an ignored signal.
+#[path = "signals.rs"]
+pub mod signals;
+
 use x11rb::connection::Connection;
 use x11rb::protocol::xproto::{
     ConfigureWindowAux, ConnectionExt as _, CreateWindowAux, ImageFormat, MapState, Window,
@@ -467,7 +471,7 @@ impl Saver {
         for (k, v) in env {
             command.env(k, v);
         }
-        let child = command
+        let child = signals::as_from_a_terminal(&mut command)
             .spawn()
             .unwrap_or_else(|e| panic!("start {}: {e}", program.display()));
         Saver {
