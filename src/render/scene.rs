@@ -103,6 +103,10 @@ pub(crate) struct Scene<'a> {
     /// Each point's normal, when land is shaded smoothly (each point lit,
     /// the light blended across faces); `None`: one colour a face.
     normals: Option<Normals>,
+    /// Under smooth shading, where the camera stands over the ground (grid
+    /// steps): each cell is split along the diagonal that suits its
+    /// heights, and the camera's side of it says which face is nearer.
+    pub eye: Option<Vec2>,
     pub style: Style,
     /// Whether the coast and the skyline are drawn anti-aliased (the
     /// shaded looks with depth; the classic looks keep their pixels).
@@ -161,6 +165,7 @@ impl<'a> Scene<'a> {
             && settings.view != ViewKind::Oblique
             && !palette.lighting().classic;
         let normals = smooth.then(|| Normals::new(size, &rows, view.cell()));
+        let eye = view.camera_ground().filter(|_| smooth);
         let cells = size - 1;
         let (split, sees_right, sees_front) = match view.camera_column() {
             Some(cx) => {
@@ -179,6 +184,7 @@ impl<'a> Scene<'a> {
             shadow,
             skylight,
             normals,
+            eye,
             style,
             clean_edges,
             split,
@@ -244,7 +250,7 @@ impl<'a> Scene<'a> {
         });
         if let Some(normals) = &self.normals {
             let n = normals.at(&self.field, x, y);
-            let land = self.palette.land_in(ground, n, v.lit, v.sky);
+            let land = self.palette.land_at_point(ground, n, v.lit, v.sky);
             v.colour = self.hazed(land, v.haze);
         }
         v.shaded = true;

@@ -71,4 +71,10 @@ impl Camera {
     pub(crate) fn eye_x(&self) -> f32 {
         self.eye.x
     }
+
+    /// Where the eye stands over the ground (across, towards the front),
+    /// in world units.
+    pub(crate) fn eye_ground(&self) -> Vec2 {
+        Vec2::new(self.eye.x, self.eye.y)
+    }
 }

@@ -178,6 +178,14 @@ impl View {
             .filter(|_| self.size > 0)
     }
 
+    /// Where the perspective camera stands over the ground, in grid steps
+    /// (column, row); `None` for the oblique view.
+    pub fn camera_ground(&self) -> Option<Vec2> {
+        self.camera
+            .map(|c| c.eye_ground() / self.cell)
+            .filter(|_| self.size > 0 && self.cell > 0.0)
+    }
+
     /// Width of one grid step in height units.
     pub fn cell(&self) -> f32 {
         self.cell

@@ -3,12 +3,13 @@
 
 use glam::{Vec2, Vec3};
 
-use crate::render::scan::blend::{Blend, mix_packed};
+use crate::render::scan::blend::Blend;
 use crate::render::scan::canvas::Canvas;
 use crate::render::scan::raster::{Fixed2, Triangle, centre_box};
 use crate::render::scan::shore::{ShoreLine, ShorePoint};
 use crate::render::scene::{Scene, Style, Vert};
 use crate::render::shade::colour::blend_packed;
+use crate::render::shade::colour::mix_packed;
 use crate::render::shade::dither;
 
 /// White and black, the only two colours of Mono.
@@ -146,10 +147,10 @@ impl Scene<'_> {
         }
         let [tl, bl] = rows.column(self, x);
         let [tr, br] = rows.column(self, x + 1);
-        let [far, near] = if rightward {
-            [[&tl, &tr, &bl], [&tr, &br, &bl]]
-        } else {
-            [[&tl, &tr, &br], [&tl, &br, &bl]]
+        let [far, near] = match self.eye {
+            Some(eye) => split_by_heights(eye, [&tl, &tr, &bl, &br]),
+            None if rightward => [[&tl, &tr, &bl], [&tr, &br, &bl]],
+            None => [[&tl, &tr, &br], [&tl, &br, &bl]],
         };
         // The painter's order, written out: the hottest call of a frame.
         if canvas.keeps_first() {
@@ -226,7 +227,7 @@ impl Scene<'_> {
                 self.paint_pixels(canvas, part.map(|k| k.p), || {
                     move |x, y| {
                         let (own, other) = match &blend {
-                            Some(b) => (b.at(&b.row(x, y), 0), other),
+                            Some(b) => (b.at(&b.row(y), x), other),
                             None if water && smooth => (own, coast.land_at(x, y)),
                             None => (own, other),
                         };
@@ -383,8 +384,8 @@ impl Scene<'_> {
         let mut blend = None;
         t.spans(|y, x0, x1| {
             let b = blend.get_or_insert_with(|| Blend::new(v, colours));
-            let row = b.row(x0, y);
-            canvas.fill_with(y, x0, x1, |x| b.at(&row, x - x0));
+            let row = b.row(y);
+            canvas.fill_with(y, x0, x1, |x| b.at(&row, x));
         });
     }
 
@@ -439,6 +440,29 @@ pub(crate) fn painter_order<I: DoubleEndedIterator>(
         items.rev().for_each(|i| f(canvas, i));
     } else {
         items.for_each(|i| f(canvas, i));
+    }
+}
+
+/// A cell's two faces under smooth shading, the farther first: split along
+/// the diagonal whose ends differ less in height, so that the split follows
+/// the ridges and valleys rather than one direction of the grid (blended
+/// colours show the split as a streak along it). Of two faces sharing an
+/// edge, the one on the camera's side of it is the nearer. Corners
+/// `[tl, tr, bl, br]`; each face's corners in `fill_cell`'s winding.
+fn split_by_heights<'c>(eye: Vec2, c: [&'c Corner; 4]) -> [Face<'c>; 2] {
+    let [tl, tr, bl, br] = c;
+    // Each split: the diagonal's ends, the back face, the front face and
+    // the front face's third corner.
+    let (p, q, back, front, third) = if (tl.h - br.h).abs() < (tr.h - bl.h).abs() {
+        (tl, br, [tl, tr, br], [tl, br, bl], bl)
+    } else {
+        (tr, bl, [tl, tr, bl], [tr, br, bl], br)
+    };
+    let side = |r: Vec2| (q.g - p.g).perp_dot(r - p.g);
+    if side(eye) * side(third.g) > 0.0 {
+        [back, front]
+    } else {
+        [front, back]
     }
 }
 

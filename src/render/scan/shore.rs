@@ -7,8 +7,8 @@
 //! half a pixel away to half on the line (the share of a pixel a straight
 //! edge cuts off, to first order).
 
-use super::blend::mix_packed;
 use super::raster::SUBPIXEL;
+use crate::render::shade::colour::mix_packed;
 
 /// The shore line through one face, on screen.
 pub(crate) struct ShoreLine {

@@ -59,3 +59,25 @@ pub fn blend_packed(c: u32, to: u32, t: u32) -> u32 {
     };
     lerp(0x00ff_00ff) | lerp(0x0000_ff00)
 }
+
+/// Packed colours `a` and `b` mixed `f` (0..=1) of the way to `b`.
+#[inline]
+pub fn mix_packed(a: u32, b: u32, f: f32) -> u32 {
+    let ch = |shift: u32| {
+        let (x, y) = (((a >> shift) & 0xff) as f32, ((b >> shift) & 0xff) as f32);
+        ((x + (y - x) * f).clamp(0.0, 255.0) + 0.5) as u32
+    };
+    ch(16) << 16 | ch(8) << 8 | ch(0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn mixing_packed_colours() {
+        assert_eq!(mix_packed(0x000000, 0xff8040, 0.5), 0x804020);
+        assert_eq!(mix_packed(0x123456, 0xabcdef, 0.0), 0x123456);
+        assert_eq!(mix_packed(0x123456, 0xabcdef, 1.0), 0xabcdef);
+    }
+}

@@ -19,7 +19,7 @@
 //! lowland turns black under the red filter; the tint keeps every face's
 //! brightness, stays in the filter's hue family, and snow turns a pale tint.
 
-use super::colour::{Rgb, mix, pack, scale_packed, scale_packed3, to_u32, unpack};
+use super::colour::{Rgb, mix, mix_packed, pack, scale_packed, scale_packed3, to_u32, unpack};
 use super::light::Lighting;
 use crate::settings::{ColorMode, Settings, Sun};
 use crate::terrain::Heightfield;
@@ -168,7 +168,32 @@ impl Palette {
             .clamp(0.0, (HEIGHT_BINS - 1) as f32) as i32 as usize;
         let s = ((1.0 - normal.z) * self.steep_scale).clamp(0.0, (STEEP_BINS - 1) as f32) as i32
             as usize;
-        let base = self.land[s * HEIGHT_BINS + h];
+        self.lit_base(self.land[s * HEIGHT_BINS + h], normal, lit, sky)
+    }
+
+    /// Colour of the land at one point of the ground (smooth shading, where
+    /// colours are blended across faces): its height, unit normal, direct
+    /// light and share of the sky as for [`Palette::land_in`]. No jitter and
+    /// no steps between steepness classes: blended across a face, a point's
+    /// random or stepped colour would draw streaks along the grid.
+    #[inline]
+    pub fn land_at_point(&self, height: f32, normal: Vec3, lit: f32, sky: f32) -> u32 {
+        let h = (height * self.height_scale).clamp(0.0, (HEIGHT_BINS - 1) as f32) as i32 as usize;
+        // Between the middles of the two nearest steepness classes.
+        let s = ((1.0 - normal.z) * self.steep_scale - 0.5).clamp(0.0, (STEEP_BINS - 1) as f32);
+        let s0 = s as i32 as usize;
+        let s1 = (s0 + 1).min(STEEP_BINS - 1);
+        let base = mix_packed(
+            self.land[s0 * HEIGHT_BINS + h],
+            self.land[s1 * HEIGHT_BINS + h],
+            s - s0 as f32,
+        );
+        self.lit_base(base, normal, lit, sky)
+    }
+
+    /// A land base colour under this light.
+    #[inline]
+    fn lit_base(&self, base: u32, normal: Vec3, lit: f32, sky: f32) -> u32 {
         if self.coloured {
             return scale_packed3(base, self.lighting.on_under(normal, lit, sky));
         }
