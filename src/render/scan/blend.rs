@@ -2,55 +2,57 @@
 //! shading): each channel is a plane over the screen through the three
 //! corners' colours, read at pixel centres.
 
+use glam::Vec4;
+
 use super::raster::{Fixed2, SUBPIXEL};
 
-/// The colour planes of one triangle.
+/// The colour planes of one triangle, each channel (red, green, blue,
+/// 0..=255) a lane of a vector: a pixel's channels are worked out together.
 pub(crate) struct Blend {
-    /// Each channel (red, green, blue, 0..=255) at the first corner.
-    at0: [f32; 3],
+    /// The channels at the first corner.
+    at0: Vec4,
     /// The first corner's position in pixels.
     origin: [f32; 2],
     /// Change of each channel per pixel to the right and per row down.
-    dx: [f32; 3],
-    dy: [f32; 3],
+    dx: Vec4,
+    dy: Vec4,
     /// Each channel's least and greatest corner value: a pixel centre lies
     /// inside the triangle, so its colour does too, but a sliver's planes
     /// are steep enough for rounding to carry it past its corners.
-    lo: [f32; 3],
-    hi: [f32; 3],
+    lo: Vec4,
+    hi: Vec4,
 }
 
 /// One row's channels where the row crosses the first corner's column.
 /// Every pixel's colour is worked out from it and the pixel's own column
 /// alone, so a span cut at a band's edge gets the same colours as whole.
-pub(crate) type RowStart = [f32; 3];
+pub(crate) type RowStart = Vec4;
 
 impl Blend {
     /// Planes through packed `colours` at the corners `v` (24.8 fixed point).
+    #[inline]
     pub(crate) fn new(v: [Fixed2; 3], colours: [u32; 3]) -> Self {
-        let px = v.map(|p| [p[0] as f32, p[1] as f32].map(|c| c / SUBPIXEL as f32));
-        let ch = colours.map(channels);
-        let (e1, e2) = (
-            [px[1][0] - px[0][0], px[1][1] - px[0][1]],
-            [px[2][0] - px[0][0], px[2][1] - px[0][1]],
-        );
+        let to_px = 1.0 / SUBPIXEL as f32;
+        let origin = [v[0][0] as f32 * to_px, v[0][1] as f32 * to_px];
+        let e1 = [
+            (v[1][0] - v[0][0]) as f32 * to_px,
+            (v[1][1] - v[0][1]) as f32 * to_px,
+        ];
+        let e2 = [
+            (v[2][0] - v[0][0]) as f32 * to_px,
+            (v[2][1] - v[0][1]) as f32 * to_px,
+        ];
         let det = e1[0] * e2[1] - e2[0] * e1[1];
-        let mut dx = [0.0; 3];
-        let mut dy = [0.0; 3];
-        if det != 0.0 {
-            for k in 0..3 {
-                let (d1, d2) = (ch[1][k] - ch[0][k], ch[2][k] - ch[0][k]);
-                dx[k] = (d1 * e2[1] - d2 * e1[1]) / det;
-                dy[k] = (d2 * e1[0] - d1 * e2[0]) / det;
-            }
-        }
+        let inv = if det != 0.0 { 1.0 / det } else { 0.0 };
+        let [c0, c1, c2] = colours.map(channels);
+        let (d1, d2) = (c1 - c0, c2 - c0);
         Blend {
-            at0: ch[0],
-            origin: px[0],
-            dx,
-            dy,
-            lo: [0, 1, 2].map(|k| ch[0][k].min(ch[1][k]).min(ch[2][k])),
-            hi: [0, 1, 2].map(|k| ch[0][k].max(ch[1][k]).max(ch[2][k])),
+            at0: c0,
+            origin,
+            dx: (d1 * e2[1] - d2 * e1[1]) * inv,
+            dy: (d2 * e1[0] - d1 * e2[0]) * inv,
+            lo: c0.min(c1).min(c2),
+            hi: c0.max(c1).max(c2),
         }
     }
 
@@ -58,27 +60,28 @@ impl Blend {
     /// [`Blend::at`].
     #[inline]
     pub(crate) fn row(&self, y: u32) -> RowStart {
-        let oy = y as f32 + 0.5 - self.origin[1];
-        [0, 1, 2].map(|k| self.at0[k] + self.dy[k] * oy)
+        self.at0 + self.dy * (y as f32 + 0.5 - self.origin[1])
     }
 
     /// The packed colour at the centre of pixel `x` of a row.
     #[inline(always)]
     pub(crate) fn at(&self, row: &RowStart, x: u32) -> u32 {
         let ox = x as f32 + 0.5 - self.origin[0];
-        let c = |k: usize| {
-            let v = (row[k] + self.dx[k] * ox).clamp(self.lo[k], self.hi[k]);
-            // NaN casts to 0; +0.5 rounds.
-            (v + 0.5) as u32
-        };
-        c(0) << 16 | c(1) << 8 | c(2)
+        // +0.5 rounds; a NaN lane casts to 0.
+        let c = ((*row + self.dx * ox).max(self.lo).min(self.hi) + 0.5).as_uvec4();
+        c.x << 16 | c.y << 8 | c.z
     }
 }
 
-/// A packed colour's channels, 0..=255.
+/// A packed colour's channels, 0..=255 (the fourth lane 0).
 #[inline]
-fn channels(c: u32) -> [f32; 3] {
-    [(c >> 16) & 0xff, (c >> 8) & 0xff, c & 0xff].map(|v| v as f32)
+fn channels(c: u32) -> Vec4 {
+    Vec4::new(
+        ((c >> 16) & 0xff) as f32,
+        ((c >> 8) & 0xff) as f32,
+        (c & 0xff) as f32,
+        0.0,
+    )
 }
 
 #[cfg(test)]
@@ -108,8 +111,8 @@ mod tests {
         for x in 0..100 {
             let c = b.at(&b.row(0), x);
             let ch = channels(c);
-            assert!((16.0..=48.0).contains(&ch[0]), "{c:06x}");
-            assert!((48.0..=80.0).contains(&ch[2]), "{c:06x}");
+            assert!((16.0..=48.0).contains(&ch.x), "{c:06x}");
+            assert!((48.0..=80.0).contains(&ch.z), "{c:06x}");
         }
     }
 }
