@@ -604,6 +604,37 @@ mod tests {
         );
     }
 
+    /// While a slide is held and the next mountain is made, the heights
+    /// on screen are not in memory (two 4K fields at once were most of the
+    /// saver's peak); a redraw or a save gets them back bit for bit.
+    #[test]
+    fn a_held_slide_lets_its_heights_go_until_they_are_wanted() {
+        let t0 = Instant::now();
+        let mut show = Show::new(small_settings(), None, pacing(), (64, 48), t0);
+        let made = Heightfield::clone(&show.current().unwrap().field);
+        let shown = Arc::downgrade(&show.current().unwrap().field);
+        show.tick(t0 + Duration::from_millis(500));
+        assert!(shown.upgrade().is_some(), "let go while drawing");
+        show.tick(t0 + Duration::from_millis(1000));
+        assert!(show.slideshow.is_holding());
+        assert!(
+            shown.upgrade().is_none(),
+            "the held slide keeps its heights while the next are made"
+        );
+        assert_eq!(
+            *show.current().unwrap().field,
+            made,
+            "made again differently"
+        );
+        let t1 = t0 + Duration::from_millis(1500);
+        show.resize((70, 50), t1);
+        show.settle(t1);
+        let mut full = Frame::new(70, 50).unwrap();
+        crate::render::render_full(&made, show.settings(), &mut full);
+        assert!(show.frame() == Some(&full), "the redraw differs");
+        assert_eq!(show.seed(), Some(7));
+    }
+
     #[test]
     fn zero_size_has_no_frame_and_does_not_panic() {
         let t0 = Instant::now();
