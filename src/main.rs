@@ -67,6 +67,10 @@ fn main() -> ExitCode {
         if let Err(e) = mountains::signals::end_cleanly() {
             console::err(&format!("warning: cannot watch for SIGTERM: {e}"));
         }
+    } else {
+        // The saver and the settings screen make and free fields and frames
+        // for as long as they run.
+        mountains::memory::give_back_big_blocks();
     }
     let settings_screen = matches!(inv.mode, Mode::Settings { .. });
     let loaded = match load::resolve(inv.config.as_deref(), &inv.sets, settings_screen) {

@@ -262,6 +262,33 @@ fn a_resized_painter_refuses_the_old_frame() {
     assert!(Frame::new(1 << 20, 1 << 20).is_none());
 }
 
+/// A painter that has drawn every strip, stepped or finished whole, lets
+/// go of its scene (the field, the shadow and sky-light maps): a held slide
+/// keeps only its frame. Stepping it again draws nothing.
+#[test]
+fn a_done_painter_holds_no_field() {
+    let f = Arc::new(field(5));
+    for mode in MODES {
+        let s = settings(mode, ViewKind::Vista, 0);
+        let mut stepped = Painter::new(f.clone(), &s, 120, 80);
+        let mut frame = Frame::new(120, 80).unwrap();
+        while !stepped.is_done() {
+            stepped.step(&mut frame, 7);
+        }
+        let mut finished = Painter::new(f.clone(), &s, 120, 80);
+        finished.finish(&mut Frame::new(120, 80).unwrap());
+        assert_eq!(
+            Arc::strong_count(&f),
+            1,
+            "{mode:?}: a done painter still holds the field"
+        );
+        let before = frame.clone();
+        assert!(stepped.step(&mut frame, 7).is_empty(), "{mode:?}");
+        assert!(frame == before, "{mode:?}: drew again when done");
+        assert_eq!(stepped.strips_total(), stepped.strips_done(), "{mode:?}");
+    }
+}
+
 #[test]
 fn the_same_field_gives_the_same_pixels_on_any_thread_count() {
     let f = field(6);

@@ -28,6 +28,9 @@ pub struct Painter {
 enum How {
     Mesh(Box<Scene<'static>>, Rows),
     Ridges(Ridges),
+    /// Every one of this many strips drawn: the scene is let go (its share
+    /// of the field, its shadow and sky-light maps), as nothing draws again.
+    Drawn(usize),
 }
 
 impl Painter {
@@ -54,6 +57,7 @@ impl Painter {
         match &self.how {
             How::Mesh(scene, _) => scene.strips(),
             How::Ridges(r) => r.strips_total(),
+            How::Drawn(strips) => *strips,
         }
     }
 
@@ -80,6 +84,13 @@ impl Painter {
             return Damage::default();
         }
         self.next = end;
+        let damage = self.draw(frame, start, end);
+        self.let_go_when_done();
+        damage
+    }
+
+    /// [`Painter::step`]'s drawing of strips `start..end`.
+    fn draw(&mut self, frame: &mut Frame, start: usize, end: usize) -> Damage {
         match &mut self.how {
             How::Mesh(scene, rows) => {
                 let mut canvas = Canvas::new(frame.pixels_mut(), self.width, 0);
@@ -107,6 +118,16 @@ impl Painter {
                 }
                 damage
             }
+            How::Drawn(_) => Damage::default(),
+        }
+    }
+
+    /// Frees what only drawing needs once every strip is in: a held slide
+    /// then keeps only its frame (the peak of a 4K slide show, while the
+    /// next mountain is made, is lower by the scene's maps).
+    fn let_go_when_done(&mut self) {
+        if self.is_done() {
+            self.how = How::Drawn(self.strips_total());
         }
     }
 
@@ -120,6 +141,7 @@ impl Painter {
             How::Mesh(scene, _) if self.next == 0 && size_fits => {
                 bands::render(scene, frame);
                 self.next = self.strips_total();
+                self.let_go_when_done();
                 frame.bounds()
             }
             _ => self.step(frame, usize::MAX).bounds(),

@@ -32,6 +32,7 @@ pub mod heads;
 pub mod heads_x11;
 pub mod input;
 pub mod libcheck;
+mod on_screen;
 mod options;
 mod overlay;
 mod placement;

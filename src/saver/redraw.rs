@@ -18,6 +18,8 @@ pub struct Drawn {
     pub painter: Painter,
     /// The heights drawn (new ones after a remake).
     pub field: Arc<Heightfield>,
+    /// After a remake, the generator's settings that made `field`.
+    pub made: Option<Settings>,
 }
 
 /// A redraw under way.
@@ -35,7 +37,7 @@ impl Redraw {
         size: (u32, u32),
     ) -> Result<Self, Box<Drawn>> {
         let settings = settings.clone();
-        Redraw::run("redraw", move || draw(field, &settings, size))
+        Redraw::run("redraw", move || draw(field, &settings, size, None))
     }
 
     /// Starts making the mountain of `seed` again under `made` (the
@@ -50,7 +52,7 @@ impl Redraw {
         let settings = settings.clone();
         Redraw::run("remake", move || {
             let field = Arc::new(crate::terrain::generate(&made, seed));
-            draw(field, &settings, size)
+            draw(field, &settings, size, Some(made))
         })
     }
 
@@ -80,7 +82,12 @@ impl Redraw {
 }
 
 /// Draws a whole frame: in bands on all cores (`Painter::finish`).
-fn draw(field: Arc<Heightfield>, settings: &Settings, size: (u32, u32)) -> Drawn {
+fn draw(
+    field: Arc<Heightfield>,
+    settings: &Settings,
+    size: (u32, u32),
+    made: Option<Settings>,
+) -> Drawn {
     let mut painter = Painter::new(field.clone(), settings, size.0, size.1);
     let mut frame = Frame::new(size.0, size.1);
     if let Some(frame) = frame.as_mut() {
@@ -90,5 +97,6 @@ fn draw(field: Arc<Heightfield>, settings: &Settings, size: (u32, u32)) -> Drawn
         frame,
         painter,
         field,
+        made,
     }
 }

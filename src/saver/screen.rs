@@ -90,13 +90,13 @@ impl Screen {
             Action::SaveDataSet => {
                 let saved = show
                     .current()
-                    .map(|m| actions::save_data_set(m, show.settings()));
+                    .map(|m| actions::save_data_set(&m, show.settings()));
                 actions::report(saved, "data set");
                 Rect::default()
             }
             Action::OpenDataSet => self.open_next(now),
             Action::Screenshot => {
-                let seed = show.current().and_then(|m| m.seed);
+                let seed = show.seed();
                 actions::report(
                     show.frame().map(|f| actions::save_screenshot(f, seed)),
                     "screenshot",

@@ -4,6 +4,7 @@
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
+use super::on_screen::OnScreen;
 use super::overlay::Overlay;
 use super::redraw::{Drawn, Redraw};
 use super::slideshow::{Due, Pacing, Slideshow};
@@ -17,8 +18,9 @@ use crate::settings::keys::{self, Change};
 enum Next {
     /// Nothing prepared yet.
     None,
-    /// Being generated on another thread with the settings of the moment.
-    Pending(JoinHandle<Mountain>),
+    /// Being generated on another thread with these settings (the detail
+    /// fitted), the settings of the moment.
+    Pending(JoinHandle<Mountain>, Settings),
 }
 
 /// How often the event loop looks whether a redraw is finished: a frame
@@ -32,7 +34,7 @@ pub struct Show {
     made_with: Settings,
     /// A data set opened by the user: shown every time instead of generating.
     opened: Option<Mountain>,
-    current: Option<Mountain>,
+    current: Option<OnScreen>,
     next: Next,
     frame: Option<Frame>,
     /// The window's size: the frame's, or the one a redraw is drawing for.
@@ -57,9 +59,13 @@ impl Show {
         size: (u32, u32),
         now: Instant,
     ) -> Self {
-        let first = opened
-            .clone()
-            .unwrap_or_else(|| Mountain::generate(&detail::for_frame(&settings, size.0, size.1)));
+        let first = match &opened {
+            Some(m) => OnScreen::new(m.clone(), None),
+            None => {
+                let made = detail::for_frame(&settings, size.0, size.1);
+                OnScreen::new(Mountain::generate(&made), Some(made))
+            }
+        };
         let mut show = Show::empty(settings, pacing, size, now);
         show.opened = opened;
         show.current = Some(first);
@@ -118,9 +124,16 @@ impl Show {
         self.frame.as_ref()
     }
 
-    /// The mountain on screen, if any.
-    pub fn current(&self) -> Option<&Mountain> {
-        self.current.as_ref()
+    /// The mountain on screen, if any. While a slide is held its heights
+    /// may have been let go (see `on_screen.rs`): they are made again here,
+    /// which takes as long as generating them did.
+    pub fn current(&self) -> Option<Mountain> {
+        self.current.as_ref().map(OnScreen::mountain)
+    }
+
+    /// The seed of the mountain on screen, if a seed made it.
+    pub fn seed(&self) -> Option<u64> {
+        self.current.as_ref().and_then(OnScreen::seed)
     }
 
     /// The settings this show draws with.
@@ -130,8 +143,12 @@ impl Show {
 
     /// The window title for what is on screen now (see `actions::window_title`).
     pub fn title(&self) -> String {
-        let seed = self.current.as_ref().and_then(|m| m.seed);
-        super::actions::window_title(&self.settings, &self.made_with, seed, self.is_paused())
+        super::actions::window_title(
+            &self.settings,
+            &self.made_with,
+            self.seed(),
+            self.is_paused(),
+        )
     }
 
     /// When this show next needs `tick`; `None`: not until an event arrives.
@@ -189,12 +206,18 @@ impl Show {
         }
         let next = match std::mem::replace(&mut self.next, Next::None) {
             // Made again below, on this thread, if its thread failed.
-            Next::Pending(handle) => crate::log::joined(handle, "making the next mountain"),
+            Next::Pending(handle, made) => {
+                crate::log::joined(handle, "making the next mountain").map(|m| (m, Some(made)))
+            }
             Next::None => None,
         };
-        // A redraw of the old mountain still under way is not wanted now.
+        // A redraw of the old mountain still under way is not wanted now,
+        // nor the old painter: the new scene is built without them.
         self.redraw = None;
-        self.current = Some(next.unwrap_or_else(|| self.make_next_now()));
+        self.painter = None;
+        self.current = None;
+        let (mountain, made) = next.unwrap_or_else(|| self.make_next_now());
+        self.current = Some(OnScreen::new(mountain, made));
         // Any change of settings dropped the mountain prepared before it, so
         // the one now on screen was made with the settings of the moment.
         self.made_with = self.settings.clone();
@@ -284,11 +307,11 @@ impl Show {
     /// (Low Detail: the same mountain, coarser or finer), then draws it. A
     /// mountain read from a file is only drawn again.
     fn begin_remake(&mut self, now: Instant) -> Rect {
-        let Some(Mountain {
-            seed: Some(seed),
-            generated: true,
-            ..
-        }) = self.current
+        let Some(seed) = self
+            .current
+            .as_ref()
+            .filter(|m| m.generated())
+            .and_then(OnScreen::seed)
         else {
             return self.begin_redraw(now);
         };
@@ -319,7 +342,12 @@ impl Show {
             return Rect::default();
         };
         self.painter = None;
-        match Redraw::start(mountain.field.clone(), &self.settings, self.size) {
+        // Heights let go during the hold are made again on the redraw's thread.
+        let redraw = match mountain.parked() {
+            Some((seed, made)) => Redraw::remake(seed, made.clone(), &self.settings, self.size),
+            None => Redraw::start(mountain.field(), &self.settings, self.size),
+        };
+        match redraw {
             Ok(redraw) => {
                 self.redraw = Some(redraw);
                 Rect::default()
@@ -331,7 +359,7 @@ impl Show {
     /// Puts a finished redraw on screen and starts the hold.
     fn show_redrawn(&mut self, drawn: Drawn, now: Instant) -> Rect {
         if let Some(mountain) = self.current.as_mut() {
-            mountain.field = drawn.field;
+            mountain.redrawn(drawn.field, drawn.made);
         }
         self.frame = drawn.frame;
         self.overlay.forget();
@@ -363,32 +391,48 @@ impl Show {
         if reused {
             frame.clear(0);
         }
-        let painter = Painter::new(mountain.field.clone(), &self.settings, size.0, size.1);
+        let painter = Painter::new(mountain.field(), &self.settings, size.0, size.1);
         self.slideshow.restart(painter.strips_total(), now);
         self.painter = Some(painter);
         frame.bounds()
     }
 
-    /// Starts generating the next mountain in the background, once per hold.
+    /// Starts generating the next mountain in the background, once per
+    /// hold. The heights on screen, drawn, are let go first: the two
+    /// fields are not in memory at once (peak memory at 4K, issue 18).
     fn prepare_next(&mut self) {
-        if !matches!(self.next, Next::None) || self.opened.is_some() {
+        if self.opened.is_some() {
+            return;
+        }
+        if self.painter.as_ref().is_some_and(Painter::is_done)
+            && let Some(current) = self.current.as_mut()
+        {
+            current.park();
+        }
+        if !matches!(self.next, Next::None) {
             return;
         }
         let settings = self.generator_settings();
+        let made = settings.clone();
         let slide = self.slide + 1;
         let spawned = std::thread::Builder::new()
             .name("generate".into())
             .spawn(move || source::next_mountain(&settings, slide));
         // Without a thread the mountain is generated when it is needed.
         if let Ok(handle) = spawned {
-            self.next = Next::Pending(handle);
+            self.next = Next::Pending(handle, made);
         }
     }
 
-    fn make_next_now(&self) -> Mountain {
+    /// The next mountain, made here, and the generator's settings if it
+    /// was generated.
+    fn make_next_now(&self) -> (Mountain, Option<Settings>) {
         match &self.opened {
-            Some(m) => m.clone(),
-            None => source::next_mountain(&self.generator_settings(), self.slide + 1),
+            Some(m) => (m.clone(), None),
+            None => {
+                let made = self.generator_settings();
+                (source::next_mountain(&made, self.slide + 1), Some(made))
+            }
         }
     }
 
@@ -558,6 +602,37 @@ mod tests {
             Some(t1 + Duration::from_secs(2)),
             "not held"
         );
+    }
+
+    /// While a slide is held and the next mountain is made, the heights
+    /// on screen are not in memory (two 4K fields at once were most of the
+    /// saver's peak); a redraw or a save gets them back bit for bit.
+    #[test]
+    fn a_held_slide_lets_its_heights_go_until_they_are_wanted() {
+        let t0 = Instant::now();
+        let mut show = Show::new(small_settings(), None, pacing(), (64, 48), t0);
+        let made = Heightfield::clone(&show.current().unwrap().field);
+        let shown = Arc::downgrade(&show.current().unwrap().field);
+        show.tick(t0 + Duration::from_millis(500));
+        assert!(shown.upgrade().is_some(), "let go while drawing");
+        show.tick(t0 + Duration::from_millis(1000));
+        assert!(show.slideshow.is_holding());
+        assert!(
+            shown.upgrade().is_none(),
+            "the held slide keeps its heights while the next are made"
+        );
+        assert_eq!(
+            *show.current().unwrap().field,
+            made,
+            "made again differently"
+        );
+        let t1 = t0 + Duration::from_millis(1500);
+        show.resize((70, 50), t1);
+        show.settle(t1);
+        let mut full = Frame::new(70, 50).unwrap();
+        crate::render::render_full(&made, show.settings(), &mut full);
+        assert!(show.frame() == Some(&full), "the redraw differs");
+        assert_eq!(show.seed(), Some(7));
     }
 
     #[test]
