@@ -43,7 +43,7 @@ impl Trace {
     #[cfg_attr(not(windows), allow(dead_code))]
     pub fn note(&self, fact: &str) {
         if self.on {
-            eprintln!("mountains: trace: {fact}");
+            crate::console::err(&format!("mountains: trace: {fact}"));
         }
     }
 
