@@ -101,7 +101,7 @@ impl Painter {
                 let mut damage = canvas.damage();
                 if end == scene.strips() && scene.clean_edges {
                     // The full frame's last touch, once every strip is in.
-                    for r in skyline::smooth(frame, &scene.sky).rects() {
+                    for r in skyline::smooth(frame, &scene.sky, &scene.back_edge()).rects() {
                         damage.add(r);
                     }
                 }

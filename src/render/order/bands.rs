@@ -90,7 +90,7 @@ impl<'f> Columns<'f> {
 pub(crate) fn render(scene: &Scene, frame: &mut Frame) {
     draw_bands(scene, frame);
     if scene.clean_edges {
-        skyline::smooth(frame, &scene.sky);
+        skyline::smooth(frame, &scene.sky, &scene.back_edge());
     }
 }
 

@@ -42,17 +42,28 @@ impl Run {
 }
 
 /// Mixes the pixels along the skyline of a complete `frame` whose sky is
-/// `sky`; returns the pixels it changed.
-pub(crate) fn smooth(frame: &mut Frame, sky: &Sky) -> Damage {
+/// `sky`; returns the pixels it changed. `back` is the land's back edge as
+/// drawn, a polyline of screen points left to right: where a column's top
+/// is that edge's, the edge is known exactly and taken as it is (the sea's
+/// far edge is a straight line that no staircase can tell the height of).
+pub(crate) fn smooth(frame: &mut Frame, sky: &Sky, back: &[[f32; 2]]) -> Damage {
     let tops = land_tops(frame, sky);
     let runs = runs_of(&tops, frame.height());
-    let (middles, level) = middles(&runs, tops.len());
+    let exact = exact_edge(back, &tops);
+    let (mut middles, level) = middles(&runs, tops.len());
+    for (x, e) in exact.iter().enumerate() {
+        if let Some(e) = e {
+            middles[x] = (e[1] + e[2]) / 2.0;
+        }
+    }
     let mut damage = Damage::default();
     for run in &runs {
         for x in run.x0..=run.x1 {
-            let edge: [f32; SAMPLES] = std::array::from_fn(|k| {
-                let at = (k as f32 + 0.5) / SAMPLES as f32;
-                edge_in(&middles, &level, x as usize, at)
+            let edge: [f32; SAMPLES] = exact[x as usize].unwrap_or_else(|| {
+                std::array::from_fn(|k| {
+                    let at = (k as f32 + 0.5) / SAMPLES as f32;
+                    edge_in(&middles, &level, x as usize, at)
+                })
             });
             if let Some(rows) = mix_column(frame, sky, x, run.top, &edge) {
                 damage.add(Rect {
@@ -111,6 +122,40 @@ fn edge_in(middles: &[f32], level: &[bool], x: usize, at: f32) -> f32 {
         Some(&o) if !o.is_nan() => own + (o - own) * t,
         _ => own,
     }
+}
+
+/// The back edge's height at each column's samples, where the column's top
+/// is where that edge puts it (its middle's centre is the first below the
+/// edge); `None` elsewhere.
+fn exact_edge(back: &[[f32; 2]], tops: &[u32]) -> Vec<Option<[f32; SAMPLES]>> {
+    let mut segment = 0;
+    // The edge's height at screen x, walking the polyline left to right.
+    let mut height_at = |sx: f32| {
+        while segment + 1 < back.len() && back[segment + 1][0] < sx {
+            segment += 1;
+        }
+        let (&[x0, y0], &[x1, y1]) = (back.get(segment)?, back.get(segment + 1)?);
+        let inside = x1 > x0 && sx >= x0 && sx <= x1 && y0.is_finite() && y1.is_finite();
+        inside.then(|| y0 + (y1 - y0) * (sx - x0) / (x1 - x0))
+    };
+    let mut out = vec![None; tops.len()];
+    for (x, slot) in out.iter_mut().enumerate() {
+        let mut e = [0.0; SAMPLES];
+        let mut known = true;
+        for (k, v) in e.iter_mut().enumerate() {
+            match height_at(x as f32 + (k as f32 + 0.5) / SAMPLES as f32) {
+                Some(h) => *v = h,
+                None => known = false,
+            }
+        }
+        // The middle's centre is the first below the edge: the column's
+        // top is this edge's.
+        let middle = (e[1] + e[2]) / 2.0;
+        if known && (middle - 0.5).ceil() == tops[x] as f32 {
+            *slot = Some(e);
+        }
+    }
+    out
 }
 
 /// The first row of each column that is not the sky (the height when the
@@ -250,7 +295,7 @@ mod tests {
         let sky = sky();
         let mut f = framed(&tops, 30, &sky);
         let before = f.clone();
-        let damage = smooth(&mut f, &sky);
+        let damage = smooth(&mut f, &sky, &[]);
         assert!(!damage.is_empty());
         // Above each run's right half a pixel of sky takes some land, more
         // the nearer the step: a blend, not a stair.
@@ -272,7 +317,7 @@ mod tests {
         tops[8] = 12;
         let sky = sky();
         let mut f = framed(&tops, 30, &sky);
-        smooth(&mut f, &sky);
+        smooth(&mut f, &sky, &[]);
         assert_eq!(f.get(8, 12), LAND, "the tip");
         for x in [0, 1, 2, 13, 14, 15] {
             for y in 0..30 {
@@ -285,12 +330,33 @@ mod tests {
     }
 
     #[test]
+    fn a_level_edge_known_exactly_is_mixed_by_its_true_height() {
+        // Land from row 20 down, its true edge at 19.75: row 19 is a quarter
+        // land, which no staircase of whole rows could tell.
+        let tops = vec![20u32; 16];
+        let sky = sky();
+        let mut f = framed(&tops, 30, &sky);
+        let back = [[0.0, 19.75], [16.0, 19.75]];
+        smooth(&mut f, &sky, &back);
+        for x in 0..16 {
+            let want = blend_packed(sky.colour(x, 19), LAND, 64);
+            assert_eq!(f.get(x, 19), want, "column {x}");
+            assert_eq!(f.get(x, 20), LAND);
+        }
+        // An edge the tops contradict (the land's top is not where it says)
+        // is not taken.
+        let mut g = framed(&tops, 30, &sky);
+        smooth(&mut g, &sky, &[[0.0, 12.3], [16.0, 12.3]]);
+        assert_eq!(g.get(5, 19), sky.colour(5, 19));
+    }
+
+    #[test]
     fn a_frame_of_sky_only_is_unchanged() {
         let sky = sky();
         let tops = vec![30u32; 10];
         let mut f = framed(&tops, 30, &sky);
         let before = f.clone();
-        assert!(smooth(&mut f, &sky).is_empty());
+        assert!(smooth(&mut f, &sky, &[]).is_empty());
         assert_eq!(f.pixels(), before.pixels());
     }
 }
