@@ -640,3 +640,40 @@ fn display_an_inherited_ignored_sighup_stays_ignored() {
     saver.signal("TERM");
     expect_exit(&mut saver, "SIGTERM after an ignored SIGHUP");
 }
+
+/// Sends SIGTERM to `saver` while its X server is stopped (SIGSTOP), where
+/// every mode used to wait inside an X reply until the server went on; the
+/// time it took to end is printed, the bound is only generous patience.
+fn sigterm_with_the_server_stopped(x: &Xvfb, saver: &mut Saver, what: &str) {
+    x.signal("STOP");
+    let asked = Instant::now();
+    saver.signal("TERM");
+    let status = saver.wait(Duration::from_secs(10));
+    let took = asked.elapsed();
+    x.signal("CONT");
+    let status = status
+        .unwrap_or_else(|| panic!("{what}: SIGTERM with the X server stopped did not end it"));
+    eprintln!("{what}: ended {took:?} after SIGTERM with the server stopped, {status}");
+    assert!(status.success(), "{what}: {status}\n{}", saver.stderr());
+}
+
+#[test]
+fn display_sigterm_ends_the_fullscreen_saver_while_the_x_server_is_stopped() {
+    let Some((x, mut saver)) = fullscreen("frozen-fs") else {
+        return;
+    };
+    sigterm_with_the_server_stopped(&x, &mut saver, "/s");
+}
+
+#[test]
+fn display_sigterm_ends_the_window_mode_while_the_x_server_is_stopped() {
+    let Some(x) = Xvfb::start(1280, 800, &[]) else {
+        return;
+    };
+    let mut saver = Saver::start(&x, "frozen-window", &["--window"], &[]);
+    let window = wait_for_window(&x, &mut saver, 960, 600);
+    poll(&mut saver, "a mountain in the window", || {
+        looks_drawn(&x.grab(window, 960, 600))
+    });
+    sigterm_with_the_server_stopped(&x, &mut saver, "--window");
+}
