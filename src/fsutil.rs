@@ -97,6 +97,20 @@ pub fn write_atomic_with(
     path: &Path,
     write: impl FnOnce(&mut dyn Write) -> io::Result<()>,
 ) -> io::Result<()> {
+    write_atomic_checked(path, write, || Ok(true)).map(|_| ())
+}
+
+/// [`write_atomic_with`], asking `still_wanted` once the new text is on
+/// disk and just before it replaces the old: `Ok(false)` drops the new
+/// file and leaves the old one (the result is then `Ok(false)`). A caller
+/// that merged its change into the file as it was read checks here that
+/// nobody replaced the file meanwhile, which shrinks the window in which a
+/// concurrent change is lost from the whole write to one read.
+pub fn write_atomic_checked(
+    path: &Path,
+    write: impl FnOnce(&mut dyn Write) -> io::Result<()>,
+    still_wanted: impl FnOnce() -> io::Result<bool>,
+) -> io::Result<bool> {
     let target = match std::fs::canonicalize(path) {
         Ok(real) => real,
         // Not there yet (or a dangling link): the name itself.
@@ -108,12 +122,15 @@ pub fn write_atomic_with(
             "is a folder, not a file",
         )),
         Ok(m) if !m.is_file() => {
+            if !still_wanted()? {
+                return Ok(false);
+            }
             let file = std::fs::OpenOptions::new().write(true).open(&target)?;
             let mut out = io::BufWriter::new(file);
             write(&mut out)?;
-            out.flush()
+            out.flush().map(|()| true)
         }
-        _ => replace_file(&target, write),
+        _ => replace_file(&target, write, still_wanted),
     }
 }
 
@@ -123,7 +140,8 @@ pub fn write_atomic_with(
 fn replace_file(
     path: &Path,
     write: impl FnOnce(&mut dyn Write) -> io::Result<()>,
-) -> io::Result<()> {
+    still_wanted: impl FnOnce() -> io::Result<bool>,
+) -> io::Result<bool> {
     let dir = match path.parent() {
         Some(p) if !p.as_os_str().is_empty() => p,
         _ => Path::new("."),
@@ -144,9 +162,12 @@ fn replace_file(
         write(&mut out)?;
         let file = out.into_inner().map_err(|e| e.into_error())?;
         file.sync_all()?;
-        std::fs::rename(&tmp, path)
+        if !still_wanted()? {
+            return Ok(false);
+        }
+        std::fs::rename(&tmp, path).map(|()| true)
     })();
-    if result.is_err() {
+    if !matches!(result, Ok(true)) {
         let _ = std::fs::remove_file(&tmp);
     }
     result

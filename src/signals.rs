@@ -1,12 +1,30 @@
 //! Ending cleanly on SIGTERM (how xscreensaver stops a hack), SIGINT and
 //! SIGHUP (the terminal or session going away).
 
+/// How long the main loop has to end after `on_terminate`'s notice before
+/// the process ends without it.
+pub const GRACE: std::time::Duration = std::time::Duration::from_millis(500);
+
 /// Calls `notify` on a watcher thread each time SIGTERM, SIGINT or SIGHUP
 /// arrives, instead of letting the signal kill the process with a failure
 /// status. A signal the parent set to be ignored (`nohup`) stays ignored.
+///
+/// If the process is still running [`GRACE`] after the first notice, it
+/// ends with status 0 from the watcher thread: the main loop can be stuck
+/// waiting for a reply from an X server that is stopped (SIGSTOP) or hung,
+/// and a screensaver told to stop must stop. Temporary files of writes in
+/// progress are removed first, so no file is left half made.
 #[cfg(unix)]
 pub fn on_terminate(notify: impl Fn() + Send + 'static) -> std::io::Result<()> {
-    watch(move |_| notify())
+    watch(move |_| {
+        notify();
+        std::thread::sleep(GRACE);
+        crate::fsutil::partial::remove_all();
+        // `_exit`, not `exit`: atexit handlers might wait for a lock the
+        // stuck main thread holds (Xlib's display lock among them).
+        // SAFETY: ends the process; nothing after it runs.
+        unsafe { libc::_exit(0) }
+    })
 }
 
 /// For one-shot commands (`render`, `heightmap`): on SIGTERM, SIGINT or

@@ -85,6 +85,51 @@ fn display_fullscreen_ends_on_a_20px_move() {
     expect_exit(&mut saver, "a 20 px move");
 }
 
+/// Absolute motion, as `xdotool mousemove`, VNC servers, virtual machines'
+/// tablet pointers and remote desktops send it (XTEST motion to a place).
+#[test]
+fn display_fullscreen_ends_on_absolute_motion() {
+    let Some((x, mut saver)) = fullscreen("fs-absolute") else {
+        return;
+    };
+    x.move_to(100, 100);
+    x.move_to(500, 400);
+    expect_exit(&mut saver, "absolute motion to another place");
+}
+
+/// `xdotool mousemove 100 100; xdotool mousemove 500 500`: a warp, which
+/// no device reports as raw motion.
+#[test]
+fn display_fullscreen_ends_on_a_warped_pointer() {
+    let Some((x, mut saver)) = fullscreen("fs-warp") else {
+        return;
+    };
+    x.warp_to(100, 100);
+    x.warp_to(500, 400);
+    expect_exit(&mut saver, "the pointer warped to another place");
+}
+
+/// The window appearing under a still pointer, and an absolute move to
+/// where the pointer already is, are no reason to wake.
+#[test]
+fn display_fullscreen_ignores_absolute_motion_to_where_the_pointer_is() {
+    let Some(x) = Xvfb::start(640, 480, &[]) else {
+        return;
+    };
+    x.move_to(300, 200);
+    let mut saver = Saver::start(&x, "fs-absolute-still", &["/s"], &[]);
+    poll(&mut saver, "a mountain on the screen", || {
+        looks_drawn(&x.grab_screen())
+    });
+    for _ in 0..5 {
+        x.move_to(300, 200);
+        x.move_to(302, 201);
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    std::thread::sleep(Duration::from_millis(700));
+    saver.assert_running();
+}
+
 #[test]
 fn display_fullscreen_ignores_a_3px_jitter() {
     let Some((x, mut saver)) = fullscreen("fs-jitter") else {
@@ -594,4 +639,41 @@ fn display_an_inherited_ignored_sighup_stays_ignored() {
     saver.assert_running();
     saver.signal("TERM");
     expect_exit(&mut saver, "SIGTERM after an ignored SIGHUP");
+}
+
+/// Sends SIGTERM to `saver` while its X server is stopped (SIGSTOP), where
+/// every mode used to wait inside an X reply until the server went on; the
+/// time it took to end is printed, the bound is only generous patience.
+fn sigterm_with_the_server_stopped(x: &Xvfb, saver: &mut Saver, what: &str) {
+    x.signal("STOP");
+    let asked = Instant::now();
+    saver.signal("TERM");
+    let status = saver.wait(Duration::from_secs(10));
+    let took = asked.elapsed();
+    x.signal("CONT");
+    let status = status
+        .unwrap_or_else(|| panic!("{what}: SIGTERM with the X server stopped did not end it"));
+    eprintln!("{what}: ended {took:?} after SIGTERM with the server stopped, {status}");
+    assert!(status.success(), "{what}: {status}\n{}", saver.stderr());
+}
+
+#[test]
+fn display_sigterm_ends_the_fullscreen_saver_while_the_x_server_is_stopped() {
+    let Some((x, mut saver)) = fullscreen("frozen-fs") else {
+        return;
+    };
+    sigterm_with_the_server_stopped(&x, &mut saver, "/s");
+}
+
+#[test]
+fn display_sigterm_ends_the_window_mode_while_the_x_server_is_stopped() {
+    let Some(x) = Xvfb::start(1280, 800, &[]) else {
+        return;
+    };
+    let mut saver = Saver::start(&x, "frozen-window", &["--window"], &[]);
+    let window = wait_for_window(&x, &mut saver, 960, 600);
+    poll(&mut saver, "a mountain in the window", || {
+        looks_drawn(&x.grab(window, 960, 600))
+    });
+    sigterm_with_the_server_stopped(&x, &mut saver, "--window");
 }

@@ -244,3 +244,62 @@ fn the_advice_after_a_failed_save_follows_its_cause() {
     };
     assert!(read_only.advice().contains("writable"));
 }
+
+/// Puts `text` in place of the file the way another program would: a new
+/// file renamed over it, keeping the old modification time (as `cp -p` or
+/// `rsync -t` do), so only the content says that it changed.
+fn replace_keeping_mtime(path: &Path, text: &str) {
+    let mtime = std::fs::metadata(path).unwrap().modified().unwrap();
+    let tmp = path.with_extension("other");
+    std::fs::write(&tmp, text).unwrap();
+    std::fs::File::options()
+        .write(true)
+        .open(&tmp)
+        .unwrap()
+        .set_modified(mtime)
+        .unwrap();
+    std::fs::rename(&tmp, path).unwrap();
+}
+
+fn key(name: &str) -> &'static mountains::settings::keys::Key {
+    mountains::settings::keys::find(name).unwrap()
+}
+
+#[test]
+fn saving_changes_keeps_a_key_another_program_changed_since_it_was_read() {
+    let path = scratch("concurrent").join("mountains.toml");
+    std::fs::write(&path, "# mine\ncragginess = 40 # sharp\n").unwrap();
+    let mut edited = loaded(&read(&path));
+    edited.cragginess = 12;
+    replace_keeping_mtime(
+        &path,
+        "# mine\ncragginess = 40 # sharp\nzzz = 1\ncolor = \"sonar\"\n",
+    );
+    save::save_changes(&path, &edited, &[key("cragginess")]).unwrap();
+    assert_eq!(
+        read(&path),
+        "# mine\ncragginess = 12 # sharp\nzzz = 1\ncolor = \"sonar\"\n",
+        "the other program's color stays, the edit is written, comments kept"
+    );
+}
+
+#[test]
+fn a_key_changed_both_on_disk_and_in_the_save_takes_the_saved_value() {
+    let path = scratch("both").join("mountains.toml");
+    std::fs::write(&path, "color = \"gray\"\nheight = 2\n").unwrap();
+    let mut edited = loaded(&read(&path));
+    edited.color = ColorMode::Natural;
+    replace_keeping_mtime(&path, "color = \"sonar\"\nheight = 3\n");
+    save::save_changes(&path, &edited, &[key("color")]).unwrap();
+    assert_eq!(read(&path), "color = \"natural\"\nheight = 3\n");
+}
+
+#[test]
+fn saving_no_changes_leaves_a_file_changed_elsewhere_as_it_is() {
+    let path = scratch("nochange").join("mountains.toml");
+    std::fs::write(&path, "cragginess = 40\n").unwrap();
+    let edited = loaded(&read(&path));
+    replace_keeping_mtime(&path, "cragginess = 41\ncolor = \"sonar\"\n");
+    save::save_changes(&path, &edited, &[]).unwrap();
+    assert_eq!(read(&path), "cragginess = 41\ncolor = \"sonar\"\n");
+}

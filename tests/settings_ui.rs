@@ -718,3 +718,74 @@ fn the_editor_command_takes_arguments_and_any_path() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Replaces the file as another program would (a new file renamed over
+/// it), with the old modification time kept, as `cp -p` or `rsync -t` do.
+fn replace_keeping_mtime(path: &Path, text: &str) {
+    let mtime = std::fs::metadata(path).unwrap().modified().unwrap();
+    let tmp = path.with_extension("other");
+    std::fs::write(&tmp, text).unwrap();
+    std::fs::File::options()
+        .write(true)
+        .open(&tmp)
+        .unwrap()
+        .set_modified(mtime)
+        .unwrap();
+    std::fs::rename(&tmp, path).unwrap();
+}
+
+#[test]
+fn ok_keeps_a_change_made_on_disk_that_the_screen_has_not_seen() {
+    let dir = scratch("unseen");
+    let file = dir.join("mountains.toml");
+    std::fs::write(&file, "# mine\ncragginess = 40 # sharp\n").unwrap();
+    let mut sc = screen(&file, 1);
+    sc.model.focus = row("cragginess");
+    sc.input(Input::Right);
+    // Renamed in between the screen's last look and OK: no poll sees it.
+    replace_keeping_mtime(
+        &file,
+        "# mine\ncragginess = 40 # sharp\ncolor = \"sonar\"\n",
+    );
+    assert_eq!(sc.input(Input::Enter), Next::Close, "Enter on a row is OK");
+    assert_eq!(
+        std::fs::read_to_string(&file).unwrap(),
+        "# mine\ncragginess = 41 # sharp\ncolor = \"sonar\"\n"
+    );
+}
+
+#[test]
+fn a_file_replaced_with_its_old_mtime_is_still_taken_in() {
+    let dir = scratch("samemtime");
+    let file = dir.join("mountains.toml");
+    std::fs::write(&file, "cragginess = 40\n").unwrap();
+    let mut sc = screen(&file, 1);
+    replace_keeping_mtime(&file, "cragginess = 40\ncolor = \"sonar\"\n");
+    assert!(sc.poll_file(), "the content changed, the mtime did not");
+    assert_eq!(sc.model.settings.color, ColorMode::Sonar);
+    assert!(!sc.poll_file(), "nothing new since");
+}
+
+#[test]
+fn two_screens_saving_one_after_the_other_keep_both_changes() {
+    let dir = scratch("twoscreens");
+    let file = dir.join("mountains.toml");
+    std::fs::write(&file, "cragginess = 40\nheight = 2\n").unwrap();
+    let mut first = screen(&file, 1);
+    let mut second = screen(&file, 1);
+    first.model.focus = row("cragginess");
+    first.input(Input::Right);
+    second.model.focus = row("color");
+    second.input(Input::Right);
+    assert_eq!(first.apply(Effect::Save), Next::Close);
+    assert_eq!(second.apply(Effect::Save), Next::Close);
+    let mut s = Settings::default();
+    assert!(load::apply_file(&mut s, &file).is_empty());
+    assert_eq!((s.cragginess, s.height), (41, 2));
+    assert_eq!(s.color, second.model.settings.color);
+    assert_ne!(
+        s.color,
+        Settings::default().color,
+        "the second screen's edit"
+    );
+}

@@ -109,41 +109,107 @@ pub fn merge(text: &str, settings: &Settings) -> Result<String, ParseError> {
     Ok(out)
 }
 
-/// Saves `settings` into the file at `path`, atomically. An absent file is
-/// started from the commented defaults; a file that does not parse is left
-/// alone and the error says where it is broken.
+/// Saves `settings` into the file at `path`, atomically: every key takes
+/// its value from `settings`. See [`save_changes`].
 pub fn save(path: &Path, settings: &Settings) -> Result<(), SaveError> {
-    let error = |position, message: String| SaveError {
+    let every: Vec<&Key> = KEYS.iter().collect();
+    save_changes(path, settings, &every)
+}
+
+/// How often a save starts over because the file changed while it was
+/// being merged; a file rewritten that often is someone's busy loop.
+const SAVE_ATTEMPTS: usize = 8;
+
+/// Saves the keys in `changed`, with their values in `edited`, into the
+/// file at `path` as it is on disk at this moment, atomically. Every other
+/// key keeps what the file says now, so a change another program made
+/// since the screen read the file survives; for a key both changed, this
+/// save's value wins (it is the later word). The file is read again just
+/// before it is replaced and compared by content (not modification time,
+/// which `cp -p` or `rsync -t` keep): if it changed, the merge starts over.
+/// An absent file is started from the commented defaults; a file that does
+/// not parse is left alone and the error says where it is broken.
+pub fn save_changes(path: &Path, edited: &Settings, changed: &[&Key]) -> Result<(), SaveError> {
+    for _ in 0..SAVE_ATTEMPTS {
+        let on_disk = read_text(path)?;
+        let text = on_disk.as_deref().unwrap_or(DEFAULT_TOML);
+        let mut wanted = Settings::default();
+        // A syntax error is reported by `merge` below, with its position.
+        let _ = super::load::apply_toml(&mut wanted, text, "");
+        for key in changed {
+            let value = checked_value(edited, key).map_err(|m| text_error(path, None, m))?;
+            keys::apply(&mut wanted, key, &value).map_err(|m| text_error(path, None, m))?;
+        }
+        let merged = merge(text, &wanted).map_err(|e| {
+            text_error(
+                path,
+                e.position,
+                format!("not valid TOML ({}); not saved", e.message),
+            )
+        })?;
+        if on_disk.as_deref() == Some(merged.as_str()) {
+            return Ok(());
+        }
+        if write_unless_changed(path, &merged, &on_disk)? {
+            return Ok(());
+        }
+    }
+    Err(SaveError {
+        io: Some(std::io::ErrorKind::Interrupted),
+        ..text_error(
+            path,
+            None,
+            "the file kept changing while it was saved".into(),
+        )
+    })
+}
+
+fn text_error(path: &Path, position: Option<(usize, usize)>, message: String) -> SaveError {
+    SaveError {
         path: path.to_path_buf(),
         position,
         message,
         io: None,
-    };
-    let io_error = |message: String, e: &std::io::Error| SaveError {
-        io: Some(e.kind()),
-        ..error(None, message)
-    };
-    let text = match crate::fsutil::read_regular(path, crate::fsutil::MAX_PREFERENCES_BYTES) {
-        Ok(bytes) => String::from_utf8(bytes)
-            .map_err(|_| error(None, "not valid UTF-8 text; fix it with Edit file".into()))?,
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => DEFAULT_TOML.to_string(),
-        Err(e) => return Err(io_error(format!("cannot read: {e}"), &e)),
-    };
-    let merged = merge(&text, settings).map_err(|e| {
-        error(
-            e.position,
-            format!("not valid TOML ({}); not saved", e.message),
-        )
-    })?;
-    if merged == text && path.exists() {
-        return Ok(());
     }
+}
+
+fn io_error(path: &Path, message: String, e: &std::io::Error) -> SaveError {
+    SaveError {
+        io: Some(e.kind()),
+        ..text_error(path, None, message)
+    }
+}
+
+/// The file's text now, or `None` when there is no file.
+fn read_text(path: &Path) -> Result<Option<String>, SaveError> {
+    match crate::fsutil::read_regular(path, crate::fsutil::MAX_PREFERENCES_BYTES) {
+        Ok(bytes) => String::from_utf8(bytes).map(Some).map_err(|_| {
+            text_error(
+                path,
+                None,
+                "not valid UTF-8 text; fix it with Edit file".into(),
+            )
+        }),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(None),
+        Err(e) => Err(io_error(path, format!("cannot read: {e}"), &e)),
+    }
+}
+
+/// Writes `merged` over the file atomically if the file still holds what
+/// `was` says (its text, or no file); false when it changed meanwhile.
+fn write_unless_changed(
+    path: &Path,
+    merged: &str,
+    was: &Option<String>,
+) -> Result<bool, SaveError> {
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir)
-            .map_err(|e| io_error(format!("cannot create {}: {e}", dir.display()), &e))?;
+            .map_err(|e| io_error(path, format!("cannot create {}: {e}", dir.display()), &e))?;
     }
-    crate::fsutil::write_atomic_with(path, |w| w.write_all(merged.as_bytes()))
-        .map_err(|e| io_error(format!("cannot write: {e}"), &e))
+    // Unreadable now counts as changed: the next attempt says why.
+    let unchanged = || Ok(matches!(read_text(path), Ok(now) if now == *was));
+    crate::fsutil::write_atomic_checked(path, |w| w.write_all(merged.as_bytes()), unchanged)
+        .map_err(|e| io_error(path, format!("cannot write: {e}"), &e))
 }
 
 /// The value to write for `key`, after the key table has accepted it.

@@ -139,6 +139,15 @@ impl Model {
             .is_some_and(|k| keys::get(&self.settings, k) != keys::get(&self.original, k))
     }
 
+    /// The keys whose value on the screen differs from the file's: what OK
+    /// writes (every other key keeps what the file says when OK is pressed).
+    pub fn changed_keys(&self) -> Vec<&'static Key> {
+        (0..KEYS.len())
+            .filter(|&i| self.changed(i))
+            .map(|i| &KEYS[i])
+            .collect()
+    }
+
     /// Handles one input against the current layout.
     pub fn handle(&mut self, input: Input, layout: &Layout) -> Effect {
         if self.open_list.is_some()

@@ -3,7 +3,6 @@
 //! inputs and presents its frame.
 
 use std::path::{Path, PathBuf};
-use std::time::SystemTime;
 
 use super::draw::{self, Extras};
 use super::layout::Layout;
@@ -29,13 +28,16 @@ pub struct Screen {
     frame: Frame,
     preview: Preview,
     config: PathBuf,
-    config_stamp: Option<SystemTime>,
+    /// The file's bytes when last read (`None`: absent or unreadable).
+    config_seen: Option<Vec<u8>>,
     data_dir: Option<PathBuf>,
     editing: super::editor::Editing,
 }
 
-fn stamp(path: &Path) -> Option<SystemTime> {
-    std::fs::metadata(path).and_then(|m| m.modified()).ok()
+/// The file's content, compared rather than its modification time, which
+/// a copy made with `cp -p` or `rsync -t` keeps although the text changed.
+fn contents(path: &Path) -> Option<Vec<u8>> {
+    crate::fsutil::read_regular(path, crate::fsutil::MAX_PREFERENCES_BYTES).ok()
 }
 
 impl Screen {
@@ -55,7 +57,7 @@ impl Screen {
             layout,
             frame,
             preview: Preview::new(),
-            config_stamp: stamp(&config),
+            config_seen: contents(&config),
             config,
             data_dir: paths::data_dir(),
             editing: Default::default(),
@@ -121,8 +123,12 @@ impl Screen {
         Next::Stay
     }
 
+    /// Writes only the keys changed on the screen, into the file as it is
+    /// now: another program's change to any other key since the screen
+    /// read the file survives, even one it has not noticed yet.
     fn save(&mut self) -> Next {
-        match save::save(&self.config, &self.model.settings) {
+        let changed = self.model.changed_keys();
+        match save::save_changes(&self.config, &self.model.settings, &changed) {
             Ok(()) => Next::Close,
             Err(e) => {
                 self.model.message = format!("{e}. {}", e.advice());
@@ -188,11 +194,11 @@ impl Screen {
             self.model.message = failure;
             return true;
         }
-        let now = stamp(&self.config);
-        if now == self.config_stamp {
+        let now = contents(&self.config);
+        if now == self.config_seen {
             return false;
         }
-        self.config_stamp = now;
+        self.config_seen = now;
         let mut fresh = Settings::default();
         let problems = if self.config.exists() {
             load::apply_file(&mut fresh, &self.config)

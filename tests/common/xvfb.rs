@@ -369,6 +369,26 @@ impl Xvfb {
         self.fake(6, 0, x, y);
     }
 
+    /// Sends the server a signal with kill(1): `STOP` freezes it, so that
+    /// every client waiting for a reply waits on; `CONT` lets it go on.
+    pub fn signal(&self, name: &str) {
+        let status = Command::new("kill")
+            .args([format!("-{name}"), self.child.id().to_string()])
+            .status()
+            .expect("run kill");
+        assert!(status.success());
+    }
+
+    /// Warps the pointer to (x, y), as `xdotool mousemove` does: the
+    /// pointer jumps, and no device sends a raw motion event.
+    #[allow(dead_code)]
+    pub fn warp_to(&self, x: i16, y: i16) {
+        self.conn
+            .warp_pointer(x11rb::NONE, self.root, 0, 0, 0, 0, x, y)
+            .expect("WarpPointer request");
+        self.conn.sync().expect("WarpPointer sync");
+    }
+
     fn fake(&self, kind: u8, detail: u8, x: i16, y: i16) {
         self.conn
             .xtest_fake_input(kind, detail, 0, self.root, x, y, 0)
