@@ -93,6 +93,58 @@ fn a_device_or_a_huge_file_is_not_read_into_memory() {
     );
 }
 
+/// A screensaver always starts: a preferences file that cannot be read (a
+/// FIFO, a device, one over 4 MiB) means the defaults, with the reason on
+/// stderr and in mountains.log, and `/dev/null` means the defaults with no
+/// word. Without a display each mode then gets as far as looking for one
+/// (exit 1, "no X display"), past the preferences (which refused: exit 2).
+#[test]
+fn the_saver_starts_on_its_defaults_when_its_preferences_cannot_be_read() {
+    let dir = scratch("saver-unreadable");
+    let fifo = dir.join("fifo.toml");
+    mkfifo(&fifo);
+    let big = dir.join("big.toml");
+    std::fs::write(&big, "# padding\n".repeat(500_000)).unwrap();
+    let why = [
+        (
+            fifo.to_str().unwrap(),
+            "a FIFO (named pipe), not a regular file",
+        ),
+        ("/dev/zero", "is a device, not a regular file"),
+        (
+            big.to_str().unwrap(),
+            "is 4883 KiB; at most 4096 KiB is read",
+        ),
+        ("/dev/null", ""),
+    ];
+    for mode in ["/s", "--root"] {
+        for (i, (file, reason)) in why.into_iter().enumerate() {
+            let home = dir.join(format!("home-{}-{i}", mode.len()));
+            std::fs::create_dir_all(&home).unwrap();
+            let got = run(&[mode, "--config", file], &home);
+            let err = String::from_utf8_lossy(&got.stderr);
+            assert_eq!(got.status.code(), Some(1), "{mode} {file}: {err}");
+            assert!(err.contains("no X display"), "{mode} {file}: {err}");
+            let log = std::fs::read_to_string(home.join("data/mountains/mountains.log"))
+                .expect("mountains.log");
+            if reason.is_empty() {
+                assert!(!err.contains("warning"), "{mode} {file}: {err}");
+                assert!(!log.contains("warning"), "{mode} {file}: {log}");
+                continue;
+            }
+            let said = format!("warning: {file}: cannot read: ");
+            for text in [&*err, &log] {
+                assert!(
+                    text.contains(&said)
+                        && text.contains(reason)
+                        && text.contains("using the defaults"),
+                    "{mode} {file}: {text}"
+                );
+            }
+        }
+    }
+}
+
 /// A value is echoed at most ~80 characters long, with its length: a flood
 /// in does not become a flood out.
 #[test]
