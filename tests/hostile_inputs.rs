@@ -178,6 +178,63 @@ fn a_huge_value_is_quoted_short() {
     );
 }
 
+/// A 33x33 16-bit heightmap with one iTXt chunk `key` = `value`.
+fn map_with_itxt(key: &str, value: &str) -> Vec<u8> {
+    let n = 33;
+    let samples: Vec<u8> = (0..n * n)
+        .flat_map(|i: u32| ((i % n) * 1500 + (i / n) * 300).to_be_bytes()[2..].to_vec())
+        .collect();
+    let mut bytes = Vec::new();
+    let mut enc = png::Encoder::new(&mut bytes, n, n);
+    enc.set_color(png::ColorType::Grayscale);
+    enc.set_depth(png::BitDepth::Sixteen);
+    enc.add_itxt_chunk(key.into(), value.into()).unwrap();
+    let mut w = enc.write_header().unwrap();
+    w.write_image_data(&samples).unwrap();
+    w.finish().unwrap();
+    bytes
+}
+
+/// A text chunk's value is quoted short wherever it is echoed: 1 MiB in
+/// an iTXt chunk (issue 22: a `mountains:seed` was echoed whole, 1.0 MB of
+/// stderr) is named in a line. An origin key's bad value is a note and the
+/// picture is drawn; a height key's is an error.
+#[test]
+fn a_huge_text_chunk_in_a_data_set_is_quoted_short() {
+    let dir = scratch("itxt");
+    let flood = format!("x{}", "7".repeat(1 << 20));
+    for (key, code) in [
+        ("mountains:seed", 0),
+        ("mountains:generator", 0),
+        ("mountains:scale", 1),
+    ] {
+        let map = dir.join("flood.png");
+        std::fs::write(&map, map_with_itxt(key, &flood)).unwrap();
+        let out = dir.join("o.png");
+        let _ = std::fs::remove_file(&out);
+        let got = run(
+            &[
+                "render",
+                "--open",
+                map.to_str().unwrap(),
+                "--size",
+                "64x36",
+                "-o",
+                out.to_str().unwrap(),
+            ],
+            &dir,
+        );
+        let err = String::from_utf8_lossy(&got.stderr);
+        assert!(err.len() < 2000, "{key}: {} bytes of message", err.len());
+        assert_eq!(got.status.code(), Some(code), "{key}: {err}");
+        assert!(
+            err.contains("\"x777") && err.contains("(1048577 characters)"),
+            "{key}: {err}"
+        );
+        assert_eq!(out.exists(), code == 0, "{key}");
+    }
+}
+
 /// Checking a file with 100,000 unknown keys is linear (it took 49 s when a
 /// position was counted from the top for each key) and reports the first
 /// 20 problems and a count, not 100,000 lines.
