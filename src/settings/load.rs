@@ -2,9 +2,9 @@
 //! name the file, line, column, key and the allowed values.
 //!
 //! Loading is lenient: every good key is used, every bad one is reported and
-//! keeps its previous value, so a screensaver with a broken file still runs.
-//! Callers that must refuse bad input (`--check-config`, `render`) look at
-//! the problems and stop.
+//! keeps its previous value, so a screensaver with a broken file still runs,
+//! and `render` still draws (with a warning). `--check-config`, whose work
+//! is to find them, looks at the problems and fails.
 
 use std::fmt;
 use std::path::Path;
