@@ -138,7 +138,8 @@ fn fail(message: &str) -> ExitCode {
 /// `--check-config [FILE]`: checks FILE, else `--config`'s, else the usual
 /// preferences file, and every `--set`. Exit 0 when all is good, also when
 /// there is no preferences file at the usual place (the defaults are in
-/// use, which is no mistake); 1 for any problem, or a named file missing.
+/// use, which is no mistake) and for the null device (`/dev/null`: no
+/// preferences); 1 for any problem, or a named file missing.
 pub fn check_config(
     path: Option<&Path>,
     config: Option<&Path>,
@@ -154,7 +155,13 @@ pub fn check_config(
     // A link that leads nowhere (or round in a loop) is there, and reading
     // it says what is wrong with it; only a name with nothing at all is missing.
     let present = std::fs::symlink_metadata(&file).is_ok();
-    if present {
+    let none = crate::fsutil::is_null_device(&file);
+    if none {
+        printed = console::outln(&format!(
+            "mountains: {}: no preferences; the defaults are in use",
+            file.display()
+        ));
+    } else if present {
         problems = load::apply_file(&mut settings, &file);
     } else if named.is_some() {
         return fail(&format!("{}: no such file", file.display()));
@@ -169,13 +176,13 @@ pub fn check_config(
             problems.push(p);
         }
     }
-    for line in load::report(&problems) {
+    for line in load::report_with(&problems, |p| format!("error: {p}")) {
         console::err(&line);
     }
     if !problems.is_empty() {
         return ExitCode::FAILURE;
     }
-    if present {
+    if present && !none {
         printed = printed.and_then(|()| console::outln(&format!("{}: ok", file.display())));
     }
     if !sets.is_empty() {

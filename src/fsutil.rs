@@ -26,6 +26,22 @@ pub fn open_regular(path: &Path, cap: u64) -> io::Result<File> {
     File::open(path)
 }
 
+/// Whether `path` names the null device (`/dev/null`, or `NUL` on
+/// Windows), the usual way to say "no file": it reads as empty, so a
+/// preferences file there means the defaults, not an error.
+pub fn is_null_device(path: &Path) -> bool {
+    #[cfg(unix)]
+    {
+        std::fs::canonicalize(path).is_ok_and(|real| real == Path::new("/dev/null"))
+    }
+    #[cfg(not(unix))]
+    {
+        path.file_stem()
+            .and_then(|s| s.to_str())
+            .is_some_and(|s| s.eq_ignore_ascii_case("nul"))
+    }
+}
+
 /// The bytes of the regular file at `path`, at most `cap` of them (a file
 /// that grows while it is read is cut off with an error, not followed).
 pub fn read_regular(path: &Path, cap: u64) -> io::Result<Vec<u8>> {

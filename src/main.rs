@@ -72,11 +72,15 @@ fn main() -> ExitCode {
         // for as long as they run.
         mountains::memory::give_back_big_blocks();
     }
-    let settings_screen = matches!(inv.mode, Mode::Settings { .. });
-    let loaded = match load::resolve(inv.config.as_deref(), &inv.sets, settings_screen) {
+    let unreadable = match inv.mode {
+        Mode::Render { .. } | Mode::Heightmap { .. } => load::Unreadable::Refuse,
+        Mode::Settings { .. } => load::Unreadable::NewIfMissing,
+        _ => load::Unreadable::Defaults,
+    };
+    let loaded = match load::resolve(inv.config.as_deref(), &inv.sets, unreadable) {
         Ok(l) => l,
         Err(p) => {
-            console::err(&format!("mountains: {p}"));
+            console::err(&format!("mountains: error: {p}"));
             return ExitCode::from(EXIT_USAGE);
         }
     };
@@ -86,10 +90,14 @@ fn main() -> ExitCode {
             width,
             height,
             output,
-        } => refuse_problems(&loaded)
-            .unwrap_or_else(|| commands::render(&loaded.settings, open, *width, *height, output)),
-        Mode::Heightmap { output } => refuse_problems(&loaded)
-            .unwrap_or_else(|| commands::heightmap(&loaded.settings, open, output)),
+        } => {
+            warn_problems(&loaded);
+            commands::render(&loaded.settings, open, *width, *height, output)
+        }
+        Mode::Heightmap { output } => {
+            warn_problems(&loaded);
+            commands::heightmap(&loaded.settings, open, output)
+        }
         Mode::Settings { parent } => {
             gui_log();
             mountains::settings_ui::run(inv.config.as_deref(), &loaded, *parent)
@@ -103,30 +111,32 @@ fn printed(result: std::io::Result<()>) -> ExitCode {
     console::status(result, ExitCode::SUCCESS)
 }
 
-/// One-shot commands stop on a broken value in the preferences file:
-/// nothing is lost by saying so, and a picture made from half a file would
-/// surprise. A key this version does not know is only warned about (the
-/// settings screen keeps such keys, and a newer version may have written it).
-fn refuse_problems(loaded: &load::Loaded) -> Option<ExitCode> {
-    let (unknown, broken): (Vec<load::Problem>, Vec<load::Problem>) = loaded
-        .problems
-        .iter()
-        .cloned()
-        .partition(|p| p.is_unknown_key());
-    for line in load::report(&unknown) {
-        console::err(&format!("warning: {line}; ignored"));
-    }
-    if broken.is_empty() {
-        return None;
-    }
-    for line in load::report(&broken) {
-        console::err(&line);
-    }
-    Some(ExitCode::from(EXIT_USAGE))
+/// One rule for a preferences file in every mode: a bad or unknown key is
+/// a warning naming file:line:key, and the key keeps its default (a file
+/// the platform's path names that cannot be read: all of them). Only
+/// `--set` and flags, typed for this one run, are errors.
+fn problem_warnings(loaded: &load::Loaded) -> Vec<String> {
+    let what = |p: &load::Problem| {
+        if p.is_unreadable() {
+            "using the defaults"
+        } else if p.is_unknown_key() {
+            "ignored"
+        } else {
+            "using the default"
+        }
+    };
+    load::report_with(&loaded.problems, |p| format!("warning: {p}; {}", what(p)))
 }
 
-/// The screensaver modes keep going on a broken file: each problem is logged
-/// (a .scr has no console) and its key keeps the default.
+/// The one-shot commands say each problem on stderr, then do their work.
+fn warn_problems(loaded: &load::Loaded) {
+    for line in problem_warnings(loaded) {
+        console::err(&format!("mountains: {line}"));
+    }
+}
+
+/// The screensaver modes keep going on a broken or unreadable file: each
+/// problem is logged (a .scr has no console) and its key keeps the default.
 fn run_saver(
     mode: &Mode,
     loaded: load::Loaded,
@@ -134,8 +144,8 @@ fn run_saver(
     xss: &cli::XssOptions,
 ) -> ExitCode {
     gui_log();
-    for line in load::report(&loaded.problems) {
-        log::warn(&format!("{line} (using the default)"));
+    for line in problem_warnings(&loaded) {
+        log::warn(&line);
     }
     let opened = open.and_then(|path| match mountains::mountain::Mountain::open(path) {
         Ok((mountain, notes)) => {

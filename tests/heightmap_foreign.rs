@@ -296,3 +296,48 @@ mod random_images {
         }
     }
 }
+
+/// How many colours a picture of `d` has in `view`, at 320x200.
+fn colours_drawn(d: &DataSet, view: mountains::settings::ViewKind) -> usize {
+    let settings = Settings {
+        view,
+        ..Settings::default()
+    };
+    let mut frame = mountains::render::Frame::new(320, 200).unwrap();
+    mountains::render::render_full(&d.field, &settings, &mut frame);
+    let mut seen = frame.pixels().to_vec();
+    seen.sort_unstable();
+    seen.dedup();
+    seen.len()
+}
+
+/// A small map far taller than it is wide (`mountains:scale` 0.01 over 33
+/// samples, no sea level: issue 22 found it drawn as one dark brown frame
+/// in the vista, whose camera stood low inside the land) is drawn as land
+/// and sky in every view, at every relief from gentle to needle-like.
+#[test]
+fn a_map_taller_than_wide_is_drawn_in_every_view() {
+    use mountains::settings::ViewKind;
+    let n = 33;
+    let samples: Vec<u16> = (0..n * n)
+        .map(|i| {
+            let (u, v) = ((i % n) as f32 / n as f32, (i / n) as f32 / n as f32);
+            let h = 40.0 * (u * 7.3).sin() * (v * 5.1).cos() + 25.0 * u - 12.5;
+            ((h + 70.0) / 140.0 * 65535.0) as u16
+        })
+        .collect();
+    for scale in ["0.0000001", "0.001", "0.005", "0.01", "0.1", "1"] {
+        let png = gray_png(
+            n as u32,
+            n as u32,
+            16,
+            &samples,
+            &[(meta::KEY_SCALE, scale), ("mountains:sea_levle", "3")],
+        );
+        let d = load(&png);
+        for view in [ViewKind::Vista, ViewKind::Perspective, ViewKind::Oblique] {
+            let colours = colours_drawn(&d, view);
+            assert!(colours >= 64, "scale {scale}, {view:?}: {colours} colours");
+        }
+    }
+}

@@ -93,6 +93,58 @@ fn a_device_or_a_huge_file_is_not_read_into_memory() {
     );
 }
 
+/// A screensaver always starts: a preferences file that cannot be read (a
+/// FIFO, a device, one over 4 MiB) means the defaults, with the reason on
+/// stderr and in mountains.log, and `/dev/null` means the defaults with no
+/// word. Without a display each mode then gets as far as looking for one
+/// (exit 1, "no X display"), past the preferences (which refused: exit 2).
+#[test]
+fn the_saver_starts_on_its_defaults_when_its_preferences_cannot_be_read() {
+    let dir = scratch("saver-unreadable");
+    let fifo = dir.join("fifo.toml");
+    mkfifo(&fifo);
+    let big = dir.join("big.toml");
+    std::fs::write(&big, "# padding\n".repeat(500_000)).unwrap();
+    let why = [
+        (
+            fifo.to_str().unwrap(),
+            "a FIFO (named pipe), not a regular file",
+        ),
+        ("/dev/zero", "is a device, not a regular file"),
+        (
+            big.to_str().unwrap(),
+            "is 4883 KiB; at most 4096 KiB is read",
+        ),
+        ("/dev/null", ""),
+    ];
+    for mode in ["/s", "--root"] {
+        for (i, (file, reason)) in why.into_iter().enumerate() {
+            let home = dir.join(format!("home-{}-{i}", mode.len()));
+            std::fs::create_dir_all(&home).unwrap();
+            let got = run(&[mode, "--config", file], &home);
+            let err = String::from_utf8_lossy(&got.stderr);
+            assert_eq!(got.status.code(), Some(1), "{mode} {file}: {err}");
+            assert!(err.contains("no X display"), "{mode} {file}: {err}");
+            let log = std::fs::read_to_string(home.join("data/mountains/mountains.log"))
+                .expect("mountains.log");
+            if reason.is_empty() {
+                assert!(!err.contains("warning"), "{mode} {file}: {err}");
+                assert!(!log.contains("warning"), "{mode} {file}: {log}");
+                continue;
+            }
+            let said = format!("warning: {file}: cannot read: ");
+            for text in [&*err, &log] {
+                assert!(
+                    text.contains(&said)
+                        && text.contains(reason)
+                        && text.contains("using the defaults"),
+                    "{mode} {file}: {text}"
+                );
+            }
+        }
+    }
+}
+
 /// A value is echoed at most ~80 characters long, with its length: a flood
 /// in does not become a flood out.
 #[test]
@@ -124,6 +176,63 @@ fn a_huge_value_is_quoted_short() {
         "{} bytes",
         err.len()
     );
+}
+
+/// A 33x33 16-bit heightmap with one iTXt chunk `key` = `value`.
+fn map_with_itxt(key: &str, value: &str) -> Vec<u8> {
+    let n = 33;
+    let samples: Vec<u8> = (0..n * n)
+        .flat_map(|i: u32| ((i % n) * 1500 + (i / n) * 300).to_be_bytes()[2..].to_vec())
+        .collect();
+    let mut bytes = Vec::new();
+    let mut enc = png::Encoder::new(&mut bytes, n, n);
+    enc.set_color(png::ColorType::Grayscale);
+    enc.set_depth(png::BitDepth::Sixteen);
+    enc.add_itxt_chunk(key.into(), value.into()).unwrap();
+    let mut w = enc.write_header().unwrap();
+    w.write_image_data(&samples).unwrap();
+    w.finish().unwrap();
+    bytes
+}
+
+/// A text chunk's value is quoted short wherever it is echoed: 1 MiB in
+/// an iTXt chunk (issue 22: a `mountains:seed` was echoed whole, 1.0 MB of
+/// stderr) is named in a line. An origin key's bad value is a note and the
+/// picture is drawn; a height key's is an error.
+#[test]
+fn a_huge_text_chunk_in_a_data_set_is_quoted_short() {
+    let dir = scratch("itxt");
+    let flood = format!("x{}", "7".repeat(1 << 20));
+    for (key, code) in [
+        ("mountains:seed", 0),
+        ("mountains:generator", 0),
+        ("mountains:scale", 1),
+    ] {
+        let map = dir.join("flood.png");
+        std::fs::write(&map, map_with_itxt(key, &flood)).unwrap();
+        let out = dir.join("o.png");
+        let _ = std::fs::remove_file(&out);
+        let got = run(
+            &[
+                "render",
+                "--open",
+                map.to_str().unwrap(),
+                "--size",
+                "64x36",
+                "-o",
+                out.to_str().unwrap(),
+            ],
+            &dir,
+        );
+        let err = String::from_utf8_lossy(&got.stderr);
+        assert!(err.len() < 2000, "{key}: {} bytes of message", err.len());
+        assert_eq!(got.status.code(), Some(code), "{key}: {err}");
+        assert!(
+            err.contains("\"x777") && err.contains("(1048577 characters)"),
+            "{key}: {err}"
+        );
+        assert_eq!(out.exists(), code == 0, "{key}");
+    }
 }
 
 /// Checking a file with 100,000 unknown keys is linear (it took 49 s when a

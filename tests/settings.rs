@@ -202,18 +202,55 @@ fn resolve_reports_file_problems_and_refuses_a_missing_explicit_file() {
     let file = dir.join("prefs.toml");
     std::fs::write(&file, "detail = 99\ncolor = \"red\"\n").unwrap();
     let sets = vec![("detail".to_string(), "6".to_string())];
-    let loaded = load::resolve(Some(&file), &sets, false).unwrap();
+    let loaded = load::resolve(Some(&file), &sets, load::Unreadable::Refuse).unwrap();
     assert_eq!(loaded.problems.len(), 1);
     assert_eq!(
         (loaded.settings.color, loaded.settings.detail),
         (ColorMode::Red, Detail::Level(6))
     );
-    let missing = load::resolve(Some(&dir.join("nope.toml")), &[], false).unwrap_err();
+    let missing =
+        load::resolve(Some(&dir.join("nope.toml")), &[], load::Unreadable::Refuse).unwrap_err();
     assert!(missing.message.starts_with("cannot read"), "{missing}");
     // The settings screen may start a new file: defaults, no file, no problem.
-    let fresh = load::resolve(Some(&dir.join("nope.toml")), &[], true).unwrap();
+    let fresh = load::resolve(
+        Some(&dir.join("nope.toml")),
+        &[],
+        load::Unreadable::NewIfMissing,
+    )
+    .unwrap();
     assert_eq!((fresh.file, fresh.problems.len()), (None, 0));
     assert_eq!(fresh.settings, mountains::settings::Settings::default());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The saver's way of reading preferences starts on the defaults when the
+/// file cannot be read, and says why; the null device is no preferences
+/// in every mode.
+#[cfg(unix)]
+#[test]
+fn resolve_for_a_saver_uses_the_defaults_when_the_file_cannot_be_read() {
+    let dir = std::env::temp_dir().join(format!("mountains-unreadable-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let folder = dir.join("a-folder.toml");
+    std::fs::create_dir_all(&folder).unwrap();
+    let sets = vec![("detail".to_string(), "6".to_string())];
+    let loaded = load::resolve(Some(&folder), &sets, load::Unreadable::Defaults).unwrap();
+    assert_eq!(loaded.problems.len(), 1);
+    assert!(loaded.problems[0].is_unreadable(), "{}", loaded.problems[0]);
+    assert_eq!(loaded.settings.detail, Detail::Level(6));
+    assert!(load::resolve(Some(&folder), &[], load::Unreadable::Refuse).is_err());
+    for unreadable in [
+        load::Unreadable::Refuse,
+        load::Unreadable::NewIfMissing,
+        load::Unreadable::Defaults,
+    ] {
+        let none = load::resolve(Some(std::path::Path::new("/dev/null")), &[], unreadable).unwrap();
+        assert_eq!((none.file, none.problems.len()), (None, 0));
+        assert_eq!(none.settings, mountains::settings::Settings::default());
+    }
+    // A bad `--set` stays an error for the saver too.
+    let bad = vec![("cragginess".to_string(), "999".to_string())];
+    assert!(load::resolve(Some(&folder), &bad, load::Unreadable::Defaults).is_err());
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

@@ -2,9 +2,9 @@
 //! name the file, line, column, key and the allowed values.
 //!
 //! Loading is lenient: every good key is used, every bad one is reported and
-//! keeps its previous value, so a screensaver with a broken file still runs.
-//! Callers that must refuse bad input (`--check-config`, `render`) look at
-//! the problems and stop.
+//! keeps its previous value, so a screensaver with a broken file still runs,
+//! and `render` still draws (with a warning). `--check-config`, whose work
+//! is to find them, looks at the problems and fails.
 
 use std::fmt;
 use std::path::Path;
@@ -27,7 +27,16 @@ pub struct Problem {
     pub message: String,
 }
 
+/// How the problem of a file that could not be read at all begins.
+const CANNOT_READ: &str = "cannot read: ";
+
 impl Problem {
+    /// The file could not be read at all (missing, not a regular file, too
+    /// large, no permission): nothing in it was used.
+    pub fn is_unreadable(&self) -> bool {
+        self.position.is_none() && self.key.is_none() && self.message.starts_with(CANNOT_READ)
+    }
+
     /// A key this version does not know (a newer version's, or a typo): the
     /// rest of the file still means what it says.
     pub fn is_unknown_key(&self) -> bool {
@@ -143,11 +152,13 @@ pub const SHOWN_PROBLEMS: usize = 20;
 /// The lines a person reads about `problems`: the first [`SHOWN_PROBLEMS`],
 /// then how many more there are.
 pub fn report(problems: &[Problem]) -> Vec<String> {
-    let mut lines: Vec<String> = problems
-        .iter()
-        .take(SHOWN_PROBLEMS)
-        .map(|p| p.to_string())
-        .collect();
+    report_with(problems, Problem::to_string)
+}
+
+/// As [`report`], each problem's line made by `line` (which says whether
+/// it is an error or a warning, and what follows from it).
+pub fn report_with(problems: &[Problem], line: impl Fn(&Problem) -> String) -> Vec<String> {
+    let mut lines: Vec<String> = problems.iter().take(SHOWN_PROBLEMS).map(line).collect();
     if problems.len() > SHOWN_PROBLEMS {
         lines.push(format!(
             "... and {} more problems",
@@ -282,7 +293,7 @@ pub fn apply_file(settings: &mut Settings, path: &Path) -> Vec<Problem> {
             source,
             position: None,
             key: None,
-            message: format!("cannot read: {e}"),
+            message: format!("{CANNOT_READ}{e}"),
         }],
     }
 }
@@ -309,33 +320,46 @@ pub struct Loaded {
     pub problems: Vec<Problem>,
 }
 
+/// What an explicit `--config` that cannot be read means to a mode. The
+/// null device (`--config /dev/null`) is never unreadable: it is the usual
+/// way to say "no preferences", and means the defaults in every mode.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Unreadable {
+    /// A mistake on the command line, refused (the one-shot commands).
+    Refuse,
+    /// Refused too, except a file not there yet, which is a new one: the
+    /// defaults (the settings screen creates it on OK).
+    NewIfMissing,
+    /// The defaults, with the reason among the problems: a screensaver
+    /// always starts, or the screen stays unprotected.
+    Defaults,
+}
+
 /// Builds the settings: defaults, then the file (`config`, or the platform's
 /// preferences file if it exists), then each `--set` in order.
 ///
-/// An explicit `config` that cannot be read, and any bad `--set`, are errors:
-/// they are mistakes on the command line; except that with `missing_ok` an
-/// explicit file that does not exist yet means the defaults (the settings
-/// screen creates it on OK). Problems inside the file are returned for the
-/// caller to report or refuse.
+/// An explicit `config` that cannot be read is handled as `unreadable` says;
+/// any bad `--set` is an error (a mistake on the command line). Problems
+/// inside the file, and an unreadable file the platform's path names, are
+/// returned for the caller to report: their keys keep the defaults.
 pub fn resolve(
     config: Option<&Path>,
     sets: &[(String, String)],
-    missing_ok: bool,
+    unreadable: Unreadable,
 ) -> Result<Loaded, Problem> {
     let mut settings = Settings::default();
     let file = match config {
         Some(p) => Some(p.to_path_buf()),
         None => super::paths::config_file().filter(|p| p.exists()),
     };
-    let file = file.filter(|p| !(missing_ok && config.is_some() && !p.exists()));
+    let new_file =
+        |p: &Path| unreadable == Unreadable::NewIfMissing && config.is_some() && !p.exists();
+    let file = file.filter(|p| !new_file(p) && !crate::fsutil::is_null_device(p));
     let mut problems = Vec::new();
     if let Some(path) = &file {
         problems = apply_file(&mut settings, path);
-        if config.is_some()
-            && problems
-                .iter()
-                .any(|p| p.message.starts_with("cannot read"))
-        {
+        let refused = config.is_some() && unreadable != Unreadable::Defaults;
+        if refused && problems.iter().any(Problem::is_unreadable) {
             return Err(problems.remove(0));
         }
     }

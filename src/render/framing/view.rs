@@ -106,7 +106,8 @@ impl View {
 
     /// Places the vista camera over the land whose row tops are `row_top`
     /// (spread evenly from back to front); tall land puts the back edge
-    /// lower (`vista::fitted`).
+    /// lower (`vista::fitted`), and land too tall for the vista at all is
+    /// framed as the perspective view frames it.
     fn frame_vista(&mut self, steps: f32, row_top: &[f32], width: f32, height: f32) {
         let extent = self.cell * steps;
         let last = row_top.len().saturating_sub(1).max(1) as f32;
@@ -116,7 +117,13 @@ impl View {
                 Vec3::new(0.5 * extent, extent * i as f32 / last, z)
             })
             .collect();
-        let shot = vista::fitted(extent, width, height, &tops);
+        let Some(shot) = vista::fitted(extent, width, height, &tops) else {
+            // Land too tall for a camera low in front of it: the
+            // perspective's camera, above it, sees it whole.
+            let zmax = tops.iter().map(|p| p.z).fold(0.0, f32::max);
+            self.camera = Some(Camera::new(extent, zmax));
+            return self.fit(steps, row_top, width, height);
+        };
         self.camera = Some(shot.camera);
         self.scale = shot.focal;
         self.offset = Vec2::new(width, height) * 0.5;

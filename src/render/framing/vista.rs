@@ -35,6 +35,13 @@ pub(crate) const SKYLINE: f32 = 0.4;
 pub(crate) const SKYLINE_LOWEST: f32 = 0.72;
 /// Sky kept above the highest land, as a fraction of the height.
 const SKY_ROOM: f32 = 0.12;
+/// The tallest land the vista frames when it would rise out of the top of
+/// the frame, in grid widths above sea level. Its camera stands about a
+/// tenth of a width high: from there, land half a width tall is its near
+/// slope alone, one colour from edge to edge (a data set 33 samples wide
+/// with `mountains:scale` 0.01 rose 0.86 widths; the settings' tallest
+/// mountains rise 2.4). Generated land at the default settings rises 0.2.
+const VISTA_TALLEST: f32 = 0.5;
 /// How far below the bottom the near edge falls, as a fraction of the
 /// height (two pixels at 1080 rows), so no row of sky shows under the sea.
 const BELOW: f32 = 2.0 / 1080.0;
@@ -66,7 +73,12 @@ impl Shot {
 /// row's highest point): the back edge at [`SKYLINE`], or, where the land
 /// would rise within [`SKY_ROOM`] of the top, exactly as much lower as
 /// keeps that strip of sky (at most down to [`SKYLINE_LOWEST`]).
-pub(crate) fn fitted(extent: f32, width: f32, height: f32, tops: &[Vec3]) -> Shot {
+///
+/// `None` for land so tall (over [`VISTA_TALLEST`]) that even then it
+/// rises out of the top of the frame: a camera this low in front of it
+/// sees only the near slope (issue 22: a data set's relief can be many
+/// times its width), so the caller frames it another way.
+pub(crate) fn fitted(extent: f32, width: f32, height: f32, tops: &[Vec3]) -> Option<Shot> {
     let shot = |skyline: f32| frame(extent, width, height, skyline);
     // The highest land's distance below the strip of sky, in heights: it
     // grows as the back edge goes down.
@@ -80,10 +92,16 @@ pub(crate) fn fitted(extent: f32, width: f32, height: f32, tops: &[Vec3]) -> Sho
     // Not below zero (or not a number: no land to fit): the sky is clear.
     let short = clear(&first);
     if short >= 0.0 || short.is_nan() {
-        return first;
+        return Some(first);
     }
     let skyline = bisect_steps(SKYLINE, SKYLINE_LOWEST, SKYLINE_STEPS, |s| clear(&shot(s)));
-    shot(skyline)
+    let lowered = shot(skyline);
+    let tallest = tops.iter().map(|p| p.z).fold(0.0, f32::max);
+    // Land that still rises out of the top of the frame is cut off, which
+    // the vista accepts (its near slope is not yet all there is to see) up
+    // to a height of `VISTA_TALLEST`.
+    let fits = clear(&lowered) >= -SKY_ROOM || tallest <= VISTA_TALLEST * extent;
+    fits.then_some(lowered)
 }
 
 /// The vista for a grid `extent` units wide in a `width` x `height` frame,

@@ -227,7 +227,8 @@ pub fn parse(pairs: &[(String, String)], path: &Path) -> Result<Metadata, Height
         match v.parse::<u64>() {
             Ok(seed) => meta.seed = Some(seed),
             Err(_) => meta.notes.push(format!(
-                "{KEY_SEED}: {v:?} is not a whole number from 0 to 2^64-1; seed ignored"
+                "{KEY_SEED}: {} is not a whole number from 0 to 2^64-1; seed ignored",
+                quoted(v)
             )),
         }
     }
