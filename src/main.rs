@@ -100,6 +100,13 @@ fn main() -> ExitCode {
         }
         Mode::Settings { parent } => {
             gui_log();
+            // The saver's own check: without it winit's error names a file
+            // in its source instead of what to do.
+            #[cfg(unix)]
+            if let Err(e) = saver::libcheck::check_x11() {
+                log::warn(&e.to_string());
+                return ExitCode::FAILURE;
+            }
             mountains::settings_ui::run(inv.config.as_deref(), &loaded, *parent)
         }
         mode => run_saver(mode, loaded, open, &inv.xss),

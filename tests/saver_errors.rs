@@ -11,12 +11,13 @@ use std::process::Command;
 use xvfb::{PATIENCE, Saver, Xvfb};
 
 #[test]
-fn without_display_the_saver_says_set_display() {
+fn without_display_the_saver_and_the_settings_say_set_display() {
     for mode in [
         &["/s"][..],
         &["--window"],
         &["--root"],
         &["--window-id", "0x400001"],
+        &["--settings"],
     ] {
         let home = xvfb::TempDir::new("no-display");
         let out = Command::new(env!("CARGO_BIN_EXE_mountains"))
@@ -35,6 +36,8 @@ fn without_display_the_saver_says_set_display() {
         );
         assert!(stderr.contains("no X display"), "{mode:?}: {stderr}");
         assert!(!stderr.contains("panicked"), "{mode:?}: {stderr}");
+        // Not a path into a library's source.
+        assert!(!stderr.contains(".rs:"), "{mode:?}: {stderr}");
     }
 }
 
