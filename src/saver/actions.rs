@@ -82,10 +82,19 @@ pub fn changed_settings(action: Action, settings: &Settings) -> Option<(Settings
     Some((s, key(name).change))
 }
 
+/// What an action whose effect does not show until the next mountain did,
+/// to show over the picture for a while (`+` and `-`: the cragginess the
+/// next mountain gets); `None` for actions that show at once.
+pub fn note(action: Action, settings: &Settings) -> Option<String> {
+    matches!(action, Action::MoreCraggy | Action::LessCraggy)
+        .then(|| format!("cragginess {} for the next mountain", settings.cragginess))
+}
+
 /// The window mode's title, describing the mountain on screen: its seed (to
 /// reproduce it), the colours it is drawn in (`now`: they apply at once) and
 /// the cragginess and detail it was made with (`made_with`: those keys only
-/// shape the next mountain).
+/// shape the next mountain), with the next mountain's cragginess when `+`
+/// or `-` changed it.
 pub fn window_title(
     now: &Settings,
     made_with: &Settings,
@@ -100,6 +109,9 @@ pub fn window_title(
         ", {:?}, cragginess {}",
         now.color, made_with.cragginess
     ));
+    if now.cragginess != made_with.cragginess {
+        title.push_str(&format!(" (next {})", now.cragginess));
+    }
     if made_with.low_detail {
         title.push_str(", low detail");
     }
@@ -213,7 +225,8 @@ mod tests {
             window_title(&s, &s, None, true),
             "mountains, Sonar, cragginess 64, low detail, paused"
         );
-        // Keys for the next mountain do not describe the one on screen.
+        // Keys for the next mountain do not describe the one on screen; a
+        // cragginess changed with + or - says what the next one gets.
         let next = Settings {
             cragginess: 128,
             low_detail: false,
@@ -221,8 +234,13 @@ mod tests {
         };
         assert_eq!(
             window_title(&next, &s, Some(7), false),
-            "mountains: seed 7, Sonar, cragginess 64, low detail"
+            "mountains: seed 7, Sonar, cragginess 64 (next 128), low detail"
         );
+        assert_eq!(
+            note(Action::MoreCraggy, &next).as_deref(),
+            Some("cragginess 128 for the next mountain")
+        );
+        assert_eq!(note(Action::NextColor, &next), None);
     }
 
     #[test]

@@ -14,6 +14,8 @@ use crate::settings_ui::font::{self, ADVANCE, GLYPH_H, GLYPH_W};
 const WINDOW: Duration = Duration::from_secs(1);
 /// How long the list of keys stays up unless H hides it first.
 pub const HELP_FOR: Duration = Duration::from_secs(10);
+/// How long a note about a key's effect (`+`: cragginess 128 next) stays up.
+pub const NOTE_FOR: Duration = Duration::from_secs(3);
 /// Pixels between the text and the edges of its box.
 const MARGIN: u32 = 4;
 const INK: u32 = 0x00ff_ffff;
@@ -26,6 +28,8 @@ pub struct Overlay {
     frames: Option<VecDeque<Instant>>,
     /// Until when the list of keys is up.
     help_until: Option<Instant>,
+    /// A line saying what a key just did, and until when it is up.
+    note: Option<(String, Instant)>,
     /// The picture under each box drawn, and where it was.
     under: Vec<(Rect, Vec<u32>)>,
 }
@@ -76,9 +80,18 @@ impl Overlay {
         };
     }
 
-    /// When the list of keys goes, if it is up.
+    /// Shows `line` (what a key just did) for [`NOTE_FOR`] from `now`.
+    pub fn note(&mut self, line: String, now: Instant) {
+        self.note = Some((line, now + NOTE_FOR));
+    }
+
+    /// When the next text box goes (the list of keys or a note), if one is up.
     pub fn help_ends(&self) -> Option<Instant> {
-        self.help_until
+        let note = self.note.as_ref().map(|(_, t)| *t);
+        match (self.help_until, note) {
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (a, b) => a.or(b),
+        }
     }
 
     /// Draws the boxes due at `now` (the picture under them must be lifted
@@ -86,6 +99,9 @@ impl Overlay {
     pub fn draw(&mut self, frame: &mut Frame, now: Instant) -> Rect {
         if self.help_until.is_some_and(|t| t <= now) {
             self.help_until = None;
+        }
+        if self.note.as_ref().is_some_and(|(_, t)| *t <= now) {
+            self.note = None;
         }
         let mut damage = Rect::default();
         if let Some(lines) = self.frames.as_ref().map(rate_lines) {
@@ -97,6 +113,8 @@ impl Overlay {
                 .map(|k| format!("{:<7}{}", k.label, k.doc))
                 .collect();
             damage = damage.union(&self.text_box(frame, &lines, true));
+        } else if let Some((line, _)) = self.note.clone() {
+            damage = damage.union(&self.text_box(frame, &[line], true));
         }
         damage
     }
@@ -236,6 +254,25 @@ mod tests {
 
     /// H shows the list of keys at the top left until H again or its time
     /// is up; the picture under it comes back.
+    #[test]
+    fn a_note_shows_for_a_while_then_the_picture_comes_back() {
+        let mut f = picture();
+        let before = f.clone();
+        let mut o = Overlay::new(false);
+        let t0 = Instant::now();
+        o.note("cragginess 128 next".into(), t0);
+        assert_eq!(o.help_ends(), Some(t0 + NOTE_FOR));
+        let r = o.draw(&mut f, t0);
+        assert!(!r.is_empty() && f != before, "the note is drawn");
+        o.lift(&mut f);
+        assert!(
+            o.draw(&mut f, t0 + NOTE_FOR).is_empty(),
+            "gone after NOTE_FOR"
+        );
+        assert_eq!(f, before);
+        assert_eq!(o.help_ends(), None);
+    }
+
     #[test]
     fn the_list_of_keys_comes_and_goes() {
         let mut f = Frame::new(400, 300).unwrap();

@@ -77,7 +77,12 @@ impl Screen {
     pub(super) fn act(&mut self, action: Action, now: Instant) -> Option<Rect> {
         let show = &mut self.show;
         if let Some((settings, change)) = actions::changed_settings(action, show.settings()) {
-            return Some(show.change_settings(settings, change, now));
+            let note = actions::note(action, &settings);
+            let damage = show.change_settings(settings, change, now);
+            return Some(match note {
+                Some(line) => damage.union(&show.note(line, now)),
+                None => damage,
+            });
         }
         Some(match action {
             Action::Quit => return None,

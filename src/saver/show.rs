@@ -104,6 +104,12 @@ impl Show {
         self.overlay = Overlay::new(true);
     }
 
+    /// Shows `line` (what a key just did) over the picture for a while.
+    pub fn note(&mut self, line: String, now: Instant) -> Rect {
+        self.overlay.note(line, now);
+        self.redraw_overlay(now)
+    }
+
     /// H, F1: shows the list of keys for a while, or hides it.
     pub fn toggle_help(&mut self, now: Instant) -> Rect {
         self.overlay.toggle_help(now);
