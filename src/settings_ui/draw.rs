@@ -7,7 +7,7 @@ use super::model::Model;
 use super::values::{self, Widget};
 use super::widgets::{
     ALERT, DARK, DIM, FACE, FIELD, HINT, SELECT, SELECT_TEXT, TEXT, bevel, blit, centred_text,
-    dotted, fill, fit, outline, text, tick, typed_text, wrap,
+    dotted, fill, fit, fit_middle, help_then_message, outline, text, tick, typed_text, wrap,
 };
 use crate::render::{Frame, Rect};
 use crate::settings::keys::{self, KEYS, Value};
@@ -293,20 +293,22 @@ fn draw_help(frame: &mut Frame, layout: &Layout, model: &Model, extras: &Extras<
     } else {
         TEXT
     };
-    for part in wrap(&model.message, chars) {
-        lines.push((part, alert));
-    }
     let bottom = layout.button(Button::Ok).y0 - layout.px(14);
-    for (s, color) in lines {
-        for part in wrap(&s, chars) {
-            if y + line > bottom {
-                break;
-            }
-            text(frame, layout, x, y, &part, color);
-            y += line;
-        }
+    let rows = (bottom.saturating_sub(y) / line) as usize;
+    let (help, colours): (Vec<String>, Vec<u32>) = lines.into_iter().unzip();
+    // Each help line keeps its colour through wrapping.
+    let mut coloured = Vec::new();
+    for (l, c) in help.iter().zip(&colours) {
+        coloured.extend(wrap(l, chars).into_iter().map(|part| (part, *c)));
     }
-    let file = fit(&format!("File: {}", extras.file), chars);
+    let (help, message) = help_then_message(&help, &model.message, chars, rows);
+    let shown = coloured.into_iter().take(help.len());
+    for (part, color) in shown.chain(message.into_iter().map(|m| (m, alert))) {
+        text(frame, layout, x, y, &part, color);
+        y += line;
+    }
+    // A long path keeps its file name.
+    let file = format!("File: {}", fit_middle(extras.file, chars.saturating_sub(6)));
     text(frame, layout, x, bottom + layout.px(2), &file, HINT);
 }
 
