@@ -255,6 +255,12 @@ impl ApplicationHandler<UserEvent> for App {
         let grabbing = self.grab_input();
         #[cfg(not(unix))]
         let grabbing = false;
+        // Warps and some absolute devices move the pointer without a raw
+        // event: its place is looked at on every pass and at least this often.
+        #[cfg(unix)]
+        let pointer = self.poll_pointer(event_loop, now);
+        #[cfg(not(unix))]
+        let pointer = None;
         // Wake for the earliest of: a show's next strip or slide, the
         // Windows preview's look at its parent, a retry of the input grab.
         let shows = self
@@ -262,17 +268,6 @@ impl ApplicationHandler<UserEvent> for App {
             .iter()
             .filter_map(|s| s.show.wake_at(now))
             .min();
-        // Warps and some absolute devices move the pointer without a raw
-        // event: its place is looked at ten times a second while a mountain
-        // is drawn (the loop runs then anyway), less often while one is held
-        // (each look is a round trip to the X server: ten a second held the
-        // CPU at 0.1%).
-        #[cfg(unix)]
-        let drawing = shows.is_some_and(|t| t <= now + super::input::POINTER_POLL);
-        #[cfg(unix)]
-        let pointer = self.poll_pointer(event_loop, now, drawing);
-        #[cfg(not(unix))]
-        let pointer = None;
         #[cfg(windows)]
         let parent =
             matches!(self.mode, AppMode::Child(_)).then(|| now + super::embed_win32::PARENT_POLL);
@@ -306,23 +301,12 @@ impl App {
     }
 
     /// Full screen on X11: looks where the pointer is if `POINTER_POLL`
-    /// has passed since the last look while `drawing` (a pass of the loop
-    /// per strip would ask the server hundreds of times a second), or
-    /// `POINTER_POLL_HELD` while a mountain is held; when to look next.
+    /// has passed since the last look (a pass of the loop per strip would
+    /// ask the server hundreds of times a second); when to look next.
     #[cfg(unix)]
-    fn poll_pointer(
-        &mut self,
-        event_loop: &ActiveEventLoop,
-        now: Instant,
-        drawing: bool,
-    ) -> Option<Instant> {
+    fn poll_pointer(&mut self, event_loop: &ActiveEventLoop, now: Instant) -> Option<Instant> {
         if now >= self.pointer_due {
-            let every = if drawing {
-                super::input::POINTER_POLL
-            } else {
-                super::input::POINTER_POLL_HELD
-            };
-            self.pointer_due = now + every;
+            self.pointer_due = now + super::input::POINTER_POLL;
             if !self.pointer_moved_x11(event_loop) {
                 return None;
             }

@@ -130,11 +130,6 @@ pub const MOTION_THRESHOLD: f64 = 10.0;
 /// motion that sends no raw event (a warp, some absolute devices).
 pub const POINTER_POLL: std::time::Duration = std::time::Duration::from_millis(100);
 
-/// How often it looks while a mountain is held and nothing else wakes it:
-/// a warp then ends the saver within this time, and holding costs no CPU
-/// that shows (keys, clicks and relative motion still end it at once).
-pub const POINTER_POLL_HELD: std::time::Duration = std::time::Duration::from_millis(750);
-
 /// Decides when raw device input ends the full-screen saver: any key or
 /// button press, a wheel turn, or net pointer travel beyond `MOTION_THRESHOLD`.
 #[derive(Debug, Clone, Default)]
