@@ -85,51 +85,6 @@ fn display_fullscreen_ends_on_a_20px_move() {
     expect_exit(&mut saver, "a 20 px move");
 }
 
-/// Absolute motion, as `xdotool mousemove`, VNC servers, virtual machines'
-/// tablet pointers and remote desktops send it (XTEST motion to a place).
-#[test]
-fn display_fullscreen_ends_on_absolute_motion() {
-    let Some((x, mut saver)) = fullscreen("fs-absolute") else {
-        return;
-    };
-    x.move_to(100, 100);
-    x.move_to(500, 400);
-    expect_exit(&mut saver, "absolute motion to another place");
-}
-
-/// `xdotool mousemove 100 100; xdotool mousemove 500 500`: a warp, which
-/// no device reports as raw motion.
-#[test]
-fn display_fullscreen_ends_on_a_warped_pointer() {
-    let Some((x, mut saver)) = fullscreen("fs-warp") else {
-        return;
-    };
-    x.warp_to(100, 100);
-    x.warp_to(500, 400);
-    expect_exit(&mut saver, "the pointer warped to another place");
-}
-
-/// The window appearing under a still pointer, and an absolute move to
-/// where the pointer already is, are no reason to wake.
-#[test]
-fn display_fullscreen_ignores_absolute_motion_to_where_the_pointer_is() {
-    let Some(x) = Xvfb::start(640, 480, &[]) else {
-        return;
-    };
-    x.move_to(300, 200);
-    let mut saver = Saver::start(&x, "fs-absolute-still", &["/s"], &[]);
-    poll(&mut saver, "a mountain on the screen", || {
-        looks_drawn(&x.grab_screen())
-    });
-    for _ in 0..5 {
-        x.move_to(300, 200);
-        x.move_to(302, 201);
-        std::thread::sleep(Duration::from_millis(50));
-    }
-    std::thread::sleep(Duration::from_millis(700));
-    saver.assert_running();
-}
-
 #[test]
 fn display_fullscreen_ignores_a_3px_jitter() {
     let Some((x, mut saver)) = fullscreen("fs-jitter") else {

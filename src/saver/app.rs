@@ -97,8 +97,6 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
         started: false,
         #[cfg(unix)]
         grab: None,
-        #[cfg(unix)]
-        pointer_due: Instant::now(),
     };
     event_loop
         .run_app(&mut app)
@@ -135,9 +133,6 @@ struct App {
     /// Full screen on X11: the keyboard and pointer grab, until it holds.
     #[cfg(unix)]
     grab: Option<super::grab_x11::InputGrab>,
-    /// Full screen on X11: when to look where the pointer is next.
-    #[cfg(unix)]
-    pointer_due: Instant,
 }
 
 impl ApplicationHandler<UserEvent> for App {
@@ -206,14 +201,6 @@ impl ApplicationHandler<UserEvent> for App {
     }
 
     fn device_event(&mut self, event_loop: &ActiveEventLoop, _: DeviceId, event: DeviceEvent) {
-        #[cfg(unix)]
-        if let (AppMode::Fullscreen, DeviceEvent::MouseMotion { .. }) = (self.mode, &event) {
-            // Raw motion from an absolute device carries its coordinates,
-            // not a delta: it only says "look where the pointer is now".
-            if self.pointer_moved_x11(event_loop) {
-                return;
-            }
-        }
         #[cfg(windows)]
         if let (AppMode::Fullscreen, DeviceEvent::MouseMotion { .. }) = (self.mode, &event) {
             // winit passes absolute devices' coordinates on as deltas, and
@@ -255,12 +242,6 @@ impl ApplicationHandler<UserEvent> for App {
         let grabbing = self.grab_input();
         #[cfg(not(unix))]
         let grabbing = false;
-        // Warps and some absolute devices move the pointer without a raw
-        // event: its place is looked at on every pass and at least this often.
-        #[cfg(unix)]
-        let pointer = self.poll_pointer(event_loop, now);
-        #[cfg(not(unix))]
-        let pointer = None;
         // Wake for the earliest of: a show's next strip or slide, the
         // Windows preview's look at its parent, a retry of the input grab.
         let shows = self
@@ -274,7 +255,7 @@ impl ApplicationHandler<UserEvent> for App {
         #[cfg(not(windows))]
         let parent = None;
         let grab = grabbing.then(|| now + super::slideshow::FRAME_INTERVAL);
-        let wake = [shows, parent, grab, pointer].into_iter().flatten().min();
+        let wake = [shows, parent, grab].into_iter().flatten().min();
         event_loop.set_control_flow(wake.map_or(ControlFlow::Wait, ControlFlow::WaitUntil));
     }
 }
@@ -298,38 +279,6 @@ impl App {
             }
         }
         self.grab.as_mut().is_some_and(|g| !g.try_grab())
-    }
-
-    /// Full screen on X11: looks where the pointer is if `POINTER_POLL`
-    /// has passed since the last look (a pass of the loop per strip would
-    /// ask the server hundreds of times a second); when to look next.
-    #[cfg(unix)]
-    fn poll_pointer(&mut self, event_loop: &ActiveEventLoop, now: Instant) -> Option<Instant> {
-        if now >= self.pointer_due {
-            self.pointer_due = now + super::input::POINTER_POLL;
-            if !self.pointer_moved_x11(event_loop) {
-                return None;
-            }
-        }
-        Some(self.pointer_due)
-    }
-
-    /// Full screen on X11: ends the saver if the pointer is further than
-    /// the threshold from where it first was. False when its place cannot
-    /// be asked (no grab connection yet): raw motion deltas then decide.
-    #[cfg(unix)]
-    fn pointer_moved_x11(&mut self, event_loop: &ActiveEventLoop) -> bool {
-        if self.mode != AppMode::Fullscreen {
-            return false;
-        }
-        let Some((x, y)) = self.grab.as_ref().and_then(|g| g.pointer()) else {
-            return false;
-        };
-        if self.wake.moved_to(x.into(), y.into()) {
-            self.trace.ended_by(&(x, y));
-            event_loop.exit();
-        }
-        true
     }
 
     fn fail(&mut self, event_loop: &ActiveEventLoop, error: SaverError) {
@@ -417,9 +366,6 @@ impl App {
         if self.mode != AppMode::Fullscreen || old.len() != self.screens.len() {
             return;
         }
-        // The server may have moved the pointer onto what is left: measure
-        // motion from wherever it is now.
-        self.wake.reset_origin();
         for change in heads::plan(&old, new) {
             match change {
                 Change::Fit(i, head) => self.fit(event_loop, i, head),

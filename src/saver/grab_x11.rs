@@ -35,17 +35,6 @@ impl InputGrab {
         }
     }
 
-    /// Where the pointer is on the screen (root coordinates), asked of the
-    /// server: the one witness of motion that every device gives. Raw motion
-    /// is not: an absolute device (XTEST, a VNC server, a virtual machine's
-    /// tablet) reports its coordinates as raw "deltas", and a warp
-    /// (`xdotool mousemove`) sends no raw event at all. While our grab holds,
-    /// winit's windows get no pointer events either. `None` without a display.
-    pub fn pointer(&self) -> Option<(i16, i16)> {
-        let reply = self.conn.as_ref()?.query_pointer(self.window).ok()?;
-        reply.reply().ok().map(|r| (r.root_x, r.root_y))
-    }
-
     /// Tries the grabs that are not held yet; call again on later frames
     /// until it returns true (a window that is not yet viewable cannot grab).
     pub fn try_grab(&mut self) -> bool {

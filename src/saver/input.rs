@@ -126,10 +126,6 @@ fn action_for_char(c: char) -> Option<Action> {
 /// Small enough for a deliberate nudge, larger than a desk vibration.
 pub const MOTION_THRESHOLD: f64 = 10.0;
 
-/// How often the full-screen saver on X11 looks where the pointer is, for
-/// motion that sends no raw event (a warp, some absolute devices).
-pub const POINTER_POLL: std::time::Duration = std::time::Duration::from_millis(100);
-
 /// Decides when raw device input ends the full-screen saver: any key or
 /// button press, a wheel turn, or net pointer travel beyond `MOTION_THRESHOLD`.
 #[derive(Debug, Clone, Default)]
@@ -184,9 +180,7 @@ impl WakeDetector {
     /// the threshold from the first position seen. For platforms whose
     /// motion deltas cannot be trusted (winit on Windows reports absolute
     /// devices' coordinates as deltas: remote desktops, virtual machines,
-    /// tablets, Wine; on X11 raw motion from an absolute device, XTEST or
-    /// a VNC server, carries coordinates too, and a warp sends none), where
-    /// the cursor's position is the truth.
+    /// tablets, Wine), where the cursor's position is the truth.
     pub fn moved_to(&mut self, x: f64, y: f64) -> bool {
         if !x.is_finite() || !y.is_finite() {
             return false;
