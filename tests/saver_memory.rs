@@ -4,46 +4,17 @@
 //! where the frame and the window's image take 33 MB each). Measured by a
 //! counting allocator, so the bound holds on any machine and at any speed.
 
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
 use mountains::saver::show::Show;
 use mountains::saver::slideshow::Pacing;
 use mountains::settings::Settings;
 
-/// The system allocator, counting live bytes and their peak.
-struct Counting;
-
-static LIVE: AtomicUsize = AtomicUsize::new(0);
-static PEAK: AtomicUsize = AtomicUsize::new(0);
-
-// SAFETY: every call is forwarded unchanged to the system allocator; the
-// counters only observe sizes.
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        let live = LIVE.fetch_add(layout.size(), Ordering::SeqCst) + layout.size();
-        PEAK.fetch_max(live, Ordering::SeqCst);
-        // SAFETY: forwarded with the caller's layout.
-        unsafe { System.alloc(layout) }
-    }
-
-    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
-        let live = LIVE.fetch_add(layout.size(), Ordering::SeqCst) + layout.size();
-        PEAK.fetch_max(live, Ordering::SeqCst);
-        // SAFETY: forwarded with the caller's layout.
-        unsafe { System.alloc_zeroed(layout) }
-    }
-
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        LIVE.fetch_sub(layout.size(), Ordering::SeqCst);
-        // SAFETY: `ptr` came from `alloc` with this layout.
-        unsafe { System.dealloc(ptr, layout) }
-    }
-}
+#[path = "common/counting.rs"]
+mod counting;
 
 #[global_allocator]
-static ALLOCATOR: Counting = Counting;
+static ALLOCATOR: counting::Counting = counting::Counting;
 
 /// The one test of this file: the counters are the whole process's.
 #[test]
@@ -58,8 +29,7 @@ fn a_4k_slide_show_holds_one_field_beside_its_frame() {
     let t0 = Instant::now();
     let at = |ms: u64| t0 + Duration::from_millis(ms);
     let pacing = Pacing::from_seconds(1.0, 2.0, true);
-    let before = LIVE.load(Ordering::SeqCst);
-    PEAK.store(before, Ordering::SeqCst);
+    let before = counting::reset_peak();
     let mut show = Show::new(settings, None, pacing, (3840, 2160), t0);
     assert_eq!(
         show.current().map(|m| m.field.size()),
@@ -71,7 +41,7 @@ fn a_4k_slide_show_holds_one_field_beside_its_frame() {
     assert!(show.tick(at(2000)).is_empty(), "not held");
     // The end of the hold waits for it, then draws the next slide's first strips.
     assert!(!show.tick(at(3100)).is_empty(), "the show did not move on");
-    let peak = PEAK.load(Ordering::SeqCst) - before;
+    let peak = counting::peak() - before;
     assert!(
         peak >= frame_bytes + field_bytes,
         "the count missed the frame or the field: {peak} bytes"

@@ -1,6 +1,9 @@
 //! Saving preferences: only edited values change, comments and unknown keys
 //! stay, broken files are never overwritten, every value is checked.
 
+#[path = "common/files.rs"]
+mod files;
+use files::replace_keeping_mtime;
 use std::path::{Path, PathBuf};
 
 use mountains::settings::Detail;
@@ -243,22 +246,6 @@ fn the_advice_after_a_failed_save_follows_its_cause() {
         ..full
     };
     assert!(read_only.advice().contains("writable"));
-}
-
-/// Puts `text` in place of the file the way another program would: a new
-/// file renamed over it, keeping the old modification time (as `cp -p` or
-/// `rsync -t` do), so only the content says that it changed.
-fn replace_keeping_mtime(path: &Path, text: &str) {
-    let mtime = std::fs::metadata(path).unwrap().modified().unwrap();
-    let tmp = path.with_extension("other");
-    std::fs::write(&tmp, text).unwrap();
-    std::fs::File::options()
-        .write(true)
-        .open(&tmp)
-        .unwrap()
-        .set_modified(mtime)
-        .unwrap();
-    std::fs::rename(&tmp, path).unwrap();
 }
 
 fn key(name: &str) -> &'static mountains::settings::keys::Key {

@@ -2,6 +2,9 @@
 //! table, slider steps, OK/Cancel/Defaults, mouse hit-testing at 1x and 2x,
 //! and the drawn screen.
 
+#[path = "common/files.rs"]
+mod files;
+use files::replace_keeping_mtime;
 use std::path::{Path, PathBuf};
 
 use mountains::render::Rect;
@@ -717,21 +720,6 @@ fn the_editor_command_takes_arguments_and_any_path() {
         "xdg-open"
     );
     let _ = std::fs::remove_dir_all(&dir);
-}
-
-/// Replaces the file as another program would (a new file renamed over
-/// it), with the old modification time kept, as `cp -p` or `rsync -t` do.
-fn replace_keeping_mtime(path: &Path, text: &str) {
-    let mtime = std::fs::metadata(path).unwrap().modified().unwrap();
-    let tmp = path.with_extension("other");
-    std::fs::write(&tmp, text).unwrap();
-    std::fs::File::options()
-        .write(true)
-        .open(&tmp)
-        .unwrap()
-        .set_modified(mtime)
-        .unwrap();
-    std::fs::rename(&tmp, path).unwrap();
 }
 
 #[test]

@@ -157,13 +157,11 @@ impl<'a> Scene<'a> {
             .then(|| Haze::new(palette.sky().1));
         let ripples = (haze.is_some() && !palette.lighting().classic)
             .then(|| Ripples::new(palette.sky().1, &field));
-        let smooth = settings.shading == Shading::Smooth
-            && style == Style::Shaded
-            && settings.view != ViewKind::Oblique
-            && !palette.lighting().classic;
+        // The looks with depth in colour; the classic looks keep their pixels.
         let clean_edges = style == Style::Shaded
             && settings.view != ViewKind::Oblique
             && !palette.lighting().classic;
+        let smooth = clean_edges && settings.shading == Shading::Smooth;
         let normals = smooth.then(|| Normals::new(size, &rows, view.cell()));
         let eye = view.camera_ground().filter(|_| smooth);
         let cells = size - 1;

@@ -206,31 +206,26 @@ impl Scene<'_> {
                         self.fill_land(canvas, part, || normal, lit);
                     };
                 };
+                if !water && faces_away([part[0].p, part[1].p, part[2].p]) {
+                    return;
+                }
                 // The part across the shore line from this one.
                 let across = parts[if i == 0 { 2 } else { 0 }];
-                let (own, other) = if water {
-                    (
-                        self.water_colour(&part),
-                        self.land_colour(&across, normal, lit),
-                    )
-                } else if faces_away([part[0].p, part[1].p, part[2].p]) {
-                    return;
-                } else {
-                    (
-                        self.land_colour(&part, normal, lit),
-                        self.water_colour(&across),
-                    )
-                };
-                let smooth = self.smooth();
-                let blend = (smooth && !water)
-                    .then(|| Blend::new(part.map(|k| k.p), part.map(|k| k.colour)));
                 self.paint_pixels(canvas, part.map(|k| k.p), || {
+                    let (own, other) = if water {
+                        (
+                            Side::One(self.water_colour(&part)),
+                            self.land_side(&across, normal, lit),
+                        )
+                    } else {
+                        (
+                            self.land_side(&part, normal, lit),
+                            Side::One(self.water_colour(&across)),
+                        )
+                    };
                     move |x, y| {
-                        let (own, other) = match &blend {
-                            Some(b) => (b.at(&b.row(y), x), other),
-                            None if water && smooth => (own, coast.land_at(x, y)),
-                            None => (own, other),
-                        };
+                        let (own, other) =
+                            (own.at(x, y, coast, false), other.at(x, y, coast, true));
                         blend_packed(own, other, coast.weight(x, y))
                     }
                 });
@@ -283,20 +278,24 @@ impl Scene<'_> {
         });
     }
 
-    /// The one colour of a land face (flat shading; under smooth shading the
-    /// colours its corners blend from near the shore line).
+    /// The one colour of a land face (flat shading).
     fn land_colour(&self, c: &Face, normal: Vec3, lit: f32) -> u32 {
-        if self.smooth() {
-            return mix_packed(
-                mix_packed(c[0].colour, c[1].colour, 0.5),
-                c[2].colour,
-                1.0 / 3.0,
-            );
-        }
         let mean = (c[0].h + c[1].h + c[2].h) / 3.0;
         let sky = (c[0].sky + c[1].sky + c[2].sky) / 3.0;
         let land = self.palette.land_in(mean.max(0.0), normal, lit, sky);
         self.hazed_face(land, c)
+    }
+
+    /// How the land part `c` of a face crossing the shore is coloured next
+    /// to the shore line: its corners blended (smooth shading, where the
+    /// land beside a water pixel is the shore line's own colour), or one
+    /// colour.
+    fn land_side(&self, c: &Face, normal: Vec3, lit: f32) -> Side {
+        if self.smooth() {
+            Side::Plane(Blend::new(c.map(|k| k.p), c.map(|k| k.colour)))
+        } else {
+            Side::One(self.land_colour(c, normal, lit))
+        }
     }
 
     fn fill_water(&self, canvas: &mut Canvas, c: Face) {
@@ -424,6 +423,28 @@ impl Scene<'_> {
                     BLACK
                 }
             }),
+        }
+    }
+}
+
+/// How one side of a shore line is coloured at a pixel.
+enum Side {
+    /// One colour (water; land under flat shading).
+    One(u32),
+    /// The side's own corners blended (land under smooth shading); for a
+    /// pixel across the line, the land's colour on the line itself.
+    Plane(Blend),
+}
+
+impl Side {
+    /// The colour at pixel (`x`, `y`), which lies on this side of `coast`
+    /// or `across` it.
+    #[inline]
+    fn at(&self, x: u32, y: u32, coast: &ShoreLine, across: bool) -> u32 {
+        match self {
+            Side::One(c) => *c,
+            Side::Plane(_) if across => coast.land_at(x, y),
+            Side::Plane(b) => b.at(&b.row(y), x),
         }
     }
 }
