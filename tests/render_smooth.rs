@@ -145,3 +145,66 @@ fn a_slanted_skyline_is_mixed_from_sky_and_land() {
         "{mixed} of {columns} skyline columns mix sky and land: a staircase"
     );
 }
+
+/// The green channel of a packed colour.
+fn green(c: u32) -> f32 {
+    ((c >> 8) & 0xff) as f32
+}
+
+/// Whether packed colour `c` is clearly green (near land here).
+fn greenish(c: u32) -> bool {
+    green(c) > ((c >> 16) & 0xff) as f32 + 20.0
+}
+
+/// A near ridge whose crest climbs from left to right, in front of a
+/// valley and a far, higher plateau: the ridge's crest is drawn against the
+/// plateau's face, land against farther land.
+fn ridge_before_a_plateau(u: f32, v: f32) -> f32 {
+    if v < 0.35 {
+        70.0
+    } else if v < 0.6 {
+        4.0
+    } else {
+        let crest = 12.0 + 30.0 * u;
+        4.0 + (crest - 4.0) * (1.0 - ((v - 0.75) / 0.15).abs()).max(0.0)
+    }
+}
+
+#[test]
+fn a_crest_against_farther_land_is_mixed_not_a_staircase() {
+    let f = field(6, ridge_before_a_plateau);
+    let (frame, classes) = drawn(&f, &settings(Shading::Smooth));
+    if let Some(path) = std::env::var_os("MOUNTAINS_DUMP_CREST") {
+        mountains::snapshot::write_png(std::path::Path::new(&path), &frame).unwrap();
+    }
+    let w = W as usize;
+    let (mut columns, mut mixed) = (0, 0);
+    for x in 8..w - 8 {
+        let land = |y: usize| classes[y * w + x] == Class::Land;
+        let px = |y: usize| frame.get(x as u32, y as u32);
+        // The crest: the first row of the green ridge below the grey
+        // plateau, with plateau three rows above it.
+        let Some(t) = (3..H as usize - 2).find(|&y| land(y - 3) && greenish(px(y))) else {
+            continue;
+        };
+        let (far, near) = (green(px(t - 3)), green(px(t + 1)));
+        if near - far < 20.0 || greenish(px(t - 3)) {
+            continue;
+        }
+        columns += 1;
+        // A staircase goes from plateau to ridge in one row; an edge pixel
+        // mixed from both lies between them.
+        let between = |y: usize| {
+            let f = (green(px(y)) - far) / (near - far);
+            (0.15..0.85).contains(&f)
+        };
+        if between(t - 1) || between(t) {
+            mixed += 1;
+        }
+    }
+    assert!(columns > 80, "only {columns} columns with a crest measured");
+    assert!(
+        mixed * 3 >= columns,
+        "{mixed} of {columns} crest columns mix near and far land: a staircase"
+    );
+}

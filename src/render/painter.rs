@@ -8,7 +8,8 @@ use super::order::bands;
 use super::order::walk::{Rows, draw_strips};
 use super::ridges::Ridges;
 use super::scan::canvas::Canvas;
-use super::scan::skyline;
+use super::scan::clean::clean_edges;
+use super::scan::horizon::HorizonSweep;
 use super::scene::{FieldRef, Scene};
 use crate::settings::{ColorMode, Settings};
 use crate::terrain::Heightfield;
@@ -26,7 +27,9 @@ pub struct Painter {
 
 /// What the strips are made of.
 enum How {
-    Mesh(Box<Scene<'static>>, Rows),
+    /// The scene, its rows as projected last, and the horizon swept
+    /// along with the strips (for the clean edges drawn at the end).
+    Mesh(Box<Scene<'static>>, Rows, Option<Box<HorizonSweep>>),
     Ridges(Ridges),
     /// Every one of this many strips drawn: the scene is let go (its share
     /// of the field, its shadow and sky-light maps), as nothing draws again.
@@ -39,10 +42,9 @@ impl Painter {
         let how = if settings.color == ColorMode::Ridges {
             How::Ridges(Ridges::new(&field, settings, width, height))
         } else {
-            How::Mesh(
-                Box::new(Scene::new(FieldRef::Shared(field), settings, width, height)),
-                Rows::new(),
-            )
+            let scene = Scene::new(FieldRef::Shared(field), settings, width, height);
+            let sweep = scene.clean_edges.then(|| Box::new(HorizonSweep::new(width)));
+            How::Mesh(Box::new(scene), Rows::new(), sweep)
         };
         Painter {
             width,
@@ -55,7 +57,7 @@ impl Painter {
     /// How many strips the whole mountain takes.
     pub fn strips_total(&self) -> usize {
         match &self.how {
-            How::Mesh(scene, _) => scene.strips(),
+            How::Mesh(scene, ..) => scene.strips(),
             How::Ridges(r) => r.strips_total(),
             How::Drawn(strips) => *strips,
         }
@@ -92,16 +94,24 @@ impl Painter {
     /// [`Painter::step`]'s drawing of strips `start..end`.
     fn draw(&mut self, frame: &mut Frame, start: usize, end: usize) -> Damage {
         match &mut self.how {
-            How::Mesh(scene, rows) => {
+            How::Mesh(scene, rows, sweep) => {
                 let mut canvas = Canvas::new(frame.pixels_mut(), self.width, 0);
                 if start == 0 {
                     scene.sky.paint(&mut canvas);
                 }
                 draw_strips(scene, &mut canvas, rows, start..end, self.width);
                 let mut damage = canvas.damage();
-                if end == scene.strips() && scene.clean_edges {
+                if let Some(sweep) = sweep {
+                    // Front to back while the strips go back to front: the
+                    // same share of rows as of strips, so no step stalls.
+                    sweep.advance_to(scene, end as f32 / scene.strips() as f32);
+                }
+                if end == scene.strips()
+                    && let Some(sweep) = sweep.take()
+                {
                     // The full frame's last touch, once every strip is in.
-                    for r in skyline::smooth(frame, &scene.sky, &scene.back_edge()).rects() {
+                    let horizon = sweep.finish(scene);
+                    for r in clean_edges(scene, &horizon, frame).rects() {
                         damage.add(r);
                     }
                 }
@@ -138,7 +148,7 @@ impl Painter {
     pub fn finish(&mut self, frame: &mut Frame) -> Rect {
         let size_fits = frame.width() == self.width && frame.height() == self.height;
         match &self.how {
-            How::Mesh(scene, _) if self.next == 0 && size_fits => {
+            How::Mesh(scene, ..) if self.next == 0 && size_fits => {
                 bands::render(scene, frame);
                 self.next = self.strips_total();
                 self.let_go_when_done();

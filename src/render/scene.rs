@@ -270,27 +270,6 @@ impl<'a> Scene<'a> {
         }
     }
 
-    /// The back edge as drawn (the farthest grid row, land at its height,
-    /// water at sea level), in screen pixels, left to right: the skyline
-    /// pass takes it as the exact edge where the skyline is that row.
-    pub(crate) fn back_edge(&self) -> Vec<[f32; 2]> {
-        let row = self.field.row(0);
-        let mut points: Vec<[f32; 2]> = (0..row.len())
-            .map(|x| {
-                let p = self.view.project(x as f32, 0.0, finite(row[x]).max(0.0));
-                [p.x, p.y]
-            })
-            .collect();
-        if points
-            .first()
-            .zip(points.last())
-            .is_some_and(|(a, b)| a[0] > b[0])
-        {
-            points.reverse();
-        }
-        points
-    }
-
     /// Fixed-point screen position of a point between grid points, at sea level.
     pub(crate) fn project_sea(&self, g: Vec2) -> Fixed2 {
         let p = self.view.project(g.x, g.y, 0.0);

@@ -12,7 +12,8 @@ use std::sync::Mutex;
 use super::walk::{Rows, draw_strips};
 use crate::render::frame::Frame;
 use crate::render::scan::canvas::Canvas;
-use crate::render::scan::skyline;
+use crate::render::scan::clean::clean_edges;
+use crate::render::scan::horizon::Horizon;
 use crate::render::scene::Scene;
 
 /// Most threads used; more bands would mostly repeat per-strip work.
@@ -88,13 +89,26 @@ impl<'f> Columns<'f> {
 
 /// Draws the sky and every strip of `scene` into `frame`, on all cores.
 pub(crate) fn render(scene: &Scene, frame: &mut Frame) {
-    draw_bands(scene, frame);
-    if scene.clean_edges {
-        skyline::smooth(frame, &scene.sky, &scene.back_edge());
+    if !scene.clean_edges {
+        draw_bands(scene, frame);
+        return;
+    }
+    // The horizon needs only the scene: it is swept while the bands draw.
+    let width = frame.width();
+    let horizon = std::thread::scope(|s| {
+        let sweep = s.spawn(|| Horizon::sweep(scene, width));
+        draw_bands(scene, frame);
+        sweep.join()
+    });
+    match horizon {
+        Ok(horizon) => {
+            clean_edges(scene, &horizon, frame);
+        }
+        Err(panic) => std::panic::resume_unwind(panic),
     }
 }
 
-/// [`render`]'s drawing, the skyline left as drawn.
+/// [`render`]'s drawing, the edges left as drawn.
 fn draw_bands(scene: &Scene, frame: &mut Frame) {
     let width = frame.width();
     let threads = std::thread::available_parallelism()

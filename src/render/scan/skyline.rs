@@ -21,8 +21,7 @@ use crate::render::frame::{Frame, Rect};
 use crate::render::shade::colour::blend_packed;
 use crate::render::shade::sky::Sky;
 
-/// Places across a pixel's width where the edge's height is read.
-const SAMPLES: usize = 4;
+use super::horizon::{Edge, SAMPLES};
 
 /// A run of columns whose land starts at the same row.
 #[derive(Clone, Copy)]
@@ -42,29 +41,41 @@ impl Run {
 }
 
 /// Mixes the pixels along the skyline of a complete `frame` whose sky is
-/// `sky`; returns the pixels it changed. `back` is the land's back edge as
-/// drawn, a polyline of screen points left to right: where a column's top
-/// is that edge's, the edge is known exactly and taken as it is (the sea's
-/// far edge is a straight line that no staircase can tell the height of).
-pub(crate) fn smooth(frame: &mut Frame, sky: &Sky, back: &[[f32; 2]]) -> Damage {
+/// `sky`; returns the pixels it changed and each column's first row of
+/// land. `exact` is the land's top edge as the mesh draws it, per column
+/// where it is known: where a column's top is where that edge puts it, the
+/// edge is taken as it is (a straight sea horizon or a peak narrower than
+/// a pixel has no staircase to tell its height by).
+pub(crate) fn smooth(frame: &mut Frame, sky: &Sky, exact: &[Option<Edge>]) -> (Damage, Vec<u32>) {
     let tops = land_tops(frame, sky);
     let runs = runs_of(&tops, frame.height());
-    let exact = exact_edge(back, &tops);
+    let exact: Vec<Option<Edge>> = (0..tops.len())
+        .map(|x| {
+            exact
+                .get(x)
+                .copied()
+                .flatten()
+                .filter(|e| agrees(e, tops[x]))
+        })
+        .collect();
     let (mut middles, level) = middles(&runs, tops.len());
     for (x, e) in exact.iter().enumerate() {
         if let Some(e) = e {
-            middles[x] = (e[1] + e[2]) / 2.0;
+            middles[x] = e.centre;
         }
     }
     let mut damage = Damage::default();
     for run in &runs {
         for x in run.x0..=run.x1 {
-            let edge: [f32; SAMPLES] = exact[x as usize].unwrap_or_else(|| {
-                std::array::from_fn(|k| {
-                    let at = (k as f32 + 0.5) / SAMPLES as f32;
-                    edge_in(&middles, &level, x as usize, at)
-                })
-            });
+            let edge: [f32; SAMPLES] = exact[x as usize].map_or_else(
+                || {
+                    std::array::from_fn(|k| {
+                        let at = (k as f32 + 0.5) / SAMPLES as f32;
+                        edge_in(&middles, &level, x as usize, at)
+                    })
+                },
+                |e| e.samples,
+            );
             if let Some(rows) = mix_column(frame, sky, x, run.top, &edge) {
                 damage.add(Rect {
                     x0: x,
@@ -75,7 +86,13 @@ pub(crate) fn smooth(frame: &mut Frame, sky: &Sky, back: &[[f32; 2]]) -> Damage 
             }
         }
     }
-    damage
+    (damage, tops)
+}
+
+/// Whether `edge` puts a column's first row of land at `top`: the first
+/// pixel centre below the edge's centre.
+fn agrees(edge: &Edge, top: u32) -> bool {
+    (edge.centre - 0.5).ceil() == top as f32
 }
 
 /// The edge's height at the middle of each column (NaN where the column
@@ -122,40 +139,6 @@ fn edge_in(middles: &[f32], level: &[bool], x: usize, at: f32) -> f32 {
         Some(&o) if !o.is_nan() => own + (o - own) * t,
         _ => own,
     }
-}
-
-/// The back edge's height at each column's samples, where the column's top
-/// is where that edge puts it (its middle's centre is the first below the
-/// edge); `None` elsewhere.
-fn exact_edge(back: &[[f32; 2]], tops: &[u32]) -> Vec<Option<[f32; SAMPLES]>> {
-    let mut segment = 0;
-    // The edge's height at screen x, walking the polyline left to right.
-    let mut height_at = |sx: f32| {
-        while segment + 1 < back.len() && back[segment + 1][0] < sx {
-            segment += 1;
-        }
-        let (&[x0, y0], &[x1, y1]) = (back.get(segment)?, back.get(segment + 1)?);
-        let inside = x1 > x0 && sx >= x0 && sx <= x1 && y0.is_finite() && y1.is_finite();
-        inside.then(|| y0 + (y1 - y0) * (sx - x0) / (x1 - x0))
-    };
-    let mut out = vec![None; tops.len()];
-    for (x, slot) in out.iter_mut().enumerate() {
-        let mut e = [0.0; SAMPLES];
-        let mut known = true;
-        for (k, v) in e.iter_mut().enumerate() {
-            match height_at(x as f32 + (k as f32 + 0.5) / SAMPLES as f32) {
-                Some(h) => *v = h,
-                None => known = false,
-            }
-        }
-        // The middle's centre is the first below the edge: the column's
-        // top is this edge's.
-        let middle = (e[1] + e[2]) / 2.0;
-        if known && (middle - 0.5).ceil() == tops[x] as f32 {
-            *slot = Some(e);
-        }
-    }
-    out
 }
 
 /// The first row of each column that is not the sky (the height when the
@@ -279,6 +262,15 @@ mod tests {
         f
     }
 
+    /// A level edge at height `y` known across `width` columns.
+    fn level(y: f32, width: usize) -> Vec<Option<Edge>> {
+        let edge = Edge {
+            samples: [y; SAMPLES],
+            centre: y,
+        };
+        vec![Some(edge); width]
+    }
+
     fn sky() -> Sky {
         Sky::new(0x0000_0080, 0x0080_00ff, 40.0)
     }
@@ -295,7 +287,7 @@ mod tests {
         let sky = sky();
         let mut f = framed(&tops, 30, &sky);
         let before = f.clone();
-        let damage = smooth(&mut f, &sky, &[]);
+        let (damage, _) = smooth(&mut f, &sky, &[]);
         assert!(!damage.is_empty());
         // Above each run's right half a pixel of sky takes some land, more
         // the nearer the step: a blend, not a stair.
@@ -336,8 +328,7 @@ mod tests {
         let tops = vec![20u32; 16];
         let sky = sky();
         let mut f = framed(&tops, 30, &sky);
-        let back = [[0.0, 19.75], [16.0, 19.75]];
-        smooth(&mut f, &sky, &back);
+        smooth(&mut f, &sky, &level(19.75, 16));
         for x in 0..16 {
             let want = blend_packed(sky.colour(x, 19), LAND, 64);
             assert_eq!(f.get(x, 19), want, "column {x}");
@@ -346,8 +337,29 @@ mod tests {
         // An edge the tops contradict (the land's top is not where it says)
         // is not taken.
         let mut g = framed(&tops, 30, &sky);
-        smooth(&mut g, &sky, &[[0.0, 12.3], [16.0, 12.3]]);
+        smooth(&mut g, &sky, &level(12.3, 16));
         assert_eq!(g.get(5, 19), sky.colour(5, 19));
+    }
+
+    #[test]
+    fn a_peak_narrower_than_a_pixel_known_exactly_is_faint() {
+        // The drawn tip is a whole column from row 12; the mesh says only a
+        // quarter of that column's width rises above row 20.
+        let mut tops = vec![20u32; 16];
+        tops[8] = 12;
+        let sky = sky();
+        let mut f = framed(&tops, 30, &sky);
+        let mut exact = vec![None; 16];
+        exact[8] = Some(Edge {
+            samples: [20.0, 20.0, 12.0, 20.0],
+            centre: 12.0,
+        });
+        smooth(&mut f, &sky, &exact);
+        for y in 12..20 {
+            let want = blend_packed(sky.colour(8, y), LAND, 64);
+            assert_eq!(f.get(8, y), want, "row {y}: a quarter land");
+        }
+        assert_eq!(f.get(8, 20), LAND);
     }
 
     #[test]
@@ -356,7 +368,7 @@ mod tests {
         let tops = vec![30u32; 10];
         let mut f = framed(&tops, 30, &sky);
         let before = f.clone();
-        assert!(smooth(&mut f, &sky, &[]).is_empty());
+        assert!(smooth(&mut f, &sky, &[]).0.is_empty());
         assert_eq!(f.pixels(), before.pixels());
     }
 }
