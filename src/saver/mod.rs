@@ -18,7 +18,10 @@
 pub mod actions;
 pub mod app;
 #[cfg(unix)]
+pub mod backend;
+#[cfg(unix)]
 pub mod bands_x11;
+mod buffer_history;
 #[cfg(windows)]
 pub mod embed_win32;
 #[cfg(unix)]
@@ -125,6 +128,7 @@ fn check_library(library: &str, package: &str) -> Result<(), SaverError> {
         return Ok(());
     }
     Err(SaverError::MissingLibrary {
+        system: "X",
         library: library.into(),
         package: package.into(),
     })
