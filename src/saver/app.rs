@@ -58,6 +58,23 @@ enum UserEvent {
 pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Result<(), SaverError> {
     #[cfg(unix)]
     let backend = super::libcheck::check_display(super::options::x_display_named())?;
+    #[cfg(target_os = "linux")]
+    let _claim = match mode {
+        AppMode::Fullscreen => match super::single::claim(backend) {
+            Ok(Some(claim)) => Some(claim),
+            Ok(None) => {
+                crate::console::err(
+                    "mountains: a full-screen saver already runs on this display; not starting another",
+                );
+                return Ok(());
+            }
+            Err(e) => {
+                crate::log::warn(&format!("a second /s could start over this one: {e}"));
+                None
+            }
+        },
+        _ => None,
+    };
     let mut builder = EventLoop::<UserEvent>::with_user_event();
     #[cfg(windows)]
     if let AppMode::Child(_) = mode {

@@ -43,6 +43,8 @@ pub mod present;
 mod redraw;
 mod screen;
 pub mod show;
+#[cfg(target_os = "linux")]
+pub mod single;
 pub mod slideshow;
 pub mod source;
 mod trace;
