@@ -13,7 +13,9 @@
 //! full-screen windows after a Windows display change, `present` and
 //! `bands_x11` put frames on screen, `grab_x11` keeps input from other
 //! programs (crate::signals turns SIGTERM into a clean exit), `libcheck` names a
-//! missing X library before winit panics on it.
+//! missing X or Wayland library before winit panics on it, `backend` picks
+//! X11 or Wayland, `buffer_history` tells `present` what each buffer lacks,
+//! `single` keeps a second `/s` off a display that has one.
 
 pub mod actions;
 pub mod app;
