@@ -234,12 +234,12 @@ impl ApplicationHandler<UserEvent> for App {
             // Wayland sends no raw motion without the relative-pointer
             // protocol; the pointer's place on our window tells as well.
             WindowEvent::CursorMoved { position, .. }
-                if self.mode == AppMode::Fullscreen && self.wayland =>
+                if self.mode == AppMode::Fullscreen
+                    && self.wayland
+                    && self.wake.moved_to(position.x, position.y) =>
             {
-                if self.wake.moved_to(position.x, position.y) {
-                    self.trace.ended_by(&event);
-                    event_loop.exit()
-                }
+                self.trace.ended_by(&event);
+                event_loop.exit()
             }
             WindowEvent::MouseInput {
                 state: ElementState::Pressed,

@@ -35,7 +35,7 @@ impl BufferHistory {
     /// `bounds` in which `damage` changed since the last present; records
     /// this present. The whole frame when the buffer is new, older than
     /// what is remembered, or from before a change of size.
-    pub fn to_copy(&mut self, age: u8, bounds: Rect, damage: &Damage) -> Damage {
+    pub fn what_to_copy(&mut self, age: u8, bounds: Rect, damage: &Damage) -> Damage {
         if bounds != self.bounds {
             self.bounds = bounds;
             self.recent.clear();
@@ -80,18 +80,18 @@ mod tests {
     #[test]
     fn a_new_buffer_gets_the_whole_frame() {
         let mut h = BufferHistory::new();
-        assert_eq!(h.to_copy(0, FRAME, &strip(0)), Damage::from(FRAME));
+        assert_eq!(h.what_to_copy(0, FRAME, &strip(0)), Damage::from(FRAME));
         // Age 1 with nothing remembered: it cannot hold our last frame.
         let mut h2 = BufferHistory::new();
-        assert_eq!(h2.to_copy(1, FRAME, &strip(0)), Damage::from(FRAME));
+        assert_eq!(h2.what_to_copy(1, FRAME, &strip(0)), Damage::from(FRAME));
     }
 
     #[test]
     fn one_buffer_needs_only_the_new_damage() {
         let mut h = BufferHistory::new();
-        h.to_copy(0, FRAME, &Damage::from(FRAME));
-        assert_eq!(h.to_copy(1, FRAME, &strip(100)), strip(100));
-        assert_eq!(h.to_copy(1, FRAME, &strip(200)), strip(200));
+        h.what_to_copy(0, FRAME, &Damage::from(FRAME));
+        assert_eq!(h.what_to_copy(1, FRAME, &strip(100)), strip(100));
+        assert_eq!(h.what_to_copy(1, FRAME, &strip(200)), strip(200));
     }
 
     #[test]
@@ -99,12 +99,12 @@ mod tests {
         // Wayland: buffers A and B take turns; each present's buffer last
         // showed the frame two presents ago.
         let mut h = BufferHistory::new();
-        h.to_copy(0, FRAME, &Damage::from(FRAME)); // A
-        h.to_copy(0, FRAME, &strip(100)); // B, new: whole
-        let third = h.to_copy(2, FRAME, &strip(200)); // A again
+        h.what_to_copy(0, FRAME, &Damage::from(FRAME)); // A
+        h.what_to_copy(0, FRAME, &strip(100)); // B, new: whole
+        let third = h.what_to_copy(2, FRAME, &strip(200)); // A again
         assert!(has(&third, 200) && has(&third, 100), "A missed B's strip");
         assert!(!has(&third, 300));
-        let fourth = h.to_copy(2, FRAME, &strip(300)); // B again
+        let fourth = h.what_to_copy(2, FRAME, &strip(300)); // B again
         assert!(has(&fourth, 300) && has(&fourth, 200));
         assert!(!has(&fourth, 100), "B drew that strip itself");
     }
@@ -113,24 +113,27 @@ mod tests {
     fn a_buffer_older_than_remembered_gets_the_whole_frame() {
         let mut h = BufferHistory::new();
         for y in 0..6 {
-            h.to_copy(1, FRAME, &strip(y * 10));
+            h.what_to_copy(1, FRAME, &strip(y * 10));
         }
         let age = u8::try_from(REMEMBERED).unwrap();
-        assert_ne!(h.to_copy(age, FRAME, &strip(400)), Damage::from(FRAME));
-        assert_eq!(h.to_copy(age + 1, FRAME, &strip(410)), Damage::from(FRAME));
+        assert_ne!(h.what_to_copy(age, FRAME, &strip(400)), Damage::from(FRAME));
+        assert_eq!(
+            h.what_to_copy(age + 1, FRAME, &strip(410)),
+            Damage::from(FRAME)
+        );
     }
 
     #[test]
     fn a_new_size_forgets_what_the_buffers_held() {
         let mut h = BufferHistory::new();
-        h.to_copy(0, FRAME, &Damage::from(FRAME));
-        h.to_copy(1, FRAME, &strip(100));
+        h.what_to_copy(0, FRAME, &Damage::from(FRAME));
+        h.what_to_copy(1, FRAME, &strip(100));
         let small = Rect::sized(0, 0, 320, 240);
         // softbuffer says age 2 for a buffer it remade at the new size.
-        assert_eq!(h.to_copy(2, small, &strip(10)), Damage::from(small));
-        let next = h.to_copy(2, small, &strip(20));
+        assert_eq!(h.what_to_copy(2, small, &strip(10)), Damage::from(small));
+        let next = h.what_to_copy(2, small, &strip(20));
         assert_eq!(next, Damage::from(small), "the other buffer is remade too");
-        let then = h.to_copy(2, small, &strip(30));
+        let then = h.what_to_copy(2, small, &strip(30));
         assert!(has(&then, 30) && has(&then, 20) && !has(&then, 10));
     }
 }

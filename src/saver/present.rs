@@ -198,7 +198,7 @@ fn present_soft<W: HasWindowHandle + HasDisplayHandle>(
     if nothing && buffer.age() != 0 {
         return Ok(());
     }
-    let damage = how.history.to_copy(buffer.age(), bounds, damage);
+    let damage = how.history.what_to_copy(buffer.age(), bounds, damage);
     let rects: Vec<softbuffer::Rect> = damage
         .rects()
         .map(|r| r.intersect(&bounds))
