@@ -103,7 +103,7 @@ fn main() -> ExitCode {
             // The saver's own check: without it winit's error names a file
             // in its source instead of what to do.
             #[cfg(unix)]
-            if let Err(e) = saver::libcheck::check_x11() {
+            if let Err(e) = saver::libcheck::check_display(inv.xss.display.is_some()) {
                 log::warn(&e.to_string());
                 return ExitCode::FAILURE;
             }

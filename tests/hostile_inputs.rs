@@ -28,6 +28,8 @@ fn run(args: &[&str], home: &Path) -> Output {
         .env("XDG_CONFIG_HOME", home.join("config"))
         .env("XDG_DATA_HOME", home.join("data"))
         .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .env_remove("WAYLAND_SOCKET")
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
@@ -97,7 +99,8 @@ fn a_device_or_a_huge_file_is_not_read_into_memory() {
 /// FIFO, a device, one over 4 MiB) means the defaults, with the reason on
 /// stderr and in mountains.log, and `/dev/null` means the defaults with no
 /// word. Without a display each mode then gets as far as looking for one
-/// (exit 1, "no X display"), past the preferences (which refused: exit 2).
+/// (exit 1, "no display" or "no X display"), past the preferences (which
+/// refused: exit 2).
 #[test]
 fn the_saver_starts_on_its_defaults_when_its_preferences_cannot_be_read() {
     let dir = scratch("saver-unreadable");
@@ -124,7 +127,11 @@ fn the_saver_starts_on_its_defaults_when_its_preferences_cannot_be_read() {
             let got = run(&[mode, "--config", file], &home);
             let err = String::from_utf8_lossy(&got.stderr);
             assert_eq!(got.status.code(), Some(1), "{mode} {file}: {err}");
-            assert!(err.contains("no X display"), "{mode} {file}: {err}");
+            let no_display = match mode {
+                "/s" => "no display: set WAYLAND_DISPLAY (Wayland) or DISPLAY (X11)",
+                _ => "no X display: set DISPLAY",
+            };
+            assert!(err.contains(no_display), "{mode} {file}: {err}");
             let log = std::fs::read_to_string(home.join("data/mountains/mountains.log"))
                 .expect("mountains.log");
             if reason.is_empty() {

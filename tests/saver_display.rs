@@ -2,6 +2,8 @@
 //! Each starts its own server and binary; times are printed, not asserted.
 #![cfg(unix)]
 
+#[path = "common/headless.rs"]
+mod headless;
 #[path = "common/tools.rs"]
 mod tools;
 #[path = "common/xvfb.rs"]
@@ -9,6 +11,7 @@ mod xvfb;
 
 use std::time::{Duration, Instant};
 
+use headless::headless_render;
 use xvfb::{
     PATIENCE, Saver, TempDir, Xvfb, arg, expect_exit, looks_drawn, poll, varied, wait_for_window,
 };
@@ -352,48 +355,6 @@ fn display_window_without_auto_redraw_holds_until_n() {
     poll(&mut saver, "a new mountain after N", || {
         x.title(window) != first
     });
-}
-
-/// Decodes an 8-bit RGB PNG into 0x00RRGGBB pixels.
-fn read_rgb_png(path: &std::path::Path) -> Vec<u32> {
-    let file = std::io::BufReader::new(std::fs::File::open(path).unwrap());
-    let mut reader = png::Decoder::new(file).read_info().unwrap();
-    let mut buf = vec![0; reader.output_buffer_size().unwrap()];
-    let info = reader.next_frame(&mut buf).unwrap();
-    assert_eq!(info.color_type, png::ColorType::Rgb);
-    buf[..info.buffer_size()]
-        .chunks_exact(3)
-        .map(|c| u32::from(c[0]) << 16 | u32::from(c[1]) << 8 | u32::from(c[2]))
-        .collect()
-}
-
-/// What `mountains render` makes for seed 5 at `w` x `h`.
-fn headless_render(w: u16, h: u16) -> Vec<u32> {
-    let dir = TempDir::new(&format!("render-{w}x{h}"));
-    let png = dir.0.join("render.png");
-    let size = format!("{w}x{h}");
-    // Its output is captured: the seed line it prints is the test's own.
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_mountains"))
-        .args([
-            "render",
-            "-o",
-            arg(&png),
-            "--size",
-            &size,
-            "--set",
-            "seed=5",
-        ])
-        .env("XDG_CONFIG_HOME", dir.0.join("config"))
-        .output()
-        .unwrap();
-    let said = String::from_utf8_lossy(&out.stdout);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    assert!(said.starts_with("seed 5 -> "), "{said}");
-    read_rgb_png(&png)
 }
 
 #[test]

@@ -57,16 +57,37 @@ enum UserEvent {
 /// Runs `mode` with winit until it ends.
 pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Result<(), SaverError> {
     #[cfg(unix)]
-    super::libcheck::check_x11()?;
-    #[cfg_attr(not(windows), allow(unused_mut))]
+    let backend = super::libcheck::check_display(super::options::x_display_named())?;
+    #[cfg(target_os = "linux")]
+    let _claim = match mode {
+        AppMode::Fullscreen => match super::single::claim(backend) {
+            Ok(Some(claim)) => Some(claim),
+            Ok(None) => {
+                crate::console::err(
+                    "mountains: a full-screen saver already runs on this display; not starting another",
+                );
+                return Ok(());
+            }
+            Err(e) => {
+                crate::log::warn(&format!("a second /s could start over this one: {e}"));
+                None
+            }
+        },
+        _ => None,
+    };
     let mut builder = EventLoop::<UserEvent>::with_user_event();
     #[cfg(windows)]
     if let AppMode::Child(_) = mode {
         super::embed_win32::leave_dpi_to_the_parent(&mut builder);
     }
-    let event_loop = builder
-        .build()
-        .map_err(|e| SaverError::no_display(&e.to_string()))?;
+    #[cfg(unix)]
+    let wayland = force_backend(&mut builder, backend);
+    #[cfg(not(unix))]
+    let wayland = false;
+    let event_loop = builder.build().map_err(|e| match wayland {
+        true => SaverError::NoCompositor(e.to_string()),
+        false => SaverError::no_display(&e.to_string()),
+    })?;
     // Without a window manager our windows never get keyboard focus, so the
     // full-screen saver listens to raw device input instead.
     event_loop.listen_device_events(match mode {
@@ -80,13 +101,14 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
     .map_err(|e| SaverError::Other(format!("cannot watch for SIGTERM: {e}")))?;
     #[cfg(unix)]
     let server_heads = match mode {
-        AppMode::Fullscreen => watch_heads(&event_loop),
+        AppMode::Fullscreen if !wayland => watch_heads(&event_loop),
         _ => Vec::new(),
     };
     #[cfg(not(unix))]
     let server_heads = Vec::new();
     let mut app = App {
         mode,
+        wayland,
         settings,
         opened,
         screens: Vec::new(),
@@ -102,6 +124,23 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
         .run_app(&mut app)
         .map_err(|e| SaverError::Other(e.to_string()))?;
     app.error.map_or(Ok(()), Err)
+}
+
+/// Makes winit use `backend`, the one whose libraries were checked (winit
+/// would choose by itself, without heeding `-display`); true for Wayland.
+#[cfg(unix)]
+fn force_backend(
+    builder: &mut winit::event_loop::EventLoopBuilder<UserEvent>,
+    backend: super::backend::Backend,
+) -> bool {
+    use super::backend::Backend;
+    use winit::platform::wayland::EventLoopBuilderExtWayland;
+    use winit::platform::x11::EventLoopBuilderExtX11;
+    match backend {
+        Backend::X11 => builder.with_x11(),
+        Backend::Wayland => builder.with_wayland(),
+    };
+    backend == Backend::Wayland
 }
 
 /// X11 full screen: the server's monitors at start and, from then on,
@@ -121,6 +160,9 @@ fn watch_heads(event_loop: &EventLoop<UserEvent>) -> Vec<Head> {
 
 struct App {
     mode: AppMode,
+    /// Running on a Wayland compositor: no window positions, no grabs,
+    /// full screen is the compositor's to give.
+    wayland: bool,
     settings: Settings,
     opened: Option<Mountain>,
     screens: Vec<Screen>,
@@ -171,7 +213,7 @@ impl ApplicationHandler<UserEvent> for App {
             WindowEvent::ScaleFactorChanged {
                 mut inner_size_writer,
                 ..
-            } => {
+            } if !self.wayland => {
                 if let Some(h) = self.screens[i].head {
                     let size = PhysicalSize::new(h.width, h.height);
                     let _ = inner_size_writer.request_inner_size(size);
@@ -189,10 +231,23 @@ impl ApplicationHandler<UserEvent> for App {
             WindowEvent::CursorMoved { .. } if self.mode == AppMode::Fullscreen => {
                 self.cursor_moved_win32(event_loop);
             }
+            // Wayland sends no raw motion without the relative-pointer
+            // protocol; the pointer's place on our window tells as well.
+            WindowEvent::CursorMoved { position, .. }
+                if self.mode == AppMode::Fullscreen
+                    && self.wayland
+                    && self.wake.moved_to(position.x, position.y) =>
+            {
+                self.trace.ended_by(&event);
+                event_loop.exit()
+            }
             WindowEvent::MouseInput {
                 state: ElementState::Pressed,
                 ..
-            } if self.mode == AppMode::Fullscreen => {
+            }
+            | WindowEvent::MouseWheel { .. }
+                if self.mode == AppMode::Fullscreen =>
+            {
                 self.trace.ended_by(&event);
                 event_loop.exit()
             }
@@ -260,6 +315,19 @@ impl ApplicationHandler<UserEvent> for App {
     }
 }
 
+/// Every window's title and name: the Wayland app_id and the X11 class are
+/// "mountains", as the desktop entry is named.
+fn base_attributes() -> WindowAttributes {
+    let attrs = Window::default_attributes().with_title("mountains");
+    #[cfg(unix)]
+    let attrs = winit::platform::wayland::WindowAttributesExtWayland::with_name(
+        attrs,
+        "mountains",
+        "mountains",
+    );
+    attrs
+}
+
 impl App {
     /// Full screen: grabs keyboard and pointer for the first window; true
     /// while the grab is still being attempted.
@@ -304,7 +372,7 @@ impl App {
     }
 
     fn open_windows(&mut self, event_loop: &ActiveEventLoop) -> Result<(), SaverError> {
-        let base = Window::default_attributes().with_title("mountains");
+        let base = base_attributes();
         match self.mode {
             AppMode::Fullscreen => self.open_fullscreen(event_loop, base),
             AppMode::Preview => {
@@ -333,7 +401,7 @@ impl App {
         event_loop: &ActiveEventLoop,
         base: WindowAttributes,
     ) -> Result<(), SaverError> {
-        let found = find_heads(event_loop, &self.server_heads);
+        let found = find_heads(event_loop, &self.server_heads, self.wayland);
         if found.is_empty() {
             let attrs = base
                 .with_decorations(false)
@@ -354,7 +422,7 @@ impl App {
         monitor: Option<&MonitorHandle>,
     ) -> Result<(), SaverError> {
         let mountain = self.settings.monitors == Monitors::All || head.primary;
-        let attrs = covering(base, &head, monitor);
+        let attrs = covering(base, &head, monitor, self.wayland);
         self.add_screen(event_loop, attrs, mountain, Some(head))
     }
 
@@ -371,7 +439,7 @@ impl App {
                 Change::Fit(i, head) => self.fit(event_loop, i, head),
                 Change::Close(i) => drop(self.screens.remove(i)),
                 Change::Open(head) => {
-                    let base = Window::default_attributes().with_title("mountains");
+                    let base = base_attributes();
                     if let Err(e) = self.open_head(event_loop, base, head, None) {
                         crate::log::warn(&format!("cannot cover a new monitor: {e}"));
                     }

@@ -7,8 +7,14 @@ use std::fmt;
 pub enum SaverError {
     /// `$DISPLAY` is unset or names no reachable X server.
     NoDisplay(String),
+    /// Neither `$WAYLAND_DISPLAY` nor `$DISPLAY` is set.
+    NoWindowSystem,
+    /// `$WAYLAND_DISPLAY` names no reachable compositor.
+    NoCompositor(String),
     /// A shared library winit needs is missing.
     MissingLibrary {
+        /// The window system it belongs to: "X" or "Wayland".
+        system: &'static str,
         /// The file name, e.g. `libxkbcommon-x11.so.0`.
         library: String,
         /// The Debian/Ubuntu package that provides it.
@@ -26,9 +32,18 @@ impl fmt::Display for SaverError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             SaverError::NoDisplay(why) => write!(f, "no X display: {why}"),
-            SaverError::MissingLibrary { library, package } => {
-                write!(f, "missing X library {library}: apt-get install {package}")
-            }
+            SaverError::NoWindowSystem => f.write_str(
+                "no display: set WAYLAND_DISPLAY (Wayland) or DISPLAY (X11); neither is set",
+            ),
+            SaverError::NoCompositor(why) => write!(f, "no Wayland compositor: {why}"),
+            SaverError::MissingLibrary {
+                system,
+                library,
+                package,
+            } => write!(
+                f,
+                "missing {system} library {library}: apt-get install {package}"
+            ),
             // Both spellings: the id may have been typed in either.
             SaverError::NoSuchWindow(id) => write!(f, "there is no X window 0x{id:x} ({id})"),
             SaverError::Unsupported(what) => f.write_str(what),

@@ -1,6 +1,9 @@
-//! A friendly check for the X libraries winit loads at run time: winit
-//! panics inside its loader when one is missing, so look first and name it.
+//! A friendly check for the X and Wayland libraries winit loads at run
+//! time: winit panics inside its loader when one is missing (or says only
+//! "not available"), so look first and name it.
 
+#[cfg(unix)]
+use super::backend::{self, Backend};
 #[cfg(unix)]
 use super::error::SaverError;
 
@@ -13,6 +16,12 @@ pub const X11_LIBRARIES: &[(&str, &str)] = &[
     ("libXi.so.6", "libxi6"),
     ("libxkbcommon.so.0", "libxkbcommon0"),
     ("libxkbcommon-x11.so.0", "libxkbcommon-x11-0"),
+];
+
+/// Each library winit and softbuffer open under Wayland, and its package.
+pub const WAYLAND_LIBRARIES: &[(&str, &str)] = &[
+    ("libwayland-client.so.0", "libwayland-client0"),
+    ("libxkbcommon.so.0", "libxkbcommon0"),
 ];
 
 /// The first library in `libraries` that `can_open` cannot open, with its package.
@@ -31,14 +40,24 @@ pub fn can_dlopen(name: &str) -> bool {
     unsafe { libloading::Library::new(name).is_ok() }
 }
 
-/// `$DISPLAY` and the libraries winit loads, checked before winit panics on them.
+/// The window system the winit modes will use (X11 when `x_named`, i.e.
+/// `-display` was given, else Wayland first), after checking that its
+/// libraries can be loaded.
 #[cfg(unix)]
-pub fn check_x11() -> Result<(), SaverError> {
-    if std::env::var_os("DISPLAY").is_none_or(|d| d.is_empty()) {
-        return Err(SaverError::no_display(""));
+pub fn check_display(x_named: bool) -> Result<Backend, SaverError> {
+    let chosen = backend::from_env(x_named).ok_or(SaverError::NoWindowSystem)?;
+    match chosen {
+        Backend::X11 => check_libraries("X", X11_LIBRARIES)?,
+        Backend::Wayland => check_libraries("Wayland", WAYLAND_LIBRARIES)?,
     }
-    match first_missing(X11_LIBRARIES, can_dlopen) {
+    Ok(chosen)
+}
+
+#[cfg(unix)]
+fn check_libraries(system: &'static str, libraries: &[(&str, &str)]) -> Result<(), SaverError> {
+    match first_missing(libraries, can_dlopen) {
         Some((library, package)) => Err(SaverError::MissingLibrary {
+            system,
             library: library.into(),
             package: package.into(),
         }),
@@ -56,6 +75,7 @@ mod tests {
         assert_eq!(missing, Some(("libxkbcommon.so.0", "libxkbcommon0")));
         let (lib, pkg) = first_missing(X11_LIBRARIES, |n| n != "libxkbcommon-x11.so.0").unwrap();
         let error = SaverError::MissingLibrary {
+            system: "X",
             library: lib.into(),
             package: pkg.into(),
         };
@@ -64,6 +84,17 @@ mod tests {
             "missing X library libxkbcommon-x11.so.0: apt-get install libxkbcommon-x11-0"
         );
         assert_eq!(first_missing(X11_LIBRARIES, |_| true), None);
+        let (lib, pkg) =
+            first_missing(WAYLAND_LIBRARIES, |n| !n.starts_with("libwayland")).unwrap();
+        let error = SaverError::MissingLibrary {
+            system: "Wayland",
+            library: lib.into(),
+            package: pkg.into(),
+        };
+        assert_eq!(
+            error.to_string(),
+            "missing Wayland library libwayland-client.so.0: apt-get install libwayland-client0"
+        );
     }
 
     #[cfg(unix)]

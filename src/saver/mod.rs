@@ -13,12 +13,17 @@
 //! full-screen windows after a Windows display change, `present` and
 //! `bands_x11` put frames on screen, `grab_x11` keeps input from other
 //! programs (crate::signals turns SIGTERM into a clean exit), `libcheck` names a
-//! missing X library before winit panics on it.
+//! missing X or Wayland library before winit panics on it, `backend` picks
+//! X11 or Wayland, `buffer_history` tells `present` what each buffer lacks,
+//! `single` keeps a second `/s` off a display that has one.
 
 pub mod actions;
 pub mod app;
 #[cfg(unix)]
+pub mod backend;
+#[cfg(unix)]
 pub mod bands_x11;
+mod buffer_history;
 #[cfg(windows)]
 pub mod embed_win32;
 #[cfg(unix)]
@@ -40,6 +45,8 @@ pub mod present;
 mod redraw;
 mod screen;
 pub mod show;
+#[cfg(target_os = "linux")]
+pub mod single;
 pub mod slideshow;
 pub mod source;
 mod trace;
@@ -125,6 +132,7 @@ fn check_library(library: &str, package: &str) -> Result<(), SaverError> {
         return Ok(());
     }
     Err(SaverError::MissingLibrary {
+        system: "X",
         library: library.into(),
         package: package.into(),
     })

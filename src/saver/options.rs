@@ -14,6 +14,12 @@ pub(crate) fn set_options(xss: &XssOptions) {
     let _ = XSS.set(xss.clone());
 }
 
+/// True when `-display` named an X display for this run.
+#[cfg_attr(not(unix), allow(dead_code))]
+pub(crate) fn x_display_named() -> bool {
+    XSS.get().is_some_and(|x| x.display.is_some())
+}
+
 /// xscreensaver's common options of this run, set once by `run`.
 static XSS: std::sync::OnceLock<XssOptions> = std::sync::OnceLock::new();
 

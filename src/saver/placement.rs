@@ -9,10 +9,14 @@ use winit::window::{WindowAttributes, WindowLevel};
 use super::heads::{self, Head};
 
 /// The monitors to cover, each with winit's handle where winit knows it.
-/// The X server's own list (`server`) wins: winit lists CRTCs only.
+/// The X server's own list (`server`) wins: winit lists CRTCs only. On
+/// `wayland` the heads are in the compositor's logical pixels: there an
+/// output's physical position is its logical one times its own scale, so
+/// outputs of different scales would seem to overlap.
 pub(super) fn find_heads(
     event_loop: &ActiveEventLoop,
     server: &[Head],
+    wayland: bool,
 ) -> Vec<(Head, Option<MonitorHandle>)> {
     if !server.is_empty() {
         return server.iter().map(|h| (*h, None)).collect();
@@ -21,7 +25,12 @@ pub(super) fn find_heads(
     let monitors: Vec<(Head, MonitorHandle)> = event_loop
         .available_monitors()
         .map(|m| {
-            let (position, size) = (m.position(), m.size());
+            let (mut position, mut size) = (m.position(), m.size());
+            if wayland {
+                let scale = m.scale_factor();
+                position = position.to_logical::<i32>(scale).to_physical(1.0);
+                size = size.to_logical::<u32>(scale).to_physical(1.0);
+            }
             let head = Head {
                 x: position.x,
                 y: position.y,
@@ -44,16 +53,24 @@ pub(super) fn find_heads(
         .collect()
 }
 
-/// Window attributes covering `head` exactly, above everything else.
+/// Window attributes covering `head` exactly, above everything else. A
+/// Wayland client cannot place its windows: it asks for full screen on
+/// the monitor, and the compositor gives the window the output's size in
+/// its real pixels.
 #[cfg_attr(unix, allow(unused_variables))]
 pub(super) fn covering(
     base: WindowAttributes,
     head: &Head,
     monitor: Option<&MonitorHandle>,
+    wayland: bool,
 ) -> WindowAttributes {
     let attrs = base
         .with_decorations(false)
         .with_window_level(WindowLevel::AlwaysOnTop);
+    if wayland {
+        let on = winit::window::Fullscreen::Borderless(monitor.cloned());
+        return attrs.with_fullscreen(Some(on));
+    }
     #[cfg(windows)]
     let attrs = match monitor {
         Some(monitor) => attrs.with_fullscreen(Some(winit::window::Fullscreen::Borderless(Some(

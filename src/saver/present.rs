@@ -12,6 +12,7 @@ use crate::render::{Damage, Frame, Rect};
 
 #[cfg(unix)]
 use super::bands_x11::BandPresenter;
+use super::buffer_history::BufferHistory;
 
 /// Presents frames on one window, choosing the path that works on this server.
 pub struct Presenter<W: HasWindowHandle + HasDisplayHandle + Clone> {
@@ -25,6 +26,12 @@ pub struct Presenter<W: HasWindowHandle + HasDisplayHandle + Clone> {
     /// window, whose top byte is alpha (0 would be see-through under a
     /// compositor); 0 for a 24-bit one.
     alpha: u32,
+    /// What softbuffer's buffers still show, by age.
+    history: BufferHistory,
+    /// Wait for each present to be taken before returning (see `present_soft`);
+    /// not on Wayland, where that wait is for the compositor to release the
+    /// other buffer.
+    wait_after_present: bool,
 }
 
 /// The X11 window id behind a window handle, if it is an X11 window.
@@ -42,6 +49,7 @@ impl<W: HasWindowHandle + HasDisplayHandle + Clone> Presenter<W> {
     pub fn new(window: W) -> Result<Self, String> {
         #[cfg(unix)]
         let xid = x11_window_id(&window);
+        let wayland = is_wayland(&window);
         let surface = Context::new(window.clone())
             .and_then(|context| Surface::new(&context, window))
             .map_err(|e| e.to_string());
@@ -52,6 +60,8 @@ impl<W: HasWindowHandle + HasDisplayHandle + Clone> Presenter<W> {
             #[cfg(unix)]
             bands: None,
             alpha: 0,
+            history: BufferHistory::new(),
+            wait_after_present: !wayland,
         };
         match surface {
             Ok(surface) => {
@@ -89,7 +99,12 @@ impl<W: HasWindowHandle + HasDisplayHandle + Clone> Presenter<W> {
         let Some(surface) = self.surface.as_mut() else {
             return Err("nothing to present with".into());
         };
-        match present_soft(surface, frame, damage, self.alpha) {
+        let how = Soft {
+            alpha: self.alpha,
+            history: &mut self.history,
+            wait: self.wait_after_present,
+        };
+        match present_soft(surface, frame, damage, how) {
             Ok(()) => Ok(()),
             Err(e) => self.fall_back(frame, e.to_string()),
         }
@@ -142,6 +157,21 @@ impl<W: HasWindowHandle + HasDisplayHandle + Clone> Presenter<W> {
     }
 }
 
+/// True for a window of a Wayland compositor.
+fn is_wayland(window: &impl HasWindowHandle) -> bool {
+    window
+        .window_handle()
+        .is_ok_and(|h| matches!(h.as_raw(), raw_window_handle::RawWindowHandle::Wayland(_)))
+}
+
+/// How `present_soft` copies: the alpha to OR in, the buffers' history,
+/// whether to wait for the present to be taken.
+struct Soft<'a> {
+    alpha: u32,
+    history: &'a mut BufferHistory,
+    wait: bool,
+}
+
 /// What to OR into pixels for a window of `depth` bits so that it is opaque.
 #[cfg_attr(not(unix), allow(dead_code))]
 fn opaque_alpha(depth: u8) -> u32 {
@@ -152,7 +182,7 @@ fn present_soft<W: HasWindowHandle + HasDisplayHandle>(
     surface: &mut Surface<W, W>,
     frame: &Frame,
     damage: &Damage,
-    alpha: u32,
+    how: Soft,
 ) -> Result<(), softbuffer::SoftBufferError> {
     let (Some(w), Some(h)) = (
         NonZeroU32::new(frame.width()),
@@ -163,20 +193,18 @@ fn present_soft<W: HasWindowHandle + HasDisplayHandle>(
     surface.resize(w, h)?;
     let mut buffer = surface.buffer_mut()?;
     let bounds = frame.bounds();
-    // Age 0: the buffer is new or was not presented, so it holds nothing of ours.
-    let whole;
-    let damage = if buffer.age() == 0 {
-        whole = Damage::from(bounds);
-        &whole
-    } else {
-        damage
-    };
+    // Nothing to show: no present, so the history must not count one.
+    let nothing = damage.rects().all(|r| r.intersect(&bounds).is_empty());
+    if nothing && buffer.age() != 0 {
+        return Ok(());
+    }
+    let damage = how.history.what_to_copy(buffer.age(), bounds, damage);
     let rects: Vec<softbuffer::Rect> = damage
         .rects()
         .map(|r| r.intersect(&bounds))
         .filter(|r| !r.is_empty())
         .map(|r| {
-            copy_rect(frame, &mut buffer, r, alpha);
+            copy_rect(frame, &mut buffer, r, how.alpha);
             softbuffer::Rect {
                 x: r.x0,
                 y: r.y0,
@@ -189,6 +217,9 @@ fn present_soft<W: HasWindowHandle + HasDisplayHandle>(
         return Ok(());
     }
     buffer.present_with_damage(&rects)?;
+    if !how.wait {
+        return Ok(());
+    }
     // softbuffer's X11 backend leaves the image request in the connection's
     // output buffer until the next `buffer_mut` waits for it. On a connection
     // nobody else flushes (a foreign window's), the last frame before a hold

@@ -471,6 +471,9 @@ impl Saver {
         command
             .args(args)
             .env("DISPLAY", xvfb.display())
+            // Run on the Xvfb even inside a Wayland session.
+            .env_remove("WAYLAND_DISPLAY")
+            .env_remove("WAYLAND_SOCKET")
             .env("HOME", &home.0)
             .env("XDG_CONFIG_HOME", home.0.join("config"))
             .env("XDG_DATA_HOME", home.0.join("data"))

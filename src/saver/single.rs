@@ -1,0 +1,121 @@
+//! One full-screen saver per display: an idle daemon (swayidle, hypridle)
+//! starts `mountains /s` again at its next idle period while the first
+//! still runs. The first holds an flock on a file named after the display
+//! in `$XDG_RUNTIME_DIR`; a second finds it held and ends at once. The
+//! kernel drops the lock when its holder dies, however it dies, so a crash
+//! leaves nothing stale; the file itself is left in place (removing it
+//! would let a third copy lock a new file while the second holds the old).
+
+use std::fs::File;
+use std::path::{Path, PathBuf};
+
+use super::backend::Backend;
+
+/// The lock of this display, held while it lives.
+#[derive(Debug)]
+pub struct Claim {
+    _file: File,
+}
+
+/// The lock file's name for `backend`'s display named `display`
+/// (`wayland-1`, `:0`, or a path): characters other than letters, digits,
+/// `.`, `-` and `_` become `_`, so any value stays one file name.
+pub fn lock_name(backend: Backend, display: &str) -> String {
+    let kind = match backend {
+        Backend::X11 => "x11",
+        Backend::Wayland => "wayland",
+    };
+    let safe: String = display
+        .chars()
+        .map(|c| match c {
+            'a'..='z' | 'A'..='Z' | '0'..='9' | '.' | '-' | '_' => c,
+            _ => '_',
+        })
+        .collect();
+    format!("mountains-fullscreen-{kind}-{safe}.lock")
+}
+
+/// Claims the display `backend` runs on: `Ok(None)` when another
+/// full-screen saver holds it. Errors say what could not be done (the
+/// caller runs on without the claim).
+pub fn claim(backend: Backend) -> Result<Option<Claim>, String> {
+    let var = match backend {
+        Backend::X11 => "DISPLAY",
+        Backend::Wayland if std::env::var_os("WAYLAND_DISPLAY").is_some() => "WAYLAND_DISPLAY",
+        Backend::Wayland => "WAYLAND_SOCKET",
+    };
+    let display = std::env::var(var).unwrap_or_default();
+    claim_at(&lock_dir().join(lock_name(backend, &display)))
+}
+
+/// `$XDG_RUNTIME_DIR` (the user's, cleared at logout), else the temporary
+/// folder with the user's id in the name.
+fn lock_dir() -> PathBuf {
+    match std::env::var_os("XDG_RUNTIME_DIR") {
+        Some(dir) if Path::new(&dir).is_absolute() => PathBuf::from(dir),
+        // SAFETY: getuid cannot fail.
+        _ => std::env::temp_dir().join(format!("mountains-{}", unsafe { libc::getuid() })),
+    }
+}
+
+/// Takes the lock on `path` (made if missing, never truncated): `Ok(None)`
+/// when another open file holds it.
+pub fn claim_at(path: &Path) -> Result<Option<Claim>, String> {
+    use std::os::unix::fs::{DirBuilderExt, OpenOptionsExt};
+    use std::os::unix::io::AsRawFd;
+    if let Some(dir) = path.parent().filter(|d| !d.exists()) {
+        let _ = std::fs::DirBuilder::new().mode(0o700).create(dir);
+    }
+    let file = std::fs::OpenOptions::new()
+        .create(true)
+        .truncate(false)
+        .write(true)
+        .mode(0o600)
+        .open(path)
+        .map_err(|e| format!("cannot open {}: {e}", path.display()))?;
+    // SAFETY: flock on a descriptor this function owns.
+    let locked = unsafe { libc::flock(file.as_raw_fd(), libc::LOCK_EX | libc::LOCK_NB) };
+    if locked == 0 {
+        return Ok(Some(Claim { _file: file }));
+    }
+    let error = std::io::Error::last_os_error();
+    if error.raw_os_error() == Some(libc::EWOULDBLOCK) {
+        return Ok(None);
+    }
+    Err(format!("cannot lock {}: {error}", path.display()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_keep_one_file_per_display() {
+        assert_eq!(
+            lock_name(Backend::Wayland, "wayland-1"),
+            "mountains-fullscreen-wayland-wayland-1.lock"
+        );
+        assert_eq!(
+            lock_name(Backend::X11, ":0.0"),
+            "mountains-fullscreen-x11-_0.0.lock"
+        );
+        assert_eq!(
+            lock_name(Backend::Wayland, "/run/user/1000/wayland-0"),
+            "mountains-fullscreen-wayland-_run_user_1000_wayland-0.lock"
+        );
+    }
+
+    #[test]
+    fn a_second_claim_fails_until_the_first_is_dropped() {
+        let dir = std::env::temp_dir().join(format!("mountains-single-{}", std::process::id()));
+        let path = dir.join(lock_name(Backend::Wayland, "wayland-9"));
+        let first = claim_at(&path).unwrap();
+        assert!(first.is_some());
+        assert!(claim_at(&path).unwrap().is_none(), "held by the first");
+        let other = dir.join(lock_name(Backend::Wayland, "wayland-8"));
+        assert!(claim_at(&other).unwrap().is_some(), "another display");
+        drop(first);
+        assert!(claim_at(&path).unwrap().is_some(), "free again");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}

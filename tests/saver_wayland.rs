@@ -1,0 +1,222 @@
+//! The window modes on a real Wayland compositor: a private headless sway
+//! (sway, grim, wtype; Xwayland for the X11 path). Each test starts its
+//! own compositor. Without the tools the tests fail, or skip with
+//! MOUNTAINS_SKIP_MISSING=1; CI sets MOUNTAINS_REQUIRE_WAYLAND=1.
+#![cfg(target_os = "linux")]
+
+#[path = "common/headless.rs"]
+mod headless;
+#[path = "common/sway.rs"]
+mod sway;
+#[path = "common/tools.rs"]
+mod tools;
+#[path = "common/wl_pointer.rs"]
+mod wl_pointer;
+
+use headless::headless_render;
+use sway::{Client, Sway};
+use wl_pointer::VirtualPointer;
+
+const W: u32 = 640;
+const H: u32 = 480;
+
+/// Share of pixels that differ from `before` (a screenshot of the empty output).
+fn changed(before: &[u32], after: &[u32]) -> f64 {
+    let n = before.iter().zip(after).filter(|(a, b)| a != b).count();
+    n as f64 / before.len().max(1) as f64
+}
+
+/// `/s` with seed 5 held for a long time, once the finished mountain is
+/// on the output exactly as `mountains render` makes it.
+fn finished_fullscreen(sway: &Sway, what: &str) -> Client {
+    let expected = headless_render(W as u16, H as u16);
+    let args = ["/s", "--set", "seed=5", "--set", "pause_seconds=30"];
+    let mut saver = sway.mountains(&args);
+    let took = saver.poll(what, || sway.screenshot() == (W, H, expected.clone()));
+    eprintln!("{what}: on the output after {took:?}");
+    saver
+}
+
+#[test]
+fn wayland_fullscreen_covers_the_output_with_every_strip_and_ends_on_a_key() {
+    let Some(sway) = Sway::start("fs", W, H, 1, false) else {
+        return;
+    };
+    // Exactly the headless render: every strip drawn, though the
+    // compositor's buffers take turns (softbuffer's age 2).
+    let mut saver = finished_fullscreen(&sway, "the finished mountain over the whole output");
+    let tree = sway.tree();
+    assert!(tree.contains("\"app_id\": \"mountains\""), "{tree}");
+    assert!(tree.contains("\"fullscreen_mode\": 1"), "{tree}");
+    sway.key("Escape");
+    saver.expect_exit("Escape");
+}
+
+#[test]
+fn wayland_fullscreen_draws_a_scaled_output_at_its_real_pixels() {
+    // 640x480 pixels at scale 2: 320x240 in the compositor's units.
+    let Some(sway) = Sway::start("scaled", W, H, 2, false) else {
+        return;
+    };
+    let mut saver = finished_fullscreen(&sway, "the 640x480 mountain on the scale-2 output");
+    saver.assert_running();
+}
+
+#[test]
+fn wayland_fullscreen_ends_on_a_click_and_on_a_move_not_on_a_nudge() {
+    let Some(sway) = Sway::start("pointer", W, H, 1, false) else {
+        return;
+    };
+    let mut pointer = VirtualPointer::connect(&sway.socket_path()).expect("a virtual pointer");
+    pointer.move_by(100.0, 100.0);
+    let before = sway.screenshot().2;
+
+    let mut saver = sway.mountains(&["/s"]);
+    saver.poll("a mountain over the output", || {
+        changed(&before, &sway.screenshot().2) > 0.9
+    });
+    pointer.move_by(3.0, 0.0);
+    pointer.move_by(-3.0, 0.0);
+    std::thread::sleep(std::time::Duration::from_millis(300));
+    saver.assert_running();
+    pointer.click();
+    saver.expect_exit("a click");
+    let said = saver.stderr();
+    assert!(said.contains("ended by MouseInput"), "{said}");
+
+    let mut saver = sway.mountains(&["/s"]);
+    saver.poll("a mountain over the output", || {
+        changed(&before, &sway.screenshot().2) > 0.9
+    });
+    pointer.move_by(20.0, 0.0);
+    saver.expect_exit("a 20 px move");
+    let said = saver.stderr();
+    assert!(
+        said.contains("ended by MouseMotion") || said.contains("ended by CursorMoved"),
+        "{said}"
+    );
+}
+
+#[test]
+fn wayland_window_mode_draws_and_q_quits() {
+    let Some(sway) = Sway::start("window", W, H, 1, false) else {
+        return;
+    };
+    let before = sway.screenshot().2;
+    let mut saver = sway.mountains(&["--window"]);
+    // sway tiles the window over the whole output (no borders in the config).
+    saver.poll("a mountain in the window", || {
+        changed(&before, &sway.screenshot().2) > 0.9
+    });
+    let tree = sway.tree();
+    assert!(tree.contains("\"app_id\": \"mountains\""), "{tree}");
+    sway.key("q");
+    saver.expect_exit("q");
+}
+
+/// Paused partway through drawing, the window shows exactly the frame
+/// drawn so far (which P saves): no strip is missing from the buffer on
+/// screen, whichever of softbuffer's two buffers it is. (A finished
+/// mountain cannot show this: its last step repaints the whole frame.)
+#[test]
+fn wayland_window_paused_mid_drawing_shows_exactly_its_frame() {
+    let Some(sway) = Sway::start("paused", W, H, 1, false) else {
+        return;
+    };
+    // The first mountain is drawn at once when sway sizes the window; the
+    // second, after a 1 s hold, strip by strip over 20 s.
+    let finished = headless_render(W as u16, H as u16);
+    let args = ["--window", "--set", "seed=5", "--set", "draw_seconds=20"];
+    let mut saver = sway.mountains(&args);
+    saver.poll("the first mountain", || {
+        sway.screenshot() == (W, H, finished.clone())
+    });
+    saver.poll("the second mountain under way", || {
+        sway.screenshot().2 != finished
+    });
+    std::thread::sleep(std::time::Duration::from_millis(700));
+    sway.key("space");
+    sway.key("p");
+    let mut saved = None;
+    saver.poll("a screenshot saved by P", || {
+        saved = std::fs::read_dir(sway.screenshots_dir())
+            .ok()
+            .and_then(|d| {
+                d.filter_map(|e| e.ok())
+                    .map(|e| e.path())
+                    .find(|p| p.extension().is_some_and(|x| x == "png"))
+            });
+        saved.is_some()
+    });
+    let (w, h, _, frame) = headless::read_png(&saved.unwrap());
+    assert_eq!((w, h), (W, H), "the window covers the output");
+    let shown = sway.screenshot().2;
+    let differ = (0..frame.len()).filter(|&i| frame[i] != shown[i]);
+    let rows: std::collections::BTreeSet<usize> = differ.map(|i| i / W as usize).collect();
+    assert!(
+        rows.is_empty(),
+        "the window differs from its frame in rows {rows:?}"
+    );
+}
+
+#[test]
+fn wayland_a_second_fullscreen_saver_ends_at_once_and_a_crash_leaves_no_lock() {
+    let Some(sway) = Sway::start("single", W, H, 1, false) else {
+        return;
+    };
+    let before = sway.screenshot().2;
+    let mut first = sway.mountains(&["/s"]);
+    first.poll("the first saver's mountain", || {
+        changed(&before, &sway.screenshot().2) > 0.9
+    });
+    let mut second = sway.mountains(&["/s"]);
+    second.expect_exit("a saver already running");
+    assert!(
+        second.stderr().contains("already runs"),
+        "{}",
+        second.stderr()
+    );
+    first.assert_running();
+    // A window mode is not a screensaver: it may run beside it.
+    let mut window = sway.mountains(&["--window"]);
+    std::thread::sleep(std::time::Duration::from_millis(500));
+    window.assert_running();
+    drop(window);
+
+    first.kill();
+    let mut third = sway.mountains(&["/s"]);
+    third.poll("the next saver's mountain after a crash", || {
+        changed(&before, &sway.screenshot().2) > 0.9
+    });
+    third.assert_running();
+}
+
+#[test]
+fn xwayland_fullscreen_draws_and_ends_on_a_key_and_on_the_first_click() {
+    let Some(sway) = Sway::start("xwayland", W, H, 1, true) else {
+        return;
+    };
+    let before = sway.screenshot().2;
+    let expected = headless_render(W as u16, H as u16);
+    let args = ["/s", "--set", "seed=5", "--set", "pause_seconds=30"];
+    let mut saver = sway.mountains_on_xwayland(&args);
+    saver.poll("the finished mountain through Xwayland", || {
+        sway.screenshot() == (W, H, expected.clone())
+    });
+    sway.key("Escape");
+    saver.expect_exit("Escape through Xwayland");
+
+    // The pointer rests where the saver's window will appear (sway then
+    // draws its own arrow over the picture: the comparison is looser).
+    let mut pointer = VirtualPointer::connect(&sway.socket_path()).expect("a virtual pointer");
+    pointer.move_by(100.0, 100.0);
+    let mut saver = sway.mountains_on_xwayland(&args);
+    saver.poll("a mountain through Xwayland", || {
+        changed(&before, &sway.screenshot().2) > 0.9
+    });
+    pointer.click();
+    saver.expect_exit("the first click through Xwayland");
+    // The click, not the pointer's arrival, ended it (MOUNTAINS_TRACE=1).
+    let said = saver.stderr();
+    assert!(said.contains("ended by Button"), "{said}");
+}
