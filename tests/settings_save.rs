@@ -89,6 +89,7 @@ fn every_key_round_trips_through_the_shipped_file() {
         roughness: 4.25,
         contour: 0.3,
         profile: Profile::Massif,
+        hurst: 0.35,
         height: 10,
         erosion: 0.75,
         detail: Detail::Level(4),

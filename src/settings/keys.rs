@@ -139,7 +139,7 @@ pub struct Key {
     write: fn(&mut Settings, &Key, &Value) -> Option<()>,
 }
 
-const GENERATORS: &[&str] = &["square", "diamond", "triangle"];
+const GENERATORS: &[&str] = &["square", "diamond", "triangle", "brownian"];
 const PROFILES: &[&str] = &["slope", "peak", "bay", "massif"];
 const COLORS: &[&str] = &[
     "natural", "gray", "red", "green", "blue", "yellow", "cyan", "purple", "sonar", "outline",
@@ -228,6 +228,13 @@ pub const KEYS: &[Key] = &[
         Next,
         Value::Str("slope".into()),
         "triangle generator: overall shape"
+    ),
+    row!(
+        hurst,
+        Kind::Float { min: 0.1, max: 0.9 },
+        Next,
+        Value::Float(0.8),
+        "brownian generator: Hurst exponent (0.1 rough and jagged, 0.9 smooth and rolling)"
     ),
     row!(
         height,
@@ -420,6 +427,7 @@ impl Settings {
             roughness: 0.0,
             contour: 0.0,
             profile: Profile::Slope,
+            hurst: 0.0,
             height: 0,
             erosion: 0.0,
             detail: Detail::Auto,
@@ -502,7 +510,10 @@ impl Field for u32 {
 
 impl Field for f32 {
     fn value(&self) -> Value {
-        Value::Float((*self).into())
+        // Through the f32's shortest decimal, as a person writes it: 0.8
+        // reads back as 0.8 (the row's default, what `--help` shows), not
+        // as the 0.800000011920929 the widened bits spell.
+        Value::Float(self.to_string().parse().unwrap_or((*self).into()))
     }
     fn parse(key: &Key, value: &Value) -> Option<Self> {
         float(key, value)

@@ -1,7 +1,9 @@
 //! Everything that makes a mountain's heights. Pure: no windows, no clocks.
 
+mod brownian;
 mod coast;
 mod erosion;
+mod fft;
 pub mod heightfield;
 pub mod heightmap;
 pub(crate) mod noise;
@@ -45,6 +47,12 @@ use crate::settings::{Generator, Settings};
 ///   power. If the sea is more than four times deeper than the land is high
 ///   (a Bay profile, or a high sea level), the deepest point is put at
 ///   `-4 * peak` instead and the land stays lower than `peak`.
+/// - Brownian (spectral synthesis, see `brownian.rs`): a surface with a
+///   standard deviation of 16 at the default `hurst` 0.8 (a relief of about
+///   90, as the square generators') over [`SQUARE_EXTENT`]; other `hurst`
+///   values keep the height differences across 1/64 of the width, so a
+///   rough surface is lower, not a forest of needles. `height` scales it
+///   as it does the square generators'.
 ///
 /// # Sea level
 /// `settings.sea_level` moves the water line by a fraction of the relief on
@@ -198,13 +206,17 @@ fn subdivide_all<P: Put>(
             let job = Job::new(&rule, put, noise, threads, true);
             subdivide::subdivide(heights, size, 1, &job)
         }
+        Generator::Brownian => {
+            brownian::synthesise(heights, p.exponent, p.hurst, seed, threads);
+            None
+        }
     }
 }
 
 /// Applies sea level, contour and height to the subdivided field.
 fn finish(field: &mut Heightfield, p: &Params, threads: usize, extremes: Option<Extremes>) {
     match p.generator {
-        Generator::Square | Generator::Diamond => {
+        Generator::Square | Generator::Diamond | Generator::Brownian => {
             normalize::finish_square(field, p, threads, extremes)
         }
         Generator::Triangle => normalize::finish_triangle(field, p, threads, extremes),

@@ -16,6 +16,7 @@ pub(crate) struct Params {
     pub(crate) roughness: f32,
     pub(crate) contour: f32,
     pub(crate) profile: Profile,
+    pub(crate) hurst: f32,
     pub(crate) height: f32,
     pub(crate) erosion: f32,
     pub(crate) sea_level: f32,
@@ -34,6 +35,7 @@ impl Params {
             roughness: clamp_float("roughness", s.roughness),
             contour: clamp_float("contour", s.contour),
             profile: s.profile,
+            hurst: clamp_float("hurst", s.hurst),
             height: clamp_int("height", s.height) as f32,
             erosion: clamp_float("erosion", s.erosion),
             sea_level: clamp_float("sea_level", s.sea_level),
@@ -44,7 +46,7 @@ impl Params {
     /// Width of the grid in height units for this generator.
     pub(crate) fn extent(&self) -> f32 {
         match self.generator {
-            Generator::Square | Generator::Diamond => SQUARE_EXTENT,
+            Generator::Square | Generator::Diamond | Generator::Brownian => SQUARE_EXTENT,
             Generator::Triangle => TRIANGLE_EXTENT,
         }
     }
