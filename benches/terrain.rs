@@ -100,8 +100,28 @@ fn brownian(c: &mut Criterion) {
     group.finish();
 }
 
+/// Finding the lakes of a default mountain (`lakes = true`; part of
+/// `generate`), alone.
+fn lakes(c: &mut Criterion) {
+    let mut group = c.benchmark_group("lakes");
+    group.sample_size(10);
+    for detail in [10, 12] {
+        let s = Settings {
+            detail: mountains::settings::Detail::Level(detail),
+            ..Settings::default()
+        };
+        let field = generate(&s, 7);
+        let id = BenchmarkId::from_parameter((1 << detail) + 1);
+        group.bench_function(id, |b| {
+            b.iter(|| mountains::terrain::Lakes::of(field.heights(), field.size()))
+        });
+    }
+    group.finish();
+}
+
 criterion_group!(
     benches,
+    lakes,
     brownian,
     generators,
     one_thread,

@@ -188,6 +188,8 @@ pub struct Settings {
     pub sea_level: f32,
     /// What `sea_level` is measured from.
     pub water_line: WaterLine,
+    /// Fill basins above the sea to their lowest lip and draw them as lakes.
+    pub lakes: bool,
     /// Colour mode or filter.
     pub color: ColorMode,
     /// Darken water with the depth of the ground below it.

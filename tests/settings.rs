@@ -50,6 +50,7 @@ fn shipped_file_is_exactly_the_defaults() {
     s.elevation = 7.0;
     s.roughness = 4.0;
     s.hurst = 0.3;
+    s.lakes = !s.lakes;
     s.contour = 3.0;
     s.height = 9;
     s.detail = Detail::Level(5);

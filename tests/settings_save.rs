@@ -96,6 +96,7 @@ fn every_key_round_trips_through_the_shipped_file() {
         low_detail: true,
         sea_level: -0.14,
         water_line: WaterLine::Generator,
+        lakes: false,
         color: ColorMode::Ridges,
         relative_depth: false,
         shadows: false,

@@ -286,6 +286,13 @@ pub const KEYS: &[Key] = &[
         "sea_level 0: a coast on every mountain, or the generator's own zero"
     ),
     row!(
+        lakes,
+        Kind::Bool,
+        Remake,
+        Value::Bool(true),
+        "basins above the sea filled to their lowest lip and drawn as lakes"
+    ),
+    row!(
         color,
         Kind::Choice(COLORS),
         Repaint,
@@ -434,6 +441,7 @@ impl Settings {
             low_detail: false,
             sea_level: 0.0,
             water_line: WaterLine::Coast,
+            lakes: false,
             color: ColorMode::Natural,
             relative_depth: false,
             shadows: false,

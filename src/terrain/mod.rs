@@ -6,6 +6,7 @@ mod erosion;
 mod fft;
 pub mod heightfield;
 pub mod heightmap;
+pub mod lakes;
 pub(crate) mod noise;
 mod normalize;
 mod params;
@@ -15,6 +16,7 @@ mod subdivide;
 mod triangle;
 
 pub use heightfield::Heightfield;
+pub use lakes::Lakes;
 
 use params::Params;
 use subdivide::{Audited, Extremes, Job, Plain, Put};
@@ -99,6 +101,15 @@ fn fill(field: &mut Heightfield, params: &Params, seed: u64, threads: usize) {
     let extremes = subdivide_all(field, params, seed, threads, &Plain);
     let extremes = weather(field, params, seed, threads, extremes);
     finish(field, params, threads, extremes);
+    find_lakes(field, params);
+}
+
+/// The lakes of the finished field, if asked for (`lakes = true`).
+fn find_lakes(field: &mut Heightfield, p: &Params) {
+    let lakes = p
+        .lakes
+        .then(|| std::sync::Arc::new(Lakes::of(field.heights(), field.size())));
+    field.set_lakes(lakes);
 }
 
 /// Grids of this exponent or finer hold the same mountain on their nested
@@ -143,6 +154,7 @@ pub fn generate_audited(settings: &Settings, seed: u64, threads: usize) -> Audit
     let unset = field.heights().iter().filter(|h| h.is_nan()).count();
     let extremes = weather(&mut field, &params, seed, threads, extremes);
     finish(&mut field, &params, threads, extremes);
+    find_lakes(&mut field, &params);
     Audit {
         field,
         rewrites: audit.rewrites.into_inner(),

@@ -21,6 +21,7 @@ pub(crate) struct Params {
     pub(crate) erosion: f32,
     pub(crate) sea_level: f32,
     pub(crate) water_line: WaterLine,
+    pub(crate) lakes: bool,
 }
 
 impl Params {
@@ -40,6 +41,7 @@ impl Params {
             erosion: clamp_float("erosion", s.erosion),
             sea_level: clamp_float("sea_level", s.sea_level),
             water_line: s.water_line,
+            lakes: s.lakes,
         }
     }
 
