@@ -178,6 +178,8 @@ pub struct Settings {
     pub hurst: f32,
     /// Height of the highest peak (1-10, seed 000's Height menu); also moves the treeline.
     pub height: u32,
+    /// Sharp edges: terraces, mesas and cliffs cut into the land (0-1, 0 = none).
+    pub cliffs: f32,
     /// Strength of the rain that wears gullies into the slopes (0-1, 0 = none).
     pub erosion: f32,
     /// Grid of 2^detail + 1 points a side (4-12), or chosen per frame.

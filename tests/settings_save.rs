@@ -92,6 +92,7 @@ fn every_key_round_trips_through_the_shipped_file() {
         hurst: 0.35,
         height: 10,
         erosion: 0.75,
+        cliffs: 0.6,
         detail: Detail::Level(4),
         low_detail: true,
         sea_level: -0.14,

@@ -251,6 +251,13 @@ pub const KEYS: &[Key] = &[
         "rain wearing gullies into the slopes and silt at their feet (0 = none)"
     ),
     row!(
+        cliffs,
+        Kind::Float { min: 0.0, max: 1.0 },
+        Next,
+        Value::Float(0.0),
+        "sharp edges: level terraces, mesas and cliffs cut into the land (0 = none, 1 = sheer)"
+    ),
+    row!(
         detail,
         // The grid sizes a heightfield can have.
         Kind::IntOrAuto {
@@ -437,6 +444,7 @@ impl Settings {
             hurst: 0.0,
             height: 0,
             erosion: 0.0,
+            cliffs: 0.0,
             detail: Detail::Auto,
             low_detail: false,
             sea_level: 0.0,

@@ -1,6 +1,7 @@
 //! Everything that makes a mountain's heights. Pure: no windows, no clocks.
 
 mod brownian;
+mod cliffs;
 mod coast;
 mod erosion;
 mod fft;
@@ -15,6 +16,7 @@ mod square;
 mod subdivide;
 mod triangle;
 
+pub use cliffs::STEP_SHARE as CLIFF_STEP_SHARE;
 pub use heightfield::Heightfield;
 pub use lakes::Lakes;
 
@@ -101,6 +103,7 @@ fn fill(field: &mut Heightfield, params: &Params, seed: u64, threads: usize) {
     let extremes = subdivide_all(field, params, seed, threads, &Plain);
     let extremes = weather(field, params, seed, threads, extremes);
     finish(field, params, threads, extremes);
+    cliffs::terrace(field, params.cliffs, threads);
     find_lakes(field, params);
 }
 
@@ -154,6 +157,7 @@ pub fn generate_audited(settings: &Settings, seed: u64, threads: usize) -> Audit
     let unset = field.heights().iter().filter(|h| h.is_nan()).count();
     let extremes = weather(&mut field, &params, seed, threads, extremes);
     finish(&mut field, &params, threads, extremes);
+    cliffs::terrace(&mut field, params.cliffs, threads);
     find_lakes(&mut field, &params);
     Audit {
         field,

@@ -22,6 +22,7 @@ pub(crate) struct Params {
     pub(crate) sea_level: f32,
     pub(crate) water_line: WaterLine,
     pub(crate) lakes: bool,
+    pub(crate) cliffs: f32,
 }
 
 impl Params {
@@ -42,6 +43,7 @@ impl Params {
             sea_level: clamp_float("sea_level", s.sea_level),
             water_line: s.water_line,
             lakes: s.lakes,
+            cliffs: clamp_float("cliffs", s.cliffs),
         }
     }
 

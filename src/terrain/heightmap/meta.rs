@@ -58,13 +58,15 @@ pub const KEY_SEA_FRACTION: &str = "mountains:sea_fraction";
 pub const KEY_EROSION: &str = "mountains:erosion";
 /// `Settings::hurst`; absent in files made before the Brownian generator.
 pub const KEY_HURST: &str = "mountains:hurst";
+/// `Settings::cliffs`; absent in files made before cliffs, which had none.
+pub const KEY_CLIFFS: &str = "mountains:cliffs";
 
 /// Parameters files from before they existed lack: their default is taken
 /// without a note (an older file's mountain did not use them, or, for
 /// erosion, had none: see `read_params`).
-const LATER_KEYS: &[&str] = &[KEY_EROSION, KEY_HURST];
+const LATER_KEYS: &[&str] = &[KEY_EROSION, KEY_HURST, KEY_CLIFFS];
 
-const KNOWN_KEYS: [&str; 18] = [
+const KNOWN_KEYS: [&str; 19] = [
     KEY_FORMAT,
     KEY_SCALE,
     KEY_OFFSET,
@@ -83,6 +85,7 @@ const KNOWN_KEYS: [&str; 18] = [
     KEY_SEA_FRACTION,
     KEY_EROSION,
     KEY_HURST,
+    KEY_CLIFFS,
 ];
 
 /// The generator settings that made a mountain, read back from its file:
@@ -386,6 +389,7 @@ const PARAM_KEYS: &[(&str, &str)] = &[
     (KEY_SEA_FRACTION, "sea_level"),
     (KEY_EROSION, "erosion"),
     (KEY_HURST, "hurst"),
+    (KEY_CLIFFS, "cliffs"),
 ];
 
 #[cfg(test)]
