@@ -78,8 +78,51 @@ fn reused_field(c: &mut Criterion) {
     group.finish();
 }
 
+/// `generator = "brownian"` as the program runs it: the default settings
+/// (erosion 0.5, the coast) through `generate`, at the 1025 grid a 1080p
+/// slide gets and at the largest; and the synthesis alone (no erosion).
+/// Targets: 1025x1025 under 100 ms, 4097x4097 under 2 s.
+fn brownian(c: &mut Criterion) {
+    let mut group = c.benchmark_group("generate_brownian");
+    group.sample_size(10);
+    for detail in [10, 12] {
+        for erosion in [0.5, 0.0] {
+            let s = Settings {
+                generator: Generator::Brownian,
+                detail: mountains::settings::Detail::Level(detail),
+                erosion,
+                ..Settings::default()
+            };
+            let id = BenchmarkId::new(format!("erosion_{erosion}"), (1 << detail) + 1);
+            group.bench_with_input(id, &s, |b, s| b.iter(|| generate(s, 7)));
+        }
+    }
+    group.finish();
+}
+
+/// Finding the lakes of a default mountain (`lakes = true`; part of
+/// `generate`), alone.
+fn lakes(c: &mut Criterion) {
+    let mut group = c.benchmark_group("lakes");
+    group.sample_size(10);
+    for detail in [10, 12] {
+        let s = Settings {
+            detail: mountains::settings::Detail::Level(detail),
+            ..Settings::default()
+        };
+        let field = generate(&s, 7);
+        let id = BenchmarkId::from_parameter((1 << detail) + 1);
+        group.bench_function(id, |b| {
+            b.iter(|| mountains::terrain::Lakes::of(field.heights(), field.size()))
+        });
+    }
+    group.finish();
+}
+
 criterion_group!(
     benches,
+    lakes,
+    brownian,
     generators,
     one_thread,
     contour,

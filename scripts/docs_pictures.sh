@@ -48,4 +48,8 @@ r mono --set color=mono
 r ridges --set color=ridges
 r purple --set color=purple
 r flat-water-no-shadows --set relative_depth=false --set shadows=false
+r brownian --set generator=brownian
+r brownian-rough --set generator=brownian --set hurst=0.4
+r lakes --set seed=30
+r cliffs --set cliffs=0.6
 echo "docs/*.png regenerated"

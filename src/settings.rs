@@ -22,6 +22,9 @@ pub enum Generator {
     Diamond,
     /// Fractal Mountain Climbing: triangle subdivision on a parallelogram.
     Triangle,
+    /// Fractional Brownian surface of a chosen roughness (`hurst`), by
+    /// spectral synthesis: Mountain Terrain 3.0's hoped-for version 4.0.
+    Brownian,
 }
 
 /// The four starting profiles of Fractal Mountain Climbing (seed 000).
@@ -171,8 +174,12 @@ pub struct Settings {
     pub contour: f32,
     /// Triangle generator: starting corner heights.
     pub profile: Profile,
+    /// Brownian generator: Hurst exponent, the roughness (0.1 rough to 0.9 smooth).
+    pub hurst: f32,
     /// Height of the highest peak (1-10, seed 000's Height menu); also moves the treeline.
     pub height: u32,
+    /// Sharp edges: terraces, mesas and cliffs cut into the land (0-1, 0 = none).
+    pub cliffs: f32,
     /// Strength of the rain that wears gullies into the slopes (0-1, 0 = none).
     pub erosion: f32,
     /// Grid of 2^detail + 1 points a side (4-12), or chosen per frame.
@@ -183,6 +190,8 @@ pub struct Settings {
     pub sea_level: f32,
     /// What `sea_level` is measured from.
     pub water_line: WaterLine,
+    /// Fill basins above the sea to their lowest lip and draw them as lakes.
+    pub lakes: bool,
     /// Colour mode or filter.
     pub color: ColorMode,
     /// Darken water with the depth of the ground below it.

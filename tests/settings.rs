@@ -49,6 +49,9 @@ fn shipped_file_is_exactly_the_defaults() {
     s.cragginess = 3;
     s.elevation = 7.0;
     s.roughness = 4.0;
+    s.hurst = 0.3;
+    s.lakes = !s.lakes;
+    s.cliffs = 0.5;
     s.contour = 3.0;
     s.height = 9;
     s.detail = Detail::Level(5);
@@ -301,6 +304,9 @@ fn every_key_writes_and_reads_only_its_own_field() {
         assert_eq!(keys::get(&defaults, key), (key.default)(), "{}", key.name);
         let new = match key.kind {
             Kind::Int { max, .. } => Value::Int(max),
+            // The least value, or the most where the least is the default
+            // (cliffs: 0, none).
+            Kind::Float { min, max } if (key.default)() == Value::Float(min) => Value::Float(max),
             Kind::Float { min, .. } => Value::Float(min),
             Kind::IntOrAuto { min, .. } => Value::Int(min),
             Kind::Bool => match keys::get(&defaults, key) {

@@ -24,7 +24,7 @@ pub const WATER: u32 = 0x0000_ffff;
 pub enum Class {
     /// Nothing drawn: the sky behind the land.
     Sky,
-    /// Open water (at sea level).
+    /// Open water: the sea, or a lake over a basin.
     Water,
     /// Land, its cut faces included.
     Land,

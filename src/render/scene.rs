@@ -56,6 +56,9 @@ pub(crate) struct Vert {
     pub p: Fixed2,
     /// The ground's true height (finite).
     pub h: f32,
+    /// The water surface over the point: sea level (0), or a lake's level
+    /// where a lake is drawn over it.
+    pub w: f32,
     /// Direct light reaching the point.
     pub lit: f32,
     /// Share of the sky the point sees.
@@ -119,6 +122,9 @@ pub(crate) struct Scene<'a> {
     /// The grid rows the mesh is drawn with (see `rows.rs`); strip `s` lies
     /// between rows `rows[s]` and `rows[s + 1]`.
     pub(super) rows: Vec<usize>,
+    /// Whether the field's lakes are drawn (the filled looks; Sonar and
+    /// Outline draw the ground's mesh).
+    lakes: bool,
     /// Whether the right and front cut faces (skirts) face the viewer.
     pub sees_right: bool,
     pub sees_front: bool,
@@ -165,6 +171,7 @@ impl<'a> Scene<'a> {
         let normals = smooth.then(|| Normals::new(size, &rows, view.cell()));
         let eye = view.camera_ground().filter(|_| smooth);
         let cells = size - 1;
+        let lakes = shaded && field.lakes().is_some();
         let (split, sees_right, sees_front) = match view.camera_column() {
             Some(cx) => {
                 let split = cx.floor().clamp(0.0, cells as f32) as usize;
@@ -188,6 +195,7 @@ impl<'a> Scene<'a> {
             split,
             row_top,
             rows,
+            lakes,
             sees_right,
             sees_front,
         }
@@ -215,12 +223,20 @@ impl<'a> Scene<'a> {
     /// need it.
     pub(crate) fn project_points(&self, y: usize, xs: std::ops::Range<usize>, out: &mut [Vert]) {
         let row = self.field.row(y);
+        let lakes = self.field.lakes().filter(|_| self.lakes);
+        let runs = lakes.map_or(&[][..], |l| l.row(y));
         for x in xs {
             let h = finite(row[x]);
-            let p = self.view.project(x as f32, y as f32, h.max(0.0));
+            let i = runs.partition_point(|r| (r.end as usize) <= x);
+            let w = match (lakes, runs.get(i)) {
+                (Some(l), Some(r)) if r.start as usize <= x => l.level(r.lake),
+                _ => 0.0,
+            };
+            let p = self.view.project(x as f32, y as f32, h.max(w));
             out[x] = Vert {
                 p: to_fixed(p.x, p.y),
                 h,
+                w,
                 ..Vert::default()
             };
         }
@@ -237,7 +253,7 @@ impl<'a> Scene<'a> {
     /// [`Scene::shade`]'s work, apart so that the check inlines.
     #[inline(never)]
     fn shade_now(&self, v: &mut Vert, x: usize, y: usize) {
-        let ground = v.h.max(0.0);
+        let ground = v.h.max(v.w);
         v.lit = self.shadow.as_ref().map_or(1.0, |s| s.lit(x, y));
         v.sky = self
             .skylight
@@ -272,7 +288,13 @@ impl<'a> Scene<'a> {
 
     /// Fixed-point screen position of a point between grid points, at sea level.
     pub(crate) fn project_sea(&self, g: Vec2) -> Fixed2 {
-        let p = self.view.project(g.x, g.y, 0.0);
+        self.project_water(g, 0.0)
+    }
+
+    /// Fixed-point screen position of a point between grid points, on a
+    /// water surface at height `level` (the sea's 0, or a lake's).
+    pub(crate) fn project_water(&self, g: Vec2, level: f32) -> Fixed2 {
+        let p = self.view.project(g.x, g.y, level);
         to_fixed(p.x, p.y)
     }
 
@@ -391,16 +413,18 @@ fn turned(field: FieldRef<'_>, rotation: u32) -> FieldRef<'_> {
     let n = field.size();
     let mut out = Heightfield::flat(field.exponent(), field.extent());
     out.set_seed(field.seed());
+    // Each quarter turn brings the old right edge to the back.
+    let source = |x: usize, y: usize| match quarters {
+        1 => (n - 1 - y, x),
+        2 => (n - 1 - x, n - 1 - y),
+        _ => (y, n - 1 - x),
+    };
     for y in 0..n {
         for x in 0..n {
-            // Each quarter turn brings the old right edge to the back.
-            let (sx, sy) = match quarters {
-                1 => (n - 1 - y, x),
-                2 => (n - 1 - x, n - 1 - y),
-                _ => (y, n - 1 - x),
-            };
+            let (sx, sy) = source(x, y);
             out.set(x, y, field.get(sx, sy));
         }
     }
+    out.set_lakes(field.lakes().map(|l| Arc::new(l.turned(source))));
     FieldRef::Shared(Arc::new(out))
 }

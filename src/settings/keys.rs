@@ -139,7 +139,7 @@ pub struct Key {
     write: fn(&mut Settings, &Key, &Value) -> Option<()>,
 }
 
-const GENERATORS: &[&str] = &["square", "diamond", "triangle"];
+const GENERATORS: &[&str] = &["square", "diamond", "triangle", "brownian"];
 const PROFILES: &[&str] = &["slope", "peak", "bay", "massif"];
 const COLORS: &[&str] = &[
     "natural", "gray", "red", "green", "blue", "yellow", "cyan", "purple", "sonar", "outline",
@@ -230,6 +230,13 @@ pub const KEYS: &[Key] = &[
         "triangle generator: overall shape"
     ),
     row!(
+        hurst,
+        Kind::Float { min: 0.1, max: 0.9 },
+        Next,
+        Value::Float(0.8),
+        "brownian generator: Hurst exponent (0.1 rough and jagged, 0.9 smooth and rolling)"
+    ),
+    row!(
         height,
         Kind::Int { min: 1, max: 10 },
         Next,
@@ -242,6 +249,13 @@ pub const KEYS: &[Key] = &[
         Next,
         Value::Float(0.5),
         "rain wearing gullies into the slopes and silt at their feet (0 = none)"
+    ),
+    row!(
+        cliffs,
+        Kind::Float { min: 0.0, max: 1.0 },
+        Next,
+        Value::Float(0.0),
+        "sharp edges: level terraces, mesas and cliffs cut into the land (0 = none, 1 = sheer)"
     ),
     row!(
         detail,
@@ -277,6 +291,13 @@ pub const KEYS: &[Key] = &[
         Next,
         Value::Str("coast".into()),
         "sea_level 0: a coast on every mountain, or the generator's own zero"
+    ),
+    row!(
+        lakes,
+        Kind::Bool,
+        Remake,
+        Value::Bool(true),
+        "basins above the sea filled to their lowest lip and drawn as lakes"
     ),
     row!(
         color,
@@ -420,12 +441,15 @@ impl Settings {
             roughness: 0.0,
             contour: 0.0,
             profile: Profile::Slope,
+            hurst: 0.0,
             height: 0,
             erosion: 0.0,
+            cliffs: 0.0,
             detail: Detail::Auto,
             low_detail: false,
             sea_level: 0.0,
             water_line: WaterLine::Coast,
+            lakes: false,
             color: ColorMode::Natural,
             relative_depth: false,
             shadows: false,
@@ -502,7 +526,10 @@ impl Field for u32 {
 
 impl Field for f32 {
     fn value(&self) -> Value {
-        Value::Float((*self).into())
+        // Through the f32's shortest decimal, as a person writes it: 0.8
+        // reads back as 0.8 (the row's default, what `--help` shows), not
+        // as the 0.800000011920929 the widened bits spell.
+        Value::Float(self.to_string().parse().unwrap_or((*self).into()))
     }
     fn parse(key: &Key, value: &Value) -> Option<Self> {
         float(key, value)

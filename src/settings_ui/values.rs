@@ -216,15 +216,18 @@ pub fn label(key: &Key) -> String {
 }
 
 /// Whether `key` matters for the generator chosen in `settings`: the key
-/// docs say "square generators:" or "triangle generator:" for those that
-/// only one family uses. Rows that do not matter are drawn dimmed.
+/// docs say "square generators:", "triangle generator:" or "brownian
+/// generator:" for those that only one family uses. Rows that do not
+/// matter are drawn dimmed.
 pub fn matters(settings: &Settings, key: &Key) -> bool {
     use crate::settings::Generator;
-    let triangle = settings.generator == Generator::Triangle;
+    let g = settings.generator;
     if key.doc.starts_with("square generators:") {
-        !triangle
+        matches!(g, Generator::Square | Generator::Diamond)
     } else if key.doc.starts_with("triangle generator:") {
-        triangle
+        g == Generator::Triangle
+    } else if key.doc.starts_with("brownian generator:") {
+        g == Generator::Brownian
     } else {
         true
     }
@@ -240,6 +243,24 @@ mod tests {
         assert_eq!(nice_floor(9.99), 5.0);
         assert_eq!(nice_floor(3.6), 2.0);
         assert_eq!(nice_floor(0.6), 0.5);
+    }
+
+    #[test]
+    fn a_generators_own_keys_matter_only_for_it() {
+        use crate::settings::Generator;
+        let of = |generator| Settings {
+            generator,
+            ..Settings::default()
+        };
+        let key = |name| keys::find(name).unwrap();
+        let brownian = of(Generator::Brownian);
+        assert!(matters(&brownian, key("hurst")));
+        assert!(!matters(&brownian, key("cragginess")));
+        assert!(!matters(&brownian, key("roughness")));
+        assert!(matters(&brownian, key("height")));
+        assert!(!matters(&of(Generator::Diamond), key("hurst")));
+        assert!(matters(&of(Generator::Diamond), key("cragginess")));
+        assert!(!matters(&of(Generator::Triangle), key("hurst")));
     }
 
     #[test]

@@ -1,5 +1,9 @@
 //! The square grid of elevations every generator fills and every renderer reads.
 
+use std::sync::Arc;
+
+use super::lakes::Lakes;
+
 /// The grid exponents a heightfield can have (the `detail` key's range).
 pub use crate::settings::{MAX_GRID_EXPONENT as MAX_EXPONENT, MIN_GRID_EXPONENT as MIN_EXPONENT};
 
@@ -17,6 +21,7 @@ pub struct Heightfield {
     extent: f32,
     heights: Vec<f32>,
     seed: Option<u64>,
+    lakes: Option<Arc<Lakes>>,
 }
 
 impl Heightfield {
@@ -36,6 +41,7 @@ impl Heightfield {
             extent,
             heights: zeroed(size * size),
             seed: None,
+            lakes: None,
         }
     }
 
@@ -51,6 +57,7 @@ impl Heightfield {
             extent,
             heights,
             seed: None,
+            lakes: None,
         })
     }
 
@@ -130,13 +137,27 @@ impl Heightfield {
         h
     }
 
+    /// The lakes over these heights, if they were looked for
+    /// (`lakes = true`): basins above the sea filled to their lowest lip.
+    pub fn lakes(&self) -> Option<&Lakes> {
+        self.lakes.as_deref()
+    }
+
+    /// Sets the lakes (`None`: no lakes drawn). They must belong to these
+    /// heights: a change to the heights drops them (see `heights_mut`).
+    pub fn set_lakes(&mut self, lakes: Option<Arc<Lakes>>) {
+        self.lakes = lakes.filter(|l| l.size() == self.size);
+    }
+
     /// All elevations, row-major.
     pub fn heights(&self) -> &[f32] {
         &self.heights
     }
 
     /// All elevations, row-major, for generators that fill them in place.
+    /// The lakes, which the old heights held, are dropped.
     pub fn heights_mut(&mut self) -> &mut [f32] {
+        self.lakes = None;
         &mut self.heights
     }
 
@@ -176,6 +197,7 @@ impl Heightfield {
             extent: self.extent,
             heights,
             seed: self.seed,
+            lakes: None,
         }
     }
 }

@@ -1,9 +1,13 @@
 //! Everything that makes a mountain's heights. Pure: no windows, no clocks.
 
+mod brownian;
+mod cliffs;
 mod coast;
 mod erosion;
+mod fft;
 pub mod heightfield;
 pub mod heightmap;
+pub mod lakes;
 pub(crate) mod noise;
 mod normalize;
 mod params;
@@ -12,7 +16,9 @@ mod square;
 mod subdivide;
 mod triangle;
 
+pub use cliffs::STEP_SHARE as CLIFF_STEP_SHARE;
 pub use heightfield::Heightfield;
+pub use lakes::Lakes;
 
 use params::Params;
 use subdivide::{Audited, Extremes, Job, Plain, Put};
@@ -45,6 +51,12 @@ use crate::settings::{Generator, Settings};
 ///   power. If the sea is more than four times deeper than the land is high
 ///   (a Bay profile, or a high sea level), the deepest point is put at
 ///   `-4 * peak` instead and the land stays lower than `peak`.
+/// - Brownian (spectral synthesis, see `brownian.rs`): a surface with a
+///   standard deviation of 16 at the default `hurst` 0.8 (a relief of about
+///   90, as the square generators') over [`SQUARE_EXTENT`]; other `hurst`
+///   values keep the height differences across 1/64 of the width, so a
+///   rough surface is lower, not a forest of needles. `height` scales it
+///   as it does the square generators'.
 ///
 /// # Sea level
 /// `settings.sea_level` moves the water line by a fraction of the relief on
@@ -91,6 +103,16 @@ fn fill(field: &mut Heightfield, params: &Params, seed: u64, threads: usize) {
     let extremes = subdivide_all(field, params, seed, threads, &Plain);
     let extremes = weather(field, params, seed, threads, extremes);
     finish(field, params, threads, extremes);
+    cliffs::terrace(field, params.cliffs, threads);
+    find_lakes(field, params);
+}
+
+/// The lakes of the finished field, if asked for (`lakes = true`).
+fn find_lakes(field: &mut Heightfield, p: &Params) {
+    let lakes = p
+        .lakes
+        .then(|| std::sync::Arc::new(Lakes::of(field.heights(), field.size())));
+    field.set_lakes(lakes);
 }
 
 /// Grids of this exponent or finer hold the same mountain on their nested
@@ -135,6 +157,8 @@ pub fn generate_audited(settings: &Settings, seed: u64, threads: usize) -> Audit
     let unset = field.heights().iter().filter(|h| h.is_nan()).count();
     let extremes = weather(&mut field, &params, seed, threads, extremes);
     finish(&mut field, &params, threads, extremes);
+    cliffs::terrace(&mut field, params.cliffs, threads);
+    find_lakes(&mut field, &params);
     Audit {
         field,
         rewrites: audit.rewrites.into_inner(),
@@ -198,13 +222,17 @@ fn subdivide_all<P: Put>(
             let job = Job::new(&rule, put, noise, threads, true);
             subdivide::subdivide(heights, size, 1, &job)
         }
+        Generator::Brownian => {
+            brownian::synthesise(heights, p.exponent, p.hurst, seed, threads);
+            None
+        }
     }
 }
 
 /// Applies sea level, contour and height to the subdivided field.
 fn finish(field: &mut Heightfield, p: &Params, threads: usize, extremes: Option<Extremes>) {
     match p.generator {
-        Generator::Square | Generator::Diamond => {
+        Generator::Square | Generator::Diamond | Generator::Brownian => {
             normalize::finish_square(field, p, threads, extremes)
         }
         Generator::Triangle => normalize::finish_triangle(field, p, threads, extremes),

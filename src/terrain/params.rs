@@ -16,10 +16,13 @@ pub(crate) struct Params {
     pub(crate) roughness: f32,
     pub(crate) contour: f32,
     pub(crate) profile: Profile,
+    pub(crate) hurst: f32,
     pub(crate) height: f32,
     pub(crate) erosion: f32,
     pub(crate) sea_level: f32,
     pub(crate) water_line: WaterLine,
+    pub(crate) lakes: bool,
+    pub(crate) cliffs: f32,
 }
 
 impl Params {
@@ -34,17 +37,20 @@ impl Params {
             roughness: clamp_float("roughness", s.roughness),
             contour: clamp_float("contour", s.contour),
             profile: s.profile,
+            hurst: clamp_float("hurst", s.hurst),
             height: clamp_int("height", s.height) as f32,
             erosion: clamp_float("erosion", s.erosion),
             sea_level: clamp_float("sea_level", s.sea_level),
             water_line: s.water_line,
+            lakes: s.lakes,
+            cliffs: clamp_float("cliffs", s.cliffs),
         }
     }
 
     /// Width of the grid in height units for this generator.
     pub(crate) fn extent(&self) -> f32 {
         match self.generator {
-            Generator::Square | Generator::Diamond => SQUARE_EXTENT,
+            Generator::Square | Generator::Diamond | Generator::Brownian => SQUARE_EXTENT,
             Generator::Triangle => TRIANGLE_EXTENT,
         }
     }

@@ -25,7 +25,9 @@ pub(crate) struct RowTops {
 }
 
 impl RowTops {
-    /// The tops of `field`'s rows, in one pass over it.
+    /// The tops of `field`'s rows, in one pass over it. A lake's surface
+    /// counts as its points' height: a block of columns inside a lake
+    /// reaches the surface drawn over them, not the ground below it.
     pub(crate) fn of(field: &Heightfield) -> Self {
         let size = field.size();
         let per_row = size.div_ceil(BLOCK).max(1);
@@ -38,6 +40,15 @@ impl RowTops {
                     .map(|b| b.iter().fold(0.0f32, |m, &h| finite(h).max(m)));
                 let start = blocks.len();
                 blocks.extend(row);
+                if let Some(lakes) = field.lakes() {
+                    for run in lakes.row(y) {
+                        let level = lakes.level(run.lake);
+                        let (a, b) = (run.start as usize / BLOCK, (run.end as usize - 1) / BLOCK);
+                        for top in &mut blocks[start + a..=start + b] {
+                            *top = top.max(level);
+                        }
+                    }
+                }
                 blocks[start..].iter().copied().fold(0.0f32, f32::max)
             })
             .collect();

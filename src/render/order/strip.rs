@@ -28,6 +28,8 @@ enum Paint {
 struct Corner {
     g: Vec2,
     h: f32,
+    /// The water surface over the corner (see `Vert::w`).
+    w: f32,
     p: Fixed2,
     lit: f32,
     sky: f32,
@@ -41,6 +43,7 @@ impl Corner {
         Corner {
             g: Vec2::new(x as f32, y as f32),
             h: v.h,
+            w: v.w,
             p: v.p,
             lit: v.lit,
             sky: v.sky,
@@ -134,10 +137,10 @@ impl Scene<'_> {
     /// mirrored otherwise.
     fn fill_cell(&self, canvas: &mut Canvas, rows: &mut StripRows, x: usize, rightward: bool) {
         let (top, bottom) = (&rows.top, &rows.bottom);
-        let h = [top[x].h, top[x + 1].h, bottom[x].h, bottom[x + 1].h];
-        // A cell crossing the water line puts its shore points on the sea
-        // plane, possibly outside its corners' box: never skip those.
-        let crosses = h.iter().any(|&h| h < 0.0) && h.iter().any(|&h| h > 0.0);
+        let v = [&top[x], &top[x + 1], &bottom[x], &bottom[x + 1]];
+        // A cell crossing the water line puts its shore points on the
+        // water's plane, possibly outside its corners' box: never skip those.
+        let crosses = v.iter().any(|v| v.h < v.w) && v.iter().any(|v| v.h > v.w);
         let corners = [top[x].p, top[x + 1].p, bottom[x].p, bottom[x + 1].p];
         if !crosses {
             match centre_box(corners, canvas.clip()) {
@@ -163,20 +166,24 @@ impl Scene<'_> {
     }
 
     /// One grid triangle: water, land, or both split at the water line
-    /// (seed 000's DrawTriangle).
+    /// (seed 000's DrawTriangle). The face's water is a lake's where a
+    /// corner lies under one (its other corners then stand at or above the
+    /// lake's lip), else the sea's.
     fn fill_face(&self, canvas: &mut Canvas, c: Face) {
-        let wet = c.map(|k| k.h < 0.0);
-        if c.iter().all(|k| k.h <= 0.0) {
-            self.fill_water(canvas, c);
+        let level = c[0].w.max(c[1].w).max(c[2].w);
+        let wet = c.map(|k| k.h < level);
+        if c.iter().all(|k| k.h <= level) {
+            self.fill_water(canvas, c, level);
         } else if !wet.iter().any(|&w| w) {
             self.fill_land(canvas, c, || self.face_normal(&c), lit_of(&c));
         } else {
-            self.fill_split(canvas, c, wet);
+            self.fill_split(canvas, c, wet, level);
         }
     }
 
-    /// A triangle crossing the water line, cut into its land and water parts.
-    fn fill_split(&self, canvas: &mut Canvas, c: Face, wet: [bool; 3]) {
+    /// A triangle crossing the water line (at `level`), cut into its land
+    /// and water parts.
+    fn fill_split(&self, canvas: &mut Canvas, c: Face, wet: [bool; 3], level: f32) {
         // `odd` is the corner alone on its side; keep the winding of `c`.
         let odd = if wet[0] != wet[1] && wet[0] != wet[2] {
             0
@@ -187,8 +194,8 @@ impl Scene<'_> {
         };
         let a = c[odd];
         let (s0, s1) = (c[(odd + 1) % 3], c[(odd + 2) % 3]);
-        let m0 = self.shore(a, s0);
-        let m1 = self.shore(a, s1);
+        let m0 = self.shore(a, s0, level);
+        let m1 = self.shore(a, s1, level);
         let normal = self.face_normal(&c);
         let lit = lit_of(&c);
         // The odd corner's part first, then the other side's two.
@@ -201,7 +208,7 @@ impl Scene<'_> {
                 let water = (i == 0) == wet[odd];
                 let Some(coast) = &coast else {
                     return if water {
-                        self.fill_water(canvas, part);
+                        self.fill_water(canvas, part, level);
                     } else {
                         self.fill_land(canvas, part, || normal, lit);
                     };
@@ -214,13 +221,13 @@ impl Scene<'_> {
                 self.paint_pixels(canvas, part.map(|k| k.p), || {
                     let (own, other) = if water {
                         (
-                            Side::One(self.water_colour(&part)),
+                            Side::One(self.water_colour(&part, level)),
                             self.land_side(&across, normal, lit),
                         )
                     } else {
                         (
                             self.land_side(&part, normal, lit),
-                            Side::One(self.water_colour(&across)),
+                            Side::One(self.water_colour(&across, level)),
                         )
                     };
                     move |x, y| {
@@ -233,14 +240,16 @@ impl Scene<'_> {
         );
     }
 
-    /// Where the edge from `a` to `b` (one wet, one dry) meets sea level.
-    fn shore(&self, a: &Corner, b: &Corner) -> Corner {
-        let f = a.h / (a.h - b.h);
+    /// Where the edge from `a` to `b` (one wet, one dry) meets the water
+    /// surface at `level` (sea level, or a lake's).
+    fn shore(&self, a: &Corner, b: &Corner, level: f32) -> Corner {
+        let f = (a.h - level) / (a.h - b.h);
         let g = a.g + (b.g - a.g) * f;
         Corner {
             g,
-            h: 0.0,
-            p: self.project_sea(g),
+            h: level,
+            w: level,
+            p: self.project_water(g, level),
             lit: a.lit + (b.lit - a.lit) * f,
             sky: a.sky + (b.sky - a.sky) * f,
             haze: (a.haze as f32 + (b.haze as f32 - a.haze as f32) * f) as u32,
@@ -298,13 +307,17 @@ impl Scene<'_> {
         }
     }
 
-    fn fill_water(&self, canvas: &mut Canvas, c: Face) {
-        self.paint(canvas, [c[0].p, c[1].p, c[2].p], || self.water_colour(&c));
+    fn fill_water(&self, canvas: &mut Canvas, c: Face, level: f32) {
+        self.paint(canvas, [c[0].p, c[1].p, c[2].p], || {
+            self.water_colour(&c, level)
+        });
     }
 
-    /// The colour of a water face: by its depth, with the wind's streaks.
-    fn water_colour(&self, c: &Face) -> u32 {
-        let depth = -(c[0].h.min(0.0) + c[1].h.min(0.0) + c[2].h.min(0.0)) / 3.0;
+    /// The colour of a water face whose surface is at `level`: by its depth
+    /// below it, with the wind's streaks.
+    fn water_colour(&self, c: &Face, level: f32) -> u32 {
+        let below = |k: &Corner| (k.h - level).min(0.0);
+        let depth = -(below(c[0]) + below(c[1]) + below(c[2])) / 3.0;
         let water = self.palette.water(depth);
         let water = match &self.ripples {
             Some(r) => {
@@ -327,8 +340,8 @@ impl Scene<'_> {
         let (a, b) = match (a.h > 0.0, b.h > 0.0) {
             (false, false) => return,
             (true, true) => (a, b),
-            (true, false) => (a, self.shore(&a, &b)),
-            (false, true) => (self.shore(&a, &b), b),
+            (true, false) => (a, self.shore(&a, &b, 0.0)),
+            (false, true) => (self.shore(&a, &b, 0.0), b),
         };
         let (fa, fb) = (foot(a), foot(b));
         let colour = self.hazed_face(self.palette.skirt(normal), &[&a, &b, &fa]);

@@ -56,8 +56,17 @@ pub const KEY_LOW_DETAIL: &str = "mountains:low_detail";
 pub const KEY_SEA_FRACTION: &str = "mountains:sea_fraction";
 /// `Settings::erosion`; absent in files made before erosion, which had none.
 pub const KEY_EROSION: &str = "mountains:erosion";
+/// `Settings::hurst`; absent in files made before the Brownian generator.
+pub const KEY_HURST: &str = "mountains:hurst";
+/// `Settings::cliffs`; absent in files made before cliffs, which had none.
+pub const KEY_CLIFFS: &str = "mountains:cliffs";
 
-const KNOWN_KEYS: [&str; 17] = [
+/// Parameters files from before they existed lack: their default is taken
+/// without a note (an older file's mountain did not use them, or, for
+/// erosion, had none: see `read_params`).
+const LATER_KEYS: &[&str] = &[KEY_EROSION, KEY_HURST, KEY_CLIFFS];
+
+const KNOWN_KEYS: [&str; 19] = [
     KEY_FORMAT,
     KEY_SCALE,
     KEY_OFFSET,
@@ -75,6 +84,8 @@ const KNOWN_KEYS: [&str; 17] = [
     KEY_LOW_DETAIL,
     KEY_SEA_FRACTION,
     KEY_EROSION,
+    KEY_HURST,
+    KEY_CLIFFS,
 ];
 
 /// The generator settings that made a mountain, read back from its file:
@@ -352,7 +363,7 @@ fn read_params<'a>(
     };
     for (meta_key, key) in PARAM_KEYS {
         let Some(raw) = get(meta_key) else {
-            if *meta_key == KEY_EROSION {
+            if LATER_KEYS.contains(meta_key) {
                 continue;
             }
             notes.push(format!("{meta_key} missing; the default is assumed"));
@@ -377,6 +388,8 @@ const PARAM_KEYS: &[(&str, &str)] = &[
     (KEY_LOW_DETAIL, "low_detail"),
     (KEY_SEA_FRACTION, "sea_level"),
     (KEY_EROSION, "erosion"),
+    (KEY_HURST, "hurst"),
+    (KEY_CLIFFS, "cliffs"),
 ];
 
 #[cfg(test)]
