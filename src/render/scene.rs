@@ -223,22 +223,37 @@ impl<'a> Scene<'a> {
     /// need it.
     pub(crate) fn project_points(&self, y: usize, xs: std::ops::Range<usize>, out: &mut [Vert]) {
         let row = self.field.row(y);
-        let lakes = self.field.lakes().filter(|_| self.lakes);
-        let runs = lakes.map_or(&[][..], |l| l.row(y));
-        for x in xs {
+        let line = self.view.along_row(y as f32);
+        self.surfaces(y, xs, |x, w| {
             let h = finite(row[x]);
-            let i = runs.partition_point(|r| (r.end as usize) <= x);
-            let w = match (lakes, runs.get(i)) {
-                (Some(l), Some(r)) if r.start as usize <= x => l.level(r.lake),
-                _ => 0.0,
-            };
-            let p = self.view.project(x as f32, y as f32, h.max(w));
+            let p = line.project(x as f32, h.max(w));
             out[x] = Vert {
                 p: to_fixed(p.x, p.y),
                 h,
                 w,
                 ..Vert::default()
             };
+        });
+    }
+
+    /// Calls `f` with each point `x` of `xs` in grid row `y` and the water
+    /// surface over it: a drawn lake's level, or the sea's 0. The drawn
+    /// surface there is the higher of that and the ground.
+    pub(crate) fn surfaces(
+        &self,
+        y: usize,
+        xs: std::ops::Range<usize>,
+        mut f: impl FnMut(usize, f32),
+    ) {
+        let lakes = self.field.lakes().filter(|_| self.lakes);
+        let runs = lakes.map_or(&[][..], |l| l.row(y));
+        for x in xs {
+            let i = runs.partition_point(|r| (r.end as usize) <= x);
+            let w = match (lakes, runs.get(i)) {
+                (Some(l), Some(r)) if r.start as usize <= x => l.level(r.lake),
+                _ => 0.0,
+            };
+            f(x, w);
         }
     }
 

@@ -14,6 +14,29 @@ pub(crate) struct Camera {
     back_depth: f32,
 }
 
+/// A camera's projection along one grid row ([`Camera::along_row`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct RowCamera {
+    eye: Vec3,
+    forward: Vec3,
+    up: Vec3,
+    /// The row's share of the depth and of the height above the eye.
+    forward_y: f32,
+    up_y: f32,
+    near: f32,
+}
+
+impl RowCamera {
+    /// Unscaled screen position of the point at world x `x`, height `z`.
+    #[inline]
+    pub(crate) fn project(&self, x: f32, z: f32) -> Vec2 {
+        let (dx, dz) = (x - self.eye.x, z - self.eye.z);
+        let depth = (dx * self.forward.x + self.forward_y + dz * self.forward.z).max(self.near);
+        let up = dx * self.up.x + self.up_y + dz * self.up.z;
+        Vec2::new(dx / depth, -up / depth)
+    }
+}
+
 impl Camera {
     /// At `eye`, level sideways, looking towards `-y` and down by `pitch`
     /// radians, for a grid `extent` units wide.
@@ -59,6 +82,21 @@ impl Camera {
         let d = p - self.eye;
         let depth = self.depth(p);
         Vec2::new(d.x / depth, -d.dot(self.up) / depth)
+    }
+
+    /// [`Camera::project`] for the points of one line of world y `y` (a
+    /// grid row): the terms that do not change along it, worked out once.
+    /// The same sums in the same order, so the same bits.
+    pub(crate) fn along_row(&self, y: f32) -> RowCamera {
+        let dy = y - self.eye.y;
+        RowCamera {
+            eye: self.eye,
+            forward: self.forward,
+            up: self.up,
+            forward_y: dy * self.forward.y,
+            up_y: dy * self.up.y,
+            near: self.near,
+        }
     }
 
     /// How far `p` lies in front of the camera, as a share of the back

@@ -7,7 +7,7 @@
 
 use glam::{Vec2, Vec3};
 
-use super::camera::Camera;
+use super::camera::{Camera, RowCamera};
 use super::vista;
 use crate::settings::ViewKind;
 
@@ -32,6 +32,34 @@ pub struct View {
     size: usize,
     /// Sine and cosine of the tilt.
     tilt: (f32, f32),
+}
+
+/// A view's projection along one grid row ([`View::along_row`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct RowView {
+    camera: Option<RowCamera>,
+    /// The row's world y.
+    y: f32,
+    cell: f32,
+    scale: f32,
+    offset: Vec2,
+    tilt: (f32, f32),
+}
+
+impl RowView {
+    /// Pixel position of the row's point at grid column `gx`, height `z`.
+    #[inline]
+    pub(crate) fn project(&self, gx: f32, z: f32) -> Vec2 {
+        let x = gx * self.cell;
+        let unscaled = match &self.camera {
+            Some(cam) => cam.project(x, z),
+            None => {
+                let (sin, cos) = self.tilt;
+                Vec2::new(x - SHEAR * self.y, self.y * cos - z * sin)
+            }
+        };
+        self.offset + self.scale * unscaled
+    }
 }
 
 impl View {
@@ -176,6 +204,21 @@ impl View {
         self.offset + self.scale * self.unscaled(gx, gy, z)
     }
 
+    /// [`View::project`] along grid row `gy`: the same pixels, with what
+    /// does not change along a row worked out once.
+    #[inline]
+    pub(crate) fn along_row(&self, gy: f32) -> RowView {
+        let y = gy * self.cell;
+        RowView {
+            camera: self.camera.map(|c| c.along_row(y)),
+            y,
+            cell: self.cell,
+            scale: self.scale,
+            offset: self.offset,
+            tilt: self.tilt,
+        }
+    }
+
     /// Grid column the perspective camera stands in front of (the view is
     /// drawn from the outside towards it); `None` for the oblique view, which
     /// is seen from the right and drawn left to right.
@@ -196,5 +239,24 @@ impl View {
     /// Width of one grid step in height units.
     pub fn cell(&self) -> f32 {
         self.cell
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_row_projects_to_the_same_pixels_as_the_view() {
+        for kind in [ViewKind::Vista, ViewKind::Perspective, ViewKind::Oblique] {
+            let view = View::new(kind, 65, 250.0, 60.0, 640, 360);
+            for gy in [0.0, 17.0, 64.0] {
+                let row = view.along_row(gy);
+                for (gx, z) in [(0.0, 0.0), (5.0, 12.5), (64.0, 60.0), (31.0, -3.0)] {
+                    let (a, b) = (row.project(gx, z), view.project(gx, gy, z));
+                    assert_eq!(a, b, "{kind:?} at ({gx}, {gy}, {z})");
+                }
+            }
+        }
     }
 }

@@ -195,17 +195,16 @@ impl HorizonSweep {
     }
 }
 
-/// The screen positions of grid row `gy`'s points `gxs` (land at its
-/// height, water at sea level), into `out`.
+/// The screen positions of grid row `gy`'s points `gxs` (the drawn
+/// surface: land at its height, water at its level), into `out`.
 fn project_points(scene: &Scene, gy: usize, gxs: RangeInclusive<usize>, out: &mut Vec<[f32; 2]>) {
     let row = scene.field.row(gy);
+    let line = scene.view.along_row(gy as f32);
     out.clear();
-    out.extend(gxs.map(|gx| {
-        let p = scene
-            .view
-            .project(gx as f32, gy as f32, finite(row[gx]).max(0.0));
-        [p.x, p.y]
-    }));
+    scene.surfaces(gy, *gxs.start()..*gxs.end() + 1, |gx, w| {
+        let p = line.project(gx as f32, finite(row[gx]).max(w));
+        out.push([p.x, p.y]);
+    });
 }
 
 /// The horizon while it is swept: each column's top so far, the lowest
@@ -243,7 +242,8 @@ impl Sweep {
     /// do not roll), and the block's columns lie between its corners'.
     fn hides(&self, scene: &Scene, gy: usize, first: usize, last: usize) -> bool {
         let z = scene.row_top.within(gy, first..=last);
-        let corner = |gx: usize, z: f32| scene.view.project(gx as f32, gy as f32, z);
+        let line = scene.view.along_row(gy as f32);
+        let corner = |gx: usize, z: f32| line.project(gx as f32, z);
         let corners = [
             corner(first, 0.0),
             corner(last, 0.0),
