@@ -4,6 +4,7 @@
 //! pixels, never the order they were drawn in, so the full frame's bands
 //! and the painter's last step end with the same pixels.
 
+use super::columns::ColumnsMut;
 use super::horizon::{Edge, Horizon};
 use super::{crests, skyline};
 use crate::render::damage::Damage;
@@ -18,6 +19,16 @@ pub(crate) fn clean_edges(scene: &Scene, horizon: &Horizon, frame: &mut Frame) -
         .map(|x| horizon.skyline(scene, x))
         .collect();
     let (mut damage, tops) = skyline::smooth(frame, &scene.sky, &exact);
-    crests::smooth(frame, scene, horizon, &tops, &mut damage);
+    // The crests' pixels are far apart in memory and their mixing waits on
+    // it: two threads, a half of the columns each, take half the time.
+    let [mut left, mut right] = ColumnsMut::split(frame, frame.width() / 2);
+    let (ours, theirs) = std::thread::scope(|s| {
+        let theirs = s.spawn(|| crests::smooth(&mut right, scene, horizon, &tops));
+        (crests::smooth(&mut left, scene, horizon, &tops), theirs.join())
+    });
+    let theirs = theirs.unwrap_or_else(|panic| std::panic::resume_unwind(panic));
+    for r in ours.rects().chain(theirs.rects()) {
+        damage.add(r);
+    }
     damage
 }

@@ -10,7 +10,8 @@
 
 use super::horizon::{Crest, Edge, Horizon};
 use crate::render::damage::Damage;
-use crate::render::frame::{Frame, Rect};
+use super::columns::ColumnsMut;
+use crate::render::frame::Rect;
 use crate::render::scene::Scene;
 use crate::render::shade::colour::blend_packed;
 
@@ -20,17 +21,21 @@ const MAX_ROWS: f32 = 12.0;
 /// Colours closer than this in every channel show no step worth mixing.
 const ALIKE: u32 = 2;
 
-/// Mixes the pixels along every crest of `horizon` in a complete `frame`
-/// of `scene`, below the columns' skyline `sky_tops` (first rows of land,
-/// which the skyline's own pass mixes); adds what it changed to `damage`.
+/// Mixes the pixels along every crest of `horizon` in the columns of a
+/// complete frame of `scene` that `frame` holds, below the columns' skyline
+/// `sky_tops` (first rows of land, which the skyline's own pass mixes);
+/// returns what it changed.
 pub(crate) fn smooth(
-    frame: &mut Frame,
+    frame: &mut ColumnsMut,
     scene: &Scene,
     horizon: &Horizon,
     sky_tops: &[u32],
-    damage: &mut Damage,
-) {
+) -> Damage {
+    let mut damage = Damage::default();
     for crest in horizon.crests() {
+        if !frame.holds(crest.x) {
+            continue;
+        }
         let Some(&sky_top) = sky_tops.get(crest.x as usize) else {
             continue;
         };
@@ -43,10 +48,11 @@ pub(crate) fn smooth(
             });
         }
     }
+    damage
 }
 
 /// Mixes one crest's column; returns the rows changed, if any.
-fn mix_crest(frame: &mut Frame, scene: &Scene, crest: &Crest, sky_top: u32) -> Option<(u32, u32)> {
+fn mix_crest(frame: &mut ColumnsMut, scene: &Scene, crest: &Crest, sky_top: u32) -> Option<(u32, u32)> {
     let top = (crest_centre(crest)? - 0.5).ceil();
     // Rows clear of the skyline, with a pixel of far land above the edge
     // and one of near land below it inside the frame.
@@ -72,7 +78,7 @@ fn crest_centre(crest: &Crest) -> Option<f32> {
 /// down; `top` is the first row the near land covers at the centre, and
 /// `[far, near]` the colours above and below it there.
 fn mix_rows(
-    frame: &mut Frame,
+    frame: &mut ColumnsMut,
     x: u32,
     top: u32,
     edge: &Edge,
@@ -120,6 +126,7 @@ fn alike(a: u32, b: u32) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::render::frame::Frame;
 
     const FAR: u32 = 0x0080_8080;
     const NEAR: u32 = 0x0000_4000;
@@ -140,7 +147,8 @@ mod tests {
             samples: [9.5; 4],
             centre: 9.5,
         };
-        let rows = mix_rows(&mut f, 0, 10, &edge, [FAR, NEAR], 0);
+        let [mut cols, _] = ColumnsMut::split(&mut f, 1);
+        let rows = mix_rows(&mut cols, 0, 10, &edge, [FAR, NEAR], 0);
         assert_eq!(rows, Some((9, 10)));
         assert_eq!(f.get(0, 9), blend_packed(FAR, NEAR, 128));
         assert_eq!((f.get(0, 8), f.get(0, 10)), (FAR, NEAR));
@@ -154,7 +162,8 @@ mod tests {
             samples: [14.0, 14.0, 6.0, 14.0],
             centre: 6.0,
         };
-        mix_rows(&mut f, 0, 6, &edge, [FAR, NEAR], 0);
+        let [mut cols, _] = ColumnsMut::split(&mut f, 1);
+        mix_rows(&mut cols, 0, 6, &edge, [FAR, NEAR], 0);
         for y in 6..14 {
             assert_eq!(f.get(0, y), blend_packed(FAR, NEAR, 64), "row {y}");
         }
