@@ -43,7 +43,9 @@ impl Painter {
             How::Ridges(Ridges::new(&field, settings, width, height))
         } else {
             let scene = Scene::new(FieldRef::Shared(field), settings, width, height);
-            let sweep = scene.clean_edges.then(|| Box::new(HorizonSweep::new(width)));
+            let sweep = scene
+                .clean_edges
+                .then(|| Box::new(HorizonSweep::new(width)));
             How::Mesh(Box::new(scene), Rows::new(), sweep)
         };
         Painter {
