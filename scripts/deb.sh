@@ -45,6 +45,7 @@ dlopened=$(sed -n 's/^ *("lib[^"]*", "\([a-z0-9.+-]*\)"),$/\1/p' $table | sort -
 [ -n "$dlopened" ] || { echo "deb.sh: no library table found in src/ (X11_LIBRARIES)" >&2; exit 1; }
 
 mkdir -p "$out"
+out=$(cd "$out" && pwd)
 # Built beside the output and renamed into place: never half a package.
 work=$(mktemp -d "$out/.deb.XXXXXX")
 trap 'rm -rf "$work"' EXIT

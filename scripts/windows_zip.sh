@@ -35,16 +35,19 @@ fi
 
 version=$(sed -n 's/^version = "\(.*\)"$/\1/p' Cargo.toml | head -n 1)
 mkdir -p "$out"
+out=$(cd "$out" && pwd)
 # Built beside the output and renamed into place: never half a zip.
 work=$(mktemp -d "$out/.zip.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 umask 022
+# The same sources give the same zip: every time is the last commit's (strip
+# stamps the PE header with SOURCE_DATE_EPOCH when it is set, else with now).
+SOURCE_DATE_EPOCH=${SOURCE_DATE_EPOCH:-$(git log -1 --format=%ct 2>/dev/null || date +%s)}
+export SOURCE_DATE_EPOCH
 x86_64-w64-mingw32-strip -o "$work/mountains.scr" "$exe"
 sed "s/@VERSION@/$version/; s/\$/\r/" contrib/README-windows.txt >"$work/README-windows.txt"
 sed 's/$/\r/' LICENSE >"$work/LICENSE.txt"
-# The same sources give the same zip: every time is the last commit's.
-epoch=${SOURCE_DATE_EPOCH:-$(git log -1 --format=%ct 2>/dev/null || date +%s)}
-touch -d "@$epoch" "$work/mountains.scr" "$work/README-windows.txt" "$work/LICENSE.txt"
+touch -d "@$SOURCE_DATE_EPOCH" "$work/mountains.scr" "$work/README-windows.txt" "$work/LICENSE.txt"
 zip=mountains-$version-windows-x86_64.zip
 (cd "$work" && zip -q -X -9 "$zip" mountains.scr README-windows.txt LICENSE.txt)
 mv "$work/$zip" "$out/$zip"

@@ -70,6 +70,14 @@ fn deb_tools() -> bool {
     true
 }
 
+/// A folder under target/ that the scripts write into (each package is
+/// renamed into place whole, so runs at the same time do not clash).
+fn output_dir(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("packages-{name}"));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
 /// A folder under target/ for this run's files, empty at first.
 fn scratch(name: &str) -> PathBuf {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
@@ -86,7 +94,7 @@ fn deb() -> Option<&'static Path> {
         return None;
     }
     let deb = DEB.get_or_init(|| {
-        let out = scratch("deb");
+        let out = output_dir("deb");
         let made = stdout(
             "sh",
             &[
@@ -444,14 +452,19 @@ fn desktop_entries_are_valid_and_open_the_window_and_the_settings() {
             "{file}: {}",
             String::from_utf8_lossy(&out.stdout)
         );
-        let keys = desktop_keys(&std::fs::read_to_string(&path).unwrap());
+        let text = std::fs::read_to_string(&path).unwrap();
+        let keys = desktop_keys(&text);
         assert_eq!(keys["Exec"], exec, "{file}");
-        // The flag is one the program knows (its usage lists it).
-        let flag = exec.split(' ').nth(1).unwrap();
-        assert!(
-            usage.contains(flag),
-            "{file}: {flag} is not in --help's usage"
-        );
+        // Every command, the actions' too, is one --help's usage lists.
+        for command in text.lines().filter_map(|l| l.strip_prefix("Exec=")) {
+            let (program, flag) = command.split_once(' ').expect("a program and a flag");
+            assert_eq!(program, "mountains", "{file}: the packaged binary, by name");
+            let listed = usage.lines().any(|l| {
+                let l = l.trim_start();
+                l.starts_with("mountains ") && l.split_whitespace().any(|word| word == flag)
+            });
+            assert!(listed, "{file}: {command} is not in --help's usage");
+        }
         // The icon the package installs, and the window's app_id / class.
         assert_eq!(keys["Icon"], "mountains", "{file}");
         assert_eq!(keys["StartupWMClass"], "mountains", "{file}");
@@ -522,7 +535,7 @@ fn windows_zip_holds_the_stripped_scr_a_read_me_and_the_licence() {
             );
         }
     }
-    let out = scratch("zip");
+    let out = output_dir("zip");
     let made = stdout(
         "sh",
         &[
@@ -582,5 +595,4 @@ fn windows_zip_holds_the_stripped_scr_a_read_me_and_the_licence() {
             "Windows line ends"
         );
     }
-    let _ = std::fs::remove_dir_all(&out);
 }
