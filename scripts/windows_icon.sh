@@ -1,8 +1,9 @@
 #!/bin/sh
 # Regenerates assets/mountains.ico, the icon build.rs puts into the Windows
-# exe: one of the program's own mountains (seed 42 at the built-in defaults,
-# 256x256), whole at 256 and 48 pixels, the central peak at 32 and 16 (the
-# whole scene is a smudge that small).
+# exe, and from it the Linux icons (scripts/linux_icons.sh): one of the
+# program's own mountains (seed 42 at the built-in defaults, 256x256), whole
+# at 256 and 48 pixels, the central peak at 32 and 16 (the whole scene is a
+# smudge that small).
 # Needs ImageMagick's convert (apt-get install -y imagemagick).
 # Usage: sh scripts/windows_icon.sh   (builds the release binary first)
 set -eu
@@ -27,3 +28,5 @@ target/release/mountains render --config "$work/empty.toml" --size 256x256 \
   "ico:assets/mountains.ico.tmp"
 mv assets/mountains.ico.tmp assets/mountains.ico
 ls -l assets/mountains.ico
+# The Linux desktop icons are the same pictures.
+sh scripts/linux_icons.sh
