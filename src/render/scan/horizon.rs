@@ -172,8 +172,9 @@ impl HorizonSweep {
     /// The horizon, once every row of `scene` is swept.
     pub(crate) fn finish(mut self, scene: &Scene) -> Horizon {
         self.advance_to(scene, 1.0);
+        let tops = (0..self.sweep.ys.len()).map(|c| self.sweep.top(c)).collect();
         Horizon {
-            tops: self.sweep.tops,
+            tops,
             crests: self.sweep.crests,
         }
     }
@@ -211,9 +212,11 @@ fn project_points(scene: &Scene, gy: usize, gxs: RangeInclusive<usize>, out: &mu
 /// top in each tile of [`TILE`] columns (a block of points wholly below
 /// it is passed over unprojected), and the crests found.
 struct Sweep {
-    tops: Vec<Top>,
-    /// The tops' heights again, packed for [`Sweep::settle`].
+    /// Each column's top so far: its height, kept row and grid point (the
+    /// three apart, so that the inner loop reads and writes little).
     ys: Vec<f32>,
+    rows: Vec<u32>,
+    points: Vec<u32>,
     lowest: Vec<f32>,
     /// Tiles whose lowest top may have risen since it was last worked out.
     stale: Vec<bool>,
@@ -222,18 +225,23 @@ struct Sweep {
 
 impl Sweep {
     fn new(width: usize) -> Self {
-        let none = Top {
-            y: f32::INFINITY,
-            row: NONE,
-            point: 0,
-        };
         let tiles = width.div_ceil(TILE);
         Sweep {
-            tops: vec![none; width],
             ys: vec![f32::INFINITY; width],
+            rows: vec![NONE; width],
+            points: vec![0; width],
             lowest: vec![f32::INFINITY; tiles],
             stale: vec![false; tiles],
             crests: Vec::new(),
+        }
+    }
+
+    /// Column `c`'s top.
+    fn top(&self, c: usize) -> Top {
+        Top {
+            y: self.ys[c],
+            row: self.rows[c],
+            point: self.points[c],
         }
     }
 
@@ -259,7 +267,7 @@ impl Sweep {
         if !(top.is_finite() && lo.is_finite() && hi.is_finite()) {
             return false;
         }
-        let width = self.tops.len() as f32;
+        let width = self.ys.len() as f32;
         let (c0, c1) = (first_centre(lo, width), first_centre(hi, width));
         if c0 >= c1 {
             return true;
@@ -273,7 +281,7 @@ impl Sweep {
     /// wherever that row comes out from behind land nearer than the row
     /// just in front of it.
     fn lower(&mut self, points: &[[f32; 2]], first: usize, row: u32) {
-        let width = self.tops.len() as f32;
+        let width = self.ys.len() as f32;
         let Some((&start, rest)) = points.split_first() else {
             return;
         };
@@ -292,20 +300,26 @@ impl Sweep {
             }
             let slope = (b[1] - a[1]) / (b[0] - a[0]);
             let point = (first + i) as u32;
-            for c in c0..c1 {
-                let y = a[1] + slope * (c as f32 + 0.5 - a[0]);
-                let top = &mut self.tops[c];
-                if y >= top.y {
+            let (ys, rows) = (&mut self.ys[c0..c1], &mut self.rows[c0..c1]);
+            for (k, (top_y, top_row)) in ys.iter_mut().zip(rows.iter_mut()).enumerate() {
+                let y = a[1] + slope * ((c0 + k) as f32 + 0.5 - a[0]);
+                if y >= *top_y {
                     continue;
                 }
-                if top.row != NONE && top.row != row + 1 && top.row != row {
+                // Not the row just in front (a slope going on), nor this
+                // row again, nor nothing yet: farther land coming out.
+                if top_row.wrapping_sub(row) > 1 && *top_row != NONE {
                     self.crests.push(Crest {
-                        x: c as u32,
-                        top: *top,
+                        x: (c0 + k) as u32,
+                        top: Top {
+                            y: *top_y,
+                            row: *top_row,
+                            point: self.points[c0 + k],
+                        },
                     });
                 }
-                *top = Top { y, row, point };
-                self.ys[c] = y;
+                (*top_y, *top_row) = (y, row);
+                self.points[c0 + k] = point;
             }
             self.stale[c0 / TILE] = true;
             self.stale[(c1 - 1) / TILE] = true;
@@ -425,9 +439,9 @@ mod tests {
         let xs: Vec<u32> = s.crests.iter().map(|c| c.x).collect();
         assert_eq!(xs, (0..8).collect::<Vec<u32>>());
         assert!(s.crests.iter().all(|c| c.top.y == 6.0 && c.top.row == 2));
-        assert_eq!(s.tops[0].row, 0);
-        assert_eq!(s.tops[9].row, 2);
-        assert_eq!(s.tops[6].point, 1, "the far row's second segment");
+        assert_eq!(s.top(0).row, 0);
+        assert_eq!(s.top(9).row, 2);
+        assert_eq!(s.top(6).point, 1, "the far row's second segment");
     }
 
     #[test]
@@ -435,10 +449,10 @@ mod tests {
         let (mut a, mut b) = (Sweep::new(8), Sweep::new(8));
         a.lower(&[[0.0, 1.0], [8.0, 5.0]], 0, 0);
         b.lower(&[[8.0, 5.0], [0.0, 1.0]], 0, 0);
-        for (p, q) in a.tops.iter().zip(&b.tops) {
-            assert_eq!(p.y, q.y);
+        for (p, q) in a.ys.iter().zip(&b.ys) {
+            assert_eq!(p, q);
         }
-        assert!((a.tops[3].y - (1.0 + 3.5 * 0.5)).abs() < 1e-6);
+        assert!((a.top(3).y - (1.0 + 3.5 * 0.5)).abs() < 1e-6);
     }
 
     #[test]
