@@ -79,7 +79,7 @@ strip() {
     done
     # shellcheck disable=SC2046 # one argument per tile file
     montage $(cat "$tmp/tiles-$size") -tile 4x -geometry +3+3 -pointsize $((11 * k)) \
-        -background white -title "1:1 crops of ${size} frames: before (e1354d1, flat faces), after (smooth shading, anti-aliased skyline and coast)\n${note}" \
+        -background white -title "1:1 crops of ${size} frames: before (e1354d1, flat faces), after (smooth shading; skyline, crests and coast anti-aliased; lakes)\n${note}" \
         "$tmp/strip.png"
     convert "$tmp/strip.png" -strip -sampling-factor 4:4:4 -quality "$quality" "$out"
     echo "$out: $(wc -c <"$out") bytes"
