@@ -3,6 +3,7 @@
 //! The key table (names, ranges, docs) lives in `settings/keys.rs`, reading
 //! files and `--set` in `settings/load.rs`; this file holds the types.
 
+pub mod handles;
 pub mod keys;
 pub mod load;
 pub mod paths;

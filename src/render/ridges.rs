@@ -58,8 +58,7 @@ impl Ridges {
     pub fn new(field: &Heightfield, settings: &Settings, width: u32, height: u32) -> Self {
         let seed = field.fingerprint();
         let points = profile_points(width);
-        let tallness =
-            0.6 + 0.08 * crate::settings::keys::clamp_int("height", settings.height) as f32;
+        let tallness = 0.6 + 0.08 * crate::settings::handles::HEIGHT.clamp(settings.height) as f32;
         let layers = (0..LAYERS)
             .map(|i| make_layer(field, seed, i, points, tallness))
             .collect();

@@ -6,13 +6,14 @@ use std::path::PathBuf;
 use super::input::Action;
 use crate::mountain::Mountain;
 use crate::render::Frame;
+use crate::settings::handles::{COLOR, CRAGGINESS, LOW_DETAIL, RELATIVE_DEPTH};
 use crate::settings::keys::{self, Change, Kind, Value};
 use crate::settings::{ColorMode, Settings};
 
 /// The colour mode after `color`, wrapping round, in the key table's order
 /// (the order the settings file and screen list them).
 pub fn next_color(color: ColorMode) -> ColorMode {
-    let key = key("color");
+    let key = COLOR.row();
     let Kind::Choice(names) = key.kind else {
         return color;
     };
@@ -43,12 +44,7 @@ pub fn smoother(c: u32) -> u32 {
 
 /// Clamps to the range the key table allows for cragginess.
 fn clamp_cragginess(c: u64) -> u32 {
-    keys::clamp_int("cragginess", u32::try_from(c).unwrap_or(u32::MAX))
-}
-
-/// A key the table is known to hold (tests cover every name used here).
-fn key(name: &str) -> &'static keys::Key {
-    keys::find(name).unwrap_or_else(|| panic!("`{name}` is missing from the key table"))
+    CRAGGINESS.clamp(u32::try_from(c).unwrap_or(u32::MAX))
 }
 
 /// The settings a key action leads to, and what the change does to the
@@ -56,30 +52,30 @@ fn key(name: &str) -> &'static keys::Key {
 /// `None` for actions that do not change settings.
 pub fn changed_settings(action: Action, settings: &Settings) -> Option<(Settings, Change)> {
     let mut s = settings.clone();
-    let name = match action {
+    let key = match action {
         Action::NextColor => {
             s.color = next_color(s.color);
-            "color"
+            COLOR.row()
         }
         Action::ToggleRelativeDepth => {
             s.relative_depth = !s.relative_depth;
-            "relative_depth"
+            RELATIVE_DEPTH.row()
         }
         Action::ToggleLowDetail => {
             s.low_detail = !s.low_detail;
-            "low_detail"
+            LOW_DETAIL.row()
         }
         Action::MoreCraggy => {
             s.cragginess = craggier(s.cragginess);
-            "cragginess"
+            CRAGGINESS.row()
         }
         Action::LessCraggy => {
             s.cragginess = smoother(s.cragginess);
-            "cragginess"
+            CRAGGINESS.row()
         }
         _ => return None,
     };
-    Some((s, key(name).change))
+    Some((s, key.change))
 }
 
 /// What an action whose effect does not show until the next mountain did,
@@ -172,7 +168,7 @@ mod tests {
     fn colours_cycle_through_every_mode() {
         let mut c = ColorMode::Natural;
         let mut seen = vec![c];
-        let Kind::Choice(names) = key("color").kind else {
+        let Kind::Choice(names) = COLOR.row().kind else {
             panic!("color is a choice")
         };
         assert_eq!(names.len(), 12);

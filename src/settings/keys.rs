@@ -391,31 +391,6 @@ pub const KEYS: &[Key] = &[
     ),
 ];
 
-/// `value` clamped into number key `name`'s range, or the key's default if
-/// it is NaN: for code given `Settings` built by hand rather than read
-/// through this table (the generator, the palette), so no value can stall
-/// them.
-pub fn clamp_float(name: &str, value: f32) -> f32 {
-    let key = find(name).unwrap_or_else(|| unreachable!("`{name}` is not a key"));
-    let (Kind::Float { min, max }, Value::Float(default)) = (key.kind, (key.default)()) else {
-        unreachable!("`{name}` is not a number key")
-    };
-    if value.is_nan() {
-        default as f32
-    } else {
-        value.clamp(min as f32, max as f32)
-    }
-}
-
-/// `value` clamped into whole-number key `name`'s range (see
-/// [`clamp_float`]).
-pub fn clamp_int(name: &str, value: u32) -> u32 {
-    let Some(Kind::Int { min, max }) = find(name).map(|k| k.kind) else {
-        unreachable!("`{name}` is not a whole-number key")
-    };
-    (i64::from(value)).clamp(min, max) as u32
-}
-
 impl Default for Settings {
     /// Every key at the default its row in the key table gives.
     fn default() -> Self {

@@ -3,7 +3,9 @@
 
 use super::heightfield::{MAX_EXPONENT, MIN_EXPONENT};
 use super::{SQUARE_EXTENT, TRIANGLE_EXTENT};
-use crate::settings::keys::{clamp_float, clamp_int};
+use crate::settings::handles::{
+    CLIFFS, CONTOUR, CRAGGINESS, ELEVATION, EROSION, HEIGHT, HURST, ROUGHNESS, SEA_LEVEL,
+};
 use crate::settings::{Generator, Profile, Settings, WaterLine};
 
 /// Validated generator parameters.
@@ -32,18 +34,18 @@ impl Params {
         Params {
             generator: s.generator,
             exponent: s.grid_exponent().clamp(MIN_EXPONENT, MAX_EXPONENT),
-            cragginess: clamp_int("cragginess", s.cragginess) as f32,
-            elevation: clamp_float("elevation", s.elevation),
-            roughness: clamp_float("roughness", s.roughness),
-            contour: clamp_float("contour", s.contour),
+            cragginess: CRAGGINESS.clamp(s.cragginess) as f32,
+            elevation: ELEVATION.clamp(s.elevation),
+            roughness: ROUGHNESS.clamp(s.roughness),
+            contour: CONTOUR.clamp(s.contour),
             profile: s.profile,
-            hurst: clamp_float("hurst", s.hurst),
-            height: clamp_int("height", s.height) as f32,
-            erosion: clamp_float("erosion", s.erosion),
-            sea_level: clamp_float("sea_level", s.sea_level),
+            hurst: HURST.clamp(s.hurst),
+            height: HEIGHT.clamp(s.height) as f32,
+            erosion: EROSION.clamp(s.erosion),
+            sea_level: SEA_LEVEL.clamp(s.sea_level),
             water_line: s.water_line,
             lakes: s.lakes,
-            cliffs: clamp_float("cliffs", s.cliffs),
+            cliffs: CLIFFS.clamp(s.cliffs),
         }
     }
 

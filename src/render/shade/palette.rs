@@ -368,7 +368,7 @@ struct Zones {
 impl Zones {
     /// Seed 000's treeline for a height setting of `height` (1..=10).
     fn new(height: u32, has_water: bool) -> Self {
-        let h = crate::settings::keys::clamp_int("height", height) as f32;
+        let h = crate::settings::handles::HEIGHT.clamp(height) as f32;
         Zones {
             treeline: 0.4 + 1.0 / h,
             band: 0.9 / h,
