@@ -107,6 +107,8 @@ fn main() -> ExitCode {
                 log::warn(&e.to_string());
                 return ExitCode::FAILURE;
             }
+            #[cfg(unix)]
+            saver::server_gone::report_when_the_server_goes();
             mountains::settings_ui::run(inv.config.as_deref(), &loaded, *parent)
         }
         mode => run_saver(mode, loaded, open, &inv.xss),
@@ -166,6 +168,8 @@ fn run_saver(
             None
         }
     });
+    #[cfg(unix)]
+    saver::server_gone::report_when_the_server_goes();
     match saver::run(mode, loaded.settings, opened, xss) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {

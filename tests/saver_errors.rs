@@ -112,3 +112,41 @@ fn display_a_16_bit_screen_is_refused_with_a_message() {
     );
     assert!(!stderr.contains("panicked"), "{stderr}");
 }
+
+/// When the X server goes away, every mode says so in words, on stderr and
+/// in mountains.log, and ends with status 1: Xlib's own handler printed
+/// "X connection to :N broken" and the embedded modes ended with 0 and no
+/// word, and nothing reached the log a screensaver's user can look at.
+#[test]
+fn display_the_server_going_away_is_said_and_logged() {
+    for mode in ["--window", "/s", "--root", "--window-id"] {
+        let Some(x) = Xvfb::start(320, 240, &[]) else {
+            return;
+        };
+        let mut args = vec![mode];
+        let window = (mode == "--window-id").then(|| x.create_window(120, 90));
+        let id = window.map(|w| format!("0x{w:x}")).unwrap_or_default();
+        if window.is_some() {
+            args.push(&id);
+        }
+        let mut saver = Saver::start(&x, "server-gone", &args, &[]);
+        // Drawing: the given window, or the screen (the root or a window of
+        // its own), shows a mountain.
+        xvfb::poll(&mut saver, &format!("{mode} drawing"), || match window {
+            Some(w) => xvfb::looks_drawn(&x.grab(w, 120, 90)),
+            None => xvfb::looks_drawn(&x.grab_screen()),
+        });
+        x.signal("KILL");
+        let status = saver.wait(PATIENCE).expect("mountains should end");
+        let stderr = saver.stderr();
+        let said = "error: the X server went away (display ";
+        assert_eq!(status.code(), Some(1), "{mode}: {stderr}");
+        assert!(stderr.contains(said), "{mode}: {stderr}");
+        assert!(!stderr.contains("panicked"), "{mode}: {stderr}");
+        let log = std::fs::read_to_string(saver.data_dir().join("mountains.log"));
+        assert!(
+            log.is_ok_and(|l| l.contains(said)),
+            "{mode}: nothing in the log"
+        );
+    }
+}

@@ -54,6 +54,8 @@ enum Notice {
     Resized(u32, u32),
     Exposed,
     Destroyed,
+    /// The connection to the X server broke.
+    ServerGone,
     Terminate,
 }
 
@@ -153,7 +155,7 @@ fn spawn_event_thread(
             }
         }
         // The X server went away: nothing left to draw on.
-        let _ = tx.send(Notice::Destroyed);
+        let _ = tx.send(Notice::ServerGone);
     };
     std::thread::Builder::new()
         .name("x11-events".into())
@@ -201,6 +203,7 @@ impl Embedded {
         for notice in notices {
             match notice {
                 Notice::Destroyed | Notice::Terminate => return Ok(true),
+                Notice::ServerGone => return Err(SaverError::server_gone()),
                 Notice::Resized(w, h) => size = Some((w, h)),
                 Notice::Exposed => exposed = true,
             }

@@ -22,6 +22,8 @@ pub enum SaverError {
     },
     /// The window to draw into does not exist.
     NoSuchWindow(u32),
+    /// The X server went away while the saver drew (the display's name).
+    ServerGone(String),
     /// The mode is not a window mode, or not available on this platform.
     Unsupported(String),
     /// Anything else, already worded.
@@ -46,6 +48,10 @@ impl fmt::Display for SaverError {
             ),
             // Both spellings: the id may have been typed in either.
             SaverError::NoSuchWindow(id) => write!(f, "there is no X window 0x{id:x} ({id})"),
+            SaverError::ServerGone(display) => write!(
+                f,
+                "error: the X server went away (display {display}): nothing left to draw on"
+            ),
             SaverError::Unsupported(what) => f.write_str(what),
             SaverError::Other(what) => f.write_str(what),
         }
@@ -55,6 +61,11 @@ impl fmt::Display for SaverError {
 impl std::error::Error for SaverError {}
 
 impl SaverError {
+    /// The X server of `$DISPLAY` went away.
+    pub fn server_gone() -> Self {
+        SaverError::ServerGone(std::env::var("DISPLAY").unwrap_or_else(|_| "?".into()))
+    }
+
     /// The display could not be opened; says whether `DISPLAY` is unset or
     /// which display failed, keeping only the last part of `detail`.
     pub fn no_display(detail: &str) -> Self {

@@ -44,6 +44,8 @@ mod placement;
 pub mod present;
 mod redraw;
 mod screen;
+#[cfg(unix)]
+pub mod server_gone;
 pub mod show;
 #[cfg(target_os = "linux")]
 pub mod single;
