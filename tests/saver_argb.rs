@@ -66,3 +66,52 @@ fn display_fullscreen_windows_are_24_bit() {
         assert_eq!(x.depth(window), 24, "window {geometry:?}");
     }
 }
+
+/// On a 30-bit or a 16-bit screen, whose own visual softbuffer cannot take,
+/// /s and --window draw through one of the screen's 24- or 32-bit true
+/// colour visuals, opaque (both were refused); an 8-bit screen, which has
+/// none, is refused in words.
+#[test]
+fn display_30_and_16_bit_screens_draw_through_a_true_colour_visual() {
+    for depth in ["depth=30", "depth=16"] {
+        for mode in ["/s", "--window"] {
+            let Some(x) = Xvfb::start(320, 240, &[depth]) else {
+                return;
+            };
+            let mut saver = Saver::start(&x, "deep-screen", &[mode], &[]);
+            let mut drawn = None;
+            poll(
+                &mut saver,
+                &format!("{mode} on {depth}: a mountain"),
+                || {
+                    drawn = x.mapped_windows().into_iter().find(|&(w, g)| {
+                        matches!(x.depth(w), 24 | 32) && looks_drawn(&x.grab(w, g.2, g.3))
+                    });
+                    drawn.is_some()
+                },
+            );
+            let (window, g) = drawn.expect("polled until drawn");
+            if x.depth(window) == 32 {
+                let raw = x.grab_raw(window, g.2, g.3);
+                assert!(
+                    raw.iter().all(|p| p >> 24 == 0xff),
+                    "{mode} on {depth}: see-through"
+                );
+            }
+        }
+    }
+    let Some(x) = Xvfb::start(320, 240, &["depth=8"]) else {
+        return;
+    };
+    let mut saver = Saver::start(&x, "shallow-screen", &["--window"], &[]);
+    let status = saver
+        .wait(xvfb::PATIENCE)
+        .expect("mountains should give up");
+    assert!(!status.success());
+    let stderr = saver.stderr();
+    assert!(
+        stderr.contains("8-bit windows are not supported"),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("panicked"), "{stderr}");
+}

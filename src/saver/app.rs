@@ -106,6 +106,14 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
     };
     #[cfg(not(unix))]
     let server_heads = Vec::new();
+    #[cfg(unix)]
+    let x11_visual = if wayland {
+        None
+    } else {
+        super::visual_x11::drawable_visual()
+    };
+    #[cfg(not(unix))]
+    let x11_visual = None;
     let mut app = App {
         mode,
         wayland,
@@ -113,6 +121,7 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
         opened,
         screens: Vec::new(),
         server_heads,
+        x11_visual,
         wake: WakeDetector::new(),
         error: None,
         trace: Trace::from_env(),
@@ -168,6 +177,8 @@ struct App {
     screens: Vec<Screen>,
     /// The monitors the X server listed at start (empty: ask winit).
     server_heads: Vec<Head>,
+    /// The X visual windows are made with, when not the screen's own.
+    x11_visual: Option<u32>,
     wake: WakeDetector,
     error: Option<SaverError>,
     trace: Trace,
@@ -317,7 +328,9 @@ impl ApplicationHandler<UserEvent> for App {
 
 /// Every window's title and name: the Wayland app_id and the X11 class are
 /// "mountains", as the desktop entry is named.
-fn base_attributes() -> WindowAttributes {
+/// `x11_visual`: the visual to draw with on an X screen whose own one
+/// softbuffer cannot take (see visual_x11.rs).
+fn base_attributes(x11_visual: Option<u32>) -> WindowAttributes {
     let attrs = Window::default_attributes().with_title("mountains");
     #[cfg(unix)]
     let attrs = winit::platform::wayland::WindowAttributesExtWayland::with_name(
@@ -325,6 +338,13 @@ fn base_attributes() -> WindowAttributes {
         "mountains",
         "mountains",
     );
+    #[cfg(unix)]
+    let attrs = match x11_visual {
+        Some(id) => winit::platform::x11::WindowAttributesExtX11::with_x11_visual(attrs, id),
+        None => attrs,
+    };
+    #[cfg(not(unix))]
+    let _ = x11_visual;
     attrs
 }
 
@@ -372,7 +392,7 @@ impl App {
     }
 
     fn open_windows(&mut self, event_loop: &ActiveEventLoop) -> Result<(), SaverError> {
-        let base = base_attributes();
+        let base = base_attributes(self.x11_visual);
         match self.mode {
             AppMode::Fullscreen => self.open_fullscreen(event_loop, base),
             AppMode::Preview => {
@@ -439,7 +459,7 @@ impl App {
                 Change::Fit(i, head) => self.fit(event_loop, i, head),
                 Change::Close(i) => drop(self.screens.remove(i)),
                 Change::Open(head) => {
-                    let base = base_attributes();
+                    let base = base_attributes(self.x11_visual);
                     if let Err(e) = self.open_head(event_loop, base, head, None) {
                         crate::log::warn(&format!("cannot cover a new monitor: {e}"));
                     }

@@ -85,12 +85,21 @@ fn owned_by(
     }
 }
 
+/// On X11, also the visual to draw with where the screen's own is not one
+/// softbuffer takes (a 30- or 16-bit screen).
 #[cfg(not(windows))]
 fn owned_by(
     attrs: winit::window::WindowAttributes,
     _parent: Option<u64>,
 ) -> winit::window::WindowAttributes {
-    attrs
+    use crate::saver::backend::{Backend, from_env};
+    if from_env(false) != Some(Backend::X11) {
+        return attrs;
+    }
+    match crate::saver::visual_x11::drawable_visual() {
+        Some(id) => winit::platform::x11::WindowAttributesExtX11::with_x11_visual(attrs, id),
+        None => attrs,
+    }
 }
 
 impl App {
