@@ -121,7 +121,8 @@ pub enum Sun {
     Midday,
     /// A low, warm light from the right and a glowing horizon.
     Evening,
-    /// Seed 000's light: from the back left, every face at least half bright.
+    /// Seed 000's light as its listing computes it: from the back right,
+    /// 28 degrees up, brightness `0.5 + 0.5 cos`.
     Classic,
 }
 

@@ -24,7 +24,10 @@ pub(crate) fn clean_edges(scene: &Scene, horizon: &Horizon, frame: &mut Frame) -
     let [mut left, mut right] = ColumnsMut::split(frame, frame.width() / 2);
     let (ours, theirs) = std::thread::scope(|s| {
         let theirs = s.spawn(|| crests::smooth(&mut right, scene, horizon, &tops));
-        (crests::smooth(&mut left, scene, horizon, &tops), theirs.join())
+        (
+            crests::smooth(&mut left, scene, horizon, &tops),
+            theirs.join(),
+        )
     });
     let theirs = theirs.unwrap_or_else(|panic| std::panic::resume_unwind(panic));
     for r in ours.rects().chain(theirs.rects()) {

@@ -69,7 +69,10 @@ mod tests {
         let [mut left, right] = ColumnsMut::split(&mut f, 2);
         assert!(left.holds(1) && !left.holds(2) && right.holds(2) && right.holds(4));
         assert!(!right.holds(5));
-        assert_eq!((left.get(1, 2), right.get(3, 1), right.height()), (21, 13, 3));
+        assert_eq!(
+            (left.get(1, 2), right.get(3, 1), right.height()),
+            (21, 13, 3)
+        );
         left.set(0, 1, 99);
         assert_eq!(f.get(0, 1), 99);
     }

@@ -8,9 +8,9 @@
 //! floating horizon's crests); the two colours are the frame's own, read
 //! just above and just below the edge, so light and haze stay as drawn.
 
+use super::columns::ColumnsMut;
 use super::horizon::{Crest, Edge, Horizon};
 use crate::render::damage::Damage;
-use super::columns::ColumnsMut;
 use crate::render::frame::Rect;
 use crate::render::scene::Scene;
 use crate::render::shade::colour::blend_packed;
@@ -52,7 +52,12 @@ pub(crate) fn smooth(
 }
 
 /// Mixes one crest's column; returns the rows changed, if any.
-fn mix_crest(frame: &mut ColumnsMut, scene: &Scene, crest: &Crest, sky_top: u32) -> Option<(u32, u32)> {
+fn mix_crest(
+    frame: &mut ColumnsMut,
+    scene: &Scene,
+    crest: &Crest,
+    sky_top: u32,
+) -> Option<(u32, u32)> {
     let top = (crest_centre(crest)? - 0.5).ceil();
     // Rows clear of the skyline, with a pixel of far land above the edge
     // and one of near land below it inside the frame.

@@ -172,7 +172,9 @@ impl HorizonSweep {
     /// The horizon, once every row of `scene` is swept.
     pub(crate) fn finish(mut self, scene: &Scene) -> Horizon {
         self.advance_to(scene, 1.0);
-        let tops = (0..self.sweep.ys.len()).map(|c| self.sweep.top(c)).collect();
+        let tops = (0..self.sweep.ys.len())
+            .map(|c| self.sweep.top(c))
+            .collect();
         Horizon {
             tops,
             crests: self.sweep.crests,
