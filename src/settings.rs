@@ -148,9 +148,10 @@ pub enum Monitors {
     Primary,
 }
 
-/// Smallest grid exponent (17x17 points): the `detail` key's least value
-/// and the smallest heightfield, generated or loaded.
-pub const MIN_GRID_EXPONENT: u32 = 4;
+/// Smallest grid exponent (9x9 points): the `detail` key's least value
+/// and the smallest heightfield, generated or loaded. Seed 000's
+/// Iterations menu starts at 3.
+pub const MIN_GRID_EXPONENT: u32 = 3;
 /// Largest grid exponent (4097x4097 points), as [`MIN_GRID_EXPONENT`].
 pub const MAX_GRID_EXPONENT: u32 = 12;
 
