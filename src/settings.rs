@@ -122,7 +122,8 @@ pub enum Sun {
     Midday,
     /// A low, warm light from the right and a glowing horizon.
     Evening,
-    /// Seed 000's light: from the back left, every face at least half bright.
+    /// Seed 000's light as its listing computes it: from the back right,
+    /// 28 degrees up, brightness `0.5 + 0.5 cos`.
     Classic,
 }
 
@@ -148,9 +149,10 @@ pub enum Monitors {
     Primary,
 }
 
-/// Smallest grid exponent (17x17 points): the `detail` key's least value
-/// and the smallest heightfield, generated or loaded.
-pub const MIN_GRID_EXPONENT: u32 = 4;
+/// Smallest grid exponent (9x9 points): the `detail` key's least value
+/// and the smallest heightfield, generated or loaded. Seed 000's
+/// Iterations menu starts at 3.
+pub const MIN_GRID_EXPONENT: u32 = 3;
 /// Largest grid exponent (4097x4097 points), as [`MIN_GRID_EXPONENT`].
 pub const MAX_GRID_EXPONENT: u32 = 12;
 

@@ -25,6 +25,8 @@ fn golden_settings() -> Settings {
         // The golden file was written before erosion existed: it has no
         // erosion key, which reads as none.
         erosion: 0.0,
+        // Written when the contour default was 1.0 (now seed 000's 1.5).
+        contour: 1.0,
         ..Settings::default()
     }
 }

@@ -27,7 +27,8 @@ fn edge_pixels(field: &Heightfield, w: u32, h: u32) -> HashSet<(u32, u32)> {
     let mut set = HashSet::new();
     for y in 0..n {
         for x in 0..n {
-            // Right, down, and the oblique view's diagonal (back right to front left).
+            // Right, down, and the oblique view's diagonal: seed 000's,
+            // back left to front right.
             let mut ends = vec![];
             if x + 1 < n {
                 ends.push((x + 1, y));
@@ -35,8 +36,8 @@ fn edge_pixels(field: &Heightfield, w: u32, h: u32) -> HashSet<(u32, u32)> {
             if y + 1 < n {
                 ends.push((x, y + 1));
             }
-            if x > 0 && y + 1 < n {
-                ends.push((x - 1, y + 1));
+            if x + 1 < n && y + 1 < n {
+                ends.push((x + 1, y + 1));
             }
             for (ex, ey) in ends {
                 draw_line(at(x, y), at(ex, ey), &clip, |px, py| {

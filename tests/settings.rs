@@ -116,6 +116,24 @@ fn out_of_range_is_an_error_with_position_and_allowed_values() {
     assert_eq!(s.cragginess, Settings::default().cragginess);
 }
 
+/// Seed 000's menus: Iterations from 3, Smoothness's blank item (0 here),
+/// Contour checked at 1.50; one step beyond each is still refused.
+#[test]
+fn seed_000s_menu_values_are_accepted() {
+    assert_eq!(Settings::default().contour, 1.5);
+    let (s, problems) = load_text("detail = 3\nroughness = 0\ncontour = 0.25\n");
+    assert!(problems.is_empty(), "{problems:?}");
+    assert_eq!(
+        (s.detail, s.roughness, s.contour),
+        (Detail::Level(3), 0.0, 0.25)
+    );
+    let f = mountains::terrain::generate(&s, 7);
+    assert_eq!(f.size(), 9, "detail 3 is seed 000's 9x9 map");
+    let (_, problems) = load_text("detail = 2\nroughness = -1\n");
+    let keys: Vec<_> = problems.iter().map(|p| p.key.as_deref()).collect();
+    assert_eq!(keys, [Some("detail"), Some("roughness")], "{problems:?}");
+}
+
 #[test]
 fn good_keys_survive_a_bad_neighbour() {
     let (s, problems) = load_text("color = \"sonar\"\nheight = \"tall\"\nlow_detail = true\n");

@@ -171,6 +171,35 @@ fn the_triangle_deviation_shrinks_by_roughness_per_level() {
     }
 }
 
+/// Seed 000's blank Smoothness item (`roughness = 0`): no point deviates,
+/// so every new point is the mean of its edge's ends and the seed changes
+/// nothing.
+#[test]
+fn roughness_0_deviates_no_point() {
+    let s = Settings {
+        roughness: 0.0,
+        contour: 1.0,
+        profile: Profile::Slope,
+        ..settings(Generator::Triangle, 7)
+    };
+    let f = generate(&s, 1);
+    let scale = f.get(0, 0) as f64 / 4.0;
+    assert!(scale > 0.0, "the slope's high corner: {}", f.get(0, 0));
+    let ratios = offset_ratios(&f, Generator::Triangle, |_| scale * 1e-4);
+    for (k, r) in ratios.iter().enumerate() {
+        assert!(
+            *r <= 1.0,
+            "depth {k}: a point {r} * 1e-4 q off its parents' mean"
+        );
+    }
+    assert_eq!(f.heights(), generate(&s, 2).heights());
+    let rough = Settings {
+        roughness: 1.0,
+        ..s
+    };
+    assert_ne!(generate(&rough, 1).heights(), generate(&rough, 2).heights());
+}
+
 #[test]
 fn the_triangle_peak_is_the_chosen_height() {
     for height in 1..=10 {

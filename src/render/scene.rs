@@ -125,6 +125,13 @@ pub(crate) struct Scene<'a> {
     /// Whether the field's lakes are drawn (the filled looks; Sonar and
     /// Outline draw the ground's mesh).
     lakes: bool,
+    /// Under the classic light, the shear of the parallelogram the oblique
+    /// view draws (grid steps left per row forward; 0 otherwise): seed
+    /// 000's listing lights the faces of its parallelogram, not of a square.
+    pub normal_shear: f32,
+    /// Whether cells are split on seed 000's diagonal, from the back left
+    /// to the front right (the oblique view; its near-equilateral faces).
+    pub listing_diagonal: bool,
     /// Whether the right and front cut faces (skirts) face the viewer.
     pub sees_right: bool,
     pub sees_front: bool,
@@ -179,6 +186,12 @@ impl<'a> Scene<'a> {
             }
             None => (cells, true, true),
         };
+        let listing_diagonal = view.camera_column().is_none();
+        let normal_shear = if palette.lighting().classic {
+            view.shear()
+        } else {
+            0.0
+        };
         Scene {
             field,
             view,
@@ -196,6 +209,8 @@ impl<'a> Scene<'a> {
             row_top,
             rows,
             lakes,
+            normal_shear,
+            listing_diagonal,
             sees_right,
             sees_front,
         }

@@ -207,10 +207,12 @@ pub const KEYS: &[Key] = &[
     ),
     row!(
         roughness,
-        Kind::Float { min: 1.0, max: 5.0 },
+        // Seed 000's Smoothness menu: 1.00 to 5.00, and a blank item that
+        // deviates no point (0 here).
+        Kind::Float { min: 0.0, max: 5.0 },
         Next,
         Value::Float(2.0),
-        "triangle generator: smoothness base (higher = smoother sides)"
+        "triangle generator: smoothness base (higher = smoother sides; 0 = no deviation at all)"
     ),
     row!(
         contour,
@@ -219,7 +221,8 @@ pub const KEYS: &[Key] = &[
             max: 5.0
         },
         Next,
-        Value::Float(1.0),
+        // Seed 000's Contour menu starts checked at 1.50.
+        Value::Float(1.5),
         "triangle generator: power on heights (<1 concave, >1 convex)"
     ),
     row!(

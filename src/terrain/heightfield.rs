@@ -7,6 +7,11 @@ use super::lakes::Lakes;
 /// The grid exponents a heightfield can have (the `detail` key's range).
 pub use crate::settings::{MAX_GRID_EXPONENT as MAX_EXPONENT, MIN_GRID_EXPONENT as MIN_EXPONENT};
 
+/// The coarsest grid [`Heightfield::coarsened`] makes (17x17): the passes
+/// that coarsen (Sonar's legible mesh, shadows, sky light, erosion) were
+/// tuned no coarser, though a field itself may be 9x9 (`detail = 3`).
+pub const COARSENED_LEAST_EXPONENT: u32 = 4;
+
 /// A square grid of `2^n + 1` points a side of `f32` elevations, sea level at 0.
 ///
 /// Row `y` runs from the back of the mountain (`y = 0`) to the front
@@ -180,9 +185,10 @@ impl Heightfield {
     /// Every `2^levels`-th point in both directions: the same mountain on a
     /// coarser grid. Subdivision grids nest, so for a generated field this is
     /// exactly what a lower detail level would have produced from the same
-    /// seed. `levels` is limited so the result keeps `MIN_EXPONENT`.
+    /// seed. `levels` is limited so the result keeps 17x17
+    /// ([`COARSENED_LEAST_EXPONENT`]); a smaller field is returned as it is.
     pub fn coarsened(&self, levels: u32) -> Heightfield {
-        let levels = levels.min(self.exponent - MIN_EXPONENT);
+        let levels = levels.min(self.exponent.saturating_sub(COARSENED_LEAST_EXPONENT));
         let exponent = self.exponent - levels;
         let stride = 1usize << levels;
         let size = (1usize << exponent) + 1;

@@ -31,13 +31,16 @@ pub(crate) struct Triangle {
 }
 
 impl Triangle {
-    /// The rule for `roughness` (seed 000's Smoothness base, 1.0-5.0).
+    /// The rule for `roughness` (seed 000's Smoothness base, 1.0-5.0; 0 or
+    /// less is its blank item, `roughness = -1`: no point deviated).
     pub(crate) fn new(roughness: f32, profile: Profile) -> Self {
         let r = f64::from(roughness);
-        let mut amplitude = 8.0f64;
+        let mut amplitude = if r > 0.0 { 8.0f64 } else { 0.0 };
         let amplitudes = (0..super::heightfield::MAX_EXPONENT)
             .map(|_| {
-                amplitude /= r;
+                if r > 0.0 {
+                    amplitude /= r;
+                }
                 amplitude as f32
             })
             .collect();

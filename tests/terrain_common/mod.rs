@@ -10,7 +10,7 @@ pub const GENERATORS: [Generator; 3] = [Generator::Square, Generator::Diamond, G
 pub const PROFILES: [Profile; 4] = [Profile::Slope, Profile::Peak, Profile::Bay, Profile::Massif];
 
 /// Default settings with a generator and detail level, the water line at
-/// the generator's zero and no erosion: the laws below are the
+/// the generator's zero, contour 1 and no erosion: the laws below are the
 /// subdivision's, and the coast pass (tests/terrain_coast.rs) and erosion
 /// (tests/terrain_erosion.rs) move heights after it.
 pub fn settings(generator: Generator, detail: u32) -> Settings {
@@ -19,6 +19,9 @@ pub fn settings(generator: Generator, detail: u32) -> Settings {
         detail: Detail::Level(detail),
         water_line: WaterLine::Generator,
         erosion: 0.0,
+        // The laws are written for heights as subdivided (seed 000's
+        // menu, hence the default, starts at 1.5).
+        contour: 1.0,
         ..Settings::default()
     }
 }

@@ -17,12 +17,16 @@
 
 use super::view::View;
 use crate::settings::{Detail, Settings};
-use crate::terrain::heightfield::{MAX_EXPONENT, MIN_EXPONENT};
+use crate::terrain::heightfield::MAX_EXPONENT;
 
 /// The width a cell should have where the land is nearest, in pixels.
 const TARGET_CELL_PX: f32 = 4.0;
 /// Grid exponent of the flat reference grid the view is measured on.
 const REFERENCE_EXPONENT: u32 = 10;
+/// The coarsest grid `"auto"` picks (17x17): a 9x9 grid (`detail = 3`,
+/// seed 000's fewest iterations) is there to be asked for, but even the
+/// smallest preview is better served by the finer one.
+const AUTO_LEAST_EXPONENT: u32 = 4;
 /// Relief assumed when fitting the reference grid, as a fraction of its
 /// width (the oblique and perspective fits include the peaks).
 const REFERENCE_RELIEF: f32 = 0.2;
@@ -55,9 +59,9 @@ pub fn auto_level(settings: &Settings, width: u32, height: u32) -> u32 {
     let level = if wanted.is_finite() && wanted >= 1.0 {
         wanted.log2().round() as u32
     } else {
-        MIN_EXPONENT
+        AUTO_LEAST_EXPONENT
     };
-    level.clamp(MIN_EXPONENT, MAX_EXPONENT)
+    level.clamp(AUTO_LEAST_EXPONENT, MAX_EXPONENT)
 }
 
 /// Width in pixels of the cell at the middle of the near edge.

@@ -236,6 +236,13 @@ impl View {
             .filter(|_| self.size > 0 && self.cell > 0.0)
     }
 
+    /// How far each grid row forward moves the land left, in grid steps: the
+    /// oblique view's shear (which draws the square as seed 000's
+    /// parallelogram), 0 for the views with a camera.
+    pub fn shear(&self) -> f32 {
+        if self.camera.is_some() { 0.0 } else { SHEAR }
+    }
+
     /// Width of one grid step in height units.
     pub fn cell(&self) -> f32 {
         self.cell

@@ -74,7 +74,8 @@ impl Scene<'_> {
             if own.bottom {
                 edge(bl, br);
             }
-            if rightward {
+            // The diagonal the filled faces are split on (`fill_cell`).
+            if rightward && !self.listing_diagonal {
                 edge(tr, bl);
             } else {
                 edge(tl, br);
@@ -143,7 +144,7 @@ impl Scene<'_> {
         let mut fill = |v: [Fixed2; 3]| {
             fill_triangle(v, &clip, |y, x0, x1| canvas.span_mut(y, x0, x1).fill(0));
         };
-        if rightward {
+        if rightward && !self.listing_diagonal {
             fill([tl.p, tr.p, bl.p]);
             fill([tr.p, br.p, bl.p]);
         } else {

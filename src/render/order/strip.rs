@@ -134,7 +134,13 @@ impl Scene<'_> {
     /// The two triangles of the cell at column `x` of `rows`, the farther
     /// one first. With the camera to the right (`rightward`) the diagonal
     /// runs from the back right, so the front-right triangle is the nearer;
-    /// mirrored otherwise.
+    /// mirrored otherwise. The oblique view splits as seed 000's listing
+    /// does (`DrawTriangle(x,y, x,y+1, x+1,y+1)` and `(x,y, x+1,y+1,
+    /// x+1,y)`): from the back left, the short diagonal of its
+    /// parallelogram's cells, so its faces are the triangle generator's
+    /// own. The listing paints the front-left face first; we paint it
+    /// last, as it is the nearer (faces turned away are skipped, so the
+    /// two orders differ in no pixel of a face turned to the viewer).
     fn fill_cell(&self, canvas: &mut Canvas, rows: &mut StripRows, x: usize, rightward: bool) {
         let (top, bottom) = (&rows.top, &rows.bottom);
         let v = [&top[x], &top[x + 1], &bottom[x], &bottom[x + 1]];
@@ -152,7 +158,7 @@ impl Scene<'_> {
         let [tr, br] = rows.column(self, x + 1);
         let [far, near] = match self.eye {
             Some(eye) => split_by_heights(eye, [&tl, &tr, &bl, &br]),
-            None if rightward => [[&tl, &tr, &bl], [&tr, &br, &bl]],
+            None if rightward && !self.listing_diagonal => [[&tl, &tr, &bl], [&tr, &br, &bl]],
             None => [[&tl, &tr, &br], [&tl, &br, &bl]],
         };
         // The painter's order, written out: the hottest call of a frame.
@@ -258,10 +264,12 @@ impl Scene<'_> {
     }
 
     /// Upward unit normal of a grid triangle, in the palette's frame (z up,
-    /// y towards the back).
+    /// y towards the back), of the parallelogram when the normals are
+    /// sheared (the classic light in the oblique view).
     fn face_normal(&self, c: &Face) -> Vec3 {
         let cell = self.view.cell();
-        let world = |k: &Corner| Vec3::new(k.g.x * cell, -k.g.y * cell, k.h);
+        let shear = self.normal_shear;
+        let world = |k: &Corner| Vec3::new((k.g.x - shear * k.g.y) * cell, -k.g.y * cell, k.h);
         let (p0, p1, p2) = (world(c[0]), world(c[1]), world(c[2]));
         let n = (p1 - p0).cross(p2 - p0);
         let n = if n.z < 0.0 { -n } else { n };

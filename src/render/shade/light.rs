@@ -4,8 +4,9 @@
 //! `sun = "varied"` draws morning, midday or evening per mountain from the
 //! mountain's identity ([`Heightfield::identity`]: its seed, or the heights
 //! of a data set without one), so one seed always gets the same light, at
-//! every frame size, detail and `low_detail`, and a long slide show gets many. `sun = "classic"` is seed 000's light: from the back
-//! left, 32 degrees up, every face at least half bright.
+//! every frame size, detail and `low_detail`, and a long slide show gets many. `sun = "classic"` is seed 000's light as its listing
+//! computes it: from the back right, 28 degrees up, brightness
+//! `0.5 + 0.5 cos` (faces turned fully away reach 0; see docs/classics.md).
 
 use glam::Vec3;
 
@@ -14,10 +15,17 @@ use crate::settings::Sun;
 use crate::terrain::Heightfield;
 
 /// Seed 000's light, towards the light in the palette's frame (z up, y
-/// towards the back): from the back left, 32 degrees above the horizon.
-const CLASSIC_LIGHT: Vec3 = Vec3::new(-0.6, 0.6, 0.53);
-/// Seed 000's floor: a face turned away is half as bright as one facing the light.
-const CLASSIC_FLOOR: f32 = 0.5;
+/// towards the back): the listing's `(-1, 1, 1) / sqrt 3`, given in its
+/// screen frame (y down) and dotted with normals that point into the
+/// ground, turned back through its tilt `xTh = -1.396`:
+/// `(1, cos xTh' + sin xTh', sin xTh' - cos xTh') / sqrt 3` with
+/// `xTh' = 1.396`. From the back right (49 degrees round from the right),
+/// 27.9 degrees above the horizon. Written out so no platform's `sin` can
+/// move a pixel; docs/classics.md works it through.
+const CLASSIC_LIGHT: Vec3 = Vec3::new(0.577_350_3, 0.668_958_2, 0.468_147);
+/// Seed 000's `0.5 + 0.5 cos`: the share of the brightness that follows the
+/// cosine, either way from half.
+const CLASSIC_HALF: f32 = 0.5;
 
 /// The light of one mountain.
 #[derive(Debug, Clone)]
@@ -32,7 +40,8 @@ pub struct Lighting {
     pub zenith: Rgb,
     /// Sky colour at the horizon; distant land fades towards it.
     pub horizon: Rgb,
-    /// Seed 000's model: brightness `0.5 + 0.5 cos`, no colours.
+    /// Seed 000's model: brightness `0.5 + 0.5 cos`, no colours; faces
+    /// turned away from the light go darker than half (to 0).
     pub classic: bool,
 }
 
@@ -103,12 +112,12 @@ impl Lighting {
         Self::at(time, turn)
     }
 
-    /// Seed 000's light: white, from the back left, half-bright floor.
+    /// Seed 000's light: white, from the back right, `0.5 + 0.5 cos`.
     pub fn classic() -> Self {
         Lighting {
             sun: CLASSIC_LIGHT.normalize(),
-            direct: [1.0 - CLASSIC_FLOOR; 3],
-            ambient: [CLASSIC_FLOOR; 3],
+            direct: [CLASSIC_HALF; 3],
+            ambient: [1.0 - CLASSIC_HALF; 3],
             zenith: [0.02, 0.05, 0.14],
             horizon: [0.10, 0.16, 0.28],
             classic: true,
@@ -141,7 +150,19 @@ impl Lighting {
     /// [`Lighting::on`] for a face that sees `seen` (0..=1) of the sky.
     #[inline]
     pub fn on_under(&self, normal: Vec3, lit: f32, seen: f32) -> Rgb {
-        let direct = unit(normal.dot(self.sun)) * unit(lit);
+        let cos = normal.dot(self.sun);
+        let direct = if self.classic {
+            // The listing's cosine runs negative on faces turned away (a
+            // cast shadow only takes away what the light would add).
+            let cos = if cos.is_nan() {
+                0.0
+            } else {
+                cos.clamp(-1.0, 1.0)
+            };
+            cos.min(cos * unit(lit))
+        } else {
+            unit(cos) * unit(lit)
+        };
         // Faces turned to the sky see more of it than steep ones, and open
         // ground more than a valley floor.
         let sky = if self.classic {

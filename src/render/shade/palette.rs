@@ -151,9 +151,9 @@ impl Palette {
     /// Colour of a land face: its mean height, unit normal (z up), and how
     /// much direct light reaches it (1 = lit, 0 = in cast shadow).
     ///
-    /// Under the classic light, faces turned away from it and faces in
-    /// shadow are exactly half as bright as a face square to it (seed 000's
-    /// floor); otherwise they get only the sky's light.
+    /// Under the classic light a face is `0.5 + 0.5 cos` bright (seed
+    /// 000's listing: 0 turned fully away, half bright in cast shadow);
+    /// otherwise faces away from the sun or in shadow get only the sky's light.
     #[inline]
     pub fn land(&self, mean_height: f32, normal: Vec3, lit: f32) -> u32 {
         self.land_in(mean_height, normal, lit, 1.0)
@@ -258,7 +258,7 @@ impl Palette {
     }
 
     /// Brightness: Lambert cosine times cast light over the ambient floor
-    /// (0.5..=1 under the classic light).
+    /// (`0.5 + 0.5 cos`, 0..=1, under the classic light).
     #[inline]
     fn brightness(&self, normal: Vec3, lit: f32) -> f32 {
         luminance(self.lighting.on(normal, lit)) * self.gain

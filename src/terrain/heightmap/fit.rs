@@ -19,7 +19,12 @@
 
 use std::fmt;
 
-use crate::terrain::heightfield::{MAX_EXPONENT, MIN_EXPONENT};
+use crate::terrain::heightfield::MAX_EXPONENT;
+
+/// The smallest grid an image is fitted to (17x17): smaller images are
+/// enlarged. Generated fields go down to 9x9 (`detail = 3`, seed 000's
+/// fewest iterations), but a data set that small reads as a few slabs.
+const LEAST_FITTED_EXPONENT: u32 = 4;
 
 /// What was done to the image to make it a `2^n + 1` grid.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -100,7 +105,7 @@ impl fmt::Display for Fit {
 
 /// The grid side for a square of `side` pixels, and how to get there.
 fn grid_for(side: usize) -> (usize, FitMethod) {
-    let sizes = (MIN_EXPONENT..=MAX_EXPONENT).map(|n| (1usize << n) + 1);
+    let sizes = (LEAST_FITTED_EXPONENT..=MAX_EXPONENT).map(|n| (1usize << n) + 1);
     if sizes.clone().any(|n| n == side) {
         return (side, FitMethod::Exact);
     }

@@ -1,0 +1,244 @@
+//! Seed 000's listing (MacTech's *Fractal Mountain Climbing*,
+//! MountainsAlgorithm.c) re-implemented for single triangles: its view
+//! transform (`CalcPoint3`), its normal, its light and its brightness
+//! (`_DrawTriangle`), and its split of each cell (`DrawMountains`), held
+//! against the faces our renderer draws under `sun = "classic"` in the
+//! oblique view. docs/classics.md works the light through by hand.
+
+use glam::{DVec3, Vec3};
+use mountains::render::facts::SceneFacts;
+use mountains::render::palette::Palette;
+use mountains::render::{Frame, render_full};
+use mountains::settings::{ColorMode, Settings, Sun, ViewKind};
+use mountains::terrain::Heightfield;
+
+/// The listing's `maxIter`, and the iterations of our test field (17 points
+/// a side, the listing's `mapS`).
+const MAX_ITER: i32 = 9;
+const N_ITER: i32 = 4;
+/// The listing's `xTh`.
+const X_TH: f64 = -1.396;
+
+/// The listing's drawing state: `xc`, `sc` and the matrix `tm`.
+struct Listing {
+    xc: f64,
+    sc: f64,
+    tm: [[f64; 3]; 3],
+    map_d: f64,
+}
+
+impl Listing {
+    /// `DrawMountains`' set-up, for a window `wd` pixels wide.
+    fn new(wd: f64) -> Self {
+        let mut tm = [[0.0; 3]; 3];
+        tm[0][0] = 1.0;
+        tm[1][1] = X_TH.cos();
+        tm[2][1] = X_TH.sin();
+        tm[1][2] = -X_TH.sin();
+        tm[2][2] = X_TH.cos();
+        Listing {
+            xc: 0.4073 * (1 << (MAX_ITER - N_ITER)) as f64,
+            sc: wd / 630.0,
+            tm,
+            map_d: (1 << N_ITER) as f64,
+        }
+    }
+
+    /// `CalcPoint3`: map point (`x`, `y`, height `z`) to viewing space.
+    fn calc_point3(&self, p: DVec3) -> DVec3 {
+        let xp = (p.x * 2.0 - p.y + self.map_d) * self.xc;
+        let yp = (p.y * 2.0) * self.xc;
+        let zp = p.z * 0.00217;
+        DVec3::new(
+            xp * self.sc,
+            (yp * self.tm[1][1] + zp * self.tm[2][1] + 230.0) * self.sc,
+            (yp * self.tm[1][2] + zp * self.tm[2][2]) * self.sc,
+        )
+    }
+
+    /// `_DrawTriangle`'s normal (not normalised), light and brightness `i`
+    /// for a land triangle given as map points.
+    fn shade(&self, p: [DVec3; 3]) -> (DVec3, f64) {
+        let p = p.map(|p| self.calc_point3(p));
+        let (v1, v2) = (p[1] - p[0], p[2] - p[0]);
+        let n = DVec3::new(
+            v1.y * v2.z - v1.z * v2.y,
+            v1.z * v2.x - v1.x * v2.z,
+            v1.x * v2.y - v1.y * v2.x,
+        );
+        let lx = -1.0 / 3f64.sqrt();
+        let (ly, lz) = (-lx, -lx);
+        let i = (lx * n.x + ly * n.y + lz * n.z) / (n.x * n.x + n.y * n.y + n.z * n.z).sqrt() * 0.5
+            + 0.5;
+        (n, i)
+    }
+
+    /// A viewing-space normal turned back through the tilt (the transpose
+    /// of `tm`), flipped to point up out of the ground, in our palette's
+    /// frame (x right, y towards the back, z up).
+    fn to_palette_frame(&self, n: DVec3) -> Vec3 {
+        let t = &self.tm;
+        let world = DVec3::new(
+            n.x,
+            t[1][1] * n.y + t[1][2] * n.z,
+            t[2][1] * n.y + t[2][2] * n.z,
+        );
+        let up = -world;
+        // The listing's y grows towards the viewer.
+        DVec3::new(up.x, -up.y, up.z).normalize().as_vec3()
+    }
+}
+
+/// Mildly rugged land, all above the sea: faces of many slopes, none hiding
+/// another in the oblique view.
+fn field() -> Heightfield {
+    let mut f = Heightfield::flat(N_ITER as u32, 160.0);
+    let n = f.size();
+    for y in 0..n {
+        for x in 0..n {
+            let bumps = ((x * 7 + y * 13) % 5) as f32 * 0.6;
+            f.set(x, y, 20.0 + bumps + 0.5 * x as f32 - 0.4 * y as f32);
+        }
+    }
+    f
+}
+
+fn settings() -> Settings {
+    Settings {
+        color: ColorMode::Natural,
+        view: ViewKind::Oblique,
+        sun: Sun::Classic,
+        shadows: false,
+        rotation: 0,
+        ..Settings::default()
+    }
+}
+
+/// Our height `h` in the listing's height units: its relief stands to its
+/// grid as ours does (a column is `2 xc` wide there, `cell` here).
+fn listing_z(listing: &Listing, f: &Heightfield, h: f32) -> f64 {
+    let cell = (f.extent() / (f.size() - 1) as f32) as f64;
+    h as f64 * 2.0 * listing.xc / cell / 0.00217
+}
+
+/// The cell's two faces as `DrawMountains` passes them to `DrawTriangle`,
+/// each with a point well inside it (local coordinates in the cell) that
+/// the other diagonal would put in a different face.
+fn listing_faces(x: usize, y: usize) -> [([[usize; 2]; 3], [f32; 2]); 2] {
+    [
+        ([[x, y], [x, y + 1], [x + 1, y + 1]], [0.25, 0.85]),
+        ([[x, y], [x + 1, y + 1], [x + 1, y]], [0.75, 0.15]),
+    ]
+}
+
+/// Height of the plane through `corners` (grid points, heights) at `at`.
+fn plane_height(corners: [(f32, f32, f32); 3], at: (f32, f32)) -> f32 {
+    let [a, b, c] = corners;
+    let det = (b.0 - a.0) * (c.1 - a.1) - (c.0 - a.0) * (b.1 - a.1);
+    let u = ((at.0 - a.0) * (c.1 - a.1) - (c.0 - a.0) * (at.1 - a.1)) / det;
+    let v = ((b.0 - a.0) * (at.1 - a.1) - (at.0 - a.0) * (b.1 - a.1)) / det;
+    a.2 + u * (b.2 - a.2) + v * (c.2 - a.2)
+}
+
+#[test]
+fn the_listings_light_on_a_flat_face_is_0_734_from_the_back_right() {
+    let listing = Listing::new(630.0);
+    let flat = [
+        DVec3::ZERO,
+        DVec3::new(0.0, 1.0, 0.0),
+        DVec3::new(1.0, 1.0, 0.0),
+    ];
+    let (n, i) = listing.shade(flat);
+    assert!((i - 0.7341).abs() < 1e-3, "flat face: {i}");
+    // Our light is the direction the listing's brightness grows towards.
+    let f = field();
+    let lighting = SceneFacts::of(&f, &settings(), 64, 48).lighting;
+    assert!(lighting.classic);
+    assert!(
+        lighting.sun.x > 0.5 && lighting.sun.y > 0.5,
+        "{}",
+        lighting.sun
+    );
+    let up = listing.to_palette_frame(n);
+    assert!((up - Vec3::Z).length() < 1e-6, "flat normal {up}");
+    // Tilting a face towards our sun brightens it in the listing too.
+    for towards in [Vec3::X, Vec3::Y, lighting.sun] {
+        let d = 0.2 * DVec3::new(towards.x as f64, towards.y as f64, 0.0);
+        // Falling away towards `d` (our y is the listing's -y), in the
+        // listing's world: X = 2 xc (x - y / 2), Y = 2 xc y, Z = 0.00217 z.
+        let fall = |p: DVec3| -(d.x * (p.x - 0.5 * p.y) - d.y * p.y) * 2.0 * listing.xc / 0.00217;
+        let tri = [
+            DVec3::ZERO,
+            DVec3::new(0.0, 1.0, 0.0),
+            DVec3::new(1.0, 1.0, 0.0),
+        ]
+        .map(|p| DVec3::new(p.x, p.y, fall(p)));
+        let (_, tilted) = listing.shade(tri);
+        assert!(tilted > i, "tilted towards {towards}: {tilted} <= {i}");
+    }
+}
+
+/// The rendered oblique view's faces, read at a point inside each, against
+/// the listing's brightness for the same triangle: the colour our palette
+/// gives the face's base colour (its height and steepness) at the listing's
+/// normal, and our light on that normal equals the listing's `i`.
+#[test]
+fn a_rendered_face_has_the_listings_brightness_and_split() {
+    let f = field();
+    let s = settings();
+    let (w, h) = (1280, 960);
+    let mut frame = Frame::new(w, h).unwrap();
+    render_full(&f, &s, &mut frame);
+    let facts = SceneFacts::of(&f, &s, w, h);
+    let palette = Palette::new(&s, &f);
+    let listing = Listing::new(w as f64);
+    let mut checked = 0;
+    for (cx, cy) in [(8, 8), (3, 11), (12, 4), (6, 2)] {
+        for (corners, inside) in listing_faces(cx, cy) {
+            let heights = corners.map(|[x, y]| f.get(x, y));
+            let map = corners.map(|[x, y]| [x as f64, y as f64]);
+            let points: [DVec3; 3] = std::array::from_fn(|k| {
+                DVec3::new(map[k][0], map[k][1], listing_z(&listing, &f, heights[k]))
+            });
+            let (n, i) = listing.shade(points);
+            let normal = listing.to_palette_frame(n);
+            assert!(normal.z > 0.0, "cell ({cx}, {cy}): {normal}");
+            // Our light on the listing's normal is the listing's brightness.
+            let ours = palette.lighting().on(normal, 1.0);
+            for c in ours {
+                assert!(
+                    (c as f64 - i).abs() < 1e-4,
+                    "cell ({cx}, {cy}): {ours:?} vs {i}"
+                );
+            }
+            // The face's pixel: its base colour at that brightness. Our
+            // painter sums the corners in its own order (far face tl, tr,
+            // br; near face tl, br, bl: both the listing's first, third,
+            // second), which the mean's last bits keep.
+            let [a, b, c] = heights;
+            let mean = (a + c + b) / 3.0;
+            let want = palette.land(mean, normal, 1.0);
+            let g = corners.map(|[x, y]| (x as f32, y as f32));
+            let at = (cx as f32 + inside[0], cy as f32 + inside[1]);
+            let z = plane_height(
+                [
+                    (g[0].0, g[0].1, a),
+                    (g[1].0, g[1].1, b),
+                    (g[2].0, g[2].1, c),
+                ],
+                at,
+            );
+            let n = (f.size() - 1) as f32;
+            let p = facts.place(at.0 / n, at.1 / n, z);
+            let (px, py) = ((p.x * w as f32) as u32, (p.y * h as f32) as u32);
+            let got = frame.get(px, py);
+            assert_eq!(
+                got, want,
+                "cell ({cx}, {cy}) face {corners:?} at pixel ({px}, {py}): \
+                 {got:06x}, the listing's brightness {i:.4} gives {want:06x}"
+            );
+            checked += 1;
+        }
+    }
+    assert_eq!(checked, 8);
+}
