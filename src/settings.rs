@@ -66,7 +66,7 @@ pub enum ColorMode {
     Sonar,
     /// Wire mesh only: land green, water blue.
     Outline,
-    /// 1-bit ordered dither, 17 levels.
+    /// Black and white: seed 000's 17 8x8 patterns (`bwPat`).
     Mono,
     /// Layered 2D ridge silhouettes fading into the distance.
     Ridges,

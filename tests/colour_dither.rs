@@ -1,4 +1,4 @@
-//! Mono's 17 ordered-dither levels.
+//! Mono's 17 shades: seed 000's `bwPat` patterns.
 
 use mountains::render::dither::{LEVELS, is_on, level};
 
@@ -6,10 +6,10 @@ fn grey(v: u32) -> u32 {
     v << 16 | v << 8 | v
 }
 
-/// Pixels on in the 4x4 tile at tile position (`tx`, `ty`).
+/// Pixels on (white) in the 8x8 tile at tile position (`tx`, `ty`).
 fn on_in_tile(k: u8, tx: u32, ty: u32) -> usize {
-    (0..16)
-        .filter(|i| is_on(k, tx * 4 + i % 4, ty * 4 + i / 4))
+    (0..64)
+        .filter(|i| is_on(k, tx * 8 + i % 8, ty * 8 + i / 8))
         .count()
 }
 
@@ -27,38 +27,45 @@ fn black_and_white_ends() {
     }
 }
 
+/// The listing's patterns light 0, 6, 8, 12, ... 60, 64 of every 8x8
+/// tile's pixels: brighter at every level, the same in every tile.
 #[test]
-fn level_k_lights_k_pixels_per_tile() {
+fn each_level_lights_the_listings_share_of_every_tile() {
+    let white = [
+        0, 6, 8, 12, 16, 20, 24, 28, 32, 36, 40, 44, 48, 52, 56, 60, 64,
+    ];
     for k in 0..=16u8 {
         for (tx, ty) in [(0, 0), (1, 0), (3, 7), (1000, 20)] {
             assert_eq!(
                 on_in_tile(k, tx, ty),
-                k as usize,
+                white[k as usize],
                 "level {k} tile {tx},{ty}"
             );
         }
     }
 }
 
+/// Rows as the listing writes them: level 1 is 0xFFBFBFBF (a white pixel
+/// at the second column of rows 1-3 and 5-7), level 15 is 0x80000800
+/// (black only at the top left and in row 2's fifth column).
 #[test]
-fn levels_nest() {
-    for k in 0..16u8 {
-        for y in 0..4 {
-            for x in 0..4 {
-                assert!(
-                    !is_on(k, x, y) || is_on(k + 1, x, y),
-                    "level {k} at {x},{y}"
-                );
-            }
+fn patterns_are_the_listings_rows() {
+    for y in 0..8 {
+        for x in 0..8 {
+            let level1 = y % 4 != 0 && x == 1;
+            assert_eq!(is_on(1, x, y), level1, "level 1 at {x},{y}");
+            let level15_black = (x, y % 4) == (0, 0) || (x, y % 4) == (4, 2);
+            assert_eq!(is_on(15, x, y), !level15_black, "level 15 at {x},{y}");
         }
     }
 }
 
+/// 0xAA55AA55: a checkerboard, white where x + y is odd.
 #[test]
 fn half_grey_is_a_checkerboard() {
     for y in 0..8 {
         for x in 0..8 {
-            assert_eq!(is_on(8, x, y), (x + y) % 2 == 0, "{x},{y}");
+            assert_eq!(is_on(8, x, y), (x + y) % 2 == 1, "{x},{y}");
         }
     }
 }

@@ -1,17 +1,42 @@
-//! Mono mode's 17 black-and-white shades (seed 000's `bwPat`), as a 4x4
-//! ordered (Bayer) dither.
+//! Mono mode's 17 black-and-white shades: seed 000's `bwPat`, the listing's
+//! own 8x8 QuickDraw patterns, from black (0) to white (16).
 //!
-//! Level k turns on exactly k of the 16 pixels of every 4x4 tile, and the
-//! pixels of level k are among those of level k + 1, so brightness never
-//! goes down as the level goes up and neighbouring shades blend. The Bayer
-//! order spreads the on pixels evenly, where seed 000's hand-drawn patterns
-//! are not nested.
+//! A pattern's bit is 1 where the pen (black) paints; each of the eight
+//! bytes is a row, its top bit the leftmost pixel, and the patterns line up
+//! with the frame's origin, as QuickDraw aligns them with the port's. The
+//! listing draws level 16 only above its treeline; here a face is as bright
+//! as its grey says (Mono's palette keeps green land below 15).
 
 /// Number of shades above black: levels run `0..=LEVELS`.
 pub const LEVELS: u8 = 16;
 
-/// The order in which the pixels of a 4x4 tile turn on, row-major.
-const BAYER: [[u8; 4]; 4] = [[0, 8, 2, 10], [12, 4, 14, 6], [3, 11, 1, 9], [15, 7, 13, 5]];
+/// `bwPat[17][2]` of seed 000's listing, each pair of longs as eight rows.
+const BW_PAT: [[u8; 8]; 17] = [
+    rows(0xFFFF_FFFF),
+    rows(0xFFBF_BFBF),
+    rows(0xFFEE_FFBB),
+    rows(0xFFEE_FFAA),
+    rows(0xBBEE_BBEE),
+    rows(0xAA77_AAFF),
+    rows(0xAA77_AADD),
+    rows(0xAA77_AA55),
+    rows(0xAA55_AA55),
+    rows(0xAA55_AA11),
+    rows(0xAA44_AA11),
+    rows(0xAA44_AA00),
+    rows(0x2288_2288),
+    rows(0x2200_AA00),
+    rows(0x2200_8800),
+    rows(0x8000_0800),
+    rows(0x0000_0000),
+];
+
+/// The eight rows of a pattern whose two longs are both `long` (so they
+/// are in every pattern of the listing).
+const fn rows(long: u32) -> [u8; 8] {
+    let b = long.to_be_bytes();
+    [b[0], b[1], b[2], b[3], b[0], b[1], b[2], b[3]]
+}
 
 /// The dither level (0 black ..= 16 white) for a grey `0x00RRGGBB`; a colour
 /// that is not grey counts by its luminance. A value of at most 255 (no red
@@ -36,5 +61,6 @@ pub fn level(gray: u32) -> u8 {
 /// (levels above 16 count as 16).
 #[inline]
 pub fn is_on(level: u8, x: u32, y: u32) -> bool {
-    BAYER[(y & 3) as usize][(x & 3) as usize] < level
+    let row = BW_PAT[level.min(LEVELS) as usize][(y & 7) as usize];
+    row & (0x80 >> (x & 7)) == 0
 }
