@@ -88,6 +88,38 @@ fn display_fullscreen_ends_on_a_20px_move() {
     expect_exit(&mut saver, "a 20 px move");
 }
 
+/// `xdotool mousemove 100 100; xdotool mousemove 500 400`: warps, which no
+/// device reports as raw motion (issue 22 item 3: they never ended /s).
+#[test]
+fn display_fullscreen_ends_on_a_warped_pointer() {
+    let Some((x, mut saver)) = fullscreen("fs-warp") else {
+        return;
+    };
+    x.warp_to(100, 100);
+    x.warp_to(500, 400);
+    expect_exit(&mut saver, "the pointer warped to another place");
+}
+
+/// A warp of a few pixels is a nudge, like a 3 px jitter.
+#[test]
+fn display_fullscreen_ignores_a_small_warp() {
+    let Some(x) = Xvfb::start(640, 480, &[]) else {
+        return;
+    };
+    x.warp_to(300, 200);
+    let mut saver = Saver::start(&x, "fs-small-warp", &["/s"], &[]);
+    poll(&mut saver, "a mountain on the screen", || {
+        looks_drawn(&x.grab_screen())
+    });
+    for _ in 0..5 {
+        x.warp_to(303, 201);
+        x.warp_to(300, 200);
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    std::thread::sleep(Duration::from_millis(700));
+    saver.assert_running();
+}
+
 #[test]
 fn display_fullscreen_ignores_a_3px_jitter() {
     let Some((x, mut saver)) = fullscreen("fs-jitter") else {

@@ -52,6 +52,10 @@ enum UserEvent {
     /// The monitors are now these (full screen on X11).
     #[cfg_attr(not(unix), allow(dead_code))]
     Heads(Vec<Head>),
+    /// The pointer is at this place on the screen (full screen on X11,
+    /// from the input grab: warps send no raw motion).
+    #[cfg_attr(not(unix), allow(dead_code))]
+    PointerAt(i16, i16),
 }
 
 /// Runs `mode` with winit until it ends.
@@ -128,6 +132,9 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
         started: false,
         #[cfg(unix)]
         grab: None,
+        #[cfg(unix)]
+        watching_pointer: false,
+        proxy: event_loop.create_proxy(),
     };
     event_loop
         .run_app(&mut app)
@@ -186,12 +193,28 @@ struct App {
     /// Full screen on X11: the keyboard and pointer grab, until it holds.
     #[cfg(unix)]
     grab: Option<super::grab_x11::InputGrab>,
+    /// Whether the grab's pointer motion is passed on yet.
+    #[cfg(unix)]
+    watching_pointer: bool,
+    /// For events from threads of our own (the grab's pointer motion).
+    #[cfg_attr(not(unix), allow(dead_code))]
+    proxy: winit::event_loop::EventLoopProxy<UserEvent>,
 }
 
 impl ApplicationHandler<UserEvent> for App {
     fn resumed(&mut self, event_loop: &ActiveEventLoop) {
         if std::mem::replace(&mut self.started, true) {
             return;
+        }
+        // X11 full screen: the pointer's place before the windows map is
+        // the origin its moves (warps too, which no device reports as raw
+        // motion) are measured from.
+        #[cfg(unix)]
+        if self.mode == AppMode::Fullscreen
+            && !self.wayland
+            && let Some((x, y)) = super::pointer_x11::pointer_position()
+        {
+            self.wake.moved_to(x, y);
         }
         if let Err(e) = self.open_windows(event_loop) {
             self.fail(event_loop, e);
@@ -252,6 +275,22 @@ impl ApplicationHandler<UserEvent> for App {
                 self.trace.ended_by(&event);
                 event_loop.exit()
             }
+            // X11: raw motion misses a warped pointer (`xdotool mousemove`,
+            // remote desktops); the pointer's place on the screen does not.
+            #[cfg(unix)]
+            WindowEvent::CursorMoved { position, .. }
+                if self.mode == AppMode::Fullscreen && !self.wayland =>
+            {
+                let window = self.screens[i].window.inner_position();
+                if let Ok(at) = window
+                    && self
+                        .wake
+                        .moved_to(f64::from(at.x) + position.x, f64::from(at.y) + position.y)
+                {
+                    self.trace.ended_by(&event);
+                    event_loop.exit()
+                }
+            }
             WindowEvent::MouseInput {
                 state: ElementState::Pressed,
                 ..
@@ -289,6 +328,12 @@ impl ApplicationHandler<UserEvent> for App {
                 event_loop.exit()
             }
             UserEvent::Heads(heads) => self.follow_heads(event_loop, &heads),
+            UserEvent::PointerAt(x, y) => {
+                if self.mode == AppMode::Fullscreen && self.wake.moved_to(x.into(), y.into()) {
+                    self.trace.ended_by(&event);
+                    event_loop.exit()
+                }
+            }
         }
     }
 
@@ -366,7 +411,18 @@ impl App {
                 None => return false,
             }
         }
-        self.grab.as_mut().is_some_and(|g| !g.try_grab())
+        let Some(grab) = self.grab.as_mut() else {
+            return false;
+        };
+        let held = grab.try_grab();
+        if held && !self.watching_pointer {
+            self.watching_pointer = true;
+            let proxy = self.proxy.clone();
+            grab.watch_motion(move |x, y| {
+                let _ = proxy.send_event(UserEvent::PointerAt(x, y));
+            });
+        }
+        !held
     }
 
     fn fail(&mut self, event_loop: &ActiveEventLoop, error: SaverError) {
@@ -454,6 +510,9 @@ impl App {
         if self.mode != AppMode::Fullscreen || old.len() != self.screens.len() {
             return;
         }
+        // The server may have moved the pointer onto a monitor that stays:
+        // its next place is the new origin.
+        self.wake.reset_origin();
         for change in heads::plan(&old, new) {
             match change {
                 Change::Fit(i, head) => self.fit(event_loop, i, head),

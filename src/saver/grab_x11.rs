@@ -5,8 +5,14 @@
 //! ends the saver would be typed into the focused program and the click
 //! would land on whatever lies below. The grab is held by a connection of
 //! our own; winit still sees the raw device events (XI 2.1 and later send
-//! raw events regardless of grabs), which is what ends the saver.
+//! raw events regardless of grabs), which is what ends the saver. A warped
+//! pointer (`xdotool mousemove`, remote desktops) sends no raw event: the
+//! grab asks for the pointer's motion and a thread passes each place on.
 
+use std::sync::Arc;
+
+use x11rb::connection::Connection as _;
+use x11rb::protocol::Event;
 use x11rb::protocol::xproto::{ConnectionExt as _, EventMask, GrabMode, GrabStatus};
 use x11rb::rust_connection::RustConnection;
 use x11rb::{CURRENT_TIME, NONE};
@@ -16,7 +22,7 @@ const ATTEMPTS: u32 = 50;
 
 /// The grab, held as long as this lives (closing the connection releases it).
 pub struct InputGrab {
-    conn: Option<RustConnection>,
+    conn: Option<Arc<RustConnection>>,
     window: u32,
     tries: u32,
     keyboard: bool,
@@ -27,7 +33,7 @@ impl InputGrab {
     /// Prepares grabbing input for `window`; nothing happens without a display.
     pub fn new(window: u32) -> Self {
         InputGrab {
-            conn: RustConnection::connect(None).ok().map(|(c, _)| c),
+            conn: RustConnection::connect(None).ok().map(|(c, _)| Arc::new(c)),
             window,
             tries: 0,
             keyboard: false,
@@ -63,7 +69,7 @@ impl InputGrab {
                 .grab_pointer(
                     false,
                     self.window,
-                    EventMask::NO_EVENT,
+                    EventMask::POINTER_MOTION,
                     GrabMode::ASYNC,
                     GrabMode::ASYNC,
                     NONE,
@@ -80,5 +86,27 @@ impl InputGrab {
             );
         }
         self.keyboard && self.pointer
+    }
+
+    /// Calls `tell` with the pointer's place on the screen (root
+    /// coordinates) at each motion the pointer grab reports, on a thread of
+    /// its own, until the connection ends. Nothing without a connection.
+    pub fn watch_motion(&self, tell: impl Fn(i16, i16) + Send + 'static) {
+        let Some(conn) = self.conn.clone() else {
+            return;
+        };
+        let watch = move || {
+            while let Ok(event) = conn.wait_for_event() {
+                if let Event::MotionNotify(e) = event {
+                    tell(e.root_x, e.root_y);
+                }
+            }
+        };
+        let spawned = std::thread::Builder::new()
+            .name("x11-pointer".into())
+            .spawn(watch);
+        if let Err(e) = spawned {
+            crate::log::warn(&format!("cannot watch the pointer: {e}"));
+        }
     }
 }

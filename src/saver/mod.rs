@@ -41,6 +41,8 @@ mod on_screen;
 mod options;
 mod overlay;
 mod placement;
+#[cfg(unix)]
+mod pointer_x11;
 pub mod present;
 mod redraw;
 mod screen;

@@ -379,6 +379,15 @@ impl Xvfb {
         assert!(status.success());
     }
 
+    /// Warps the pointer to (x, y), as `xdotool mousemove` does: the
+    /// pointer jumps, and no device sends a raw motion event.
+    pub fn warp_to(&self, x: i16, y: i16) {
+        self.conn
+            .warp_pointer(x11rb::NONE, self.root, 0, 0, 0, 0, x, y)
+            .expect("WarpPointer request");
+        self.conn.sync().expect("WarpPointer sync");
+    }
+
     fn fake(&self, kind: u8, detail: u8, x: i16, y: i16) {
         self.conn
             .xtest_fake_input(kind, detail, 0, self.root, x, y, 0)
