@@ -29,3 +29,5 @@ pub mod signals;
 pub mod snapshot;
 pub mod spelling;
 pub mod terrain;
+#[cfg(unix)]
+pub mod x11_visual;

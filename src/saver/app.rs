@@ -114,7 +114,7 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
     let x11_visual = if wayland {
         None
     } else {
-        super::visual_x11::drawable_visual()
+        crate::x11_visual::drawable_visual()
     };
     #[cfg(not(unix))]
     let x11_visual = None;
@@ -374,7 +374,7 @@ impl ApplicationHandler<UserEvent> for App {
 /// Every window's title and name: the Wayland app_id and the X11 class are
 /// "mountains", as the desktop entry is named.
 /// `x11_visual`: the visual to draw with on an X screen whose own one
-/// softbuffer cannot take (see visual_x11.rs).
+/// softbuffer cannot take (see x11_visual.rs).
 fn base_attributes(x11_visual: Option<u32>) -> WindowAttributes {
     let attrs = Window::default_attributes().with_title("mountains");
     #[cfg(unix)]

@@ -54,8 +54,6 @@ pub mod single;
 pub mod slideshow;
 pub mod source;
 mod trace;
-#[cfg(unix)]
-pub mod visual_x11;
 
 use crate::cli::{Mode, XssOptions};
 use crate::mountain::Mountain;

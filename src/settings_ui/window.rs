@@ -92,11 +92,11 @@ fn owned_by(
     attrs: winit::window::WindowAttributes,
     _parent: Option<u64>,
 ) -> winit::window::WindowAttributes {
-    use crate::saver::backend::{Backend, from_env};
-    if from_env(false) != Some(Backend::X11) {
+    // winit's own choice here: Wayland wherever a compositor is named.
+    if std::env::var_os("WAYLAND_DISPLAY").is_some() {
         return attrs;
     }
-    match crate::saver::visual_x11::drawable_visual() {
+    match crate::x11_visual::drawable_visual() {
         Some(id) => winit::platform::x11::WindowAttributesExtX11::with_x11_visual(attrs, id),
         None => attrs,
     }

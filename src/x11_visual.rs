@@ -1,4 +1,5 @@
-//! A visual softbuffer can draw into, for the windows winit opens on X11.
+//! A visual softbuffer can draw into, for the windows winit opens on X11
+//! (the saver's and the settings screen's).
 //! softbuffer takes 24- and 32-bit true colour with 8 bits a channel; a
 //! window gets its screen's own visual unless asked otherwise, so on a
 //! 30-bit or a 16-bit screen every window mode was refused, although such
