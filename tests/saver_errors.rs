@@ -95,22 +95,74 @@ fn display_a_window_id_that_does_not_exist_is_named() {
     );
 }
 
+/// A window of a 30- or a 16-bit true-colour screen, as a daemon on such a
+/// screen gives --window-id (or --root), gets each pixel packed into its
+/// visual's masks (both were refused); an 8-bit window still is, in words.
 #[test]
-fn display_a_16_bit_screen_is_refused_with_a_message() {
-    let Some(x) = Xvfb::start(320, 240, &["depth=16"]) else {
+fn display_window_id_draws_into_30_and_16_bit_windows() {
+    for depth in [30u8, 16] {
+        let Some(x) = Xvfb::start(320, 240, &[&format!("depth={depth}")]) else {
+            return;
+        };
+        let window = x.create_window(100, 100);
+        assert_eq!(x.depth(window), depth);
+        let id = format!("0x{window:x}");
+        let mut saver = Saver::start(&x, "deep-window", &["--window-id", &id], &[]);
+        xvfb::poll(
+            &mut saver,
+            &format!("a mountain in a {depth}-bit window"),
+            || xvfb::looks_drawn(&as_rgb(&x, window, depth)),
+        );
+        let stderr = saver.stderr();
+        assert!(!stderr.contains("panicked"), "{stderr}");
+    }
+    let Some(x) = Xvfb::start(320, 240, &["depth=8"]) else {
         return;
     };
     let window = x.create_window(100, 100);
     let id = format!("0x{window:x}");
-    let mut saver = Saver::start(&x, "depth16", &["--window-id", &id], &[]);
+    let mut saver = Saver::start(&x, "depth8", &["--window-id", &id], &[]);
     let status = saver.wait(PATIENCE).expect("mountains should give up");
     assert!(!status.success());
     let stderr = saver.stderr();
     assert!(
-        stderr.contains("16-bit windows are not supported"),
+        stderr.contains("8-bit windows are not supported"),
         "{stderr}"
     );
     assert!(!stderr.contains("panicked"), "{stderr}");
+}
+
+/// A 100x100 `window` of a `depth`-bit (30: 10 bits a channel; 16: 5-6-5)
+/// screen as 0x00RRGGBB pixels, read with GetImage.
+fn as_rgb(x: &Xvfb, window: u32, depth: u8) -> Vec<u32> {
+    use x11rb::protocol::xproto::{ConnectionExt as _, ImageFormat};
+    let reply = x
+        .conn
+        .get_image(ImageFormat::Z_PIXMAP, window, 0, 0, 100, 100, !0)
+        .expect("GetImage request")
+        .reply()
+        .expect("GetImage reply");
+    let eight = |v: u32, bits: u32| v * 255 / ((1 << bits) - 1);
+    if depth == 16 {
+        let pixels = reply
+            .data
+            .chunks_exact(2)
+            .map(|b| u32::from(u16::from_le_bytes([b[0], b[1]])));
+        pixels
+            .map(|p| eight(p >> 11, 5) << 16 | eight((p >> 5) & 63, 6) << 8 | eight(p & 31, 5))
+            .collect()
+    } else {
+        let pixels = reply
+            .data
+            .chunks_exact(4)
+            .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]));
+        pixels
+            .map(|p| {
+                let ch = |s: u32| eight((p >> s) & 1023, 10);
+                ch(20) << 16 | ch(10) << 8 | ch(0)
+            })
+            .collect()
+    }
 }
 
 /// When the X server goes away, every mode says so in words, on stderr and
