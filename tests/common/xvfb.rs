@@ -608,6 +608,16 @@ pub fn expect_exit(saver: &mut Saver, what: &str) {
     assert!(status.success(), "{what}: {status}\n{}", saver.stderr());
 }
 
+/// Waits for the saver to give up and checks it failed, saying `words`
+/// on stderr without panicking.
+pub fn expect_refusal(saver: &mut Saver, words: &str) {
+    let status = saver.wait(PATIENCE).expect("mountains should give up");
+    assert!(!status.success());
+    let stderr = saver.stderr();
+    assert!(stderr.contains(words), "{stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+}
+
 /// Waits until the saver has a mapped `w` x `h` window; returns it.
 pub fn wait_for_window(x: &Xvfb, saver: &mut Saver, w: u16, h: u16) -> Window {
     let mut found = None;

@@ -187,6 +187,12 @@ impl<'a> Canvas<'a> {
         }
     }
 
+    /// The pixel at (`x`, `y`), frame coordinates inside the canvas.
+    #[inline]
+    pub(crate) fn get(&self, x: u32, y: u32) -> u32 {
+        self.rows[(y - self.y0) as usize][(x - self.x0) as usize]
+    }
+
     /// Sets one pixel (frame coordinates, already clipped) without adding it
     /// to the damage: the caller has covered it with `touch_box`.
     #[inline]

@@ -4,7 +4,7 @@
 //! pixels, never the order they were drawn in, so the full frame's bands
 //! and the painter's last step end with the same pixels.
 
-use super::columns::ColumnsMut;
+use super::canvas::Canvas;
 use super::horizon::{Edge, Horizon};
 use super::{crests, skyline};
 use crate::render::damage::Damage;
@@ -21,17 +21,36 @@ pub(crate) fn clean_edges(scene: &Scene, horizon: &Horizon, frame: &mut Frame) -
     let (mut damage, tops) = skyline::smooth(frame, &scene.sky, &exact);
     // The crests' pixels are far apart in memory and their mixing waits on
     // it: two threads, a half of the columns each, take half the time.
-    let [mut left, mut right] = ColumnsMut::split(frame, frame.width() / 2);
-    let (ours, theirs) = std::thread::scope(|s| {
+    let [mut left, mut right] = halves(frame);
+    let theirs = std::thread::scope(|s| {
         let theirs = s.spawn(|| crests::smooth(&mut right, scene, horizon, &tops));
-        (
-            crests::smooth(&mut left, scene, horizon, &tops),
-            theirs.join(),
-        )
+        crests::smooth(&mut left, scene, horizon, &tops);
+        theirs.join()
     });
-    let theirs = theirs.unwrap_or_else(|panic| std::panic::resume_unwind(panic));
-    for r in ours.rects().chain(theirs.rects()) {
+    if let Err(panic) = theirs {
+        std::panic::resume_unwind(panic);
+    }
+    for r in [left, right]
+        .iter()
+        .flat_map(|c| c.damage().rects().collect::<Vec<_>>())
+    {
         damage.add(r);
     }
     damage
+}
+
+/// The left and the right half of `frame`'s columns as canvases of their own.
+fn halves(frame: &mut Frame) -> [Canvas<'_>; 2] {
+    let at = (frame.width() / 2) as usize;
+    let width = frame.width().max(1) as usize;
+    let (mut left, mut right) = (Vec::new(), Vec::new());
+    for row in frame.pixels_mut().chunks_exact_mut(width) {
+        let (l, r) = row.split_at_mut(at);
+        left.push(l);
+        right.push(r);
+    }
+    [
+        Canvas::from_rows(left, 0, 0),
+        Canvas::from_rows(right, at as u32, 0),
+    ]
 }

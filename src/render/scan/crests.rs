@@ -8,10 +8,8 @@
 //! floating horizon's crests); the two colours are the frame's own, read
 //! just above and just below the edge, so light and haze stay as drawn.
 
-use super::columns::ColumnsMut;
+use super::canvas::Canvas;
 use super::horizon::{Crest, Edge, Horizon};
-use crate::render::damage::Damage;
-use crate::render::frame::Rect;
 use crate::render::scene::Scene;
 use crate::render::shade::colour::blend_packed;
 
@@ -22,46 +20,30 @@ const MAX_ROWS: f32 = 12.0;
 const ALIKE: u32 = 2;
 
 /// Mixes the pixels along every crest of `horizon` in the columns of a
-/// complete frame of `scene` that `frame` holds, below the columns' skyline
-/// `sky_tops` (first rows of land, which the skyline's own pass mixes);
-/// returns what it changed.
-pub(crate) fn smooth(
-    frame: &mut ColumnsMut,
-    scene: &Scene,
-    horizon: &Horizon,
-    sky_tops: &[u32],
-) -> Damage {
-    let mut damage = Damage::default();
+/// complete frame of `scene` that `canvas` holds, below the columns'
+/// skyline `sky_tops` (first rows of land, which the skyline's own pass
+/// mixes); what it changed is the canvas's damage.
+pub(crate) fn smooth(canvas: &mut Canvas, scene: &Scene, horizon: &Horizon, sky_tops: &[u32]) {
+    let clip = *canvas.clip();
     for crest in horizon.crests() {
-        if !frame.holds(crest.x) {
+        if !(clip.x0..clip.x1).contains(&i64::from(crest.x)) {
             continue;
         }
         let Some(&sky_top) = sky_tops.get(crest.x as usize) else {
             continue;
         };
-        if let Some(rows) = mix_crest(frame, scene, crest, sky_top) {
-            damage.add(Rect {
-                x0: crest.x,
-                y0: rows.0,
-                x1: crest.x + 1,
-                y1: rows.1,
-            });
+        if let Some((y0, y1)) = mix_crest(canvas, scene, crest, sky_top) {
+            canvas.touch(crest.x, y0, crest.x + 1, y1);
         }
     }
-    damage
 }
 
 /// Mixes one crest's column; returns the rows changed, if any.
-fn mix_crest(
-    frame: &mut ColumnsMut,
-    scene: &Scene,
-    crest: &Crest,
-    sky_top: u32,
-) -> Option<(u32, u32)> {
+fn mix_crest(frame: &mut Canvas, scene: &Scene, crest: &Crest, sky_top: u32) -> Option<(u32, u32)> {
     let top = (crest_centre(crest)? - 0.5).ceil();
     // Rows clear of the skyline, with a pixel of far land above the edge
     // and one of near land below it inside the frame.
-    if !(top > sky_top as f32 + 1.0 && top < frame.height() as f32) {
+    if !(top > sky_top as f32 + 1.0 && top < frame.clip().y1 as f32) {
         return None;
     }
     let (x, top) = (crest.x, top as u32);
@@ -83,7 +65,7 @@ fn crest_centre(crest: &Crest) -> Option<f32> {
 /// down; `top` is the first row the near land covers at the centre, and
 /// `[far, near]` the colours above and below it there.
 fn mix_rows(
-    frame: &mut ColumnsMut,
+    frame: &mut Canvas,
     x: u32,
     top: u32,
     edge: &Edge,
@@ -99,7 +81,7 @@ fn mix_rows(
     let first = (lo.floor().max(first_allowed as f32) as u32).min(top);
     let end = ((hi.min(lo + MAX_ROWS).ceil().max(0.0)) as u32)
         .max(top)
-        .min(frame.height());
+        .min(frame.clip().y1 as u32);
     let mut changed: Option<(u32, u32)> = None;
     for y in first..end {
         let cover: f32 = edge
@@ -112,7 +94,7 @@ fn mix_rows(
         let (above, below) = if y < top { (own, near) } else { (far, own) };
         let mixed = blend_packed(above, below, (cover * 256.0 + 0.5) as u32);
         if mixed != own {
-            frame.set(x, y, mixed);
+            frame.plot(x, y, mixed);
             let start = changed.map_or(y, |c| c.0);
             changed = Some((start, y + 1));
         }
@@ -152,7 +134,7 @@ mod tests {
             samples: [9.5; 4],
             centre: 9.5,
         };
-        let [mut cols, _] = ColumnsMut::split(&mut f, 1);
+        let mut cols = Canvas::new(f.pixels_mut(), 1, 0);
         let rows = mix_rows(&mut cols, 0, 10, &edge, [FAR, NEAR], 0);
         assert_eq!(rows, Some((9, 10)));
         assert_eq!(f.get(0, 9), blend_packed(FAR, NEAR, 128));
@@ -167,7 +149,7 @@ mod tests {
             samples: [14.0, 14.0, 6.0, 14.0],
             centre: 6.0,
         };
-        let [mut cols, _] = ColumnsMut::split(&mut f, 1);
+        let mut cols = Canvas::new(f.pixels_mut(), 1, 0);
         mix_rows(&mut cols, 0, 6, &edge, [FAR, NEAR], 0);
         for y in 6..14 {
             assert_eq!(f.get(0, y), blend_packed(FAR, NEAR, 64), "row {y}");

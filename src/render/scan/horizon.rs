@@ -59,8 +59,7 @@ pub(crate) struct Crest {
 
 /// Where the land's top is in each column, and where it hides farther land.
 pub(crate) struct Horizon {
-    tops: Vec<Top>,
-    crests: Vec<Crest>,
+    sweep: Sweep,
 }
 
 impl Horizon {
@@ -72,20 +71,20 @@ impl Horizon {
     /// The places where nearer land hides farther land, front to back in
     /// each column.
     pub(crate) fn crests(&self) -> &[Crest] {
-        &self.crests
+        &self.sweep.crests
     }
 
     /// The land's top edge across column `x` as the mesh's rows draw it
     /// (`None` where no land reaches the column).
     pub(crate) fn skyline(&self, scene: &Scene, x: u32) -> Option<Edge> {
-        let top = *self.tops.get(x as usize)?;
+        let tops = &self.sweep;
+        let top = tops.top_of(x)?;
         if top.row == NONE || !top.y.is_finite() {
             return None;
         }
         // Beside the column the top may be another row's: the neighbours'
         // rows count too.
-        let beside =
-            [x.wrapping_sub(1), x + 1].map(|n| self.tops.get(n as usize).filter(|t| t.row != NONE));
+        let beside = [x.wrapping_sub(1), x + 1].map(|n| tops.top_of(n).filter(|t| t.row != NONE));
         let mut rows = vec![(top.row, top.point)];
         rows.extend(beside.iter().flatten().map(|t| (t.row, t.point)));
         rows.dedup_by_key(|r| r.0);
@@ -172,13 +171,7 @@ impl HorizonSweep {
     /// The horizon, once every row of `scene` is swept.
     pub(crate) fn finish(mut self, scene: &Scene) -> Horizon {
         self.advance_to(scene, 1.0);
-        let tops = (0..self.sweep.ys.len())
-            .map(|c| self.sweep.top(c))
-            .collect();
-        Horizon {
-            tops,
-            crests: self.sweep.crests,
-        }
+        Horizon { sweep: self.sweep }
     }
 
     /// Lowers the horizon to kept row `row`, block by block of points,
@@ -236,6 +229,11 @@ impl Sweep {
             stale: vec![false; tiles],
             crests: Vec::new(),
         }
+    }
+
+    /// Column `x`'s top, if the frame has that column.
+    fn top_of(&self, x: u32) -> Option<Top> {
+        ((x as usize) < self.ys.len()).then(|| self.top(x as usize))
     }
 
     /// Column `c`'s top.

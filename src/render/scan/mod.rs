@@ -6,7 +6,6 @@
 pub(super) mod blend;
 pub(super) mod canvas;
 pub(super) mod clean;
-mod columns;
 mod crests;
 pub(super) mod horizon;
 pub mod raster;
