@@ -139,6 +139,15 @@ pub enum Shading {
     Flat,
 }
 
+/// How much cloud the sky holds.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Clouds {
+    /// Drawn per mountain, like the sun: some slides clear, some cloudy.
+    Varied,
+    /// From 0 (a clear sky) to 1 (overcast).
+    Amount(f32),
+}
+
 /// Which monitors the full-screen saver covers.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -205,6 +214,10 @@ pub struct Settings {
     pub sun: Sun,
     /// Faces lit smoothly across or one colour each.
     pub shading: Shading,
+    /// Cloud in the sky: drawn per mountain, or an amount from 0 to 1.
+    pub clouds: Clouds,
+    /// The land and the sky mirrored in the water.
+    pub reflections: bool,
     /// Oblique or perspective projection.
     pub view: ViewKind,
     /// Which side the mountain is seen from, in degrees (0, 90, 180, 270).

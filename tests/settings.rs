@@ -339,6 +339,7 @@ fn every_key_writes_and_reads_only_its_own_field() {
             Kind::Seed => Value::Int(4711),
             Kind::Path => Value::Str("/some/folder".into()),
             Kind::QuarterTurn => Value::Int(90),
+            Kind::AmountOrVaried => Value::Float(0.5),
         };
         assert_ne!(
             keys::get(&defaults, key),

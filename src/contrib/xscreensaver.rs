@@ -11,7 +11,7 @@ use std::fmt::Write;
 
 use super::{default_text, label};
 use crate::cli::key_flags::flag_name;
-use crate::settings::keys::{KEYS, Key, Kind};
+use crate::settings::keys::{AMOUNT_MENU, KEYS, Key, Kind};
 
 /// Keys with no widget: the seed is drawn afresh for every mountain under
 /// xscreensaver, and xscreensaver itself chooses the monitors.
@@ -39,7 +39,7 @@ pub fn xml() -> String {
     let selects = is(|k| {
         matches!(
             k,
-            Kind::Choice(_) | Kind::IntOrAuto { .. } | Kind::QuarterTurn
+            Kind::Choice(_) | Kind::IntOrAuto { .. } | Kind::QuarterTurn | Kind::AmountOrVaried
         )
     });
     let numbers = is(|k| matches!(k, Kind::Int { .. } | Kind::Float { .. }));
@@ -109,6 +109,9 @@ fn select(k: &Key) -> String {
             .chain((min..=max).map(|n| n.to_string()))
             .collect(),
         Kind::QuarterTurn => ["0", "90", "180", "270"].map(String::from).to_vec(),
+        Kind::AmountOrVaried => std::iter::once("varied".to_string())
+            .chain(AMOUNT_MENU.iter().map(|a| a.to_string()))
+            .collect(),
         _ => Vec::new(),
     };
     let default = default_text(k);

@@ -122,6 +122,9 @@ pub(crate) struct Scene<'a> {
     /// The grid rows the mesh is drawn with (see `rows.rs`); strip `s` lies
     /// between rows `rows[s]` and `rows[s + 1]`.
     pub(super) rows: Vec<usize>,
+    /// Whether the water mirrors the land and the sky (the looks with
+    /// ripples, when `reflections` is on).
+    pub(crate) reflections: bool,
     /// Whether the field's lakes are drawn (the filled looks; Sonar and
     /// Outline draw the ground's mesh).
     lakes: bool,
@@ -178,6 +181,7 @@ impl<'a> Scene<'a> {
         let normals = smooth.then(|| Normals::new(size, &rows, view.cell()));
         let eye = view.camera_ground().filter(|_| smooth);
         let cells = size - 1;
+        let reflections = settings.reflections && ripples.is_some();
         let lakes = shaded && field.lakes().is_some();
         let (split, sees_right, sees_front) = match view.camera_column() {
             Some(cx) => {
@@ -208,6 +212,7 @@ impl<'a> Scene<'a> {
             split,
             row_top,
             rows,
+            reflections,
             lakes,
             normal_shear,
             listing_diagonal,

@@ -7,7 +7,7 @@ use serde::Deserialize;
 use serde::de::IntoDeserializer;
 
 use super::{
-    ColorMode, Detail, Generator, MAX_GRID_EXPONENT, MIN_GRID_EXPONENT, Monitors, Profile,
+    Clouds, ColorMode, Detail, Generator, MAX_GRID_EXPONENT, MIN_GRID_EXPONENT, Monitors, Profile,
     Settings, Shading, Sun, ViewKind, WaterLine,
 };
 
@@ -80,7 +80,13 @@ pub enum Kind {
     Path,
     /// 0, 90, 180 or 270 (degrees).
     QuarterTurn,
+    /// "varied" (drawn per mountain), or a number in `0..=1`.
+    AmountOrVaried,
 }
+
+/// The amounts a menu offers for a [`Kind::AmountOrVaried`] key, after
+/// "varied" (any other number in range may still be written in the file).
+pub const AMOUNT_MENU: &[f64] = &[0.0, 0.25, 0.5, 0.75, 1.0];
 
 impl Kind {
     /// The allowed values, in words, for error messages and `--help`.
@@ -94,6 +100,7 @@ impl Kind {
             Kind::Seed => "\"random\" or an integer from 0 to 18446744073709551615".into(),
             Kind::Path => "a folder path as a string (\"\" for none)".into(),
             Kind::QuarterTurn => "0, 90, 180 or 270".into(),
+            Kind::AmountOrVaried => "\"varied\" or a number from 0 to 1".into(),
         }
     }
 }
@@ -338,6 +345,20 @@ pub const KEYS: &[Key] = &[
         "light blended across each face, or one colour a face (classic looks are flat)"
     ),
     row!(
+        clouds,
+        Kind::AmountOrVaried,
+        Repaint,
+        Value::Str("varied".into()),
+        "cloud in the sky, 0 clear to 1 overcast; \"varied\" draws an amount per mountain"
+    ),
+    row!(
+        reflections,
+        Kind::Bool,
+        Repaint,
+        Value::Bool(true),
+        "the land and the sky mirrored in the water (the classic looks keep plain water)"
+    ),
+    row!(
         view,
         Kind::Choice(VIEWS),
         Repaint,
@@ -433,6 +454,8 @@ impl Settings {
             shadows: false,
             sun: Sun::Varied,
             shading: Shading::Smooth,
+            clouds: Clouds::Varied,
+            reflections: false,
             view: ViewKind::Vista,
             rotation: 0,
             auto_redraw: false,
@@ -548,6 +571,27 @@ impl Field for Detail {
     }
     fn parse(key: &Key, value: &Value) -> Option<Self> {
         detail(key, value)
+    }
+}
+
+/// Cloud: "varied" or an amount.
+impl Field for Clouds {
+    fn value(&self) -> Value {
+        match self {
+            Clouds::Varied => Value::Str("varied".into()),
+            Clouds::Amount(a) => a.value(),
+        }
+    }
+    fn parse(_: &Key, value: &Value) -> Option<Self> {
+        let amount = match value {
+            Value::Str(s) if s == "varied" => return Some(Clouds::Varied),
+            Value::Int(i) => *i as f64,
+            Value::Float(x) => *x,
+            _ => return None,
+        };
+        (0.0..=1.0)
+            .contains(&amount)
+            .then_some(Clouds::Amount(amount as f32))
     }
 }
 

@@ -25,7 +25,9 @@ pub fn widget(key: &Key) -> Widget {
     match key.kind {
         Kind::Int { .. } | Kind::Float { .. } => Widget::Slider,
         Kind::Bool => Widget::Check,
-        Kind::Choice(_) | Kind::QuarterTurn | Kind::IntOrAuto { .. } => Widget::Choice,
+        Kind::Choice(_) | Kind::QuarterTurn | Kind::IntOrAuto { .. } | Kind::AmountOrVaried => {
+            Widget::Choice
+        }
         Kind::Path => Widget::Text,
         Kind::Seed => Widget::Seed,
     }
@@ -35,7 +37,11 @@ pub fn widget(key: &Key) -> Widget {
 pub fn accepts_typing(key: &Key) -> bool {
     !matches!(
         key.kind,
-        Kind::Bool | Kind::Choice(_) | Kind::QuarterTurn | Kind::IntOrAuto { .. }
+        Kind::Bool
+            | Kind::Choice(_)
+            | Kind::QuarterTurn
+            | Kind::IntOrAuto { .. }
+            | Kind::AmountOrVaried
     )
 }
 
@@ -165,6 +171,9 @@ pub fn choices(key: &Key) -> Vec<Value> {
         Kind::QuarterTurn => QUARTER_TURNS.iter().map(|d| Value::Int(*d)).collect(),
         Kind::IntOrAuto { min, max } => std::iter::once(Value::Str("auto".into()))
             .chain((min..=max).map(Value::Int))
+            .collect(),
+        Kind::AmountOrVaried => std::iter::once(Value::Str("varied".into()))
+            .chain(keys::AMOUNT_MENU.iter().map(|&a| Value::Float(a)))
             .collect(),
         _ => Vec::new(),
     }

@@ -64,6 +64,18 @@ impl Sky {
         self.row_colours(y)[(x & 3) as usize]
     }
 
+    /// The sky's colour seen at screen point (`x`, `y`), which may lie
+    /// outside the frame (above it: the zenith's side), undithered: what
+    /// the water mirrors where a reflected sight line meets no land.
+    pub(crate) fn colour_at(&self, _x: f32, y: f32) -> u32 {
+        let t = match y / self.horizon_row {
+            q if q >= 1.0 => 1.0,
+            q => q.max(0.0).powf(HORIZON_CURVE),
+        };
+        let c: Rgb = [0, 1, 2].map(|i| self.top[i] + (self.horizon[i] - self.top[i]) * t);
+        super::colour::to_u32(c)
+    }
+
     /// How far row `y` is blended from the top colour (0) to the horizon
     /// colour (1).
     fn blend(&self, y: u32) -> f32 {
