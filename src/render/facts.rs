@@ -21,6 +21,8 @@ pub struct SceneFacts {
     /// The sea's wind streaks, if the look has them.
     pub ripples: Option<RippleFacts>,
     view: super::framing::view::View,
+    /// The sky as drawn: its gradient, the sun's glow and the clouds.
+    backdrop: super::shade::sky::Sky,
     /// Grid steps a side.
     cells: f32,
     width: f32,
@@ -51,6 +53,7 @@ impl SceneFacts {
                 cells,
             }),
             view: scene.view.clone(),
+            backdrop: scene.sky.clone(),
             cells,
             width: width.max(1) as f32,
             height: height.max(1) as f32,
@@ -63,6 +66,20 @@ impl SceneFacts {
     pub fn place(&self, x: f32, y: f32, z: f32) -> Vec2 {
         let p = self.view.project(x * self.cells, y * self.cells, z);
         p / Vec2::new(self.width, self.height)
+    }
+}
+
+impl SceneFacts {
+    /// The sky's colour (undithered, packed) at `x` of the frame's width
+    /// and `y` of its height from its top left corner: the gradient with
+    /// the sun's glow and the clouds over it.
+    pub fn sky_at(&self, x: f32, y: f32) -> u32 {
+        self.backdrop.colour_at(x * self.width, y * self.height)
+    }
+
+    /// Whether the sky holds anything over its gradient (glow or cloud).
+    pub fn has_weather(&self) -> bool {
+        self.backdrop.weather().is_some()
     }
 }
 

@@ -8,6 +8,7 @@ use glam::Vec2;
 use super::framing::tops::{RowTops, finite};
 use super::framing::view::View;
 use super::scan::raster::{Fixed2, to_fixed};
+use super::shade::clouds;
 use super::shade::colour::blend_packed;
 use super::shade::haze::Haze;
 use super::shade::normals::Normals;
@@ -16,6 +17,7 @@ use super::shade::ripples::Ripples;
 use super::shade::shadow::{self, ShadowMap};
 use super::shade::sky::Sky;
 use super::shade::skylight::SkyLight;
+use super::shade::weather::Weather;
 use crate::settings::{ColorMode, Settings, Shading, ViewKind};
 use crate::terrain::Heightfield;
 
@@ -124,6 +126,7 @@ pub(crate) struct Scene<'a> {
     pub(super) rows: Vec<usize>,
     /// Whether the water mirrors the land and the sky (the looks with
     /// ripples, when `reflections` is on).
+    #[allow(dead_code)] // Read by the water's mirror, on its way.
     pub(crate) reflections: bool,
     /// Whether the field's lakes are drawn (the filled looks; Sonar and
     /// Outline draw the ground's mesh).
@@ -182,6 +185,14 @@ impl<'a> Scene<'a> {
         let eye = view.camera_ground().filter(|_| smooth);
         let cells = size - 1;
         let reflections = settings.reflections && ripples.is_some();
+        // The weather is the ripples' kind of look: the shaded views with depth.
+        let sky = match ripples.is_some() {
+            true => {
+                let w = weather(&palette, &view, settings, &field, &sky, [width, height]);
+                sky.with_weather(w)
+            }
+            false => sky,
+        };
         let lakes = shaded && field.lakes().is_some();
         let (split, sees_right, sees_front) = match view.camera_column() {
             Some(cx) => {
@@ -405,6 +416,27 @@ fn backdrop(palette: &Palette, view: &View, style: Style, height: u32) -> Sky {
         _ => height as f32,
     };
     Sky::new(top, horizon, row)
+}
+
+/// The sun's glow and the clouds of this slide (`settings.clouds`, drawn
+/// from the field's identity under "varied") in a `frame` of that size.
+fn weather(
+    palette: &Palette,
+    view: &View,
+    settings: &Settings,
+    field: &Heightfield,
+    sky: &Sky,
+    [width, height]: [u32; 2],
+) -> Option<Weather> {
+    let amount = clouds::amount(settings.clouds, field.identity());
+    Weather::new(
+        view,
+        palette.lighting(),
+        |c| palette.filtered(c),
+        (Vec2::new(width as f32, height as f32), sky.horizon_row()),
+        amount,
+        field.identity(),
+    )
 }
 
 /// The field seen from another side: `rotation` degrees, in quarter turns

@@ -84,6 +84,13 @@ impl Camera {
         Vec2::new(d.x / depth, -d.dot(self.up) / depth)
     }
 
+    /// The sight line (not of unit length) through unscaled screen point
+    /// `u`: what [`Camera::project`] sends to `u` lies along it.
+    pub(crate) fn sight(&self, u: Vec2) -> Vec3 {
+        // The screen's x is the world's x (the camera is level sideways).
+        self.forward + Vec3::X * u.x - self.up * u.y
+    }
+
     /// [`Camera::project`] for the points of one line of world y `y` (a
     /// grid row): the terms that do not change along it, worked out once.
     /// The same sums in the same order, so the same bits.

@@ -243,6 +243,15 @@ impl View {
         if self.camera.is_some() { 0.0 } else { SHEAR }
     }
 
+    /// The unit sight line through screen point (`x`, `y`) in pixels, in
+    /// the world (x right, y towards the front, z up); `None` for the
+    /// oblique view, which has no eye.
+    pub(crate) fn sight(&self, x: f32, y: f32) -> Option<Vec3> {
+        let cam = self.camera.as_ref()?;
+        let u = (Vec2::new(x, y) - self.offset) / self.scale;
+        cam.sight(u).try_normalize()
+    }
+
     /// Width of one grid step in height units.
     pub fn cell(&self) -> f32 {
         self.cell

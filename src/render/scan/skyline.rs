@@ -147,11 +147,11 @@ fn land_tops(frame: &Frame, sky: &Sky) -> Vec<u32> {
     let (w, h) = (frame.width() as usize, frame.height());
     let mut tops = vec![h; w];
     let mut open = w;
+    let mut cache = None;
     for y in 0..h {
-        let phases = sky.row_colours(y);
         let row = &frame.pixels()[y as usize * w..][..w];
         for (x, (&px, top)) in row.iter().zip(tops.iter_mut()).enumerate() {
-            if *top == h && px != phases[x & 3] {
+            if *top == h && !sky.shows(px, x as u32, y, &mut cache) {
                 *top = y;
                 open -= 1;
             }

@@ -1,7 +1,9 @@
 //! Light and colour: the sun and the sky's light, shadows, sky light, smooth
-//! normals, the palette, haze, ripples on the water, the sky's gradient and
+//! normals, the palette, haze, ripples on the water, the sky's gradient, its clouds and the sun's
+//! glow, and
 //! Mono's dither, and the colour arithmetic they share.
 
+pub(super) mod clouds;
 pub mod colour;
 pub mod dither;
 pub(super) mod haze;
@@ -12,3 +14,4 @@ pub(super) mod ripples;
 pub mod shadow;
 pub(super) mod sky;
 pub(super) mod skylight;
+pub(super) mod weather;

@@ -143,6 +143,11 @@ impl Palette {
         &self.lighting
     }
 
+    /// A natural colour (0..=1) through this palette's colour filter.
+    pub(crate) fn filtered(&self, c: Rgb) -> Rgb {
+        filter(self.mode, c)
+    }
+
     /// The colour mode these colours were made for.
     pub fn mode(&self) -> ColorMode {
         self.mode

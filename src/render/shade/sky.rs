@@ -1,8 +1,12 @@
 //! The sky behind the land: a gradient from the zenith colour at the top to
 //! the horizon colour where the land begins, ordered-dithered so that a
-//! slow gradient across a large screen shows no bands.
+//! slow gradient across a large screen shows no bands; in the looks with
+//! depth, the weather in it too (the sun's glow and cloud, [`Weather`]).
+
+use std::sync::Arc;
 
 use super::colour::{Rgb, unpack};
+use super::weather::Weather;
 use crate::render::scan::canvas::Canvas;
 
 /// 4x4 Bayer thresholds, 0..16.
@@ -12,12 +16,14 @@ const BAYER: [[u8; 4]; 4] = [[0, 8, 2, 10], [12, 4, 14, 6], [3, 11, 1, 9], [15, 
 const HORIZON_CURVE: f32 = 1.6;
 
 /// The background of one frame.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub(crate) struct Sky {
     top: Rgb,
     horizon: Rgb,
     /// Frame row where the horizon colour is reached.
     horizon_row: f32,
+    /// The sun's glow and the clouds over the gradient, where there are any.
+    weather: Option<Arc<Weather>>,
 }
 
 impl Sky {
@@ -32,7 +38,24 @@ impl Sky {
             top: unpack(top),
             horizon: unpack(horizon),
             horizon_row,
+            weather: None,
         }
+    }
+
+    /// This sky with `weather` over its gradient (none if it shows nothing).
+    pub(crate) fn with_weather(mut self, weather: Option<Weather>) -> Self {
+        self.weather = weather.filter(|w| !w.is_clear()).map(Arc::new);
+        self
+    }
+
+    /// The frame row where the horizon colour is reached.
+    pub(crate) fn horizon_row(&self) -> f32 {
+        self.horizon_row
+    }
+
+    /// The weather over the gradient, if any.
+    pub(crate) fn weather(&self) -> Option<&Weather> {
+        self.weather.as_deref()
     }
 
     /// Fills every row of `canvas` (on a first-write canvas, what is left).
@@ -44,6 +67,12 @@ impl Sky {
         // all rows).
         let below: [[u32; 4]; 4] = std::array::from_fn(|y| self.colours_at(1.0, y as u32));
         let end = canvas.all_written_from();
+        if self.weather.is_some() {
+            for y in clip.y0 as u32..end as u32 {
+                canvas.fill_with(y, x0, x1, |x| self.colour(x, y));
+            }
+            return;
+        }
         for y in clip.y0 as u32..end as u32 {
             let phases = match self.blend(y) {
                 1.0 => below[(y & 3) as usize],
@@ -54,26 +83,63 @@ impl Sky {
     }
 
     /// The packed colours of row `y` at each of the four dither columns
-    /// (column `x` has colour `x & 3`).
-    pub(crate) fn row_colours(&self, y: u32) -> [u32; 4] {
+    /// (column `x` has colour `x & 3`), where the sky has no weather.
+    fn row_colours(&self, y: u32) -> [u32; 4] {
         self.colours_at(self.blend(y), y)
     }
 
     /// The packed colour [`Sky::paint`] gives pixel (`x`, `y`).
     pub(crate) fn colour(&self, x: u32, y: u32) -> u32 {
-        self.row_colours(y)[(x & 3) as usize]
+        match &self.weather {
+            Some(w) => {
+                let c = w.over(
+                    self.gradient(y as f32 + 0.5),
+                    x as f32 + 0.5,
+                    y as f32 + 0.5,
+                );
+                dithered(c, x, y)
+            }
+            None => self.row_colours(y)[(x & 3) as usize],
+        }
+    }
+
+    /// Whether pixel (`x`, `y`) of a frame holds the sky as painted.
+    /// Without weather a row's four colours are worked out once for the
+    /// whole row (`row` caches them).
+    pub(crate) fn shows(&self, px: u32, x: u32, y: u32, row: &mut Option<(u32, [u32; 4])>) -> bool {
+        if self.weather.is_some() {
+            return px == self.colour(x, y);
+        }
+        let phases = match row {
+            Some((at, phases)) if *at == y => *phases,
+            _ => {
+                let phases = self.row_colours(y);
+                *row = Some((y, phases));
+                phases
+            }
+        };
+        px == phases[(x & 3) as usize]
     }
 
     /// The sky's colour seen at screen point (`x`, `y`), which may lie
     /// outside the frame (above it: the zenith's side), undithered: what
     /// the water mirrors where a reflected sight line meets no land.
-    pub(crate) fn colour_at(&self, _x: f32, y: f32) -> u32 {
+    pub(crate) fn colour_at(&self, x: f32, y: f32) -> u32 {
+        let c = self.gradient(y);
+        let c = match &self.weather {
+            Some(w) => w.over(c, x, y),
+            None => c,
+        };
+        super::colour::to_u32(c)
+    }
+
+    /// The gradient's colour (0..=1) at screen height `y`.
+    fn gradient(&self, y: f32) -> Rgb {
         let t = match y / self.horizon_row {
             q if q >= 1.0 => 1.0,
             q => q.max(0.0).powf(HORIZON_CURVE),
         };
-        let c: Rgb = [0, 1, 2].map(|i| self.top[i] + (self.horizon[i] - self.top[i]) * t);
-        super::colour::to_u32(c)
+        [0, 1, 2].map(|i| self.top[i] + (self.horizon[i] - self.top[i]) * t)
     }
 
     /// How far row `y` is blended from the top colour (0) to the horizon
@@ -96,4 +162,12 @@ impl Sky {
             ch(c[0]) << 16 | ch(c[1]) << 8 | ch(c[2])
         })
     }
+}
+
+/// A 0..=1 colour packed with pixel (`x`, `y`)'s step of the ordered
+/// dither, as the plain gradient is.
+fn dithered(c: Rgb, x: u32, y: u32) -> u32 {
+    let d = (f32::from(BAYER[(y & 3) as usize][(x & 3) as usize]) + 0.5) / 16.0;
+    let ch = |v: f32| ((v * 255.0 + d).max(0.0) as u32).min(255);
+    ch(c[0]) << 16 | ch(c[1]) << 8 | ch(c[2])
 }

@@ -1,0 +1,211 @@
+//! What the sky holds over its gradient in the looks with depth: the sun's
+//! glow where the sun stands in or near the view, and cloud lit by the
+//! slide's sun (white at midday, orange and grey at evening, lit from below
+//! near the horizon when the sun is low).
+//!
+//! Everything is a function of a point of the screen measured in frame
+//! heights (the glow of the sight line through it, the clouds of the
+//! backdrop, see `clouds.rs`), so it is the same at every frame size, and
+//! the water mirrors the same sky.
+
+use glam::{Vec2, Vec3};
+
+use super::clouds::{CloudSheet, Cover, smoothstep};
+use super::colour::{Rgb, mix};
+use super::light::Lighting;
+use crate::render::framing::view::View;
+
+/// Sight lines farther from the sun than this (1 - cos of the angle
+/// between them: 90 degrees) get no glow at all, so a slide whose sun is
+/// behind the viewer keeps its plain gradient. The times of day put the
+/// sun to the side of the view, 60 to 75 degrees beyond the frame's edge:
+/// the glow's wide part warms that side of the sky.
+const GLOW_REACH: f32 = 1.0;
+/// The wide part's strength at the sun (it falls to 0 at the reach).
+const WIDE: f32 = 0.3;
+/// How fast the glow's core and its wide halo fall off, in 1 - cos.
+const CORE: f32 = 0.003;
+const HALO: f32 = 0.06;
+/// The sun's disc: 1 - cos of its radius (about 1 degree).
+const DISC: f32 = 0.000_15;
+
+/// The weather of one slide, seen through one view.
+#[derive(Debug, Clone)]
+pub(crate) struct Weather {
+    view: View,
+    /// Towards the sun, in the view's world frame (y towards the front).
+    sun: Vec3,
+    /// Whether any sight line of the frame comes within the glow's reach.
+    glows: bool,
+    /// The frame's middle column and its height, and the sky's horizon
+    /// line (rows), which the clouds are measured from.
+    middle: f32,
+    height: f32,
+    horizon_row: f32,
+    /// The sun's colour, and the glow's strength (1 for a sun on the
+    /// horizon, 0 for a high one).
+    light: Rgb,
+    glow: f32,
+    clouds: Option<CloudSheet>,
+    amount: f32,
+    /// Cloud lit by the sun (its edges) and in its own shade (its heart).
+    lit: Rgb,
+    shade: Rgb,
+}
+
+impl Weather {
+    /// The weather under `lighting` (its colours through `filter`, the
+    /// palette's), seen through `view` in a frame of size `frame` whose
+    /// sky reaches its horizon colour at row `horizon_row`; cloud covering
+    /// `amount` (0..=1) of the sky, drawn from `draw`. `None` for a view
+    /// without a camera.
+    pub(crate) fn new(
+        view: &View,
+        lighting: &Lighting,
+        filter: impl Fn(Rgb) -> Rgb,
+        (frame, horizon_row): (Vec2, f32),
+        amount: f32,
+        draw: u64,
+    ) -> Option<Self> {
+        let centre = view.sight(frame.x * 0.5, frame.y * 0.5)?;
+        // The palette's frame has y towards the back.
+        let sun = lighting.sun * Vec3::new(1.0, -1.0, 1.0);
+        let corners = [
+            (0.0, 0.0),
+            (frame.x, 0.0),
+            (0.0, frame.y),
+            (frame.x, frame.y),
+        ];
+        let spread = corners
+            .iter()
+            .filter_map(|&(x, y)| view.sight(x, y))
+            .map(|d| d.dot(centre))
+            .fold(1.0f32, f32::min);
+        // The frame's farthest corner from its centre, and the sun's
+        // distance from the centre, as angles.
+        let (reach, off) = (
+            spread.clamp(-1.0, 1.0).acos(),
+            sun.dot(centre).clamp(-1.0, 1.0).acos(),
+        );
+        let glows = off - reach < (1.0 - GLOW_REACH).acos();
+        // A high sun stands far above the frame: its glow is not seen.
+        let low = 1.0 - smoothstep(0.3, 0.6, sun.z);
+        let glows = glows && low > 0.0;
+        let white = mix(lighting.direct, [1.0; 3], 0.15);
+        let lit: Rgb = [0, 1, 2].map(|i| (0.8 * white[i] + 0.35 * lighting.horizon[i]).min(1.0));
+        let shade: Rgb = [0, 1, 2].map(|i| (lighting.ambient[i] + 0.3 * lighting.zenith[i]) * 1.15);
+        Some(Weather {
+            view: view.clone(),
+            sun,
+            glows,
+            middle: frame.x * 0.5,
+            height: frame.y.max(1.0),
+            horizon_row,
+            light: filter(lighting.direct),
+            glow: low,
+            clouds: (amount > 0.0).then(|| CloudSheet::new(amount, draw)),
+            amount,
+            lit: filter(lit),
+            shade: filter(shade),
+        })
+    }
+
+    /// Whether it shows nothing over the gradient: no cloud, no glow.
+    pub(crate) fn is_clear(&self) -> bool {
+        self.clouds.is_none() && !self.glows
+    }
+
+    /// The sky's `gradient` colour at screen point (`x`, `y`) with the
+    /// weather over it.
+    pub(crate) fn over(&self, gradient: Rgb, x: f32, y: f32) -> Rgb {
+        let away = match self.view.sight(x, y) {
+            Some(dir) => 1.0 - dir.dot(self.sun),
+            None => 2.0,
+        };
+        let mut c = gradient;
+        if self.glows && away < GLOW_REACH {
+            let wide = WIDE * ((GLOW_REACH - away) / GLOW_REACH).powi(2);
+            let g = self.glow * (0.6 * (-away / CORE).exp() + 0.25 * (-away / HALO).exp() + wide);
+            c = [0, 1, 2].map(|i| c[i] + self.light[i] * g);
+            if away < DISC {
+                c = mix(c, mix(self.light, [1.0; 3], 0.6), 0.9);
+            }
+        }
+        let Some(sheet) = &self.clouds else {
+            return c;
+        };
+        let up = (self.horizon_row - y) / self.height;
+        let cover = sheet.seen((x - self.middle) / self.height, up);
+        if cover.opacity <= 0.0 {
+            return c;
+        }
+        mix(c, self.cloud(cover, up, away), cover.opacity)
+    }
+
+    /// The colour of cloud `cover` seen `up` frame heights above the
+    /// horizon line, `away` (1 - cos) from the sun: darker in its heart and
+    /// the more of the sky is cloud, brighter towards the sun, warmed from
+    /// below near the horizon when the sun is low.
+    fn cloud(&self, cover: Cover, up: f32, away: f32) -> Rgb {
+        let heart = (0.3 + 0.45 * self.amount) * cover.thickness;
+        let mut c = mix(self.lit, self.shade, heart);
+        let silver = 0.35 * self.glow * (-away / 0.08).exp();
+        c = [0, 1, 2].map(|i| c[i] + self.light[i] * silver);
+        let below = (1.0 - smoothstep(0.0, 0.3, up)) * (1.0 - smoothstep(0.15, 0.5, self.sun.z));
+        mix(c, self.light, 0.45 * below)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::framing::tops::RowTops;
+    use crate::settings::{Sun, ViewKind};
+    use crate::terrain::Heightfield;
+
+    fn view() -> View {
+        let field = Heightfield::flat(5, 100.0);
+        let tops = RowTops::of(&field);
+        View::fitted(ViewKind::Vista, 33, 100.0, tops.rows(), 960, 540)
+    }
+
+    fn weather(sun: Sun, amount: f32) -> Weather {
+        let field = Heightfield::flat(5, 100.0);
+        let lighting = Lighting::new(sun, &field);
+        let frame = (Vec2::new(960.0, 540.0), 300.0);
+        Weather::new(&view(), &lighting, |c| c, frame, amount, 7).expect("a camera")
+    }
+
+    #[test]
+    fn a_clear_sky_under_a_high_sun_is_the_plain_gradient() {
+        assert!(weather(Sun::Midday, 0.0).is_clear());
+        assert!(!weather(Sun::Midday, 0.5).is_clear());
+    }
+
+    #[test]
+    fn a_low_sun_warms_its_side_of_the_sky() {
+        // The evening sun stands to the right of the view.
+        let w = weather(Sun::Evening, 0.0);
+        assert!(!w.is_clear());
+        let grey = [0.5; 3];
+        let (left, right) = (w.over(grey, 0.0, 100.0), w.over(grey, 959.0, 100.0));
+        assert!(right[0] > left[0] + 0.01, "{left:?} {right:?}");
+        assert!(
+            right[0] - right[2] > left[0] - left[2],
+            "warmer: {left:?} {right:?}"
+        );
+    }
+
+    #[test]
+    fn clouds_hang_above_the_horizon_line_only() {
+        let w = weather(Sun::Midday, 1.0);
+        let grey = [0.5; 3];
+        let changed = |y: f32| {
+            (0..96)
+                .filter(|&i| w.over(grey, i as f32 * 10.0, y) != grey)
+                .count()
+        };
+        assert_eq!(changed(310.0), 0, "below the horizon line");
+        assert!(changed(100.0) > 90, "overcast above it");
+    }
+}
