@@ -47,7 +47,7 @@ impl Run {
 /// edge is taken as it is (a straight sea horizon or a peak narrower than
 /// a pixel has no staircase to tell its height by).
 pub(crate) fn smooth(frame: &mut Frame, sky: &Sky, exact: &[Option<Edge>]) -> (Damage, Vec<u32>) {
-    let tops = land_tops(frame, sky);
+    let tops = land_tops(frame, sky, exact);
     let runs = runs_of(&tops, frame.height());
     let exact: Vec<Option<Edge>> = (0..tops.len())
         .map(|x| {
@@ -142,22 +142,43 @@ fn edge_in(middles: &[f32], level: &[bool], x: usize, at: f32) -> f32 {
 }
 
 /// The first row of each column that is not the sky (the height when the
-/// whole column is sky).
-fn land_tops(frame: &Frame, sky: &Sky) -> Vec<u32> {
+/// whole column is sky). Where the mesh's edge across a column is known
+/// (`exact`), the search starts just above it: no land is drawn higher
+/// (a pixel is land when its centre is covered), which its first pixel,
+/// checked to be the sky, confirms; elsewhere it starts at the top. A sky
+/// with weather costs a lot a pixel to tell.
+fn land_tops(frame: &Frame, sky: &Sky, exact: &[Option<Edge>]) -> Vec<u32> {
     let (w, h) = (frame.width() as usize, frame.height());
-    let mut tops = vec![h; w];
-    let mut open = w;
+    let pixels = frame.pixels();
     let mut cache = None;
-    for y in 0..h {
-        let row = &frame.pixels()[y as usize * w..][..w];
-        for (x, (&px, top)) in row.iter().zip(tops.iter_mut()).enumerate() {
-            if *top == h && !sky.shows(px, x as u32, y, &mut cache) {
-                *top = y;
-                open -= 1;
+    let mut shows =
+        |x: usize, y: u32| sky.shows(pixels[y as usize * w + x], x as u32, y, &mut cache);
+    let mut tops = vec![h; w];
+    let mut from_top = Vec::new();
+    for (x, top) in tops.iter_mut().enumerate() {
+        let above = exact.get(x).copied().flatten().map(|e| {
+            let least = e.samples.iter().fold(e.centre, |m, &s| m.min(s));
+            (least - 2.0).floor()
+        });
+        match above {
+            Some(y0) if y0 >= 0.0 && y0 < h as f32 && shows(x, y0 as u32) => {
+                *top = (y0 as u32 + 1..h).find(|&y| !shows(x, y)).unwrap_or(h);
             }
+            Some(y0) if y0 < 0.0 => *top = (0..h).find(|&y| !shows(x, y)).unwrap_or(h),
+            _ => from_top.push(x),
         }
+    }
+    // The rest row by row, as the plain sky's colours come a row at a time.
+    let mut open = from_top.len();
+    for y in 0..h {
         if open == 0 {
             break;
+        }
+        for &x in &from_top {
+            if tops[x] == h && !shows(x, y) {
+                tops[x] = y;
+                open -= 1;
+            }
         }
     }
     tops

@@ -67,9 +67,17 @@ impl Sky {
         // all rows).
         let below: [[u32; 4]; 4] = std::array::from_fn(|y| self.colours_at(1.0, y as u32));
         let end = canvas.all_written_from();
-        if self.weather.is_some() {
+        if let Some(w) = &self.weather {
+            let mut anchors = Vec::new();
             for y in clip.y0 as u32..end as u32 {
-                canvas.fill_with(y, x0, x1, |x| self.colour(x, y));
+                let g = self.gradient(y as f32 + 0.5);
+                let first = x0 / STEP;
+                anchors.clear();
+                anchors.extend((first..=(x1 - 1) / STEP + 1).map(|k| anchor(w, g, k, y)));
+                canvas.fill_with(y, x0, x1, |x| {
+                    let k = (x / STEP - first) as usize;
+                    between(anchors[k], anchors[k + 1], x, y)
+                });
             }
             return;
         }
@@ -92,12 +100,9 @@ impl Sky {
     pub(crate) fn colour(&self, x: u32, y: u32) -> u32 {
         match &self.weather {
             Some(w) => {
-                let c = w.over(
-                    self.gradient(y as f32 + 0.5),
-                    x as f32 + 0.5,
-                    y as f32 + 0.5,
-                );
-                dithered(c, x, y)
+                let g = self.gradient(y as f32 + 0.5);
+                let k = x / STEP;
+                between(anchor(w, g, k, y), anchor(w, g, k + 1, y), x, y)
             }
             None => self.row_colours(y)[(x & 3) as usize],
         }
@@ -164,10 +169,71 @@ impl Sky {
     }
 }
 
+/// Columns between the places where the weather is worked out in full;
+/// the pixels between are blended (glow and cloud change little over a few
+/// pixels, and the noise is most of a sky pixel's cost).
+const STEP: u32 = 4;
+
+/// The weather over gradient colour `g` at the centre of row `y`'s
+/// column `k * STEP`.
+#[inline]
+fn anchor(w: &Weather, g: Rgb, k: u32, y: u32) -> Rgb {
+    w.over(g, (k * STEP) as f32 + 0.5, y as f32 + 0.5)
+}
+
+/// Pixel (`x`, `y`), blended from the anchors `a` (its column rounded down
+/// to a multiple of [`STEP`]) and `b` (the next), dithered.
+#[inline]
+fn between(a: Rgb, b: Rgb, x: u32, y: u32) -> u32 {
+    let t = (x % STEP) as f32 * (1.0 / STEP as f32);
+    dithered([0, 1, 2].map(|i| a[i] + (b[i] - a[i]) * t), x, y)
+}
+
 /// A 0..=1 colour packed with pixel (`x`, `y`)'s step of the ordered
 /// dither, as the plain gradient is.
 fn dithered(c: Rgb, x: u32, y: u32) -> u32 {
     let d = (f32::from(BAYER[(y & 3) as usize][(x & 3) as usize]) + 0.5) / 16.0;
     let ch = |v: f32| ((v * 255.0 + d).max(0.0) as u32).min(255);
     ch(c[0]) << 16 | ch(c[1]) << 8 | ch(c[2])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::framing::tops::RowTops;
+    use crate::render::framing::view::View;
+    use crate::render::shade::light::Lighting;
+    use crate::settings::{Sun, ViewKind};
+    use crate::terrain::Heightfield;
+    use glam::Vec2;
+
+    #[test]
+    fn painted_weather_is_what_colour_says() {
+        let field = Heightfield::flat(5, 100.0);
+        let tops = RowTops::of(&field);
+        let view = View::fitted(ViewKind::Vista, 33, 100.0, tops.rows(), 150, 90);
+        let lighting = Lighting::new(Sun::Evening, &field);
+        let w = Weather::new(
+            &view,
+            &lighting,
+            |c| c,
+            (Vec2::new(150.0, 90.0), 60.0),
+            0.8,
+            3,
+        );
+        let sky = Sky::new(0x203060, 0xc0d0e0, 60.0).with_weather(w);
+        assert!(sky.weather().is_some());
+        let mut pixels = vec![0u32; 150 * 90];
+        let mut canvas = Canvas::new(&mut pixels, 150, 0);
+        sky.paint(&mut canvas);
+        for y in 0..90 {
+            for x in 0..150 {
+                assert_eq!(
+                    pixels[y * 150 + x],
+                    sky.colour(x as u32, y as u32),
+                    "({x}, {y})"
+                );
+            }
+        }
+    }
 }
