@@ -220,3 +220,39 @@ fn xwayland_fullscreen_draws_and_ends_on_a_key_and_on_the_first_click() {
     let said = saver.stderr();
     assert!(said.contains("ended by Button"), "{said}");
 }
+
+/// `--layer background` with seed 5 held for a long time, once the finished
+/// mountain is on the output exactly as `mountains render` makes it.
+fn finished_layer(sway: &Sway, what: &str) -> Client {
+    let expected = headless_render(W as u16, H as u16);
+    let args = [
+        "--layer",
+        "background",
+        "--set",
+        "seed=5",
+        "--set",
+        "pause_seconds=30",
+    ];
+    let mut saver = sway.mountains(&args);
+    let took = saver.poll(what, || sway.screenshot() == (W, H, expected.clone()));
+    eprintln!("{what}: on the output after {took:?}");
+    saver
+}
+
+#[test]
+fn wayland_layer_covers_the_output_with_the_rendered_mountain_and_ends_on_sigterm() {
+    let Some(sway) = Sway::start("layer", W, H, 1, false) else {
+        return;
+    };
+    let mut saver = finished_layer(&sway, "the finished mountain on the background layer");
+    // A layer surface, not a window: sway's tree has no window of it.
+    let tree = sway.tree();
+    assert!(!tree.contains("\"app_id\": \"mountains\""), "{tree}");
+    let asked = std::time::Instant::now();
+    saver.terminate();
+    saver.expect_exit("SIGTERM");
+    eprintln!("SIGTERM: ended after {:?}", asked.elapsed());
+    // Its own loop ended it, not the watcher's last resort (src/signals.rs).
+    let said = saver.stderr();
+    assert!(said.contains("ended by \"SIGTERM or SIGINT\""), "{said}");
+}

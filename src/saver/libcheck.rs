@@ -53,6 +53,13 @@ pub fn check_display(x_named: bool) -> Result<Backend, SaverError> {
     Ok(chosen)
 }
 
+/// `--layer`: the Wayland libraries, checked before the connection (which
+/// would say only that the library is missing, not where it comes from).
+#[cfg(unix)]
+pub fn check_wayland() -> Result<(), SaverError> {
+    check_libraries("Wayland", WAYLAND_LIBRARIES)
+}
+
 #[cfg(unix)]
 fn check_libraries(system: &'static str, libraries: &[(&str, &str)]) -> Result<(), SaverError> {
     match first_missing(libraries, can_dlopen) {

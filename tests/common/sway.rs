@@ -258,6 +258,27 @@ impl Sway {
         (w, h, pixels)
     }
 
+    /// One output (`HEADLESS-2`) as 0x00RRGGBB pixels, with its size, by grim.
+    pub fn screenshot_output(&self, output: &str) -> (u32, u32, Vec<u32>) {
+        let n = self.shots.get() + 1;
+        self.shots.set(n);
+        let path = self.runtime.join(format!("shot-{n}.png"));
+        self.run("grim", &["-o", output, path.to_str().unwrap()]);
+        let (w, h, _, pixels) = crate::headless::read_png(&path);
+        let _ = std::fs::remove_file(&path);
+        (w, h, pixels)
+    }
+
+    /// The names of the outputs sway has now (`HEADLESS-1`, ...).
+    pub fn outputs(&self) -> Vec<String> {
+        let json = self.run("swaymsg", &["-r", "-t", "get_outputs"]);
+        json.split("\"name\": \"")
+            .skip(1)
+            .filter_map(|rest| rest.split('"').next())
+            .map(str::to_string)
+            .collect()
+    }
+
     /// sway's tree of outputs and windows, as JSON text.
     pub fn tree(&self) -> String {
         self.run("swaymsg", &["-r", "-t", "get_tree"])
@@ -326,6 +347,13 @@ impl Client {
         let status =
             status.unwrap_or_else(|| panic!("{what} did not end mountains:\n{}", self.stderr()));
         assert!(status.success(), "{what}: {status}\n{}", self.stderr());
+    }
+
+    /// Sends it SIGTERM, as an idle daemon or swaylock-plugin ends it.
+    pub fn terminate(&self) {
+        let pid = self.child.as_ref().unwrap().id().to_string();
+        let status = Command::new("kill").args(["-TERM", &pid]).status();
+        assert!(status.is_ok_and(|s| s.success()), "kill -TERM {pid}");
     }
 
     /// Kills it with SIGKILL, as a crash would end it.
