@@ -229,6 +229,10 @@ impl LayerApp {
         // The first commit, without a buffer, asks for the first configure.
         surface.commit();
         let scale = self.scale_of(&output);
+        self.trace.note(&format!(
+            "a layer surface on output {}",
+            self.name_of(&output)
+        ));
         self.covered.push(Covered {
             drawing: None,
             surface,
@@ -237,6 +241,15 @@ impl LayerApp {
             scale,
             applied_scale: 1,
         });
+    }
+
+    /// The output's name for traces (`HEADLESS-2`), or its global's number.
+    fn name_of(&self, output: &WlOutput) -> String {
+        let info = self.outputs.info(output);
+        info.map_or_else(
+            || "?".into(),
+            |i| i.name.unwrap_or_else(|| format!("#{}", i.id)),
+        )
     }
 
     fn scale_of(&self, output: &WlOutput) -> i32 {
@@ -360,6 +373,12 @@ impl LayerShellHandler for LayerApp {
     fn closed(&mut self, _: &Connection, _: &QueueHandle<Self>, layer: &LayerSurface) {
         // One output's surface goes with its output; the compositor
         // closing the last one means the show is no longer wanted.
+        let closed = self.covered.iter().find(|c| c.surface == *layer);
+        if let Some(c) = closed {
+            let name = self.name_of(&c.output);
+            self.trace
+                .note(&format!("the compositor closed the surface on {name}"));
+        }
         self.covered.retain(|c| c.surface != *layer);
         if self.covered.is_empty() {
             self.end(&"the compositor closed the layer surface");
@@ -408,6 +427,8 @@ impl OutputHandler for LayerApp {
     }
 
     fn output_destroyed(&mut self, _: &Connection, _: &QueueHandle<Self>, output: WlOutput) {
+        let name = self.name_of(&output);
+        self.trace.note(&format!("output {name} is gone"));
         self.covered.retain(|c| c.output != output);
     }
 }
