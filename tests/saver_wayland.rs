@@ -1,6 +1,7 @@
 //! The window modes on a real Wayland compositor: a private headless sway
 //! (sway, grim, wtype; Xwayland for the X11 path). Each test starts its
-//! own compositor. Without the tools the tests fail, or skip with
+//! own compositor; common/wl_proxy.rs plays what sway 1.7 cannot (no
+//! layer shell, an output unplugged, surfaces closed). Without the tools the tests fail, or skip with
 //! MOUNTAINS_SKIP_MISSING=1; CI sets MOUNTAINS_REQUIRE_WAYLAND=1.
 #![cfg(target_os = "linux")]
 
@@ -12,10 +13,13 @@ mod sway;
 mod tools;
 #[path = "common/wl_pointer.rs"]
 mod wl_pointer;
+#[path = "common/wl_proxy.rs"]
+mod wl_proxy;
 
 use headless::headless_render;
 use sway::{Client, Sway};
 use wl_pointer::VirtualPointer;
+use wl_proxy::{Edit, WlProxy};
 
 const W: u32 = 640;
 const H: u32 = 480;
@@ -222,19 +226,31 @@ fn xwayland_fullscreen_draws_and_ends_on_a_key_and_on_the_first_click() {
 }
 
 /// `--layer background` with seed 5 held for a long time, once the finished
-/// mountain is on the output exactly as `mountains render` makes it.
+/// mountain is on the first output exactly as `mountains render` makes it.
 fn finished_layer(sway: &Sway, what: &str) -> Client {
+    finished_layer_via(sway, None, what)
+}
+
+/// The layer mode's arguments for seed 5, held for a long time.
+const LAYER_ARGS: [&str; 6] = [
+    "--layer",
+    "background",
+    "--set",
+    "seed=5",
+    "--set",
+    "pause_seconds=30",
+];
+
+/// [`finished_layer`] on a proxy's socket (`via`) or on sway's own.
+fn finished_layer_via(sway: &Sway, via: Option<&str>, what: &str) -> Client {
     let expected = headless_render(W as u16, H as u16);
-    let args = [
-        "--layer",
-        "background",
-        "--set",
-        "seed=5",
-        "--set",
-        "pause_seconds=30",
-    ];
-    let mut saver = sway.mountains(&args);
-    let took = saver.poll(what, || sway.screenshot() == (W, H, expected.clone()));
+    let mut saver = match via {
+        Some(socket) => sway.mountains_via(socket, &LAYER_ARGS),
+        None => sway.mountains(&LAYER_ARGS),
+    };
+    let took = saver.poll(what, || {
+        sway.screenshot_output("HEADLESS-1") == (W, H, expected.clone())
+    });
     eprintln!("{what}: on the output after {took:?}");
     saver
 }
@@ -301,4 +317,83 @@ fn wayland_layer_draws_an_output_added_while_it_runs() {
     // wayland_layer_drops_the_surface_of_an_output_taken_away.
     saver.assert_running();
     assert_eq!(sway.screenshot_output("HEADLESS-1"), (W, H, expected));
+}
+
+/// A proxy in front of `sway` on the socket `wayland-proxy`.
+fn proxy(sway: &Sway, edit: Edit) -> WlProxy {
+    WlProxy::start(
+        &sway.runtime_path("wayland-proxy"),
+        &sway.socket_path(),
+        edit,
+    )
+}
+
+#[test]
+fn wayland_layer_drops_the_surface_of_an_output_taken_away() {
+    let Some(sway) = Sway::start("layer-unplug", W, H, 1, false) else {
+        return;
+    };
+    let expected = headless_render(W as u16, H as u16);
+    let added = "HEADLESS-2";
+    sway.run(
+        "swaymsg",
+        &[
+            "output",
+            added,
+            "resolution",
+            "640x480",
+            "position",
+            "640",
+            "0",
+        ],
+    );
+    sway.run("swaymsg", &["create_output"]);
+    let proxy = proxy(&sway, Edit::Nothing);
+    let mut saver = finished_layer_via(&sway, Some("wayland-proxy"), "the first output drawn");
+    saver.poll("the second output drawn", || {
+        sway.screenshot_output(added) == (W, H, expected.clone())
+    });
+    // sway 1.7 cannot unplug a headless output: the proxy says it is gone.
+    assert!(proxy.remove_last_output() > 0, "no client knew an output");
+    saver.poll_said("output HEADLESS-2 is gone");
+    saver.poll("the removed output's surface gone", || {
+        sway.screenshot_output(added).2 != expected
+    });
+    saver.assert_running();
+    assert_eq!(sway.screenshot_output("HEADLESS-1"), (W, H, expected));
+}
+
+#[test]
+fn wayland_layer_ends_with_status_0_when_the_compositor_closes_its_surface() {
+    let Some(sway) = Sway::start("layer-closed", W, H, 1, false) else {
+        return;
+    };
+    let proxy = proxy(&sway, Edit::Nothing);
+    let mut saver = finished_layer_via(&sway, Some("wayland-proxy"), "the mountain via the proxy");
+    assert_eq!(proxy.close_layer_surfaces(), 1, "one output, one surface");
+    saver.expect_exit("the compositor closing the surface");
+    let said = saver.stderr();
+    assert!(
+        said.contains("ended by \"the compositor closed the layer surface\""),
+        "{said}"
+    );
+}
+
+#[test]
+fn wayland_layer_refuses_a_compositor_without_layer_shell_naming_it() {
+    let Some(sway) = Sway::start("layer-none", W, H, 1, false) else {
+        return;
+    };
+    let _proxy = proxy(&sway, Edit::HideLayerShell);
+    let mut saver = sway.mountains_via("wayland-proxy", &LAYER_ARGS);
+    let status = saver.wait(sway::PATIENCE);
+    let said = saver.stderr();
+    assert_eq!(status.and_then(|s| s.code()), Some(1), "{said}");
+    assert!(said.contains("has no zwlr_layer_shell_v1"), "{said}");
+    // The other modes need no layer shell: the same proxy passes a window.
+    let before = sway.screenshot().2;
+    let mut window = sway.mountains_via("wayland-proxy", &["--window"]);
+    window.poll("a window through the proxy", || {
+        changed(&before, &sway.screenshot().2) > 0.9
+    });
 }

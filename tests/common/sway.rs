@@ -193,6 +193,19 @@ impl Sway {
         self.spawn_mountains(args, None)
     }
 
+    /// Runs `mountains ARGS` natively on the Wayland socket `socket` of the
+    /// runtime folder (a proxy's, see common/wl_proxy.rs) instead of sway's.
+    pub fn mountains_via(&self, socket: &str, args: &[&str]) -> Client {
+        self.spawn_mountains_with(args, |c| {
+            c.env("WAYLAND_DISPLAY", socket);
+        })
+    }
+
+    /// A path in the runtime folder the clients share.
+    pub fn runtime_path(&self, name: &str) -> PathBuf {
+        self.runtime.join(name)
+    }
+
     /// Runs `mountains ARGS` through Xwayland (`DISPLAY` set, no `WAYLAND_DISPLAY`).
     pub fn mountains_on_xwayland(&self, args: &[&str]) -> Client {
         let display = self.xwayland_display();
@@ -200,6 +213,14 @@ impl Sway {
     }
 
     fn spawn_mountains(&self, args: &[&str], x_display: Option<&str>) -> Client {
+        self.spawn_mountains_with(args, |c| {
+            if let Some(display) = x_display {
+                c.env_remove("WAYLAND_DISPLAY").env("DISPLAY", display);
+            }
+        })
+    }
+
+    fn spawn_mountains_with(&self, args: &[&str], adjust: impl FnOnce(&mut Command)) -> Client {
         let n = self.shots.get() + 1;
         self.shots.set(n);
         let stderr = self.runtime.join(format!("mountains-{n}.txt"));
@@ -210,9 +231,7 @@ impl Sway {
             .stdin(Stdio::null())
             .stdout(Stdio::null())
             .stderr(std::fs::File::create(&stderr).unwrap());
-        if let Some(display) = x_display {
-            c.env_remove("WAYLAND_DISPLAY").env("DISPLAY", display);
-        }
+        adjust(&mut c);
         let child = signals::as_from_a_terminal(&mut c)
             .spawn()
             .expect("start mountains");
@@ -361,6 +380,15 @@ impl Client {
         let mut child = self.child.take().unwrap();
         let _ = child.kill();
         let _ = child.wait();
+    }
+
+    /// Polls until its stderr says `words` (while it runs, up to `PATIENCE`).
+    pub fn poll_said(&mut self, words: &str) -> Duration {
+        let stderr = self.stderr.clone();
+        let what = format!("saying `{words}`");
+        self.poll(&what, || {
+            std::fs::read_to_string(&stderr).is_ok_and(|t| t.contains(words))
+        })
     }
 
     /// Polls `check` while it runs until it holds or `PATIENCE` runs out.
