@@ -205,10 +205,7 @@ fn note_request(seen: &mut Seen, object: u32, opcode: u16, args: &[u8]) {
 /// The whole messages at the front of `pending` (taken out of it).
 fn take_messages(pending: &mut Vec<u8>) -> Vec<(u32, u16, Vec<u8>)> {
     let mut messages = Vec::new();
-    loop {
-        let (Some(object), Some(second)) = (word(pending, 0), word(pending, 4)) else {
-            break;
-        };
+    while let (Some(object), Some(second)) = (word(pending, 0), word(pending, 4)) {
         let size = (second >> 16) as usize;
         if size < 8 || pending.len() < size {
             break;
