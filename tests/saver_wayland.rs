@@ -284,6 +284,25 @@ fn wayland_layer_draws_a_scaled_output_at_its_real_pixels() {
 }
 
 #[test]
+fn wayland_layer_follows_a_scale_changed_while_it_runs() {
+    // The same 640x480 pixels at scale 2: the frame stays, the compositor
+    // must be told the new buffer scale with it.
+    let Some(sway) = Sway::start("layer-rescaled", W, H, 1, false) else {
+        return;
+    };
+    let expected = headless_render(W as u16, H as u16);
+    let mut saver = finished_layer(&sway, "the mountain at scale 1");
+    sway.run("swaymsg", &["output", "HEADLESS-1", "scale", "2"]);
+    saver.poll("the same mountain at scale 2", || {
+        sway.screenshot_output("HEADLESS-1") == (W, H, expected.clone())
+    });
+    // Not only the old picture before the change arrived: still so later.
+    std::thread::sleep(std::time::Duration::from_millis(500));
+    assert_eq!(sway.screenshot_output("HEADLESS-1"), (W, H, expected));
+    saver.assert_running();
+}
+
+#[test]
 fn wayland_layer_draws_an_output_added_while_it_runs() {
     let Some(sway) = Sway::start("layer-outputs", W, H, 1, false) else {
         return;
@@ -396,4 +415,21 @@ fn wayland_layer_refuses_a_compositor_without_layer_shell_naming_it() {
     window.poll("a window through the proxy", || {
         changed(&before, &sway.screenshot().2) > 0.9
     });
+}
+
+#[test]
+fn wayland_layer_draws_a_fractionally_scaled_output_at_its_real_pixels() {
+    // 960x480 pixels at scale 1.5: 640x320 in sway's units, which sway 1.7
+    // tells as scale 2 (1280x640 pixels, shrunk: a quarter of the pixels
+    // right); through a viewport, the output's own 960x480.
+    let Some(sway) = Sway::start("layer-fractional", 960, H, 1, false) else {
+        return;
+    };
+    sway.run("swaymsg", &["output", "HEADLESS-1", "scale", "1.5"]);
+    let expected = headless_render(960, H as u16);
+    let mut saver = sway.mountains(&LAYER_ARGS);
+    let took = saver.poll("the 960x480 mountain on the scale-1.5 output", || {
+        sway.screenshot_output("HEADLESS-1") == (960, H, expected.clone())
+    });
+    eprintln!("scale 1.5: on the output after {took:?}");
 }

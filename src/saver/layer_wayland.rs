@@ -3,11 +3,13 @@
 //! its lock. Each surface is anchored on all four edges, overlaps panels
 //! (exclusive zone -1), takes no keyboard, and is drawn at the output's real
 //! pixels (its logical size times the output's scale, with that buffer
-//! scale). The shows and the presenting are the winit windows' own
+//! scale; at a fractional scale the output's mode, through a viewport).
+//! The shows and the presenting are the winit windows' own
 //! (`show`, `present`, through a raw handle: `target_wayland`).
 //!
 //! It runs until SIGTERM or SIGINT, or until the compositor has closed every
 //! surface; outputs that come and go while it runs gain and lose a surface.
+//! How a buffer covers its output (buffer scale or viewport): `cover_wayland`.
 
 use std::time::{Duration, Instant};
 
@@ -29,6 +31,11 @@ use sctk::shell::wlr_layer::{
 };
 use sctk::{delegate_compositor, delegate_layer, delegate_output, delegate_registry};
 
+use sctk::reexports::client::delegate_noop;
+use sctk::reexports::protocols::wp::viewporter::client::wp_viewport::WpViewport;
+use sctk::reexports::protocols::wp::viewporter::client::wp_viewporter::WpViewporter;
+
+use super::cover_wayland::{self, Cover};
 use super::error::SaverError;
 use super::present::Presenter;
 use super::show::Show;
@@ -105,29 +112,6 @@ fn no_layer_shell() -> SaverError {
     ))
 }
 
-/// The buffer size in pixels for a surface of `logical` size (in the
-/// compositor's units) on an output of integer `scale`.
-pub fn pixel_size(logical: (u32, u32), scale: i32) -> (u32, u32) {
-    let scale = scale.max(1).unsigned_abs();
-    (
-        logical.0.saturating_mul(scale),
-        logical.1.saturating_mul(scale),
-    )
-}
-
-/// The size of an output in the compositor's units from its mode (its
-/// pixels), turned by `transform` and divided by `scale`: for a configure
-/// that leaves the size to the client.
-fn logical_of_mode(mode: (i32, i32), transform: Transform, scale: i32) -> (u32, u32) {
-    let turned = matches!(
-        transform,
-        Transform::_90 | Transform::_270 | Transform::Flipped90 | Transform::Flipped270
-    );
-    let (w, h) = if turned { (mode.1, mode.0) } else { mode };
-    let scale = scale.max(1);
-    ((w / scale).max(0) as u32, (h / scale).max(0) as u32)
-}
-
 fn other(what: &str, e: impl std::fmt::Display) -> SaverError {
     SaverError::Other(format!("{what}: {e}"))
 }
@@ -140,12 +124,22 @@ struct Covered {
     drawing: Option<Drawing>,
     surface: LayerSurface,
     output: WlOutput,
+    /// The surface's viewport, where the compositor has viewports.
+    viewport: Option<WpViewport>,
     /// The size the compositor gave, in its units (0: not configured yet).
     logical: (u32, u32),
-    /// The output's scale: buffer pixels per unit.
-    scale: i32,
-    /// The buffer scale last set on the surface.
-    applied_scale: i32,
+    /// How the buffer covers the output now.
+    cover: Cover,
+    /// The cover last told to the compositor (with a frame of its size).
+    applied: Option<Cover>,
+}
+
+impl Drop for Covered {
+    fn drop(&mut self) {
+        if let Some(viewport) = self.viewport.take() {
+            viewport.destroy();
+        }
+    }
 }
 
 /// A show and what presents it.
@@ -160,6 +154,7 @@ struct LayerApp {
     outputs: OutputState,
     compositor: CompositorState,
     shell: LayerShell,
+    viewporter: Option<WpViewporter>,
     layer: ShellLayer,
     /// The `wl_display` pointer softbuffer's connection shares.
     display: *mut std::ffi::c_void,
@@ -188,6 +183,9 @@ impl LayerApp {
             outputs: OutputState::new(globals, qh),
             compositor,
             shell,
+            // Only for fractional scales: without it they are drawn at the
+            // integer scale above and shrunk.
+            viewporter: globals.bind(qh, 1..=1, ()).ok(),
             layer: shell_layer(layer),
             display: conn.backend().display_ptr().cast(),
             settings,
@@ -228,7 +226,10 @@ impl LayerApp {
         surface.set_size(0, 0);
         // The first commit, without a buffer, asks for the first configure.
         surface.commit();
-        let scale = self.scale_of(&output);
+        let viewport = self
+            .viewporter
+            .as_ref()
+            .map(|v| v.get_viewport(surface.wl_surface(), qh, ()));
         self.trace.note(&format!(
             "a layer surface on output {}",
             self.name_of(&output)
@@ -237,9 +238,13 @@ impl LayerApp {
             drawing: None,
             surface,
             output,
+            viewport,
             logical: (0, 0),
-            scale,
-            applied_scale: 1,
+            cover: Cover::Scaled {
+                size: (0, 0),
+                scale: 1,
+            },
+            applied: None,
         });
     }
 
@@ -252,10 +257,22 @@ impl LayerApp {
         )
     }
 
-    fn scale_of(&self, output: &WlOutput) -> i32 {
-        self.outputs
-            .info(output)
-            .map_or(1, |i| i.scale_factor.max(1))
+    /// How surface `i`'s buffer covers its output, from what the output
+    /// says now.
+    fn cover_of(&self, i: usize) -> Cover {
+        let c = &self.covered[i];
+        let Some(info) = self.outputs.info(&c.output) else {
+            return cover_wayland::cover(c.logical, 1, None, false);
+        };
+        let mode = info.modes.iter().find(|m| m.current);
+        let mode =
+            mode.map(|m| cover_wayland::turned(m.dimensions, quarter_turned(info.transform)));
+        cover_wayland::cover(
+            c.logical,
+            info.scale_factor,
+            mode,
+            self.viewporter.is_some(),
+        )
     }
 
     /// The compositor's units the output spans, for a configure of size 0.
@@ -268,21 +285,32 @@ impl LayerApp {
         }
         let mode = info.modes.iter().find(|m| m.current);
         mode.map_or((0, 0), |m| {
-            logical_of_mode(m.dimensions, info.transform, info.scale_factor)
+            let turned = cover_wayland::turned(m.dimensions, quarter_turned(info.transform));
+            cover_wayland::logical_of(turned, info.scale_factor)
         })
     }
 
     /// Fits surface `i`'s show to its size in pixels, starting it at the
     /// first configure; presents what changed.
     fn fit(&mut self, i: usize) {
-        let c = &self.covered[i];
-        let size = pixel_size(c.logical, c.scale);
+        let cover = self.cover_of(i);
+        self.covered[i].cover = cover;
+        let size = cover.size();
         if size.0 == 0 || size.1 == 0 {
             return;
         }
         let now = Instant::now();
+        let told = self.covered[i].applied == Some(cover);
         let damage = match &mut self.covered[i].drawing {
-            Some(d) if d.show.size() == size => return,
+            // Same pixels, told otherwise (scale 1 to 2 on one output):
+            // the frame again, with the new cover.
+            Some(d) if d.show.size() == size && told => return,
+            Some(d) if d.show.size() == size => d
+                .show
+                .frame()
+                .map(|f| f.bounds())
+                .unwrap_or_default()
+                .into(),
             Some(d) => d.show.resize(size, now).into(),
             None => match self.start_drawing(i, size, now) {
                 Ok(bounds) => bounds,
@@ -321,9 +349,10 @@ impl LayerApp {
         Ok(bounds.into())
     }
 
-    /// Puts the `damage` part of surface `i`'s frame on it, with the buffer
-    /// scale that makes the frame cover the surface (a frame of the old
-    /// size keeps the old scale until its redraw at the new one is done).
+    /// Puts the `damage` part of surface `i`'s frame on it, telling the
+    /// compositor how the buffer covers the surface once the frame has the
+    /// cover's size (a frame of the old size keeps the old cover until its
+    /// redraw at the new one is done).
     fn present(&mut self, i: usize, damage: Damage) {
         let c = &mut self.covered[i];
         let Some(d) = c.drawing.as_mut() else {
@@ -332,10 +361,10 @@ impl LayerApp {
         let Some(frame) = d.show.frame().filter(|_| !damage.is_empty()) else {
             return;
         };
-        let fits = pixel_size(c.logical, c.scale) == (frame.width(), frame.height());
-        if fits && c.applied_scale != c.scale {
-            c.surface.wl_surface().set_buffer_scale(c.scale);
-            c.applied_scale = c.scale;
+        let fits = c.cover.size() == (frame.width(), frame.height());
+        if fits && c.applied != Some(c.cover) {
+            apply(&c.surface, c.viewport.as_ref(), c.cover);
+            c.applied = Some(c.cover);
         }
         match d.presenter.present(frame, &damage) {
             Ok(()) => self.trace.presented(),
@@ -357,6 +386,35 @@ impl LayerApp {
         let wake = shows.filter_map(|d| d.show.wake_at(now)).min()?;
         Some(wake.saturating_duration_since(Instant::now()))
     }
+}
+
+/// Tells the compositor how the next buffer covers `surface` (applied
+/// with the buffer, at softbuffer's commit).
+fn apply(surface: &LayerSurface, viewport: Option<&WpViewport>, cover: Cover) {
+    let wl_surface = surface.wl_surface();
+    match cover {
+        Cover::Scaled { scale, .. } => {
+            if let Some(v) = viewport {
+                v.set_destination(-1, -1);
+            }
+            wl_surface.set_buffer_scale(scale);
+        }
+        Cover::Viewport { logical, .. } => {
+            wl_surface.set_buffer_scale(1);
+            if let Some(v) = viewport {
+                let side = |n: u32| i32::try_from(n).unwrap_or(i32::MAX);
+                v.set_destination(side(logical.0), side(logical.1));
+            }
+        }
+    }
+}
+
+/// True when the output is turned a quarter (its mode's sides swap).
+fn quarter_turned(transform: Transform) -> bool {
+    matches!(
+        transform,
+        Transform::_90 | Transform::_270 | Transform::Flipped90 | Transform::Flipped270
+    )
 }
 
 /// sctk's name for `layer`.
@@ -417,11 +475,11 @@ impl OutputHandler for LayerApp {
     }
 
     fn update_output(&mut self, _: &Connection, _: &QueueHandle<Self>, output: WlOutput) {
-        let scale = self.scale_of(&output);
+        // A new scale or mode: the compositor's configure may follow, or
+        // not (the logical size can stay).
         if let Some(i) = self.covered.iter().position(|c| c.output == output)
-            && self.covered[i].scale != scale
+            && self.cover_of(i) != self.covered[i].cover
         {
-            self.covered[i].scale = scale;
             self.fit(i);
         }
     }
@@ -485,6 +543,8 @@ delegate_compositor!(LayerApp);
 delegate_output!(LayerApp);
 delegate_layer!(LayerApp);
 delegate_registry!(LayerApp);
+delegate_noop!(LayerApp: ignore WpViewporter);
+delegate_noop!(LayerApp: ignore WpViewport);
 
 #[cfg(test)]
 mod tests {
@@ -510,24 +570,5 @@ mod tests {
         let no_compositor: Vec<&str> = SWAY[1..].to_vec();
         let said = check_globals(&no_compositor).unwrap_err().to_string();
         assert!(said.contains("wl_compositor"), "{said}");
-    }
-
-    #[test]
-    fn a_scaled_output_gets_its_real_pixels() {
-        assert_eq!(pixel_size((320, 240), 2), (640, 480));
-        assert_eq!(pixel_size((640, 480), 1), (640, 480));
-        assert_eq!(
-            pixel_size((640, 480), 0),
-            (640, 480),
-            "a bad scale counts as 1"
-        );
-    }
-
-    #[test]
-    fn a_turned_output_swaps_its_sides() {
-        let mode = (1920, 1080);
-        assert_eq!(logical_of_mode(mode, Transform::Normal, 2), (960, 540));
-        assert_eq!(logical_of_mode(mode, Transform::_90, 1), (1080, 1920));
-        assert_eq!(logical_of_mode(mode, Transform::Flipped270, 2), (540, 960));
     }
 }

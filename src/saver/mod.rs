@@ -17,7 +17,8 @@
 //! X11 or Wayland, `buffer_history` tells `present` what each buffer lacks,
 //! `single` keeps a second `/s` off a display that has one. `layer_wayland`
 //! runs the shows on wlr-layer-shell surfaces (`--layer`), presenting
-//! through `target_wayland`'s raw handles.
+//! through `target_wayland`'s raw handles, each buffer covering its output
+//! as `cover_wayland` reckons.
 
 pub mod actions;
 pub mod app;
@@ -26,6 +27,8 @@ pub mod backend;
 #[cfg(unix)]
 pub mod bands_x11;
 mod buffer_history;
+#[cfg(target_os = "linux")]
+mod cover_wayland;
 #[cfg(windows)]
 pub mod embed_win32;
 #[cfg(unix)]
