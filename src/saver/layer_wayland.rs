@@ -57,7 +57,7 @@ const NAMESPACE: &str = "mountains";
 /// Runs the slide show on `layer` of every output until it ends.
 pub fn run(layer: Layer, settings: Settings, opened: Option<Mountain>) -> Result<(), SaverError> {
     super::libcheck::check_wayland()?;
-    let conn = Connection::connect_to_env().map_err(|e| SaverError::NoCompositor(e.to_string()))?;
+    let conn = Connection::connect_to_env().map_err(not_connected)?;
     let (globals, queue) =
         registry_queue_init(&conn).map_err(|e| SaverError::NoCompositor(e.to_string()))?;
     let names: Vec<String> = globals
@@ -110,6 +110,17 @@ fn no_layer_shell() -> SaverError {
          use a compositor that offers it (sway, Hyprland, river, labwc, KDE Plasma; not GNOME), \
          or mountains /s"
     ))
+}
+
+/// Why there is no connection, naming the variable to set or the
+/// compositor that did not answer.
+fn not_connected(e: impl std::fmt::Display) -> SaverError {
+    let var = |name: &str| std::env::var(name).ok().filter(|v| !v.is_empty());
+    SaverError::NoCompositor(match (var("WAYLAND_DISPLAY"), var("WAYLAND_SOCKET")) {
+        (Some(display), _) => format!("cannot connect to {display} (WAYLAND_DISPLAY): {e}"),
+        (None, Some(_)) => format!("cannot use WAYLAND_SOCKET: {e}"),
+        (None, None) => "--layer draws on Wayland; set WAYLAND_DISPLAY (it is not set)".into(),
+    })
 }
 
 fn other(what: &str, e: impl std::fmt::Display) -> SaverError {
