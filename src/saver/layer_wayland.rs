@@ -22,7 +22,9 @@ use sctk::reexports::calloop_wayland_source::WaylandSource;
 use sctk::reexports::client::globals::{GlobalList, registry_queue_init};
 use sctk::reexports::client::protocol::wl_output::{Transform, WlOutput};
 use sctk::reexports::client::protocol::wl_surface::WlSurface;
-use sctk::reexports::client::{Connection, Proxy, QueueHandle};
+use sctk::reexports::client::{Connection, Proxy, QueueHandle, delegate_noop};
+use sctk::reexports::protocols::wp::viewporter::client::wp_viewport::WpViewport;
+use sctk::reexports::protocols::wp::viewporter::client::wp_viewporter::WpViewporter;
 use sctk::registry::{ProvidesRegistryState, RegistryState};
 use sctk::shell::WaylandSurface;
 use sctk::shell::wlr_layer::{
@@ -30,10 +32,6 @@ use sctk::shell::wlr_layer::{
     LayerSurface, LayerSurfaceConfigure,
 };
 use sctk::{delegate_compositor, delegate_layer, delegate_output, delegate_registry};
-
-use sctk::reexports::client::delegate_noop;
-use sctk::reexports::protocols::wp::viewporter::client::wp_viewport::WpViewport;
-use sctk::reexports::protocols::wp::viewporter::client::wp_viewporter::WpViewporter;
 
 use super::cover_wayland::{self, Cover};
 use super::error::SaverError;
@@ -50,13 +48,13 @@ use crate::settings::Settings;
 /// The protocol `--layer` needs, as a compositor lists it.
 pub const LAYER_SHELL: &str = "zwlr_layer_shell_v1";
 
-/// The layer surfaces' namespace (what `swaymsg -t get_outputs` and
-/// compositor rules see).
+/// The layer surfaces' namespace: what compositors' rules match (Hyprland's
+/// `layerrule`, for one).
 const NAMESPACE: &str = "mountains";
 
 /// Runs the slide show on `layer` of every output until it ends.
 pub fn run(layer: Layer, settings: Settings, opened: Option<Mountain>) -> Result<(), SaverError> {
-    super::libcheck::check_wayland()?;
+    super::libcheck::check_wayland_client()?;
     let conn = Connection::connect_to_env().map_err(not_connected)?;
     let (globals, queue) =
         registry_queue_init(&conn).map_err(|e| SaverError::NoCompositor(e.to_string()))?;
@@ -208,11 +206,13 @@ impl LayerApp {
         })
     }
 
+    /// Ends the loop with status 0, tracing `why`.
     fn end(&mut self, why: &dyn std::fmt::Debug) {
         self.trace.ended_by(why);
         self.ended = true;
     }
 
+    /// Ends the loop with `error` (the first one, if several come).
     fn fail(&mut self, error: SaverError) {
         self.error.get_or_insert(error);
         self.ended = true;
