@@ -383,14 +383,38 @@ fn wayland_layer_drops_the_surface_of_an_output_taken_away() {
 }
 
 #[test]
-fn wayland_layer_ends_with_status_0_when_the_compositor_closes_its_surface() {
+fn wayland_layer_ends_with_status_0_when_the_compositor_closes_its_last_surface() {
     let Some(sway) = Sway::start("layer-closed", W, H, 1, false) else {
         return;
     };
+    let expected = headless_render(W as u16, H as u16);
+    sway.run(
+        "swaymsg",
+        &[
+            "output",
+            "HEADLESS-2",
+            "resolution",
+            "640x480",
+            "position",
+            "640",
+            "0",
+        ],
+    );
+    sway.run("swaymsg", &["create_output"]);
     let proxy = proxy(&sway, Edit::Nothing);
     let mut saver = finished_layer_via(&sway, Some("wayland-proxy"), "the mountain via the proxy");
-    assert_eq!(proxy.close_layer_surfaces(), 1, "one output, one surface");
-    saver.expect_exit("the compositor closing the surface");
+    saver.poll("the second output drawn", || {
+        sway.screenshot_output("HEADLESS-2") == (W, H, expected.clone())
+    });
+    // One surface closed: the other output's show goes on.
+    assert_eq!(proxy.close_layer_surfaces(1), 1);
+    saver.poll_said("the compositor closed the surface on HEADLESS-1");
+    std::thread::sleep(std::time::Duration::from_millis(300));
+    saver.assert_running();
+    assert_eq!(sway.screenshot_output("HEADLESS-2"), (W, H, expected));
+    // The last one closed: the show is no longer wanted.
+    assert_eq!(proxy.close_layer_surfaces(1), 1);
+    saver.expect_exit("the compositor closing the last surface");
     let said = saver.stderr();
     assert!(
         said.contains("ended by \"the compositor closed the layer surface\""),

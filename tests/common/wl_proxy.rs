@@ -98,13 +98,15 @@ impl WlProxy {
         told
     }
 
-    /// Closes every layer surface of every client, as a compositor does
-    /// when it wants them gone; how many were closed.
-    pub fn close_layer_surfaces(&self) -> usize {
+    /// Closes up to `count` layer surfaces not closed yet (in the order
+    /// they were made), as a compositor does when it wants them gone; how
+    /// many were closed.
+    pub fn close_layer_surfaces(&self, count: usize) -> usize {
         let mut closed = 0;
         for link in self.clients.lock().unwrap().iter() {
-            let surfaces = link.seen.lock().unwrap().surfaces.clone();
-            for id in surfaces {
+            let mut seen = link.seen.lock().unwrap();
+            while closed < count && !seen.surfaces.is_empty() {
+                let id = seen.surfaces.remove(0);
                 link.send(id, 1, &[]);
                 closed += 1;
             }
