@@ -279,3 +279,14 @@ fn layer_takes_the_four_layer_names() {
     let e = parse(&["--layr", "top"]).unwrap_err().0;
     assert!(e.contains("--layer"), "{e}");
 }
+
+/// `--help` and the man page name every layer `--layer` takes (the names
+/// live in `cli::Layer::NAMES`).
+#[test]
+fn help_and_man_page_name_every_layer() {
+    let man = mountains::contrib::man_page::man_page();
+    for (name, _) in mountains::cli::Layer::NAMES {
+        assert!(mountains::help::USAGE.contains(name), "--help lacks {name}");
+        assert!(man.contains(name), "the man page lacks {name}");
+    }
+}
