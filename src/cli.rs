@@ -33,6 +33,9 @@ pub enum Mode {
     XWindowId(u64),
     /// `--window` (and no argument outside Windows): a normal resizable window.
     Window,
+    /// `--layer NAME`: a wlr-layer-shell surface on every Wayland output
+    /// (a desktop background, or swaylock-plugin's lock-screen background).
+    Layer(Layer),
     /// `render -o FILE`: one complete mountain to a PNG.
     Render {
         /// Frame size in pixels.
@@ -57,6 +60,37 @@ pub enum Mode {
     XscreensaverXml,
     /// `--man-page`: print the man page.
     ManPage,
+}
+
+/// The wlr-layer-shell layer `--layer` puts its surfaces on, bottom to top.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Layer {
+    /// Under everything: a wallpaper, or swaylock-plugin's background.
+    Background,
+    /// Above the background, under windows.
+    Bottom,
+    /// Above windows, under full-screen ones.
+    Top,
+    /// Above everything, full-screen windows included.
+    Overlay,
+}
+
+impl Layer {
+    /// Each layer with the name `--layer` takes for it, bottom to top.
+    pub const NAMES: [(&'static str, Layer); 4] = [
+        ("background", Layer::Background),
+        ("bottom", Layer::Bottom),
+        ("top", Layer::Top),
+        ("overlay", Layer::Overlay),
+    ];
+
+    /// The layer named `name` (as `--layer` takes it), if any.
+    pub fn named(name: &str) -> Option<Layer> {
+        Self::NAMES
+            .iter()
+            .find(|(n, _)| n.eq_ignore_ascii_case(name.trim()))
+            .map(|&(_, l)| l)
+    }
 }
 
 /// A parsed command line: the mode plus the options every mode shares.
@@ -272,6 +306,13 @@ impl Parser<'_> {
             "--size" => *size = Some(parse_size(&take(self, "--size")?.to_string_lossy())?),
             "--root" => return Ok(Some(Mode::XRoot)),
             "--window" => return Ok(Some(Mode::Window)),
+            "--layer" => {
+                let name = match inline {
+                    Some(v) => v,
+                    None => self.value_str(arg)?,
+                };
+                return Ok(Some(Mode::Layer(layer_named(arg, &name)?)));
+            }
             "--window-id" => {
                 let id = if let Some(v) = inline {
                     v
@@ -380,8 +421,8 @@ impl Parser<'_> {
 /// long flags; everything else is returned as it was.
 fn long_name(arg: &str) -> String {
     match arg {
-        "-root" | "-window" | "-window-id" | "-settings" | "-config" | "-set" | "-open"
-        | "-size" | "-xscreensaver-xml" | "-man-page" => format!("-{arg}"),
+        "-root" | "-window" | "-window-id" | "-layer" | "-settings" | "-config" | "-set"
+        | "-open" | "-size" | "-xscreensaver-xml" | "-man-page" => format!("-{arg}"),
         _ => arg.to_string(),
     }
 }
@@ -392,7 +433,7 @@ const WORDS: [&str; 2] = ["render", "heightmap"];
 /// The flags `Parser::option` takes besides the keys' own, without their
 /// dashes (each also works with two): the names a mistyped flag is
 /// compared with.
-const FLAGS: [&str; 20] = [
+const FLAGS: [&str; 21] = [
     "config",
     "open",
     "set",
@@ -401,6 +442,7 @@ const FLAGS: [&str; 20] = [
     "root",
     "window",
     "window-id",
+    "layer",
     "settings",
     "help",
     "version",
@@ -439,6 +481,18 @@ fn unknown_argument(arg: &str) -> UsageError {
         crate::quote::clipped(arg),
         crate::spelling::offer(nearest.as_deref())
     ))
+}
+
+/// `--layer NAME`: one of [`Layer::NAMES`], or a message listing them.
+fn layer_named(flag: &str, name: &str) -> Result<Layer, UsageError> {
+    Layer::named(name).ok_or_else(|| {
+        let names: Vec<&str> = Layer::NAMES.iter().map(|(n, _)| *n).collect();
+        UsageError(format!(
+            "{flag} {}: expected one of {}",
+            crate::quote::clipped(name),
+            names.join(", ")
+        ))
+    })
 }
 
 /// An X window id for `flag`: a handle that fits X's 32 bits.

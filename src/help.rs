@@ -43,6 +43,7 @@ Usage:
   mountains /c[:HWND] | --settings     the settings
   mountains --root                     xscreensaver: draw on $XSCREENSAVER_WINDOW or the root
   mountains --window-id ID             xscreensaver preview: draw into window ID (0x.. or decimal)
+  mountains --layer LAYER              Wayland: every output's background, bottom, top or overlay layer
   mountains render -o OUT.png [--size WxH] [OPTIONS]   one mountain to a PNG (.jpg: JPEG)
   mountains heightmap -o OUT.png [OPTIONS]             generate and save a data set (.r16: raw)
   mountains --check-config [FILE]      check a preferences file; exit 0 if good, 1 if not
@@ -66,4 +67,8 @@ Windows flags take / or -, any case: /s -S /p:1234 /c:1234.
 xscreensaver flags take one or two dashes: -root --root -window-id --window-id;
 -root with -window-id (either order) draws into the window, as the settings
 dialog's preview asks.
+--layer needs a compositor with wlr-layer-shell (sway, Hyprland, river, KDE
+Plasma; not GNOME): `--layer background` is a wallpaper, and the background
+under swaylock-plugin's lock (swaylock-plugin --command 'mountains --layer
+background'); it ends on SIGTERM or SIGINT, not on input.
 ";

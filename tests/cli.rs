@@ -256,3 +256,37 @@ fn xscreensavers_common_options_mean_what_they_mean_there() {
     assert!(e.contains("-delay soon"), "{e}");
     assert!(parse(&["--window", "--root"]).is_err());
 }
+
+/// `--layer NAME`: the four wlr-layer-shell layers by name, one or two
+/// dashes, `=` or a separate value; anything else is refused naming them.
+#[test]
+fn layer_takes_the_four_layer_names() {
+    use mountains::cli::Layer;
+    assert_eq!(
+        mode(&["--layer", "background"]),
+        Mode::Layer(Layer::Background)
+    );
+    assert_eq!(mode(&["-layer", "bottom"]), Mode::Layer(Layer::Bottom));
+    assert_eq!(mode(&["--layer=top"]), Mode::Layer(Layer::Top));
+    assert_eq!(mode(&["--layer", "Overlay"]), Mode::Layer(Layer::Overlay));
+    let e = parse(&["--layer", "wallpaper"]).unwrap_err().0;
+    assert!(e.contains("--layer wallpaper"), "{e}");
+    assert!(e.contains("background, bottom, top, overlay"), "{e}");
+    let e = parse(&["--layer"]).unwrap_err().0;
+    assert!(e.contains("--layer needs a value"), "{e}");
+    let e = parse(&["/s", "--layer", "top"]).unwrap_err().0;
+    assert!(e.contains("choose one mode"), "{e}");
+    let e = parse(&["--layr", "top"]).unwrap_err().0;
+    assert!(e.contains("--layer"), "{e}");
+}
+
+/// `--help` and the man page name every layer `--layer` takes (the names
+/// live in `cli::Layer::NAMES`).
+#[test]
+fn help_and_man_page_name_every_layer() {
+    let man = mountains::contrib::man_page::man_page();
+    for (name, _) in mountains::cli::Layer::NAMES {
+        assert!(mountains::help::USAGE.contains(name), "--help lacks {name}");
+        assert!(man.contains(name), "the man page lacks {name}");
+    }
+}

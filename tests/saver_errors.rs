@@ -15,6 +15,9 @@ use xvfb::{PATIENCE, Saver, Xvfb};
 #[test]
 fn without_display_the_saver_and_the_settings_say_set_display() {
     let winit = "no display: set WAYLAND_DISPLAY (Wayland) or DISPLAY (X11); neither is set";
+    let layer =
+        "no Wayland compositor: --layer draws on Wayland; set WAYLAND_DISPLAY (it is not set)";
+    let only_linux = cfg!(target_os = "linux").then_some((&["--layer", "background"][..], layer));
     for (mode, said) in [
         (&["/s"][..], winit),
         (&["--window"], winit),
@@ -24,7 +27,10 @@ fn without_display_the_saver_and_the_settings_say_set_display() {
             "no X display: set DISPLAY (it is not set)",
         ),
         (&["--settings"], winit),
-    ] {
+    ]
+    .into_iter()
+    .chain(only_linux)
+    {
         let home = xvfb::TempDir::new("no-display");
         let out = Command::new(env!("CARGO_BIN_EXE_mountains"))
             .args(mode)

@@ -49,7 +49,7 @@ const HEAD: &str = r#".TH MOUNTAINS 6 "2026" "mountains" "XScreenSaver"
 mountains \- fractal mountains drawn strip by strip, as a slide show
 .SH SYNOPSIS
 .B mountains
-[\-root | \-window\-id \fIid\fP | \-\-window | /s | /p [\fIhwnd\fP] | \-\-settings]
+[\-root | \-window\-id \fIid\fP | \-\-window | \-\-layer \fIlayer\fP | /s | /p [\fIhwnd\fP] | \-\-settings]
 [\-\-config \fIfile\fP] [\-\-set \fIkey\fP=\fIvalue\fP] [\-\fIkey\fP \fIvalue\fP]
 [\-\-open \fIfile.png\fP] [\-fps] [\-delay \fIusecs\fP] [\-display \fIhost:display.screen\fP]
 .br
@@ -77,6 +77,15 @@ xscreensaver's settings dialog runs its preview.
 .TP
 .B \-\-window
 A normal resizable window (the default outside Windows).
+.TP
+.B \-\-layer \fIlayer\fP
+On Wayland, a wlr\-layer\-shell surface covering every output, drawn at the
+output's real pixels: \fIlayer\fP is background, bottom, top or overlay.
+\fB\-\-layer background\fP is a wallpaper, or the background under
+swaylock\-plugin's lock (\fBswaylock\-plugin \-\-command 'mountains \-\-layer background'\fP).
+Outputs that come and go are followed; it ends on SIGTERM or SIGINT, or
+when the compositor closes its last surface, not on input. A compositor
+without zwlr_layer_shell_v1 (GNOME) is refused with a message.
 .TP
 .B \-\-settings
 The settings screen.
@@ -121,6 +130,9 @@ The window \-root draws on.
 .TP
 .B DISPLAY
 The X display, unless \-display is given.
+.TP
+.B WAYLAND_DISPLAY
+The Wayland compositor (/s, \-\-window and \-\-layer use it before DISPLAY).
 .SH SEE ALSO
 .BR xscreensaver (1),
 .BR xscreensaver\-settings (1)

@@ -18,11 +18,12 @@ pub const X11_LIBRARIES: &[(&str, &str)] = &[
     ("libxkbcommon-x11.so.0", "libxkbcommon-x11-0"),
 ];
 
+/// libwayland-client, the one library `--layer` opens (it reads no keys).
+pub const WAYLAND_CLIENT: (&str, &str) = ("libwayland-client.so.0", "libwayland-client0");
+
 /// Each library winit and softbuffer open under Wayland, and its package.
-pub const WAYLAND_LIBRARIES: &[(&str, &str)] = &[
-    ("libwayland-client.so.0", "libwayland-client0"),
-    ("libxkbcommon.so.0", "libxkbcommon0"),
-];
+pub const WAYLAND_LIBRARIES: &[(&str, &str)] =
+    &[WAYLAND_CLIENT, ("libxkbcommon.so.0", "libxkbcommon0")];
 
 /// The first library in `libraries` that `can_open` cannot open, with its package.
 pub fn first_missing<'a>(
@@ -51,6 +52,13 @@ pub fn check_display(x_named: bool) -> Result<Backend, SaverError> {
         Backend::Wayland => check_libraries("Wayland", WAYLAND_LIBRARIES)?,
     }
     Ok(chosen)
+}
+
+/// `--layer`: libwayland-client, checked before the connection (which
+/// would say only that a library is missing, not which package has it).
+#[cfg(unix)]
+pub fn check_wayland_client() -> Result<(), SaverError> {
+    check_libraries("Wayland", &[WAYLAND_CLIENT])
 }
 
 #[cfg(unix)]

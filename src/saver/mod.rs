@@ -15,7 +15,10 @@
 //! programs (crate::signals turns SIGTERM into a clean exit), `libcheck` names a
 //! missing X or Wayland library before winit panics on it, `backend` picks
 //! X11 or Wayland, `buffer_history` tells `present` what each buffer lacks,
-//! `single` keeps a second `/s` off a display that has one.
+//! `single` keeps a second `/s` off a display that has one. `layer_wayland`
+//! runs the shows on wlr-layer-shell surfaces (`--layer`), presenting
+//! through `target_wayland`'s raw handles, each buffer covering its output
+//! as `cover_wayland` reckons.
 
 pub mod actions;
 pub mod app;
@@ -24,6 +27,8 @@ pub mod backend;
 #[cfg(unix)]
 pub mod bands_x11;
 mod buffer_history;
+#[cfg(target_os = "linux")]
+mod cover_wayland;
 #[cfg(windows)]
 pub mod embed_win32;
 #[cfg(unix)]
@@ -36,6 +41,8 @@ pub mod heads;
 #[cfg(unix)]
 pub mod heads_x11;
 pub mod input;
+#[cfg(target_os = "linux")]
+pub mod layer_wayland;
 pub mod libcheck;
 mod on_screen;
 mod options;
@@ -53,6 +60,8 @@ pub mod show;
 pub mod single;
 pub mod slideshow;
 pub mod source;
+#[cfg(target_os = "linux")]
+mod target_wayland;
 mod trace;
 
 use crate::cli::{Mode, XssOptions};
@@ -81,6 +90,7 @@ pub fn run(
         } => run_in_parent(*handle, settings, opened),
         Mode::XRoot => run_embedded(None, settings, opened),
         Mode::XWindowId(id) => run_embedded(Some(*id), settings, opened),
+        Mode::Layer(layer) => run_layer(*layer, settings, opened),
         other => Err(SaverError::Unsupported(format!(
             "{other:?} is not a window mode"
         ))),
@@ -127,6 +137,28 @@ fn run_embedded(
 ) -> Result<(), SaverError> {
     Err(SaverError::Unsupported(
         "--root and --window-id need X11; on Windows use /s or /p".into(),
+    ))
+}
+
+/// `--layer`: wlr-layer-shell surfaces, on Linux (where the Wayland
+/// libraries are loaded at run time).
+#[cfg(target_os = "linux")]
+fn run_layer(
+    layer: crate::cli::Layer,
+    settings: Settings,
+    opened: Option<Mountain>,
+) -> Result<(), SaverError> {
+    layer_wayland::run(layer, settings, opened)
+}
+
+#[cfg(not(target_os = "linux"))]
+fn run_layer(
+    _layer: crate::cli::Layer,
+    _settings: Settings,
+    _opened: Option<Mountain>,
+) -> Result<(), SaverError> {
+    Err(SaverError::Unsupported(
+        "--layer needs a Wayland compositor with wlr-layer-shell (Linux)".into(),
     ))
 }
 

@@ -193,6 +193,19 @@ impl Sway {
         self.spawn_mountains(args, None)
     }
 
+    /// Runs `mountains ARGS` natively on the Wayland socket `socket` of the
+    /// runtime folder (a proxy's, see common/wl_proxy.rs) instead of sway's.
+    pub fn mountains_via(&self, socket: &str, args: &[&str]) -> Client {
+        self.spawn_mountains_with(args, |c| {
+            c.env("WAYLAND_DISPLAY", socket);
+        })
+    }
+
+    /// A path in the runtime folder the clients share.
+    pub fn runtime_path(&self, name: &str) -> PathBuf {
+        self.runtime.join(name)
+    }
+
     /// Runs `mountains ARGS` through Xwayland (`DISPLAY` set, no `WAYLAND_DISPLAY`).
     pub fn mountains_on_xwayland(&self, args: &[&str]) -> Client {
         let display = self.xwayland_display();
@@ -200,6 +213,14 @@ impl Sway {
     }
 
     fn spawn_mountains(&self, args: &[&str], x_display: Option<&str>) -> Client {
+        self.spawn_mountains_with(args, |c| {
+            if let Some(display) = x_display {
+                c.env_remove("WAYLAND_DISPLAY").env("DISPLAY", display);
+            }
+        })
+    }
+
+    fn spawn_mountains_with(&self, args: &[&str], adjust: impl FnOnce(&mut Command)) -> Client {
         let n = self.shots.get() + 1;
         self.shots.set(n);
         let stderr = self.runtime.join(format!("mountains-{n}.txt"));
@@ -210,9 +231,7 @@ impl Sway {
             .stdin(Stdio::null())
             .stdout(Stdio::null())
             .stderr(std::fs::File::create(&stderr).unwrap());
-        if let Some(display) = x_display {
-            c.env_remove("WAYLAND_DISPLAY").env("DISPLAY", display);
-        }
+        adjust(&mut c);
         let child = signals::as_from_a_terminal(&mut c)
             .spawn()
             .expect("start mountains");
@@ -256,6 +275,27 @@ impl Sway {
         let (w, h, _, pixels) = crate::headless::read_png(&path);
         let _ = std::fs::remove_file(&path);
         (w, h, pixels)
+    }
+
+    /// One output (`HEADLESS-2`) as 0x00RRGGBB pixels, with its size, by grim.
+    pub fn screenshot_output(&self, output: &str) -> (u32, u32, Vec<u32>) {
+        let n = self.shots.get() + 1;
+        self.shots.set(n);
+        let path = self.runtime.join(format!("shot-{n}.png"));
+        self.run("grim", &["-o", output, path.to_str().unwrap()]);
+        let (w, h, _, pixels) = crate::headless::read_png(&path);
+        let _ = std::fs::remove_file(&path);
+        (w, h, pixels)
+    }
+
+    /// The names of the outputs sway has now (`HEADLESS-1`, ...).
+    pub fn outputs(&self) -> Vec<String> {
+        let json = self.run("swaymsg", &["-r", "-t", "get_outputs"]);
+        json.split("\"name\": \"")
+            .skip(1)
+            .filter_map(|rest| rest.split('"').next())
+            .map(str::to_string)
+            .collect()
     }
 
     /// sway's tree of outputs and windows, as JSON text.
@@ -328,11 +368,27 @@ impl Client {
         assert!(status.success(), "{what}: {status}\n{}", self.stderr());
     }
 
+    /// Sends it SIGTERM, as an idle daemon or swaylock-plugin ends it.
+    pub fn terminate(&self) {
+        let pid = self.child.as_ref().unwrap().id().to_string();
+        let status = Command::new("kill").args(["-TERM", &pid]).status();
+        assert!(status.is_ok_and(|s| s.success()), "kill -TERM {pid}");
+    }
+
     /// Kills it with SIGKILL, as a crash would end it.
     pub fn kill(&mut self) {
         let mut child = self.child.take().unwrap();
         let _ = child.kill();
         let _ = child.wait();
+    }
+
+    /// Polls until its stderr says `words` (while it runs, up to `PATIENCE`).
+    pub fn poll_said(&mut self, words: &str) -> Duration {
+        let stderr = self.stderr.clone();
+        let what = format!("saying `{words}`");
+        self.poll(&what, || {
+            std::fs::read_to_string(&stderr).is_ok_and(|t| t.contains(words))
+        })
     }
 
     /// Polls `check` while it runs until it holds or `PATIENCE` runs out.
