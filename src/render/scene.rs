@@ -277,11 +277,20 @@ impl<'a> Scene<'a> {
         mut f: impl FnMut(usize, f32),
     ) {
         let lakes = self.field.lakes().filter(|_| self.lakes);
-        let runs = lakes.map_or(&[][..], |l| l.row(y));
+        let (Some(lakes), false) = (lakes, xs.is_empty()) else {
+            xs.for_each(|x| f(x, 0.0));
+            return;
+        };
+        // The runs are in order: find the first that ends past `xs`'s
+        // start once, then walk them along with `x`.
+        let runs = lakes.row(y);
+        let mut i = runs.partition_point(|r| (r.end as usize) <= xs.start);
         for x in xs {
-            let i = runs.partition_point(|r| (r.end as usize) <= x);
-            let w = match (lakes, runs.get(i)) {
-                (Some(l), Some(r)) if r.start as usize <= x => l.level(r.lake),
+            while runs.get(i).is_some_and(|r| (r.end as usize) <= x) {
+                i += 1;
+            }
+            let w = match runs.get(i) {
+                Some(r) if r.start as usize <= x => lakes.level(r.lake),
                 _ => 0.0,
             };
             f(x, w);

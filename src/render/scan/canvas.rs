@@ -133,6 +133,33 @@ impl<'a> Canvas<'a> {
         }
     }
 
+    /// The runs `x0..x1` of row `y` (frame coordinates, inside the canvas)
+    /// a write would change: on a first-write canvas its unwritten pixels,
+    /// on one that keeps the last write the whole row.
+    pub(crate) fn open_runs(&self, y: u32) -> Vec<(u32, u32)> {
+        let (x0, x1) = (self.clip.x0 as u32, self.clip.x1 as u32);
+        if self.solid.is_none() {
+            return vec![(x0, x1)];
+        }
+        let row = &self.rows[(y - self.y0) as usize];
+        let mut runs = Vec::new();
+        let mut start = None;
+        for (i, &px) in row.iter().enumerate() {
+            match (px == UNSET, start) {
+                (true, None) => start = Some(i),
+                (false, Some(s)) => {
+                    runs.push((x0 + s as u32, x0 + i as u32));
+                    start = None;
+                }
+                _ => {}
+            }
+        }
+        if let Some(s) = start {
+            runs.push((x0 + s as u32, x1));
+        }
+        runs
+    }
+
     /// Sets row `y`, columns `x0..x1` to one colour, as [`Canvas::fill_with`].
     #[inline(always)]
     pub(crate) fn fill(&mut self, y: u32, x0: u32, x1: u32, colour: u32) {

@@ -103,55 +103,109 @@ impl CloudSheet {
         }
     }
 
-    /// The cloud seen at the point `up` frame heights above the horizon
-    /// line and `across` frame heights right of the frame's middle.
-    pub(crate) fn seen(&self, across: f32, up: f32) -> Cover {
-        let none = Cover {
-            opacity: 0.0,
-            thickness: 0.0,
-        };
+    /// The sheet along the screen row `up` frame heights above the horizon
+    /// line: what does not change along it, worked out once. `None` where
+    /// the row sees no cloud (below the line, or where it has faded out).
+    pub(crate) fn row(&self, up: f32) -> Option<SheetRow<'_>> {
         // NaN sees none either.
         if up.is_nan() || up <= 0.0 {
-            return none;
+            return None;
         }
         let fade = smoothstep(0.0, FADE, up);
+        if fade <= 0.0 {
+            return None;
+        }
         let t = REACH / up;
-        let (x, y) = (across * t * self.across, t * self.along);
-        let n = self.noise(self.origin[0] + x, self.origin[1] + y) / NOISE_RANGE;
-        let thickness = ((n - self.threshold) / self.span).clamp(0.0, 1.0);
+        let mut y = self.origin[1] + t * self.along;
+        let layers = std::array::from_fn(|_| {
+            let j = floor(y);
+            let mask = LATTICE as i32 - 1;
+            let layer = Layer {
+                rows: [j, j + 1].map(|j| (j & mask) as usize * LATTICE),
+                ty: fade_curve(y - j as f32),
+            };
+            // Not exactly 2: the layers' lattices never line up.
+            y = y * 1.97 + 31.7;
+            layer
+        });
+        Some(SheetRow {
+            sheet: self,
+            fade,
+            scale: t * self.across,
+            layers,
+        })
+    }
+}
+
+/// No cloud.
+const NONE: Cover = Cover {
+    opacity: 0.0,
+    thickness: 0.0,
+};
+
+/// One noise layer along a screen row: the lattice's two rows it blends
+/// (offsets into the lattice) and how far between them it lies.
+#[derive(Debug, Clone, Copy)]
+struct Layer {
+    rows: [usize; 2],
+    ty: f32,
+}
+
+/// The cloud sheet along one screen row ([`CloudSheet::row`]).
+pub(crate) struct SheetRow<'a> {
+    sheet: &'a CloudSheet,
+    fade: f32,
+    /// Noise cells per frame height across.
+    scale: f32,
+    layers: [Layer; OCTAVES],
+}
+
+impl SheetRow<'_> {
+    /// The cloud seen `across` frame heights right of the frame's middle.
+    pub(crate) fn seen(&self, across: f32) -> Cover {
+        let sheet = self.sheet;
+        let mut x = sheet.origin[0] + across * self.scale;
+        let (mut sum, mut weight) = (0.0, 1.0);
+        for layer in &self.layers {
+            sum += weight * sheet.value(x, layer);
+            weight *= 0.5;
+            x = x * 2.03 + 17.1;
+        }
+        let n = sum / NOISE_RANGE;
+        let thickness = ((n - sheet.threshold) / sheet.span).clamp(0.0, 1.0);
         if thickness <= 0.0 {
-            return none;
+            return NONE;
         }
         Cover {
-            opacity: smoothstep(0.0, 0.6, thickness) * fade,
+            opacity: smoothstep(0.0, 0.6, thickness) * self.fade,
             thickness,
         }
     }
+}
 
-    /// Layered value noise at lattice position (`x`, `y`).
-    fn noise(&self, x: f32, y: f32) -> f32 {
-        let (mut sum, mut weight, mut p) = (0.0, 1.0, [x, y]);
-        for _ in 0..OCTAVES {
-            sum += weight * self.value(p[0], p[1]);
-            weight *= 0.5;
-            // Not exactly 2: the layers' lattices never line up.
-            p = [p[0] * 2.03 + 17.1, p[1] * 1.97 + 31.7];
-        }
-        sum
+impl CloudSheet {
+    /// One layer at lattice column `x` of `layer`'s rows: the lattice's
+    /// values blended smoothly between its points.
+    #[inline]
+    fn value(&self, x: f32, layer: &Layer) -> f32 {
+        let mask = LATTICE as i32 - 1;
+        let i = floor(x);
+        let tx = fade_curve(x - i as f32);
+        let (i0, i1) = ((i & mask) as usize, ((i + 1) & mask) as usize);
+        let [r0, r1] = layer.rows;
+        let l = &self.lattice;
+        let top = l[r0 + i0] + (l[r0 + i1] - l[r0 + i0]) * tx;
+        let bottom = l[r1 + i0] + (l[r1 + i1] - l[r1 + i0]) * tx;
+        top + (bottom - top) * layer.ty
     }
+}
 
-    /// One layer: the lattice's values blended smoothly between its points.
-    fn value(&self, x: f32, y: f32) -> f32 {
-        let mask = LATTICE as i64 - 1;
-        let (fx, fy) = (x.floor(), y.floor());
-        let (tx, ty) = (fade_curve(x - fx), fade_curve(y - fy));
-        let (ix, iy) = (fx as i64, fy as i64);
-        let at =
-            |i: i64, j: i64| self.lattice[((j & mask) as usize) * LATTICE + (i & mask) as usize];
-        let top = at(ix, iy) + (at(ix + 1, iy) - at(ix, iy)) * tx;
-        let bottom = at(ix, iy + 1) + (at(ix + 1, iy + 1) - at(ix, iy + 1)) * tx;
-        top + (bottom - top) * ty
-    }
+/// The whole number at or below `x` (saturating far out, where the sheet
+/// has faded to nothing). Without SSE 4.1 `f32::floor` is a call.
+#[inline]
+fn floor(x: f32) -> i32 {
+    let i = x as i32;
+    if (i as f32) > x { i - 1 } else { i }
 }
 
 /// 3t^2 - 2t^3: the lattice's blend, smooth across its cells' edges.
@@ -192,8 +246,9 @@ mod tests {
             let mut covered = 0;
             for i in 0..400 {
                 let (across, up) = ((i % 20) as f32 * 0.08 - 0.8, 0.08 + (i / 20) as f32 * 0.02);
-                covered += usize::from(sheet.seen(across, up).opacity > 0.05);
-                assert_eq!(sheet.seen(across, -up).opacity, 0.0);
+                covered +=
+                    usize::from(sheet.row(up).map_or(0.0, |r| r.seen(across).opacity) > 0.05);
+                assert!(sheet.row(-up).is_none());
             }
             covered
         };
@@ -208,8 +263,8 @@ mod tests {
     #[test]
     fn the_sheet_fades_out_towards_the_horizon() {
         let sheet = CloudSheet::new(1.0, 42);
-        let low = sheet.seen(0.0, 0.005);
-        let high = sheet.seen(0.0, 0.3);
+        let seen = |up: f32| sheet.row(up).map_or(NONE, |r| r.seen(0.0));
+        let (low, high) = (seen(0.005), seen(0.3));
         assert!(
             low.opacity < 0.1 * high.opacity.max(0.1),
             "{low:?} {high:?}"

@@ -6,7 +6,7 @@
 use std::sync::Arc;
 
 use super::colour::{Rgb, unpack};
-use super::weather::Weather;
+use super::weather::{Weather, WeatherRow};
 use crate::render::scan::canvas::Canvas;
 
 /// 4x4 Bayer thresholds, 0..16.
@@ -68,16 +68,19 @@ impl Sky {
         let below: [[u32; 4]; 4] = std::array::from_fn(|y| self.colours_at(1.0, y as u32));
         let end = canvas.all_written_from();
         if let Some(w) = &self.weather {
+            // Only where the land left the sky showing: the weather costs.
             let mut anchors = Vec::new();
             for y in clip.y0 as u32..end as u32 {
-                let g = self.gradient(y as f32 + 0.5);
-                let first = x0 / STEP;
-                anchors.clear();
-                anchors.extend((first..=(x1 - 1) / STEP + 1).map(|k| anchor(w, g, k, y)));
-                canvas.fill_with(y, x0, x1, |x| {
-                    let k = (x / STEP - first) as usize;
-                    between(anchors[k], anchors[k + 1], x, y)
-                });
+                let (g, row) = (self.gradient(y as f32 + 0.5), w.row(y as f32 + 0.5));
+                for (a, b) in canvas.open_runs(y) {
+                    let first = a / STEP;
+                    anchors.clear();
+                    anchors.extend((first..=(b - 1) / STEP + 1).map(|k| anchor(&row, g, k)));
+                    canvas.fill_with(y, a, b, |x| {
+                        let k = (x / STEP - first) as usize;
+                        between(anchors[k], anchors[k + 1], x, y)
+                    });
+                }
             }
             return;
         }
@@ -100,9 +103,9 @@ impl Sky {
     pub(crate) fn colour(&self, x: u32, y: u32) -> u32 {
         match &self.weather {
             Some(w) => {
-                let g = self.gradient(y as f32 + 0.5);
+                let (g, row) = (self.gradient(y as f32 + 0.5), w.row(y as f32 + 0.5));
                 let k = x / STEP;
-                between(anchor(w, g, k, y), anchor(w, g, k + 1, y), x, y)
+                between(anchor(&row, g, k), anchor(&row, g, k + 1), x, y)
             }
             None => self.row_colours(y)[(x & 3) as usize],
         }
@@ -174,11 +177,11 @@ impl Sky {
 /// pixels, and the noise is most of a sky pixel's cost).
 const STEP: u32 = 4;
 
-/// The weather over gradient colour `g` at the centre of row `y`'s
-/// column `k * STEP`.
+/// The weather of `row` over gradient colour `g` at the centre of column
+/// `k * STEP`.
 #[inline]
-fn anchor(w: &Weather, g: Rgb, k: u32, y: u32) -> Rgb {
-    w.over(g, (k * STEP) as f32 + 0.5, y as f32 + 0.5)
+fn anchor(row: &WeatherRow, g: Rgb, k: u32) -> Rgb {
+    row.over(g, (k * STEP) as f32 + 0.5)
 }
 
 /// Pixel (`x`, `y`), blended from the anchors `a` (its column rounded down

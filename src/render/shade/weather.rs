@@ -10,7 +10,7 @@
 
 use glam::{Vec2, Vec3};
 
-use super::clouds::{CloudSheet, Cover, smoothstep};
+use super::clouds::{CloudSheet, Cover, SheetRow, smoothstep};
 use super::colour::{Rgb, mix};
 use super::light::Lighting;
 use crate::render::framing::view::View;
@@ -118,28 +118,33 @@ impl Weather {
     /// The sky's `gradient` colour at screen point (`x`, `y`) with the
     /// weather over it.
     pub(crate) fn over(&self, gradient: Rgb, x: f32, y: f32) -> Rgb {
-        let away = match self.view.sight(x, y) {
-            Some(dir) => 1.0 - dir.dot(self.sun),
-            None => 2.0,
-        };
-        let mut c = gradient;
-        if self.glows && away < GLOW_REACH {
-            let wide = WIDE * ((GLOW_REACH - away) / GLOW_REACH).powi(2);
-            let g = self.glow * (0.6 * (-away / CORE).exp() + 0.25 * (-away / HALO).exp() + wide);
-            c = [0, 1, 2].map(|i| c[i] + self.light[i] * g);
-            if away < DISC {
-                c = mix(c, mix(self.light, [1.0; 3], 0.6), 0.9);
-            }
-        }
-        let Some(sheet) = &self.clouds else {
-            return c;
-        };
+        self.row(y).over(gradient, x)
+    }
+
+    /// The weather along screen row `y` (the clouds' part that does not
+    /// change along a row worked out once).
+    pub(crate) fn row(&self, y: f32) -> WeatherRow<'_> {
         let up = (self.horizon_row - y) / self.height;
-        let cover = sheet.seen((x - self.middle) / self.height, up);
-        if cover.opacity <= 0.0 {
-            return c;
+        WeatherRow {
+            weather: self,
+            y,
+            up,
+            sheet: self.clouds.as_ref().and_then(|c| c.row(up)),
         }
-        mix(c, self.cloud(cover, up, away), cover.opacity)
+    }
+
+    /// The glow (a share of the sun's colour) on a sight line `away`
+    /// (1 - cos) from the sun. Each part is left out where it would add
+    /// less than a tenth of a level.
+    fn glow_at(&self, away: f32) -> f32 {
+        let mut g = WIDE * ((GLOW_REACH - away) / GLOW_REACH).powi(2);
+        if away < 0.06 {
+            g += 0.6 * (-away / CORE).exp();
+        }
+        if away < 0.55 {
+            g += 0.25 * (-away / HALO).exp();
+        }
+        self.glow * g
     }
 
     /// The colour of cloud `cover` seen `up` frame heights above the
@@ -149,10 +154,49 @@ impl Weather {
     fn cloud(&self, cover: Cover, up: f32, away: f32) -> Rgb {
         let heart = (0.3 + 0.45 * self.amount) * cover.thickness;
         let mut c = mix(self.lit, self.shade, heart);
-        let silver = 0.35 * self.glow * (-away / 0.08).exp();
-        c = [0, 1, 2].map(|i| c[i] + self.light[i] * silver);
+        if away < 0.65 {
+            let silver = 0.35 * self.glow * (-away / 0.08).exp();
+            c = [0, 1, 2].map(|i| c[i] + self.light[i] * silver);
+        }
         let below = (1.0 - smoothstep(0.0, 0.3, up)) * (1.0 - smoothstep(0.15, 0.5, self.sun.z));
         mix(c, self.light, 0.45 * below)
+    }
+}
+
+/// The weather along one screen row ([`Weather::row`]).
+pub(crate) struct WeatherRow<'a> {
+    weather: &'a Weather,
+    y: f32,
+    /// Frame heights above the horizon line.
+    up: f32,
+    sheet: Option<SheetRow<'a>>,
+}
+
+impl WeatherRow<'_> {
+    /// The sky's `gradient` colour at column `x` of the row with the
+    /// weather over it.
+    pub(crate) fn over(&self, gradient: Rgb, x: f32) -> Rgb {
+        let w = self.weather;
+        let away = match w.view.sight(x, self.y) {
+            Some(dir) => 1.0 - dir.dot(w.sun),
+            None => 2.0,
+        };
+        let mut c = gradient;
+        if w.glows && away < GLOW_REACH {
+            let g = w.glow_at(away);
+            c = [0, 1, 2].map(|i| c[i] + w.light[i] * g);
+            if away < DISC {
+                c = mix(c, mix(w.light, [1.0; 3], 0.6), 0.9);
+            }
+        }
+        let Some(sheet) = &self.sheet else {
+            return c;
+        };
+        let cover = sheet.seen((x - w.middle) / w.height);
+        if cover.opacity <= 0.0 {
+            return c;
+        }
+        mix(c, w.cloud(cover, self.up, away), cover.opacity)
     }
 }
 
