@@ -57,7 +57,10 @@ fn fractal_mountain_climbing_is_seed_000s_menus_and_view() {
     // Height 5.
     assert_eq!(s.detail, Detail::Level(5));
     assert_eq!((s.contour, s.roughness, s.height), (1.5, 2.0, 5));
-    assert_eq!((s.view, s.sun, s.shading), (ViewKind::Oblique, Sun::Classic, Shading::Flat));
+    assert_eq!(
+        (s.view, s.sun, s.shading),
+        (ViewKind::Oblique, Sun::Classic, Shading::Flat)
+    );
     assert!(!s.shadows && !s.lakes && !s.relative_depth);
     assert_eq!(s.erosion, 0.0);
 }
@@ -77,8 +80,16 @@ fn a_key_set_to_something_else_overrides_the_look_before_or_after_it() {
 #[test]
 fn the_shipped_file_copied_with_a_look_chosen_draws_that_look() {
     for look in LOOKS {
-        let name = keys::get(&Settings { look, ..Settings::default() }, keys::find("look").unwrap());
-        let keys::Value::Str(name) = name else { unreachable!() };
+        let name = keys::get(
+            &Settings {
+                look,
+                ..Settings::default()
+            },
+            keys::find("look").unwrap(),
+        );
+        let keys::Value::Str(name) = name else {
+            unreachable!()
+        };
         let s = load_text(&shipped_with(&name));
         assert_eq!(s.look, look);
         for &(key, _) in looks::presets(look) {
@@ -97,13 +108,18 @@ fn the_shipped_file_copied_with_a_look_chosen_draws_that_look() {
 fn set_flags_layer_a_look_over_the_file_and_back() {
     let mut s = load_text("cragginess = 40\n");
     load::apply_set(&mut s, "look", "mountain-terrain").unwrap();
-    assert_eq!((s.generator, s.view), (Generator::Square, ViewKind::Oblique));
+    assert_eq!(
+        (s.generator, s.view),
+        (Generator::Square, ViewKind::Oblique)
+    );
     // A key the file sets stays the file's.
     assert_eq!(s.cragginess, 40);
     // Back to ours: every key the look moved returns to its default.
     load::apply_set(&mut s, "look", "ours").unwrap();
-    let mut want = Settings::default();
-    want.cragginess = 40;
+    let want = Settings {
+        cragginess: 40,
+        ..Settings::default()
+    };
     assert_eq!(s, want);
     // From one look to another: nothing of the first is left.
     let mut a = Settings::default();

@@ -16,7 +16,7 @@ use super::shade::ripples::Ripples;
 use super::shade::shadow::{self, ShadowMap};
 use super::shade::sky::Sky;
 use super::shade::skylight::SkyLight;
-use crate::settings::{ColorMode, Settings, Shading, ViewKind};
+use crate::settings::{ColorMode, Look, Settings, Shading, ViewKind};
 use crate::terrain::Heightfield;
 
 /// How faces are put on screen.
@@ -184,6 +184,9 @@ impl<'a> Scene<'a> {
                 let split = cx.floor().clamp(0.0, cells as f32) as usize;
                 (split, cx > cells as f32, true)
             }
+            // Seed 000's listing cuts no sides: below its front edge is
+            // the black window.
+            None if settings.look == Look::FractalMountainClimbing => (cells, false, false),
             None => (cells, true, true),
         };
         let listing_diagonal = view.camera_column().is_none();
@@ -380,7 +383,16 @@ fn framed(
     let lattice = (shared > 0 && settings.view != ViewKind::Oblique)
         .then(|| RowTops::of(&field.coarsened(shared)));
     let tops = lattice.as_ref().unwrap_or(&row_top).rows();
-    let view = View::fitted(settings.view, size, field.extent(), tops, width, height);
+    let listing_tilt = settings.look == Look::FractalMountainClimbing;
+    let view = View::fitted_tilted(
+        settings.view,
+        listing_tilt,
+        size,
+        field.extent(),
+        tops,
+        width,
+        height,
+    );
     // Sonar and Outline draw every line of their (already thinned) grid.
     let rows = if shaded {
         super::framing::rows::kept_rows(size, &view)

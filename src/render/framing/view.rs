@@ -15,6 +15,11 @@ use crate::settings::ViewKind;
 /// degrees about the x axis (seed 000's `xTh = -1.396`). Written out rather
 /// than computed so no platform's `sin` can move a pixel.
 const TILT_SIN_COS: (f32, f32) = (0.939_692_6, 0.342_020_15);
+/// Sine and cosine of seed 000's tilt as its code has it, `xTh = -1.396`
+/// radians: 80 degrees, where the article's words say 70 (docs/classics.md).
+/// `look = "fractal-mountain-climbing"` draws with it, and its light
+/// (`sun = "classic"`) is worked through with it.
+const LISTING_TILT_SIN_COS: (f32, f32) = (0.984_762, 0.173_907_57);
 /// Seed 000's shear: each row forward moves half a step to the left, which
 /// turns the square into a parallelogram seen from the front right.
 const SHEAR: f32 = 0.5;
@@ -88,6 +93,20 @@ impl View {
         width: u32,
         height: u32,
     ) -> Self {
+        Self::fitted_tilted(kind, false, size, extent, row_top, width, height)
+    }
+
+    /// [`View::fitted`], the oblique view tipped back by seed 000's code's
+    /// 80 degrees (`listing_tilt`) rather than our 70.
+    pub fn fitted_tilted(
+        kind: ViewKind,
+        listing_tilt: bool,
+        size: usize,
+        extent: f32,
+        row_top: &[f32],
+        width: u32,
+        height: u32,
+    ) -> Self {
         let steps = size.saturating_sub(1).max(1) as f32;
         let zmax = row_top
             .iter()
@@ -105,7 +124,11 @@ impl View {
             offset: Vec2::ZERO,
             camera: None,
             size,
-            tilt: TILT_SIN_COS,
+            tilt: if listing_tilt {
+                LISTING_TILT_SIN_COS
+            } else {
+                TILT_SIN_COS
+            },
         };
         match kind {
             ViewKind::Vista => view.frame_vista(steps, row_top, width as f32, height as f32),

@@ -6,6 +6,7 @@ pub mod colour;
 pub mod dither;
 pub(super) mod haze;
 pub mod light;
+pub mod listing;
 pub(super) mod normals;
 pub mod palette;
 pub(super) mod ripples;

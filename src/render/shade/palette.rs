@@ -21,7 +21,8 @@
 
 use super::colour::{Rgb, mix, mix_packed, pack, scale_packed, scale_packed3, to_u32, unpack};
 use super::light::Lighting;
-use crate::settings::{ColorMode, Settings, Sun};
+use super::listing;
+use crate::settings::{ColorMode, Look, Settings, Sun};
 use crate::terrain::Heightfield;
 use glam::Vec3;
 
@@ -82,6 +83,11 @@ pub struct Palette {
     /// stretch; 1 and 0 otherwise), offset in 0..=255 units.
     gain: f32,
     offset: f32,
+    /// Seed 000's HSV ramp for the land (`look =
+    /// "fractal-mountain-climbing"` in the natural colours).
+    listing: Option<listing::Ramp>,
+    /// A black background: the seed programs' windows behind the land.
+    black_sky: bool,
 }
 
 impl Palette {
@@ -117,7 +123,14 @@ impl Palette {
             deepest,
             reflected: (!lighting.classic).then_some(lighting.horizon),
         };
-        let (water, depth_scale) = water_table(mode, &waters, gain, offset);
+        let listing = (settings.look == Look::FractalMountainClimbing
+            && mode == ColorMode::Natural)
+            .then(|| listing::Ramp::new(settings.height, top));
+        let (water, depth_scale) = match listing {
+            // The listing's one light blue, unshaded.
+            Some(_) if !settings.relative_depth => (vec![listing::WATER].into(), 0.0),
+            _ => water_table(mode, &waters, gain, offset),
+        };
         Palette {
             coloured: !lighting.classic && mode == ColorMode::Natural,
             lighting,
@@ -130,6 +143,8 @@ impl Palette {
             skirt: finish(mode, natural::EARTH),
             gain,
             offset,
+            listing,
+            black_sky: settings.look == Look::FractalMountainClimbing,
         }
     }
 
@@ -163,6 +178,10 @@ impl Palette {
     /// sky's light on it scales with that share (the classic light ignores it).
     #[inline]
     pub fn land_in(&self, mean_height: f32, normal: Vec3, lit: f32, sky: f32) -> u32 {
+        if let Some(ramp) = &self.listing {
+            let i = luminance(self.lighting.on(normal, lit));
+            return ramp.colour(mean_height, f64::from(i));
+        }
         // Clamped as floats (NaN stays NaN and casts to bin 0).
         let h = (mean_height * self.height_scale + jitter(mean_height))
             .clamp(0.0, (HEIGHT_BINS - 1) as f32) as i32 as usize;
@@ -212,7 +231,7 @@ impl Palette {
     #[inline]
     pub fn water(&self, depth: f32) -> u32 {
         let i = (depth * self.depth_scale) as usize;
-        self.water[i.min(DEPTH_BINS - 1)]
+        self.water[i.min(self.water.len() - 1)]
     }
 
     /// Colour of a skirt face (the cut side of the map) facing `normal`.
@@ -227,6 +246,9 @@ impl Palette {
     /// The sky behind the mountain, top and horizon colours, filtered
     /// (black in Mono, Sonar and Outline).
     pub fn sky(&self) -> (u32, u32) {
+        if self.black_sky {
+            return (0, 0);
+        }
         match self.mode {
             ColorMode::Mono | ColorMode::Sonar | ColorMode::Outline => (0, 0),
             mode => {
