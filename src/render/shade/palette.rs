@@ -20,6 +20,7 @@
 //! brightness, stays in the filter's hue family, and snow turns a pale tint.
 
 use super::colour::{Rgb, mix, mix_packed, pack, scale_packed, scale_packed3, to_u32, unpack};
+use super::facings;
 use super::light::Lighting;
 use super::listing;
 use crate::settings::{ColorMode, Look, Settings, Sun};
@@ -86,6 +87,10 @@ pub struct Palette {
     /// Seed 000's HSV ramp for the land (`look =
     /// "fractal-mountain-climbing"` in the natural colours).
     listing: Option<listing::Ramp>,
+    /// Mountain Terrain 3.0's colour preference (`look =
+    /// "mountain-terrain"` under a filter): land is it ANDed with a facing's
+    /// darkness, water pure blue.
+    preference: Option<u32>,
     /// A black background: the seed programs' windows behind the land.
     black_sky: bool,
 }
@@ -126,9 +131,13 @@ impl Palette {
         let listing = (settings.look == Look::FractalMountainClimbing
             && mode == ColorMode::Natural)
             .then(|| listing::Ramp::new(settings.height, top));
+        let preference = (settings.look == Look::MountainTerrain)
+            .then(|| facings::preference(mode))
+            .flatten();
         let (water, depth_scale) = match listing {
             // The listing's one light blue, unshaded.
             Some(_) if !settings.relative_depth => (vec![listing::WATER].into(), 0.0),
+            _ if preference.is_some() => mountain_terrain_water(settings.relative_depth),
             _ => water_table(mode, &waters, gain, offset),
         };
         Palette {
@@ -144,7 +153,11 @@ impl Palette {
             gain,
             offset,
             listing,
-            black_sky: settings.look == Look::FractalMountainClimbing,
+            preference,
+            black_sky: matches!(
+                settings.look,
+                Look::FractalMountainClimbing | Look::MountainTerrain
+            ),
         }
     }
 
@@ -182,6 +195,9 @@ impl Palette {
             let i = luminance(self.lighting.on(normal, lit));
             return ramp.colour(mean_height, f64::from(i));
         }
+        if let Some(preference) = self.preference {
+            return facings::brush(preference, normal);
+        }
         // Clamped as floats (NaN stays NaN and casts to bin 0).
         let h = (mean_height * self.height_scale + jitter(mean_height))
             .clamp(0.0, (HEIGHT_BINS - 1) as f32) as i32 as usize;
@@ -197,6 +213,9 @@ impl Palette {
     /// random or stepped colour would draw streaks along the grid.
     #[inline]
     pub fn land_at_point(&self, height: f32, normal: Vec3, lit: f32, sky: f32) -> u32 {
+        if let Some(preference) = self.preference {
+            return facings::brush(preference, normal);
+        }
         let h = (height * self.height_scale).clamp(0.0, (HEIGHT_BINS - 1) as f32) as i32 as usize;
         // Between the middles of the two nearest steepness classes.
         let s = ((1.0 - normal.z) * self.steep_scale - 0.5).clamp(0.0, (STEEP_BINS - 1) as f32);
@@ -240,6 +259,10 @@ impl Palette {
     /// all heights: painters give one height per skirt column, so any
     /// height banding would show as vertical stripes.
     pub fn skirt(&self, normal: Vec3) -> u32 {
+        if let Some(preference) = self.preference {
+            // Mountain Terrain's "solid color rectangle" down to sea level.
+            return preference & facings::darkness(facings::Facing::Towards(1));
+        }
         pack(self.skirt, self.brightness(normal, 1.0), self.offset)
     }
 
@@ -477,6 +500,15 @@ fn water_table(mode: ColorMode, w: &Waters, gain: f32, offset: f32) -> (Box<[u32
         0.0
     };
     (table, scale)
+}
+
+/// Mountain Terrain's water by depth, one bin a height unit: pure blue,
+/// less the depth under Relative Depth.
+fn mountain_terrain_water(relative: bool) -> (Box<[u32]>, f32) {
+    let table = (0..=facings::MAX_DARKENING)
+        .map(|d| facings::water(d as f32, relative))
+        .collect();
+    (table, if relative { 1.0 } else { 0.0 })
 }
 
 /// Relative steepness of the field's steep faces: the 90th percentile of
