@@ -87,6 +87,9 @@ pub enum ColorMode {
     Purple,
     /// Black faces, one-pixel white outlines.
     Sonar,
+    /// FL3's Filled mode: land faces one flat green, water faces one flat
+    /// blue, no shading, each outlined by the pen (Delphi's default black).
+    Filled,
     /// Wire mesh only: land green, water blue.
     Outline,
     /// Black and white: seed 000's 17 8x8 patterns (`bwPat`).

@@ -111,3 +111,84 @@ fn mountain_terrain_water_is_pure_blue_darker_over_deeper_ground() {
     );
     assert_eq!(flat.water(50.0), facings::PURE_BLUE);
 }
+
+/// The finest level's horizontal-edge displacements of a triangle field
+/// (each point between two others on an even row, less their mean), under
+/// contour 1 so the normalising is a scale and they keep their shape; and
+/// their kurtosis (1.8 for a uniform density, 2.4 for FL3's triangle).
+fn displacements(look: &str) -> (Vec<f64>, f64) {
+    let s = with(&[
+        ("look", look),
+        ("generator", "triangle"),
+        ("detail", "8"),
+        ("contour", "1"),
+        ("erosion", "0"),
+        ("cliffs", "0"),
+        ("lakes", "false"),
+    ]);
+    let f = terrain::generate(&s, 11);
+    let n = f.size();
+    let mut d = Vec::new();
+    for y in (0..n).step_by(2) {
+        for x in (1..n - 1).step_by(2) {
+            let mean = 0.5 * (f.get(x - 1, y) as f64 + f.get(x + 1, y) as f64);
+            d.push(f.get(x, y) as f64 - mean);
+        }
+    }
+    let m = d.iter().sum::<f64>() / d.len() as f64;
+    let var = d.iter().map(|v| (v - m).powi(2)).sum::<f64>() / d.len() as f64;
+    let fourth = d.iter().map(|v| (v - m).powi(4)).sum::<f64>() / d.len() as f64;
+    (d, fourth / (var * var))
+}
+
+/// Share of `d` within a fifth of its largest size of 0.
+fn central_share(d: &[f64]) -> f64 {
+    let reach = d.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+    d.iter().filter(|v| v.abs() < 0.2 * reach).count() as f64 / d.len() as f64
+}
+
+#[test]
+fn fl3s_deviations_are_pseudo_normal_where_ours_are_uniform() {
+    let (fl3, k_fl3) = displacements("fl3");
+    let (ours, k_ours) = displacements("ours");
+    assert!(fl3.len() > 16_000);
+    // FL3's Rand: the sum of two uniform numbers, a triangle (kurtosis 2.4).
+    eprintln!("kurtosis fl3 {k_fl3:.3}, ours {k_ours:.3}");
+    assert!((2.2..2.6).contains(&k_fl3), "fl3 kurtosis {k_fl3}");
+    // Ours: one uniform number (kurtosis 1.8).
+    assert!((1.65..1.95).contains(&k_ours), "ours kurtosis {k_ours}");
+    // Bell-shaped: the middle fifth either side of 0 holds 36% of a
+    // triangle's values, 20% of a uniform's.
+    let (c_fl3, c_ours) = (central_share(&fl3), central_share(&ours));
+    assert!((0.32..0.40).contains(&c_fl3), "fl3 central share {c_fl3}");
+    assert!(
+        (0.17..0.23).contains(&c_ours),
+        "ours central share {c_ours}"
+    );
+}
+
+#[test]
+fn fl3s_filled_mode_is_flat_green_and_blue_outlined_in_black() {
+    let s = with(&[("look", "fl3")]);
+    let counts = histogram(&s, 7, 640, 360);
+    let (green, blue) = (0x0000_d000, 0x0030_60ff);
+    let total: usize = counts.values().sum();
+    let share = |c: u32| counts.get(&c).copied().unwrap_or(0) as f64 / total as f64;
+    // Nothing but the two fills and the black pen and window: no shading.
+    let others: Vec<u32> = counts
+        .keys()
+        .copied()
+        .filter(|&c| ![0, green, blue].contains(&c))
+        .collect();
+    assert!(others.is_empty(), "shaded colours: {others:06x?}");
+    assert!(share(green) > 0.05 && share(blue) > 0.05, "{counts:06x?}");
+    // The pen shows between faces: black inside the land as well.
+    let field = terrain::generate(&s, 7);
+    let mut frame = Frame::new(640, 360).unwrap();
+    render_full(&field, &s, &mut frame);
+    let row = 200;
+    let runs = (1..640)
+        .filter(|&x| frame.get(x - 1, row) == 0 && frame.get(x, row) != 0)
+        .count();
+    assert!(runs > 10, "{runs} outlined faces across row {row}");
+}

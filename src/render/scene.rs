@@ -41,7 +41,9 @@ impl Style {
     /// The style a colour mode draws with (Ridges is handled elsewhere).
     pub(crate) fn of(mode: ColorMode) -> Self {
         match mode {
-            ColorMode::Sonar => Style::Sonar,
+            // FL3's Filled mode: Sonar's filled and outlined cells in
+            // its own colours (`Palette::fills`).
+            ColorMode::Sonar | ColorMode::Filled => Style::Sonar,
             ColorMode::Outline => Style::Outline,
             ColorMode::Mono => Style::Mono,
             _ => Style::Shaded,

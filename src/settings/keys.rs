@@ -150,8 +150,8 @@ const LOOKS: &[&str] = &[
 const GENERATORS: &[&str] = &["square", "diamond", "triangle", "brownian"];
 const PROFILES: &[&str] = &["slope", "peak", "bay", "massif"];
 const COLORS: &[&str] = &[
-    "natural", "gray", "red", "green", "blue", "yellow", "cyan", "purple", "sonar", "outline",
-    "mono", "ridges",
+    "natural", "gray", "red", "green", "blue", "yellow", "cyan", "purple", "sonar", "filled",
+    "outline", "mono", "ridges",
 ];
 const VIEWS: &[&str] = &["vista", "oblique", "perspective"];
 const WATER_LINES: &[&str] = &["coast", "generator"];

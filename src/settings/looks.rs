@@ -83,6 +83,7 @@ const FL3: &[(&str, Preset)] = &[
     ("lakes", Bool(false)),
     ("water_line", Str("generator")),
     ("sea_level", Float(0.0)),
+    ("color", Str("filled")),
     ("relative_depth", Bool(false)),
     ("shadows", Bool(false)),
     ("shading", Str("flat")),

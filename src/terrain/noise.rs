@@ -18,6 +18,8 @@ use super::splitmix::{GOLDEN, mix};
 pub(crate) struct Noise {
     key: u64,
     shift: u32,
+    /// FL3's pseudo-normal values: the mean of two uniform ones.
+    pseudo_normal: bool,
 }
 
 impl Noise {
@@ -28,6 +30,19 @@ impl Noise {
             // GOLDEN from sharing row keys.
             key: mix(seed ^ 0x6D6F_756E_7461_696E),
             shift: MAX_EXPONENT.saturating_sub(exponent),
+            pseudo_normal: false,
+        }
+    }
+
+    /// These values, or (`on`) FL3's pseudo-normal ones: "Rand :=
+    /// Random(Envelope) + Random(Envelope) - Envelope", the sum of two
+    /// uniform numbers, here halved so they keep the range `[-1, 1)`. Their
+    /// density is a triangle, highest at 0 (a "sawtooth" in the article's
+    /// word, "vaguely like a normal distribution").
+    pub(crate) fn pseudo_normal(self, on: bool) -> Self {
+        Noise {
+            pseudo_normal: on,
+            ..self
         }
     }
 
@@ -58,6 +73,17 @@ impl Noise {
         // The hash input `row_key + column * GOLDEN32`, stepped by addition.
         let mut input = row_key.wrapping_add(first.wrapping_mul(GOLDEN32));
         let increment = stride.wrapping_mul(GOLDEN32);
+        if self.pseudo_normal {
+            for o in out.iter_mut() {
+                // The second number from the same input, hashed apart.
+                let a = (lowbias32(input) as i32) >> 8;
+                let b = (lowbias32(input ^ SECOND) as i32) >> 8;
+                // Halved in integers: 24 bits, exact in an f32.
+                *o = ((a + b) >> 1) as f32 * step;
+                input = input.wrapping_add(increment);
+            }
+            return;
+        }
         for o in out.iter_mut() {
             let bits = lowbias32(input);
             *o = ((bits as i32) >> 8) as f32 * step;
@@ -71,6 +97,10 @@ impl Noise {
         (mix(self.key.wrapping_add((gy + 1).wrapping_mul(GOLDEN))) >> 32) as u32
     }
 }
+
+/// Flips the hash input for a point's second number (FL3's pseudo-normal
+/// values), so its two numbers are independent.
+const SECOND: u32 = 0x5bd1_e995;
 
 /// 2^32 / golden ratio, odd: spreads consecutive columns over the hash input.
 const GOLDEN32: u32 = 0x9E37_79B9;
@@ -102,6 +132,29 @@ mod tests {
         }
         let mean = sum / (257.0 * 257.0);
         assert!(mean.abs() < 0.01, "mean {mean} is biased");
+    }
+
+    #[test]
+    fn pseudo_normal_values_stay_in_range_and_leave_ours_alone() {
+        let ours = Noise::new(42, 8);
+        let fl3 = ours.pseudo_normal(true);
+        let (mut middle, mut n) = (0, 0);
+        for y in 0..257 {
+            for x in 0..257 {
+                let v = fl3.at(x, y);
+                assert!((-1.0..1.0).contains(&v), "{v} out of range");
+                middle += usize::from(v.abs() < 0.2);
+                n += 1;
+            }
+        }
+        // A triangle density puts 36% within 0.2 of 0 (a uniform one 20%).
+        let share = middle as f64 / n as f64;
+        assert!((0.33..0.39).contains(&share), "{share}");
+        assert_eq!(
+            ours.pseudo_normal(false).at(5, 9).to_bits(),
+            ours.at(5, 9).to_bits()
+        );
+        assert_ne!(fl3.at(5, 9).to_bits(), ours.at(5, 9).to_bits());
     }
 
     #[test]

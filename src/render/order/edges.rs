@@ -135,21 +135,28 @@ impl Scene<'_> {
         }
     }
 
-    /// Sonar: both triangles of a cell in black.
+    /// Sonar: both triangles of a cell in black; Filled: each in FL3's
+    /// flat land colour, or its water colour when no corner is above the sea.
     fn black_cell(&self, canvas: &mut Canvas, [tl, tr, bl, br]: [&Vert; 4], rightward: bool) {
         let clip = *canvas.clip();
         if centre_box([tl.p, tr.p, bl.p, br.p], &clip).is_none() {
             return;
         }
-        let mut fill = |v: [Fixed2; 3]| {
-            fill_triangle(v, &clip, |y, x0, x1| canvas.span_mut(y, x0, x1).fill(0));
+        let (land, water) = self.palette.fills();
+        let mut fill = |v: [&Vert; 3]| {
+            let wet = v.iter().all(|v| v.h <= 0.0);
+            let colour = if wet { water } else { land };
+            let p = v.map(|v| v.p);
+            fill_triangle(p, &clip, |y, x0, x1| {
+                canvas.span_mut(y, x0, x1).fill(colour)
+            });
         };
         if rightward && !self.listing_diagonal {
-            fill([tl.p, tr.p, bl.p]);
-            fill([tr.p, br.p, bl.p]);
+            fill([tl, tr, bl]);
+            fill([tr, br, bl]);
         } else {
-            fill([tl.p, tr.p, br.p]);
-            fill([tl.p, br.p, bl.p]);
+            fill([tl, tr, br]);
+            fill([tl, br, bl]);
         }
     }
 

@@ -44,6 +44,13 @@ const WHITENING: f32 = 0.6;
 /// How much of the sky's horizon colour water reflects (beyond the classic light).
 const WATER_REFLECTS: f32 = 0.12;
 
+/// FL3's land and water colours ("outlines 'land' triangles in green and
+/// water triangles in blue"), and its pen in Filled mode: `Canvas.Polygon`
+/// outlines with the canvas's pen, Delphi's default `clBlack`.
+const FL3_GREEN: u32 = 0x0000_d000;
+const FL3_BLUE: u32 = 0x0030_60ff;
+const FL3_PEN: u32 = 0;
+
 /// Natural colours, shaded brightness 1 (full sun).
 mod natural {
     use super::Rgb;
@@ -273,7 +280,7 @@ impl Palette {
             return (0, 0);
         }
         match self.mode {
-            ColorMode::Mono | ColorMode::Sonar | ColorMode::Outline => (0, 0),
+            ColorMode::Mono | ColorMode::Sonar | ColorMode::Filled | ColorMode::Outline => (0, 0),
             mode => {
                 let l = &self.lighting;
                 let [top, bottom] = [l.zenith, l.horizon].map(|c| to_u32(filter(mode, c)));
@@ -288,7 +295,8 @@ impl Palette {
     /// disagreed with theirs).
     pub fn outline_land(&self) -> u32 {
         match self.mode {
-            ColorMode::Outline => 0x0000_d000,
+            ColorMode::Outline => FL3_GREEN,
+            ColorMode::Filled => FL3_PEN,
             _ => 0x00ff_ffff,
         }
     }
@@ -297,8 +305,20 @@ impl Palette {
     /// blue for Outline.
     pub fn outline_water(&self) -> u32 {
         match self.mode {
-            ColorMode::Outline => 0x0030_60ff,
+            ColorMode::Outline => FL3_BLUE,
+            ColorMode::Filled => FL3_PEN,
             _ => 0x00ff_ffff,
+        }
+    }
+
+    /// The flat fills of a land and a water cell in the outlined modes:
+    /// black in Sonar; FL3's green and blue in Filled (no shading: "Rendered
+    /// mode in turn differs from Filled mode in basing each triangle's
+    /// color on the angle it presents to a ray from the sun").
+    pub fn fills(&self) -> (u32, u32) {
+        match self.mode {
+            ColorMode::Filled => (FL3_GREEN, FL3_BLUE),
+            _ => (0, 0),
         }
     }
 
@@ -351,7 +371,7 @@ fn tint(mode: ColorMode) -> Option<Rgb> {
 /// Applies the colour filter of `mode` to a natural colour (0..=1).
 fn filter(mode: ColorMode, c: Rgb) -> Rgb {
     match mode {
-        ColorMode::Sonar | ColorMode::Outline => [0.0; 3],
+        ColorMode::Sonar | ColorMode::Filled | ColorMode::Outline => [0.0; 3],
         _ => match tint(mode) {
             Some(t) => {
                 // Darker than the tint: the tint scaled down, at the same
