@@ -192,3 +192,68 @@ fn fl3s_filled_mode_is_flat_green_and_blue_outlined_in_black() {
         .count();
     assert!(runs > 10, "{runs} outlined faces across row {row}");
 }
+
+#[test]
+fn the_essays_square_keeps_its_outer_edges_undisplaced() {
+    let border = |look: &str| {
+        let s = with(&[("look", look), ("generator", "square"), ("detail", "6")]);
+        let f = terrain::generate(&s, 5);
+        let n = f.size();
+        let edge: Vec<f32> = (0..n)
+            .flat_map(|i| [(i, 0), (i, n - 1), (0, i), (n - 1, i)])
+            .map(|(x, y)| f.get(x, y))
+            .collect();
+        let inner: BTreeSet<u32> = (1..n - 1).map(|x| f.get(x, n / 2).to_bits()).collect();
+        (edge, inner.len())
+    };
+    let (edge, inner) = border("essay");
+    // The essay's corners all start at its base, so its undisplaced edges
+    // are level: every border point at the corners' height.
+    assert!(edge.iter().all(|&h| h == edge[0]), "{edge:?}");
+    assert!(inner > 40, "the inside is displaced: {inner} heights");
+    let (ours, _) = border("ours");
+    let distinct: BTreeSet<u32> = ours.iter().map(|h| h.to_bits()).collect();
+    assert!(distinct.len() > 40, "our border is displaced");
+}
+
+#[test]
+fn the_essays_faces_are_its_sunlit_green_on_a_white_page() {
+    use glam::Vec3;
+    use mountains::render::essay;
+    let s = with(&[("look", "essay")]);
+    let field = terrain::generate(&s, 7);
+    let (w, h) = (480, 270);
+    let mut frame = Frame::new(w, h).unwrap();
+    render_full(&field, &s, &mut frame);
+    assert_eq!(frame.get(0, 0), essay::BACKGROUND);
+    // The colours `hsl(100, 80%, L%)` takes for L = 20 cos + 10, rounded.
+    let greens: BTreeSet<u32> = (0..=1000)
+        .map(|k| {
+            let a = std::f32::consts::PI * k as f32 / 1000.0;
+            essay::colour(Vec3::new(a.cos(), 0.0, a.sin()))
+        })
+        .chain([essay::colour(-essay::SUN)])
+        .collect();
+    assert!(greens.len() >= 30, "{}", greens.len());
+    let (mut inside, mut shades) = (0, BTreeSet::new());
+    for y in 1..h - 1 {
+        for x in 1..w - 1 {
+            let around = [(x, y), (x - 1, y), (x + 1, y), (x, y - 1), (x, y + 1)];
+            if around
+                .iter()
+                .any(|&(x, y)| frame.get(x, y) == essay::BACKGROUND)
+            {
+                continue;
+            }
+            let p = frame.get(x, y);
+            assert!(
+                greens.contains(&p),
+                "({x}, {y}): {p:06x} is none of the essay's greens"
+            );
+            inside += 1;
+            shades.insert(p);
+        }
+    }
+    assert!(inside > (w * h / 4) as usize, "{inside} land pixels");
+    assert!(shades.len() > 15, "{} shades", shades.len());
+}

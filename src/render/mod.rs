@@ -24,7 +24,7 @@ mod shade;
 // The public paths from before the rooms (`render::palette`, ...) stay.
 pub use framing::{detail, view};
 pub use scan::raster;
-pub use shade::{colour, dither, facings, light, listing, palette, shadow};
+pub use shade::{colour, dither, essay, facings, light, listing, palette, shadow};
 
 pub use damage::Damage;
 pub use frame::{Frame, Rect};

@@ -168,14 +168,19 @@ impl<'a> Scene<'a> {
         });
         let size = field.size();
         let sky = backdrop(&palette, &view, style, height);
-        let haze = (style == Style::Shaded && settings.view != ViewKind::Oblique)
+        // The seed programs' looks have no air.
+        let haze = (style == Style::Shaded
+            && settings.view != ViewKind::Oblique
+            && settings.look == Look::Ours)
             .then(|| Haze::new(palette.sky().1));
         let ripples = (haze.is_some() && !palette.lighting().classic)
             .then(|| Ripples::new(palette.sky().1, &field));
-        // The looks with depth in colour; the classic looks keep their pixels.
+        // The looks with depth in colour; the classic looks and the seed
+        // programs' keep their pixels.
         let clean_edges = style == Style::Shaded
             && settings.view != ViewKind::Oblique
-            && !palette.lighting().classic;
+            && !palette.lighting().classic
+            && settings.look == Look::Ours;
         let smooth = clean_edges && settings.shading == Shading::Smooth;
         let normals = smooth.then(|| Normals::new(size, &rows, view.cell()));
         let eye = view.camera_ground().filter(|_| smooth);
@@ -184,7 +189,9 @@ impl<'a> Scene<'a> {
         let (split, sees_right, sees_front) = match view.camera_column() {
             Some(cx) => {
                 let split = cx.floor().clamp(0.0, cells as f32) as usize;
-                (split, cx > cells as f32, true)
+                // The essay draws the surface alone.
+                let sides = settings.look != Look::Essay;
+                (split, sides && cx > cells as f32, sides)
             }
             // Seed 000's listing cuts no sides: below its front edge is
             // the black window.

@@ -90,12 +90,23 @@ const FL3: &[(&str, Preset)] = &[
     ("view", Str("perspective")),
 ];
 
-/// Seed 002, the essay: diamond-square ("why it removes straight
-/// creases"), a perspective view, sun shading one colour a face with no
-/// cast shadows (its stated limitation: "surfaces lit that should be in
-/// shadow").
+/// Seed 002, the essay's final program: each square's centre and four edge
+/// midpoints displaced from the means of their ends (`terrain()`: our
+/// square generator, one random value a point from its common array), the
+/// square's outer edges undisplaced, no sea ("mountain" colours only), a
+/// perspective view, sun shading one colour a face with no cast shadows
+/// (its stated limitation: "surfaces lit that should be in shadow").
+///
+/// Its program goes to `max_iteration = 9` on a 2048-wide square; we take
+/// 8 (257 points a side). Its centres rise by up to 0.2 of their square's
+/// side at every level (`center_roughness`), about twice our relief at the
+/// default height: height 10.
 const ESSAY: &[(&str, Preset)] = &[
-    ("generator", Str("diamond")),
+    ("generator", Str("square")),
+    ("detail", Int(8)),
+    ("height", Int(10)),
+    ("water_line", Str("generator")),
+    ("sea_level", Float(-1.0)),
     ("erosion", Float(0.0)),
     ("cliffs", Float(0.0)),
     ("lakes", Bool(false)),

@@ -20,6 +20,9 @@ pub(crate) struct Noise {
     shift: u32,
     /// FL3's pseudo-normal values: the mean of two uniform ones.
     pseudo_normal: bool,
+    /// The last column and row of the grid, when its border's values are
+    /// all 0 (the essay's undisplaced edges).
+    still_border: Option<usize>,
 }
 
 impl Noise {
@@ -31,6 +34,19 @@ impl Noise {
             key: mix(seed ^ 0x6D6F_756E_7461_696E),
             shift: MAX_EXPONENT.saturating_sub(exponent),
             pseudo_normal: false,
+            still_border: None,
+        }
+    }
+
+    /// These values, or (`on`) 0 on the grid's border: the essay's "points on
+    /// the edge of the original square" with no displacement, so its edges
+    /// run straight between its corners, and its corners (all at the base in
+    /// the essay) start at 0.
+    pub(crate) fn still_edges(self, on: bool) -> Self {
+        let last = 1usize << (MAX_EXPONENT - self.shift);
+        Noise {
+            still_border: on.then_some(last),
+            ..self
         }
     }
 
@@ -63,6 +79,24 @@ impl Noise {
         scale: f32,
         out: &mut [f32],
     ) {
+        self.fill_values(y, first, stride, scale, out);
+        if let Some(last) = self.still_border {
+            if y == 0 || y == last {
+                out.fill(0.0);
+            } else {
+                for (i, o) in out.iter_mut().enumerate() {
+                    let x = first + i * stride;
+                    if x == 0 || x == last {
+                        *o = 0.0;
+                    }
+                }
+            }
+        }
+    }
+
+    /// [`Noise::fill_row`]'s values before the border is stilled.
+    #[inline]
+    fn fill_values(&self, y: usize, first: usize, stride: usize, scale: f32, out: &mut [f32]) {
         let row_key = self.row_key(y);
         let first = ((first as u64) << self.shift) as u32;
         let stride = ((stride as u64) << self.shift) as u32;

@@ -28,6 +28,9 @@ pub(crate) struct Params {
     /// FL3's pseudo-normal deviations (`look = "fl3"`): the sum of two
     /// uniform numbers, where ours are one.
     pub(crate) pseudo_normal: bool,
+    /// The essay's square with its outer edges undisplaced (`look =
+    /// "essay"`): the border's points keep their ends' mean.
+    pub(crate) still_edges: bool,
 }
 
 impl Params {
@@ -50,6 +53,7 @@ impl Params {
             lakes: s.lakes,
             cliffs: CLIFFS.clamp(s.cliffs),
             pseudo_normal: s.look == Look::Fl3,
+            still_edges: s.look == Look::Essay,
         }
     }
 

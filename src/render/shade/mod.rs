@@ -4,6 +4,7 @@
 
 pub mod colour;
 pub mod dither;
+pub mod essay;
 pub mod facings;
 pub(super) mod haze;
 pub mod light;

@@ -20,6 +20,7 @@
 //! brightness, stays in the filter's hue family, and snow turns a pale tint.
 
 use super::colour::{Rgb, mix, mix_packed, pack, scale_packed, scale_packed3, to_u32, unpack};
+use super::essay;
 use super::facings;
 use super::light::Lighting;
 use super::listing;
@@ -98,8 +99,11 @@ pub struct Palette {
     /// "mountain-terrain"` under a filter): land is it ANDed with a facing's
     /// darkness, water pure blue.
     preference: Option<u32>,
-    /// A black background: the seed programs' windows behind the land.
-    black_sky: bool,
+    /// The essay's green by its sun (`look = "essay"` in the natural colours).
+    essay: bool,
+    /// The background of a seed program's look: black windows, the
+    /// essay's white page.
+    backdrop: Option<u32>,
 }
 
 impl Palette {
@@ -161,10 +165,12 @@ impl Palette {
             offset,
             listing,
             preference,
-            black_sky: matches!(
-                settings.look,
-                Look::FractalMountainClimbing | Look::MountainTerrain
-            ),
+            essay: settings.look == Look::Essay && mode == ColorMode::Natural,
+            backdrop: match settings.look {
+                Look::FractalMountainClimbing | Look::MountainTerrain => Some(0),
+                Look::Essay => Some(essay::BACKGROUND),
+                _ => None,
+            },
         }
     }
 
@@ -205,6 +211,9 @@ impl Palette {
         if let Some(preference) = self.preference {
             return facings::brush(preference, normal);
         }
+        if self.essay {
+            return essay::colour(normal);
+        }
         // Clamped as floats (NaN stays NaN and casts to bin 0).
         let h = (mean_height * self.height_scale + jitter(mean_height))
             .clamp(0.0, (HEIGHT_BINS - 1) as f32) as i32 as usize;
@@ -222,6 +231,9 @@ impl Palette {
     pub fn land_at_point(&self, height: f32, normal: Vec3, lit: f32, sky: f32) -> u32 {
         if let Some(preference) = self.preference {
             return facings::brush(preference, normal);
+        }
+        if self.essay {
+            return essay::colour(normal);
         }
         let h = (height * self.height_scale).clamp(0.0, (HEIGHT_BINS - 1) as f32) as i32 as usize;
         // Between the middles of the two nearest steepness classes.
@@ -276,8 +288,8 @@ impl Palette {
     /// The sky behind the mountain, top and horizon colours, filtered
     /// (black in Mono, Sonar and Outline).
     pub fn sky(&self) -> (u32, u32) {
-        if self.black_sky {
-            return (0, 0);
+        if let Some(backdrop) = self.backdrop {
+            return (backdrop, backdrop);
         }
         match self.mode {
             ColorMode::Mono | ColorMode::Sonar | ColorMode::Filled | ColorMode::Outline => (0, 0),
