@@ -22,7 +22,7 @@ mod scene;
 mod shade;
 
 // The public paths from before the rooms (`render::palette`, ...) stay.
-pub use framing::{detail, view};
+pub use framing::{detail, turn, view};
 pub use scan::raster;
 pub use shade::{colour, dither, essay, facings, light, listing, palette, shadow};
 

@@ -6,6 +6,7 @@ use std::sync::Arc;
 use glam::Vec2;
 
 use super::framing::tops::{RowTops, finite};
+use super::framing::turn;
 use super::framing::view::View;
 use super::scan::raster::{Fixed2, to_fixed};
 use super::shade::colour::blend_packed;
@@ -71,6 +72,9 @@ pub(crate) struct Vert {
     pub colour: u32,
     /// Whether `lit`, `sky` and `haze` are worked out (see [`Scene::shade`]).
     pub shaded: bool,
+    /// Outside the land (the essay's turned square): cells touching it are
+    /// not drawn.
+    pub off: bool,
 }
 
 /// A field a scene draws: shared with a painter, or borrowed for one frame
@@ -127,6 +131,9 @@ pub(crate) struct Scene<'a> {
     /// Whether the field's lakes are drawn (the filled looks; Sonar and
     /// Outline draw the ground's mesh).
     lakes: bool,
+    /// Whether the field has points outside the land (NaN: the essay's
+    /// turned square), whose cells are left undrawn.
+    pub holes: bool,
     /// Under the classic light, the shear of the parallelogram the oblique
     /// view draws (grid steps left per row forward; 0 otherwise): seed
     /// 000's listing lights the faces of its parallelogram, not of a square.
@@ -144,6 +151,11 @@ impl<'a> Scene<'a> {
     pub(crate) fn new(field: FieldRef<'a>, settings: &Settings, width: u32, height: u32) -> Self {
         let style = Style::of(settings.color);
         let mut field = turned(field, settings.rotation);
+        let holes = settings.look == Look::Essay;
+        if holes {
+            let degrees = turn::essay_degrees(field.identity());
+            field = FieldRef::Shared(Arc::new(turn::turned_by(&field, degrees)));
+        }
         if matches!(style, Style::Sonar | Style::Outline) {
             field = legible(field, settings, width, height);
         }
@@ -221,6 +233,7 @@ impl<'a> Scene<'a> {
             row_top,
             rows,
             lakes,
+            holes,
             normal_shear,
             listing_diagonal,
             sees_right,
@@ -258,6 +271,7 @@ impl<'a> Scene<'a> {
                 p: to_fixed(p.x, p.y),
                 h,
                 w,
+                off: !row[x].is_finite(),
                 ..Vert::default()
             };
         });

@@ -56,6 +56,9 @@ impl Scene<'_> {
             if !self.may_touch(canvas.clip(), [tl.0, tr.0, bl.0, br.0], sonar) {
                 continue;
             }
+            if self.holes && [tl.0, tr.0, bl.0, br.0].iter().any(|v| v.off) {
+                continue;
+            }
             let own = self.owned_edges(s, x);
             if sonar {
                 self.black_cell(canvas, [tl.0, tr.0, bl.0, br.0], rightward);
