@@ -345,3 +345,59 @@ fn every_look_steps_to_the_same_pixels_as_the_full_frame() {
         }
     }
 }
+
+/// The pinned picture of each look: 160x90 of seed 7 at detail 5 under
+/// tests/golden/look-*.png (the look's own generator: its numbers, FL3's
+/// deviations and the essay's edges and turn are part of it). When a look
+/// changes on purpose, look at target/golden-actual/ and pin them again
+/// with `MOUNTAINS_PIN_GOLDEN=1`, as tests/render_painter.rs says.
+#[test]
+fn golden_pictures_pin_each_look() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/golden");
+    let actual = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/golden-actual");
+    let pin = std::env::var_os("MOUNTAINS_PIN_GOLDEN").is_some();
+    let mut wrong = Vec::new();
+    for look in [
+        "fractal-mountain-climbing",
+        "mountain-terrain",
+        "fl3",
+        "essay",
+    ] {
+        let s = with(&[("look", look), ("detail", "5")]);
+        let field = terrain::generate(&s, 7);
+        let mut got = Frame::new(160, 90).unwrap();
+        render_full(&field, &s, &mut got);
+        let name = format!("look-{look}.png");
+        if pin {
+            mountains::snapshot::write_png(&dir.join(&name), &got).unwrap();
+            continue;
+        }
+        if read_png(&dir.join(&name)).as_ref() != Some(&got) {
+            std::fs::create_dir_all(&actual).unwrap();
+            mountains::snapshot::write_png(&actual.join(&name), &got).unwrap();
+            wrong.push(name);
+        }
+    }
+    assert!(
+        wrong.is_empty(),
+        "a look changed: {wrong:?}; compare target/golden-actual/ with tests/golden/"
+    );
+}
+
+/// An 8-bit RGB PNG as a frame (`None` if missing or not one).
+fn read_png(path: &std::path::Path) -> Option<Frame> {
+    let file = std::fs::File::open(path).ok()?;
+    let mut reader = png::Decoder::new(std::io::BufReader::new(file))
+        .read_info()
+        .ok()?;
+    let mut buf = vec![0; reader.output_buffer_size()?];
+    let info = reader.next_frame(&mut buf).ok()?;
+    if info.color_type != png::ColorType::Rgb || info.bit_depth != png::BitDepth::Eight {
+        return None;
+    }
+    let mut frame = Frame::new(info.width, info.height)?;
+    for (px, rgb) in frame.pixels_mut().iter_mut().zip(buf.chunks_exact(3)) {
+        *px = u32::from(rgb[0]) << 16 | u32::from(rgb[1]) << 8 | u32::from(rgb[2]);
+    }
+    Some(frame)
+}
