@@ -401,3 +401,37 @@ fn read_png(path: &std::path::Path) -> Option<Frame> {
     }
     Some(frame)
 }
+
+/// FL3 draws "filled vertical quadrilaterals" down to sea level along the
+/// front edges in the filled modes: in Filled, halfway down from a front
+/// point above the sea to its foot, the picture is the land's green.
+#[test]
+fn fl3s_filled_mode_hangs_green_sides_from_the_front_edge() {
+    use mountains::render::facts::SceneFacts;
+    let s = with(&[("look", "fl3"), ("sea_level", "-1"), ("detail", "6")]);
+    let field = terrain::generate(&s, 7);
+    let (w, h) = (640, 360);
+    let mut frame = Frame::new(w, h).unwrap();
+    render_full(&field, &s, &mut frame);
+    let facts = SceneFacts::of(&field, &s, w, h);
+    let n = field.size() - 1;
+    let mut sides = 0;
+    for k in 1..8 {
+        let x = n * k / 8;
+        let z = field.get(x, n);
+        let (fx, fy) = (x as f32 / n as f32, 1.0);
+        let (top, foot) = (facts.place(fx, fy, z), facts.place(fx, fy, 0.0));
+        if (foot.y - top.y) * (h as f32) < 8.0 {
+            continue;
+        }
+        let mid = (top + foot) * 0.5;
+        let (px, py) = ((mid.x * w as f32) as u32, (mid.y * h as f32) as u32);
+        let green = (px - 2..=px + 2).any(|x| frame.get(x, py) == 0x0000_d000);
+        assert!(green, "column {x}: no side at ({px}, {py})");
+        sides += 1;
+    }
+    assert!(
+        sides >= 4,
+        "{sides} front points stand high enough to check"
+    );
+}
