@@ -156,3 +156,34 @@ fn saving_under_a_look_leaves_the_files_defaults_alone() {
     assert_eq!(load_text(&out), s);
     assert_eq!(KEYS.iter().filter(|k| k.name == "look").count(), 1);
 }
+
+/// The settings screen choosing a look: every key the look moved counts as
+/// changed there, and saving them into a copy of the shipped file changes
+/// its `look` line and nothing else; the file read back is the screen's.
+#[test]
+fn choosing_a_look_on_the_screen_saves_one_line() {
+    use mountains::settings::save::save_changes;
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("looks-save");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("mountains.toml");
+    std::fs::write(&file, DEFAULT_TOML).unwrap();
+    let before = load_text(DEFAULT_TOML);
+    let mut edited = before.clone();
+    load::apply_set(&mut edited, "look", "mountain-terrain").unwrap();
+    let changed: Vec<_> = KEYS
+        .iter()
+        .filter(|k| keys::get(&edited, k) != keys::get(&before, k))
+        .collect();
+    assert!(changed.len() > 5, "{} keys moved", changed.len());
+    save_changes(&file, &edited, &changed).unwrap();
+    let text = std::fs::read_to_string(&file).unwrap();
+    let differ: Vec<(&str, &str)> = DEFAULT_TOML
+        .lines()
+        .zip(text.lines())
+        .filter(|(a, b)| a != b)
+        .collect();
+    assert_eq!(differ, [("look = \"ours\"", "look = \"mountain-terrain\"")]);
+    assert_eq!(text.lines().count(), DEFAULT_TOML.lines().count());
+    assert_eq!(load_text(&text), edited);
+}
