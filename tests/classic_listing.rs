@@ -322,13 +322,30 @@ fn the_listings_hsv_ramp_is_ours_at_every_class_and_brightness() {
 }
 
 /// Under `look = "fractal-mountain-climbing"` a rendered face has the
-/// listing's colour for the same triangle: its class from the mean of its
-/// corners' heights normalised as `NormalizeMap` does (the highest point
-/// at `normalHeight`), its brightness from the listing's normal. Water is
-/// the listing's light blue and the window behind is black.
+/// listing's colour for the same triangle, the field's heights normalised
+/// as `NormalizeMap` does (the highest point at `normalHeight`): its class
+/// from the mean of its corners, its brightness from the listing's normal
+/// at the listing's own relief (`0.00217 z` against `2 xc` a column).
+/// Water is the listing's light blue and the window behind is black.
+/// Land rising towards the back at every step, so that at the listing's
+/// relief, seen 10 degrees above the horizon, no face hides another: small
+/// bumps on a slope up to the back right, green at the front, grey at the
+/// back.
+fn rising_field() -> Heightfield {
+    let mut f = Heightfield::flat(N_ITER as u32, 160.0);
+    let n = f.size();
+    for y in 0..n {
+        for x in 0..n {
+            let bumps = ((x * 7 + y * 13) % 5) as f32 * 0.12;
+            f.set(x, y, 20.0 + bumps + 0.5 * x as f32 - 1.2 * y as f32);
+        }
+    }
+    f
+}
+
 #[test]
 fn a_rendered_face_has_the_listings_colour() {
-    let f = field();
+    let f = rising_field();
     let s = fmc_settings();
     assert_eq!(
         (s.view, s.sun, s.height),
@@ -348,9 +365,12 @@ fn a_rendered_face_has_the_listings_colour() {
         for cx in (1..15).step_by(2) {
             for (corners, inside) in listing_faces(cx, cy) {
                 let heights = corners.map(|[x, y]| f.get(x, y));
+                // The listing's own heights: NormalizeMap's, the highest
+                // point at normalHeight; the look draws them at its relief.
                 let points: [DVec3; 3] = std::array::from_fn(|k| {
                     let [x, y] = corners[k];
-                    DVec3::new(x as f64, y as f64, listing_z(&listing, &f, heights[k]))
+                    let z = heights[k] as f64 * normal_height / highest;
+                    DVec3::new(x as f64, y as f64, z)
                 });
                 let (_, i) = listing.shade(points);
                 let az =
@@ -415,11 +435,13 @@ fn the_listings_water_is_one_light_blue() {
 
 /// The look's view is tipped back as the listing's code tips it, `xTh =
 /// -1.396` (80 degrees; the article's "-70 degree" is not what its code
-/// does): a step back along the ground rises `cos xTh` on screen for every
-/// `sin xTh` a step up does, as `CalcPoint3`'s matrix has it. Our own
-/// oblique view keeps 70 degrees.
+/// does), at its relief: a step back along the ground (`2 xc`) rises `2 xc
+/// cos xTh` on screen, a step up of the same size in the map's own heights
+/// `0.00217 z sin xTh` with `z` normalised as `NormalizeMap` does, as
+/// `CalcPoint3` has it. Our own oblique view keeps 70 degrees and the
+/// field's relief.
 #[test]
-fn the_looks_tilt_is_the_listings_80_degrees() {
+fn the_looks_tilt_and_relief_are_the_listings() {
     let f = field();
     let rise = |s: &Settings| {
         let facts = SceneFacts::of(&f, s, 1280, 960);
@@ -431,11 +453,18 @@ fn the_looks_tilt_is_the_listings_80_degrees() {
         ((o.y - back.y) / (o.y - up.y)) as f64
     };
     let listing = Listing::new(1280.0);
-    let ratio = listing.tm[1][1] / -listing.tm[2][1];
-    assert!((ratio - X_TH.cos() / -X_TH.sin()).abs() < 1e-12);
+    // A grid step up, in the field's units, in the listing's height units.
+    let cell = (f.extent() / (f.size() - 1) as f32) as f64;
+    let up = cell * 10000.0 * fmc_settings().height as f64 / f.min_max().1 as f64;
+    let (o, b, u) = (
+        listing.calc_point3(DVec3::new(8.0, 8.0, 0.0)),
+        listing.calc_point3(DVec3::new(8.0, 7.0, 0.0)),
+        listing.calc_point3(DVec3::new(8.0, 8.0, up)),
+    );
+    let ratio = (o.y - b.y) / (o.y - u.y);
     let ours = rise(&fmc_settings());
     assert!(
-        (ours - ratio).abs() < 1e-4,
+        (ours / ratio - 1.0).abs() < 1e-4,
         "{ours} vs the listing's {ratio}"
     );
     let seventy = rise(&settings());

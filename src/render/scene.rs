@@ -7,7 +7,7 @@ use glam::Vec2;
 
 use super::framing::tops::{RowTops, finite};
 use super::framing::turn;
-use super::framing::view::View;
+use super::framing::view::{Oblique, View, listing_relief};
 use super::scan::raster::{Fixed2, to_fixed};
 use super::shade::colour::blend_packed;
 use super::shade::haze::Haze;
@@ -406,10 +406,20 @@ fn framed(
     let lattice = (shared > 0 && settings.view != ViewKind::Oblique)
         .then(|| RowTops::of(&field.coarsened(shared)));
     let tops = lattice.as_ref().unwrap_or(&row_top).rows();
-    let listing_tilt = settings.look == Look::FractalMountainClimbing;
-    let view = View::fitted_tilted(
+    // Seed 000's look draws its parallelogram as its listing does: tipped
+    // 80 degrees, heights at its own relief.
+    let oblique = if settings.look == Look::FractalMountainClimbing {
+        let height = crate::settings::handles::HEIGHT.clamp(settings.height);
+        Oblique {
+            listing_tilt: true,
+            relief: listing_relief(height, field.extent(), field.max()),
+        }
+    } else {
+        Oblique::OURS
+    };
+    let view = View::fitted_oblique(
         settings.view,
-        listing_tilt,
+        oblique,
         size,
         field.extent(),
         tops,

@@ -289,7 +289,10 @@ impl Scene<'_> {
     fn face_normal(&self, c: &Face) -> Vec3 {
         let cell = self.view.cell();
         let shear = self.normal_shear;
-        let world = |k: &Corner| Vec3::new((k.g.x - shear * k.g.y) * cell, -k.g.y * cell, k.h);
+        // The heights as the view draws them (seed 000's relief in its look).
+        let relief = self.view.relief();
+        let world =
+            |k: &Corner| Vec3::new((k.g.x - shear * k.g.y) * cell, -k.g.y * cell, k.h * relief);
         let (p0, p1, p2) = (world(c[0]), world(c[1]), world(c[2]));
         let n = (p1 - p0).cross(p2 - p0);
         let n = if n.z < 0.0 { -n } else { n };
