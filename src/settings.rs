@@ -6,10 +6,33 @@
 pub mod handles;
 pub mod keys;
 pub mod load;
+pub mod looks;
 pub mod paths;
 pub mod save;
 
 use serde::{Deserialize, Serialize};
+
+/// Whose picture the mountain is drawn as: ours, or one of the seed
+/// programs' (`settings/looks.rs` holds the keys each look sets; the
+/// renderer and the generator read the parts no key can say).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Look {
+    /// Today's picture: every key at its own default.
+    Ours,
+    /// Seed 000, MacTech's *Fractal Mountain Climbing* (1991): its
+    /// triangles, HSV ramp, light, tilt and water.
+    FractalMountainClimbing,
+    /// Seed 003, *Mountain Terrain 3.0* (1997): a filter colour ANDed with
+    /// a darkness from nine facings, pure blue water.
+    MountainTerrain,
+    /// Seed 004, *3D Fractal Landscapes* (FL3): Filled mode, pseudo-normal
+    /// deviations, single-point perspective.
+    Fl3,
+    /// Seed 002, the essay on recursive subdivision: its view turned in
+    /// steps of 11.25 degrees, the square's outer edges undisplaced.
+    Essay,
+}
 
 /// Which fractal generator builds the heightfield.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -64,6 +87,9 @@ pub enum ColorMode {
     Purple,
     /// Black faces, one-pixel white outlines.
     Sonar,
+    /// FL3's Filled mode: land faces one flat green, water faces one flat
+    /// blue, no shading, each outlined by the pen (Delphi's default black).
+    Filled,
     /// Wire mesh only: land green, water blue.
     Outline,
     /// Black and white: seed 000's 17 8x8 patterns (`bwPat`).
@@ -174,6 +200,9 @@ pub const AUTO_DETAIL_FALLBACK: u32 = 10;
 pub struct Settings {
     /// Seed of the next mountain; `None` picks a fresh random one each time.
     pub seed: Option<u64>,
+    /// Whose picture: ours, or a seed program's (its keys' defaults and
+    /// the parts no key says).
+    pub look: Look,
     /// Which generator builds the heights.
     pub generator: Generator,
     /// Square generators: initial random range, halved per level (1-128).

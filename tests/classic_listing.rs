@@ -242,3 +242,232 @@ fn a_rendered_face_has_the_listings_brightness_and_split() {
     }
     assert_eq!(checked, 8);
 }
+
+/// `_DrawTriangle`'s colour for a land triangle whose corners' mean map
+/// height is `az`, at brightness `i`, under `normalHeight`: the colour
+/// class against the treeline, the HSV blend in unsigned 32-bit integers,
+/// `c.blue *= i`, then `HSV2RGB` (here by chroma, hue sixths and the
+/// smallest channel), each 16-bit channel shown by its high byte.
+fn listing_colour(az: f64, normal_height: f64, i: f64) -> u32 {
+    let treeline = 0.4 * normal_height + 10000.0;
+    let color: u32 = if az > treeline + 9000.0 {
+        150
+    } else if az < treeline {
+        0
+    } else {
+        ((az - treeline) / 60.0) as u32
+    };
+    let mut cv: [u32; 3] = [0x5555, 0xFFFF, 0xAAAA];
+    cv[0] = (150 - color) * (cv[0] - 0x2000) / 150 + 0x2000;
+    cv[1] = (cv[1] * (150 - color)) / 150;
+    cv[2] = 0xEFFF - (150 - color) * (0xEFFF - cv[2]) / 150;
+    let (hue, sat) = (cv[0] as u16, cv[1] as u16);
+    let value = ((cv[2] as u16) as f64 * i) as u16;
+    let v = value as f64 / 65535.0;
+    let chroma = v * sat as f64 / 65535.0;
+    let sixth = hue as f64 / 65536.0 * 6.0;
+    let x = chroma * (1.0 - ((sixth % 2.0) - 1.0).abs());
+    let m = v - chroma;
+    let (r, g, b) = match sixth as u32 {
+        0 => (chroma, x, 0.0),
+        1 => (x, chroma, 0.0),
+        2 => (0.0, chroma, x),
+        3 => (0.0, x, chroma),
+        4 => (x, 0.0, chroma),
+        _ => (chroma, 0.0, x),
+    };
+    let high = |c: f64| (((c + m) * 65535.0 + 0.5) as u32) >> 8;
+    (high(r) << 16) | (high(g) << 8) | high(b)
+}
+
+fn fmc_settings() -> Settings {
+    let mut s = Settings::default();
+    mountains::settings::load::apply_set(&mut s, "look", "fractal-mountain-climbing").unwrap();
+    s
+}
+
+/// Seed 000's HSV ramp, class by class and light by light, from green
+/// (hue 0x5555) through brown to grey: ours and the listing's agree to
+/// the bit.
+#[test]
+fn the_listings_hsv_ramp_is_ours_at_every_class_and_brightness() {
+    use mountains::render::listing::Ramp;
+    for height in [1, 5, 10] {
+        let normal_height = 10000.0 * height as f64;
+        let highest = 37.5f32;
+        let ramp = Ramp::new(height, highest);
+        let mut classes = std::collections::BTreeSet::new();
+        for k in 0..=2000 {
+            let mean = highest * k as f32 / 2000.0;
+            let az = mean as f64 * normal_height / highest as f64;
+            for i in [0.0, 0.013, 0.25, 0.5, 0.7341, 0.9, 1.0] {
+                let want = listing_colour(az, normal_height, i);
+                assert_eq!(
+                    ramp.colour(mean, i),
+                    want,
+                    "height {height}, mean {mean} (az {az}), i {i}"
+                );
+            }
+            classes.insert(ramp.class(mean));
+        }
+        // Below the treeline only green at height 1; every class above it
+        // at 5 and 10.
+        if height > 1 {
+            assert_eq!(classes.len(), 151, "height {height}");
+        }
+    }
+    // Full light on the listing's first and last colours.
+    assert_eq!(listing_colour(0.0, 50000.0, 1.0), 0x00aa00);
+    assert_eq!(listing_colour(1e9, 50000.0, 1.0), 0xefefef);
+}
+
+/// Under `look = "fractal-mountain-climbing"` a rendered face has the
+/// listing's colour for the same triangle, the field's heights normalised
+/// as `NormalizeMap` does (the highest point at `normalHeight`): its class
+/// from the mean of its corners, its brightness from the listing's normal
+/// at the listing's own relief (`0.00217 z` against `2 xc` a column).
+/// Water is the listing's light blue and the window behind is black.
+/// Land rising towards the back at every step, so that at the listing's
+/// relief, seen 10 degrees above the horizon, no face hides another: small
+/// bumps on a slope up to the back right, green at the front, grey at the
+/// back.
+fn rising_field() -> Heightfield {
+    let mut f = Heightfield::flat(N_ITER as u32, 160.0);
+    let n = f.size();
+    for y in 0..n {
+        for x in 0..n {
+            let bumps = ((x * 7 + y * 13) % 5) as f32 * 0.12;
+            f.set(x, y, 20.0 + bumps + 0.5 * x as f32 - 1.2 * y as f32);
+        }
+    }
+    f
+}
+
+#[test]
+fn a_rendered_face_has_the_listings_colour() {
+    let f = rising_field();
+    let s = fmc_settings();
+    assert_eq!(
+        (s.view, s.sun, s.height),
+        (ViewKind::Oblique, Sun::Classic, 5)
+    );
+    let (w, h) = (1280, 960);
+    let mut frame = Frame::new(w, h).unwrap();
+    render_full(&f, &s, &mut frame);
+    let facts = SceneFacts::of(&f, &s, w, h);
+    assert_eq!(facts.sky, (0, 0));
+    assert_eq!(frame.get(2, 2), 0, "the window behind the land is black");
+    let listing = Listing::new(w as f64);
+    let normal_height = 10000.0 * s.height as f64;
+    let highest = f.min_max().1 as f64;
+    let mut colours = std::collections::BTreeSet::new();
+    for cy in (1..15).step_by(3) {
+        for cx in (1..15).step_by(2) {
+            for (corners, inside) in listing_faces(cx, cy) {
+                let heights = corners.map(|[x, y]| f.get(x, y));
+                // The listing's own heights: NormalizeMap's, the highest
+                // point at normalHeight; the look draws them at its relief.
+                let points: [DVec3; 3] = std::array::from_fn(|k| {
+                    let [x, y] = corners[k];
+                    let z = heights[k] as f64 * normal_height / highest;
+                    DVec3::new(x as f64, y as f64, z)
+                });
+                let (_, i) = listing.shade(points);
+                let az =
+                    heights.iter().map(|&z| z as f64).sum::<f64>() / 3.0 * normal_height / highest;
+                let want = listing_colour(az, normal_height, i);
+                let g = corners.map(|[x, y]| (x as f32, y as f32));
+                let at = (cx as f32 + inside[0], cy as f32 + inside[1]);
+                let [a, b, c] = heights;
+                let z = plane_height(
+                    [
+                        (g[0].0, g[0].1, a),
+                        (g[1].0, g[1].1, b),
+                        (g[2].0, g[2].1, c),
+                    ],
+                    at,
+                );
+                let n = (f.size() - 1) as f32;
+                let p = facts.place(at.0 / n, at.1 / n, z);
+                let (px, py) = ((p.x * w as f32) as u32, (p.y * h as f32) as u32);
+                let got = frame.get(px, py);
+                assert_eq!(
+                    got, want,
+                    "cell ({cx}, {cy}) face {corners:?} at ({px}, {py}): {got:06x}, \
+                     the listing's {want:06x} (i {i:.5}, az {az:.0})"
+                );
+                colours.insert(want);
+            }
+        }
+    }
+    // Green, brown and grey faces, many shades.
+    assert!(colours.len() > 20, "{} colours", colours.len());
+}
+
+/// The listing's water, RGB (0x9FFF, 0x9FFF, 0xFFFF): a field all below
+/// the sea is drawn in it, one colour, unshaded.
+#[test]
+fn the_listings_water_is_one_light_blue() {
+    let mut f = Heightfield::flat(N_ITER as u32, 160.0);
+    let n = f.size();
+    for y in 0..n {
+        for x in 0..n {
+            f.set(x, y, -1.0 - ((x * 3 + y * 5) % 7) as f32);
+        }
+    }
+    f.set(8, 8, 4.0);
+    let (w, h) = (640, 480);
+    let mut frame = Frame::new(w, h).unwrap();
+    render_full(&f, &fmc_settings(), &mut frame);
+    let pixels: Vec<u32> = (0..h)
+        .flat_map(|y| (0..w).map(move |x| (x, y)))
+        .map(|(x, y)| frame.get(x, y))
+        .collect();
+    let water = pixels.iter().filter(|&&p| p == 0x9f9fff).count();
+    assert!(water > (w * h / 20) as usize, "{water} water pixels");
+    // Nothing else bluish: no depth shading, no reflected sky.
+    let other_blue = pixels
+        .iter()
+        .filter(|&&p| p != 0x9f9fff && (p & 0xff) > ((p >> 16) & 0xff) + 8)
+        .count();
+    assert_eq!(other_blue, 0);
+}
+
+/// The look's view is tipped back as the listing's code tips it, `xTh =
+/// -1.396` (80 degrees; the article's "-70 degree" is not what its code
+/// does), at its relief: a step back along the ground (`2 xc`) rises `2 xc
+/// cos xTh` on screen, a step up of the same size in the map's own heights
+/// `0.00217 z sin xTh` with `z` normalised as `NormalizeMap` does, as
+/// `CalcPoint3` has it. Our own oblique view keeps 70 degrees and the
+/// field's relief.
+#[test]
+fn the_looks_tilt_and_relief_are_the_listings() {
+    let f = field();
+    let rise = |s: &Settings| {
+        let facts = SceneFacts::of(&f, s, 1280, 960);
+        let cell = f.extent() / (f.size() - 1) as f32;
+        let o = facts.place(0.5, 0.5, 0.0);
+        // One grid step back, one grid step's length up.
+        let back = facts.place(0.5, 0.5 - 1.0 / (f.size() - 1) as f32, 0.0);
+        let up = facts.place(0.5, 0.5, cell);
+        ((o.y - back.y) / (o.y - up.y)) as f64
+    };
+    let listing = Listing::new(1280.0);
+    // A grid step up, in the field's units, in the listing's height units.
+    let cell = (f.extent() / (f.size() - 1) as f32) as f64;
+    let up = cell * 10000.0 * fmc_settings().height as f64 / f.min_max().1 as f64;
+    let (o, b, u) = (
+        listing.calc_point3(DVec3::new(8.0, 8.0, 0.0)),
+        listing.calc_point3(DVec3::new(8.0, 7.0, 0.0)),
+        listing.calc_point3(DVec3::new(8.0, 8.0, up)),
+    );
+    let ratio = (o.y - b.y) / (o.y - u.y);
+    let ours = rise(&fmc_settings());
+    assert!(
+        (ours / ratio - 1.0).abs() < 1e-4,
+        "{ours} vs the listing's {ratio}"
+    );
+    let seventy = rise(&settings());
+    let want = 70f64.to_radians().cos() / 70f64.to_radians().sin();
+    assert!((seventy - want).abs() < 1e-4, "{seventy} vs {want}");
+}

@@ -309,7 +309,8 @@ fn next_seed_is_the_set_one_or_a_fresh_one_that_fits_toml() {
     );
 }
 
-/// Each row of the key table reads and writes its own field and no other:
+/// Each row of the key table reads and writes its own field and no other
+/// (`look` also the keys its look sets, and only those):
 /// a new value written through a key reads back through it, and every
 /// other key still reads its default (each row carries its own accessors,
 /// so a row copied from its neighbour would show here).
@@ -350,10 +351,12 @@ fn every_key_writes_and_reads_only_its_own_field() {
         let mut s = defaults.clone();
         keys::apply(&mut s, key, &new).unwrap_or_else(|e| panic!("{}: {e}", key.name));
         assert_eq!(keys::get(&s, key), new, "{} does not read back", key.name);
+        // `look` moves exactly the keys its look gives values to (under
+        // "ours", every other key keeps its default).
         for other in KEYS.iter().filter(|o| o.name != key.name) {
             assert_eq!(
                 keys::get(&s, other),
-                keys::get(&defaults, other),
+                keys::under_look(s.look, other, keys::get(&defaults, other)),
                 "writing {} changed {}",
                 key.name,
                 other.name

@@ -81,10 +81,11 @@ fn a_value_written_differently_but_equal_is_kept_as_written() {
 #[test]
 fn every_key_round_trips_through_the_shipped_file() {
     use mountains::settings::{
-        Clouds, Generator, Monitors, Profile, Shading, Sun, ViewKind, WaterLine,
+        Clouds, Generator, Look, Monitors, Profile, Shading, Sun, ViewKind, WaterLine,
     };
     let s = Settings {
         seed: Some(u64::MAX),
+        look: Look::Essay,
         generator: Generator::Triangle,
         cragginess: 128,
         elevation: 999.5,

@@ -22,9 +22,9 @@ mod scene;
 mod shade;
 
 // The public paths from before the rooms (`render::palette`, ...) stay.
-pub use framing::{detail, view};
+pub use framing::{detail, turn, view};
 pub use scan::raster;
-pub use shade::{colour, dither, light, palette, shadow};
+pub use shade::{colour, dither, essay, facings, light, listing, palette, shadow};
 
 pub use damage::Damage;
 pub use frame::{Frame, Rect};

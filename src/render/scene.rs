@@ -6,7 +6,8 @@ use std::sync::Arc;
 use glam::Vec2;
 
 use super::framing::tops::{RowTops, finite};
-use super::framing::view::View;
+use super::framing::turn;
+use super::framing::view::{Oblique, View, listing_relief};
 use super::scan::raster::{Fixed2, to_fixed};
 use super::shade::clouds;
 use super::shade::colour::blend_packed;
@@ -18,7 +19,7 @@ use super::shade::shadow::{self, ShadowMap};
 use super::shade::sky::Sky;
 use super::shade::skylight::SkyLight;
 use super::shade::weather::Weather;
-use crate::settings::{ColorMode, Settings, Shading, ViewKind};
+use crate::settings::{ColorMode, Look, Settings, Shading, ViewKind};
 use crate::terrain::Heightfield;
 
 /// How faces are put on screen.
@@ -43,7 +44,9 @@ impl Style {
     /// The style a colour mode draws with (Ridges is handled elsewhere).
     pub(crate) fn of(mode: ColorMode) -> Self {
         match mode {
-            ColorMode::Sonar => Style::Sonar,
+            // FL3's Filled mode: Sonar's filled and outlined cells in
+            // its own colours (`Palette::fills`).
+            ColorMode::Sonar | ColorMode::Filled => Style::Sonar,
             ColorMode::Outline => Style::Outline,
             ColorMode::Mono => Style::Mono,
             _ => Style::Shaded,
@@ -71,6 +74,9 @@ pub(crate) struct Vert {
     pub colour: u32,
     /// Whether `lit`, `sky` and `haze` are worked out (see [`Scene::shade`]).
     pub shaded: bool,
+    /// Outside the land (the essay's turned square): cells touching it are
+    /// not drawn.
+    pub off: bool,
 }
 
 /// A field a scene draws: shared with a painter, or borrowed for one frame
@@ -131,6 +137,9 @@ pub(crate) struct Scene<'a> {
     /// Whether the field's lakes are drawn (the filled looks; Sonar and
     /// Outline draw the ground's mesh).
     lakes: bool,
+    /// Whether the field has points outside the land (NaN: the essay's
+    /// turned square), whose cells are left undrawn.
+    pub holes: bool,
     /// Under the classic light, the shear of the parallelogram the oblique
     /// view draws (grid steps left per row forward; 0 otherwise): seed
     /// 000's listing lights the faces of its parallelogram, not of a square.
@@ -148,6 +157,11 @@ impl<'a> Scene<'a> {
     pub(crate) fn new(field: FieldRef<'a>, settings: &Settings, width: u32, height: u32) -> Self {
         let style = Style::of(settings.color);
         let mut field = turned(field, settings.rotation);
+        let holes = settings.look == Look::Essay;
+        if holes {
+            let degrees = turn::essay_degrees(field.identity());
+            field = FieldRef::Shared(Arc::new(turn::turned_by(&field, degrees)));
+        }
         if matches!(style, Style::Sonar | Style::Outline) {
             field = legible(field, settings, width, height);
         }
@@ -172,14 +186,19 @@ impl<'a> Scene<'a> {
         });
         let size = field.size();
         let sky = backdrop(&palette, &view, style, height);
-        let haze = (style == Style::Shaded && settings.view != ViewKind::Oblique)
+        // The seed programs' looks have no air.
+        let haze = (style == Style::Shaded
+            && settings.view != ViewKind::Oblique
+            && settings.look == Look::Ours)
             .then(|| Haze::new(palette.sky().1));
         let ripples = (haze.is_some() && !palette.lighting().classic)
             .then(|| Ripples::new(palette.sky().1, &field));
-        // The looks with depth in colour; the classic looks keep their pixels.
+        // The looks with depth in colour; the classic looks and the seed
+        // programs' keep their pixels.
         let clean_edges = style == Style::Shaded
             && settings.view != ViewKind::Oblique
-            && !palette.lighting().classic;
+            && !palette.lighting().classic
+            && settings.look == Look::Ours;
         let smooth = clean_edges && settings.shading == Shading::Smooth;
         let normals = smooth.then(|| Normals::new(size, &rows, view.cell()));
         let eye = view.camera_ground().filter(|_| smooth);
@@ -197,8 +216,13 @@ impl<'a> Scene<'a> {
         let (split, sees_right, sees_front) = match view.camera_column() {
             Some(cx) => {
                 let split = cx.floor().clamp(0.0, cells as f32) as usize;
-                (split, cx > cells as f32, true)
+                // The essay draws the surface alone.
+                let sides = settings.look != Look::Essay;
+                (split, sides && cx > cells as f32, sides)
             }
+            // Seed 000's listing cuts no sides: below its front edge is
+            // the black window.
+            None if settings.look == Look::FractalMountainClimbing => (cells, false, false),
             None => (cells, true, true),
         };
         let listing_diagonal = view.camera_column().is_none();
@@ -225,6 +249,7 @@ impl<'a> Scene<'a> {
             rows,
             reflections,
             lakes,
+            holes,
             normal_shear,
             listing_diagonal,
             sees_right,
@@ -262,6 +287,7 @@ impl<'a> Scene<'a> {
                 p: to_fixed(p.x, p.y),
                 h,
                 w,
+                off: !row[x].is_finite(),
                 ..Vert::default()
             };
         });
@@ -405,7 +431,26 @@ fn framed(
     let lattice = (shared > 0 && settings.view != ViewKind::Oblique)
         .then(|| RowTops::of(&field.coarsened(shared)));
     let tops = lattice.as_ref().unwrap_or(&row_top).rows();
-    let view = View::fitted(settings.view, size, field.extent(), tops, width, height);
+    // Seed 000's look draws its parallelogram as its listing does: tipped
+    // 80 degrees, heights at its own relief.
+    let oblique = if settings.look == Look::FractalMountainClimbing {
+        let height = crate::settings::handles::HEIGHT.clamp(settings.height);
+        Oblique {
+            listing_tilt: true,
+            relief: listing_relief(height, field.extent(), field.max()),
+        }
+    } else {
+        Oblique::OURS
+    };
+    let view = View::fitted_oblique(
+        settings.view,
+        oblique,
+        size,
+        field.extent(),
+        tops,
+        width,
+        height,
+    );
     // Sonar and Outline draw every line of their (already thinned) grid.
     let rows = if shaded {
         super::framing::rows::kept_rows(size, &view)

@@ -171,7 +171,7 @@ mod tests {
         let Kind::Choice(names) = COLOR.row().kind else {
             panic!("color is a choice")
         };
-        assert_eq!(names.len(), 12);
+        assert_eq!(names.len(), 13);
         for _ in 0..names.len() - 1 {
             c = next_color(c);
             assert!(!seen.contains(&c));

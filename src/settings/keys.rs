@@ -6,9 +6,10 @@
 use serde::Deserialize;
 use serde::de::IntoDeserializer;
 
+use super::looks::{self, Preset};
 use super::{
-    Clouds, ColorMode, Detail, Generator, MAX_GRID_EXPONENT, MIN_GRID_EXPONENT, Monitors, Profile,
-    Settings, Shading, Sun, ViewKind, WaterLine,
+    Clouds, ColorMode, Detail, Generator, Look, MAX_GRID_EXPONENT, MIN_GRID_EXPONENT, Monitors,
+    Profile, Settings, Shading, Sun, ViewKind, WaterLine,
 };
 
 /// A value as written by a user, before it is checked against a key.
@@ -146,11 +147,18 @@ pub struct Key {
     write: fn(&mut Settings, &Key, &Value) -> Option<()>,
 }
 
+const LOOKS: &[&str] = &[
+    "ours",
+    "fractal-mountain-climbing",
+    "mountain-terrain",
+    "fl3",
+    "essay",
+];
 const GENERATORS: &[&str] = &["square", "diamond", "triangle", "brownian"];
 const PROFILES: &[&str] = &["slope", "peak", "bay", "massif"];
 const COLORS: &[&str] = &[
-    "natural", "gray", "red", "green", "blue", "yellow", "cyan", "purple", "sonar", "outline",
-    "mono", "ridges",
+    "natural", "gray", "red", "green", "blue", "yellow", "cyan", "purple", "sonar", "filled",
+    "outline", "mono", "ridges",
 ];
 const VIEWS: &[&str] = &["vista", "oblique", "perspective"];
 const WATER_LINES: &[&str] = &["coast", "generator"];
@@ -309,6 +317,20 @@ pub const KEYS: &[Key] = &[
         Value::Bool(true),
         "basins above the sea filled to their lowest lip and drawn as lakes"
     ),
+    // Not a `row!`: choosing a look also moves the keys that follow it.
+    Key {
+        name: "look",
+        kind: Kind::Choice(LOOKS),
+        change: Change::Remake,
+        doc: "whose picture: ours, or a seed program's generator, view, light and colours \
+              (a key set to anything but its default overrides the look)",
+        default: || Value::Str("ours".into()),
+        read: |s| Field::value(&s.look),
+        write: |s, key, value| {
+            switch_look(s, Field::parse(key, value)?);
+            Some(())
+        },
+    },
     row!(
         color,
         Kind::Choice(COLORS),
@@ -434,6 +456,7 @@ impl Settings {
     fn unset() -> Self {
         Settings {
             seed: None,
+            look: Look::Ours,
             generator: Generator::Square,
             cragginess: 0,
             elevation: 0.0,
@@ -489,6 +512,10 @@ pub fn known(name: &str) -> Result<&'static Key, String> {
 
 /// Checks `value` against `key` and stores it in `settings`; on refusal,
 /// says why in words that name the allowed values.
+///
+/// Under a look other than ours, a key given its default takes the look's
+/// value instead: the look is a layer of defaults under the keys, whatever
+/// order they come in (see [`follow_look`]).
 pub fn apply(settings: &mut Settings, key: &Key, value: &Value) -> Result<(), String> {
     (key.write)(settings, key, value).ok_or_else(|| {
         format!(
@@ -496,7 +523,54 @@ pub fn apply(settings: &mut Settings, key: &Key, value: &Value) -> Result<(), St
             value.shown(),
             key.kind.allowed()
         )
+    })?;
+    follow_look(settings, key);
+    Ok(())
+}
+
+/// The value `look` gives `key` in place of its default, if it gives one.
+pub fn look_value(look: Look, key: &Key) -> Option<Value> {
+    looks::preset(look, key.name).map(|p| match p {
+        Preset::Int(i) => Value::Int(i),
+        Preset::Float(x) => Value::Float(x),
+        Preset::Bool(b) => Value::Bool(b),
+        Preset::Str(s) => Value::Str(s.into()),
     })
+}
+
+/// What `value` of `key` means under `look`: the look's value where
+/// `value` is the key's default and the look gives one, else `value`.
+pub fn under_look(look: Look, key: &Key, value: Value) -> Value {
+    match look_value(look, key) {
+        Some(v) if value == (key.default)() => v,
+        _ => value,
+    }
+}
+
+/// Gives `key` the look's value if it holds its own default: the rule
+/// that puts a look under every key a person sets. A key set to its
+/// default under a look therefore shows the look's value (to keep the
+/// default there, choose the look "ours").
+pub fn follow_look(settings: &mut Settings, key: &Key) {
+    let now = (key.read)(settings);
+    let wanted = under_look(settings.look, key, now.clone());
+    if wanted != now {
+        let _ = (key.write)(settings, key, &wanted);
+    }
+}
+
+/// Changes the look: keys holding the old look's values return to their
+/// defaults, then every key at its default takes the new look's value.
+fn switch_look(settings: &mut Settings, look: Look) {
+    for key in KEYS {
+        if look_value(settings.look, key).is_some_and(|v| v == (key.read)(settings)) {
+            let _ = (key.write)(settings, key, &(key.default)());
+        }
+    }
+    settings.look = look;
+    for key in KEYS {
+        follow_look(settings, key);
+    }
 }
 
 /// The current value of `key` in `settings`, as it would be written in TOML.
@@ -624,7 +698,7 @@ macro_rules! choice_fields {
 }
 
 choice_fields!(
-    Generator, Profile, WaterLine, ColorMode, Sun, Shading, ViewKind, Monitors
+    Look, Generator, Profile, WaterLine, ColorMode, Sun, Shading, ViewKind, Monitors
 );
 
 mod erased {

@@ -90,11 +90,16 @@ pub fn merge(text: &str, settings: &Settings) -> Result<String, ParseError> {
         })?;
         let table = doc.as_table_mut();
         match table.get_mut(key.name) {
-            Some(item) if current_value(item, key).as_ref() != Some(&wanted) => {
+            // A value the file holds is left alone if it means the wanted
+            // one under the look (a default the look replaces).
+            Some(item)
+                if current_value(item, key).map(|v| keys::under_look(settings.look, key, v))
+                    != Some(wanted.clone()) =>
+            {
                 replace_value(item, &wanted);
             }
             Some(_) => {}
-            None if wanted != keys::get(&defaults, key) => {
+            None if wanted != keys::under_look(settings.look, key, keys::get(&defaults, key)) => {
                 let gap = added || !(text.is_empty() || text.ends_with("\n\n"));
                 append_key(&mut doc, key, &wanted, gap);
                 added = true;

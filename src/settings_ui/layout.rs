@@ -16,7 +16,7 @@ pub const WINDOW_H: u32 = 620;
 const MARGIN: u32 = 8;
 const PANEL_W: u32 = 372;
 /// Height of one settings row, logical pixels.
-pub const ROW_H: u32 = 18;
+pub const ROW_H: u32 = 17;
 const BUTTON_H: u32 = 22;
 const BUTTON_W: u32 = 84;
 const TOOL_W: u32 = 64;
@@ -83,7 +83,7 @@ impl Button {
 /// Section headings, placed before the row of the named key.
 pub const SECTIONS: &[(&str, &str)] = &[
     ("seed", "The mountain"),
-    ("color", "The look"),
+    ("look", "The look"),
     ("auto_redraw", "The slide show"),
 ];
 

@@ -198,7 +198,9 @@ fn subdivide_all<P: Put>(
     put: &P,
 ) -> Option<Extremes> {
     let size = field.size();
-    let noise = noise::Noise::new(seed, p.exponent);
+    let noise = noise::Noise::new(seed, p.exponent)
+        .pseudo_normal(p.pseudo_normal)
+        .still_edges(p.still_edges);
     let heights = field.heights_mut();
     match p.generator {
         Generator::Square | Generator::Diamond => {

@@ -18,6 +18,11 @@ use super::splitmix::{GOLDEN, mix};
 pub(crate) struct Noise {
     key: u64,
     shift: u32,
+    /// FL3's pseudo-normal values: the mean of two uniform ones.
+    pseudo_normal: bool,
+    /// The last column and row of the grid, when its border's values are
+    /// all 0 (the essay's undisplaced edges).
+    still_border: Option<usize>,
 }
 
 impl Noise {
@@ -28,6 +33,32 @@ impl Noise {
             // GOLDEN from sharing row keys.
             key: mix(seed ^ 0x6D6F_756E_7461_696E),
             shift: MAX_EXPONENT.saturating_sub(exponent),
+            pseudo_normal: false,
+            still_border: None,
+        }
+    }
+
+    /// These values, or (`on`) 0 on the grid's border: the essay's "points on
+    /// the edge of the original square" with no displacement, so its edges
+    /// run straight between its corners, and its corners (all at the base in
+    /// the essay) start at 0.
+    pub(crate) fn still_edges(self, on: bool) -> Self {
+        let last = 1usize << (MAX_EXPONENT - self.shift);
+        Noise {
+            still_border: on.then_some(last),
+            ..self
+        }
+    }
+
+    /// These values, or (`on`) FL3's pseudo-normal ones: "Rand :=
+    /// Random(Envelope) + Random(Envelope) - Envelope", the sum of two
+    /// uniform numbers, here halved so they keep the range `[-1, 1)`. Their
+    /// density is a triangle, highest at 0 (a "sawtooth" in the article's
+    /// word, "vaguely like a normal distribution").
+    pub(crate) fn pseudo_normal(self, on: bool) -> Self {
+        Noise {
+            pseudo_normal: on,
+            ..self
         }
     }
 
@@ -48,6 +79,24 @@ impl Noise {
         scale: f32,
         out: &mut [f32],
     ) {
+        self.fill_values(y, first, stride, scale, out);
+        if let Some(last) = self.still_border {
+            if y == 0 || y == last {
+                out.fill(0.0);
+            } else {
+                for (i, o) in out.iter_mut().enumerate() {
+                    let x = first + i * stride;
+                    if x == 0 || x == last {
+                        *o = 0.0;
+                    }
+                }
+            }
+        }
+    }
+
+    /// [`Noise::fill_row`]'s values before the border is stilled.
+    #[inline]
+    fn fill_values(&self, y: usize, first: usize, stride: usize, scale: f32, out: &mut [f32]) {
         let row_key = self.row_key(y);
         let first = ((first as u64) << self.shift) as u32;
         let stride = ((stride as u64) << self.shift) as u32;
@@ -58,6 +107,17 @@ impl Noise {
         // The hash input `row_key + column * GOLDEN32`, stepped by addition.
         let mut input = row_key.wrapping_add(first.wrapping_mul(GOLDEN32));
         let increment = stride.wrapping_mul(GOLDEN32);
+        if self.pseudo_normal {
+            for o in out.iter_mut() {
+                // The second number from the same input, hashed apart.
+                let a = (lowbias32(input) as i32) >> 8;
+                let b = (lowbias32(input ^ SECOND) as i32) >> 8;
+                // Halved in integers: 24 bits, exact in an f32.
+                *o = ((a + b) >> 1) as f32 * step;
+                input = input.wrapping_add(increment);
+            }
+            return;
+        }
         for o in out.iter_mut() {
             let bits = lowbias32(input);
             *o = ((bits as i32) >> 8) as f32 * step;
@@ -71,6 +131,10 @@ impl Noise {
         (mix(self.key.wrapping_add((gy + 1).wrapping_mul(GOLDEN))) >> 32) as u32
     }
 }
+
+/// Flips the hash input for a point's second number (FL3's pseudo-normal
+/// values), so its two numbers are independent.
+const SECOND: u32 = 0x5bd1_e995;
 
 /// 2^32 / golden ratio, odd: spreads consecutive columns over the hash input.
 const GOLDEN32: u32 = 0x9E37_79B9;
@@ -102,6 +166,29 @@ mod tests {
         }
         let mean = sum / (257.0 * 257.0);
         assert!(mean.abs() < 0.01, "mean {mean} is biased");
+    }
+
+    #[test]
+    fn pseudo_normal_values_stay_in_range_and_leave_ours_alone() {
+        let ours = Noise::new(42, 8);
+        let fl3 = ours.pseudo_normal(true);
+        let (mut middle, mut n) = (0, 0);
+        for y in 0..257 {
+            for x in 0..257 {
+                let v = fl3.at(x, y);
+                assert!((-1.0..1.0).contains(&v), "{v} out of range");
+                middle += usize::from(v.abs() < 0.2);
+                n += 1;
+            }
+        }
+        // A triangle density puts 36% within 0.2 of 0 (a uniform one 20%).
+        let share = middle as f64 / n as f64;
+        assert!((0.33..0.39).contains(&share), "{share}");
+        assert_eq!(
+            ours.pseudo_normal(false).at(5, 9).to_bits(),
+            ours.at(5, 9).to_bits()
+        );
+        assert_ne!(fl3.at(5, 9).to_bits(), ours.at(5, 9).to_bits());
     }
 
     #[test]

@@ -6,7 +6,7 @@ use super::{SQUARE_EXTENT, TRIANGLE_EXTENT};
 use crate::settings::handles::{
     CLIFFS, CONTOUR, CRAGGINESS, ELEVATION, EROSION, HEIGHT, HURST, ROUGHNESS, SEA_LEVEL,
 };
-use crate::settings::{Generator, Profile, Settings, WaterLine};
+use crate::settings::{Generator, Look, Profile, Settings, WaterLine};
 
 /// Validated generator parameters.
 #[derive(Debug, Clone, Copy)]
@@ -25,6 +25,12 @@ pub(crate) struct Params {
     pub(crate) water_line: WaterLine,
     pub(crate) lakes: bool,
     pub(crate) cliffs: f32,
+    /// FL3's pseudo-normal deviations (`look = "fl3"`): the sum of two
+    /// uniform numbers, where ours are one.
+    pub(crate) pseudo_normal: bool,
+    /// The essay's square with its outer edges undisplaced (`look =
+    /// "essay"`): the border's points keep their ends' mean.
+    pub(crate) still_edges: bool,
 }
 
 impl Params {
@@ -46,6 +52,8 @@ impl Params {
             water_line: s.water_line,
             lakes: s.lakes,
             cliffs: CLIFFS.clamp(s.cliffs),
+            pseudo_normal: s.look == Look::Fl3,
+            still_edges: s.look == Look::Essay,
         }
     }
 

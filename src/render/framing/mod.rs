@@ -6,5 +6,6 @@ pub(super) mod camera;
 pub mod detail;
 pub(super) mod rows;
 pub(super) mod tops;
+pub mod turn;
 pub mod view;
 pub(super) mod vista;

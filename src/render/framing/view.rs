@@ -15,6 +15,45 @@ use crate::settings::ViewKind;
 /// degrees about the x axis (seed 000's `xTh = -1.396`). Written out rather
 /// than computed so no platform's `sin` can move a pixel.
 const TILT_SIN_COS: (f32, f32) = (0.939_692_6, 0.342_020_15);
+/// Sine and cosine of seed 000's tilt as its code has it, `xTh = -1.396`
+/// radians: 80 degrees, where the article's words say 70 (docs/classics.md).
+/// `look = "fractal-mountain-climbing"` draws with it, and its light
+/// (`sun = "classic"`) is worked through with it.
+const LISTING_TILT_SIN_COS: (f32, f32) = (0.984_762, 0.173_907_57);
+/// How the oblique view is drawn: ours, or as seed 000's listing draws it
+/// (`look = "fractal-mountain-climbing"`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Oblique {
+    /// Tipped back by the listing's 80 degrees rather than our 70.
+    pub listing_tilt: bool,
+    /// Heights drawn this many times their own (1 for ours): the listing's
+    /// relief against its grid (see [`listing_relief`]).
+    pub relief: f32,
+}
+
+impl Oblique {
+    /// Our own oblique view.
+    pub const OURS: Oblique = Oblique {
+        listing_tilt: false,
+        relief: 1.0,
+    };
+}
+
+/// `CalcPoint3`'s relief per Height menu step: a column is `2 xc` wide
+/// with `xc = 0.4073 * 2^(maxIter - nIter)` (`maxIter = 9`), so the map
+/// is `0.8146 * 512` wide whatever the iterations; heights are `0.00217 z`
+/// with the highest point at `normalHeight = 10000 * height`.
+const LISTING_PEAK_PER_WIDTH: f32 = 0.00217 * 10_000.0 / (2.0 * 0.4073 * 512.0);
+
+/// How many times its own heights the listing would draw a field `extent`
+/// wide whose highest point is `highest`, at Height menu step `height`: its
+/// peak stands `0.052 * height` of the map's width high. 1 for a field
+/// with no land.
+pub fn listing_relief(height: u32, extent: f32, highest: f32) -> f32 {
+    let k = LISTING_PEAK_PER_WIDTH * height as f32 * extent / highest;
+    if k.is_finite() && k > 0.0 { k } else { 1.0 }
+}
+
 /// Seed 000's shear: each row forward moves half a step to the left, which
 /// turns the square into a parallelogram seen from the front right.
 const SHEAR: f32 = 0.5;
@@ -32,6 +71,8 @@ pub struct View {
     size: usize,
     /// Sine and cosine of the tilt.
     tilt: (f32, f32),
+    /// The oblique view's heights drawn this many times their own.
+    relief: f32,
 }
 
 /// A view's projection along one grid row ([`View::along_row`]).
@@ -44,6 +85,7 @@ pub(crate) struct RowView {
     scale: f32,
     offset: Vec2,
     tilt: (f32, f32),
+    relief: f32,
 }
 
 impl RowView {
@@ -55,7 +97,7 @@ impl RowView {
             Some(cam) => cam.project(x, z),
             None => {
                 let (sin, cos) = self.tilt;
-                Vec2::new(x - SHEAR * self.y, self.y * cos - z * sin)
+                Vec2::new(x - SHEAR * self.y, self.y * cos - z * self.relief * sin)
             }
         };
         self.offset + self.scale * unscaled
@@ -88,6 +130,21 @@ impl View {
         width: u32,
         height: u32,
     ) -> Self {
+        Self::fitted_oblique(kind, Oblique::OURS, size, extent, row_top, width, height)
+    }
+
+    /// [`View::fitted`], the oblique view tipped back by seed 000's code's
+    /// 80 degrees and its relief where `oblique` asks (the other views
+    /// ignore it).
+    pub fn fitted_oblique(
+        kind: ViewKind,
+        oblique: Oblique,
+        size: usize,
+        extent: f32,
+        row_top: &[f32],
+        width: u32,
+        height: u32,
+    ) -> Self {
         let steps = size.saturating_sub(1).max(1) as f32;
         let zmax = row_top
             .iter()
@@ -105,7 +162,12 @@ impl View {
             offset: Vec2::ZERO,
             camera: None,
             size,
-            tilt: TILT_SIN_COS,
+            tilt: if oblique.listing_tilt {
+                LISTING_TILT_SIN_COS
+            } else {
+                TILT_SIN_COS
+            },
+            relief: oblique.relief,
         };
         match kind {
             ViewKind::Vista => view.frame_vista(steps, row_top, width as f32, height as f32),
@@ -193,7 +255,7 @@ impl View {
             Some(cam) => cam.project(Vec3::new(x, y, z)),
             None => {
                 let (sin, cos) = self.tilt;
-                Vec2::new(x - SHEAR * y, y * cos - z * sin)
+                Vec2::new(x - SHEAR * y, y * cos - z * self.relief * sin)
             }
         }
     }
@@ -216,6 +278,7 @@ impl View {
             scale: self.scale,
             offset: self.offset,
             tilt: self.tilt,
+            relief: self.relief,
         }
     }
 
@@ -250,6 +313,16 @@ impl View {
         let cam = self.camera.as_ref()?;
         let u = (Vec2::new(x, y) - self.offset) / self.scale;
         cam.sight(u).try_normalize()
+    }
+
+    /// How many times their own the oblique view draws heights (1 but in
+    /// seed 000's look; 1 in the views with a camera).
+    pub fn relief(&self) -> f32 {
+        if self.camera.is_some() {
+            1.0
+        } else {
+            self.relief
+        }
     }
 
     /// Width of one grid step in height units.

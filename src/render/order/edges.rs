@@ -15,6 +15,7 @@ use crate::render::scan::raster::{
     Clip, Fixed2, SUBPIXEL, centre_box, draw_line, draw_line_end, fill_triangle,
 };
 use crate::render::scene::{Scene, Vert};
+use crate::settings::ColorMode;
 
 /// Which of a cell's edges it draws.
 struct CellEdges {
@@ -56,6 +57,9 @@ impl Scene<'_> {
             if !self.may_touch(canvas.clip(), [tl.0, tr.0, bl.0, br.0], sonar) {
                 continue;
             }
+            if self.holes && [tl.0, tr.0, bl.0, br.0].iter().any(|v| v.off) {
+                continue;
+            }
             let own = self.owned_edges(s, x);
             if sonar {
                 self.black_cell(canvas, [tl.0, tr.0, bl.0, br.0], rightward);
@@ -83,6 +87,42 @@ impl Scene<'_> {
         }
         if !sonar {
             self.outline_skirts(canvas, s, top, bottom);
+        } else if self.palette.mode() == ColorMode::Filled {
+            self.filled_skirts(canvas, s, top, bottom);
+        }
+    }
+
+    /// Filled (FL3): "filled vertical quadrilaterals" from the right edge's
+    /// points and (in the last strip) the front's down to sea level, in the
+    /// land's fill and outlined by the pen, which "obscure the undersides of
+    /// the landscape surface". A point under the sea stands at its foot.
+    fn filled_skirts(&self, canvas: &mut Canvas, s: usize, top: &[Vert], bottom: &[Vert]) {
+        let cells = self.cells();
+        let (land, _) = self.palette.fills();
+        let pen = self.palette.outline_land();
+        let mut quad = |a: &Vert, ga: Vec2, b: &Vert, gb: Vec2| {
+            if a.h <= 0.0 && b.h <= 0.0 {
+                return;
+            }
+            let (fa, fb) = (self.project_sea(ga), self.project_sea(gb));
+            let pa = if a.h > 0.0 { a.p } else { fa };
+            let pb = if b.h > 0.0 { b.p } else { fb };
+            let clip = *canvas.clip();
+            for v in [[pa, pb, fb], [pa, fb, fa]] {
+                fill_triangle(v, &clip, |y, x0, x1| canvas.span_mut(y, x0, x1).fill(land));
+            }
+            for (p, q) in [(pa, fa), (pb, fb), (fa, fb), (pa, pb)] {
+                self.line(canvas, p, q, pen);
+            }
+        };
+        let at = |x: usize, y: usize| Vec2::new(x as f32, y as f32);
+        if self.sees_right {
+            quad(&top[cells], at(cells, s), &bottom[cells], at(cells, s + 1));
+        }
+        if self.sees_front && s + 1 == cells {
+            for x in 0..cells {
+                quad(&bottom[x], at(x, s + 1), &bottom[x + 1], at(x + 1, s + 1));
+            }
         }
     }
 
@@ -135,21 +175,28 @@ impl Scene<'_> {
         }
     }
 
-    /// Sonar: both triangles of a cell in black.
+    /// Sonar: both triangles of a cell in black; Filled: each in FL3's
+    /// flat land colour, or its water colour when no corner is above the sea.
     fn black_cell(&self, canvas: &mut Canvas, [tl, tr, bl, br]: [&Vert; 4], rightward: bool) {
         let clip = *canvas.clip();
         if centre_box([tl.p, tr.p, bl.p, br.p], &clip).is_none() {
             return;
         }
-        let mut fill = |v: [Fixed2; 3]| {
-            fill_triangle(v, &clip, |y, x0, x1| canvas.span_mut(y, x0, x1).fill(0));
+        let (land, water) = self.palette.fills();
+        let mut fill = |v: [&Vert; 3]| {
+            let wet = v.iter().all(|v| v.h <= 0.0);
+            let colour = if wet { water } else { land };
+            let p = v.map(|v| v.p);
+            fill_triangle(p, &clip, |y, x0, x1| {
+                canvas.span_mut(y, x0, x1).fill(colour)
+            });
         };
         if rightward && !self.listing_diagonal {
-            fill([tl.p, tr.p, bl.p]);
-            fill([tr.p, br.p, bl.p]);
+            fill([tl, tr, bl]);
+            fill([tr, br, bl]);
         } else {
-            fill([tl.p, tr.p, br.p]);
-            fill([tl.p, br.p, bl.p]);
+            fill([tl, tr, br]);
+            fill([tl, br, bl]);
         }
     }
 

@@ -36,6 +36,8 @@ struct Corner {
     haze: u32,
     /// Under smooth shading, the land's colour here.
     colour: u32,
+    /// Outside the land (see `Vert::off`).
+    off: bool,
 }
 
 impl Corner {
@@ -49,6 +51,7 @@ impl Corner {
             sky: v.sky,
             haze: v.haze,
             colour: v.colour,
+            off: v.off,
         }
     }
 }
@@ -144,6 +147,10 @@ impl Scene<'_> {
     fn fill_cell(&self, canvas: &mut Canvas, rows: &mut StripRows, x: usize, rightward: bool) {
         let (top, bottom) = (&rows.top, &rows.bottom);
         let v = [&top[x], &top[x + 1], &bottom[x], &bottom[x + 1]];
+        // A cell wholly outside the land (the essay's turned square).
+        if self.holes && v.iter().all(|v| v.off) {
+            return;
+        }
         // A cell crossing the water line puts its shore points on the
         // water's plane, possibly outside its corners' box: never skip those.
         let crosses = v.iter().any(|v| v.h < v.w) && v.iter().any(|v| v.h > v.w);
@@ -161,6 +168,18 @@ impl Scene<'_> {
             None if rightward && !self.listing_diagonal => [[&tl, &tr, &bl], [&tr, &br, &bl]],
             None => [[&tl, &tr, &br], [&tl, &br, &bl]],
         };
+        if self.holes && [&tl, &tr, &bl, &br].iter().any(|c| c.off) {
+            // On the edge of the land: only its faces with no corner outside.
+            let faces = if canvas.keeps_first() {
+                [near, far]
+            } else {
+                [far, near]
+            };
+            for face in faces.into_iter().filter(|f| f.iter().all(|c| !c.off)) {
+                self.fill_face(canvas, face);
+            }
+            return;
+        }
         // The painter's order, written out: the hottest call of a frame.
         if canvas.keeps_first() {
             self.fill_face(canvas, near);
@@ -260,6 +279,7 @@ impl Scene<'_> {
             sky: a.sky + (b.sky - a.sky) * f,
             haze: (a.haze as f32 + (b.haze as f32 - a.haze as f32) * f) as u32,
             colour: mix_packed(a.colour, b.colour, f),
+            off: false,
         }
     }
 
@@ -269,7 +289,10 @@ impl Scene<'_> {
     fn face_normal(&self, c: &Face) -> Vec3 {
         let cell = self.view.cell();
         let shear = self.normal_shear;
-        let world = |k: &Corner| Vec3::new((k.g.x - shear * k.g.y) * cell, -k.g.y * cell, k.h);
+        // The heights as the view draws them (seed 000's relief in its look).
+        let relief = self.view.relief();
+        let world =
+            |k: &Corner| Vec3::new((k.g.x - shear * k.g.y) * cell, -k.g.y * cell, k.h * relief);
         let (p0, p1, p2) = (world(c[0]), world(c[1]), world(c[2]));
         let n = (p1 - p0).cross(p2 - p0);
         let n = if n.z < 0.0 { -n } else { n };

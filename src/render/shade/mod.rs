@@ -6,8 +6,11 @@
 pub(super) mod clouds;
 pub mod colour;
 pub mod dither;
+pub mod essay;
+pub mod facings;
 pub(super) mod haze;
 pub mod light;
+pub mod listing;
 pub(super) mod normals;
 pub mod palette;
 pub(super) mod ripples;

@@ -20,8 +20,11 @@
 //! brightness, stays in the filter's hue family, and snow turns a pale tint.
 
 use super::colour::{Rgb, mix, mix_packed, pack, scale_packed, scale_packed3, to_u32, unpack};
+use super::essay;
+use super::facings;
 use super::light::Lighting;
-use crate::settings::{ColorMode, Settings, Sun};
+use super::listing;
+use crate::settings::{ColorMode, Look, Settings, Sun};
 use crate::terrain::Heightfield;
 use glam::Vec3;
 
@@ -41,6 +44,13 @@ const WHITENING: f32 = 0.6;
 
 /// How much of the sky's horizon colour water reflects (beyond the classic light).
 const WATER_REFLECTS: f32 = 0.12;
+
+/// FL3's land and water colours ("outlines 'land' triangles in green and
+/// water triangles in blue"), and its pen in Filled mode: `Canvas.Polygon`
+/// outlines with the canvas's pen, Delphi's default `clBlack`.
+const FL3_GREEN: u32 = 0x0000_d000;
+const FL3_BLUE: u32 = 0x0030_60ff;
+const FL3_PEN: u32 = 0;
 
 /// Natural colours, shaded brightness 1 (full sun).
 mod natural {
@@ -82,6 +92,18 @@ pub struct Palette {
     /// stretch; 1 and 0 otherwise), offset in 0..=255 units.
     gain: f32,
     offset: f32,
+    /// Seed 000's HSV ramp for the land (`look =
+    /// "fractal-mountain-climbing"` in the natural colours).
+    listing: Option<listing::Ramp>,
+    /// Mountain Terrain 3.0's colour preference (`look =
+    /// "mountain-terrain"` under a filter): land is it ANDed with a facing's
+    /// darkness, water pure blue.
+    preference: Option<u32>,
+    /// The essay's green by its sun (`look = "essay"` in the natural colours).
+    essay: bool,
+    /// The background of a seed program's look: black windows, the
+    /// essay's white page.
+    backdrop: Option<u32>,
 }
 
 impl Palette {
@@ -117,7 +139,18 @@ impl Palette {
             deepest,
             reflected: (!lighting.classic).then_some(lighting.horizon),
         };
-        let (water, depth_scale) = water_table(mode, &waters, gain, offset);
+        let listing = (settings.look == Look::FractalMountainClimbing
+            && mode == ColorMode::Natural)
+            .then(|| listing::Ramp::new(settings.height, top));
+        let preference = (settings.look == Look::MountainTerrain)
+            .then(|| facings::preference(mode))
+            .flatten();
+        let (water, depth_scale) = match listing {
+            // The listing's one light blue, unshaded.
+            Some(_) if !settings.relative_depth => (vec![listing::WATER].into(), 0.0),
+            _ if preference.is_some() => mountain_terrain_water(settings.relative_depth),
+            _ => water_table(mode, &waters, gain, offset),
+        };
         Palette {
             coloured: !lighting.classic && mode == ColorMode::Natural,
             lighting,
@@ -130,6 +163,14 @@ impl Palette {
             skirt: finish(mode, natural::EARTH),
             gain,
             offset,
+            listing,
+            preference,
+            essay: settings.look == Look::Essay && mode == ColorMode::Natural,
+            backdrop: match settings.look {
+                Look::FractalMountainClimbing | Look::MountainTerrain => Some(0),
+                Look::Essay => Some(essay::BACKGROUND),
+                _ => None,
+            },
         }
     }
 
@@ -168,6 +209,16 @@ impl Palette {
     /// sky's light on it scales with that share (the classic light ignores it).
     #[inline]
     pub fn land_in(&self, mean_height: f32, normal: Vec3, lit: f32, sky: f32) -> u32 {
+        if let Some(ramp) = &self.listing {
+            let i = luminance(self.lighting.on(normal, lit));
+            return ramp.colour(mean_height, f64::from(i));
+        }
+        if let Some(preference) = self.preference {
+            return facings::brush(preference, normal);
+        }
+        if self.essay {
+            return essay::colour(normal);
+        }
         // Clamped as floats (NaN stays NaN and casts to bin 0).
         let h = (mean_height * self.height_scale + jitter(mean_height))
             .clamp(0.0, (HEIGHT_BINS - 1) as f32) as i32 as usize;
@@ -183,6 +234,12 @@ impl Palette {
     /// random or stepped colour would draw streaks along the grid.
     #[inline]
     pub fn land_at_point(&self, height: f32, normal: Vec3, lit: f32, sky: f32) -> u32 {
+        if let Some(preference) = self.preference {
+            return facings::brush(preference, normal);
+        }
+        if self.essay {
+            return essay::colour(normal);
+        }
         let h = (height * self.height_scale).clamp(0.0, (HEIGHT_BINS - 1) as f32) as i32 as usize;
         // Between the middles of the two nearest steepness classes.
         let s = ((1.0 - normal.z) * self.steep_scale - 0.5).clamp(0.0, (STEEP_BINS - 1) as f32);
@@ -217,7 +274,7 @@ impl Palette {
     #[inline]
     pub fn water(&self, depth: f32) -> u32 {
         let i = (depth * self.depth_scale) as usize;
-        self.water[i.min(DEPTH_BINS - 1)]
+        self.water[i.min(self.water.len() - 1)]
     }
 
     /// Colour of a skirt face (the cut side of the map) facing `normal`.
@@ -226,14 +283,21 @@ impl Palette {
     /// all heights: painters give one height per skirt column, so any
     /// height banding would show as vertical stripes.
     pub fn skirt(&self, normal: Vec3) -> u32 {
+        if let Some(preference) = self.preference {
+            // Mountain Terrain's "solid color rectangle" down to sea level.
+            return preference & facings::darkness(facings::Facing::Towards(1));
+        }
         pack(self.skirt, self.brightness(normal, 1.0), self.offset)
     }
 
     /// The sky behind the mountain, top and horizon colours, filtered
     /// (black in Mono, Sonar and Outline).
     pub fn sky(&self) -> (u32, u32) {
+        if let Some(backdrop) = self.backdrop {
+            return (backdrop, backdrop);
+        }
         match self.mode {
-            ColorMode::Mono | ColorMode::Sonar | ColorMode::Outline => (0, 0),
+            ColorMode::Mono | ColorMode::Sonar | ColorMode::Filled | ColorMode::Outline => (0, 0),
             mode => {
                 let l = &self.lighting;
                 let [top, bottom] = [l.zenith, l.horizon].map(|c| to_u32(filter(mode, c)));
@@ -248,7 +312,8 @@ impl Palette {
     /// disagreed with theirs).
     pub fn outline_land(&self) -> u32 {
         match self.mode {
-            ColorMode::Outline => 0x0000_d000,
+            ColorMode::Outline => FL3_GREEN,
+            ColorMode::Filled => FL3_PEN,
             _ => 0x00ff_ffff,
         }
     }
@@ -257,8 +322,20 @@ impl Palette {
     /// blue for Outline.
     pub fn outline_water(&self) -> u32 {
         match self.mode {
-            ColorMode::Outline => 0x0030_60ff,
+            ColorMode::Outline => FL3_BLUE,
+            ColorMode::Filled => FL3_PEN,
             _ => 0x00ff_ffff,
+        }
+    }
+
+    /// The flat fills of a land and a water cell in the outlined modes:
+    /// black in Sonar; FL3's green and blue in Filled (no shading: "Rendered
+    /// mode in turn differs from Filled mode in basing each triangle's
+    /// color on the angle it presents to a ray from the sun").
+    pub fn fills(&self) -> (u32, u32) {
+        match self.mode {
+            ColorMode::Filled => (FL3_GREEN, FL3_BLUE),
+            _ => (0, 0),
         }
     }
 
@@ -311,7 +388,7 @@ fn tint(mode: ColorMode) -> Option<Rgb> {
 /// Applies the colour filter of `mode` to a natural colour (0..=1).
 fn filter(mode: ColorMode, c: Rgb) -> Rgb {
     match mode {
-        ColorMode::Sonar | ColorMode::Outline => [0.0; 3],
+        ColorMode::Sonar | ColorMode::Filled | ColorMode::Outline => [0.0; 3],
         _ => match tint(mode) {
             Some(t) => {
                 // Darker than the tint: the tint scaled down, at the same
@@ -460,6 +537,15 @@ fn water_table(mode: ColorMode, w: &Waters, gain: f32, offset: f32) -> (Box<[u32
         0.0
     };
     (table, scale)
+}
+
+/// Mountain Terrain's water by depth, one bin a height unit: pure blue,
+/// less the depth under Relative Depth.
+fn mountain_terrain_water(relative: bool) -> (Box<[u32]>, f32) {
+    let table = (0..=facings::MAX_DARKENING)
+        .map(|d| facings::water(d as f32, relative))
+        .collect();
+    (table, if relative { 1.0 } else { 0.0 })
 }
 
 /// Relative steepness of the field's steep faces: the 90th percentile of
