@@ -187,7 +187,7 @@ impl<'a> Scene<'a> {
         let normals = (smooth || reflections).then(|| Normals::new(size, &rows, view.cell()));
         let eye = view.camera_ground().filter(|_| smooth);
         let cells = size - 1;
-        let mirror = view.eye().filter(|_| reflections).map(|eye| {
+        let mirror = view.eye().filter(|_| reflections).and_then(|eye| {
             let light = palette.lighting();
             Mirror::new(&field, eye, view.cell(), light.sun, light.direct)
         });

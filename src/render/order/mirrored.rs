@@ -1,14 +1,17 @@
 //! What a water face mirrors: the land its reflected sight line meets,
 //! shaded as the scene shades that land's points, or the sky it escapes
-//! to; mixed into the water's own colour by the mirror's share, with the
-//! sun's glitter where the line points near the sun.
+//! to; mixed into the water's own colour by the mirror's share, weaker
+//! where the wind's streaks are strong, with the sun's glitter where the
+//! line points near the sun.
 
 use glam::{Vec2, Vec3};
 
 use crate::render::scene::Scene;
 use crate::render::shade::colour::blend_packed;
-use crate::render::shade::mirror::Mirror;
+use crate::render::shade::mirror::{Mirror, Seen};
 
+/// How much the strongest streak (ripple 1) takes from the mirror.
+const STREAK: f32 = 0.6;
 /// How much finer than the streaks the glittering facets are, across and
 /// along the view (world-sized, as the streaks are).
 const FACETS: (f32, f32) = (7.3, 2.9);
@@ -25,21 +28,22 @@ impl Scene<'_> {
         level: f32,
         ripple: f32,
     ) -> u32 {
-        let Some(r) = mirror.reflect(g, level, ripple) else {
+        let seen = |seen: Seen| match seen {
+            Seen::Land { at, height } => self.mirrored_land(at, height, level),
+            Seen::Sky(dir) => self.sky_towards(dir),
+        };
+        let Some(look) = mirror.look(&self.field, g, level, ripple, seen) else {
             return water;
         };
-        let seen = match mirror.trace(&self.field, r.from, r.dir) {
-            Some((p, h)) => self.mirrored_land(p, h, level),
-            None => self.sky_towards(r.dir),
-        };
-        let out = blend_packed(water, seen, (r.share * 256.0) as u32);
-        let Some(ripples) = &self.ripples else {
+        let share = look.share * (1.0 - STREAK * ripple.abs());
+        let out = blend_packed(water, look.colour, (share * 256.0) as u32);
+        let (Some(ripples), Some(dir)) = (&self.ripples, look.near_sun) else {
             return out;
         };
         let (fx, fy) = FACETS;
         let sparkle = ripples.value(g.x * fx, g.y * fy);
         let sideways = ripples.value(g.x * fy + 31.0, g.y * fx + 7.0);
-        match mirror.glint(r.dir, sparkle, sideways) {
+        match mirror.glint(dir, sparkle, sideways) {
             Some((sun, strength)) => blend_packed(out, sun, (strength * 256.0) as u32),
             None => out,
         }

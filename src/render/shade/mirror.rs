@@ -1,14 +1,28 @@
 //! The water's mirror: the sight line to a point of the water, reflected
-//! off its surface (tilted by the wind's streaks) and followed over the
-//! heightfield to the land it meets, or out to the sky; how much of that
-//! the water shows (Fresnel), and the sun's glitter where the reflected
-//! line points near the sun.
+//! off its surface and followed over the heightfield to the land it
+//! meets, or out to the sky; how much of that the water shows (Fresnel,
+//! broken up by the wind's streaks, which also tilt the line), and where
+//! the reflected line points near the sun, for its glitter.
 //!
-//! Everything here is in world units (x right, y towards the front, z up,
-//! as the camera's), a function of the scene alone: never of pixels or of
-//! the order faces are drawn in.
+//! A line reflected off level water keeps its direction across the ground,
+//! so it runs in the vertical plane through the eye and the point it left
+//! the water at. The ground under a fan of such planes, one profile each
+//! (a grid row per sample, out from the eye), is all a line needs: made the
+//! first time a line needs it. Lines off the sea all come from the eye's
+//! mirror image below sea level, so a profile also holds, for each of its
+//! samples, the first sample a line off the sea there meets (one sweep
+//! from the back), and what the water there mirrors, worked out the first
+//! time a face asks. A lake's lines are followed along the profile.
+//!
+//! Everything here is a function of the scene (the field, the eye, the
+//! light), never of pixels or of the order faces are drawn in: a cached
+//! sample is the same whoever works it out first.
+//!
+//! World units: x right, y towards the front, z up (the camera's); grid
+//! positions in grid steps.
 
 use std::sync::OnceLock;
+use std::sync::atomic::{AtomicU32, Ordering};
 
 use glam::{Vec2, Vec3};
 
@@ -16,231 +30,304 @@ use super::colour::{Rgb, to_u32};
 use crate::render::framing::tops::finite;
 use crate::terrain::Heightfield;
 
-/// Samples of a profile skipped at once where the line passes over all of
-/// them, and the coarser skip above that.
+/// Samples of a profile skipped at once where a lake's line passes over
+/// all of them, and the coarser skip above that.
 const BLOCK: usize = 16;
 const SPAN: usize = 256;
-/// Grid steps between a profile's samples.
-const STEP: f32 = 0.75;
+/// Grid steps between two profiles of the fan at the grid's back edge:
+/// the reflections' finest detail across the view.
+const FAN_STEP: f32 = 3.0;
+/// Grid rows between two samples of a profile: the reflections' finest
+/// detail along the view (the sky and far land are mirrored across many
+/// rows of near water).
+const STRIDE: usize = 2;
 /// Water's reflectance looking straight down (Schlick's `F0`).
 const F0: f32 = 0.02;
 /// The mirror's share is Schlick's term times this, at most [`MOST`]:
 /// stylised, so that it reads at the vista's angles.
-const GAIN: f32 = 1.6;
+const GAIN: f32 = 2.2;
 /// The most the water mirrors (some of its own colour always shows).
-const MOST: f32 = 0.8;
-/// How much the strongest streak (ripple 1) takes from the mirror.
-const STREAK: f32 = 0.7;
+const MOST: f32 = 0.85;
 /// How far the streaks tilt the reflected line up or down (its slope per
 /// unit of ripple): wind on the water smears reflections up and down.
-const TILT: f32 = 0.045;
+const TILT: f32 = 0.008;
+/// Cosine of the widest angle from the sun at which a reflected line may
+/// glint (its facets tilt it further, see [`Mirror::glint`]).
+const NEAR_SUN: f32 = 0.95;
 /// The tilt of the sparkling facets that throw the sun's glitter.
-const GLINT_TILT: f32 = 0.12;
+const GLINT_TILT: f32 = 0.25;
 /// Cosine of the widest angle between a facet's reflected line and the sun
 /// that still glints.
-const GLINT_COS: f32 = 0.9975;
+const GLINT_COS: f32 = 0.995;
 /// Only facets whose sparkle exceeds this glint (they sparkle apart).
-const SPARKLE: f32 = 0.15;
+const SPARKLE: f32 = 0.2;
+/// A cached sample not yet worked out (no packed look is this: its share
+/// is at most [`SHARE_MAX`]).
+const EMPTY: u32 = u32::MAX;
+/// The largest share a look packs (7 bits, below all ones).
+const SHARE_MAX: u32 = 126;
+/// No sample met.
+const NONE: u32 = u32::MAX;
 
-/// The reflected sight line at one point of the water.
+/// What a reflected line meets.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Reflection {
-    /// Where it leaves the water (world units).
-    pub from: Vec3,
-    /// Its direction (unit, pointing up).
-    pub dir: Vec3,
-    /// How much of what it meets the water shows, 0..=1.
+pub(crate) enum Seen {
+    /// The ground at grid position `at`, height `height`.
+    Land { at: Vec2, height: f32 },
+    /// Nothing: the sky along this direction.
+    Sky(Vec3),
+}
+
+/// What the water at one point shows of what it mirrors.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Look {
+    /// The colour mirrored.
+    pub colour: u32,
+    /// How much of it the water shows, 0..=1 (before the streaks).
     pub share: f32,
+    /// The reflected line's direction (unit, up), where it points near
+    /// the sun (it may glint there).
+    pub near_sun: Option<Vec3>,
 }
 
 /// The mirror of one scene's water.
-///
-/// A line reflected off level water keeps the direction it had across the
-/// ground, so it runs in the vertical plane through the eye and the point
-/// it left the water at. The ground under each such plane (a fan of them
-/// around the eye, each a profile of heights out from the eye, made the
-/// first time a line needs it) is all a line has to be followed over: a
-/// march along one row of numbers, skipping spans it passes over.
 #[derive(Debug)]
 pub(crate) struct Mirror {
     eye: Vec3,
     /// Width of a grid step in height units.
     cell: f32,
-    /// The eye over the ground, in grid steps.
+    /// The eye over the ground, in grid steps (in front of the grid).
     origin: Vec2,
-    /// The fan: the angle towards the grid's middle, the first direction's
-    /// angle from it, the angle between two, and each direction's profile.
-    mid: f32,
+    /// The grid's last row and column.
+    last: usize,
+    /// The fan: the first profile's spread (grid steps across per step
+    /// back), the spread between two, and the profiles.
     first: f32,
     apart: f32,
     profiles: Vec<OnceLock<Profile>>,
     /// Towards the sun, in world units.
     sun: Vec3,
-    /// The sun's direct colour, 0..=1.
-    sun_colour: Rgb,
+    /// The sun's direct colour, packed.
+    sun_colour: u32,
 }
 
-/// The ground under one direction of the fan, out from the eye.
-#[derive(Debug, Default)]
+/// The ground under one profile of the fan: sample `k` lies on grid row
+/// `last - STRIDE k`, `u0 + STRIDE k` steps back from the eye (`u0`: the
+/// grid's near edge).
+#[derive(Debug)]
 struct Profile {
-    /// How far from the eye the first sample lies, in grid steps (samples
-    /// are [`STEP`] apart).
-    start: f32,
+    /// Grid steps across per step back.
+    spread: f32,
     heights: Vec<f32>,
     /// The highest of each [`BLOCK`] and each [`SPAN`] samples.
     block_top: Vec<f32>,
     span_top: Vec<f32>,
+    /// For each sample, the first sample a line off the sea there meets
+    /// ([`NONE`]: it leaves the grid).
+    sea_hit: Vec<u32>,
+    /// What the sea at each sample mirrors, packed ([`EMPTY`] until asked).
+    sea_look: Vec<AtomicU32>,
 }
 
 impl Mirror {
     /// The mirror of `field` seen from `eye` (world units), a grid step
     /// `cell` units wide, lit by `sun` (the palette's frame: y towards the
-    /// back) of colour `sun_colour`.
-    pub(crate) fn new(field: &Heightfield, eye: Vec3, cell: f32, sun: Vec3, sun_colour: Rgb) -> Self {
-        let cell = if cell.is_finite() && cell > 0.0 { cell } else { 1.0 };
+    /// back) of colour `sun_colour`. `None` unless the eye stands in front
+    /// of the grid, above the sea (as the vista's and the perspective's do).
+    pub(crate) fn new(field: &Heightfield, eye: Vec3, cell: f32, sun: Vec3, sun_colour: Rgb) -> Option<Self> {
+        let cell = Some(cell).filter(|c| c.is_finite() && *c > 0.0)?;
         let origin = Vec2::new(eye.x, eye.y) / cell;
-        let last = field.size().saturating_sub(1) as f32;
-        let corners = [(0.0, 0.0), (last, 0.0), (0.0, last), (last, last)]
-            .map(|(x, y)| Vec2::new(x, y) - origin);
-        let inside = (0.0..=last).contains(&origin.x) && (0.0..=last).contains(&origin.y);
-        // Angles are measured from the direction to the grid's middle: when
-        // the grid lies to one side of the eye, none of them wraps.
-        let mid = angle(Vec2::splat(0.5 * last) - origin);
-        let (first, end) = if inside || !mid.is_finite() {
-            (-std::f32::consts::PI, std::f32::consts::PI)
-        } else {
-            let turns = corners.map(|c| wrapped(angle(c) - mid));
-            let lo = turns.iter().copied().fold(f32::INFINITY, f32::min);
-            let hi = turns.iter().copied().fold(f32::NEG_INFINITY, f32::max);
-            (lo, hi)
-        };
-        let mid = if mid.is_finite() { mid } else { 0.0 };
-        // A grid step apart at the far corner.
-        let far = corners.iter().map(|c| c.length()).fold(1.0, f32::max);
-        let count = (((end - first) * far) as usize).clamp(2, 1 << 16);
-        Mirror {
+        let last = field.size().checked_sub(1).filter(|&l| l > 0)?;
+        let (near, far) = (origin.y - last as f32, origin.y);
+        if !(near > 0.0 && eye.z > 0.0 && origin.x.is_finite()) {
+            return None;
+        }
+        // Every spread that reaches the grid, [`FAN_STEP`] apart at the back.
+        let spread = |x: f32, u: f32| (x - origin.x) / u;
+        let ends = [spread(0.0, near), spread(0.0, far), spread(last as f32, near), spread(last as f32, far)];
+        let first = ends.iter().copied().fold(f32::INFINITY, f32::min);
+        let end = ends.iter().copied().fold(f32::NEG_INFINITY, f32::max);
+        let apart = FAN_STEP / far;
+        let count = (((end - first) / apart).ceil() as usize + 1).clamp(2, 1 << 20);
+        Some(Mirror {
             eye,
             cell,
             origin,
-            mid,
+            last,
             first,
-            apart: (end - first) / (count - 1) as f32,
+            apart,
             profiles: (0..count).map(|_| OnceLock::new()).collect(),
             sun: Vec3::new(sun.x, -sun.y, sun.z).normalize_or(Vec3::Z),
-            sun_colour,
-        }
+            sun_colour: to_u32(sun_colour),
+        })
     }
 
-    /// The sight line to the water at grid position `g` on a surface at
-    /// height `level`, reflected off a surface tilted by `ripple` (-1..1).
-    /// `None` where the eye does not look down at it.
-    pub(crate) fn reflect(&self, g: Vec2, level: f32, ripple: f32) -> Option<Reflection> {
-        let from = Vec3::new(g.x * self.cell, g.y * self.cell, level);
-        let d = (from - self.eye).try_normalize()?;
-        let down = -d.z;
-        if !(down > 0.0) {
+    /// What the water at grid position `g`, on a surface at `level`, with
+    /// a streak of `ripple` (-1..1, tilting it), mirrors: `colour` says the
+    /// colour of what a line meets. `None` where the eye does not look down
+    /// at the water there.
+    pub(crate) fn look(
+        &self,
+        field: &Heightfield,
+        g: Vec2,
+        level: f32,
+        ripple: f32,
+        colour: impl Fn(Seen) -> u32,
+    ) -> Option<Look> {
+        let rise = self.eye.z - level;
+        let u = self.origin.y - g.y;
+        if !(rise > 0.0 && u > 0.0) {
             return None;
         }
-        let flat = Vec2::new(d.x, d.y).length();
-        // The streaks tilt the water, raising or lowering the line.
-        let up = (down + TILT * ripple * flat).max(0.2 * down);
-        let dir = Vec3::new(d.x, d.y, up).try_normalize()?;
+        let i = ((g.x - self.origin.x) / u - self.first) / self.apart;
+        let profile = self.profile(field, i.round().clamp(0.0, (self.profiles.len() - 1) as f32) as usize);
+        // The streak tilts the water: the line leaves as one off level
+        // water nearer or farther would.
+        let slope = rise / u;
+        let tilted = (slope + TILT * self.cell * ripple).max(0.2 * slope);
+        let u = rise / tilted;
+        let j = ((u - self.near()) * (1.0 / STRIDE as f32)).round();
+        if !(j >= 0.0) {
+            return None;
+        }
+        let j = (j as usize).min(profile.heights.len() - 1);
+        let packed = if level != 0.0 {
+            let met = profile.lake(self, j, level, rise);
+            self.pack(met, profile, j, rise, &colour)
+        } else {
+            match profile.sea_look[j].load(Ordering::Relaxed) {
+                EMPTY => {
+                    let met = match profile.sea_hit[j] {
+                        NONE => None,
+                        k => Some((k as usize, profile.heights[k as usize])),
+                    };
+                    let packed = self.pack(met, profile, j, rise, &colour);
+                    profile.sea_look[j].store(packed, Ordering::Relaxed);
+                    packed
+                }
+                cached => cached,
+            }
+        };
+        Some(Look {
+            colour: packed & 0x00ff_ffff,
+            share: ((packed >> 24) & 0x7f) as f32 * (1.0 / SHARE_MAX as f32),
+            near_sun: (packed >> 31 != 0).then(|| self.direction(profile.spread, rise / u)),
+        })
+    }
+
+    /// How far the grid's near edge lies in front of the eye, in grid steps.
+    fn near(&self) -> f32 {
+        self.origin.y - self.last as f32
+    }
+
+    /// How far sample `k` of a profile lies in front of the eye, in grid steps.
+    fn back(&self, k: usize) -> f32 {
+        self.near() + (STRIDE * k) as f32
+    }
+
+    /// The profile `i` of the fan, made if it is not yet.
+    fn profile(&self, field: &Heightfield, i: usize) -> &Profile {
+        self.profiles[i].get_or_init(|| Profile::under(field, self, self.first + self.apart * i as f32))
+    }
+
+    /// The unit direction of a line along a profile of `spread`, rising
+    /// `slope` height units per step back.
+    fn direction(&self, spread: f32, slope: f32) -> Vec3 {
+        Vec3::new(spread * self.cell, -self.cell, slope).normalize()
+    }
+
+    /// The land at sample `k` of `profile`, `height` high.
+    fn land(&self, profile: &Profile, k: usize, height: f32) -> Seen {
+        let y = (self.last - STRIDE * k) as f32;
+        let x = self.origin.x + profile.spread * self.back(k);
+        Seen::Land { at: Vec2::new(x, y), height }
+    }
+
+    /// What a line off the water at sample `j` of `profile`, `rise` below
+    /// the eye, shows, packed: the colour of what it `met` (a sample and
+    /// its height; `None`: the sky), its share, whether it points near the
+    /// sun.
+    fn pack(
+        &self,
+        met: Option<(usize, f32)>,
+        profile: &Profile,
+        j: usize,
+        rise: f32,
+        colour: &impl Fn(Seen) -> u32,
+    ) -> u32 {
+        let u = self.back(j);
+        let dir = self.direction(profile.spread, rise / u);
+        let seen = match met {
+            Some((k, height)) => self.land(profile, k, height),
+            None => Seen::Sky(dir),
+        };
+        // The sight line down to the water is the reflected one, mirrored.
+        let down = dir.z;
         let schlick = F0 + (1.0 - F0) * (1.0 - down).powi(5);
-        let share = (GAIN * schlick).min(MOST) * (1.0 - STREAK * ripple.abs());
-        Some(Reflection { from, dir, share })
+        let share = ((GAIN * schlick).min(MOST) * SHARE_MAX as f32) as u32;
+        let near = dir.dot(self.sun) > NEAR_SUN;
+        (colour(seen) & 0x00ff_ffff) | share.min(SHARE_MAX) << 24 | u32::from(near) << 31
     }
 
-    /// Where a line from `from` (world units) rising as `dir` does (a
-    /// reflected line: away from the eye across the ground) first meets
-    /// the ground of `field`: the grid position and the height, or `None`
-    /// where it leaves the grid or rises above all the land.
-    pub(crate) fn trace(&self, field: &Heightfield, from: Vec3, dir: Vec3) -> Option<(Vec2, f32)> {
-        let run = Vec2::new(dir.x, dir.y).length();
-        if !(run > 1e-6 && dir.z > 0.0) {
-            return None;
-        }
-        let away = Vec2::new(from.x, from.y) / self.cell - self.origin;
-        let i = ((wrapped(angle(away) - self.mid) - self.first) / self.apart).round();
-        if !(i >= 0.0 && i < self.profiles.len() as f32) {
-            return None;
-        }
-        let along = self.along(i as usize);
-        let profile = self.profiles[i as usize].get_or_init(|| Profile::under(field, self.origin, along));
-        let s0 = away.length();
-        // Height gained per grid step along the ground.
-        let rise = dir.z / run * self.cell;
-        let s = profile.meets(s0, from.z, rise)?;
-        Some((self.origin + along * s, from.z + rise * (s - s0)))
-    }
-
-    /// The unit direction across the ground of the fan's `i`th profile.
-    fn along(&self, i: usize) -> Vec2 {
-        let a = self.mid + self.first + self.apart * i as f32;
-        Vec2::new(a.sin(), -a.cos())
-    }
-
-    /// The sun's glitter on a facet at the end of `dir` tilted by `sparkle`
-    /// and `sideways` (-1..1, the fine ripples): the sun's colour, and how
-    /// strongly it shows (0..=1).
+    /// The sun's glitter on a facet whose line would be `dir` were it level,
+    /// tilted by `sparkle` and `sideways` (-1..1, the fine ripples): the
+    /// sun's colour, and how strongly it shows (0..=1).
     pub(crate) fn glint(&self, dir: Vec3, sparkle: f32, sideways: f32) -> Option<(u32, f32)> {
         if sparkle < SPARKLE {
             return None;
         }
-        let tilted = Vec3::new(
-            dir.x + GLINT_TILT * sideways,
-            dir.y,
-            dir.z + GLINT_TILT * (sparkle - 0.5),
-        );
+        let tilted = Vec3::new(dir.x + GLINT_TILT * sideways, dir.y, dir.z + GLINT_TILT * (sparkle - 0.5));
         let cos = tilted.try_normalize()?.dot(self.sun);
         if cos <= GLINT_COS {
             return None;
         }
         let t = ((cos - GLINT_COS) / (1.0 - GLINT_COS)).min(1.0);
-        let strength = t * t * ((sparkle - SPARKLE) / (1.0 - SPARKLE)).min(1.0).sqrt();
-        Some((to_u32(self.sun_colour), strength))
+        let strength = t.sqrt() * ((sparkle - SPARKLE) / (1.0 - SPARKLE)).min(1.0).sqrt();
+        Some((self.sun_colour, strength))
     }
 }
 
-/// The angle of ground direction `v`, from the back (-y) towards the right.
-fn angle(v: Vec2) -> f32 {
-    v.x.atan2(-v.y)
-}
-
-/// `a` turned into -pi..pi.
-fn wrapped(a: f32) -> f32 {
-    use std::f32::consts::{PI, TAU};
-    (a + PI).rem_euclid(TAU) - PI
-}
-
 impl Profile {
-    /// The ground of `field` under the line from `origin` along unit
-    /// direction `along` (grid steps), where it crosses the grid.
-    fn under(field: &Heightfield, origin: Vec2, along: Vec2) -> Self {
-        let last = field.size().saturating_sub(1) as f32;
-        let Some((enter, leave)) = crossing(origin, along, last) else {
-            return Profile::default();
+    /// The ground of `field` under the profile of `spread` of `mirror`'s fan.
+    fn under(field: &Heightfield, mirror: &Mirror, spread: f32) -> Self {
+        let last = mirror.last;
+        let size = last + 1;
+        let samples = last / STRIDE + 1;
+        let all = field.heights();
+        // Off the grid's sides, no land.
+        let mut heights = vec![f32::NEG_INFINITY; samples];
+        for (k, h) in heights.iter_mut().enumerate() {
+            let y = last - STRIDE * k;
+            let x = mirror.origin.x + spread * mirror.back(k);
+            if x >= 0.0 && x <= last as f32 {
+                let x0 = (x as usize).min(last - 1);
+                let i = y * size + x0;
+                let (a, b) = (finite(all[i]), finite(all[i + 1]));
+                *h = a + (b - a) * (x - x0 as f32);
+            }
+        }
+        let tops = |n: usize| {
+            heights.chunks(n).map(|c| c.iter().copied().fold(f32::NEG_INFINITY, f32::max)).collect()
         };
-        let start = enter;
-        let count = ((leave - enter) / STEP) as usize + 1;
-        let heights: Vec<f32> = (0..count)
-            .map(|k| ground(field, origin + along * (start + k as f32 * STEP)))
-            .collect();
-        let tops = |n: usize| heights.chunks(n).map(|c| c.iter().copied().fold(f32::NEG_INFINITY, f32::max)).collect();
+        let sea_hit = sea_hits(&heights, mirror.near(), STRIDE as f32, mirror.eye.z);
         Profile {
-            start,
+            spread,
             block_top: tops(BLOCK),
             span_top: tops(SPAN),
+            sea_hit,
+            sea_look: (0..samples).map(|_| AtomicU32::new(EMPTY)).collect(),
             heights,
         }
     }
 
-    /// How far from the eye (grid steps) a line leaving height `z0` at
-    /// `s0` steps and rising `rise` a step first is below the ground.
-    fn meets(&self, s0: f32, z0: f32, rise: f32) -> Option<f32> {
-        let z = |k: usize| z0 + rise * (self.start + k as f32 * STEP - s0);
+    /// The first sample past `j` a line off a lake at `level` there meets,
+    /// rising `rise` (the eye over the lake) over the steps from the eye to
+    /// `j`: the sample and its height.
+    fn lake(&self, mirror: &Mirror, j: usize, level: f32, rise: f32) -> Option<(usize, f32)> {
+        let uj = mirror.back(j);
+        let z = |k: usize| level + rise * (mirror.back(k) / uj - 1.0);
         let n = self.heights.len();
-        // The first sample past the point the line leaves.
-        let mut k = ((s0 - self.start) / STEP).floor().max(0.0) as usize + 1;
+        let mut k = j + 1;
         while k < n {
             let zk = z(k);
             if k % SPAN == 0 && self.span_top[k / SPAN] < zk {
@@ -248,10 +335,7 @@ impl Profile {
             } else if k % BLOCK == 0 && self.block_top[k / BLOCK] < zk {
                 k += BLOCK;
             } else if self.heights[k] >= zk {
-                // Between the last sample above the ground and this one.
-                let (above, below) = (z(k - 1) - self.heights[k - 1], self.heights[k] - zk);
-                let f = above / (above + below).max(1e-9);
-                return Some(self.start + (k as f32 - 1.0 + f.clamp(0.0, 1.0)) * STEP);
+                return Some((k, self.heights[k]));
             } else {
                 k += 1;
             }
@@ -260,41 +344,46 @@ impl Profile {
     }
 }
 
-/// The distances (grid steps) along the line from `p` along unit `u` at
-/// which it enters and leaves the grid `0..=last`, if it crosses it ahead.
-fn crossing(p: Vec2, u: Vec2, last: f32) -> Option<(f32, f32)> {
-    let (mut enter, mut leave) = (0.0f32, f32::INFINITY);
-    for (c, d) in [(p.x, u.x), (p.y, u.y)] {
-        if d.abs() < 1e-9 {
-            if !(0.0..=last).contains(&c) {
-                return None;
+/// For each sample of a profile of `heights` (sample `k` is `u0 + step k`
+/// steps back from the eye, which stands `eye` above the sea), the first
+/// sample past it that a line off the sea there meets, or [`NONE`].
+///
+/// The line off sample `j` rises `eye / u_j` a step, so it is below the
+/// ground at a farther `k` when `u_k <= u_j (1 + h_k / eye)`: when
+/// `c_k = u_k eye / (eye + h_k)` is at most `u_j` (land below the sea
+/// never meets it). Swept from the back, a sample farther than a nearer
+/// one of no greater `c` is never the first met, so the candidates left
+/// grow in `c` towards the front, and the first met is the nearest whose
+/// `c` is at most `u_j`: found by halving.
+fn sea_hits(heights: &[f32], u0: f32, step: f32, eye: f32) -> Vec<u32> {
+    let n = heights.len();
+    let mut hits = vec![NONE; n];
+    // (c, k), c growing from the bottom of the stack to its top.
+    let mut stack: Vec<(f32, u32)> = Vec::new();
+    for j in (0..n).rev() {
+        let uj = u0 + step * j as f32;
+        if let Some(k) = Some(j + 1).filter(|&k| k < n && heights[k] > 0.0) {
+            let c = (u0 + step * k as f32) * eye / (eye + heights[k]);
+            while stack.last().is_some_and(|&(top, _)| top >= c) {
+                stack.pop();
             }
+            stack.push((c, k as u32));
+        }
+        // Only lines off the sea are asked for. The candidates met are the
+        // bottom ones (c <= u_j); the nearest of them is the last.
+        if heights[j] > 0.0 {
             continue;
         }
-        let (a, b) = ((0.0 - c) / d, (last - c) / d);
-        enter = enter.max(a.min(b));
-        leave = leave.min(a.max(b));
+        let met = match stack.last() {
+            Some(&(c, k)) if c <= uj => Some(k),
+            _ => stack
+                .partition_point(|&(c, _)| c <= uj)
+                .checked_sub(1)
+                .map(|i| stack[i].1),
+        };
+        hits[j] = met.unwrap_or(NONE);
     }
-    (enter < leave).then_some((enter, leave))
-}
-
-/// The ground's height at grid position `p`, bilinear between points.
-#[inline]
-fn ground(field: &Heightfield, p: Vec2) -> f32 {
-    let size = field.size();
-    let last = size - 1;
-    let (x, y) = (p.x.max(0.0), p.y.max(0.0));
-    let (x0, y0) = (
-        (x as usize).min(last.saturating_sub(1)),
-        (y as usize).min(last.saturating_sub(1)),
-    );
-    let (fx, fy) = ((x - x0 as f32).min(1.0), (y - y0 as f32).min(1.0));
-    let heights = field.heights();
-    let at = |x: usize, y: usize| finite(heights[y * size + x]);
-    let (x1, y1) = ((x0 + 1).min(last), (y0 + 1).min(last));
-    let top = at(x0, y0) + (at(x1, y0) - at(x0, y0)) * fx;
-    let bottom = at(x0, y1) + (at(x1, y1) - at(x0, y1)) * fx;
-    top + (bottom - top) * fy
+    hits
 }
 
 #[cfg(test)]
@@ -317,77 +406,88 @@ mod tests {
     const EYE: Vec3 = Vec3::new(32.0, 100.0, 10.0);
 
     fn mirror(field: &Heightfield) -> Mirror {
-        Mirror::new(field, EYE, 1.0, Vec3::new(0.0, 1.0, 0.2), [1.0; 3])
+        Mirror::new(field, EYE, 1.0, Vec3::new(0.0, 1.0, 0.2), [1.0; 3]).unwrap()
     }
 
-    /// A line leaving the water at (`x`, `y`) away from the eye, rising
-    /// `slope` per unit across the ground.
-    fn away(x: f32, y: f32, slope: f32) -> (Vec3, Vec3) {
-        let from = Vec3::new(x, y, 0.0);
-        let run = (Vec2::new(x, y) - Vec2::new(EYE.x, EYE.y)).normalize();
-        (from, Vec3::new(run.x, run.y, slope).normalize())
+    /// What the water at (`x`, `y`) on `level` mirrors: the land's grid
+    /// position, or `None` for the sky.
+    fn seen(m: &Mirror, f: &Heightfield, x: f32, y: f32, level: f32) -> Option<Vec2> {
+        let found = std::cell::Cell::new(None);
+        m.look(f, Vec2::new(x, y), level, 0.0, |s| {
+            if let Seen::Land { at, .. } = s {
+                found.set(Some(at));
+            }
+            0
+        })
+        .expect("the eye looks down at the water");
+        found.get()
     }
 
     #[test]
-    fn a_line_towards_a_tower_meets_it_and_others_do_not() {
+    fn the_sea_before_a_tower_mirrors_it_and_the_sea_beside_it_the_sky() {
+        let f = tower(32, 10, 10.0);
+        let m = mirror(&f);
+        let at = seen(&m, &f, 32.0, 40.0, 0.0).expect("the tower");
+        assert!((at.y - 12.0).abs() < 1.5 && (at.x - 32.0).abs() < 1.5, "{at}");
+        assert!(seen(&m, &f, 10.0, 40.0, 0.0).is_none(), "beside the tower");
+        // Behind the tower, looking away from it.
+        assert!(seen(&m, &f, 32.0, 5.0, 0.0).is_none(), "behind the tower");
+        // Close to the eye the line rises too steeply to meet it.
+        assert!(seen(&m, &f, 32.0, 63.0, 0.0).is_none(), "at the near edge");
+    }
+
+    #[test]
+    fn a_lake_mirrors_as_the_sea_does() {
+        // Water 3 high before the tower: the same tower, seen from it.
         let f = tower(32, 10, 30.0);
         let m = mirror(&f);
-        let (from, dir) = away(32.0, 40.0, 0.1);
-        let (g, h) = m.trace(&f, from, dir).expect("meets the tower");
-        // Between the tower's front row (12) and the next (13): 30 - 31 t = 0.1 (28 - t).
-        assert!((g.y - 12.88).abs() < 0.3 && (g.x - 32.0).abs() < 0.1, "{g}");
-        assert!((h - 2.7).abs() < 0.3, "{h}");
-        let (from, dir) = away(10.0, 40.0, 0.1);
-        assert!(m.trace(&f, from, dir).is_none(), "beside the tower");
-        // Steeper than the tower's top seen from here: over it.
-        let (from, dir) = away(32.0, 40.0, 1.2);
-        assert!(m.trace(&f, from, dir).is_none(), "over the tower");
-        // Beyond the tower, looking away from it.
-        let (from, dir) = away(32.0, 5.0, 0.01);
-        assert!(m.trace(&f, from, dir).is_none(), "behind the tower");
+        let at = seen(&m, &f, 32.0, 40.0, 3.0).expect("the tower");
+        assert!((at.y - 12.0).abs() < 1.5, "{at}");
+        assert!(seen(&m, &f, 10.0, 40.0, 3.0).is_none());
     }
 
     #[test]
-    fn skipping_spans_misses_no_tower() {
-        // Low towers anywhere along the line: the skips must not miss them.
-        for (x, y) in [(32, 16), (32, 3), (36, 33), (20, 8), (32, 47)] {
-            let f = tower(x, y, 5.0);
-            let m = mirror(&f);
-            let from = Vec2::new(x as f32, y as f32 + 12.0);
-            let (from, dir) = away(from.x, from.y, 0.05);
-            let hit = m.trace(&f, from, dir);
-            assert!(hit.is_some(), "tower at ({x}, {y}) missed");
+    fn the_sweep_finds_the_first_sample_each_line_meets() {
+        // Against following each line off the sea sample by sample, on
+        // rough profiles.
+        let mut state = 12345u32;
+        let mut next = || {
+            state = state.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            (state >> 8) as f32 / (1 << 24) as f32
+        };
+        for _ in 0..50 {
+            let heights: Vec<f32> = (0..200).map(|_| 30.0 * next() - 12.0).collect();
+            let (u0, eye, step) = (5.0 + 40.0 * next(), 2.0 + 20.0 * next(), 0.5 + 2.0 * next());
+            let hits = sea_hits(&heights, u0, step, eye);
+            let u = |k: usize| u0 + step * k as f32;
+            for j in (0..heights.len()).filter(|&j| heights[j] <= 0.0) {
+                let z = |k: usize| eye * (u(k) / u(j) - 1.0);
+                let want = (j + 1..heights.len()).find(|&k| heights[k] > 0.0 && heights[k] >= z(k));
+                let got = (hits[j] != NONE).then_some(hits[j] as usize);
+                // Rounding may decide a graze either way.
+                if want != got {
+                    let k = want.or(got).unwrap();
+                    assert!((heights[k] - z(k)).abs() < 1e-3, "sample {j}: {want:?} != {got:?}");
+                }
+            }
         }
     }
 
     #[test]
-    fn the_fan_covers_the_grid_from_an_eye_on_any_side() {
-        let f = tower(32, 32, 20.0);
-        for eye in [Vec3::new(32.0, 100.0, 10.0), Vec3::new(-40.0, -30.0, 10.0), Vec3::new(32.0, 32.0, 40.0)] {
-            let m = Mirror::new(&f, eye, 1.0, Vec3::Z, [1.0; 3]);
-            // From the water on the far side of the tower from the eye...
-            let back = (Vec2::new(32.0, 32.0) - Vec2::new(eye.x, eye.y)).normalize_or(Vec2::X);
-            let p = Vec2::new(32.0, 32.0) - back * 10.0;
-            let p = if eye.x == 32.0 && eye.y == 32.0 { Vec2::new(22.0, 32.0) } else { p };
-            let run = (p - Vec2::new(eye.x, eye.y)).normalize();
-            let dir = Vec3::new(run.x, run.y, 0.05).normalize();
-            // ...a line away from the eye only meets it if it heads for it.
-            let hit = m.trace(&f, Vec3::new(p.x, p.y, 0.0), dir);
-            let heads = (Vec2::new(32.0, 32.0) - p).dot(run) > 0.0;
-            assert_eq!(hit.is_some(), heads, "eye {eye}");
-        }
-    }
-
-    #[test]
-    fn the_mirror_is_stronger_at_grazing_angles_and_weaker_in_streaks() {
+    fn the_mirror_is_stronger_at_grazing_angles() {
         let f = tower(32, 10, 5.0);
         let m = mirror(&f);
-        let near = m.reflect(Vec2::new(32.0, 95.0), 0.0, 0.0);
-        let far = m.reflect(Vec2::new(32.0, 5.0), 0.0, 0.0).unwrap();
-        // At the eye's feet it looks straight down: almost no mirror.
-        assert!(near.unwrap().share < 0.1);
-        assert!(far.share > 0.3, "{}", far.share);
-        let streak = m.reflect(Vec2::new(32.0, 5.0), 0.0, 0.9).unwrap();
-        assert!(streak.share < 0.5 * far.share);
+        let share = |y: f32| m.look(&f, Vec2::new(40.0, y), 0.0, 0.0, |_| 0).unwrap().share;
+        // At the eye's feet it looks steeply down: little mirror.
+        assert!(share(63.0) < share(30.0) && share(30.0) <= share(2.0));
+        assert!(share(63.0) < 0.7 * share(2.0), "{} {}", share(63.0), share(2.0));
+    }
+
+    #[test]
+    fn only_an_eye_in_front_of_the_grid_above_the_sea_has_a_mirror() {
+        let f = tower(32, 10, 5.0);
+        let sun = Vec3::Z;
+        assert!(Mirror::new(&f, Vec3::new(32.0, 30.0, 10.0), 1.0, sun, [1.0; 3]).is_none());
+        assert!(Mirror::new(&f, Vec3::new(32.0, 80.0, -1.0), 1.0, sun, [1.0; 3]).is_none());
     }
 }
