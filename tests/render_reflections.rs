@@ -48,16 +48,21 @@ fn distance(a: u32, b: u32) -> i32 {
     (0..3).map(|i| (a[i] - b[i]).abs()).sum()
 }
 
-/// Where the cone of height `height` shows in a `w` x `h` vista: its top's
-/// screen row and column, the row of its foot towards the viewer, and the
-/// lowest row below the foot where the water in its column differs from
-/// the water a quarter of the frame to the side by more than the streaks
-/// alone make it (the mirrored cone), with reflections on and off.
+/// Where the cone of height `height` shows in a `w` x `h` vista: the row
+/// of its foot towards the viewer, the row where a mirror would show its
+/// top (its top's image below the water), and the lowest row below the
+/// foot down to which the water in the peak's column differs from the
+/// water a quarter of the frame to the side by more than the streaks alone
+/// make it (three rows running), with reflections on or off.
 struct Seen {
-    top: f32,
     foot: f32,
+    image: f32,
     mirrored_to: Option<u32>,
 }
+
+/// How much two colours may differ across a row of water from the streaks
+/// alone (sums of channel differences; without reflections they reach 53).
+const STREAKS: i32 = 60;
 
 fn seen(height: f32, reflections: bool) -> Seen {
     let (w, h) = (480u32, 300u32);
@@ -72,23 +77,25 @@ fn seen(height: f32, reflections: bool) -> Seen {
     let top = view.project(cx, cy, height);
     // The foot on the near side, where the cone meets the water.
     let foot = view.project(cx, cy + 14.0, 0.0).y;
+    let image = view.project(cx, cy, -height).y;
     let x = top.x.round() as u32;
     let side = x + w / 4;
     let px = |x: u32, y: u32| frame.pixels()[(y * w + x) as usize];
+    let differs = |y: u32| distance(px(x, y), px(side, y)) > STREAKS;
     let mirrored_to = ((foot.ceil() as u32 + 2)..h)
-        .filter(|&y| distance(px(x, y), px(side, y)) > 40)
+        .filter(|&y| (y - 2..=y).all(differs))
         .max();
     Seen {
-        top: top.y,
         foot,
+        image,
         mirrored_to,
     }
 }
 
 /// One peak by the water: its reflection lies below the shore, flipped
-/// (reaching about as far below the foot as the peak rises above it), and
-/// a taller peak's reaches lower. Without reflections the water below the
-/// peak is like the water beside it.
+/// (reaching down to where a mirror shows its top), and a taller peak's
+/// reaches lower. Without reflections the water below the peak is like
+/// the water beside it.
 #[test]
 fn a_peak_by_the_water_is_mirrored_below_its_shore() {
     let mut reach = Vec::new();
@@ -97,11 +104,10 @@ fn a_peak_by_the_water_is_mirrored_below_its_shore() {
         let below = on
             .mirrored_to
             .unwrap_or_else(|| panic!("no reflection of a {height} peak"));
-        let rise = on.foot - on.top;
-        let depth = below as f32 - on.foot;
+        let (depth, want) = (below as f32 - on.foot, on.image - on.foot);
         assert!(
-            depth > 0.4 * rise && depth < 2.5 * rise,
-            "peak {height}: rises {rise} px above its foot, mirrored {depth} px below"
+            (depth - want).abs() < 0.2 * want,
+            "peak {height}: mirrored {depth} px below its foot, a mirror shows its top {want} px below"
         );
         reach.push(depth);
         let off = seen(height, false);
