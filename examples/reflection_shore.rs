@@ -3,19 +3,22 @@
 //! at least 0.3 along the shore).
 //!
 //! cargo run --release --example reflection_shore -- [--size 1920x1080] \
-//!     [--seeds 1-24] [--set key=value ...]
+//!     [--seeds 1-24] [--window 9] [--set key=value ...]
 //!
 //! Each seed is drawn with default settings (and any `--set`), and its class
-//! picture (`render_classes`) tells land from water. Along each column, a
-//! shore is a land pixel with water straight below it, at least [`REACH`]
-//! pixels of land above and of water below. Its land brightness is the mean
-//! luma of the land rows above it, its water brightness the mean of the
-//! water rows below (each water row mirrors the land row as far above the
-//! shore). Per seed: Pearson's correlation of the two along the shore, raw
-//! and with each series' running mean over [`WINDOW`] shore columns taken
-//! away (so that haze, which lightens far land and far water alike, does
-//! not count as a reflection). A seed with fewer than [`FEWEST`] shore
-//! columns is left out.
+//! picture (`render_classes`) tells land from water. In each column, the
+//! shore is the lowest land pixel with water straight below it, at least
+//! [`REACH`] pixels of land above and of water below. Its land brightness
+//! is the mean luma of the land rows above it, its water brightness the
+//! mean of the water rows below (each water row mirrors the land row as far
+//! above the shore). Per seed: Pearson's correlation of the two along the
+//! shore (column by column), raw and with each series' running mean over
+//! `--window` shore columns (9 unless told) taken away: haze lightens far land and far
+//! water alike, and gentle shores have both lighter land and shallower,
+//! lighter water, so the raw figure is well above 0 without any mirror;
+//! the detrended one keeps only what changes from column to column, as a
+//! mirror's image does. A seed with fewer than [`FEWEST`] shore columns is
+//! left out.
 
 use mountains::render::classes::{Class, render_classes};
 use mountains::render::{Frame, detail, render_full};
@@ -26,8 +29,6 @@ use mountains::terrain;
 const REACH: u32 = 12;
 /// The rows next to the shore line itself are its anti-aliased coverage.
 const SKIP: u32 = 2;
-/// Shore columns of each side's running mean.
-const WINDOW: usize = 41;
 /// Shore columns a seed needs to count.
 const FEWEST: usize = 40;
 
@@ -35,9 +36,13 @@ fn main() {
     let (mut w, mut h) = (1920u32, 1080u32);
     let mut seeds: Vec<u64> = (1..=24).collect();
     let mut settings = Settings::default();
+    let mut window = 9usize;
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
-        let mut value = || args.next().unwrap_or_else(|| die(&format!("{a} needs a value")));
+        let mut value = || {
+            args.next()
+                .unwrap_or_else(|| die(&format!("{a} needs a value")))
+        };
         match a.as_str() {
             "--size" => {
                 let v = value();
@@ -51,6 +56,7 @@ fn main() {
                     None => v.split(',').map(parse).collect(),
                 };
             }
+            "--window" => window = parse(&value()),
             "--set" => {
                 let v = value();
                 let (key, raw) = v.split_once('=').unwrap_or_else(|| die("--set key=value"));
@@ -75,7 +81,7 @@ fn main() {
             continue;
         }
         let raw = pearson(&land, &water);
-        let detrended = pearson(&detrend(&land), &detrend(&water));
+        let detrended = pearson(&detrend(&land, window), &detrend(&water, window));
         println!("{seed} {} {raw:.3} {detrended:.3}", land.len());
         figures.push((raw, detrended));
     }
@@ -106,7 +112,7 @@ fn shores(frame: &Frame, classes: &Frame) -> (Vec<f64>, Vec<f64>) {
     };
     let (mut land, mut water) = (Vec::new(), Vec::new());
     for x in 0..w {
-        for y in REACH..h.saturating_sub(REACH + 1) {
+        for y in (REACH..h.saturating_sub(REACH + 1)).rev() {
             let shore = class(x, y) == Class::Land && class(x, y + 1) == Class::Water;
             if !shore
                 || !(0..REACH).all(|d| class(x, y - d) == Class::Land)
@@ -118,14 +124,15 @@ fn shores(frame: &Frame, classes: &Frame) -> (Vec<f64>, Vec<f64>) {
             let n = rows.len() as f64;
             land.push(rows.clone().map(|d| luma(x, y - d)).sum::<f64>() / n);
             water.push(rows.map(|d| luma(x, y + 1 + d)).sum::<f64>() / n);
+            break;
         }
     }
     (land, water)
 }
 
-/// `v` less its running mean over [`WINDOW`] items.
-fn detrend(v: &[f64]) -> Vec<f64> {
-    let half = WINDOW / 2;
+/// `v` less its running mean over `window` items.
+fn detrend(v: &[f64], window: usize) -> Vec<f64> {
+    let half = window / 2;
     (0..v.len())
         .map(|i| {
             let part = &v[i.saturating_sub(half)..(i + half + 1).min(v.len())];

@@ -40,7 +40,11 @@ fn full(field: &Heightfield, s: &Settings, w: u32, h: u32) -> Frame {
 }
 
 fn rgb(c: u32) -> [i32; 3] {
-    [(c >> 16) as i32 & 0xff, (c >> 8) as i32 & 0xff, c as i32 & 0xff]
+    [
+        (c >> 16) as i32 & 0xff,
+        (c >> 8) as i32 & 0xff,
+        c as i32 & 0xff,
+    ]
 }
 
 fn distance(a: u32, b: u32) -> i32 {
@@ -73,7 +77,14 @@ fn seen(height: f32, reflections: bool) -> Seen {
     let row_top: Vec<f32> = (0..field.size())
         .map(|y| field.row(y).iter().copied().fold(0.0, f32::max))
         .collect();
-    let view = View::fitted(ViewKind::Vista, field.size(), field.extent(), &row_top, w, h);
+    let view = View::fitted(
+        ViewKind::Vista,
+        field.size(),
+        field.extent(),
+        &row_top,
+        w,
+        h,
+    );
     let top = view.project(cx, cy, height);
     // The foot on the near side, where the cone meets the water.
     let foot = view.project(cx, cy + 14.0, 0.0).y;
@@ -145,7 +156,15 @@ fn without_reflections_the_water_is_as_it_was() {
         let got = full(&f, &s, 96, 72);
         let want = read_png(&dir.join(format!("{name}.png"))).expect("a pinned picture");
         assert!(got == want, "{name}: the plain water changed");
-        let mirrored = full(&f, &Settings { reflections: true, ..s }, 96, 72);
+        let mirrored = full(
+            &f,
+            &Settings {
+                reflections: true,
+                ..s
+            },
+            96,
+            72,
+        );
         assert!(mirrored != want, "{name}: reflections change nothing");
     }
 }

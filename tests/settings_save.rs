@@ -80,7 +80,9 @@ fn a_value_written_differently_but_equal_is_kept_as_written() {
 
 #[test]
 fn every_key_round_trips_through_the_shipped_file() {
-    use mountains::settings::{Generator, Monitors, Profile, Shading, Sun, ViewKind, WaterLine};
+    use mountains::settings::{
+        Clouds, Generator, Monitors, Profile, Shading, Sun, ViewKind, WaterLine,
+    };
     let s = Settings {
         seed: Some(u64::MAX),
         generator: Generator::Triangle,
@@ -103,6 +105,8 @@ fn every_key_round_trips_through_the_shipped_file() {
         shadows: false,
         sun: Sun::Evening,
         shading: Shading::Flat,
+        clouds: Clouds::Amount(0.35),
+        reflections: false,
         view: ViewKind::Perspective,
         rotation: 270,
         auto_redraw: false,

@@ -134,7 +134,13 @@ impl Mirror {
     /// `cell` units wide, lit by `sun` (the palette's frame: y towards the
     /// back) of colour `sun_colour`. `None` unless the eye stands in front
     /// of the grid, above the sea (as the vista's and the perspective's do).
-    pub(crate) fn new(field: &Heightfield, eye: Vec3, cell: f32, sun: Vec3, sun_colour: Rgb) -> Option<Self> {
+    pub(crate) fn new(
+        field: &Heightfield,
+        eye: Vec3,
+        cell: f32,
+        sun: Vec3,
+        sun_colour: Rgb,
+    ) -> Option<Self> {
         let cell = Some(cell).filter(|c| c.is_finite() && *c > 0.0)?;
         let origin = Vec2::new(eye.x, eye.y) / cell;
         let last = field.size().checked_sub(1).filter(|&l| l > 0)?;
@@ -144,7 +150,12 @@ impl Mirror {
         }
         // Every spread that reaches the grid, [`FAN_STEP`] apart at the back.
         let spread = |x: f32, u: f32| (x - origin.x) / u;
-        let ends = [spread(0.0, near), spread(0.0, far), spread(last as f32, near), spread(last as f32, far)];
+        let ends = [
+            spread(0.0, near),
+            spread(0.0, far),
+            spread(last as f32, near),
+            spread(last as f32, far),
+        ];
         let first = ends.iter().copied().fold(f32::INFINITY, f32::min);
         let end = ends.iter().copied().fold(f32::NEG_INFINITY, f32::max);
         let apart = FAN_STEP / far;
@@ -180,14 +191,18 @@ impl Mirror {
             return None;
         }
         let i = ((g.x - self.origin.x) / u - self.first) / self.apart;
-        let profile = self.profile(field, i.round().clamp(0.0, (self.profiles.len() - 1) as f32) as usize);
+        let profile = self.profile(
+            field,
+            i.round().clamp(0.0, (self.profiles.len() - 1) as f32) as usize,
+        );
         // The streak tilts the water: the line leaves as one off level
         // water nearer or farther would.
         let slope = rise / u;
         let tilted = (slope + TILT * self.cell * ripple).max(0.2 * slope);
         let u = rise / tilted;
         let j = ((u - self.near()) * (1.0 / STRIDE as f32)).round();
-        if !(j >= 0.0) {
+        // Nearer than the grid (or not a number): no water there.
+        if j.is_nan() || j < 0.0 {
             return None;
         }
         let j = (j as usize).min(profile.heights.len() - 1);
@@ -227,7 +242,8 @@ impl Mirror {
 
     /// The profile `i` of the fan, made if it is not yet.
     fn profile(&self, field: &Heightfield, i: usize) -> &Profile {
-        self.profiles[i].get_or_init(|| Profile::under(field, self, self.first + self.apart * i as f32))
+        self.profiles[i]
+            .get_or_init(|| Profile::under(field, self, self.first + self.apart * i as f32))
     }
 
     /// The unit direction of a line along a profile of `spread`, rising
@@ -240,7 +256,10 @@ impl Mirror {
     fn land(&self, profile: &Profile, k: usize, height: f32) -> Seen {
         let y = (self.last - STRIDE * k) as f32;
         let x = self.origin.x + profile.spread * self.back(k);
-        Seen::Land { at: Vec2::new(x, y), height }
+        Seen::Land {
+            at: Vec2::new(x, y),
+            height,
+        }
     }
 
     /// What a line off the water at sample `j` of `profile`, `rise` below
@@ -276,7 +295,11 @@ impl Mirror {
         if sparkle < SPARKLE {
             return None;
         }
-        let tilted = Vec3::new(dir.x + GLINT_TILT * sideways, dir.y, dir.z + GLINT_TILT * (sparkle - 0.5));
+        let tilted = Vec3::new(
+            dir.x + GLINT_TILT * sideways,
+            dir.y,
+            dir.z + GLINT_TILT * (sparkle - 0.5),
+        );
         let cos = tilted.try_normalize()?.dot(self.sun);
         if cos <= GLINT_COS {
             return None;
@@ -307,7 +330,10 @@ impl Profile {
             }
         }
         let tops = |n: usize| {
-            heights.chunks(n).map(|c| c.iter().copied().fold(f32::NEG_INFINITY, f32::max)).collect()
+            heights
+                .chunks(n)
+                .map(|c| c.iter().copied().fold(f32::NEG_INFINITY, f32::max))
+                .collect()
         };
         let sea_hit = sea_hits(&heights, mirror.near(), STRIDE as f32, mirror.eye.z);
         Profile {
@@ -330,9 +356,9 @@ impl Profile {
         let mut k = j + 1;
         while k < n {
             let zk = z(k);
-            if k % SPAN == 0 && self.span_top[k / SPAN] < zk {
+            if k.is_multiple_of(SPAN) && self.span_top[k / SPAN] < zk {
                 k += SPAN;
-            } else if k % BLOCK == 0 && self.block_top[k / BLOCK] < zk {
+            } else if k.is_multiple_of(BLOCK) && self.block_top[k / BLOCK] < zk {
                 k += BLOCK;
             } else if self.heights[k] >= zk {
                 return Some((k, self.heights[k]));
@@ -428,7 +454,10 @@ mod tests {
         let f = tower(32, 10, 10.0);
         let m = mirror(&f);
         let at = seen(&m, &f, 32.0, 40.0, 0.0).expect("the tower");
-        assert!((at.y - 12.0).abs() < 1.5 && (at.x - 32.0).abs() < 1.5, "{at}");
+        assert!(
+            (at.y - 12.0).abs() < 1.5 && (at.x - 32.0).abs() < 1.5,
+            "{at}"
+        );
         assert!(seen(&m, &f, 10.0, 40.0, 0.0).is_none(), "beside the tower");
         // Behind the tower, looking away from it.
         assert!(seen(&m, &f, 32.0, 5.0, 0.0).is_none(), "behind the tower");
@@ -467,7 +496,10 @@ mod tests {
                 // Rounding may decide a graze either way.
                 if want != got {
                     let k = want.or(got).unwrap();
-                    assert!((heights[k] - z(k)).abs() < 1e-3, "sample {j}: {want:?} != {got:?}");
+                    assert!(
+                        (heights[k] - z(k)).abs() < 1e-3,
+                        "sample {j}: {want:?} != {got:?}"
+                    );
                 }
             }
         }
@@ -477,10 +509,43 @@ mod tests {
     fn the_mirror_is_stronger_at_grazing_angles() {
         let f = tower(32, 10, 5.0);
         let m = mirror(&f);
-        let share = |y: f32| m.look(&f, Vec2::new(40.0, y), 0.0, 0.0, |_| 0).unwrap().share;
+        let share = |y: f32| {
+            m.look(&f, Vec2::new(40.0, y), 0.0, 0.0, |_| 0)
+                .unwrap()
+                .share
+        };
         // At the eye's feet it looks steeply down: little mirror.
         assert!(share(63.0) < share(30.0) && share(30.0) <= share(2.0));
-        assert!(share(63.0) < 0.7 * share(2.0), "{} {}", share(63.0), share(2.0));
+        assert!(
+            share(63.0) < 0.7 * share(2.0),
+            "{} {}",
+            share(63.0),
+            share(2.0)
+        );
+    }
+
+    #[test]
+    fn the_sun_glints_where_the_mirrored_line_points_at_it() {
+        let f = tower(32, 10, 5.0);
+        // Straight ahead of the eye, low: where lines off the far water go.
+        let sun_ahead = Vec3::new(0.0, 1.0, 0.12).normalize();
+        let m = Mirror::new(&f, EYE, 1.0, sun_ahead, [1.0, 0.8, 0.5]).unwrap();
+        let look = m.look(&f, Vec2::new(32.0, 20.0), 0.0, 0.0, |_| 0).unwrap();
+        let dir = look.near_sun.expect("the line points near the sun");
+        let sparkles: Vec<f32> = (0..200).map(|i| i as f32 / 100.0 - 1.0).collect();
+        let glints = sparkles
+            .iter()
+            .flat_map(|&a| sparkles.iter().map(move |&b| (a, b)))
+            .filter_map(|(a, b)| m.glint(dir, a, b))
+            .count();
+        assert!(glints > 0, "no facet glints");
+        // Not every facet: they sparkle apart.
+        assert!(glints < 200 * 200 / 2, "{glints} of 40000 facets glint");
+        // The sun behind the viewer: no line points near it.
+        let behind = Vec3::new(0.0, -1.0, 0.12).normalize();
+        let m = Mirror::new(&f, EYE, 1.0, behind, [1.0; 3]).unwrap();
+        let look = m.look(&f, Vec2::new(32.0, 20.0), 0.0, 0.0, |_| 0).unwrap();
+        assert!(look.near_sun.is_none());
     }
 
     #[test]
