@@ -11,7 +11,7 @@ use crate::render::shade::colour::blend_packed;
 use crate::render::shade::mirror::{Mirror, Seen};
 
 /// How much the strongest streak (ripple 1) takes from the mirror.
-const STREAK: f32 = 0.6;
+const STREAK: f32 = 0.4;
 /// How much finer than the streaks the glittering facets are, across and
 /// along the view (world-sized, as the streaks are).
 const FACETS: (f32, f32) = (7.3, 2.9);
