@@ -34,13 +34,17 @@ use crate::terrain::Heightfield;
 /// all of them, and the coarser skip above that.
 const BLOCK: usize = 16;
 const SPAN: usize = 256;
-/// Grid steps between two profiles of the fan at the grid's back edge:
-/// the reflections' finest detail across the view.
-const FAN_STEP: f32 = 3.0;
-/// Grid rows between two samples of a profile: the reflections' finest
-/// detail along the view (the sky and far land are mirrored across many
-/// rows of near water).
-const STRIDE: usize = 2;
+/// The space between two profiles of the fan at the grid's back edge, as
+/// a share of the grid's width: the reflections' finest detail across the
+/// view (3 steps of the 1025-point grid a 1080p frame draws). A share of
+/// the world, not of the grid, so that a seed mirrors alike at every frame
+/// size, and a finer grid costs no more profiles.
+const FAN_STEP: f32 = 3.0 / 1024.0;
+/// The space between two samples of a profile, as a share of the grid's
+/// width (whole grid rows, at least one): the reflections' finest detail
+/// along the view (the sky and far land are mirrored across many rows of
+/// near water).
+const STRIDE: f32 = 2.0 / 1024.0;
 /// Water's reflectance looking straight down (Schlick's `F0`).
 const F0: f32 = 0.02;
 /// The mirror's share is Schlick's term times this, at most [`MOST`]:
@@ -100,6 +104,8 @@ pub(crate) struct Mirror {
     origin: Vec2,
     /// The grid's last row and column.
     last: usize,
+    /// Grid rows between two samples of a profile.
+    stride: usize,
     /// The fan: the first profile's spread (grid steps across per step
     /// back), the spread between two, and the profiles.
     first: f32,
@@ -112,7 +118,7 @@ pub(crate) struct Mirror {
 }
 
 /// The ground under one profile of the fan: sample `k` lies on grid row
-/// `last - STRIDE k`, `u0 + STRIDE k` steps back from the eye (`u0`: the
+/// `last - stride k`, `u0 + stride k` steps back from the eye (`u0`: the
 /// grid's near edge).
 #[derive(Debug)]
 struct Profile {
@@ -158,13 +164,15 @@ impl Mirror {
         ];
         let first = ends.iter().copied().fold(f32::INFINITY, f32::min);
         let end = ends.iter().copied().fold(f32::NEG_INFINITY, f32::max);
-        let apart = FAN_STEP / far;
+        let apart = FAN_STEP * last as f32 / far;
+        let stride = ((STRIDE * last as f32).round() as usize).max(1);
         let count = (((end - first) / apart).ceil() as usize + 1).clamp(2, 1 << 20);
         Some(Mirror {
             eye,
             cell,
             origin,
             last,
+            stride,
             first,
             apart,
             profiles: (0..count).map(|_| OnceLock::new()).collect(),
@@ -190,21 +198,20 @@ impl Mirror {
         if !(rise > 0.0 && u > 0.0) {
             return None;
         }
-        let i = ((g.x - self.origin.x) / u - self.first) / self.apart;
-        let profile = self.profile(
-            field,
-            i.round().clamp(0.0, (self.profiles.len() - 1) as f32) as usize,
-        );
+        // Rounded by truncation (`as` takes NaN and negatives to 0).
+        let i = ((g.x - self.origin.x) / u - self.first) / self.apart + 0.5;
+        let profile = self.profile(field, (i as usize).min(self.profiles.len() - 1));
         // The streak tilts the water: the line leaves as one off level
         // water nearer or farther would.
         let slope = rise / u;
         let tilted = (slope + TILT * self.cell * ripple).max(0.2 * slope);
         let u = rise / tilted;
-        let j = ((u - self.near()) * (1.0 / STRIDE as f32)).round();
+        let j = (u - self.near()) / self.stride as f32 + 0.5;
         // Nearer than the grid (or not a number): no water there.
         if j.is_nan() || j < 0.0 {
             return None;
         }
+        // Truncation rounds (j is at least 0), without a libm call.
         let j = (j as usize).min(profile.heights.len() - 1);
         let packed = if level != 0.0 {
             let met = profile.lake(self, j, level, rise);
@@ -237,7 +244,7 @@ impl Mirror {
 
     /// How far sample `k` of a profile lies in front of the eye, in grid steps.
     fn back(&self, k: usize) -> f32 {
-        self.near() + (STRIDE * k) as f32
+        self.near() + (self.stride * k) as f32
     }
 
     /// The profile `i` of the fan, made if it is not yet.
@@ -254,7 +261,7 @@ impl Mirror {
 
     /// The land at sample `k` of `profile`, `height` high.
     fn land(&self, profile: &Profile, k: usize, height: f32) -> Seen {
-        let y = (self.last - STRIDE * k) as f32;
+        let y = (self.last - self.stride * k) as f32;
         let x = self.origin.x + profile.spread * self.back(k);
         Seen::Land {
             at: Vec2::new(x, y),
@@ -315,12 +322,12 @@ impl Profile {
     fn under(field: &Heightfield, mirror: &Mirror, spread: f32) -> Self {
         let last = mirror.last;
         let size = last + 1;
-        let samples = last / STRIDE + 1;
+        let samples = last / mirror.stride + 1;
         let all = field.heights();
         // Off the grid's sides, no land.
         let mut heights = vec![f32::NEG_INFINITY; samples];
         for (k, h) in heights.iter_mut().enumerate() {
-            let y = last - STRIDE * k;
+            let y = last - mirror.stride * k;
             let x = mirror.origin.x + spread * mirror.back(k);
             if x >= 0.0 && x <= last as f32 {
                 let x0 = (x as usize).min(last - 1);
@@ -335,7 +342,7 @@ impl Profile {
                 .map(|c| c.iter().copied().fold(f32::NEG_INFINITY, f32::max))
                 .collect()
         };
-        let sea_hit = sea_hits(&heights, mirror.near(), STRIDE as f32, mirror.eye.z);
+        let sea_hit = sea_hits(&heights, mirror.near(), mirror.stride as f32, mirror.eye.z);
         Profile {
             spread,
             block_top: tops(BLOCK),
