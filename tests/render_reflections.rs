@@ -57,7 +57,7 @@ fn distance(a: u32, b: u32) -> i32 {
 /// top (its top's image below the water), and the lowest row below the
 /// foot down to which the water in the peak's column differs from the
 /// water a quarter of the frame to the side by more than the streaks alone
-/// make it (three rows running), with reflections on or off.
+/// make it ([`RUN`] rows running), with reflections on or off.
 struct Seen {
     foot: f32,
     image: f32,
@@ -65,8 +65,11 @@ struct Seen {
 }
 
 /// How much two colours may differ across a row of water from the streaks
-/// alone (sums of channel differences; without reflections they reach 53).
-const STREAKS: i32 = 60;
+/// alone (sums of channel differences): without reflections single rows
+/// reach 53, but no four rows running exceed this.
+const STREAKS: i32 = 40;
+/// Rows running that must differ by more than [`STREAKS`].
+const RUN: u32 = 4;
 
 fn seen(height: f32, reflections: bool) -> Seen {
     let (w, h) = (480u32, 300u32);
@@ -94,7 +97,7 @@ fn seen(height: f32, reflections: bool) -> Seen {
     let px = |x: u32, y: u32| frame.pixels()[(y * w + x) as usize];
     let differs = |y: u32| distance(px(x, y), px(side, y)) > STREAKS;
     let mirrored_to = ((foot.ceil() as u32 + 2)..h)
-        .filter(|&y| (y - 2..=y).all(differs))
+        .filter(|&y| (y + 1 - RUN..=y).all(differs))
         .max();
     Seen {
         foot,

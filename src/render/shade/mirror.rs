@@ -26,7 +26,7 @@ use std::sync::atomic::{AtomicU32, Ordering};
 
 use glam::{Vec2, Vec3};
 
-use super::colour::{Rgb, to_u32};
+use super::colour::{Rgb, blend_packed, to_u32};
 use crate::render::framing::tops::finite;
 use crate::terrain::Heightfield;
 
@@ -198,9 +198,12 @@ impl Mirror {
         if !(rise > 0.0 && u > 0.0) {
             return None;
         }
-        // Rounded by truncation (`as` takes NaN and negatives to 0).
-        let i = ((g.x - self.origin.x) / u - self.first) / self.apart + 0.5;
-        let profile = self.profile(field, (i as usize).min(self.profiles.len() - 1));
+        // The two profiles either side, blended (`as` takes NaN and
+        // negatives to 0, and truncates: the floor of a positive number).
+        let i = (((g.x - self.origin.x) / u - self.first) / self.apart).max(0.0);
+        let last = self.profiles.len() - 1;
+        let i0 = (i as usize).min(last);
+        let t = (i - i0 as f32).min(1.0);
         // The streak tilts the water: the line leaves as one off level
         // water nearer or farther would.
         let slope = rise / u;
@@ -212,29 +215,56 @@ impl Mirror {
             return None;
         }
         // Truncation rounds (j is at least 0), without a libm call.
-        let j = (j as usize).min(profile.heights.len() - 1);
-        let packed = if level != 0.0 {
-            let met = profile.lake(self, j, level, rise);
-            self.pack(met, profile, j, rise, &colour)
-        } else {
-            match profile.sea_look[j].load(Ordering::Relaxed) {
-                EMPTY => {
-                    let met = match profile.sea_hit[j] {
-                        NONE => None,
-                        k => Some((k as usize, profile.heights[k as usize])),
-                    };
-                    let packed = self.pack(met, profile, j, rise, &colour);
-                    profile.sea_look[j].store(packed, Ordering::Relaxed);
-                    packed
+        let j = j as usize;
+        let near = self.sample(field, i0, j, level, rise, &colour);
+        let (colour, share, dir) =
+            match self.sample(field, (i0 + 1).min(last), j, level, rise, &colour) {
+                far if t > 0.0 => {
+                    let share = |p: u32| ((p >> 24) & 0x7f) as f32;
+                    let s = share(near) + (share(far) - share(near)) * t;
+                    let sun = (near | far) >> 31 != 0;
+                    (blend_packed(near, far, (t * 256.0) as u32), s, sun)
                 }
-                cached => cached,
-            }
-        };
+                _ => (near, ((near >> 24) & 0x7f) as f32, near >> 31 != 0),
+            };
+        let spread = self.first + self.apart * i;
         Some(Look {
-            colour: packed & 0x00ff_ffff,
-            share: ((packed >> 24) & 0x7f) as f32 * (1.0 / SHARE_MAX as f32),
-            near_sun: (packed >> 31 != 0).then(|| self.direction(profile.spread, rise / u)),
+            colour: colour & 0x00ff_ffff,
+            share: share * (1.0 / SHARE_MAX as f32),
+            near_sun: dir.then(|| self.direction(spread, rise / u)),
         })
+    }
+
+    /// What a line off the water at sample `j` (at most the last) of the
+    /// fan's profile `i`, on a surface at `level` `rise` below the eye,
+    /// shows, packed (see [`Mirror::pack`]); lines off the sea cached.
+    fn sample(
+        &self,
+        field: &Heightfield,
+        i: usize,
+        j: usize,
+        level: f32,
+        rise: f32,
+        colour: &impl Fn(Seen) -> u32,
+    ) -> u32 {
+        let profile = self.profile(field, i);
+        let j = j.min(profile.heights.len() - 1);
+        if level != 0.0 {
+            let met = profile.lake(self, j, level, rise);
+            return self.pack(met, profile, j, rise, colour);
+        }
+        match profile.sea_look[j].load(Ordering::Relaxed) {
+            EMPTY => {
+                let met = match profile.sea_hit[j] {
+                    NONE => None,
+                    k => Some((k as usize, profile.heights[k as usize])),
+                };
+                let packed = self.pack(met, profile, j, rise, colour);
+                profile.sea_look[j].store(packed, Ordering::Relaxed);
+                packed
+            }
+            cached => cached,
+        }
     }
 
     /// How far the grid's near edge lies in front of the eye, in grid steps.
@@ -402,11 +432,9 @@ fn sea_hits(heights: &[f32], u0: f32, step: f32, eye: f32) -> Vec<u32> {
             }
             stack.push((c, k as u32));
         }
-        // Only lines off the sea are asked for. The candidates met are the
-        // bottom ones (c <= u_j); the nearest of them is the last.
-        if heights[j] > 0.0 {
-            continue;
-        }
+        // The candidates met are the bottom ones (c <= u_j); the nearest
+        // of them is the last. (A land sample is asked for too: the water
+        // of a face by the shore may lie nearest to it.)
         let met = match stack.last() {
             Some(&(c, k)) if c <= uj => Some(k),
             _ => stack
@@ -485,7 +513,7 @@ mod tests {
     #[test]
     fn the_sweep_finds_the_first_sample_each_line_meets() {
         // Against following each line off the sea sample by sample, on
-        // rough profiles.
+        // rough profiles (from land samples too: lines from the sea by them).
         let mut state = 12345u32;
         let mut next = || {
             state = state.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
@@ -496,10 +524,10 @@ mod tests {
             let (u0, eye, step) = (5.0 + 40.0 * next(), 2.0 + 20.0 * next(), 0.5 + 2.0 * next());
             let hits = sea_hits(&heights, u0, step, eye);
             let u = |k: usize| u0 + step * k as f32;
-            for j in (0..heights.len()).filter(|&j| heights[j] <= 0.0) {
+            for (j, &hit) in hits.iter().enumerate() {
                 let z = |k: usize| eye * (u(k) / u(j) - 1.0);
                 let want = (j + 1..heights.len()).find(|&k| heights[k] > 0.0 && heights[k] >= z(k));
-                let got = (hits[j] != NONE).then_some(hits[j] as usize);
+                let got = (hit != NONE).then_some(hit as usize);
                 // Rounding may decide a graze either way.
                 if want != got {
                     let k = want.or(got).unwrap();
