@@ -60,6 +60,8 @@ pub fn render_classes(field: &Heightfield, settings: &Settings, frame: &mut Fram
     // Haze would fade the water's colour towards the sky's.
     scene.haze = None;
     scene.ripples = Some(Ripples::covering(WATER));
+    // Nor may the water mirror anything.
+    scene.reflections = false;
     // Each pixel one class: no mixing across the coast or the skyline.
     scene.clean_edges = false;
     bands::render(&scene, frame);

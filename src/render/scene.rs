@@ -12,6 +12,7 @@ use super::scan::raster::{Fixed2, to_fixed};
 use super::shade::clouds;
 use super::shade::colour::blend_packed;
 use super::shade::haze::Haze;
+use super::shade::mirror::Mirror;
 use super::shade::normals::Normals;
 use super::shade::palette::Palette;
 use super::shade::ripples::Ripples;
@@ -112,8 +113,12 @@ pub(crate) struct Scene<'a> {
     /// How much of the sky each point sees, if the look has sky light.
     skylight: Option<SkyLight>,
     /// Each point's normal, when land is shaded smoothly (each point lit,
-    /// the light blended across faces); `None`: one colour a face.
+    /// the light blended across faces) or the water mirrors it.
     normals: Option<Normals>,
+    /// Whether land faces blend their points' colours (else one colour a face).
+    smooth: bool,
+    /// What the water mirrors (when [`Scene::reflections`]).
+    pub(crate) mirror: Option<Mirror>,
     /// Under smooth shading, where the camera stands over the ground (grid
     /// steps): each cell is split along the diagonal that suits its
     /// heights, and the camera's side of it says which face is nearer.
@@ -132,7 +137,6 @@ pub(crate) struct Scene<'a> {
     pub(super) rows: Vec<usize>,
     /// Whether the water mirrors the land and the sky (the looks with
     /// ripples, when `reflections` is on).
-    #[allow(dead_code)] // Read by the water's mirror, on its way.
     pub(crate) reflections: bool,
     /// Whether the field's lakes are drawn (the filled looks; Sonar and
     /// Outline draw the ground's mesh).
@@ -200,10 +204,10 @@ impl<'a> Scene<'a> {
             && !palette.lighting().classic
             && settings.look == Look::Ours;
         let smooth = clean_edges && settings.shading == Shading::Smooth;
-        let normals = smooth.then(|| Normals::new(size, &rows, view.cell()));
+        let reflections = settings.reflections && ripples.is_some();
+        let normals = (smooth || reflections).then(|| Normals::new(size, &rows, view.cell()));
         let eye = view.camera_ground().filter(|_| smooth);
         let cells = size - 1;
-        let reflections = settings.reflections && ripples.is_some();
         // The weather is the ripples' kind of look: the shaded views with depth.
         let sky = match ripples.is_some() {
             true => {
@@ -212,6 +216,10 @@ impl<'a> Scene<'a> {
             }
             false => sky,
         };
+        let mirror = view.eye().filter(|_| reflections).and_then(|eye| {
+            let light = palette.lighting();
+            Mirror::new(&field, eye, view.cell(), light.sun, light.direct)
+        });
         let lakes = shaded && field.lakes().is_some();
         let (split, sees_right, sees_front) = match view.camera_column() {
             Some(cx) => {
@@ -241,6 +249,8 @@ impl<'a> Scene<'a> {
             shadow,
             skylight,
             normals,
+            smooth,
+            mirror,
             eye,
             style,
             clean_edges,
@@ -335,27 +345,53 @@ impl<'a> Scene<'a> {
     #[inline(never)]
     fn shade_now(&self, v: &mut Vert, x: usize, y: usize) {
         let ground = v.h.max(v.w);
-        v.lit = self.shadow.as_ref().map_or(1.0, |s| s.lit(x, y));
-        v.sky = self
-            .skylight
-            .as_ref()
-            .map_or(1.0, |s| s.blend(s.rows_at(y), x));
-        v.haze = self.haze.as_ref().map_or(0, |haze| {
-            haze.amount(self.view.distance(x as f32, y as f32, ground))
-        });
-        if let Some(normals) = &self.normals {
-            let n = normals.at(&self.field, x, y);
-            let land = self.palette.land_at_point(ground, n, v.lit, v.sky);
-            v.colour = self.hazed(land, v.haze);
+        (v.lit, v.sky) = self.light_at(x, y);
+        v.haze = self.haze_at(x as f32, y as f32, ground);
+        if self.smooth {
+            v.colour = self.hazed(self.land_at(x, y, ground, v.lit, v.sky), v.haze);
         }
         v.shaded = true;
+    }
+
+    /// The direct light and the share of the sky reaching grid point (`x`, `y`).
+    #[inline]
+    fn light_at(&self, x: usize, y: usize) -> (f32, f32) {
+        let lit = self.shadow.as_ref().map_or(1.0, |s| s.lit(x, y));
+        let sky = (self.skylight.as_ref()).map_or(1.0, |s| s.blend(s.rows_at(y), x));
+        (lit, sky)
+    }
+
+    /// How far the air fades a point at grid position (`gx`, `gy`),
+    /// height `z`, in 1/256ths.
+    #[inline]
+    pub(crate) fn haze_at(&self, gx: f32, gy: f32, z: f32) -> u32 {
+        (self.haze.as_ref()).map_or(0, |haze| haze.amount(self.view.distance(gx, gy, z)))
+    }
+
+    /// The land's colour at grid point (`x`, `y`) whose surface stands at
+    /// `ground`, lit `lit` and seeing `sky` of the sky, before haze (the
+    /// points of smooth shading; black where the scene has no normals).
+    #[inline]
+    fn land_at(&self, x: usize, y: usize, ground: f32, lit: f32, sky: f32) -> u32 {
+        self.normals.as_ref().map_or(0, |normals| {
+            let n = normals.at(&self.field, x, y);
+            self.palette.land_at_point(ground, n, lit, sky)
+        })
+    }
+
+    /// The land's colour at grid point (`x`, `y`) as the points of smooth
+    /// shading have it, before haze: what the water mirrors there.
+    pub(crate) fn land_point(&self, x: usize, y: usize) -> u32 {
+        let ground = finite(self.field.get(x, y)).max(0.0);
+        let (lit, sky) = self.light_at(x, y);
+        self.land_at(x, y, ground, lit, sky)
     }
 
     /// Whether land faces are shaded smoothly (each point's colour blended
     /// across them) rather than one colour each.
     #[inline]
     pub(crate) fn smooth(&self) -> bool {
-        self.normals.is_some()
+        self.smooth
     }
 
     /// `colour` faded `haze` (1/256ths) towards the horizon colour.

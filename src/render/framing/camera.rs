@@ -112,6 +112,18 @@ impl Camera {
         self.depth(p) / self.back_depth
     }
 
+    /// Where the eye is, in world units.
+    pub(crate) fn eye(&self) -> Vec3 {
+        self.eye
+    }
+
+    /// Unscaled screen position where lines along `dir` vanish (their
+    /// point at infinity); `None` for directions not in front of the camera.
+    pub(crate) fn vanishing(&self, dir: Vec3) -> Option<Vec2> {
+        let depth = dir.dot(self.forward);
+        (depth > 1e-6 * dir.length()).then(|| Vec2::new(dir.x / depth, -dir.dot(self.up) / depth))
+    }
+
     /// Where the eye stands across the grid, in world units.
     pub(crate) fn eye_x(&self) -> f32 {
         self.eye.x

@@ -299,6 +299,20 @@ impl View {
             .filter(|_| self.size > 0 && self.cell > 0.0)
     }
 
+    /// Where the camera's eye is, in world units (x right, y towards the
+    /// front, z up); `None` for the oblique view.
+    pub(crate) fn eye(&self) -> Option<Vec3> {
+        self.camera.map(|c| c.eye())
+    }
+
+    /// The pixel (possibly outside the frame) where lines along world
+    /// direction `dir` vanish: where the sky in that direction is seen.
+    /// `None` without a camera or for directions behind it.
+    pub(crate) fn vanishing(&self, dir: Vec3) -> Option<Vec2> {
+        let p = self.camera?.vanishing(dir)?;
+        Some(self.offset + self.scale * p)
+    }
+
     /// How far each grid row forward moves the land left, in grid steps: the
     /// oblique view's shear (which draws the square as seed 000's
     /// parallelogram), 0 for the views with a camera.

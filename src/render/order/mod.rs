@@ -4,6 +4,7 @@
 
 pub(super) mod bands;
 pub(super) mod edges;
+pub(super) mod mirrored;
 pub(super) mod reach;
 pub(super) mod strip;
 pub(super) mod walk;

@@ -345,19 +345,24 @@ impl Scene<'_> {
     }
 
     /// The colour of a water face whose surface is at `level`: by its depth
-    /// below it, with the wind's streaks.
+    /// below it, with the wind's streaks, and what it mirrors.
     fn water_colour(&self, c: &Face, level: f32) -> u32 {
         let below = |k: &Corner| (k.h - level).min(0.0);
         let depth = -(below(c[0]) + below(c[1]) + below(c[2])) / 3.0;
         let water = self.palette.water(depth);
-        let water = match &self.ripples {
+        let g = (c[0].g + c[1].g + c[2].g) / 3.0;
+        let (water, ripple) = match &self.ripples {
             Some(r) => {
-                let g = (c[0].g + c[1].g + c[2].g) / 3.0;
-                r.on(water, g.x, g.y)
+                let n = r.value(g.x, g.y);
+                (r.with(water, n), n)
             }
-            None => water,
+            None => (water, 0.0),
         };
-        self.hazed_face(water, c)
+        let water = self.hazed_face(water, c);
+        match self.mirror.as_ref().filter(|_| self.reflections) {
+            Some(mirror) => self.mirrored(mirror, water, g, level, ripple),
+            None => water,
+        }
     }
 
     /// The cut face below the edge from `a` to `b`, down to sea level, facing

@@ -1,6 +1,6 @@
 //! Light and colour: the sun and the sky's light, shadows, sky light, smooth
-//! normals, the palette, haze, ripples on the water, the sky's gradient, its clouds and the sun's
-//! glow, and
+//! normals, the palette, haze, ripples on the water and what it mirrors, the
+//! sky's gradient, its clouds and the sun's glow, and
 //! Mono's dither, and the colour arithmetic they share.
 
 pub(super) mod clouds;
@@ -11,6 +11,7 @@ pub mod facings;
 pub(super) mod haze;
 pub mod light;
 pub mod listing;
+pub(super) mod mirror;
 pub(super) mod normals;
 pub mod palette;
 pub(super) mod ripples;

@@ -90,11 +90,9 @@ impl Ripples {
         }
     }
 
-    /// `colour` of the water at grid position (`x`, `y`) (in cells), with
-    /// its ripple.
+    /// `colour` of the water where the ripple is `n` (see [`Ripples::value`]).
     #[inline]
-    pub(crate) fn on(&self, colour: u32, x: f32, y: f32) -> u32 {
-        let n = self.value(x, y);
+    pub(crate) fn with(&self, colour: u32, n: f32) -> u32 {
         let t = (n.abs() * STRENGTH) as u32;
         if n > 0.0 {
             blend_packed(colour, self.sky, t)
@@ -204,7 +202,7 @@ mod tests {
         for k in 0..2000 {
             let (x, y) = ((k * 37 % 1024) as f32 + 0.3, (k * 91 % 1024) as f32 + 0.6);
             let water = (k as u32).wrapping_mul(0x9e37_79b9) & 0x00ff_ffff;
-            assert_eq!(r.on(water, x, y), 0x0000_ffff, "at {x}, {y}");
+            assert_eq!(r.with(water, r.value(x, y)), 0x0000_ffff, "at {x}, {y}");
         }
     }
 
@@ -214,7 +212,7 @@ mod tests {
         let water = 0x0020_4080;
         let (mut lighter, mut darker) = (0, 0);
         for k in 0..400 {
-            let c = r.on(water, 512.0, k as f32 * 0.7);
+            let c = r.with(water, r.value(512.0, k as f32 * 0.7));
             let sum = |c: u32| (c >> 16 & 0xff) + (c >> 8 & 0xff) + (c & 0xff);
             match sum(c).cmp(&sum(water)) {
                 std::cmp::Ordering::Greater => lighter += 1,

@@ -1,0 +1,70 @@
+//! What a water face mirrors: the land its reflected sight line meets,
+//! shaded as the scene shades that land's points, or the sky it escapes
+//! to; mixed into the water's own colour by the mirror's share, weaker
+//! where the wind's streaks are strong, with the sun's glitter where the
+//! line points near the sun.
+
+use glam::{Vec2, Vec3};
+
+use crate::render::scene::Scene;
+use crate::render::shade::colour::blend_packed;
+use crate::render::shade::mirror::{Mirror, Seen};
+
+/// How much the strongest streak (ripple 1) takes from the mirror.
+const STREAK: f32 = 0.4;
+/// How much finer than the streaks the glittering facets are, across and
+/// along the view (world-sized, as the streaks are).
+const FACETS: (f32, f32) = (7.3, 2.9);
+
+impl Scene<'_> {
+    /// `water` (the face's own colour, hazed) at grid position `g` of a
+    /// surface at `level`, whose streak there is `ripple`, with what it
+    /// mirrors.
+    pub(super) fn mirrored(
+        &self,
+        mirror: &Mirror,
+        water: u32,
+        g: Vec2,
+        level: f32,
+        ripple: f32,
+    ) -> u32 {
+        let seen = |seen: Seen| match seen {
+            Seen::Land { at, height } => self.mirrored_land(at, height, level),
+            Seen::Sky(dir) => self.sky_towards(dir),
+        };
+        let Some(look) = mirror.look(&self.field, g, level, ripple, seen) else {
+            return water;
+        };
+        let share = look.share * (1.0 - STREAK * ripple.abs());
+        let out = blend_packed(water, look.colour, (share * 256.0) as u32);
+        let (Some(ripples), Some(dir)) = (&self.ripples, look.near_sun) else {
+            return out;
+        };
+        let (fx, fy) = FACETS;
+        let sparkle = ripples.value(g.x * fx, g.y * fy);
+        let sideways = ripples.value(g.x * fy + 31.0, g.y * fx + 7.0);
+        match mirror.glint(dir, sparkle, sideways) {
+            Some((sun, strength)) => blend_packed(out, sun, (strength * 256.0) as u32),
+            None => out,
+        }
+    }
+
+    /// The land at grid position `p`, height `h`, seen in water at `level`:
+    /// its nearest point's colour, hazed as far as its image below the
+    /// water lies from the eye.
+    fn mirrored_land(&self, p: Vec2, h: f32, level: f32) -> u32 {
+        let last = self.cells() as f32;
+        let (x, y) = (p.x.round().clamp(0.0, last), p.y.round().clamp(0.0, last));
+        let land = self.land_point(x as usize, y as usize);
+        self.hazed(land, self.haze_at(p.x, p.y, 2.0 * level - h))
+    }
+
+    /// The sky seen along world direction `dir` (pointing up).
+    fn sky_towards(&self, dir: Vec3) -> u32 {
+        match self.view.vanishing(dir) {
+            Some(p) => self.sky.colour_at(p.x, p.y),
+            // Behind the camera: high overhead, the zenith's side.
+            None => self.sky.colour_at(0.0, -1e6),
+        }
+    }
+}

@@ -1,0 +1,593 @@
+//! The water's mirror: the sight line to a point of the water, reflected
+//! off its surface and followed over the heightfield to the land it
+//! meets, or out to the sky; how much of that the water shows (Fresnel,
+//! broken up by the wind's streaks, which also tilt the line), and where
+//! the reflected line points near the sun, for its glitter.
+//!
+//! A line reflected off level water keeps its direction across the ground,
+//! so it runs in the vertical plane through the eye and the point it left
+//! the water at. The ground under a fan of such planes, one profile each
+//! (a grid row per sample, out from the eye), is all a line needs: made the
+//! first time a line needs it. Lines off the sea all come from the eye's
+//! mirror image below sea level, so a profile also holds, for each of its
+//! samples, the first sample a line off the sea there meets (one sweep
+//! from the back), and what the water there mirrors, worked out the first
+//! time a face asks. A lake's lines are followed along the profile.
+//!
+//! Everything here is a function of the scene (the field, the eye, the
+//! light), never of pixels or of the order faces are drawn in: a cached
+//! sample is the same whoever works it out first.
+//!
+//! World units: x right, y towards the front, z up (the camera's); grid
+//! positions in grid steps.
+
+use std::sync::OnceLock;
+use std::sync::atomic::{AtomicU32, Ordering};
+
+use glam::{Vec2, Vec3};
+
+use super::colour::{Rgb, blend_packed, to_u32};
+use crate::render::framing::tops::finite;
+use crate::terrain::Heightfield;
+
+/// Samples of a profile skipped at once where a lake's line passes over
+/// all of them, and the coarser skip above that.
+const BLOCK: usize = 16;
+const SPAN: usize = 256;
+/// The space between two profiles of the fan at the grid's back edge, as
+/// a share of the grid's width: the reflections' finest detail across the
+/// view (3 steps of the 1025-point grid a 1080p frame draws). A share of
+/// the world, not of the grid, so that a seed mirrors alike at every frame
+/// size, and a finer grid costs no more profiles.
+const FAN_STEP: f32 = 3.0 / 1024.0;
+/// The space between two samples of a profile, as a share of the grid's
+/// width (whole grid rows, at least one): the reflections' finest detail
+/// along the view (the sky and far land are mirrored across many rows of
+/// near water).
+const STRIDE: f32 = 2.0 / 1024.0;
+/// Water's reflectance looking straight down (Schlick's `F0`).
+const F0: f32 = 0.02;
+/// The mirror's share is Schlick's term times this, at most [`MOST`]:
+/// stylised, so that it reads at the vista's angles.
+const GAIN: f32 = 2.2;
+/// The most the water mirrors (some of its own colour always shows).
+const MOST: f32 = 0.85;
+/// How far the streaks tilt the reflected line up or down (its slope per
+/// unit of ripple): wind on the water smears reflections up and down.
+const TILT: f32 = 0.008;
+/// Cosine of the widest angle from the sun at which a reflected line may
+/// glint (its facets tilt it further, see [`Mirror::glint`]).
+const NEAR_SUN: f32 = 0.95;
+/// The tilt of the sparkling facets that throw the sun's glitter.
+const GLINT_TILT: f32 = 0.25;
+/// Cosine of the widest angle between a facet's reflected line and the sun
+/// that still glints.
+const GLINT_COS: f32 = 0.995;
+/// Only facets whose sparkle exceeds this glint (they sparkle apart).
+const SPARKLE: f32 = 0.2;
+/// A cached sample not yet worked out (no packed look is this: its share
+/// is at most [`SHARE_MAX`]).
+const EMPTY: u32 = u32::MAX;
+/// The largest share a look packs (7 bits, below all ones).
+const SHARE_MAX: u32 = 126;
+/// No sample met.
+const NONE: u32 = u32::MAX;
+
+/// What a reflected line meets.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Seen {
+    /// The ground at grid position `at`, height `height`.
+    Land { at: Vec2, height: f32 },
+    /// Nothing: the sky along this direction.
+    Sky(Vec3),
+}
+
+/// What the water at one point shows of what it mirrors.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Look {
+    /// The colour mirrored.
+    pub colour: u32,
+    /// How much of it the water shows, 0..=1 (before the streaks).
+    pub share: f32,
+    /// The reflected line's direction (unit, up), where it points near
+    /// the sun (it may glint there).
+    pub near_sun: Option<Vec3>,
+}
+
+/// The mirror of one scene's water.
+#[derive(Debug)]
+pub(crate) struct Mirror {
+    eye: Vec3,
+    /// Width of a grid step in height units.
+    cell: f32,
+    /// The eye over the ground, in grid steps (in front of the grid).
+    origin: Vec2,
+    /// The grid's last row and column.
+    last: usize,
+    /// Grid rows between two samples of a profile.
+    stride: usize,
+    /// The fan: the first profile's spread (grid steps across per step
+    /// back), the spread between two, and the profiles.
+    first: f32,
+    apart: f32,
+    profiles: Vec<OnceLock<Profile>>,
+    /// Towards the sun, in world units.
+    sun: Vec3,
+    /// The sun's direct colour, packed.
+    sun_colour: u32,
+}
+
+/// The ground under one profile of the fan: sample `k` lies on grid row
+/// `last - stride k`, `u0 + stride k` steps back from the eye (`u0`: the
+/// grid's near edge).
+#[derive(Debug)]
+struct Profile {
+    /// Grid steps across per step back.
+    spread: f32,
+    heights: Vec<f32>,
+    /// The highest of each [`BLOCK`] and each [`SPAN`] samples.
+    block_top: Vec<f32>,
+    span_top: Vec<f32>,
+    /// For each sample, the first sample a line off the sea there meets
+    /// ([`NONE`]: it leaves the grid).
+    sea_hit: Vec<u32>,
+    /// What the sea at each sample mirrors, packed ([`EMPTY`] until asked).
+    sea_look: Vec<AtomicU32>,
+}
+
+impl Mirror {
+    /// The mirror of `field` seen from `eye` (world units), a grid step
+    /// `cell` units wide, lit by `sun` (the palette's frame: y towards the
+    /// back) of colour `sun_colour`. `None` unless the eye stands in front
+    /// of the grid, above the sea (as the vista's and the perspective's do).
+    pub(crate) fn new(
+        field: &Heightfield,
+        eye: Vec3,
+        cell: f32,
+        sun: Vec3,
+        sun_colour: Rgb,
+    ) -> Option<Self> {
+        let cell = Some(cell).filter(|c| c.is_finite() && *c > 0.0)?;
+        let origin = Vec2::new(eye.x, eye.y) / cell;
+        let last = field.size().checked_sub(1).filter(|&l| l > 0)?;
+        let (near, far) = (origin.y - last as f32, origin.y);
+        if !(near > 0.0 && eye.z > 0.0 && origin.x.is_finite()) {
+            return None;
+        }
+        // Every spread that reaches the grid, [`FAN_STEP`] apart at the back.
+        let spread = |x: f32, u: f32| (x - origin.x) / u;
+        let ends = [
+            spread(0.0, near),
+            spread(0.0, far),
+            spread(last as f32, near),
+            spread(last as f32, far),
+        ];
+        let first = ends.iter().copied().fold(f32::INFINITY, f32::min);
+        let end = ends.iter().copied().fold(f32::NEG_INFINITY, f32::max);
+        let apart = FAN_STEP * last as f32 / far;
+        let stride = ((STRIDE * last as f32).round() as usize).max(1);
+        let count = (((end - first) / apart).ceil() as usize + 1).clamp(2, 1 << 20);
+        Some(Mirror {
+            eye,
+            cell,
+            origin,
+            last,
+            stride,
+            first,
+            apart,
+            profiles: (0..count).map(|_| OnceLock::new()).collect(),
+            sun: Vec3::new(sun.x, -sun.y, sun.z).normalize_or(Vec3::Z),
+            sun_colour: to_u32(sun_colour),
+        })
+    }
+
+    /// What the water at grid position `g`, on a surface at `level`, with
+    /// a streak of `ripple` (-1..1, tilting it), mirrors: `colour` says the
+    /// colour of what a line meets. `None` where the eye does not look down
+    /// at the water there.
+    pub(crate) fn look(
+        &self,
+        field: &Heightfield,
+        g: Vec2,
+        level: f32,
+        ripple: f32,
+        colour: impl Fn(Seen) -> u32,
+    ) -> Option<Look> {
+        let rise = self.eye.z - level;
+        let u = self.origin.y - g.y;
+        if !(rise > 0.0 && u > 0.0) {
+            return None;
+        }
+        // The two profiles either side, blended (`as` takes NaN and
+        // negatives to 0, and truncates: the floor of a positive number).
+        let i = (((g.x - self.origin.x) / u - self.first) / self.apart).max(0.0);
+        let last = self.profiles.len() - 1;
+        let i0 = (i as usize).min(last);
+        let t = (i - i0 as f32).min(1.0);
+        // The streak tilts the water: the line leaves as one off level
+        // water nearer or farther would.
+        let slope = rise / u;
+        let tilted = (slope + TILT * self.cell * ripple).max(0.2 * slope);
+        let u = rise / tilted;
+        let j = (u - self.near()) / self.stride as f32 + 0.5;
+        // Nearer than the grid (or not a number): no water there.
+        if j.is_nan() || j < 0.0 {
+            return None;
+        }
+        // Truncation rounds (j is at least 0), without a libm call.
+        let j = j as usize;
+        let near = self.sample(field, i0, j, level, rise, &colour);
+        let (colour, share, dir) =
+            match self.sample(field, (i0 + 1).min(last), j, level, rise, &colour) {
+                far if t > 0.0 => {
+                    let share = |p: u32| ((p >> 24) & 0x7f) as f32;
+                    let s = share(near) + (share(far) - share(near)) * t;
+                    let sun = (near | far) >> 31 != 0;
+                    (blend_packed(near, far, (t * 256.0) as u32), s, sun)
+                }
+                _ => (near, ((near >> 24) & 0x7f) as f32, near >> 31 != 0),
+            };
+        let spread = self.first + self.apart * i;
+        Some(Look {
+            colour: colour & 0x00ff_ffff,
+            share: share * (1.0 / SHARE_MAX as f32),
+            near_sun: dir.then(|| self.direction(spread, rise / u)),
+        })
+    }
+
+    /// What a line off the water at sample `j` (at most the last) of the
+    /// fan's profile `i`, on a surface at `level` `rise` below the eye,
+    /// shows, packed (see [`Mirror::pack`]); lines off the sea cached.
+    fn sample(
+        &self,
+        field: &Heightfield,
+        i: usize,
+        j: usize,
+        level: f32,
+        rise: f32,
+        colour: &impl Fn(Seen) -> u32,
+    ) -> u32 {
+        let profile = self.profile(field, i);
+        let j = j.min(profile.heights.len() - 1);
+        if level != 0.0 {
+            let met = profile.lake(self, j, level, rise);
+            return self.pack(met, profile, j, rise, colour);
+        }
+        match profile.sea_look[j].load(Ordering::Relaxed) {
+            EMPTY => {
+                let met = match profile.sea_hit[j] {
+                    NONE => None,
+                    k => Some((k as usize, profile.heights[k as usize])),
+                };
+                let packed = self.pack(met, profile, j, rise, colour);
+                profile.sea_look[j].store(packed, Ordering::Relaxed);
+                packed
+            }
+            cached => cached,
+        }
+    }
+
+    /// How far the grid's near edge lies in front of the eye, in grid steps.
+    fn near(&self) -> f32 {
+        self.origin.y - self.last as f32
+    }
+
+    /// How far sample `k` of a profile lies in front of the eye, in grid steps.
+    fn back(&self, k: usize) -> f32 {
+        self.near() + (self.stride * k) as f32
+    }
+
+    /// The profile `i` of the fan, made if it is not yet.
+    fn profile(&self, field: &Heightfield, i: usize) -> &Profile {
+        self.profiles[i]
+            .get_or_init(|| Profile::under(field, self, self.first + self.apart * i as f32))
+    }
+
+    /// The unit direction of a line along a profile of `spread`, rising
+    /// `slope` height units per step back.
+    fn direction(&self, spread: f32, slope: f32) -> Vec3 {
+        Vec3::new(spread * self.cell, -self.cell, slope).normalize()
+    }
+
+    /// The land at sample `k` of `profile`, `height` high.
+    fn land(&self, profile: &Profile, k: usize, height: f32) -> Seen {
+        let y = (self.last - self.stride * k) as f32;
+        let x = self.origin.x + profile.spread * self.back(k);
+        Seen::Land {
+            at: Vec2::new(x, y),
+            height,
+        }
+    }
+
+    /// What a line off the water at sample `j` of `profile`, `rise` below
+    /// the eye, shows, packed: the colour of what it `met` (a sample and
+    /// its height; `None`: the sky), its share, whether it points near the
+    /// sun.
+    fn pack(
+        &self,
+        met: Option<(usize, f32)>,
+        profile: &Profile,
+        j: usize,
+        rise: f32,
+        colour: &impl Fn(Seen) -> u32,
+    ) -> u32 {
+        let u = self.back(j);
+        let dir = self.direction(profile.spread, rise / u);
+        let seen = match met {
+            Some((k, height)) => self.land(profile, k, height),
+            None => Seen::Sky(dir),
+        };
+        // The sight line down to the water is the reflected one, mirrored.
+        let down = dir.z;
+        let schlick = F0 + (1.0 - F0) * (1.0 - down).powi(5);
+        let share = ((GAIN * schlick).min(MOST) * SHARE_MAX as f32) as u32;
+        let near = dir.dot(self.sun) > NEAR_SUN;
+        (colour(seen) & 0x00ff_ffff) | share.min(SHARE_MAX) << 24 | u32::from(near) << 31
+    }
+
+    /// The sun's glitter on a facet whose line would be `dir` were it level,
+    /// tilted by `sparkle` and `sideways` (-1..1, the fine ripples): the
+    /// sun's colour, and how strongly it shows (0..=1).
+    pub(crate) fn glint(&self, dir: Vec3, sparkle: f32, sideways: f32) -> Option<(u32, f32)> {
+        if sparkle < SPARKLE {
+            return None;
+        }
+        let tilted = Vec3::new(
+            dir.x + GLINT_TILT * sideways,
+            dir.y,
+            dir.z + GLINT_TILT * (sparkle - 0.5),
+        );
+        let cos = tilted.try_normalize()?.dot(self.sun);
+        if cos <= GLINT_COS {
+            return None;
+        }
+        let t = ((cos - GLINT_COS) / (1.0 - GLINT_COS)).min(1.0);
+        let strength = t.sqrt() * ((sparkle - SPARKLE) / (1.0 - SPARKLE)).min(1.0).sqrt();
+        Some((self.sun_colour, strength))
+    }
+}
+
+impl Profile {
+    /// The ground of `field` under the profile of `spread` of `mirror`'s fan.
+    fn under(field: &Heightfield, mirror: &Mirror, spread: f32) -> Self {
+        let last = mirror.last;
+        let size = last + 1;
+        let samples = last / mirror.stride + 1;
+        let all = field.heights();
+        // Off the grid's sides, no land.
+        let mut heights = vec![f32::NEG_INFINITY; samples];
+        for (k, h) in heights.iter_mut().enumerate() {
+            let y = last - mirror.stride * k;
+            let x = mirror.origin.x + spread * mirror.back(k);
+            if x >= 0.0 && x <= last as f32 {
+                let x0 = (x as usize).min(last - 1);
+                let i = y * size + x0;
+                let (a, b) = (finite(all[i]), finite(all[i + 1]));
+                *h = a + (b - a) * (x - x0 as f32);
+            }
+        }
+        let tops = |n: usize| {
+            heights
+                .chunks(n)
+                .map(|c| c.iter().copied().fold(f32::NEG_INFINITY, f32::max))
+                .collect()
+        };
+        let sea_hit = sea_hits(&heights, mirror.near(), mirror.stride as f32, mirror.eye.z);
+        Profile {
+            spread,
+            block_top: tops(BLOCK),
+            span_top: tops(SPAN),
+            sea_hit,
+            sea_look: (0..samples).map(|_| AtomicU32::new(EMPTY)).collect(),
+            heights,
+        }
+    }
+
+    /// The first sample past `j` a line off a lake at `level` there meets,
+    /// rising `rise` (the eye over the lake) over the steps from the eye to
+    /// `j`: the sample and its height.
+    fn lake(&self, mirror: &Mirror, j: usize, level: f32, rise: f32) -> Option<(usize, f32)> {
+        let uj = mirror.back(j);
+        let z = |k: usize| level + rise * (mirror.back(k) / uj - 1.0);
+        let n = self.heights.len();
+        let mut k = j + 1;
+        while k < n {
+            let zk = z(k);
+            if k.is_multiple_of(SPAN) && self.span_top[k / SPAN] < zk {
+                k += SPAN;
+            } else if k.is_multiple_of(BLOCK) && self.block_top[k / BLOCK] < zk {
+                k += BLOCK;
+            } else if self.heights[k] >= zk {
+                return Some((k, self.heights[k]));
+            } else {
+                k += 1;
+            }
+        }
+        None
+    }
+}
+
+/// For each sample of a profile of `heights` (sample `k` is `u0 + step k`
+/// steps back from the eye, which stands `eye` above the sea), the first
+/// sample past it that a line off the sea there meets, or [`NONE`].
+///
+/// The line off sample `j` rises `eye / u_j` a step, so it is below the
+/// ground at a farther `k` when `u_k <= u_j (1 + h_k / eye)`: when
+/// `c_k = u_k eye / (eye + h_k)` is at most `u_j` (land below the sea
+/// never meets it). Swept from the back, a sample farther than a nearer
+/// one of no greater `c` is never the first met, so the candidates left
+/// grow in `c` towards the front, and the first met is the nearest whose
+/// `c` is at most `u_j`: found by halving.
+fn sea_hits(heights: &[f32], u0: f32, step: f32, eye: f32) -> Vec<u32> {
+    let n = heights.len();
+    let mut hits = vec![NONE; n];
+    // (c, k), c growing from the bottom of the stack to its top.
+    let mut stack: Vec<(f32, u32)> = Vec::new();
+    for j in (0..n).rev() {
+        let uj = u0 + step * j as f32;
+        if let Some(k) = Some(j + 1).filter(|&k| k < n && heights[k] > 0.0) {
+            let c = (u0 + step * k as f32) * eye / (eye + heights[k]);
+            while stack.last().is_some_and(|&(top, _)| top >= c) {
+                stack.pop();
+            }
+            stack.push((c, k as u32));
+        }
+        // The candidates met are the bottom ones (c <= u_j); the nearest
+        // of them is the last. (A land sample is asked for too: the water
+        // of a face by the shore may lie nearest to it.)
+        let met = match stack.last() {
+            Some(&(c, k)) if c <= uj => Some(k),
+            _ => stack
+                .partition_point(|&(c, _)| c <= uj)
+                .checked_sub(1)
+                .map(|i| stack[i].1),
+        };
+        hits[j] = met.unwrap_or(NONE);
+    }
+    hits
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A sea 1 deep with one square tower `height` tall around grid point
+    /// (`x`, `y`), on a 65-point grid of unit steps.
+    fn tower(x: usize, y: usize, height: f32) -> Heightfield {
+        let mut f = Heightfield::flat(6, 64.0);
+        for gy in 0..f.size() {
+            for gx in 0..f.size() {
+                let near = gx.abs_diff(x) <= 2 && gy.abs_diff(y) <= 2;
+                f.set(gx, gy, if near { height } else { -1.0 });
+            }
+        }
+        f
+    }
+
+    const EYE: Vec3 = Vec3::new(32.0, 100.0, 10.0);
+
+    fn mirror(field: &Heightfield) -> Mirror {
+        Mirror::new(field, EYE, 1.0, Vec3::new(0.0, 1.0, 0.2), [1.0; 3]).unwrap()
+    }
+
+    /// What the water at (`x`, `y`) on `level` mirrors: the land's grid
+    /// position, or `None` for the sky.
+    fn seen(m: &Mirror, f: &Heightfield, x: f32, y: f32, level: f32) -> Option<Vec2> {
+        let found = std::cell::Cell::new(None);
+        m.look(f, Vec2::new(x, y), level, 0.0, |s| {
+            if let Seen::Land { at, .. } = s {
+                found.set(Some(at));
+            }
+            0
+        })
+        .expect("the eye looks down at the water");
+        found.get()
+    }
+
+    #[test]
+    fn the_sea_before_a_tower_mirrors_it_and_the_sea_beside_it_the_sky() {
+        let f = tower(32, 10, 10.0);
+        let m = mirror(&f);
+        let at = seen(&m, &f, 32.0, 40.0, 0.0).expect("the tower");
+        assert!(
+            (at.y - 12.0).abs() < 1.5 && (at.x - 32.0).abs() < 1.5,
+            "{at}"
+        );
+        assert!(seen(&m, &f, 10.0, 40.0, 0.0).is_none(), "beside the tower");
+        // Behind the tower, looking away from it.
+        assert!(seen(&m, &f, 32.0, 5.0, 0.0).is_none(), "behind the tower");
+        // Close to the eye the line rises too steeply to meet it.
+        assert!(seen(&m, &f, 32.0, 63.0, 0.0).is_none(), "at the near edge");
+    }
+
+    #[test]
+    fn a_lake_mirrors_as_the_sea_does() {
+        // Water 3 high before the tower: the same tower, seen from it.
+        let f = tower(32, 10, 30.0);
+        let m = mirror(&f);
+        let at = seen(&m, &f, 32.0, 40.0, 3.0).expect("the tower");
+        assert!((at.y - 12.0).abs() < 1.5, "{at}");
+        assert!(seen(&m, &f, 10.0, 40.0, 3.0).is_none());
+    }
+
+    #[test]
+    fn the_sweep_finds_the_first_sample_each_line_meets() {
+        // Against following each line off the sea sample by sample, on
+        // rough profiles (from land samples too: lines from the sea by them).
+        let mut state = 12345u32;
+        let mut next = || {
+            state = state.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            (state >> 8) as f32 / (1 << 24) as f32
+        };
+        for _ in 0..50 {
+            let heights: Vec<f32> = (0..200).map(|_| 30.0 * next() - 12.0).collect();
+            let (u0, eye, step) = (5.0 + 40.0 * next(), 2.0 + 20.0 * next(), 0.5 + 2.0 * next());
+            let hits = sea_hits(&heights, u0, step, eye);
+            let u = |k: usize| u0 + step * k as f32;
+            for (j, &hit) in hits.iter().enumerate() {
+                let z = |k: usize| eye * (u(k) / u(j) - 1.0);
+                let want = (j + 1..heights.len()).find(|&k| heights[k] > 0.0 && heights[k] >= z(k));
+                let got = (hit != NONE).then_some(hit as usize);
+                // Rounding may decide a graze either way.
+                if want != got {
+                    let k = want.or(got).unwrap();
+                    assert!(
+                        (heights[k] - z(k)).abs() < 1e-3,
+                        "sample {j}: {want:?} != {got:?}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_mirror_is_stronger_at_grazing_angles() {
+        let f = tower(32, 10, 5.0);
+        let m = mirror(&f);
+        let share = |y: f32| {
+            m.look(&f, Vec2::new(40.0, y), 0.0, 0.0, |_| 0)
+                .unwrap()
+                .share
+        };
+        // At the eye's feet it looks steeply down: little mirror.
+        assert!(share(63.0) < share(30.0) && share(30.0) <= share(2.0));
+        assert!(
+            share(63.0) < 0.7 * share(2.0),
+            "{} {}",
+            share(63.0),
+            share(2.0)
+        );
+    }
+
+    #[test]
+    fn the_sun_glints_where_the_mirrored_line_points_at_it() {
+        let f = tower(32, 10, 5.0);
+        // Straight ahead of the eye, low: where lines off the far water go.
+        let sun_ahead = Vec3::new(0.0, 1.0, 0.12).normalize();
+        let m = Mirror::new(&f, EYE, 1.0, sun_ahead, [1.0, 0.8, 0.5]).unwrap();
+        let look = m.look(&f, Vec2::new(32.0, 20.0), 0.0, 0.0, |_| 0).unwrap();
+        let dir = look.near_sun.expect("the line points near the sun");
+        let sparkles: Vec<f32> = (0..200).map(|i| i as f32 / 100.0 - 1.0).collect();
+        let glints = sparkles
+            .iter()
+            .flat_map(|&a| sparkles.iter().map(move |&b| (a, b)))
+            .filter_map(|(a, b)| m.glint(dir, a, b))
+            .count();
+        assert!(glints > 0, "no facet glints");
+        // Not every facet: they sparkle apart.
+        assert!(glints < 200 * 200 / 2, "{glints} of 40000 facets glint");
+        // The sun behind the viewer: no line points near it.
+        let behind = Vec3::new(0.0, -1.0, 0.12).normalize();
+        let m = Mirror::new(&f, EYE, 1.0, behind, [1.0; 3]).unwrap();
+        let look = m.look(&f, Vec2::new(32.0, 20.0), 0.0, 0.0, |_| 0).unwrap();
+        assert!(look.near_sun.is_none());
+    }
+
+    #[test]
+    fn only_an_eye_in_front_of_the_grid_above_the_sea_has_a_mirror() {
+        let f = tower(32, 10, 5.0);
+        let sun = Vec3::Z;
+        assert!(Mirror::new(&f, Vec3::new(32.0, 30.0, 10.0), 1.0, sun, [1.0; 3]).is_none());
+        assert!(Mirror::new(&f, Vec3::new(32.0, 80.0, -1.0), 1.0, sun, [1.0; 3]).is_none());
+    }
+}

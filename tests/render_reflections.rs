@@ -1,0 +1,265 @@
+//! Reflections (issue 19): the water mirrors the land and the sky in the
+//! vista and the perspective view; `reflections = false` is the water as it
+//! was; the slide show's strips give the full frame's pixels.
+
+use std::sync::Arc;
+
+use mountains::render::classes::{Class, render_classes};
+use mountains::render::view::View;
+use mountains::render::{Frame, Painter, render_full};
+use mountains::settings::{Clouds, ColorMode, Settings, ViewKind};
+use mountains::terrain::Heightfield;
+
+/// A sea `depth` deep with one cone `height` tall standing in it, centred
+/// at grid point (`cx`, `cy`) of a 129-point grid 400 units wide.
+fn peak(cx: f32, cy: f32, height: f32) -> Heightfield {
+    let mut f = Heightfield::flat(7, 400.0);
+    let n = f.size();
+    for y in 0..n {
+        for x in 0..n {
+            let d = ((x as f32 - cx).powi(2) + (y as f32 - cy).powi(2)).sqrt();
+            f.set(x, y, (height * (1.0 - d / 14.0)).max(-6.0));
+        }
+    }
+    f
+}
+
+fn vista(reflections: bool) -> Settings {
+    Settings {
+        view: ViewKind::Vista,
+        color: ColorMode::Natural,
+        reflections,
+        shadows: false,
+        ..Settings::default()
+    }
+}
+
+fn full(field: &Heightfield, s: &Settings, w: u32, h: u32) -> Frame {
+    let mut frame = Frame::new(w, h).unwrap();
+    render_full(field, s, &mut frame);
+    frame
+}
+
+fn rgb(c: u32) -> [i32; 3] {
+    [
+        (c >> 16) as i32 & 0xff,
+        (c >> 8) as i32 & 0xff,
+        c as i32 & 0xff,
+    ]
+}
+
+fn distance(a: u32, b: u32) -> i32 {
+    let (a, b) = (rgb(a), rgb(b));
+    (0..3).map(|i| (a[i] - b[i]).abs()).sum()
+}
+
+/// Where the cone of height `height` shows in a `w` x `h` vista: the row
+/// of its foot towards the viewer, the row where a mirror would show its
+/// top (its top's image below the water), and the lowest row below the
+/// foot down to which the water in the peak's column differs from the
+/// water a quarter of the frame to the side by more than the streaks alone
+/// make it ([`RUN`] rows running), with reflections on or off.
+struct Seen {
+    foot: f32,
+    image: f32,
+    mirrored_to: Option<u32>,
+}
+
+/// How much two colours may differ across a row of water from the streaks
+/// alone (sums of channel differences): without reflections single rows
+/// reach 53, but no four rows running exceed this.
+const STREAKS: i32 = 40;
+/// Rows running that must differ by more than [`STREAKS`].
+const RUN: u32 = 4;
+
+fn seen(height: f32, reflections: bool) -> Seen {
+    let (w, h) = (480u32, 300u32);
+    let (cx, cy) = (64.0, 40.0);
+    let field = peak(cx, cy, height);
+    // A clear sky: the peak's image, not the clouds', is measured.
+    let s = Settings {
+        clouds: Clouds::Amount(0.0),
+        ..vista(reflections)
+    };
+    let frame = full(&field, &s, w, h);
+    let row_top: Vec<f32> = (0..field.size())
+        .map(|y| field.row(y).iter().copied().fold(0.0, f32::max))
+        .collect();
+    let view = View::fitted(
+        ViewKind::Vista,
+        field.size(),
+        field.extent(),
+        &row_top,
+        w,
+        h,
+    );
+    let top = view.project(cx, cy, height);
+    // The foot on the near side, where the cone meets the water.
+    let foot = view.project(cx, cy + 14.0, 0.0).y;
+    let image = view.project(cx, cy, -height).y;
+    let x = top.x.round() as u32;
+    let side = x + w / 4;
+    let px = |x: u32, y: u32| frame.pixels()[(y * w + x) as usize];
+    let differs = |y: u32| distance(px(x, y), px(side, y)) > STREAKS;
+    let mirrored_to = ((foot.ceil() as u32 + 2)..h)
+        .filter(|&y| (y + 1 - RUN..=y).all(differs))
+        .max();
+    Seen {
+        foot,
+        image,
+        mirrored_to,
+    }
+}
+
+/// One peak by the water: its reflection lies below the shore, flipped
+/// (reaching down to where a mirror shows its top), and a taller peak's
+/// reaches lower. Without reflections the water below the peak is like
+/// the water beside it.
+#[test]
+fn a_peak_by_the_water_is_mirrored_below_its_shore() {
+    let mut reach = Vec::new();
+    for height in [40.0, 80.0] {
+        let on = seen(height, true);
+        let below = on
+            .mirrored_to
+            .unwrap_or_else(|| panic!("no reflection of a {height} peak"));
+        let (depth, want) = (below as f32 - on.foot, on.image - on.foot);
+        assert!(
+            (depth - want).abs() < 0.2 * want,
+            "peak {height}: mirrored {depth} px below its foot, a mirror shows its top {want} px below"
+        );
+        reach.push(depth);
+        let off = seen(height, false);
+        assert_eq!(
+            off.mirrored_to, None,
+            "peak {height}: the plain water below it differs from the water beside it"
+        );
+    }
+    assert!(
+        reach[1] > reach[0] * 1.3,
+        "a peak twice as tall is mirrored {} px down, the lower {} px",
+        reach[1],
+        reach[0]
+    );
+}
+
+/// `reflections = false` with a clear sky is the water as it was before
+/// issue 19: the water of the pinned pictures of the vista and the
+/// perspective made before it, pixel for pixel.
+#[test]
+fn without_reflections_the_water_is_as_it_was() {
+    let f = golden_field();
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/golden/plain-water");
+    for (view, name) in [
+        (ViewKind::Vista, "natural-vista"),
+        (ViewKind::Perspective, "natural-perspective"),
+    ] {
+        let s = Settings {
+            view,
+            color: ColorMode::Natural,
+            reflections: false,
+            clouds: Clouds::Amount(0.0),
+            ..Settings::default()
+        };
+        let got = full(&f, &s, 96, 72);
+        let want = read_png(&dir.join(format!("{name}.png"))).expect("a pinned picture");
+        // The water's pixels: the sky has the sun's glow now (issue 19
+        // too), and the skyline mixes the sky into the pixels beside it.
+        let mut classes = Frame::new(96, 72).unwrap();
+        render_classes(&f, &s, &mut classes).expect("a class picture");
+        let class = |x: i32, y: i32| {
+            let (x, y) = (x.clamp(0, 95), y.clamp(0, 71));
+            Class::of(classes.get(x as u32, y as u32))
+        };
+        let by_sky = |x: i32, y: i32| {
+            (-1..=1).any(|dy| (-1..=1).any(|dx| class(x + dx, y + dy) == Class::Sky))
+        };
+        let water: Vec<usize> = (0..96 * 72)
+            .filter(|&i| {
+                let (x, y) = ((i % 96) as i32, (i / 96) as i32);
+                class(x, y) == Class::Water && !by_sky(x, y)
+            })
+            .collect();
+        assert!(
+            water.len() > 96 * 72 / 20,
+            "{name}: {} water pixels",
+            water.len()
+        );
+        let changed = water
+            .iter()
+            .filter(|&&i| got.pixels()[i] != want.pixels()[i])
+            .count();
+        assert_eq!(changed, 0, "{name}: the plain water changed");
+        let mirrored = full(
+            &f,
+            &Settings {
+                reflections: true,
+                ..s
+            },
+            96,
+            72,
+        );
+        assert!(mirrored != want, "{name}: reflections change nothing");
+    }
+}
+
+/// The slide show's strips give the full frame's pixels with reflections,
+/// in the vista and the perspective view, turned every way.
+#[test]
+fn strips_give_the_full_frames_mirrored_water() {
+    let f = peak(50.0, 30.0, 60.0);
+    for view in [ViewKind::Vista, ViewKind::Perspective] {
+        for rotation in [0, 90, 180, 270] {
+            let s = Settings {
+                view,
+                rotation,
+                ..vista(true)
+            };
+            let (w, h) = (320, 200);
+            let all = full(&f, &s, w, h);
+            for budget in [1, 5, usize::MAX] {
+                let mut frame = Frame::new(w, h).unwrap();
+                frame.clear(0x00ab_cdef);
+                let mut p = Painter::new(Arc::new(f.clone()), &s, w, h);
+                while !p.is_done() {
+                    p.step(&mut frame, budget);
+                }
+                assert!(frame == all, "{view:?} {rotation} budget {budget}");
+            }
+        }
+    }
+}
+
+/// tests/render_painter.rs's field for its golden pictures.
+fn golden_field() -> Heightfield {
+    let mut f = Heightfield::flat(5, 400.0);
+    let n = f.size();
+    for y in 0..n {
+        for x in 0..n {
+            let (u, v) = (x as f32 / (n - 1) as f32, y as f32 / (n - 1) as f32);
+            let ridge = 70.0 * (1.0 - (2.0 * (u - 0.6)).powi(2) - (1.6 * (v - 0.4)).powi(2));
+            let wave = |t: f32| 2.0 * (t - t.floor() - 0.5).abs() - 0.5;
+            let ripple = 18.0 * wave(u * 3.7) * wave(v * 2.9 + 0.2);
+            f.set(x, y, ridge + ripple - 15.0);
+        }
+    }
+    f
+}
+
+/// An 8-bit RGB PNG as a frame (`None` if missing or not one).
+fn read_png(path: &std::path::Path) -> Option<Frame> {
+    let file = std::fs::File::open(path).ok()?;
+    let mut reader = png::Decoder::new(std::io::BufReader::new(file))
+        .read_info()
+        .ok()?;
+    let mut buf = vec![0; reader.output_buffer_size()?];
+    let info = reader.next_frame(&mut buf).ok()?;
+    if info.color_type != png::ColorType::Rgb || info.bit_depth != png::BitDepth::Eight {
+        return None;
+    }
+    let mut frame = Frame::new(info.width, info.height)?;
+    for (px, rgb) in frame.pixels_mut().iter_mut().zip(buf.chunks_exact(3)) {
+        *px = u32::from(rgb[0]) << 16 | u32::from(rgb[1]) << 8 | u32::from(rgb[2]);
+    }
+    Some(frame)
+}
