@@ -52,4 +52,7 @@ r brownian --set generator=brownian
 r brownian-rough --set generator=brownian --set hurst=0.4
 r lakes --set seed=30
 r cliffs --set cliffs=0.6
+r cloudy --set clouds=0.8
+r mirror --set seed=8
+r no-weather --set clouds=0 --set reflections=false
 echo "docs/*.png regenerated"

@@ -20,9 +20,9 @@ trap 'rm -rf "$tmp"' EXIT
 # seed, what the slide shows, and a 480x270 box of water under a shore
 # (X+Y at 1920x1080) for the 1:1 crop.
 slides='8 midday 560+560
-3 evening 700+560
+3 evening 600+800
 10 cloudy 700+560
-30 lake 700+520'
+30 lake 480+200'
 
 n=0
 echo "$slides" | while read -r seed what crop; do
