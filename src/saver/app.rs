@@ -277,9 +277,13 @@ impl ApplicationHandler<UserEvent> for App {
             }
             // X11: raw motion misses a warped pointer (`xdotool mousemove`,
             // remote desktops); the pointer's place on the screen does not.
+            // Once the grab reports the pointer in root coordinates
+            // (`UserEvent::PointerAt`) this witness stands down: its place
+            // is relative to a window, and a window a monitor change moved
+            // would turn a pointer that stayed into a move.
             #[cfg(unix)]
             WindowEvent::CursorMoved { position, .. }
-                if self.mode == AppMode::Fullscreen && !self.wayland =>
+                if self.mode == AppMode::Fullscreen && !self.wayland && !self.watching_pointer =>
             {
                 let window = self.screens[i].window.inner_position();
                 if let Ok(at) = window
