@@ -380,7 +380,15 @@ fn framed(
     let lattice = (shared > 0 && settings.view != ViewKind::Oblique)
         .then(|| RowTops::of(&field.coarsened(shared)));
     let tops = lattice.as_ref().unwrap_or(&row_top).rows();
-    let view = View::fitted(settings.view, size, field.extent(), tops, width, height);
+    let floor = super::framing::view::near_floor(field);
+    let view = View::fitted(
+        settings.view,
+        size,
+        field.extent(),
+        (tops, floor),
+        width,
+        height,
+    );
     // Sonar and Outline draw every line of their (already thinned) grid.
     let rows = if shaded {
         super::framing::rows::kept_rows(size, &view)
