@@ -13,6 +13,8 @@ use winit::monitor::MonitorHandle;
 use winit::window::{Window, WindowAttributes, WindowId};
 
 use super::error::SaverError;
+#[cfg(unix)]
+use super::grab_x11::Pointer;
 use super::heads::{self, Change, Head};
 use super::input::{Action, WakeDetector, action_for_key};
 use super::placement::{covering, find_heads};
@@ -56,6 +58,10 @@ enum UserEvent {
     /// from the input grab: warps send no raw motion).
     #[cfg_attr(not(unix), allow(dead_code))]
     PointerAt(i16, i16),
+    /// A relative pointing device moved by this much (full screen on X11,
+    /// from XInput 2 raw motion: winit's counts absolute devices' places).
+    #[cfg_attr(not(unix), allow(dead_code))]
+    PointerMoved(f64, f64),
 }
 
 /// Runs `mode` with winit until it ends.
@@ -134,6 +140,8 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
         grab: None,
         #[cfg(unix)]
         watching_pointer: false,
+        #[cfg(unix)]
+        raw_motion_watched: false,
         proxy: event_loop.create_proxy(),
     };
     event_loop
@@ -196,6 +204,10 @@ struct App {
     /// Whether the grab's pointer motion is passed on yet.
     #[cfg(unix)]
     watching_pointer: bool,
+    /// Whether relative devices' raw motion comes from the grab's thread
+    /// (`UserEvent::PointerMoved`), so winit's own is not counted.
+    #[cfg(unix)]
+    raw_motion_watched: bool,
     /// For events from threads of our own (the grab's pointer motion).
     #[cfg_attr(not(unix), allow(dead_code))]
     proxy: winit::event_loop::EventLoopProxy<UserEvent>,
@@ -319,6 +331,10 @@ impl ApplicationHandler<UserEvent> for App {
                 return;
             }
         }
+        #[cfg(unix)]
+        if self.raw_motion_watched && matches!(event, DeviceEvent::MouseMotion { .. }) {
+            return;
+        }
         if self.mode == AppMode::Fullscreen && self.wake.device_event(&event) {
             self.trace.ended_by(&event);
             event_loop.exit();
@@ -334,6 +350,12 @@ impl ApplicationHandler<UserEvent> for App {
             UserEvent::Heads(heads) => self.follow_heads(event_loop, &heads),
             UserEvent::PointerAt(x, y) => {
                 if self.mode == AppMode::Fullscreen && self.wake.moved_to(x.into(), y.into()) {
+                    self.trace.ended_by(&event);
+                    event_loop.exit()
+                }
+            }
+            UserEvent::PointerMoved(dx, dy) => {
+                if self.mode == AppMode::Fullscreen && self.wake.moved(dx, dy) {
                     self.trace.ended_by(&event);
                     event_loop.exit()
                 }
@@ -422,8 +444,12 @@ impl App {
         if held && !self.watching_pointer {
             self.watching_pointer = true;
             let proxy = self.proxy.clone();
-            grab.watch_motion(move |x, y| {
-                let _ = proxy.send_event(UserEvent::PointerAt(x, y));
+            self.raw_motion_watched = grab.watch_motion(move |pointer| {
+                let event = match pointer {
+                    Pointer::At(x, y) => UserEvent::PointerAt(x, y),
+                    Pointer::Moved(dx, dy) => UserEvent::PointerMoved(dx, dy),
+                };
+                let _ = proxy.send_event(event);
             });
         }
         !held

@@ -37,6 +37,8 @@ pub mod heads;
 pub mod heads_x11;
 pub mod input;
 pub mod libcheck;
+#[cfg(unix)]
+mod motion_x11;
 mod on_screen;
 mod options;
 mod overlay;
