@@ -116,12 +116,16 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
     };
     #[cfg(not(unix))]
     let server_heads = Vec::new();
+    // X11: the visual and, for full screen, the pointer's place before the
+    // windows map: the origin its moves (warps too, which no device
+    // reports as raw motion) are measured from.
     #[cfg(unix)]
-    let x11_visual = if wayland {
-        None
-    } else {
-        crate::x11_visual::drawable_visual()
+    let first_look = match wayland {
+        true => super::pointer_x11::FirstLook::default(),
+        false => super::pointer_x11::first_look(mode == AppMode::Fullscreen),
     };
+    #[cfg(unix)]
+    let (x11_visual, pointer_origin) = (first_look.visual, first_look.pointer);
     #[cfg(not(unix))]
     let x11_visual = None;
     let mut app = App {
@@ -132,6 +136,8 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
         screens: Vec::new(),
         server_heads,
         x11_visual,
+        #[cfg(unix)]
+        pointer_origin,
         wake: WakeDetector::new(),
         error: None,
         trace: Trace::from_env(),
@@ -194,6 +200,9 @@ struct App {
     server_heads: Vec<Head>,
     /// The X visual windows are made with, when not the screen's own.
     x11_visual: Option<u32>,
+    /// X11 full screen: the pointer's place before the windows opened.
+    #[cfg(unix)]
+    pointer_origin: Option<(f64, f64)>,
     wake: WakeDetector,
     error: Option<SaverError>,
     trace: Trace,
@@ -218,14 +227,8 @@ impl ApplicationHandler<UserEvent> for App {
         if std::mem::replace(&mut self.started, true) {
             return;
         }
-        // X11 full screen: the pointer's place before the windows map is
-        // the origin its moves (warps too, which no device reports as raw
-        // motion) are measured from.
         #[cfg(unix)]
-        if self.mode == AppMode::Fullscreen
-            && !self.wayland
-            && let Some((x, y)) = super::pointer_x11::pointer_position()
-        {
+        if let Some((x, y)) = self.pointer_origin.take() {
             self.wake.moved_to(x, y);
         }
         if let Err(e) = self.open_windows(event_loop) {
