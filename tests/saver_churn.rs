@@ -97,7 +97,7 @@ fn windows_at(x: &Xvfb) -> Vec<Geometry> {
 }
 
 /// A number of the saver's /proc/PID/status (`VmRSS:` in KiB, `Threads:`).
-fn status_kib(saver: &Saver, field: &str) -> u64 {
+fn status_number(saver: &Saver, field: &str) -> u64 {
     let status = std::fs::read_to_string(format!("/proc/{}/status", saver.pid())).unwrap();
     status
         .lines()
@@ -149,8 +149,8 @@ fn at_rest(x: &Xvfb, saver: &mut Saver) {
     }
     panic!(
         "the saver is still at work {PATIENCE:?} after the storm, with {} threads and {} KiB resident",
-        status_kib(saver, "Threads:"),
-        status_kib(saver, "VmRSS:")
+        status_number(saver, "Threads:"),
+        status_number(saver, "VmRSS:")
     );
 }
 
@@ -173,14 +173,14 @@ fn display_fullscreen_memory_stays_flat_through_monitor_storms() {
     at_rest(&x, &mut saver);
     eprintln!(
         "before the storms: VmRSS {} KiB",
-        status_kib(&saver, "VmRSS:")
+        status_number(&saver, "VmRSS:")
     );
     let mut defined = 0;
     let mut after = Vec::new();
     for n in 1..=6 {
         storm(&x, &mut saver, &mut defined);
         at_rest(&x, &mut saver);
-        let rss = status_kib(&saver, "VmRSS:");
+        let rss = status_number(&saver, "VmRSS:");
         eprintln!("after storm {n}: VmRSS {rss} KiB");
         after.push(rss);
     }
