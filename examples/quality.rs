@@ -27,7 +27,7 @@ use mountains::quality::image::Image;
 use mountains::quality::metrics::{psnr, psnr_of_mse, share_off_by, squared_error, ssim};
 use mountains::quality::registration::best_shift;
 use mountains::render::classes::{Class, render_classes};
-use mountains::render::view::View;
+use mountains::render::view::{self, View};
 use mountains::render::{Frame, detail, render_full};
 use mountains::settings::{Detail, Settings, load};
 use mountains::terrain::{self, Heightfield};
@@ -269,8 +269,17 @@ fn fair_reference(
             row.fold(0.0f32, |m, &v| m.max(v))
         })
         .collect();
-    let view =
-        |w: u32, h: u32| View::fitted(settings.view, field.size(), field.extent(), &tops, w, h);
+    let floor = view::near_floor(field);
+    let view = |w: u32, h: u32| {
+        View::fitted(
+            settings.view,
+            field.size(),
+            field.extent(),
+            (&tops, floor),
+            w,
+            h,
+        )
+    };
     let steps = (field.size() - 1) as f32;
     let edges = |v: &View| {
         let back = v.project(0.5 * steps, 0.0, 0.0).y;

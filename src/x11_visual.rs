@@ -13,6 +13,11 @@ use x11rb::rust_connection::RustConnection;
 /// screen's own will do (or none will: the window then says why).
 pub fn drawable_visual() -> Option<u32> {
     let (conn, screen) = RustConnection::connect(None).ok()?;
+    drawable_visual_on(&conn, screen)
+}
+
+/// [`drawable_visual`] on screen `screen` of a connection already open.
+pub fn drawable_visual_on(conn: &impl Connection, screen: usize) -> Option<u32> {
     choose(conn.setup().roots.get(screen)?)
 }
 

@@ -3,7 +3,7 @@
 use std::collections::HashSet;
 
 use mountains::render::raster::{Clip, draw_line, to_fixed};
-use mountains::render::view::View;
+use mountains::render::view::{self, View};
 use mountains::render::{Frame, render_full};
 use mountains::settings::{ColorMode, Settings, ViewKind};
 use mountains::terrain::Heightfield;
@@ -18,7 +18,15 @@ fn edge_pixels(field: &Heightfield, w: u32, h: u32) -> HashSet<(u32, u32)> {
     let row_top: Vec<f32> = (0..n)
         .map(|y| field.row(y).iter().fold(0.0f32, |m, &h| m.max(h)))
         .collect();
-    let view = View::fitted(ViewKind::Oblique, n, field.extent(), &row_top, w, h);
+    let floor = view::near_floor(field);
+    let view = View::fitted(
+        ViewKind::Oblique,
+        n,
+        field.extent(),
+        (&row_top, floor),
+        w,
+        h,
+    );
     let at = |x: usize, y: usize| {
         let p = view.project(x as f32, y as f32, field.get(x, y).max(0.0));
         to_fixed(p.x, p.y)

@@ -5,7 +5,7 @@
 use std::sync::Arc;
 
 use mountains::render::classes::{Class, render_classes};
-use mountains::render::view::View;
+use mountains::render::view::{self, View};
 use mountains::render::{Frame, Painter, render_full};
 use mountains::settings::{Clouds, ColorMode, Settings, ViewKind};
 use mountains::terrain::Heightfield;
@@ -89,7 +89,7 @@ fn seen(height: f32, reflections: bool) -> Seen {
         ViewKind::Vista,
         field.size(),
         field.extent(),
-        &row_top,
+        (&row_top, view::near_floor(&field)),
         w,
         h,
     );

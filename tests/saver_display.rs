@@ -120,6 +120,30 @@ fn display_fullscreen_ignores_a_small_warp() {
     saver.assert_running();
 }
 
+/// XTEST absolute motion to where the pointer already is (a VNC server or
+/// a tablet pointer repeating its place) moves nothing: winit passes it on
+/// as a raw delta, which is not a move (issue 22 item 3).
+#[test]
+fn display_fullscreen_ignores_absolute_motion_to_the_same_place() {
+    let Some(x) = Xvfb::start(640, 480, &[]) else {
+        return;
+    };
+    x.move_to(300, 200);
+    let mut saver = Saver::start(&x, "fs-same-place", &["/s"], &[]);
+    poll(&mut saver, "a mountain on the screen", || {
+        looks_drawn(&x.grab_screen())
+    });
+    for _ in 0..5 {
+        x.move_to(300, 200);
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    std::thread::sleep(Duration::from_millis(700));
+    saver.assert_running();
+    // Absolute motion to another place still ends it.
+    x.move_to(500, 400);
+    expect_exit(&mut saver, "absolute motion to another place");
+}
+
 #[test]
 fn display_fullscreen_ignores_a_3px_jitter() {
     let Some((x, mut saver)) = fullscreen("fs-jitter") else {

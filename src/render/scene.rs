@@ -478,12 +478,13 @@ fn framed(
     } else {
         Oblique::OURS
     };
+    let floor = super::framing::view::near_floor(field);
     let view = View::fitted_oblique(
         settings.view,
         oblique,
         size,
         field.extent(),
-        tops,
+        (tops, floor),
         width,
         height,
     );

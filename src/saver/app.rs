@@ -13,6 +13,8 @@ use winit::monitor::MonitorHandle;
 use winit::window::{Window, WindowAttributes, WindowId};
 
 use super::error::SaverError;
+#[cfg(unix)]
+use super::grab_x11::Pointer;
 use super::heads::{self, Change, Head};
 use super::input::{Action, WakeDetector, action_for_key};
 use super::placement::{covering, find_heads};
@@ -56,6 +58,10 @@ enum UserEvent {
     /// from the input grab: warps send no raw motion).
     #[cfg_attr(not(unix), allow(dead_code))]
     PointerAt(i16, i16),
+    /// A relative pointing device moved by this much (full screen on X11,
+    /// from XInput 2 raw motion: winit's counts absolute devices' places).
+    #[cfg_attr(not(unix), allow(dead_code))]
+    PointerMoved(f64, f64),
 }
 
 /// Runs `mode` with winit until it ends.
@@ -110,12 +116,16 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
     };
     #[cfg(not(unix))]
     let server_heads = Vec::new();
+    // X11: the visual and, for full screen, the pointer's place before the
+    // windows map: the origin its moves (warps too, which no device
+    // reports as raw motion) are measured from.
     #[cfg(unix)]
-    let x11_visual = if wayland {
-        None
-    } else {
-        crate::x11_visual::drawable_visual()
+    let first_look = match wayland {
+        true => super::pointer_x11::FirstLook::default(),
+        false => super::pointer_x11::first_look(mode == AppMode::Fullscreen),
     };
+    #[cfg(unix)]
+    let (x11_visual, pointer_origin) = (first_look.visual, first_look.pointer);
     #[cfg(not(unix))]
     let x11_visual = None;
     let mut app = App {
@@ -126,6 +136,8 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
         screens: Vec::new(),
         server_heads,
         x11_visual,
+        #[cfg(unix)]
+        pointer_origin,
         wake: WakeDetector::new(),
         error: None,
         trace: Trace::from_env(),
@@ -134,6 +146,8 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
         grab: None,
         #[cfg(unix)]
         watching_pointer: false,
+        #[cfg(unix)]
+        raw_motion_watched: false,
         proxy: event_loop.create_proxy(),
     };
     event_loop
@@ -186,6 +200,9 @@ struct App {
     server_heads: Vec<Head>,
     /// The X visual windows are made with, when not the screen's own.
     x11_visual: Option<u32>,
+    /// X11 full screen: the pointer's place before the windows opened.
+    #[cfg(unix)]
+    pointer_origin: Option<(f64, f64)>,
     wake: WakeDetector,
     error: Option<SaverError>,
     trace: Trace,
@@ -196,6 +213,10 @@ struct App {
     /// Whether the grab's pointer motion is passed on yet.
     #[cfg(unix)]
     watching_pointer: bool,
+    /// Whether relative devices' raw motion comes from the grab's thread
+    /// (`UserEvent::PointerMoved`), so winit's own is not counted.
+    #[cfg(unix)]
+    raw_motion_watched: bool,
     /// For events from threads of our own (the grab's pointer motion).
     #[cfg_attr(not(unix), allow(dead_code))]
     proxy: winit::event_loop::EventLoopProxy<UserEvent>,
@@ -206,14 +227,8 @@ impl ApplicationHandler<UserEvent> for App {
         if std::mem::replace(&mut self.started, true) {
             return;
         }
-        // X11 full screen: the pointer's place before the windows map is
-        // the origin its moves (warps too, which no device reports as raw
-        // motion) are measured from.
         #[cfg(unix)]
-        if self.mode == AppMode::Fullscreen
-            && !self.wayland
-            && let Some((x, y)) = super::pointer_x11::pointer_position()
-        {
+        if let Some((x, y)) = self.pointer_origin.take() {
             self.wake.moved_to(x, y);
         }
         if let Err(e) = self.open_windows(event_loop) {
@@ -277,9 +292,13 @@ impl ApplicationHandler<UserEvent> for App {
             }
             // X11: raw motion misses a warped pointer (`xdotool mousemove`,
             // remote desktops); the pointer's place on the screen does not.
+            // Once the grab reports the pointer in root coordinates
+            // (`UserEvent::PointerAt`) this witness stands down: its place
+            // is relative to a window, and a window a monitor change moved
+            // would turn a pointer that stayed into a move.
             #[cfg(unix)]
             WindowEvent::CursorMoved { position, .. }
-                if self.mode == AppMode::Fullscreen && !self.wayland =>
+                if self.mode == AppMode::Fullscreen && !self.wayland && !self.watching_pointer =>
             {
                 let window = self.screens[i].window.inner_position();
                 if let Ok(at) = window
@@ -315,6 +334,10 @@ impl ApplicationHandler<UserEvent> for App {
                 return;
             }
         }
+        #[cfg(unix)]
+        if self.raw_motion_watched && matches!(event, DeviceEvent::MouseMotion { .. }) {
+            return;
+        }
         if self.mode == AppMode::Fullscreen && self.wake.device_event(&event) {
             self.trace.ended_by(&event);
             event_loop.exit();
@@ -330,6 +353,12 @@ impl ApplicationHandler<UserEvent> for App {
             UserEvent::Heads(heads) => self.follow_heads(event_loop, &heads),
             UserEvent::PointerAt(x, y) => {
                 if self.mode == AppMode::Fullscreen && self.wake.moved_to(x.into(), y.into()) {
+                    self.trace.ended_by(&event);
+                    event_loop.exit()
+                }
+            }
+            UserEvent::PointerMoved(dx, dy) => {
+                if self.mode == AppMode::Fullscreen && self.wake.moved(dx, dy) {
                     self.trace.ended_by(&event);
                     event_loop.exit()
                 }
@@ -418,8 +447,12 @@ impl App {
         if held && !self.watching_pointer {
             self.watching_pointer = true;
             let proxy = self.proxy.clone();
-            grab.watch_motion(move |x, y| {
-                let _ = proxy.send_event(UserEvent::PointerAt(x, y));
+            self.raw_motion_watched = grab.watch_motion(move |pointer| {
+                let event = match pointer {
+                    Pointer::At(x, y) => UserEvent::PointerAt(x, y),
+                    Pointer::Moved(dx, dy) => UserEvent::PointerMoved(dx, dy),
+                };
+                let _ = proxy.send_event(event);
             });
         }
         !held

@@ -7,7 +7,9 @@
 //! our own; winit still sees the raw device events (XI 2.1 and later send
 //! raw events regardless of grabs), which is what ends the saver. A warped
 //! pointer (`xdotool mousemove`, remote desktops) sends no raw event: the
-//! grab asks for the pointer's motion and a thread passes each place on.
+//! grab asks for the pointer's motion and a thread passes each place on,
+//! and with it the relative devices' raw motion (see motion_x11.rs: winit
+//! counts an absolute device's place as motion).
 
 use std::sync::Arc;
 
@@ -17,12 +19,25 @@ use x11rb::protocol::xproto::{ConnectionExt as _, EventMask, GrabMode, GrabStatu
 use x11rb::rust_connection::RustConnection;
 use x11rb::{CURRENT_TIME, NONE};
 
+use super::motion_x11::Devices;
+
 /// Attempts before giving up: the window may take a few frames to be viewable.
 const ATTEMPTS: u32 = 50;
+
+/// What the grab's thread tells of the pointer.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Pointer {
+    /// It is at this place on the screen (root coordinates).
+    At(i16, i16),
+    /// A relative device moved it by this much (perhaps against an edge).
+    Moved(f64, f64),
+}
 
 /// The grab, held as long as this lives (closing the connection releases it).
 pub struct InputGrab {
     conn: Option<Arc<RustConnection>>,
+    /// The root window of the connection's screen.
+    root: u32,
     window: u32,
     tries: u32,
     keyboard: bool,
@@ -32,8 +47,14 @@ pub struct InputGrab {
 impl InputGrab {
     /// Prepares grabbing input for `window`; nothing happens without a display.
     pub fn new(window: u32) -> Self {
+        let conn = RustConnection::connect(None).ok();
+        let root = conn
+            .as_ref()
+            .and_then(|(c, screen)| c.setup().roots.get(*screen))
+            .map_or(0, |s| s.root);
         InputGrab {
-            conn: RustConnection::connect(None).ok().map(|(c, _)| Arc::new(c)),
+            conn: conn.map(|(c, _)| Arc::new(c)),
+            root,
             window,
             tries: 0,
             keyboard: false,
@@ -89,16 +110,33 @@ impl InputGrab {
     }
 
     /// Calls `tell` with the pointer's place on the screen (root
-    /// coordinates) at each motion the pointer grab reports, on a thread of
-    /// its own, until the connection ends. Nothing without a connection.
-    pub fn watch_motion(&self, tell: impl Fn(i16, i16) + Send + 'static) {
+    /// coordinates) at each motion the pointer grab reports and with each
+    /// relative device's raw motion, on a thread of its own, until the
+    /// connection ends. True when the raw motion is watched (XInput 2.2);
+    /// nothing is without a connection.
+    pub fn watch_motion(&self, tell: impl Fn(Pointer) + Send + 'static) -> bool {
         let Some(conn) = self.conn.clone() else {
-            return;
+            return false;
         };
+        let mut devices = Devices::watch(&*conn, self.root);
+        let raw = devices.is_some();
+        let root = self.root;
         let watch = move || {
+            // A move before the grab held and the raw motion was asked for
+            // reached neither: the place now tells of it.
+            if let Some(p) = conn.query_pointer(root).ok().and_then(|c| c.reply().ok()) {
+                tell(Pointer::At(p.root_x, p.root_y));
+            }
             while let Ok(event) = conn.wait_for_event() {
-                if let Event::MotionNotify(e) = event {
-                    tell(e.root_x, e.root_y);
+                match event {
+                    Event::MotionNotify(e) => tell(Pointer::At(e.root_x, e.root_y)),
+                    Event::XinputRawMotion(e) => {
+                        if let Some((dx, dy)) = devices.as_ref().map(|d| d.travel(&e)) {
+                            tell(Pointer::Moved(dx, dy));
+                        }
+                    }
+                    Event::XinputHierarchy(_) => devices = Devices::query(&*conn),
+                    _ => {}
                 }
             }
         };
@@ -107,6 +145,8 @@ impl InputGrab {
             .spawn(watch);
         if let Err(e) = spawned {
             crate::log::warn(&format!("cannot watch the pointer: {e}"));
+            return false;
         }
+        raw
     }
 }

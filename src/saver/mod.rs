@@ -44,6 +44,8 @@ pub mod input;
 #[cfg(target_os = "linux")]
 pub mod layer_wayland;
 pub mod libcheck;
+#[cfg(unix)]
+mod motion_x11;
 mod on_screen;
 mod options;
 mod overlay;

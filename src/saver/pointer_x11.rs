@@ -1,14 +1,36 @@
-//! Where the X pointer is, asked of the server once: the origin a full
-//! screen's pointer moves are measured from, taken before its windows map,
-//! so a move that comes before the first motion event is still a move.
+//! What the saver asks the X server once, before its windows map, on one
+//! short-lived connection: the visual to draw with (chosen by
+//! x11_visual.rs) and, for full screen, where the pointer is: the origin
+//! its moves are measured from, taken before the windows map, so a move
+//! that comes before the first motion event is still a move.
 
 use x11rb::connection::Connection;
 use x11rb::protocol::xproto::ConnectionExt as _;
 use x11rb::rust_connection::RustConnection;
 
-/// The pointer's place on `$DISPLAY`'s screen, in root coordinates.
-pub fn pointer_position() -> Option<(f64, f64)> {
-    let (conn, screen) = RustConnection::connect(None).ok()?;
+/// What the server said before the windows opened.
+#[derive(Debug, Default, Clone, Copy)]
+pub struct FirstLook {
+    /// The visual to make windows with, when not the screen's own.
+    pub visual: Option<u32>,
+    /// The pointer's place on the screen (root coordinates), if asked for.
+    pub pointer: Option<(f64, f64)>,
+}
+
+/// Asks `$DISPLAY` for the visual and, if `pointer`, the pointer's place;
+/// nothing of either when the server cannot be reached.
+pub fn first_look(pointer: bool) -> FirstLook {
+    let Ok((conn, screen)) = RustConnection::connect(None) else {
+        return FirstLook::default();
+    };
+    FirstLook {
+        visual: crate::x11_visual::drawable_visual_on(&conn, screen),
+        pointer: pointer.then(|| pointer_position(&conn, screen)).flatten(),
+    }
+}
+
+/// The pointer's place on `screen`, in root coordinates.
+fn pointer_position(conn: &RustConnection, screen: usize) -> Option<(f64, f64)> {
     let root = conn.setup().roots.get(screen)?.root;
     let reply = conn.query_pointer(root).ok()?.reply().ok()?;
     Some((reply.root_x.into(), reply.root_y.into()))

@@ -1,8 +1,14 @@
 //! A complete redraw of the mountain on screen, after a resize or a change
 //! of colours, drawn on other threads (on all cores) while the event loop
 //! goes on answering input and the old picture stays up.
+//!
+//! A redraw nobody waits for any more (its window closed, a new slide came)
+//! is called off when dropped: its thread stops at the next stage instead of
+//! drawing a frame no one will see. Under a storm of monitor changes such
+//! threads piled up, each with a frame and a scene of its own (issue 22).
 
 use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::thread::JoinHandle;
 
 use crate::render::{Frame, Painter};
@@ -22,9 +28,12 @@ pub struct Drawn {
     pub made: Option<Settings>,
 }
 
-/// A redraw under way.
+/// A redraw under way; dropping it calls it off.
 pub struct Redraw {
-    handle: JoinHandle<Drawn>,
+    /// `None` once waited for.
+    handle: Option<JoinHandle<Option<Drawn>>>,
+    /// Set when the redraw is no longer wanted.
+    called_off: Arc<AtomicBool>,
 }
 
 impl Redraw {
@@ -37,7 +46,9 @@ impl Redraw {
         size: (u32, u32),
     ) -> Result<Self, Box<Drawn>> {
         let settings = settings.clone();
-        Redraw::run("redraw", move || draw(field, &settings, size, None))
+        Redraw::run("redraw", move |off: &AtomicBool| {
+            draw(field, &settings, size, None, off)
+        })
     }
 
     /// Starts making the mountain of `seed` again under `made` (the
@@ -50,53 +61,80 @@ impl Redraw {
         size: (u32, u32),
     ) -> Result<Self, Box<Drawn>> {
         let settings = settings.clone();
-        Redraw::run("remake", move || {
+        Redraw::run("remake", move |off: &AtomicBool| {
+            if off.load(Ordering::Relaxed) {
+                return None;
+            }
             let field = Arc::new(crate::terrain::generate(&made, seed));
-            draw(field, &settings, size, Some(made))
+            draw(field, &settings, size, Some(made), off)
         })
     }
 
     /// `work` on a thread of its own, or here if none can be started.
     fn run(
         name: &str,
-        work: impl FnOnce() -> Drawn + Clone + Send + 'static,
+        work: impl FnOnce(&AtomicBool) -> Option<Drawn> + Clone + Send + 'static,
     ) -> Result<Self, Box<Drawn>> {
+        let called_off = Arc::new(AtomicBool::new(false));
+        let off = called_off.clone();
+        let mine = work.clone();
         match std::thread::Builder::new()
             .name(name.into())
-            .spawn(work.clone())
+            .spawn(move || mine(&off))
         {
-            Ok(handle) => Ok(Redraw { handle }),
-            Err(_) => Err(Box::new(work())),
+            Ok(handle) => Ok(Redraw {
+                handle: Some(handle),
+                called_off,
+            }),
+            // Here nobody can call it off: it always ends with a frame.
+            Err(_) => Err(Box::new(
+                work(&AtomicBool::new(false)).expect("a redraw not called off"),
+            )),
         }
     }
 
     /// True once the redraw is finished (`wait` will not block).
     pub fn is_done(&self) -> bool {
-        self.handle.is_finished()
+        self.handle.as_ref().is_none_or(JoinHandle::is_finished)
     }
 
     /// The finished redraw, waiting for it if need be; `None` if it failed.
-    pub fn wait(self) -> Option<Drawn> {
-        crate::log::joined(self.handle, "redrawing the mountain")
+    pub fn wait(mut self) -> Option<Drawn> {
+        let handle = self.handle.take()?;
+        crate::log::joined(handle, "redrawing the mountain").flatten()
     }
 }
 
-/// Draws a whole frame: in bands on all cores (`Painter::finish`).
+impl Drop for Redraw {
+    fn drop(&mut self) {
+        self.called_off.store(true, Ordering::Relaxed);
+    }
+}
+
+/// Draws a whole frame: in bands on all cores (`Painter::finish`); `None`
+/// when called off (`off`) before the scene or the frame was begun.
 fn draw(
     field: Arc<Heightfield>,
     settings: &Settings,
     size: (u32, u32),
     made: Option<Settings>,
-) -> Drawn {
+    off: &AtomicBool,
+) -> Option<Drawn> {
+    if off.load(Ordering::Relaxed) {
+        return None;
+    }
     let mut painter = Painter::new(field.clone(), settings, size.0, size.1);
+    if off.load(Ordering::Relaxed) {
+        return None;
+    }
     let mut frame = Frame::new(size.0, size.1);
     if let Some(frame) = frame.as_mut() {
         painter.finish(frame);
     }
-    Drawn {
+    Some(Drawn {
         frame,
         painter,
         field,
         made,
-    }
+    })
 }

@@ -23,6 +23,16 @@ enum Next {
     Pending(JoinHandle<Mountain>, Settings),
 }
 
+/// What to do once the redraw under way is done, because something asked
+/// for another while it ran.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Again {
+    /// Draw the mountain again (a new size, new colours).
+    Redraw,
+    /// Make it again, then draw it (Low Detail).
+    Remake,
+}
+
 /// How often the event loop looks whether a redraw is finished: a frame
 /// takes tens of milliseconds, and a look costs next to nothing.
 const REDRAW_POLL: Duration = Duration::from_millis(4);
@@ -42,6 +52,9 @@ pub struct Show {
     painter: Option<Painter>,
     /// A complete redraw under way; the old frame stays up until it is done.
     redraw: Option<Redraw>,
+    /// Asked for while `redraw` ran: one redraw at a time, so a storm of
+    /// resizes costs one thread, not one each (issue 22).
+    again: Option<Again>,
     slideshow: Slideshow,
     /// Number of the slide on screen, counted from 0: picks its source.
     slide: u64,
@@ -93,6 +106,7 @@ impl Show {
             size,
             painter: None,
             redraw: None,
+            again: None,
             slideshow: Slideshow::new(pacing, 0, now),
             slide: 0,
             overlay: Overlay::default(),
@@ -220,6 +234,7 @@ impl Show {
         // A redraw of the old mountain still under way is not wanted now,
         // nor the old painter: the new scene is built without them.
         self.redraw = None;
+        self.again = None;
         self.painter = None;
         self.current = None;
         let (mountain, made) = next.unwrap_or_else(|| self.make_next_now());
@@ -266,19 +281,37 @@ impl Show {
     }
 
     /// Waits for a redraw under way, if any, and shows it: the rectangle
-    /// that changed (empty when there was none).
+    /// that changed (empty when there was none). One asked for meanwhile
+    /// starts then.
     pub fn settle(&mut self, now: Instant) -> Rect {
         let Some(redraw) = self.redraw.take() else {
             return Rect::default();
         };
-        match redraw.wait() {
+        let shown = match redraw.wait() {
             Some(drawn) => self.show_redrawn(drawn, now),
             // The drawing thread failed: draw here, strip by strip.
             None => {
                 self.start_drawing(self.size, now);
                 self.tick(now).bounds()
             }
+        };
+        let next = match self.again.take() {
+            Some(Again::Redraw) => self.begin_redraw(now),
+            Some(Again::Remake) => self.begin_remake(now),
+            None => Rect::default(),
+        };
+        shown.union(&next)
+    }
+
+    /// True (and remembered) when a redraw is under way: `again` follows it.
+    fn after_redraw(&mut self, again: Again) -> bool {
+        if self.redraw.is_none() {
+            return false;
         }
+        if self.again != Some(Again::Remake) {
+            self.again = Some(again);
+        }
+        true
     }
 
     /// Pauses or resumes the drawing and the hold.
@@ -321,6 +354,9 @@ impl Show {
         else {
             return self.begin_redraw(now);
         };
+        if self.after_redraw(Again::Remake) {
+            return Rect::default();
+        }
         for key in keys::KEYS.iter().filter(|k| k.change == Change::Remake) {
             keys::copy(key, &self.settings, &mut self.made_with);
         }
@@ -342,8 +378,12 @@ impl Show {
     }
 
     /// Starts redrawing the current mountain whole at the show's size; the
-    /// drawing under way stops where it is and the old frame stays up.
+    /// drawing under way stops where it is and the old frame stays up. A
+    /// redraw already under way is finished first, then this one starts.
     fn begin_redraw(&mut self, now: Instant) -> Rect {
+        if self.after_redraw(Again::Redraw) {
+            return Rect::default();
+        }
         let Some(mountain) = self.current.as_ref() else {
             return Rect::default();
         };
@@ -553,6 +593,34 @@ mod tests {
         let frame = show.frame().expect("frame");
         assert_eq!((frame.width(), frame.height()), (100, 30));
         let mut full = Frame::new(100, 30).unwrap();
+        let m = show.current().unwrap();
+        crate::render::render_full(&m.field, show.settings(), &mut full);
+        assert_eq!(frame.pixels(), full.pixels());
+    }
+
+    /// A storm of resizes (monitors changing) costs one redraw at a time:
+    /// those asked while one runs become one more, at the latest size,
+    /// started when the first is shown (issue 22: one thread each piled up).
+    #[test]
+    fn resizes_during_a_redraw_make_one_more_at_the_last_size() {
+        let t0 = Instant::now();
+        let mut show = Show::new(small_settings(), None, pacing(), (64, 48), t0);
+        for size in [(100, 30), (80, 60), (70, 50)] {
+            show.resize(size, t0);
+        }
+        assert!(
+            show.again == Some(Again::Redraw),
+            "the later resizes were lost"
+        );
+        show.settle(t0);
+        let frame = show.frame().expect("frame");
+        assert_eq!((frame.width(), frame.height()), (100, 30));
+        assert!(show.redraw.is_some(), "no redraw for the last size");
+        show.settle(t0);
+        assert!(show.redraw.is_none() && show.again.is_none());
+        let frame = show.frame().expect("frame");
+        assert_eq!((frame.width(), frame.height()), (70, 50));
+        let mut full = Frame::new(70, 50).unwrap();
         let m = show.current().unwrap();
         crate::render::render_full(&m.field, show.settings(), &mut full);
         assert_eq!(frame.pixels(), full.pixels());

@@ -38,6 +38,11 @@ impl RowCamera {
 }
 
 impl Camera {
+    /// How high the camera stands, in world units.
+    pub(crate) fn eye_height(&self) -> f32 {
+        self.eye.z
+    }
+
     /// At `eye`, level sideways, looking towards `-y` and down by `pitch`
     /// radians, for a grid `extent` units wide.
     pub(crate) fn looking_back(eye: Vec3, pitch: f32, extent: f32) -> Self {

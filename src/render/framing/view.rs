@@ -8,8 +8,22 @@
 use glam::{Vec2, Vec3};
 
 use super::camera::{Camera, RowCamera};
+use super::tops::finite;
 use super::vista;
 use crate::settings::ViewKind;
+use crate::terrain::Heightfield;
+
+/// The lowest point of `field`'s near edge (its last row), at least sea
+/// level: the `near_floor` [`View::fitted`] asks for.
+pub fn near_floor(field: &Heightfield) -> f32 {
+    let last = field.size().saturating_sub(1);
+    let lowest = (field.row(last).iter()).fold(f32::INFINITY, |m, &h| m.min(finite(h)));
+    if lowest.is_finite() {
+        lowest.max(0.0)
+    } else {
+        0.0
+    }
+}
 
 /// Sine and cosine of the classic view's tilt: the grid is tipped back 70
 /// degrees about the x axis (seed 000's `xTh = -1.396`). Written out rather
@@ -116,21 +130,31 @@ impl View {
         height: u32,
     ) -> Self {
         let zmax = if zmax.is_finite() { zmax.max(0.0) } else { 0.0 };
-        Self::fitted(kind, size, extent, &[zmax, zmax], width, height)
+        Self::fitted(kind, size, extent, (&[zmax, zmax], 0.0), width, height)
     }
 
     /// Like [`View::new`], fitted to the mountain itself: `row_top[y]` is
     /// the highest point of grid row `y` (a box with the highest peak over
-    /// every corner leaves a wide margin where the peak is not).
+    /// every corner leaves a wide margin where the peak is not);
+    /// `near_floor` the lowest point of the near edge (the last row), which
+    /// the vista's camera must stand above to see the land.
     pub fn fitted(
         kind: ViewKind,
         size: usize,
         extent: f32,
-        row_top: &[f32],
+        (row_top, near_floor): (&[f32], f32),
         width: u32,
         height: u32,
     ) -> Self {
-        Self::fitted_oblique(kind, Oblique::OURS, size, extent, row_top, width, height)
+        Self::fitted_oblique(
+            kind,
+            Oblique::OURS,
+            size,
+            extent,
+            (row_top, near_floor),
+            width,
+            height,
+        )
     }
 
     /// [`View::fitted`], the oblique view tipped back by seed 000's code's
@@ -141,7 +165,7 @@ impl View {
         oblique: Oblique,
         size: usize,
         extent: f32,
-        row_top: &[f32],
+        (row_top, near_floor): (&[f32], f32),
         width: u32,
         height: u32,
     ) -> Self {
@@ -170,7 +194,9 @@ impl View {
             relief: oblique.relief,
         };
         match kind {
-            ViewKind::Vista => view.frame_vista(steps, row_top, width as f32, height as f32),
+            ViewKind::Vista => {
+                view.frame_vista(steps, (row_top, near_floor), width as f32, height as f32)
+            }
             ViewKind::Perspective => {
                 view.camera = Some(Camera::new(extent, zmax));
                 view.fit(steps, row_top, width as f32, height as f32);
@@ -196,9 +222,16 @@ impl View {
 
     /// Places the vista camera over the land whose row tops are `row_top`
     /// (spread evenly from back to front); tall land puts the back edge
-    /// lower (`vista::fitted`), and land too tall for the vista at all is
-    /// framed as the perspective view frames it.
-    fn frame_vista(&mut self, steps: f32, row_top: &[f32], width: f32, height: f32) {
+    /// lower (`vista::fitted`), and land too tall for the vista at all, or
+    /// whose near edge stands above its camera (`near_floor`), is framed as
+    /// the perspective view frames it.
+    fn frame_vista(
+        &mut self,
+        steps: f32,
+        (row_top, near_floor): (&[f32], f32),
+        width: f32,
+        height: f32,
+    ) {
         let extent = self.cell * steps;
         let last = row_top.len().saturating_sub(1).max(1) as f32;
         let tops: Vec<Vec3> = (row_top.iter().enumerate())
@@ -207,9 +240,9 @@ impl View {
                 Vec3::new(0.5 * extent, extent * i as f32 / last, z)
             })
             .collect();
-        let Some(shot) = vista::fitted(extent, width, height, &tops) else {
-            // Land too tall for a camera low in front of it: the
-            // perspective's camera, above it, sees it whole.
+        let Some(shot) = vista::fitted(extent, width, height, &tops, near_floor) else {
+            // Land too tall for a camera low in front of it, or raised above
+            // it: the perspective's camera, above it, sees it whole.
             let zmax = tops.iter().map(|p| p.z).fold(0.0, f32::max);
             self.camera = Some(Camera::new(extent, zmax));
             return self.fit(steps, row_top, width, height);

@@ -77,8 +77,24 @@ impl Shot {
 /// `None` for land so tall (over [`VISTA_TALLEST`]) that even then it
 /// rises out of the top of the frame: a camera this low in front of it
 /// sees only the near slope (issue 22: a data set's relief can be many
-/// times its width), so the caller frames it another way.
-pub(crate) fn fitted(extent: f32, width: f32, height: f32, tops: &[Vec3]) -> Option<Shot> {
+/// times its width), so the caller frames it another way. `None` too when
+/// the near edge's lowest point (`near_floor`) stands above the camera: it
+/// would look up at the edge's face and see only that wall, one colour
+/// (a raised plateau, land lifted over a sea far below, a wall along the
+/// near edge: issue 22 item 8).
+pub(crate) fn fitted(
+    extent: f32,
+    width: f32,
+    height: f32,
+    tops: &[Vec3],
+    near_floor: f32,
+) -> Option<Shot> {
+    let shot = fitted_to_tops(extent, width, height, tops)?;
+    (near_floor.is_nan() || near_floor < shot.camera.eye_height()).then_some(shot)
+}
+
+/// [`fitted`] without the look at the near edge.
+fn fitted_to_tops(extent: f32, width: f32, height: f32, tops: &[Vec3]) -> Option<Shot> {
     let shot = |skyline: f32| frame(extent, width, height, skyline);
     // The highest land's distance below the strip of sky, in heights: it
     // grows as the back edge goes down.

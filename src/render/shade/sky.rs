@@ -214,7 +214,7 @@ mod tests {
     fn painted_weather_is_what_colour_says() {
         let field = Heightfield::flat(5, 100.0);
         let tops = RowTops::of(&field);
-        let view = View::fitted(ViewKind::Vista, 33, 100.0, tops.rows(), 150, 90);
+        let view = View::fitted(ViewKind::Vista, 33, 100.0, (tops.rows(), 0.0), 150, 90);
         let lighting = Lighting::new(Sun::Evening, &field);
         let w = Weather::new(
             &view,

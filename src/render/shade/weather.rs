@@ -210,7 +210,7 @@ mod tests {
     fn view() -> View {
         let field = Heightfield::flat(5, 100.0);
         let tops = RowTops::of(&field);
-        View::fitted(ViewKind::Vista, 33, 100.0, tops.rows(), 960, 540)
+        View::fitted(ViewKind::Vista, 33, 100.0, (tops.rows(), 0.0), 960, 540)
     }
 
     fn weather(sun: Sun, amount: f32) -> Weather {
