@@ -41,7 +41,8 @@ arch=$(dpkg --print-architecture)
 # The run-time libraries' packages, from the table the program itself uses
 # to name a missing one ("libX11.so.6", "libx11-6").
 table=$(grep -rl '^pub const X11_LIBRARIES' src)
-dlopened=$(sed -n 's/^ *("lib[^"]*", "\([a-z0-9.+-]*\)"),$/\1/p' $table | sort -u | paste -sd, - | sed 's/,/, /g')
+# A pair in a list ends its line with "),", one standing alone with ");".
+dlopened=$(sed -n 's/.*("lib[^"]*", "\([a-z0-9.+-]*\)")[,;]$/\1/p' $table | sort -u | paste -sd, - | sed 's/,/, /g')
 [ -n "$dlopened" ] || { echo "deb.sh: no library table found in src/ (X11_LIBRARIES)" >&2; exit 1; }
 
 mkdir -p "$out"

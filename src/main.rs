@@ -108,7 +108,7 @@ fn main() -> ExitCode {
                 return ExitCode::FAILURE;
             }
             #[cfg(unix)]
-            saver::server_gone::report_when_the_server_goes();
+            saver::x11::server_gone::report_when_the_server_goes();
             mountains::settings_ui::run(inv.config.as_deref(), &loaded, *parent)
         }
         mode => run_saver(mode, loaded, open, &inv.xss),
@@ -169,7 +169,7 @@ fn run_saver(
         }
     });
     #[cfg(unix)]
-    saver::server_gone::report_when_the_server_goes();
+    saver::x11::server_gone::report_when_the_server_goes();
     match saver::run(mode, loaded.settings, opened, xss) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {

@@ -13,8 +13,6 @@ use winit::monitor::MonitorHandle;
 use winit::window::{Window, WindowAttributes, WindowId};
 
 use super::error::SaverError;
-#[cfg(unix)]
-use super::grab_x11::Pointer;
 use super::heads::{self, Change, Head};
 use super::input::{Action, WakeDetector, action_for_key};
 use super::placement::{covering, find_heads};
@@ -23,6 +21,8 @@ use super::screen::Screen;
 use super::show::Show;
 use super::slideshow::Pacing;
 use super::trace::Trace;
+#[cfg(unix)]
+use super::x11::grab::Pointer;
 use crate::mountain::Mountain;
 use crate::render::Damage;
 use crate::settings::{Monitors, Settings};
@@ -88,7 +88,7 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
     let mut builder = EventLoop::<UserEvent>::with_user_event();
     #[cfg(windows)]
     if let AppMode::Child(_) = mode {
-        super::embed_win32::leave_dpi_to_the_parent(&mut builder);
+        super::win32::embed::leave_dpi_to_the_parent(&mut builder);
     }
     #[cfg(unix)]
     let wayland = force_backend(&mut builder, backend);
@@ -121,8 +121,8 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
     // reports as raw motion) are measured from.
     #[cfg(unix)]
     let first_look = match wayland {
-        true => super::pointer_x11::FirstLook::default(),
-        false => super::pointer_x11::first_look(mode == AppMode::Fullscreen),
+        true => super::x11::pointer::FirstLook::default(),
+        false => super::x11::pointer::first_look(mode == AppMode::Fullscreen),
     };
     #[cfg(unix)]
     let (x11_visual, pointer_origin) = (first_look.visual, first_look.pointer);
@@ -179,12 +179,12 @@ fn force_backend(
 #[cfg(unix)]
 fn watch_heads(event_loop: &EventLoop<UserEvent>) -> Vec<Head> {
     let proxy = event_loop.create_proxy();
-    let watched = super::heads_x11::watch(move |heads| {
+    let watched = super::x11::heads::watch(move |heads| {
         let _ = proxy.send_event(UserEvent::Heads(heads));
     });
     watched.unwrap_or_else(|e| {
         crate::log::warn(&format!("monitor changes will not be followed: {e}"));
-        super::heads_x11::query().unwrap_or_default()
+        super::x11::heads::query().unwrap_or_default()
     })
 }
 
@@ -209,7 +209,7 @@ struct App {
     started: bool,
     /// Full screen on X11: the keyboard and pointer grab, until it holds.
     #[cfg(unix)]
-    grab: Option<super::grab_x11::InputGrab>,
+    grab: Option<super::x11::grab::InputGrab>,
     /// Whether the grab's pointer motion is passed on yet.
     #[cfg(unix)]
     watching_pointer: bool,
@@ -239,7 +239,7 @@ impl ApplicationHandler<UserEvent> for App {
         // event (Wine may deliver none until then) would become the origin.
         #[cfg(windows)]
         if self.mode == AppMode::Fullscreen
-            && let Some((x, y)) = super::fullscreen_win32::cursor_position()
+            && let Some((x, y)) = super::win32::fullscreen::cursor_position()
         {
             self.wake.moved_to(x.into(), y.into());
         }
@@ -391,7 +391,7 @@ impl ApplicationHandler<UserEvent> for App {
             .min();
         #[cfg(windows)]
         let parent =
-            matches!(self.mode, AppMode::Child(_)).then(|| now + super::embed_win32::PARENT_POLL);
+            matches!(self.mode, AppMode::Child(_)).then(|| now + super::win32::embed::PARENT_POLL);
         #[cfg(not(windows))]
         let parent = None;
         let grab = grabbing.then(|| now + super::slideshow::FRAME_INTERVAL);
@@ -436,7 +436,7 @@ impl App {
                 .first()
                 .and_then(|s| super::present::x11_window_id(&*s.window));
             match xid {
-                Some(xid) => self.grab = Some(super::grab_x11::InputGrab::new(xid)),
+                Some(xid) => self.grab = Some(super::x11::grab::InputGrab::new(xid)),
                 None => return false,
             }
         }
@@ -467,10 +467,10 @@ impl App {
     /// the threshold from where it started. False when its place is unknown.
     #[cfg(windows)]
     fn cursor_moved_win32(&mut self, event_loop: &ActiveEventLoop) -> bool {
-        if super::fullscreen_win32::take_display_change() {
+        if super::win32::fullscreen::take_display_change() {
             self.wake.reset_origin();
         }
-        let Some((x, y)) = super::fullscreen_win32::cursor_position() else {
+        let Some((x, y)) = super::win32::fullscreen::cursor_position() else {
             return false;
         };
         if self.wake.moved_to(x.into(), y.into()) {
@@ -494,10 +494,10 @@ impl App {
             }
             #[cfg(windows)]
             AppMode::Child(parent) => {
-                let matched = super::embed_win32::match_parent_dpi(parent);
+                let matched = super::win32::embed::match_parent_dpi(parent);
                 self.trace
                     .note(&format!("preview DPI awareness as the parent's: {matched}"));
-                let attrs = super::embed_win32::child_attributes(base, parent)?;
+                let attrs = super::win32::embed::child_attributes(base, parent)?;
                 self.add_screen(event_loop, attrs, true, None)
             }
         }
@@ -594,7 +594,7 @@ impl App {
         if self.mode == AppMode::Fullscreen {
             window.set_cursor_visible(false);
             #[cfg(windows)]
-            super::fullscreen_win32::keep_covering(&window);
+            super::win32::fullscreen::keep_covering(&window);
         }
         let size = window.inner_size();
         let size = (size.width, size.height);
@@ -687,7 +687,7 @@ impl App {
     /// The preview child follows its parent's size and dies with it.
     #[cfg(windows)]
     fn follow_parent(&mut self, event_loop: &ActiveEventLoop, parent: u64) {
-        use super::embed_win32::{follow_parent, parent_alive};
+        use super::win32::embed::{follow_parent, parent_alive};
         let alive = match self.screens.first() {
             Some(s) => follow_parent(parent, &s.window),
             None => parent_alive(parent),

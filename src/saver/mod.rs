@@ -2,69 +2,54 @@
 //!
 //! `run` takes a window mode and paces a slide show of mountains on it:
 //! full screen on every monitor (`app`), a small preview or a normal window
-//! (`app`), or a window another program owns (`embed_x11`, `embed_win32`).
+//! (`app`), or a window another program owns (`x11::embed`, `win32::embed`).
+//!
+//! Each platform's own files have a room: `x11/`, `win32/` and `wayland/`;
+//! the platform-neutral show and its window logic stay here.
 //!
 //! The pure parts, unit-tested without a display: `slideshow` (pacing),
 //! `show` (one window's frame, painter and next mountain), `source` (where
 //! each slide comes from), `input` (keys and what wakes the saver),
 //! `actions` (settings steps, file names), `heads` (which monitors get a
-//! window). The rest talks to the system: `heads_x11` asks the X server for
-//! its monitors and follows their changes, `fullscreen_win32` refits
+//! window). The rest talks to the system: `x11::heads` asks the X server for
+//! its monitors and follows their changes, `win32::fullscreen` refits
 //! full-screen windows after a Windows display change, `present` and
-//! `bands_x11` put frames on screen, `grab_x11` keeps input from other
+//! `x11::bands` put frames on screen, `x11::grab` keeps input from other
 //! programs (crate::signals turns SIGTERM into a clean exit), `libcheck` names a
 //! missing X or Wayland library before winit panics on it, `backend` picks
 //! X11 or Wayland, `buffer_history` tells `present` what each buffer lacks,
-//! `single` keeps a second `/s` off a display that has one. `layer_wayland`
+//! `single` keeps a second `/s` off a display that has one. `wayland::layer`
 //! runs the shows on wlr-layer-shell surfaces (`--layer`), presenting
-//! through `target_wayland`'s raw handles, each buffer covering its output
-//! as `cover_wayland` reckons.
+//! through `wayland::target`'s raw handles, each buffer covering its output
+//! as `wayland::cover` reckons.
 
 pub mod actions;
 pub mod app;
 #[cfg(unix)]
 pub mod backend;
-#[cfg(unix)]
-pub mod bands_x11;
 mod buffer_history;
-#[cfg(target_os = "linux")]
-mod cover_wayland;
-#[cfg(windows)]
-pub mod embed_win32;
-#[cfg(unix)]
-pub mod embed_x11;
 mod error;
-pub mod fullscreen_win32;
-#[cfg(unix)]
-pub mod grab_x11;
 pub mod heads;
-#[cfg(unix)]
-pub mod heads_x11;
 pub mod input;
-#[cfg(target_os = "linux")]
-pub mod layer_wayland;
 pub mod libcheck;
-#[cfg(unix)]
-mod motion_x11;
 mod on_screen;
 mod options;
 mod overlay;
 mod placement;
-#[cfg(unix)]
-mod pointer_x11;
 pub mod present;
 mod redraw;
 mod screen;
-#[cfg(unix)]
-pub mod server_gone;
 pub mod show;
 #[cfg(target_os = "linux")]
 pub mod single;
 pub mod slideshow;
 pub mod source;
-#[cfg(target_os = "linux")]
-mod target_wayland;
 mod trace;
+#[cfg(target_os = "linux")]
+pub mod wayland;
+pub mod win32;
+#[cfg(unix)]
+pub mod x11;
 
 use crate::cli::{Mode, XssOptions};
 use crate::mountain::Mountain;
@@ -128,7 +113,7 @@ fn run_embedded(
         })?),
         None => None,
     };
-    embed_x11::run(window, settings, opened)
+    x11::embed::run(window, settings, opened)
 }
 
 #[cfg(not(unix))]
@@ -150,7 +135,7 @@ fn run_layer(
     settings: Settings,
     opened: Option<Mountain>,
 ) -> Result<(), SaverError> {
-    layer_wayland::run(layer, settings, opened)
+    wayland::layer::run(layer, settings, opened)
 }
 
 #[cfg(not(target_os = "linux"))]

@@ -16,7 +16,7 @@ use x11rb::protocol::randr::{ConnectionExt as _, NotifyMask};
 use x11rb::protocol::xinerama::ConnectionExt as _;
 use x11rb::rust_connection::RustConnection;
 
-use super::heads::{Head, choose};
+use crate::saver::heads::{Head, choose};
 
 /// Several RandR events arrive for one change; the list is read once they
 /// have stopped for this long.

@@ -22,7 +22,7 @@ use winit::event_loop::EventLoopBuilder;
 use winit::platform::windows::EventLoopBuilderExtWindows;
 use winit::window::WindowAttributes;
 
-use super::error::SaverError;
+use crate::saver::error::SaverError;
 
 /// How often the child checks that its parent still exists and its size.
 pub const PARENT_POLL: Duration = Duration::from_millis(250);

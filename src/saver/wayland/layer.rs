@@ -5,11 +5,11 @@
 //! pixels (its logical size times the output's scale, with that buffer
 //! scale; at a fractional scale the output's mode, through a viewport).
 //! The shows and the presenting are the winit windows' own
-//! (`show`, `present`, through a raw handle: `target_wayland`).
+//! (`show`, `present`, through a raw handle: `target.rs`).
 //!
 //! It runs until SIGTERM or SIGINT, or until the compositor has closed every
 //! surface; outputs that come and go while it runs gain and lose a surface.
-//! How a buffer covers its output (buffer scale or viewport): `cover_wayland`.
+//! How a buffer covers its output (buffer scale or viewport): `cover.rs`.
 
 use std::time::{Duration, Instant};
 
@@ -33,16 +33,16 @@ use sctk::shell::wlr_layer::{
 };
 use sctk::{delegate_compositor, delegate_layer, delegate_output, delegate_registry};
 
-use super::cover_wayland::{self, Cover};
-use super::error::SaverError;
-use super::present::Presenter;
-use super::show::Show;
-use super::slideshow::Pacing;
-use super::target_wayland::WaylandTarget;
-use super::trace::Trace;
+use super::cover::{self, Cover};
+use super::target::WaylandTarget;
 use crate::cli::Layer;
 use crate::mountain::Mountain;
 use crate::render::Damage;
+use crate::saver::error::SaverError;
+use crate::saver::present::Presenter;
+use crate::saver::show::Show;
+use crate::saver::slideshow::Pacing;
+use crate::saver::trace::Trace;
 use crate::settings::Settings;
 
 /// The protocol `--layer` needs, as a compositor lists it.
@@ -54,7 +54,7 @@ const NAMESPACE: &str = "mountains";
 
 /// Runs the slide show on `layer` of every output until it ends.
 pub fn run(layer: Layer, settings: Settings, opened: Option<Mountain>) -> Result<(), SaverError> {
-    super::libcheck::check_wayland_client()?;
+    crate::saver::libcheck::check_wayland_client()?;
     let conn = Connection::connect_to_env().map_err(not_connected)?;
     let (globals, queue) =
         registry_queue_init(&conn).map_err(|e| SaverError::NoCompositor(e.to_string()))?;
@@ -273,12 +273,11 @@ impl LayerApp {
     fn cover_of(&self, i: usize) -> Cover {
         let c = &self.covered[i];
         let Some(info) = self.outputs.info(&c.output) else {
-            return cover_wayland::cover(c.logical, 1, None, false);
+            return cover::cover(c.logical, 1, None, false);
         };
         let mode = info.modes.iter().find(|m| m.current);
-        let mode =
-            mode.map(|m| cover_wayland::turned(m.dimensions, quarter_turned(info.transform)));
-        cover_wayland::cover(
+        let mode = mode.map(|m| cover::turned(m.dimensions, quarter_turned(info.transform)));
+        cover::cover(
             c.logical,
             info.scale_factor,
             mode,
@@ -296,8 +295,8 @@ impl LayerApp {
         }
         let mode = info.modes.iter().find(|m| m.current);
         mode.map_or((0, 0), |m| {
-            let turned = cover_wayland::turned(m.dimensions, quarter_turned(info.transform));
-            cover_wayland::logical_of(turned, info.scale_factor)
+            let turned = cover::turned(m.dimensions, quarter_turned(info.transform));
+            cover::logical_of(turned, info.scale_factor)
         })
     }
 
@@ -348,7 +347,7 @@ impl LayerApp {
             self.settings.pause_seconds,
             true,
         );
-        let show = super::options::new_show(
+        let show = crate::saver::options::new_show(
             self.settings.clone(),
             self.opened.clone(),
             pacing,

@@ -16,11 +16,11 @@ use x11rb::protocol::Event;
 use x11rb::protocol::xproto::{ChangeWindowAttributesAux, ConnectionExt as _, EventMask};
 use x11rb::rust_connection::RustConnection;
 
-use super::error::SaverError;
-use super::present::Presenter;
-use super::show::Show;
-use super::slideshow::Pacing;
 use crate::mountain::Mountain;
+use crate::saver::error::SaverError;
+use crate::saver::present::Presenter;
+use crate::saver::show::Show;
+use crate::saver::slideshow::Pacing;
 use crate::settings::Settings;
 
 /// A window owned by someone else, named by its XID, as softbuffer wants it.
@@ -107,13 +107,13 @@ pub fn run(
     let presenter =
         Presenter::new(target).map_err(|e| SaverError::Other(format!("window 0x{xid:x}: {e}")))?;
     let pacing = Pacing::from_seconds(settings.draw_seconds, settings.pause_seconds, true);
-    let show = super::options::new_show(settings, opened, pacing, size, Instant::now());
+    let show = crate::saver::options::new_show(settings, opened, pacing, size, Instant::now());
     let mut embedded = Embedded {
         conn,
         xid,
         presenter,
         show,
-        trace: super::trace::Trace::from_env(),
+        trace: crate::saver::trace::Trace::from_env(),
     };
     embedded.present_all()?;
     embedded.run(rx)
@@ -170,7 +170,7 @@ struct Embedded {
     xid: u32,
     presenter: Presenter<ForeignWindow>,
     show: Show,
-    trace: super::trace::Trace,
+    trace: crate::saver::trace::Trace,
 }
 
 impl Embedded {

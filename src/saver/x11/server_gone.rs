@@ -9,7 +9,7 @@ use std::sync::OnceLock;
 
 use x11_dl::xlib::{Display, Xlib};
 
-use super::error::SaverError;
+use crate::saver::error::SaverError;
 
 /// Xlib as loaded here, kept loaded so that the handler stays installed in
 /// the one copy of the library winit and softbuffer use too.

@@ -8,7 +8,7 @@
 //! raw events regardless of grabs), which is what ends the saver. A warped
 //! pointer (`xdotool mousemove`, remote desktops) sends no raw event: the
 //! grab asks for the pointer's motion and a thread passes each place on,
-//! and with it the relative devices' raw motion (see motion_x11.rs: winit
+//! and with it the relative devices' raw motion (see x11/motion.rs: winit
 //! counts an absolute device's place as motion).
 
 use std::sync::Arc;
@@ -19,7 +19,7 @@ use x11rb::protocol::xproto::{ConnectionExt as _, EventMask, GrabMode, GrabStatu
 use x11rb::rust_connection::RustConnection;
 use x11rb::{CURRENT_TIME, NONE};
 
-use super::motion_x11::Devices;
+use super::motion::Devices;
 
 /// Attempts before giving up: the window may take a few frames to be viewable.
 const ATTEMPTS: u32 = 50;
