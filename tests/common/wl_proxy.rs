@@ -131,12 +131,16 @@ impl Link {
 fn client_to_server(client: &UnixStream, server: &UnixStream, link: &Link) {
     let mut pending = Vec::new();
     while let Some((bytes, fds)) = receive_with_fds(client.as_raw_fd()) {
-        send_with_fds(server.as_raw_fd(), &bytes, &fds);
-        close_all(&fds);
-        pending.extend(bytes);
+        // Noted before the compositor sees them: its answer (a registry's
+        // globals) is read on another thread, which must know the registry
+        // by then, or the outputs it announces go unnoted (a flaky test
+        // under load, once in CI).
+        pending.extend(&bytes);
         for (object, opcode, args) in take_messages(&mut pending) {
             note_request(&mut link.seen.lock().unwrap(), object, opcode, &args);
         }
+        send_with_fds(server.as_raw_fd(), &bytes, &fds);
+        close_all(&fds);
     }
 }
 
