@@ -11,6 +11,9 @@ use mountains::settings::Settings;
 use mountains::settings::load::apply_set;
 use mountains::terrain;
 
+#[path = "common/golden.rs"]
+mod golden;
+
 /// Default settings with `sets` applied as `--set` would.
 fn with(sets: &[(&str, &str)]) -> Settings {
     let mut s = Settings::default();
@@ -353,53 +356,24 @@ fn every_look_steps_to_the_same_pixels_as_the_full_frame() {
 /// with `MOUNTAINS_PIN_GOLDEN=1`, as tests/render_painter.rs says.
 #[test]
 fn golden_pictures_pin_each_look() {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/golden");
-    let actual = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/golden-actual");
-    let pin = std::env::var_os("MOUNTAINS_PIN_GOLDEN").is_some();
-    let mut wrong = Vec::new();
-    for look in [
+    let pictures = [
         "fractal-mountain-climbing",
         "mountain-terrain",
         "fl3",
         "essay",
-    ] {
+    ]
+    .map(|look| {
         let s = with(&[("look", look), ("detail", "5")]);
         let field = terrain::generate(&s, 7);
         let mut got = Frame::new(160, 90).unwrap();
         render_full(&field, &s, &mut got);
-        let name = format!("look-{look}.png");
-        if pin {
-            mountains::snapshot::write_png(&dir.join(&name), &got).unwrap();
-            continue;
-        }
-        if read_png(&dir.join(&name)).as_ref() != Some(&got) {
-            std::fs::create_dir_all(&actual).unwrap();
-            mountains::snapshot::write_png(&actual.join(&name), &got).unwrap();
-            wrong.push(name);
-        }
-    }
+        (format!("look-{look}.png"), got)
+    });
+    let wrong = golden::compare(pictures);
     assert!(
         wrong.is_empty(),
         "a look changed: {wrong:?}; compare target/golden-actual/ with tests/golden/"
     );
-}
-
-/// An 8-bit RGB PNG as a frame (`None` if missing or not one).
-fn read_png(path: &std::path::Path) -> Option<Frame> {
-    let file = std::fs::File::open(path).ok()?;
-    let mut reader = png::Decoder::new(std::io::BufReader::new(file))
-        .read_info()
-        .ok()?;
-    let mut buf = vec![0; reader.output_buffer_size()?];
-    let info = reader.next_frame(&mut buf).ok()?;
-    if info.color_type != png::ColorType::Rgb || info.bit_depth != png::BitDepth::Eight {
-        return None;
-    }
-    let mut frame = Frame::new(info.width, info.height)?;
-    for (px, rgb) in frame.pixels_mut().iter_mut().zip(buf.chunks_exact(3)) {
-        *px = u32::from(rgb[0]) << 16 | u32::from(rgb[1]) << 8 | u32::from(rgb[2]);
-    }
-    Some(frame)
 }
 
 /// FL3 draws "filled vertical quadrilaterals" down to sea level along the

@@ -6,22 +6,10 @@ use mountains::render::{Frame, Painter, Rect, render_full};
 use mountains::settings::{ColorMode, Settings, ViewKind};
 use mountains::terrain::Heightfield;
 
-/// A hand-made rugged field: a ridge, a bay below sea level, some ripples.
-fn field(exponent: u32) -> Heightfield {
-    let mut f = Heightfield::flat(exponent, 400.0);
-    let n = f.size();
-    for y in 0..n {
-        for x in 0..n {
-            let (u, v) = (x as f32 / (n - 1) as f32, y as f32 / (n - 1) as f32);
-            let ridge = 70.0 * (1.0 - (2.0 * (u - 0.6)).powi(2) - (1.6 * (v - 0.4)).powi(2));
-            // Triangle waves: plain arithmetic, the same on every platform.
-            let wave = |t: f32| 2.0 * (t - t.floor() - 0.5).abs() - 0.5;
-            let ripple = 18.0 * wave(u * 3.7) * wave(v * 2.9 + 0.2);
-            f.set(x, y, ridge + ripple - 15.0);
-        }
-    }
-    f
-}
+#[path = "common/golden.rs"]
+mod golden;
+
+use golden::rugged_field as field;
 
 fn settings(color: ColorMode, view: ViewKind, rotation: u32) -> Settings {
     Settings {
@@ -351,45 +339,15 @@ fn golden_pictures_pin_each_mode() {
         (ColorMode::Mono, ViewKind::Oblique, "mono-oblique"),
         (ColorMode::Gray, ViewKind::Oblique, "gray-oblique"),
     ];
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/golden");
-    let actual = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/golden-actual");
-    let pin = std::env::var_os("MOUNTAINS_PIN_GOLDEN").is_some();
-    let mut wrong = Vec::new();
-    for (color, view, name) in cases {
+    let pictures = cases.map(|(color, view, name)| {
         let got = full(&f, &settings(color, view, 0), 96, 72);
-        let file = dir.join(format!("{name}.png"));
-        if pin {
-            mountains::snapshot::write_png(&file, &got).unwrap();
-            continue;
-        }
-        if read_png(&file).as_ref() != Some(&got) {
-            std::fs::create_dir_all(&actual).unwrap();
-            mountains::snapshot::write_png(&actual.join(format!("{name}.png")), &got).unwrap();
-            wrong.push(name);
-        }
-    }
+        (format!("{name}.png"), got)
+    });
+    let wrong = golden::compare(pictures);
     assert!(
         wrong.is_empty(),
         "the look changed: {wrong:?}; compare target/golden-actual/ with tests/golden/"
     );
-}
-
-/// An 8-bit RGB PNG as a frame (`None` if missing or not one).
-fn read_png(path: &std::path::Path) -> Option<Frame> {
-    let file = std::fs::File::open(path).ok()?;
-    let mut reader = png::Decoder::new(std::io::BufReader::new(file))
-        .read_info()
-        .ok()?;
-    let mut buf = vec![0; reader.output_buffer_size()?];
-    let info = reader.next_frame(&mut buf).ok()?;
-    if info.color_type != png::ColorType::Rgb || info.bit_depth != png::BitDepth::Eight {
-        return None;
-    }
-    let mut frame = Frame::new(info.width, info.height)?;
-    for (px, rgb) in frame.pixels_mut().iter_mut().zip(buf.chunks_exact(3)) {
-        *px = u32::from(rgb[0]) << 16 | u32::from(rgb[1]) << 8 | u32::from(rgb[2]);
-    }
-    Some(frame)
 }
 
 #[test]

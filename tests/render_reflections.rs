@@ -10,6 +10,9 @@ use mountains::render::{Frame, Painter, render_full};
 use mountains::settings::{Clouds, ColorMode, Settings, ViewKind};
 use mountains::terrain::Heightfield;
 
+#[path = "common/golden.rs"]
+mod golden;
+
 /// A sea `depth` deep with one cone `height` tall standing in it, centred
 /// at grid point (`cx`, `cy`) of a 129-point grid 400 units wide.
 fn peak(cx: f32, cy: f32, height: f32) -> Heightfield {
@@ -148,8 +151,8 @@ fn a_peak_by_the_water_is_mirrored_below_its_shore() {
 /// perspective made before it, pixel for pixel.
 #[test]
 fn without_reflections_the_water_is_as_it_was() {
-    let f = golden_field();
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/golden/plain-water");
+    let f = golden::rugged_field(5);
+    let dir = golden::dir().join("plain-water");
     for (view, name) in [
         (ViewKind::Vista, "natural-vista"),
         (ViewKind::Perspective, "natural-perspective"),
@@ -162,7 +165,7 @@ fn without_reflections_the_water_is_as_it_was() {
             ..Settings::default()
         };
         let got = full(&f, &s, 96, 72);
-        let want = read_png(&dir.join(format!("{name}.png"))).expect("a pinned picture");
+        let want = golden::read_png(&dir.join(format!("{name}.png"))).expect("a pinned picture");
         // The water's pixels: the sky has the sun's glow now (issue 19
         // too), and the skyline mixes the sky into the pixels beside it.
         let mut classes = Frame::new(96, 72).unwrap();
@@ -228,38 +231,4 @@ fn strips_give_the_full_frames_mirrored_water() {
             }
         }
     }
-}
-
-/// tests/render_painter.rs's field for its golden pictures.
-fn golden_field() -> Heightfield {
-    let mut f = Heightfield::flat(5, 400.0);
-    let n = f.size();
-    for y in 0..n {
-        for x in 0..n {
-            let (u, v) = (x as f32 / (n - 1) as f32, y as f32 / (n - 1) as f32);
-            let ridge = 70.0 * (1.0 - (2.0 * (u - 0.6)).powi(2) - (1.6 * (v - 0.4)).powi(2));
-            let wave = |t: f32| 2.0 * (t - t.floor() - 0.5).abs() - 0.5;
-            let ripple = 18.0 * wave(u * 3.7) * wave(v * 2.9 + 0.2);
-            f.set(x, y, ridge + ripple - 15.0);
-        }
-    }
-    f
-}
-
-/// An 8-bit RGB PNG as a frame (`None` if missing or not one).
-fn read_png(path: &std::path::Path) -> Option<Frame> {
-    let file = std::fs::File::open(path).ok()?;
-    let mut reader = png::Decoder::new(std::io::BufReader::new(file))
-        .read_info()
-        .ok()?;
-    let mut buf = vec![0; reader.output_buffer_size()?];
-    let info = reader.next_frame(&mut buf).ok()?;
-    if info.color_type != png::ColorType::Rgb || info.bit_depth != png::BitDepth::Eight {
-        return None;
-    }
-    let mut frame = Frame::new(info.width, info.height)?;
-    for (px, rgb) in frame.pixels_mut().iter_mut().zip(buf.chunks_exact(3)) {
-        *px = u32::from(rgb[0]) << 16 | u32::from(rgb[1]) << 8 | u32::from(rgb[2]);
-    }
-    Some(frame)
 }
