@@ -13,9 +13,7 @@ mod randr;
 
 use std::time::{Duration, Instant};
 
-use xvfb::{PATIENCE, Saver, Xvfb, looks_drawn, poll};
-
-type Geometry = (i16, i16, u16, u16);
+use xvfb::{Geometry, PATIENCE, Saver, Xvfb, looks_drawn, poll};
 
 /// The screen the storms play on.
 const SCREEN: (u16, u16) = (3840, 1080);
@@ -73,29 +71,6 @@ fn layouts() -> Vec<Vec<Geometry>> {
         .collect()
 }
 
-/// Pixels of one rectangle of the screen.
-fn grab_rect(x: &Xvfb, (left, top, w, h): Geometry) -> Vec<u32> {
-    use x11rb::protocol::xproto::{ConnectionExt as _, ImageFormat};
-    let reply = x
-        .conn
-        .get_image(ImageFormat::Z_PIXMAP, x.root, left, top, w, h, !0)
-        .unwrap()
-        .reply()
-        .unwrap();
-    reply
-        .data
-        .chunks_exact(4)
-        .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]) & 0x00ff_ffff)
-        .collect()
-}
-
-/// The saver's mapped windows, by place.
-fn windows_at(x: &Xvfb) -> Vec<Geometry> {
-    let mut found: Vec<Geometry> = x.mapped_windows().into_iter().map(|(_, g)| g).collect();
-    found.sort();
-    found
-}
-
 /// A number of the saver's /proc/PID/status (`VmRSS:` in KiB, `Threads:`).
 fn status_number(saver: &Saver, field: &str) -> u64 {
     let status = std::fs::read_to_string(format!("/proc/{}/status", saver.pid())).unwrap();
@@ -115,7 +90,7 @@ fn storm(x: &Xvfb, saver: &mut Saver, defined: &mut usize) {
         *defined = layout.len();
         randr::announce_change(&x.conn, x.root);
         let what = format!("the windows to follow {layout:?}");
-        poll(saver, &what, || windows_at(x) == layout);
+        poll(saver, &what, || x.mapped_places() == layout);
     }
 }
 
@@ -143,7 +118,7 @@ fn at_rest(x: &Xvfb, saver: &mut Saver) {
         let ticks = cpu_ticks(pid);
         if ticks > quiet_since.1 + 1 {
             quiet_since = (Instant::now(), ticks);
-        } else if quiet_since.0.elapsed() >= QUIET && looks_drawn(&grab_rect(x, whole)) {
+        } else if quiet_since.0.elapsed() >= QUIET && looks_drawn(&x.grab_rect(whole)) {
             return;
         }
     }

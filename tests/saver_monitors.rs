@@ -10,31 +10,7 @@ mod xvfb;
 #[path = "common/randr.rs"]
 mod randr;
 
-use x11rb::protocol::xproto::{ConnectionExt as _, ImageFormat};
-use xvfb::{Saver, Xvfb, looks_drawn, poll};
-
-type Geometry = (i16, i16, u16, u16);
-
-/// Pixels of one rectangle of the screen.
-fn grab_rect(x: &Xvfb, (left, top, w, h): Geometry) -> Vec<u32> {
-    let reply = x
-        .conn
-        .get_image(ImageFormat::Z_PIXMAP, x.root, left, top, w, h, !0)
-        .unwrap()
-        .reply()
-        .unwrap();
-    reply
-        .data
-        .chunks_exact(4)
-        .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]) & 0x00ff_ffff)
-        .collect()
-}
-
-fn windows_at(x: &Xvfb) -> Vec<Geometry> {
-    let mut found: Vec<Geometry> = x.mapped_windows().into_iter().map(|(_, g)| g).collect();
-    found.sort();
-    found
-}
+use xvfb::{Geometry, Saver, Xvfb, looks_drawn, poll};
 
 const LEFT: Geometry = (0, 0, 640, 480);
 const RIGHT: Geometry = (640, 0, 640, 480);
@@ -53,15 +29,19 @@ fn display_fullscreen_covers_each_monitor_with_its_own_mountain() {
     };
     let mut saver = Saver::start(&x, "mon-two", &["/s", "--set", "pause_seconds=60"], &[]);
     let took = poll(&mut saver, "a mountain on both monitors", || {
-        looks_drawn(&grab_rect(&x, LEFT)) && looks_drawn(&grab_rect(&x, RIGHT))
+        looks_drawn(&x.grab_rect(LEFT)) && looks_drawn(&x.grab_rect(RIGHT))
     });
     eprintln!("two monitors drawn after {took:?}");
-    assert_eq!(windows_at(&x), vec![LEFT, RIGHT], "one window per monitor");
+    assert_eq!(
+        x.mapped_places(),
+        vec![LEFT, RIGHT],
+        "one window per monitor"
+    );
     // Wait for the held pictures, then compare them: each monitor has its own seed.
     std::thread::sleep(std::time::Duration::from_millis(1500));
     assert_ne!(
-        grab_rect(&x, LEFT),
-        grab_rect(&x, RIGHT),
+        x.grab_rect(LEFT),
+        x.grab_rect(RIGHT),
         "both monitors show the same mountain"
     );
     saver.assert_running();
@@ -75,11 +55,15 @@ fn display_fullscreen_primary_only_leaves_the_other_monitor_black() {
     let args = ["/s", "--set", "monitors=primary"];
     let mut saver = Saver::start(&x, "mon-primary", &args, &[]);
     poll(&mut saver, "a mountain on the first monitor", || {
-        looks_drawn(&grab_rect(&x, LEFT))
+        looks_drawn(&x.grab_rect(LEFT))
     });
-    assert_eq!(windows_at(&x), vec![LEFT, RIGHT], "one window per monitor");
+    assert_eq!(
+        x.mapped_places(),
+        vec![LEFT, RIGHT],
+        "one window per monitor"
+    );
     assert!(
-        grab_rect(&x, RIGHT).iter().all(|&p| p == 0),
+        x.grab_rect(RIGHT).iter().all(|&p| p == 0),
         "the second monitor is not black"
     );
     saver.assert_running();
@@ -96,11 +80,15 @@ fn display_fullscreen_primary_only_follows_the_primary_flag() {
     poll(
         &mut saver,
         "a mountain on the primary (right) monitor",
-        || looks_drawn(&grab_rect(&x, RIGHT)),
+        || looks_drawn(&x.grab_rect(RIGHT)),
     );
-    assert_eq!(windows_at(&x), vec![LEFT, RIGHT], "one window per monitor");
+    assert_eq!(
+        x.mapped_places(),
+        vec![LEFT, RIGHT],
+        "one window per monitor"
+    );
     assert!(
-        grab_rect(&x, LEFT).iter().all(|&p| p == 0),
+        x.grab_rect(LEFT).iter().all(|&p| p == 0),
         "the monitor that is not primary is not black"
     );
     saver.assert_running();
@@ -114,25 +102,25 @@ fn display_fullscreen_follows_a_resolution_change() {
     let mut saver = Saver::start(&x, "mon-mode", &["/s", "--set", "pause_seconds=60"], &[]);
     let wide = (0, 0, 1280, 480);
     poll(&mut saver, "a mountain on the screen", || {
-        looks_drawn(&grab_rect(&x, wide))
+        looks_drawn(&x.grab_rect(wide))
     });
-    assert_eq!(windows_at(&x), vec![wide]);
+    assert_eq!(x.mapped_places(), vec![wide]);
 
     randr::set_resolution(&x.conn, x.root, 640, 480);
     let took = poll(&mut saver, "the window to fit the 640x480 mode", || {
-        windows_at(&x) == vec![LEFT]
+        x.mapped_places() == vec![LEFT]
     });
     eprintln!("window fitted 640x480 after {took:?}");
     poll(&mut saver, "a mountain fitted to 640x480", || {
-        looks_drawn(&grab_rect(&x, LEFT))
+        looks_drawn(&x.grab_rect(LEFT))
     });
 
     randr::set_resolution(&x.conn, x.root, 1280, 480);
     poll(&mut saver, "the window to fit 1280x480 again", || {
-        windows_at(&x) == vec![wide]
+        x.mapped_places() == vec![wide]
     });
     poll(&mut saver, "a mountain across 1280x480 again", || {
-        looks_drawn(&grab_rect(&x, wide))
+        looks_drawn(&x.grab_rect(wide))
     });
     saver.assert_running();
 }
@@ -144,20 +132,20 @@ fn display_fullscreen_opens_and_closes_windows_as_monitors_come_and_go() {
     };
     let mut saver = Saver::start(&x, "mon-plug", &["/s"], &[]);
     let wide = (0, 0, 1280, 480);
-    poll(&mut saver, "one window", || windows_at(&x) == vec![wide]);
+    poll(&mut saver, "one window", || x.mapped_places() == vec![wide]);
     randr::set_monitors(&x.conn, x.root, &[LEFT, RIGHT], None);
     randr::announce_change(&x.conn, x.root);
     poll(&mut saver, "a window per monitor", || {
-        windows_at(&x) == vec![LEFT, RIGHT]
+        x.mapped_places() == vec![LEFT, RIGHT]
     });
     poll(&mut saver, "a mountain on both monitors", || {
-        looks_drawn(&grab_rect(&x, LEFT)) && looks_drawn(&grab_rect(&x, RIGHT))
+        looks_drawn(&x.grab_rect(LEFT)) && looks_drawn(&x.grab_rect(RIGHT))
     });
     // The second monitor goes: its window closes, the first stays.
     randr::delete_monitors(&x.conn, x.root, 1, 1);
     randr::announce_change(&x.conn, x.root);
     poll(&mut saver, "the second window to close", || {
-        windows_at(&x) == vec![LEFT]
+        x.mapped_places() == vec![LEFT]
     });
     // The input grab survived the windows coming and going: a key ends it.
     x.key(38);

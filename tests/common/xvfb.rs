@@ -38,6 +38,9 @@ pub struct Xvfb {
     pub size: (u16, u16),
 }
 
+/// A window's or a rectangle's place on the screen: x, y, width, height.
+pub type Geometry = (i16, i16, u16, u16);
+
 impl Xvfb {
     /// Starts `Xvfb -noreset -displayfd 1 -screen 0 WxHx24` plus `extra`
     /// arguments (`depth=16` among them changes the screen depth). Without
@@ -302,8 +305,31 @@ impl Xvfb {
         reply.status == GrabStatus::ALREADY_GRABBED
     }
 
+    /// Pixels of one rectangle of the screen (x, y, w, h), 0x00RRGGBB.
+    pub fn grab_rect(&self, (left, top, w, h): Geometry) -> Vec<u32> {
+        use x11rb::protocol::xproto::ImageFormat;
+        let reply = self
+            .conn
+            .get_image(ImageFormat::Z_PIXMAP, self.root, left, top, w, h, !0)
+            .unwrap()
+            .reply()
+            .unwrap();
+        reply
+            .data
+            .chunks_exact(4)
+            .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]) & 0x00ff_ffff)
+            .collect()
+    }
+
+    /// The places of the mapped children of the root window, in order.
+    pub fn mapped_places(&self) -> Vec<Geometry> {
+        let mut found: Vec<Geometry> = self.mapped_windows().into_iter().map(|(_, g)| g).collect();
+        found.sort();
+        found
+    }
+
     /// Mapped children of the root window with their geometry (x, y, w, h).
-    pub fn mapped_windows(&self) -> Vec<(Window, (i16, i16, u16, u16))> {
+    pub fn mapped_windows(&self) -> Vec<(Window, Geometry)> {
         let tree = self.conn.query_tree(self.root).unwrap().reply().unwrap();
         tree.children
             .into_iter()
