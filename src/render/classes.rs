@@ -61,7 +61,7 @@ pub fn render_classes(field: &Heightfield, settings: &Settings, frame: &mut Fram
     scene.haze = None;
     scene.ripples = Some(Ripples::covering(WATER));
     // Nor may the water mirror anything.
-    scene.reflections = false;
+    scene.mirror = None;
     // Each pixel one class: no mixing across the coast or the skyline.
     scene.clean_edges = false;
     bands::render(&scene, frame);

@@ -117,7 +117,8 @@ pub(crate) struct Scene<'a> {
     normals: Option<Normals>,
     /// Whether land faces blend their points' colours (else one colour a face).
     smooth: bool,
-    /// What the water mirrors (when [`Scene::reflections`]).
+    /// What the water mirrors: `None` without reflections (the key off,
+    /// a look without ripples, a view without an eye).
     pub(crate) mirror: Option<Mirror>,
     /// Under smooth shading, where the camera stands over the ground (grid
     /// steps): each cell is split along the diagonal that suits its
@@ -135,9 +136,6 @@ pub(crate) struct Scene<'a> {
     /// The grid rows the mesh is drawn with (see `rows.rs`); strip `s` lies
     /// between rows `rows[s]` and `rows[s + 1]`.
     pub(super) rows: Vec<usize>,
-    /// Whether the water mirrors the land and the sky (the looks with
-    /// ripples, when `reflections` is on).
-    pub(crate) reflections: bool,
     /// Whether the field's lakes are drawn (the filled looks; Sonar and
     /// Outline draw the ground's mesh).
     lakes: bool,
@@ -257,7 +255,6 @@ impl<'a> Scene<'a> {
             split,
             row_top,
             rows,
-            reflections,
             lakes,
             holes,
             normal_shear,

@@ -359,7 +359,7 @@ impl Scene<'_> {
             None => (water, 0.0),
         };
         let water = self.hazed_face(water, c);
-        match self.mirror.as_ref().filter(|_| self.reflections) {
+        match &self.mirror {
             Some(mirror) => self.mirrored(mirror, water, g, level, ripple),
             None => water,
         }
