@@ -471,3 +471,118 @@ fn the_looks_tilt_and_relief_are_the_listings() {
     let want = 70f64.to_radians().cos() / 70f64.to_radians().sin();
     assert!((seventy - want).abs() < 1e-4, "{seventy} vs {want}");
 }
+
+/// `DrawTriangle`'s split of a triangle crossing the water line (`z < 0`
+/// at one or two corners): the lone corner `ap`, the other two `s0`,
+/// `s1` in the triangle's winding, the crossings `m0`, `m1` at `z = 0`,
+/// the wet corners set to 0, and three triangles `(ap, m0, m1)`, `(m0, s0,
+/// s1)`, `(m0, s1, m1)`, each coloured by `_DrawTriangle` on its own: the
+/// land ones by the mean of their own corners (the crossings' zeros
+/// counted) and their own normal.
+fn listing_split(p: [DVec3; 3]) -> [[DVec3; 3]; 3] {
+    let w = p.map(|p| p.z < 0.0);
+    let (mut ap, mut s) = if w[0] != w[1] && w[0] != w[2] {
+        (p[0], [p[1], p[2]])
+    } else if w[1] != w[0] {
+        (p[1], [p[2], p[0]])
+    } else {
+        (p[2], [p[0], p[1]])
+    };
+    let m = s.map(|s| {
+        let f = -ap.z / (s.z - ap.z);
+        DVec3::new(ap.x - (ap.x - s.x) * f, ap.y - (ap.y - s.y) * f, 0.0)
+    });
+    if ap.z < 0.0 {
+        ap.z = 0.0;
+    } else {
+        s[0].z = 0.0;
+        s[1].z = 0.0;
+    }
+    [[ap, m[0], m[1]], [m[0], s[0], s[1]], [m[0], s[1], m[1]]]
+}
+
+/// A face crossing the water line under `look = "fractal-mountain-climbing"`
+/// is cut as the listing cuts it: each land part has the listing's colour
+/// for that part alone (its class from the mean of its own corners, the
+/// crossings at 0, so a sliver of land by the shore is greener than its
+/// corner), and the water part is the listing's blue.
+#[test]
+fn a_face_crossing_the_water_line_is_coloured_part_by_part_as_the_listing() {
+    // An island with cliffs in a shallow sea: its front edge (row 7)
+    // stands near the highest point, the row before it under water, so
+    // the parts of the faces between them have means on both sides of the
+    // treeline: the two land corners' part above it, the whole face's mean
+    // (its wet corner counted) below. Nothing but water lies in front.
+    let mut f = Heightfield::flat(N_ITER as u32, 160.0);
+    let n = f.size();
+    for y in 0..n {
+        for x in 0..n {
+            let bumps = ((x * 7 + y * 13) % 5) as f32 * 0.3;
+            let island = (3..=7).contains(&x) && (4..=7).contains(&y);
+            f.set(x, y, if island { 20.0 + bumps } else { -3.0 - bumps });
+        }
+    }
+    let s = fmc_settings();
+    let (w, h) = (1280, 960);
+    let mut frame = Frame::new(w, h).unwrap();
+    render_full(&f, &s, &mut frame);
+    let facts = SceneFacts::of(&f, &s, w, h);
+    let listing = Listing::new(w as f64);
+    let normal_height = 10000.0 * s.height as f64;
+    let highest = f.min_max().1 as f64;
+    let (mut land_parts, mut lone_wet, mut differ) = (0, 0, 0);
+    // The island's front cliff and its front corners' sides.
+    for cy in [7] {
+        for cx in 2..=7 {
+            for (corners, _) in listing_faces(cx, cy) {
+                let points: [DVec3; 3] = corners.map(|[x, y]| {
+                    let z = f.get(x, y) as f64 * normal_height / highest;
+                    DVec3::new(x as f64, y as f64, z)
+                });
+                let wet = points.iter().filter(|p| p.z < 0.0).count();
+                if wet == 0 || wet == 3 {
+                    continue;
+                }
+                let whole_az = points.iter().map(|p| p.z).sum::<f64>() / 3.0;
+                for part in listing_split(points) {
+                    if part.iter().all(|p| p.z == 0.0) {
+                        continue;
+                    }
+                    // The part's own screen size: only parts a pixel can
+                    // sit well inside of.
+                    let screen = part.map(|p| listing.calc_point3(p));
+                    let area = ((screen[1].x - screen[0].x) * (screen[2].y - screen[0].y)
+                        - (screen[2].x - screen[0].x) * (screen[1].y - screen[0].y))
+                        .abs()
+                        / 2.0;
+                    if area < 60.0 {
+                        continue;
+                    }
+                    let (_, i) = listing.shade(part);
+                    let az = part.iter().map(|p| p.z).sum::<f64>() / 3.0;
+                    let want = listing_colour(az, normal_height, i);
+                    let centre = (part[0] + part[1] + part[2]) / 3.0;
+                    let z = centre.z * highest / normal_height;
+                    let nn = (n - 1) as f32;
+                    let p = facts.place(centre.x as f32 / nn, centre.y as f32 / nn, z as f32);
+                    let (px, py) = ((p.x * w as f32) as u32, (p.y * h as f32) as u32);
+                    let got = frame.get(px, py);
+                    assert_eq!(
+                        got, want,
+                        "cell ({cx}, {cy}) face {corners:?}, land part {part:?} at \
+                         ({px}, {py}): {got:06x}, the listing's {want:06x} (az {az:.0})"
+                    );
+                    land_parts += 1;
+                    lone_wet += usize::from(wet == 1);
+                    let (_, whole_i) = listing.shade(points);
+                    differ += usize::from(listing_colour(whole_az, normal_height, whole_i) != want);
+                }
+            }
+        }
+    }
+    // Parts of both kinds of cut, and many whose colour the whole face's
+    // mean would have got wrong.
+    assert!(land_parts >= 8, "{land_parts} land parts checked");
+    assert!(lone_wet >= 4, "{lone_wet} parts beside a lone wet corner");
+    assert!(differ >= 3, "{differ} parts unlike their whole face");
+}

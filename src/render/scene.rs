@@ -149,6 +149,12 @@ pub(crate) struct Scene<'a> {
     /// Whether cells are split on seed 000's diagonal, from the back left
     /// to the front right (the oblique view; its near-equilateral faces).
     pub listing_diagonal: bool,
+    /// Whether a face crossing the water line is cut as seed 000's
+    /// `DrawTriangle` cuts it (`look = "fractal-mountain-climbing"`): its
+    /// land quadrilateral split from the crossing on the lone corner's
+    /// edge to the next corner in the listing's winding, each part
+    /// coloured by its own mean (order/strip.rs).
+    pub listing_cuts: bool,
     /// Whether the right and front cut faces (skirts) face the viewer.
     pub sees_right: bool,
     pub sees_front: bool,
@@ -232,6 +238,7 @@ impl<'a> Scene<'a> {
             None => (cells, true, true),
         };
         let listing_diagonal = view.camera_column().is_none();
+        let listing_cuts = listing_diagonal && settings.look == Look::FractalMountainClimbing;
         let normal_shear = if palette.lighting().classic {
             view.shear()
         } else {
@@ -259,6 +266,7 @@ impl<'a> Scene<'a> {
             holes,
             normal_shear,
             listing_diagonal,
+            listing_cuts,
             sees_right,
             sees_front,
         }

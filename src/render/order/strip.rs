@@ -223,8 +223,15 @@ impl Scene<'_> {
         let m1 = self.shore(a, s1, level);
         let normal = self.face_normal(&c);
         let lit = lit_of(&c);
-        // The odd corner's part first, then the other side's two.
-        let parts = [[a, &m0, &m1], [&m0, s0, s1], [&m0, s1, &m1]];
+        // The odd corner's part first, then the other side's two: the
+        // quadrilateral cut from `m0` to `s1`, or, as seed 000's listing
+        // cuts it (its corners in the other winding), from `m1` to `s0`.
+        // Each part has its own colour (its own mean height).
+        let parts = if self.listing_cuts {
+            [[a, &m0, &m1], [&m1, s0, s1], [&m1, &m0, s0]]
+        } else {
+            [[a, &m0, &m1], [&m0, s0, s1], [&m0, s1, &m1]]
+        };
         let coast = self.clean_edges.then(|| ShoreLine::new(&m0, &m1)).flatten();
         painter_order(
             canvas,
