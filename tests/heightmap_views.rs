@@ -12,11 +12,17 @@ use std::path::Path;
 
 use heightmap_support::gray_png;
 use mountains::render::{Frame, render_full};
-use mountains::settings::{Settings, ViewKind};
-use mountains::terrain::heightmap::{decode, meta};
+use mountains::settings::{ColorMode, Settings, ViewKind};
+use mountains::terrain::heightfield::MAX_DRAWN_RELIEF;
+use mountains::terrain::heightmap::{DataSet, decode, meta};
 
 /// The frame each map is drawn into: small, the framing is in fractions.
 const FRAME: (u32, u32) = (64, 48);
+/// The smallest frame the program draws a mountain in (the Windows
+/// screensaver preview), where wire meshes are thinned to stay legible.
+const PREVIEW: (u32, u32) = (152, 112);
+/// Every view.
+const VIEWS: [ViewKind; 3] = [ViewKind::Vista, ViewKind::Perspective, ViewKind::Oblique];
 
 /// The sides of the maps: the smallest, odd and uneven ones, 2^n and 2^n + 1.
 const SIDES: [(u32, u32); 7] = [
@@ -115,11 +121,10 @@ fn colours(frame: &Frame) -> usize {
     }
 }
 
-#[test]
-fn every_loaded_data_set_draws_more_than_one_colour_in_every_view() {
-    let views = [ViewKind::Vista, ViewKind::Perspective, ViewKind::Oblique];
-    let (mut loaded, mut drawn) = (0, 0);
-    let mut blank = Vec::new();
+/// Calls `draw` with every map of the corpus that loads, and its label;
+/// returns how many loaded.
+fn each_loaded_map(mut draw: impl FnMut(&DataSet, &str)) -> usize {
+    let mut loaded = 0;
     for (w, h) in SIDES {
         for (shape, sample) in SHAPES {
             let samples: Vec<u16> = (0..h)
@@ -131,30 +136,123 @@ fn every_loaded_data_set_draws_more_than_one_colour_in_every_view() {
                     continue;
                 };
                 loaded += 1;
-                for view in views {
-                    let settings = Settings {
-                        view,
-                        ..Settings::default()
-                    };
-                    let mut frame = Frame::new(FRAME.0, FRAME.1).unwrap();
-                    render_full(&data.field, &settings, &mut frame);
-                    drawn += 1;
-                    if colours(&frame) == 1 {
-                        blank.push(format!("{w}x{h} {shape} {text:?} {view:?}"));
-                    }
-                }
+                draw(&data, &format!("{w}x{h} {shape} {text:?}"));
             }
         }
     }
-    eprintln!("{loaded} maps loaded, {drawn} frames drawn");
     assert!(
         loaded > 500,
         "only {loaded} maps loaded: the corpus tests little"
     );
+    loaded
+}
+
+/// Draws `data` in a `size` frame with `settings`; the label of a frame of
+/// one colour.
+fn blank_frame(data: &DataSet, settings: &Settings, size: (u32, u32)) -> bool {
+    let mut frame = Frame::new(size.0, size.1).unwrap();
+    render_full(&data.field, settings, &mut frame);
+    colours(&frame) == 1
+}
+
+#[test]
+fn every_loaded_data_set_draws_more_than_one_colour_in_every_view() {
+    let mut drawn = 0;
+    let mut blank = Vec::new();
+    let loaded = each_loaded_map(|data, label| {
+        for view in VIEWS {
+            let settings = Settings {
+                view,
+                ..Settings::default()
+            };
+            drawn += 1;
+            if blank_frame(data, &settings, FRAME) {
+                blank.push(format!("{label} {view:?}"));
+            }
+        }
+    });
+    eprintln!("{loaded} maps loaded, {drawn} frames drawn");
     assert!(
         blank.is_empty(),
         "{} of {drawn} frames are one colour:\n{}",
         blank.len(),
         blank.join("\n")
     );
+}
+
+/// The sky of the natural colours is a gradient, so a frame showing no land
+/// at all still has more than one colour; Mono and Filled draw on a black
+/// window, so there one colour means the land is not seen. Before, in a
+/// preview-sized frame, 634 of 7,644 such frames were black: land taller
+/// than a pixel is wide (a spike on a tiny grid, land lifted far over its
+/// sea) drawn as a needle thinner than a pixel or not at all, in every mode,
+/// and, in Mono, land seen only from its dark side (solid black, like the
+/// window).
+#[test]
+fn every_loaded_data_set_shows_land_on_a_black_window() {
+    let mut drawn = 0;
+    let mut blank = Vec::new();
+    let loaded = each_loaded_map(|data, label| {
+        for (view, color) in VIEWS
+            .iter()
+            .flat_map(|&v| [(v, ColorMode::Mono), (v, ColorMode::Filled)])
+        {
+            let settings = Settings {
+                view,
+                color,
+                ..Settings::default()
+            };
+            drawn += 1;
+            if blank_frame(data, &settings, PREVIEW) {
+                blank.push(format!("{label} {view:?} {color:?}"));
+            }
+        }
+    });
+    eprintln!("{loaded} maps loaded, {drawn} frames drawn");
+    assert!(
+        blank.is_empty(),
+        "{} of {drawn} frames are one colour:\n{}",
+        blank.len(),
+        blank.join("\n")
+    );
+}
+
+/// A data set far taller than wide keeps its heights (saving it again gives
+/// the same file) and is drawn squashed, with a note saying so.
+#[test]
+fn a_needle_keeps_its_heights_and_is_drawn_squashed_with_a_note() {
+    let (w, h) = (17, 17);
+    let samples: Vec<u16> = (0..h)
+        .flat_map(|y| (0..w).map(move |x| if (x, y) == (8, 8) { 65535 } else { 0 }))
+        .collect();
+    let text: &[(&str, &str)] = &[(meta::KEY_SCALE, "0.001"), (meta::KEY_EXTENT, "1")];
+    let data = decode(&gray_png(w, h, 16, &samples, text), Path::new("map.png")).unwrap();
+    let (lo, hi) = data.field.min_max();
+    // 65.535 units of relief on a grid 1 unit wide.
+    assert!(
+        (hi - lo - 65.535).abs() < 1e-3,
+        "heights changed: {lo}..{hi}"
+    );
+    let scale = data.field.drawn_scale();
+    assert!(
+        (scale * (hi.max(0.0) - lo.min(0.0)) - MAX_DRAWN_RELIEF).abs() < 1e-3,
+        "drawn scale {scale}"
+    );
+    let drawn = data.field.drawn().expect("a needle is drawn squashed");
+    assert_eq!(drawn.size(), data.field.size());
+    assert!((drawn.max() - hi * scale).abs() < 1e-4);
+    assert!(
+        data.notes
+            .iter()
+            .any(|n| n.contains("drawn 2 times as tall")),
+        "{:?}",
+        data.notes
+    );
+    // An ordinary mountain is drawn as it is.
+    let flat = decode(
+        &gray_png(w, h, 16, &vec![1000; 17 * 17], &[]),
+        Path::new("m.png"),
+    )
+    .unwrap();
+    assert!(flat.field.drawn().is_none());
 }

@@ -11,6 +11,7 @@ use super::framing::view::{Oblique, View, listing_relief};
 use super::scan::raster::{Fixed2, to_fixed};
 use super::shade::clouds;
 use super::shade::colour::blend_packed;
+use super::shade::dither;
 use super::shade::haze::Haze;
 use super::shade::mirror::Mirror;
 use super::shade::normals::Normals;
@@ -155,6 +156,9 @@ pub(crate) struct Scene<'a> {
     /// edge to the next corner in the listing's winding, each part
     /// coloured by its own mean (order/strip.rs).
     pub listing_cuts: bool,
+    /// Mono's darkest shade for a face (see [`dither::FACE_FLOOR`]): 0,
+    /// the listing's solid black, only in seed 000's own look.
+    pub mono_floor: u8,
     /// Whether the right and front cut faces (skirts) face the viewer.
     pub sees_right: bool,
     pub sees_front: bool,
@@ -169,6 +173,9 @@ impl<'a> Scene<'a> {
         if holes {
             let degrees = turn::essay_degrees(field.identity());
             field = FieldRef::Shared(Arc::new(turn::turned_by(&field, degrees)));
+        }
+        if let Some(drawn) = field.drawn() {
+            field = FieldRef::Shared(Arc::new(drawn));
         }
         if matches!(style, Style::Sonar | Style::Outline) {
             field = legible(field, settings, width, height);
@@ -239,6 +246,11 @@ impl<'a> Scene<'a> {
         };
         let listing_diagonal = view.camera_column().is_none();
         let listing_cuts = listing_diagonal && settings.look == Look::FractalMountainClimbing;
+        let mono_floor = if settings.look == Look::FractalMountainClimbing {
+            0
+        } else {
+            dither::FACE_FLOOR
+        };
         let normal_shear = if palette.lighting().classic {
             view.shear()
         } else {
@@ -267,6 +279,7 @@ impl<'a> Scene<'a> {
             normal_shear,
             listing_diagonal,
             listing_cuts,
+            mono_floor,
             sees_right,
             sees_front,
         }

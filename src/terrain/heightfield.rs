@@ -12,6 +12,11 @@ pub use crate::settings::{MAX_GRID_EXPONENT as MAX_EXPONENT, MIN_GRID_EXPONENT a
 /// tuned no coarser, though a field itself may be 9x9 (`detail = 3`).
 pub const COARSENED_LEAST_EXPONENT: u32 = 4;
 
+/// Most a field is drawn spanning, from the lower of its lowest point and
+/// sea level to the higher of its highest point and sea level, in widths
+/// (see [`Heightfield::drawn`]).
+pub const MAX_DRAWN_RELIEF: f32 = 2.0;
+
 /// A square grid of `2^n + 1` points a side of `f32` elevations, sea level at 0.
 ///
 /// Row `y` runs from the back of the mountain (`y = 0`) to the front
@@ -180,6 +185,33 @@ impl Heightfield {
     /// frame's grid holds four million points).
     pub fn min_max(&self) -> (f32, f32) {
         min_max(&self.heights)
+    }
+
+    /// What its heights are multiplied by to be drawn: 1, unless its land
+    /// and sea span more than [`MAX_DRAWN_RELIEF`] widths. A data set can be
+    /// far taller than it is wide (a spike on a tiny grid, land lifted far
+    /// over its sea by its file's keys): drawn true, it is a needle thinner
+    /// than a pixel, or nothing at all.
+    pub fn drawn_scale(&self) -> f32 {
+        let (lo, hi) = self.min_max();
+        let span = hi.max(0.0) - lo.min(0.0);
+        let most = MAX_DRAWN_RELIEF * self.extent;
+        if span > most && most > 0.0 {
+            most / span
+        } else {
+            1.0
+        }
+    }
+
+    /// The field as it is drawn: itself, or with its heights (and lakes'
+    /// levels) scaled by [`Heightfield::drawn_scale`].
+    pub fn drawn(&self) -> Option<Heightfield> {
+        let f = self.drawn_scale();
+        (f < 1.0).then(|| Heightfield {
+            heights: self.heights.iter().map(|h| h * f).collect(),
+            lakes: self.lakes.as_ref().map(|l| Arc::new(l.scaled(f))),
+            ..*self
+        })
     }
 
     /// Every `2^levels`-th point in both directions: the same mountain on a

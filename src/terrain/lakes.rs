@@ -413,6 +413,15 @@ impl Open {
 }
 
 impl Lakes {
+    /// The same lakes with their levels multiplied by `f` (for a field
+    /// whose heights are).
+    pub(crate) fn scaled(&self, f: f32) -> Lakes {
+        Lakes {
+            levels: self.levels.iter().map(|l| l * f).collect(),
+            ..self.clone()
+        }
+    }
+
     /// Adds the lake over `points` (grid indices) at `level`.
     fn add(&mut self, points: &mut [u32], level: f32) {
         let n = self.size;

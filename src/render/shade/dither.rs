@@ -10,6 +10,13 @@
 /// Number of shades above black: levels run `0..=LEVELS`.
 pub const LEVELS: u8 = 16;
 
+/// The darkest shade Mono paints a face in, but for seed 000's own look:
+/// the listing's first pattern is solid black, the colour of its window,
+/// so land turned from the light (or a data set seen only from its dark
+/// side) vanished into the background and could leave a frame all black.
+/// One step up keeps a few white dots in every face.
+pub const FACE_FLOOR: u8 = 1;
+
 /// `bwPat[17][2]` of seed 000's listing, each pair of longs as eight rows.
 const BW_PAT: [[u8; 8]; 17] = [
     rows(0xFFFF_FFFF),

@@ -19,6 +19,10 @@
 //!   sample, so some water shows and the lowest ground is always under it;
 //! - no `mountains:extent`: the width is [`DEFAULT_EXTENT`].
 //!
+//! Land and sea spanning more than [`MAX_DRAWN_RELIEF`] widths are drawn
+//! squashed to that (see [`Heightfield::drawn`]); the heights are kept, and
+//! a note says so.
+//!
 //! 8-bit images are softened (see [`soften`]) so their 256 levels do not
 //! show as terraces. Each assumption is listed in [`DataSet::notes`]. Bad
 //! metadata: see [`meta`].
@@ -40,6 +44,7 @@ pub use fit::{Fit, FitMethod};
 pub use meta::GeneratorParams;
 
 use super::Heightfield;
+use super::heightfield::MAX_DRAWN_RELIEF;
 use crate::settings::Settings;
 use decode::RawGrid;
 use fit::Resampler;
@@ -165,6 +170,14 @@ fn to_dataset(raw: RawGrid, mut meta: Metadata, path: &Path) -> Result<DataSet, 
         .ok_or_else(|| HeightmapError::new(path, ErrorKind::Damaged, "fits no grid size"))?;
     // A saved mountain keeps its seed's scene (light, sea) when opened.
     field.set_seed(meta.seed);
+    let drawn = field.drawn_scale();
+    if drawn < 1.0 {
+        notes.push(format!(
+            "land and sea span {:.3} times the width: drawn {MAX_DRAWN_RELIEF} times as tall \
+             (see mountains:scale, mountains:sea_level, mountains:extent)",
+            MAX_DRAWN_RELIEF / drawn
+        ));
+    }
     Ok(DataSet {
         field,
         seed: meta.seed,
