@@ -6,7 +6,7 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use mountains::render::{Frame, detail, render_full};
-use mountains::settings::{ColorMode, Settings, Shading};
+use mountains::settings::{Clouds, ColorMode, Settings, Shading};
 use mountains::terrain::{Heightfield, generate};
 
 /// The real generator's mountain (seed 42), so triangle sizes, water and
@@ -47,18 +47,30 @@ fn bench(c: &mut Criterion) {
 }
 
 /// The default frame as the program draws it: default settings with the
-/// detail `auto` picks for this frame size; and the same with flat shading
-/// (one colour a face), which smooth shading's cost is held against.
+/// detail `auto` picks for this frame size; the same with flat shading
+/// (one colour a face), which smooth shading's cost is held against; and
+/// the same with a clear sky and plain water (`clouds = 0`, `reflections =
+/// false`: the frame before the sky and water had weather and mirrors),
+/// which their cost is held against.
 fn bench_default(c: &mut Criterion) {
-    for (name, w, h, shading) in [
-        ("default_auto_1080p", 1920, 1080, Shading::Smooth),
-        ("default_auto_2160p", 3840, 2160, Shading::Smooth),
-        ("flat_auto_1080p", 1920, 1080, Shading::Flat),
-        ("flat_auto_2160p", 3840, 2160, Shading::Flat),
+    for (name, w, h, shading, weather) in [
+        ("default_auto_1080p", 1920, 1080, Shading::Smooth, true),
+        ("default_auto_2160p", 3840, 2160, Shading::Smooth, true),
+        ("flat_auto_1080p", 1920, 1080, Shading::Flat, true),
+        ("flat_auto_2160p", 3840, 2160, Shading::Flat, true),
+        ("plain_auto_1080p", 1920, 1080, Shading::Smooth, false),
+        ("plain_auto_2160p", 3840, 2160, Shading::Smooth, false),
     ] {
+        let defaults = Settings::default();
         let chosen = Settings {
             shading,
-            ..Settings::default()
+            clouds: if weather {
+                defaults.clouds
+            } else {
+                Clouds::Amount(0.0)
+            },
+            reflections: weather && defaults.reflections,
+            ..defaults
         };
         let settings = detail::for_frame(&chosen, w, h);
         let field = generate(&settings, 42);
