@@ -55,11 +55,12 @@ pub fn render(
             frame.pixels().len() >> 18
         ));
     }
-    let Mountain { field, seed, .. } = match mountain(settings, open) {
+    let shown = match mountain(settings, open) {
         Ok(m) => m,
         Err(e) => return fail(&e),
     };
-    render_full(&field, settings, &mut frame);
+    render_full(&shown.field, &shown.drawn_with(settings), &mut frame);
+    let seed = shown.seed;
     let format = output::format_of(output, output::PICTURES, "a picture").unwrap_or(Format::Png);
     if let Err(e) = crate::snapshot::write_picture(output, &frame, format) {
         return fail(&e);
@@ -84,10 +85,13 @@ pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> Exi
             "not enough memory to make the data set: about {mib} MiB is needed"
         ));
     }
-    let Mountain { field, seed, .. } = match mountain(settings, open) {
+    let shown = match mountain(settings, open) {
         Ok(m) => m,
         Err(e) => return fail(&e),
     };
+    // A data set saved again keeps the keys its file recorded.
+    let settings = &shown.drawn_with(settings);
+    let (field, seed) = (shown.field, shown.seed);
     let format = output::format_of(output, output::DATA_SETS, "a data set").unwrap_or(Format::Png);
     if format == Format::Raw16 {
         let (bytes, q) = heightmap::raw16(&field);

@@ -6,7 +6,7 @@ use std::path::Path;
 use std::sync::Arc;
 
 use crate::settings::Settings;
-use crate::terrain::heightmap::{self, DataSet};
+use crate::terrain::heightmap::{self, DataSet, GeneratorParams};
 use crate::terrain::{self, Heightfield};
 
 /// A mountain ready to draw and the seed that made it (none for a foreign heightmap).
@@ -19,6 +19,11 @@ pub struct Mountain {
     /// Made here from `seed` (not read from a file), so it can be made
     /// again, e.g. at another detail.
     pub generated: bool,
+    /// The keys a data set's file recorded (its look and generator
+    /// parameters), drawn under the person's preferences: see
+    /// [`Mountain::drawn_with`]. `None` when generated here, or for a file
+    /// that records none (a terrain tool's).
+    pub recorded: Option<GeneratorParams>,
 }
 
 impl Mountain {
@@ -28,6 +33,7 @@ impl Mountain {
             field: Arc::new(data.field),
             seed: data.seed,
             generated: false,
+            recorded: data.params,
         }
     }
 
@@ -42,6 +48,26 @@ impl Mountain {
             field: Arc::new(terrain::generate(settings, seed)),
             seed: Some(seed),
             generated: true,
+            recorded: None,
+        }
+    }
+
+    /// The settings this mountain is drawn with under the preferences
+    /// `prefs`: for a data set, the keys its file recorded where `prefs`
+    /// leaves them at their defaults, so a set saved under a look (or a
+    /// height) comes back as the picture it was
+    /// ([`GeneratorParams::drawn_under`]); `prefs` themselves otherwise.
+    pub fn drawn_with(&self, prefs: &Settings) -> Settings {
+        Mountain::drawn_under(self.recorded.as_ref(), prefs)
+    }
+
+    /// The settings a mountain whose file recorded `recorded` is drawn with
+    /// under `prefs` (see [`Mountain::drawn_with`]), for those that keep
+    /// only what the file recorded.
+    pub fn drawn_under(recorded: Option<&GeneratorParams>, prefs: &Settings) -> Settings {
+        match recorded {
+            Some(recorded) => recorded.drawn_under(prefs),
+            None => prefs.clone(),
         }
     }
 

@@ -326,6 +326,44 @@ fn render_open_draws_a_saved_data_set() {
     assert!(stderr(&o).contains("missing.png"), "{}", stderr(&o));
 }
 
+/// `--open` draws a data set under the look its file recorded (and the
+/// height), the picture `render` made of it before it was saved; a look
+/// given on the command line wins over the file's.
+#[test]
+fn render_open_draws_a_data_set_under_its_recorded_look() {
+    let dir = scratch("open-look");
+    let files = ["h.png", "made.png", "opened.png", "theirs.png"].map(|f| dir.join(f));
+    let [h, made, opened, theirs] = files.each_ref().map(|p| p.to_str().unwrap());
+    let run = |args: &[&str]| {
+        let o = mountains(args);
+        assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+    };
+    let sets = [
+        "--set",
+        "look=essay",
+        "--set",
+        "height=7",
+        "--set",
+        "detail=5",
+        "--set",
+        "seed=9",
+    ];
+    run(&[&["heightmap", "-o", h][..], &sets].concat());
+    run(&[&["render", "--size", "80x60", "-o", made][..], &sets].concat());
+    run(&["render", "--size", "80x60", "--open", h, "-o", opened]);
+    let look = "look=mountain-terrain";
+    run(&[
+        "render", "--size", "80x60", "--open", h, "--set", look, "-o", theirs,
+    ]);
+    let read = |p: &str| std::fs::read(p).unwrap();
+    assert_eq!(
+        read(opened),
+        read(made),
+        "not the picture it was saved from"
+    );
+    assert_ne!(read(theirs), read(opened), "the command line's look lost");
+}
+
 fn settings_with(seed: u64, detail: u32) -> mountains::settings::Settings {
     mountains::settings::Settings {
         seed: Some(seed),

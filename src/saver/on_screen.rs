@@ -14,12 +14,15 @@ use std::sync::Arc;
 
 use crate::mountain::Mountain;
 use crate::settings::Settings;
+use crate::terrain::heightmap::GeneratorParams;
 use crate::terrain::{self, Heightfield};
 
 /// The mountain on screen: its heights, or how to make them again.
 pub(super) struct OnScreen {
     seed: Option<u64>,
     generated: bool,
+    /// What a data set's file recorded (see `Mountain::recorded`).
+    recorded: Option<GeneratorParams>,
     heights: Heights,
 }
 
@@ -42,6 +45,7 @@ impl OnScreen {
         OnScreen {
             seed: mountain.seed,
             generated: mountain.generated,
+            recorded: mountain.recorded,
             heights: Heights::Kept(mountain.field, made.filter(|_| remakes)),
         }
     }
@@ -70,7 +74,14 @@ impl OnScreen {
             field: self.field(),
             seed: self.seed,
             generated: self.generated,
+            recorded: self.recorded.clone(),
         }
+    }
+
+    /// The settings it is drawn with under the preferences `prefs` (see
+    /// `Mountain::drawn_with`).
+    pub(super) fn drawn_with(&self, prefs: &Settings) -> Settings {
+        Mountain::drawn_under(self.recorded.as_ref(), prefs)
     }
 
     /// The seed and the generator's settings, while the heights are let go.

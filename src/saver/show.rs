@@ -389,9 +389,10 @@ impl Show {
         };
         self.painter = None;
         // Heights let go during the hold are made again on the redraw's thread.
+        let drawn = mountain.drawn_with(&self.settings);
         let redraw = match mountain.parked() {
-            Some((seed, made)) => Redraw::remake(seed, made.clone(), &self.settings, self.size),
-            None => Redraw::start(mountain.field(), &self.settings, self.size),
+            Some((seed, made)) => Redraw::remake(seed, made.clone(), &drawn, self.size),
+            None => Redraw::start(mountain.field(), &drawn, self.size),
         };
         match redraw {
             Ok(redraw) => {
@@ -437,7 +438,8 @@ impl Show {
         if reused {
             frame.clear(0);
         }
-        let painter = Painter::new(mountain.field(), &self.settings, size.0, size.1);
+        let drawn = mountain.drawn_with(&self.settings);
+        let painter = Painter::new(mountain.field(), &drawn, size.0, size.1);
         self.slideshow.restart(painter.strips_total(), now);
         self.painter = Some(painter);
         frame.bounds()
@@ -498,6 +500,7 @@ mod tests {
     use super::*;
     use crate::settings::Detail;
     use crate::terrain::Heightfield;
+    use crate::terrain::heightmap::GeneratorParams;
     use std::sync::Arc;
     use std::time::Duration;
 
@@ -728,12 +731,43 @@ mod tests {
             field: Arc::new(field),
             seed: None,
             generated: false,
+            recorded: None,
         };
         let mut show = Show::new(small_settings(), Some(opened), pacing(), (32, 32), t0);
         show.advance(t0);
         let shown = show.current().unwrap();
         assert_eq!(shown.seed, None);
         assert_eq!(shown.field.get(3, 3), 42.0);
+    }
+
+    /// A data set is drawn under the keys its file recorded (here the
+    /// essay's look), strip by strip and in a redraw alike.
+    #[test]
+    fn an_opened_data_set_is_drawn_under_its_recorded_look() {
+        let t0 = Instant::now();
+        let mut made = small_settings();
+        crate::settings::load::apply_set(&mut made, "look", "essay").unwrap();
+        let field = Arc::new(crate::terrain::generate(&made, 5));
+        let opened = Mountain {
+            field: field.clone(),
+            seed: Some(5),
+            generated: false,
+            recorded: Some(GeneratorParams::from_settings(&made)),
+        };
+        let drawn = opened.drawn_with(&small_settings());
+        assert_eq!(drawn, made);
+        let full = |s: &Settings, (w, h): (u32, u32)| {
+            let mut frame = Frame::new(w, h).unwrap();
+            crate::render::render_full(&field, s, &mut frame);
+            frame
+        };
+        let mut show = Show::new(small_settings(), Some(opened), pacing(), (64, 48), t0);
+        show.tick(t0 + Duration::from_millis(1000));
+        assert!(show.frame() == Some(&full(&made, (64, 48))));
+        assert!(show.frame() != Some(&full(show.settings(), (64, 48))));
+        show.resize((50, 40), t0);
+        show.settle(t0);
+        assert!(show.frame() == Some(&full(&made, (50, 40))));
     }
 
     #[test]
@@ -743,6 +777,7 @@ mod tests {
             field: Arc::new(Heightfield::flat(4, 100.0)),
             seed: None,
             generated: false,
+            recorded: None,
         };
         let mut show = Show::new(small_settings(), Some(opened), pacing(), (32, 32), t0);
         show.new_mountain(t0);
@@ -760,6 +795,7 @@ mod tests {
             field: Arc::new(field),
             seed: Some(99),
             generated: false,
+            recorded: None,
         };
         assert!(!show.open(opened, t0).is_empty());
         assert_eq!(show.current().unwrap().seed, Some(99));

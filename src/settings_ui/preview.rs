@@ -8,6 +8,7 @@ use crate::mountain::Mountain;
 use crate::render::{Frame, Painter};
 use crate::settings::{Detail, Settings};
 use crate::terrain::Heightfield;
+use crate::terrain::heightmap::GeneratorParams;
 
 /// The preview never generates more than 2^9+1 points a side: the picture is
 /// a few hundred pixels wide, so more detail would only cost time.
@@ -24,6 +25,8 @@ pub struct Preview {
     pub seed: Option<u64>,
     /// The data set file shown, when it came from one.
     pub file: Option<PathBuf>,
+    /// What that file recorded (see `Mountain::recorded`).
+    recorded: Option<GeneratorParams>,
     painter: Option<Painter>,
     picture: Option<Frame>,
 }
@@ -41,6 +44,7 @@ impl Preview {
             field: None,
             seed: None,
             file: None,
+            recorded: None,
             painter: None,
             picture: None,
         }
@@ -62,6 +66,7 @@ impl Preview {
         self.field = Some(made.field);
         self.seed = made.seed;
         self.file = None;
+        self.recorded = None;
         self.repaint(settings, size);
     }
 
@@ -85,6 +90,7 @@ impl Preview {
         self.field = Some(opened.field);
         self.seed = opened.seed;
         self.file = Some(path.to_path_buf());
+        self.recorded = opened.recorded;
         self.repaint(settings, size);
         Ok(())
     }
@@ -92,11 +98,19 @@ impl Preview {
     /// Starts drawing the current mountain again, from the back.
     pub fn repaint(&mut self, settings: &Settings, size: (u32, u32)) {
         let (w, h) = size;
+        let drawn = self.drawn_with(settings);
         self.painter = self
             .field
             .as_ref()
-            .map(|f| Painter::new(f.clone(), settings, w, h));
+            .map(|f| Painter::new(f.clone(), &drawn, w, h));
         self.picture = Frame::new(w, h);
+    }
+
+    /// The settings the mountain shown is drawn with under the screen's
+    /// `settings`: for a data set, with the keys its file recorded (see
+    /// `Mountain::drawn_with`).
+    pub fn drawn_with(&self, settings: &Settings) -> Settings {
+        Mountain::drawn_under(self.recorded.as_ref(), settings)
     }
 
     /// Draws the next few strips; true while more remain.

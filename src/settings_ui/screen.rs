@@ -172,7 +172,7 @@ impl Screen {
             dir,
             field,
             self.preview.seed,
-            &self.model.settings,
+            &self.preview.drawn_with(&self.model.settings),
         ) {
             Ok(path) => format!("Saved {}.", path.display()),
             Err(e) => format!("Cannot save the data set: {e}"),

@@ -1,9 +1,15 @@
 //! The essay's turns (seed 002, `left()` and `right()`): its square seen
 //! from any multiple of 11.25 degrees (`increment = 0.125 * 0.5 *
-//! Math.PI`), starting corner-on (`theta = Math.PI / 4`). `look = "essay"`
-//! turns each mountain by its own number of steps, drawn from its
-//! identity as `sun = "varied"` draws the light, so a slide show walks
-//! round the square and one seed is always seen from one side.
+//! Math.PI`). Its first view, `theta = Math.PI / 4`, is edge-on:
+//! `theta` is the angle to a corner's diagonal, so `origin()` puts the
+//! corners at (+-1024, +-1024), the front edge across the view. Our
+//! turn counts from our own edge-on view (0 degrees), so our 45 degrees
+//! is corner-on, not the essay's first view; the steps divide 45
+//! degrees, so every view the essay reaches is one of ours, under
+//! another number. `look = "essay"` turns each mountain by its own
+//! number of steps, drawn from its identity as `sun = "varied"` draws
+//! the light, so a slide show walks round the square and one seed is
+//! always seen from one side.
 //!
 //! The field is resampled onto a grid of the same size turned by the
 //! angle, wide enough to hold the turned square; points outside the
@@ -13,7 +19,9 @@ use crate::terrain::Heightfield;
 
 /// One press of the essay's buttons, in degrees.
 pub const STEP_DEGREES: f32 = 11.25;
-/// The essay's first view: `theta = PI/4`, the square corner-on.
+/// Where our turns start: 45 degrees, the square corner-on (the essay's
+/// own first view, `theta = PI/4`, is edge-on: our 0 or 90; see the
+/// module's comment). Kept so each seed keeps its view.
 pub const START_DEGREES: f32 = 45.0;
 /// Steps in a whole turn.
 const STEPS: u64 = 32;

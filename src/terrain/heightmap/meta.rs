@@ -60,13 +60,16 @@ pub const KEY_EROSION: &str = "mountains:erosion";
 pub const KEY_HURST: &str = "mountains:hurst";
 /// `Settings::cliffs`; absent in files made before cliffs, which had none.
 pub const KEY_CLIFFS: &str = "mountains:cliffs";
+/// `Settings::look`, as in the config file; absent in files made before
+/// the looks, whose mountains were ours.
+pub const KEY_LOOK: &str = "mountains:look";
 
 /// Parameters files from before they existed lack: their default is taken
 /// without a note (an older file's mountain did not use them, or, for
 /// erosion, had none: see `read_params`).
-const LATER_KEYS: &[&str] = &[KEY_EROSION, KEY_HURST, KEY_CLIFFS];
+const LATER_KEYS: &[&str] = &[KEY_EROSION, KEY_HURST, KEY_CLIFFS, KEY_LOOK];
 
-const KNOWN_KEYS: [&str; 19] = [
+const KNOWN_KEYS: [&str; 20] = [
     KEY_FORMAT,
     KEY_SCALE,
     KEY_OFFSET,
@@ -86,6 +89,7 @@ const KNOWN_KEYS: [&str; 19] = [
     KEY_EROSION,
     KEY_HURST,
     KEY_CLIFFS,
+    KEY_LOOK,
 ];
 
 /// The generator settings that made a mountain, read back from its file:
@@ -111,6 +115,31 @@ impl GeneratorParams {
         copy_param_keys(&self.0, s);
     }
 
+    /// The settings a data set made with these parameters is drawn with,
+    /// for a person whose preferences are `prefs`. The recorded keys lie
+    /// under the preferences, as a look lies under the keys: each key the
+    /// person left at its default takes the file's value, exactly as
+    /// recorded; a key they set to anything else wins. The recorded look,
+    /// when theirs is the default (ours), is chosen as `--set look=...`
+    /// chooses it, so the keys it sets that no file records (the view, the
+    /// colours, the light) follow it too.
+    pub fn drawn_under(&self, prefs: &Settings) -> Settings {
+        let at_default = |key: &keys::Key| keys::get(prefs, key) == (key.default)();
+        let mut drawn = prefs.clone();
+        let look = table_key(LOOK);
+        if at_default(look) {
+            let chosen = keys::apply(&mut drawn, look, &keys::get(&self.0, look));
+            debug_assert!(chosen.is_ok(), "a recorded look is one of the table's");
+        }
+        for &(_, name) in PARAM_KEYS.iter().filter(|(_, name)| *name != LOOK) {
+            let key = table_key(name);
+            if at_default(key) {
+                keys::copy(key, &self.0, &mut drawn);
+            }
+        }
+        drawn
+    }
+
     fn to_pairs(&self) -> Vec<(&'static str, String)> {
         PARAM_KEYS
             .iter()
@@ -121,9 +150,11 @@ impl GeneratorParams {
 
 /// Copies the generator keys from `from` into `to`, through the key table.
 fn copy_param_keys(from: &Settings, to: &mut Settings) {
-    for &(_, name) in PARAM_KEYS {
+    for &(_, name) in PARAM_KEYS.iter().filter(|(_, name)| *name != LOOK) {
         keys::copy(table_key(name), from, to);
     }
+    // Set by itself, not through the table: the keys copied stay exact.
+    to.look = from.look;
 }
 
 /// A key [`PARAM_KEYS`] names (a test checks they are all in the table).
@@ -361,6 +392,7 @@ fn read_params<'a>(
         erosion: 0.0,
         ..Settings::default()
     };
+    let mut look = settings.look;
     for (meta_key, key) in PARAM_KEYS {
         let Some(raw) = get(meta_key) else {
             if LATER_KEYS.contains(meta_key) {
@@ -369,9 +401,19 @@ fn read_params<'a>(
             notes.push(format!("{meta_key} missing; the default is assumed"));
             continue;
         };
-        load::apply_set(&mut settings, key, raw)
-            .map_err(|p| format!("{meta_key}: {}", p.message))?;
+        let problem = |p: load::Problem| format!("{meta_key}: {}", p.message);
+        if *key == LOOK {
+            // Checked by the table on a scratch copy, then set by itself
+            // (see `LOOK`): a look would otherwise replace every key read
+            // at its default (height 5 under the essay would come back 10).
+            let mut scratch = Settings::default();
+            load::apply_set(&mut scratch, key, raw).map_err(problem)?;
+            look = scratch.look;
+        } else {
+            load::apply_set(&mut settings, key, raw).map_err(problem)?;
+        }
     }
+    settings.look = look;
     Ok(GeneratorParams::from_settings(&settings))
 }
 
@@ -390,7 +432,14 @@ const PARAM_KEYS: &[(&str, &str)] = &[
     (KEY_EROSION, "erosion"),
     (KEY_HURST, "hurst"),
     (KEY_CLIFFS, "cliffs"),
+    (KEY_LOOK, LOOK),
 ];
+
+/// The settings key of the look: held apart from the others, because
+/// choosing a look through the key table also moves the keys that follow
+/// it (a key at its default takes the look's value), and a recorded key
+/// must come back exactly as it was written.
+const LOOK: &str = "look";
 
 #[cfg(test)]
 mod tests {
