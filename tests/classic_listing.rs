@@ -249,14 +249,7 @@ fn a_rendered_face_has_the_listings_brightness_and_split() {
 /// `c.blue *= i`, then `HSV2RGB` (here by chroma, hue sixths and the
 /// smallest channel), each 16-bit channel shown by its high byte.
 fn listing_colour(az: f64, normal_height: f64, i: f64) -> u32 {
-    let treeline = 0.4 * normal_height + 10000.0;
-    let color: u32 = if az > treeline + 9000.0 {
-        150
-    } else if az < treeline {
-        0
-    } else {
-        ((az - treeline) / 60.0) as u32
-    };
+    let color = listing_class(az, normal_height);
     let mut cv: [u32; 3] = [0x5555, 0xFFFF, 0xAAAA];
     cv[0] = (150 - color) * (cv[0] - 0x2000) / 150 + 0x2000;
     cv[1] = (cv[1] * (150 - color)) / 150;
@@ -278,6 +271,37 @@ fn listing_colour(az: f64, normal_height: f64, i: f64) -> u32 {
     };
     let high = |c: f64| (((c + m) * 65535.0 + 0.5) as u32) >> 8;
     (high(r) << 16) | (high(g) << 8) | high(b)
+}
+
+/// `_DrawTriangle`'s colour class: 0 (green) below the treeline, 150
+/// (grey) 9000 above it, `(az - treeline) / 60` between.
+fn listing_class(az: f64, normal_height: f64) -> u32 {
+    let treeline = 0.4 * normal_height + 10000.0;
+    if az > treeline + 9000.0 {
+        150
+    } else if az < treeline {
+        0
+    } else {
+        ((az - treeline) / 60.0) as u32
+    }
+}
+
+/// `_DrawTriangle`'s black-and-white pattern for the same triangle: the
+/// HSV value of its class times `i` (`c.blue *= i`), `pat = c.blue * 36 /
+/// 0x10000 - 10`, at least 0, capped at 15, or 16 in the grey class.
+fn listing_pattern(az: f64, normal_height: f64, i: f64) -> u8 {
+    let color = listing_class(az, normal_height);
+    let value = 0xEFFF - (150 - color) * (0xEFFF - 0xAAAA) / 150;
+    let blue = ((value as u16) as f64 * i) as u16;
+    let mut pat = (blue as i64 * 36) / 0x10000 - 10;
+    if pat < 0 {
+        pat = 0;
+    }
+    if color == 150 {
+        pat.min(16) as u8
+    } else {
+        pat.min(15) as u8
+    }
 }
 
 fn fmc_settings() -> Settings {
@@ -585,4 +609,103 @@ fn a_face_crossing_the_water_line_is_coloured_part_by_part_as_the_listing() {
     assert!(land_parts >= 8, "{land_parts} land parts checked");
     assert!(lone_wet >= 4, "{lone_wet} parts beside a lone wet corner");
     assert!(differ >= 3, "{differ} parts unlike their whole face");
+}
+
+/// Under seed 000's look in black and white (`color = "mono"`), a
+/// rendered face is filled with the listing's pattern for the same
+/// triangle (`bwPat[pat]`, lined up with the frame's origin): every pixel
+/// of a whole 8x8 tile inside the face, which tells the 17 patterns apart.
+/// The water is `bwPat[8]` and the window black.
+#[test]
+fn a_rendered_mono_face_has_the_listings_pattern() {
+    use mountains::render::dither::is_on;
+    let f = rising_field();
+    let s = Settings {
+        color: ColorMode::Mono,
+        ..fmc_settings()
+    };
+    let (w, h) = (1280, 960);
+    let mut frame = Frame::new(w, h).unwrap();
+    render_full(&f, &s, &mut frame);
+    let facts = SceneFacts::of(&f, &s, w, h);
+    assert_eq!(frame.get(2, 2), 0, "the window behind the land is black");
+    let listing = Listing::new(w as f64);
+    let normal_height = 10000.0 * s.height as f64;
+    let highest = f.min_max().1 as f64;
+    let n = (f.size() - 1) as f32;
+    let (mut tiles, mut patterns) = (0, std::collections::BTreeSet::new());
+    for cy in 1..15 {
+        for cx in 1..15 {
+            for (corners, _) in listing_faces(cx, cy) {
+                let heights = corners.map(|[x, y]| f.get(x, y));
+                let points: [DVec3; 3] = std::array::from_fn(|k| {
+                    let [x, y] = corners[k];
+                    let z = heights[k] as f64 * normal_height / highest;
+                    DVec3::new(x as f64, y as f64, z)
+                });
+                let (_, i) = listing.shade(points);
+                let az =
+                    heights.iter().map(|&z| z as f64).sum::<f64>() / 3.0 * normal_height / highest;
+                let want = listing_pattern(az, normal_height, i);
+                let screen: [(f32, f32); 3] = std::array::from_fn(|k| {
+                    let [x, y] = corners[k];
+                    let p = facts.place(x as f32 / n, y as f32 / n, heights[k]);
+                    (p.x * w as f32, p.y * h as f32)
+                });
+                let Some((tx, ty)) = whole_tile_inside(screen) else {
+                    continue;
+                };
+                for y in ty..ty + 8 {
+                    for x in tx..tx + 8 {
+                        let white = frame.get(x, y) == 0x00ff_ffff;
+                        assert_eq!(
+                            white,
+                            is_on(want, x, y),
+                            "cell ({cx}, {cy}) face {corners:?}, pixel ({x}, {y}): \
+                             not the listing's pattern {want} (i {i:.5}, az {az:.0})"
+                        );
+                    }
+                }
+                tiles += 1;
+                patterns.insert(want);
+            }
+        }
+    }
+    assert!(tiles >= 40, "only {tiles} faces hold a whole tile");
+    assert!(patterns.len() >= 6, "patterns {patterns:?}");
+}
+
+/// The top left of an 8x8 tile (lined up with the frame's origin) whose
+/// pixel centres all lie at least a pixel inside the screen triangle `t`.
+fn whole_tile_inside(t: [(f32, f32); 3]) -> Option<(u32, u32)> {
+    let edge = |a: (f32, f32), b: (f32, f32), p: (f32, f32)| {
+        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+        ((p.0 - a.0) * dy - (p.1 - a.1) * dx) / (dx * dx + dy * dy).sqrt()
+    };
+    let area = edge(t[0], t[1], t[2]);
+    let inside =
+        |p: (f32, f32)| (0..3).all(|k| edge(t[k], t[(k + 1) % 3], p) * area.signum() >= 1.0);
+    let lo = |k: usize| {
+        t.iter()
+            .map(|p| if k == 0 { p.0 } else { p.1 })
+            .fold(f32::MAX, f32::min)
+    };
+    let hi = |k: usize| {
+        t.iter()
+            .map(|p| if k == 0 { p.0 } else { p.1 })
+            .fold(f32::MIN, f32::max)
+    };
+    let first = |v: f32| (v.max(0.0) as u32).div_ceil(8) * 8;
+    for ty in (first(lo(1))..hi(1).max(0.0) as u32).step_by(8) {
+        for tx in (first(lo(0))..hi(0).max(0.0) as u32).step_by(8) {
+            let corners = [(0, 0), (7, 0), (0, 7), (7, 7)];
+            if corners
+                .iter()
+                .all(|&(dx, dy)| inside(((tx + dx) as f32 + 0.5, (ty + dy) as f32 + 0.5)))
+            {
+                return Some((tx, ty));
+            }
+        }
+    }
+    None
 }

@@ -64,6 +64,14 @@ pub fn level(gray: u32) -> u8 {
     ((y * LEVELS as u32 + 127) / 255) as u8
 }
 
+/// The grey (`0x00RRGGBB`) that [`level`] reads as `level`: how a colour
+/// that is already one of the patterns (seed 000's own choice) is handed
+/// to the painter.
+pub fn grey(level: u8) -> u32 {
+    let v = u32::from(level.min(LEVELS)) * 255 / u32::from(LEVELS);
+    v << 16 | v << 8 | v
+}
+
 /// True when the pixel at (`x`, `y`) is white in dither level `level`
 /// (levels above 16 count as 16).
 #[inline]

@@ -15,6 +15,9 @@
 /// 0xFFFF`, in 8 bits a channel (the high byte).
 pub const WATER: u32 = 0x009f_9fff;
 
+/// The listing's black-and-white water: `PenPat(bwPat[8])`, half grey.
+pub const WATER_PATTERN: u8 = 8;
+
 /// The listing's colour classes: 0 green below the treeline, 150 grey.
 const GREY_CLASS: i64 = 150;
 
@@ -66,6 +69,21 @@ impl Ramp {
         // `c.blue *= i`: the product truncated back into 16 bits.
         let value = (f64::from(value) * i.clamp(0.0, 1.0)) as u16;
         hsv_to_rgb(hue, saturation, value)
+    }
+}
+
+impl Ramp {
+    /// The listing's black-and-white pattern (0 black ..= 16 white) for a
+    /// land face of mean height `mean` at brightness `i`: `pat = c.blue *
+    /// 36 / 0x10000 - 10` of the lit value, at least 0, at most 15 but in
+    /// the grey class, which may reach 16.
+    pub fn pattern(&self, mean: f32, i: f64) -> u8 {
+        let class = self.class(mean);
+        let [_, _, value] = hsv(class);
+        let value = (f64::from(value) * i.clamp(0.0, 1.0)) as u16;
+        let pat = i64::from(u32::from(value) * 36 / 0x1_0000) - 10;
+        let most = if class == GREY_CLASS { 16 } else { 15 };
+        pat.clamp(0, most) as u8
     }
 }
 

@@ -20,6 +20,7 @@
 //! brightness, stays in the filter's hue family, and snow turns a pale tint.
 
 use super::colour::{Rgb, mix, mix_packed, pack, scale_packed, scale_packed3, to_u32, unpack};
+use super::dither;
 use super::essay;
 use super::facings;
 use super::light::Lighting;
@@ -93,7 +94,8 @@ pub struct Palette {
     gain: f32,
     offset: f32,
     /// Seed 000's HSV ramp for the land (`look =
-    /// "fractal-mountain-climbing"` in the natural colours).
+    /// "fractal-mountain-climbing"` in the natural colours, and its
+    /// patterns in Mono).
     listing: Option<listing::Ramp>,
     /// Mountain Terrain 3.0's colour preference (`look =
     /// "mountain-terrain"` under a filter): land is it ANDed with a facing's
@@ -140,14 +142,20 @@ impl Palette {
             reflected: (!lighting.classic).then_some(lighting.horizon),
         };
         let listing = (settings.look == Look::FractalMountainClimbing
-            && mode == ColorMode::Natural)
-            .then(|| listing::Ramp::new(settings.height, top));
+            && matches!(mode, ColorMode::Natural | ColorMode::Mono))
+        .then(|| listing::Ramp::new(settings.height, top));
         let preference = (settings.look == Look::MountainTerrain)
             .then(|| facings::preference(mode))
             .flatten();
         let (water, depth_scale) = match listing {
             // The listing's one light blue, unshaded.
-            Some(_) if !settings.relative_depth => (vec![listing::WATER].into(), 0.0),
+            Some(_) if !settings.relative_depth => {
+                let water = match mode {
+                    ColorMode::Mono => dither::grey(listing::WATER_PATTERN),
+                    _ => listing::WATER,
+                };
+                (vec![water].into(), 0.0)
+            }
             _ if preference.is_some() => mountain_terrain_water(settings.relative_depth),
             _ => water_table(mode, &waters, gain, offset),
         };
@@ -210,8 +218,12 @@ impl Palette {
     #[inline]
     pub fn land_in(&self, mean_height: f32, normal: Vec3, lit: f32, sky: f32) -> u32 {
         if let Some(ramp) = &self.listing {
-            let i = luminance(self.lighting.on(normal, lit));
-            return ramp.colour(mean_height, f64::from(i));
+            let i = f64::from(luminance(self.lighting.on(normal, lit)));
+            return match self.mode {
+                // In black and white the listing picks a pattern, not a colour.
+                ColorMode::Mono => dither::grey(ramp.pattern(mean_height, i)),
+                _ => ramp.colour(mean_height, i),
+            };
         }
         if let Some(preference) = self.preference {
             return facings::brush(preference, normal);
