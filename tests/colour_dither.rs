@@ -96,3 +96,23 @@ fn colours_count_by_luminance() {
     assert!(level(0x00ff_0000) > level(0x0001_00ff));
     assert_eq!(level(0xff00_0000), 0, "the unused top byte is ignored");
 }
+
+/// Mono's faces are lifted above the window's black: levels spread over
+/// `FACE_FLOOR..=16`, in order; with no floor (seed 000's own look) each
+/// level is itself.
+#[test]
+fn lifted_levels_keep_their_order_above_the_floor() {
+    use mountains::render::dither::{FACE_FLOOR, lifted};
+    assert!(FACE_FLOOR >= 1, "a face may be as black as the window");
+    for k in 0..=16u8 {
+        assert_eq!(lifted(k, 0), k);
+    }
+    assert_eq!(lifted(0, FACE_FLOOR), FACE_FLOOR);
+    assert_eq!(lifted(16, FACE_FLOOR), 16);
+    let lifted: Vec<u8> = (0..=16).map(|k| lifted(k, FACE_FLOOR)).collect();
+    assert!(lifted.windows(2).all(|w| w[0] <= w[1]), "{lifted:?}");
+    // Most levels stay apart: shade keeps its texture.
+    let mut distinct = lifted.clone();
+    distinct.dedup();
+    assert!(distinct.len() >= 14, "{lifted:?}");
+}

@@ -418,7 +418,9 @@ impl Scene<'_> {
             if let Some(colour) = colour.take() {
                 let c = colour();
                 paint = match self.style {
-                    Style::Mono => Paint::Dither(dither::level(gray(c)).max(self.mono_floor)),
+                    Style::Mono => {
+                        Paint::Dither(dither::lifted(dither::level(gray(c)), self.mono_floor))
+                    }
                     _ => Paint::Solid(c),
                 };
             }

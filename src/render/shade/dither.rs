@@ -14,8 +14,20 @@ pub const LEVELS: u8 = 16;
 /// the listing's first pattern is solid black, the colour of its window,
 /// so land turned from the light (or a data set seen only from its dark
 /// side) vanished into the background and could leave a frame all black.
-/// One step up keeps a few white dots in every face.
-pub const FACE_FLOOR: u8 = 1;
+/// The levels are spread over `FACE_FLOOR..=LEVELS` instead (see
+/// [`lifted`]): shade keeps its texture, a few dots above black. Level 1,
+/// one column of dots a tile, would comb large shadows with vertical lines.
+pub const FACE_FLOOR: u8 = 2;
+
+/// `level` (0..=16) spread over `floor..=LEVELS`, order kept, rounded.
+pub fn lifted(level: u8, floor: u8) -> u8 {
+    let (l, f, top) = (
+        u32::from(level.min(LEVELS)),
+        u32::from(floor.min(LEVELS)),
+        u32::from(LEVELS),
+    );
+    (f + (l * (top - f) + top / 2) / top) as u8
+}
 
 /// `bwPat[17][2]` of seed 000's listing, each pair of longs as eight rows.
 const BW_PAT: [[u8; 8]; 17] = [
