@@ -38,6 +38,7 @@ r() {
 r natural
 r morning --set sun=morning
 r evening --set sun=evening
+r sunset --set sun=sunset
 r oblique --set view=oblique
 r perspective --set view=perspective
 r triangle --set generator=triangle --set profile=massif

@@ -140,7 +140,7 @@ pub const COAST_SEA_SHARE: f32 = 0.3;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Sun {
-    /// Morning, midday or evening, drawn from each mountain's heights.
+    /// Morning, midday, evening or sunset, drawn from each mountain's heights.
     Varied,
     /// A low, cool light from the left and a pale sky.
     Morning,
@@ -148,6 +148,9 @@ pub enum Sun {
     Midday,
     /// A low, warm light from the right and a glowing horizon.
     Evening,
+    /// Evening looking into the sun: the land against a glowing sky, the
+    /// water below the sun glittering.
+    Sunset,
     /// Seed 000's light as its listing computes it: from the back right,
     /// 28 degrees up, brightness `0.5 + 0.5 cos`.
     Classic,

@@ -7,7 +7,7 @@ use std::sync::Arc;
 use mountains::render::classes::{Class, render_classes};
 use mountains::render::view::{self, View};
 use mountains::render::{Frame, Painter, render_full};
-use mountains::settings::{Clouds, ColorMode, Settings, ViewKind};
+use mountains::settings::{Clouds, ColorMode, Settings, Sun, ViewKind};
 use mountains::terrain::Heightfield;
 
 #[path = "common/golden.rs"]
@@ -231,4 +231,53 @@ fn strips_give_the_full_frames_mirrored_water() {
             }
         }
     }
+}
+
+/// Pixels of the water (below the horizon, away from the land) brighter
+/// than their row's median by far and warm: the sun's glitter.
+fn glints(frame: &Frame, from_row: u32) -> usize {
+    let (w, h) = (frame.width(), frame.height());
+    let luma = |c: u32| {
+        let [r, g, b] = rgb(c);
+        (r * 77 + g * 150 + b * 29) >> 8
+    };
+    let mut count = 0;
+    for y in from_row..h {
+        let row = &frame.pixels()[(y * w) as usize..((y + 1) * w) as usize];
+        let mut l: Vec<i32> = row.iter().map(|&c| luma(c)).collect();
+        l.sort_unstable();
+        let median = l[l.len() / 2];
+        count += row
+            .iter()
+            .filter(|&&c| {
+                let [r, _, b] = rgb(c);
+                luma(c) > median + 30 && r > b
+            })
+            .count();
+    }
+    count
+}
+
+/// Looking into a low sun (`sun = "sunset"`), the open water below it
+/// glitters: facets of the streaked water mirror the sun. With the sun to
+/// the side (`"evening"`) none does, and without reflections none does.
+#[test]
+fn the_water_below_a_sunset_glitters() {
+    let field = peak(20.0, 20.0, 3.0);
+    let (w, h) = (480, 300);
+    let with = |sun: Sun, reflections: bool| {
+        let s = Settings {
+            sun,
+            clouds: Clouds::Amount(0.0),
+            ..vista(reflections)
+        };
+        glints(&full(&field, &s, w, h), h / 2)
+    };
+    let sunset = with(Sun::Sunset, true);
+    let evening = with(Sun::Evening, true);
+    let plain = with(Sun::Sunset, false);
+    eprintln!("glints: sunset {sunset}, evening {evening}, sunset without reflections {plain}");
+    assert!(sunset >= 100, "only {sunset} glints under a sunset");
+    assert_eq!(evening, 0, "glints with the sun to the side");
+    assert_eq!(plain, 0, "glints without reflections");
 }

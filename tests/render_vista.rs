@@ -167,7 +167,8 @@ fn every_slide_has_land_and_nearly_every_one_water() {
 fn the_sky_is_a_gradient_and_no_colour_covers_a_large_area() {
     let (w, h) = (960, 540);
     let s = slide(w, h);
-    for seed in [1u64, 2, 3] {
+    let (mut gradients, mut sunsets) = (0, 0);
+    for seed in [1u64, 2, 3, 5, 6] {
         let field = terrain::generate(&s, seed);
         let frame = draw(&field, &s, w, h);
         let mut counts: HashMap<u32, usize> = HashMap::new();
@@ -179,16 +180,38 @@ fn the_sky_is_a_gradient_and_no_colour_covers_a_large_area() {
             most * 20 < (w * h) as usize,
             "seed {seed}: one colour covers {most} pixels"
         );
-        // The top row is the zenith; lower sky rows are lighter.
-        let row_light = |y: u32| {
+        let light = |y: u32, x: std::ops::Range<u32>| {
+            let n = x.len() as u32;
             let row = &frame.pixels()[(y * w) as usize..((y + 1) * w) as usize];
-            row.iter().map(|&c| luminance(c)).sum::<u32>() / w
+            row[x.start as usize..x.end as usize]
+                .iter()
+                .map(|&c| luminance(c))
+                .sum::<u32>()
+                / n
         };
-        assert!(
-            row_light(20) > row_light(0),
-            "seed {seed}: sky not lighter lower down"
-        );
+        let sun = Lighting::new(s.sun, &field).sun;
+        if sun.y > 0.9 {
+            // Looking into the sun (a sunset): its glow lights the top of
+            // the sky, more in the middle third than at the sides.
+            let (middle, side) = (w / 3..2 * w / 3, 0..w / 6);
+            assert!(
+                light(0, middle) > light(0, side),
+                "seed {seed}: no glow where the sun stands ahead"
+            );
+            sunsets += 1;
+        } else {
+            // The top row is the zenith; lower sky rows are lighter.
+            assert!(
+                light(20, 0..w) > light(0, 0..w),
+                "seed {seed}: sky not lighter lower down"
+            );
+            gradients += 1;
+        }
     }
+    assert!(
+        gradients >= 3 && sunsets >= 1,
+        "{gradients} gradients, {sunsets} sunsets"
+    );
 }
 
 fn luminance(c: u32) -> u32 {
@@ -257,7 +280,8 @@ fn a_varied_sun_never_stands_further_behind_than_its_time() {
         ..Settings::default()
     };
     let field = terrain::generate(&s, 1);
-    let times = [Sun::Morning, Sun::Midday, Sun::Evening].map(|t| Lighting::new(t, &field));
+    let times =
+        [Sun::Morning, Sun::Midday, Sun::Evening, Sun::Sunset].map(|t| Lighting::new(t, &field));
     for seed in 1..=40u64 {
         let varied = Lighting::new(Sun::Varied, &terrain::generate(&s, seed));
         let time = times

@@ -162,7 +162,9 @@ const COLORS: &[&str] = &[
 ];
 const VIEWS: &[&str] = &["vista", "oblique", "perspective"];
 const WATER_LINES: &[&str] = &["coast", "generator"];
-const SUNS: &[&str] = &["varied", "morning", "midday", "evening", "classic"];
+const SUNS: &[&str] = &[
+    "varied", "morning", "midday", "evening", "sunset", "classic",
+];
 const MONITORS: &[&str] = &["all", "primary"];
 const SHADINGS: &[&str] = &["smooth", "flat"];
 

@@ -19,14 +19,15 @@ const FACETS: (f32, f32) = (7.3, 2.9);
 impl Scene<'_> {
     /// `water` (the face's own colour, hazed) at grid position `g` of a
     /// surface at `level`, whose streak there is `ripple`, with what it
-    /// mirrors.
+    /// mirrors; `lit` (0..=1) of the sun reaches it, so water in the shadow
+    /// of the land before the sun does not glitter.
     pub(super) fn mirrored(
         &self,
         mirror: &Mirror,
         water: u32,
-        g: Vec2,
-        level: f32,
+        (g, level): (Vec2, f32),
         ripple: f32,
+        lit: f32,
     ) -> u32 {
         let seen = |seen: Seen| match seen {
             Seen::Land { at, height } => self.mirrored_land(at, height, level),
@@ -44,7 +45,7 @@ impl Scene<'_> {
         let sparkle = ripples.value(g.x * fx, g.y * fy);
         let sideways = ripples.value(g.x * fy + 31.0, g.y * fx + 7.0);
         match mirror.glint(dir, sparkle, sideways) {
-            Some((sun, strength)) => blend_packed(out, sun, (strength * 256.0) as u32),
+            Some((sun, strength)) => blend_packed(out, sun, (strength * lit * 256.0) as u32),
             None => out,
         }
     }

@@ -367,7 +367,7 @@ impl Scene<'_> {
         };
         let water = self.hazed_face(water, c);
         match &self.mirror {
-            Some(mirror) => self.mirrored(mirror, water, g, level, ripple),
+            Some(mirror) => self.mirrored(mirror, water, (g, level), ripple, lit_of(c)),
             None => water,
         }
     }

@@ -84,6 +84,21 @@ const EVENING: Time = Time {
     horizon: [0.95, 0.70, 0.50],
 };
 
+/// Evening looking into the sun: low ahead of the viewer, so the land stands
+/// against a glowing sky, its near faces in their own shade, and the water
+/// below the sun glitters. Five degrees up: high enough that the sight
+/// lines off the far water, mirrored, come near it (they leave the water
+/// 7 to 19 degrees up in the vista), low enough that its glow fills the top
+/// of the frame.
+const SUNSET: Time = Time {
+    elevation: 5.0,
+    azimuth: 90.0,
+    direct: [1.00, 0.70, 0.44],
+    ambient: [0.40, 0.35, 0.46],
+    zenith: [0.18, 0.20, 0.45],
+    horizon: [0.98, 0.72, 0.52],
+};
+
 /// The sky light left on ground that sees none of the sky (light bounced
 /// off the land around it).
 const SKY_FLOOR: f32 = 0.35;
@@ -92,6 +107,9 @@ const SKY_FLOOR: f32 = 0.35;
 /// the viewer's side: turned the other way, a low evening sun from behind
 /// the range throws the whole foreground into one near-black shadow.
 const AZIMUTH_JITTER: f32 = 20.0;
+/// Degrees the sunset's sun may turn either way from straight ahead: it
+/// stays within the view's width.
+const SUNSET_JITTER: f32 = 15.0;
 
 impl Lighting {
     /// The light `sun` asks for on `field`.
@@ -102,11 +120,24 @@ impl Lighting {
             Sun::Morning => (&MORNING, 0.0),
             Sun::Midday => (&MIDDAY, 0.0),
             Sun::Evening => (&EVENING, 0.0),
+            Sun::Sunset => (&SUNSET, 0.0),
             Sun::Varied => {
-                let time = [&MORNING, &MIDDAY, &EVENING][(draw % 3) as usize];
+                // Morning, midday or evening; half the evenings look into
+                // the sun.
+                let mut i = (draw % 3) as usize;
+                if i == 2 && (draw >> 24) & 1 == 1 {
+                    i = 3;
+                }
                 let unit = ((draw >> 8) & 0xffff) as f32 / 65535.0;
-                let frontwards = if time.azimuth > 90.0 { 1.0 } else { -1.0 };
-                (time, frontwards * unit * AZIMUTH_JITTER)
+                let turn = match i {
+                    // Towards the viewer's side of the range.
+                    0 | 1 => -unit * AZIMUTH_JITTER,
+                    2 => unit * AZIMUTH_JITTER,
+                    // Ahead: either way, which only lowers it towards the
+                    // viewer's side.
+                    _ => (2.0 * unit - 1.0) * SUNSET_JITTER,
+                };
+                ([&MORNING, &MIDDAY, &EVENING, &SUNSET][i], turn)
             }
         };
         Self::at(time, turn)

@@ -57,12 +57,15 @@ const MOST: f32 = 0.85;
 const TILT: f32 = 0.008;
 /// Cosine of the widest angle from the sun at which a reflected line may
 /// glint (its facets tilt it further, see [`Mirror::glint`]).
-const NEAR_SUN: f32 = 0.95;
-/// The tilt of the sparkling facets that throw the sun's glitter.
-const GLINT_TILT: f32 = 0.25;
+const NEAR_SUN: f32 = 0.9;
+/// The tilt of the sparkling facets that throw the sun's glitter, up and
+/// down the view and across it: more along, so the glitter runs in a path
+/// from below the sun towards the viewer, as on wind-ruffled water.
+const GLINT_TILT: f32 = 0.45;
+const GLINT_TILT_ACROSS: f32 = 0.2;
 /// Cosine of the widest angle between a facet's reflected line and the sun
 /// that still glints.
-const GLINT_COS: f32 = 0.995;
+const GLINT_COS: f32 = 0.99;
 /// Only facets whose sparkle exceeds this glint (they sparkle apart).
 const SPARKLE: f32 = 0.2;
 /// A cached sample not yet worked out (no packed look is this: its share
@@ -333,7 +336,7 @@ impl Mirror {
             return None;
         }
         let tilted = Vec3::new(
-            dir.x + GLINT_TILT * sideways,
+            dir.x + GLINT_TILT_ACROSS * sideways,
             dir.y,
             dir.z + GLINT_TILT * (sparkle - 0.5),
         );

@@ -17,9 +17,10 @@ use crate::render::framing::view::View;
 
 /// Sight lines farther from the sun than this (1 - cos of the angle
 /// between them: 90 degrees) get no glow at all, so a slide whose sun is
-/// behind the viewer keeps its plain gradient. The times of day put the
-/// sun to the side of the view, 60 to 75 degrees beyond the frame's edge:
-/// the glow's wide part warms that side of the sky.
+/// behind the viewer keeps its plain gradient. Morning and evening put the
+/// sun to the side of the view, 60 to 75 degrees beyond the frame's edge,
+/// where the glow's wide part warms that side of the sky; a sunset puts it
+/// ahead, a few degrees above the frame, whose top its glow fills.
 const GLOW_REACH: f32 = 1.0;
 /// The wide part's strength at the sun (it falls to 0 at the reach).
 const WIDE: f32 = 0.3;
