@@ -417,7 +417,8 @@ fn essays_projection(theta: f64, (i, j): (f64, f64), last: f64, rise: f64) -> (f
 /// wider frame its canvas is centred (moved right by half the difference)
 /// at the same scale. Square to the view (a quarter turn), the land's
 /// leftmost and rightmost drawn pixels are its front corners' (the camera
-/// is level: a point's column does not depend on its height).
+/// is level: a point's column does not depend on its height), to within
+/// the sliver of a corner no pixel centre falls in.
 #[test]
 fn the_essays_camera_sees_the_square_as_its_projection_does() {
     use mountains::render::facts::SceneFacts;
@@ -501,12 +502,15 @@ fn the_essays_camera_sees_the_square_as_its_projection_does() {
     eprintln!(
         "square-on ({degrees} degrees): land {left}..{right}, the essay's corners {lo:.1}..{hi:.1}"
     );
+    // No pixel centre outside the corners; and the land reaches them but
+    // for the sliver at each corner that the rows of pixel centres miss
+    // (the side edges climb about a row for each 1.4 columns there).
     assert!(
-        (left - lo).abs() <= 1.0,
+        (lo - 0.5..lo + 2.0).contains(&left),
         "left edge {left}, the essay's {lo}"
     );
     assert!(
-        (right - hi).abs() <= 1.0,
+        (hi - 2.0..hi + 0.5).contains(&right),
         "right edge {right}, the essay's {hi}"
     );
 }
