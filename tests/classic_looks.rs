@@ -1,6 +1,7 @@
 //! The seed programs' looks other than seed 000's (tests/classic_listing.rs
 //! holds that one): Mountain Terrain 3.0's facings and water, FL3's Filled
-//! mode and pseudo-normal deviations, the essay's turns and flat edges.
+//! mode and pseudo-normal deviations, the essay's turns, flat edges,
+//! numbers and camera.
 
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -170,6 +171,73 @@ fn fl3s_deviations_are_pseudo_normal_where_ours_are_uniform() {
     );
 }
 
+/// The finest level's horizontal-edge displacements of the square
+/// generator's field under `look` (each point between two others on an
+/// even row, less their mean; not the border's rows, which the essay
+/// leaves undisplaced), drawn on `threads` threads.
+fn square_displacements(look: &str, threads: usize) -> Vec<f64> {
+    let s = with(&[
+        ("look", look),
+        ("generator", "square"),
+        ("detail", "8"),
+        ("water_line", "generator"),
+        ("erosion", "0"),
+        ("cliffs", "0"),
+        ("lakes", "false"),
+    ]);
+    let f = terrain::generate_with_threads(&s, 11, threads);
+    let n = f.size();
+    let mut d = Vec::new();
+    for y in (2..n - 1).step_by(2) {
+        for x in (1..n - 1).step_by(2) {
+            let mean = 0.5 * (f.get(x - 1, y) as f64 + f.get(x + 1, y) as f64);
+            d.push(f.get(x, y) as f64 - mean);
+        }
+    }
+    d
+}
+
+/// The kurtosis of `d`, and its variance as a share of its largest size
+/// squared (the law's amplitude: both laws reach their ends).
+fn shape(d: &[f64]) -> (f64, f64) {
+    let m = d.iter().sum::<f64>() / d.len() as f64;
+    let var = d.iter().map(|v| (v - m).powi(2)).sum::<f64>() / d.len() as f64;
+    let fourth = d.iter().map(|v| (v - m).powi(4)).sum::<f64>() / d.len() as f64;
+    let reach = d.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+    (fourth / (var * var), var / (reach * reach))
+}
+
+/// The essay displaces by `side * cos(random * PI) * roughness`: the
+/// arcsine law, densest at its ends (kurtosis 1.5, variance half the
+/// amplitude squared), where ours is uniform (1.8 and a third); the same
+/// numbers on any number of threads.
+#[test]
+fn the_essays_deviations_are_the_cosine_of_a_random_half_turn() {
+    let essay = square_displacements("essay", 1);
+    let ours = square_displacements("ours", 1);
+    assert!(essay.len() > 16_000, "{}", essay.len());
+    let (k_essay, v_essay) = shape(&essay);
+    let (k_ours, v_ours) = shape(&ours);
+    eprintln!(
+        "kurtosis essay {k_essay:.3}, ours {k_ours:.3}; variance / amplitude^2 essay {v_essay:.3}, ours {v_ours:.3}"
+    );
+    assert!((1.4..1.6).contains(&k_essay), "essay kurtosis {k_essay}");
+    assert!((0.47..0.53).contains(&v_essay), "essay variance {v_essay}");
+    assert!((1.65..1.95).contains(&k_ours), "ours kurtosis {k_ours}");
+    assert!((0.30..0.36).contains(&v_ours), "ours variance {v_ours}");
+    // Densest at the ends: a tenth of the amplitude's width at either end
+    // holds 2 acos(0.9) / PI = 29% of the arcsine law, 10% of a uniform.
+    let ends = |d: &[f64]| {
+        let reach = d.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+        d.iter().filter(|v| v.abs() > 0.9 * reach).count() as f64 / d.len() as f64
+    };
+    let (e_essay, e_ours) = (ends(&essay), ends(&ours));
+    assert!((0.26..0.32).contains(&e_essay), "essay ends {e_essay}");
+    assert!((0.08..0.12).contains(&e_ours), "ours ends {e_ours}");
+    let bits = |d: Vec<f64>| d.iter().map(|v| v.to_bits()).collect::<Vec<_>>();
+    assert_eq!(bits(essay), bits(square_displacements("essay", 3)));
+}
+
 #[test]
 fn fl3s_filled_mode_is_flat_green_and_blue_outlined_in_black() {
     let s = with(&[("look", "fl3")]);
@@ -263,10 +331,14 @@ fn the_essays_faces_are_its_sunlit_green_on_a_white_page() {
 
 /// How wide the land is a tenth of its height above its lowest pixel, against its
 /// widest row, in a rendered essay picture of seed `seed`: small for the
-/// corner-on square (the near corner), near 1 for a square edge-on.
+/// corner-on square (the near corner), near 1 for a square edge-on. At
+/// the least height: the essay's camera is level and low, so at full
+/// relief valleys behind its level front edge are seen below that edge
+/// (the essay draws every face, from below too), and the lowest pixel
+/// would be a valley's, not the square's outline.
 fn essay_front_width(seed: u64) -> f64 {
     use mountains::render::essay;
-    let s = with(&[("look", "essay"), ("detail", "6")]);
+    let s = with(&[("look", "essay"), ("detail", "6"), ("height", "1")]);
     let field = terrain::generate(&s, seed);
     let (w, h) = (480, 270);
     let mut frame = Frame::new(w, h).unwrap();
@@ -313,6 +385,134 @@ fn the_essay_turns_its_square_in_steps_of_11_25_degrees() {
     let edge = essay_front_width(seed_at(90.0));
     eprintln!("front widths: 45 degrees {corner:.3}, 90 degrees {edge:.3}");
     assert!(edge > 0.7, "90 degrees: front {edge}");
+}
+
+/// Where the essay's program puts the point of its array at column
+/// `i`, row `j` of a `last + 1`-point square (`origin(center)` turned by
+/// `theta`, as `terrain()` lays its points out: columns from P1 towards
+/// P4, rows from P1 towards P2), `rise` of its units above its base:
+/// `projection()` from `camera = [500,100,0]` onto `screen = 600`, in
+/// its 1000x600 canvas's pixels.
+fn essays_projection(theta: f64, (i, j): (f64, f64), last: f64, rise: f64) -> (f64, f64) {
+    let (camera, screen, center) = ([500.0, 100.0, 0.0], 600.0, [500.0, 850.0, 2400.0]);
+    let hyp = 2048.0 / 2f64.sqrt();
+    let phi = std::f64::consts::FRAC_PI_2 - theta;
+    let p1 = [center[0] - hyp * theta.cos(), center[2] + hyp * theta.sin()];
+    let p2 = [center[0] - hyp * phi.cos(), center[2] - hyp * phi.sin()];
+    let p4 = [center[0] + hyp * phi.cos(), center[2] + hyp * phi.sin()];
+    let (u, v) = (i / last, j / last);
+    let x = p1[0] + v * (p2[0] - p1[0]) + u * (p4[0] - p1[0]);
+    let z = p1[1] + v * (p2[1] - p1[1]) + u * (p4[1] - p1[1]);
+    let y = center[1] - rise;
+    let r = screen / (z - camera[2]);
+    (
+        camera[0] - (camera[0] - x) * r,
+        camera[1] - (camera[1] - y) * r,
+    )
+}
+
+/// The essay's camera: in a frame of its canvas's shape (1000x600) the
+/// square's corners, centre and a few points between, at their heights,
+/// land where the essay's `projection()` puts them, within a pixel; in a
+/// wider frame its canvas is centred (moved right by half the difference)
+/// at the same scale. Square to the view (a quarter turn), the land's
+/// leftmost and rightmost drawn pixels are its front corners' (the camera
+/// is level: a point's column does not depend on its height), to within
+/// the sliver of a corner no pixel centre falls in.
+#[test]
+fn the_essays_camera_sees_the_square_as_its_projection_does() {
+    use mountains::render::facts::SceneFacts;
+    use mountains::render::{essay, turn};
+    let s = with(&[("look", "essay"), ("detail", "6")]);
+    let degrees_of = |seed: u64| {
+        let mut f = mountains::terrain::Heightfield::flat(3, 1.0);
+        f.set_seed(Some(seed));
+        turn::essay_degrees(f.identity())
+    };
+    let square_on = (0..10_000u64)
+        .find(|&s| degrees_of(s) % 90.0 == 0.0)
+        .expect("a seed turned a quarter");
+    for seed in [7, 3, square_on] {
+        let field = terrain::generate(&s, seed);
+        assert_eq!(field.drawn_scale(), 1.0);
+        let n = field.size();
+        let last = (n - 1) as f64;
+        let degrees = turn::essay_degrees(field.identity()) as f64;
+        // The essay turns the other way from its first view, edge-on.
+        let theta = (45.0 - degrees).to_radians();
+        // Its units per field unit, and its base: the corners' height.
+        let k = 2048.0 / field.extent() as f64;
+        let base = field.get(0, 0) as f64;
+        // A source grid point's place in the turned grid the scene draws
+        // (src/render/framing/turn.rs), in fractions of its width.
+        let (sin, cos) = (degrees.to_radians() as f32).sin_cos();
+        let grow = (sin.abs() + cos.abs()) as f64;
+        let (sin, cos) = (sin as f64, cos as f64);
+        let turned = |i: f64, j: f64| {
+            let (dx, dy) = (i - 0.5 * last, j - 0.5 * last);
+            let (u, v) = (cos * dx + sin * dy, -sin * dx + cos * dy);
+            (0.5 + u / (grow * last), 0.5 + v / (grow * last))
+        };
+        let points = [
+            (0, 0),
+            (n - 1, 0),
+            (0, n - 1),
+            (n - 1, n - 1),
+            (n / 2, n / 2),
+        ]
+        .into_iter()
+        .chain((1..8).map(|q| (q * n / 8, (8 - q) * n / 9)));
+        for (w, h, shift) in [(1000, 600, 0.0), (1280, 600, 140.0)] {
+            let facts = SceneFacts::of(&field, &s, w, h);
+            for (i, j) in points.clone() {
+                let z = field.get(i, j);
+                let rise = (z as f64 - base) * k;
+                let want = essays_projection(theta, (i as f64, j as f64), last, rise);
+                let (fx, fy) = turned(i as f64, j as f64);
+                let got = facts.place(fx as f32, fy as f32, z);
+                let got = (got.x as f64 * w as f64, got.y as f64 * h as f64);
+                let off = ((got.0 - want.0 - shift).powi(2) + (got.1 - want.1).powi(2)).sqrt();
+                assert!(
+                    off < 1.0,
+                    "seed {seed} ({degrees} degrees), {w}x{h}, point ({i}, {j}): \
+                     at {got:?}, the essay's {want:?} (+{shift}): {off:.2} px off"
+                );
+            }
+        }
+    }
+    // Drawn: square to the view, the land spans its front corners.
+    let field = terrain::generate(&s, square_on);
+    let (w, h) = (1000, 600);
+    let mut frame = Frame::new(w, h).unwrap();
+    render_full(&field, &s, &mut frame);
+    let land: Vec<u32> = (0..w)
+        .filter(|&x| (0..h).any(|y| frame.get(x, y) != essay::BACKGROUND))
+        .collect();
+    let (left, right) = (land[0] as f64, *land.last().unwrap() as f64 + 1.0);
+    let degrees = turn::essay_degrees(field.identity()) as f64;
+    let theta = (45.0 - degrees).to_radians();
+    let last = (field.size() - 1) as f64;
+    let xs: Vec<f64> = [(0.0, 0.0), (last, 0.0), (0.0, last), (last, last)]
+        .iter()
+        .map(|&c| essays_projection(theta, c, last, 0.0).0)
+        .collect();
+    let (lo, hi) = xs
+        .iter()
+        .fold((f64::MAX, f64::MIN), |(lo, hi), &x| (lo.min(x), hi.max(x)));
+    eprintln!(
+        "square-on ({degrees} degrees): land {left}..{right}, the essay's corners {lo:.1}..{hi:.1}"
+    );
+    // No pixel centre outside the corners; and the land reaches them but
+    // for the sliver at each corner that the rows of pixel centres miss
+    // (the side edges climb about a row for each 1.4 columns there).
+    assert!(
+        (lo - 0.5..lo + 2.0).contains(&left),
+        "left edge {left}, the essay's {lo}"
+    );
+    assert!(
+        (hi - 2.0..hi + 0.5).contains(&right),
+        "right edge {right}, the essay's {hi}"
+    );
 }
 
 /// Each look's picture is the same drawn at once (in bands of columns on

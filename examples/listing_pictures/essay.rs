@@ -9,9 +9,10 @@
 //! white 1000x600 canvas (here scaled to the frame's width).
 //!
 //! The heights are the look's field (its square generator, edges
-//! undisplaced), not the essay's `cos(random * PI)` numbers: the field's
+//! undisplaced, its numbers the essay's `cos(random * PI)`): the field's
 //! width is the essay's 2048 (`N = 11`) and its heights are in the same
-//! units, standing up (the essay's y grows downwards).
+//! units, standing up (the essay's y grows downwards) from its corners at
+//! the essay's base.
 
 use crate::canvas::Canvas;
 use mountains::terrain::Heightfield;
@@ -37,6 +38,13 @@ pub fn draw(field: &Heightfield, theta: f64, canvas: &mut Canvas) {
         [c[0] + hyp * phi.cos(), c[1], c[2] + hyp * phi.sin()],
     ];
     let up = side / f64::from(field.extent());
+    // The essay's corners stand at its `center`'s height, y = 850: the
+    // field's corners (all at one height, its edges undisplaced) go there.
+    let base = [(0, 0), (m, 0), (0, m), (m, m)]
+        .iter()
+        .map(|&(x, y)| f64::from(field.get(x, y)))
+        .sum::<f64>()
+        / 4.0;
     // Array point (i, j): i from P1 towards P4 (our columns), j from P1
     // towards P2 (our rows, back to front).
     let point = |i: usize, j: usize| -> [f64; 3] {
@@ -45,7 +53,7 @@ pub fn draw(field: &Heightfield, theta: f64, canvas: &mut Canvas) {
         for k in 0..3 {
             p[k] = sq[0][k] + v * (sq[1][k] - sq[0][k]) + u * (sq[3][k] - sq[0][k]);
         }
-        p[1] -= f64::from(field.get(i, j)) * up;
+        p[1] -= (f64::from(field.get(i, j)) - base) * up;
         p
     };
     let scale = canvas.width as f64 / 1000.0;

@@ -5,6 +5,7 @@ use std::sync::Arc;
 
 use glam::Vec2;
 
+use super::framing::easel;
 use super::framing::tops::{RowTops, finite};
 use super::framing::turn;
 use super::framing::view::{Oblique, View, listing_relief};
@@ -170,11 +171,15 @@ impl<'a> Scene<'a> {
         let style = Style::of(settings.color);
         let mut field = turned(field, settings.rotation);
         let holes = settings.look == Look::Essay;
+        // The essay's square, before it is turned, for its camera.
+        let mut square = None;
         if holes {
+            square = Some(easel::Square::of(&field));
             let degrees = turn::essay_degrees(field.identity());
             field = FieldRef::Shared(Arc::new(turn::turned_by(&field, degrees)));
         }
         if let Some(drawn) = field.drawn() {
+            square = square.map(|s| s.scaled(field.drawn_scale()));
             field = FieldRef::Shared(Arc::new(drawn));
         }
         if matches!(style, Style::Sonar | Style::Outline) {
@@ -190,7 +195,8 @@ impl<'a> Scene<'a> {
             let others = s.spawn(|| {
                 let palette = Palette::lit_by(settings, &field, lighting);
                 let skylight = wants_sky.then(|| SkyLight::new(&field));
-                let (row_top, view, rows) = framed(&field, settings, shaded, width, height);
+                let (row_top, view, rows) =
+                    framed(&field, settings, (shaded, square), width, height);
                 (palette, skylight, row_top, view, rows)
             });
             let shadow = (shaded && settings.shadows).then(|| shadow::cast(&field, light));
@@ -468,10 +474,12 @@ impl<'a> Scene<'a> {
 /// The highest point of each row (at least sea level), the view fitted to
 /// `field` in a `width` x `height` frame, and the grid rows its mesh is
 /// drawn with.
+/// The essay's square (`square`, under `look = "essay"`) is seen in the
+/// perspective view from the essay's own camera.
 fn framed(
     field: &Heightfield,
     settings: &Settings,
-    shaded: bool,
+    (shaded, square): (bool, Option<easel::Square>),
     width: u32,
     height: u32,
 ) -> (RowTops, View, Vec<usize>) {
@@ -497,15 +505,18 @@ fn framed(
         Oblique::OURS
     };
     let floor = super::framing::view::near_floor(field);
-    let view = View::fitted_oblique(
-        settings.view,
-        oblique,
-        size,
-        field.extent(),
-        (tops, floor),
-        width,
-        height,
-    );
+    let view = match square.filter(|_| settings.view == ViewKind::Perspective) {
+        Some(square) => easel::view(square, size, field.extent(), width, height),
+        None => View::fitted_oblique(
+            settings.view,
+            oblique,
+            size,
+            field.extent(),
+            (tops, floor),
+            width,
+            height,
+        ),
+    };
     // Sonar and Outline draw every line of their (already thinned) grid.
     let rows = if shaded {
         super::framing::rows::kept_rows(size, &view)

@@ -3,7 +3,7 @@
 //! sets to anything but its default keeps that value (`keys::apply`
 //! layers the look under the keys); the parts of a look no key can say
 //! (seed 000's HSV ramp and tilt, Mountain Terrain's facings, FL3's
-//! pseudo-normal numbers, the essay's turns) are read from
+//! pseudo-normal numbers, the essay's numbers, turns and camera) are read from
 //! `Settings::look` by the renderer and the generator.
 //!
 //! Only data here: the key table (`keys.rs`) checks every value against

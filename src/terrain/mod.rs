@@ -199,7 +199,7 @@ fn subdivide_all<P: Put>(
 ) -> Option<Extremes> {
     let size = field.size();
     let noise = noise::Noise::new(seed, p.exponent)
-        .pseudo_normal(p.pseudo_normal)
+        .spread(p.spread)
         .still_edges(p.still_edges);
     let heights = field.heights_mut();
     match p.generator {

@@ -2,6 +2,7 @@
 //! no setting, however wild, can panic or stall a generator.
 
 use super::heightfield::{MAX_EXPONENT, MIN_EXPONENT};
+use super::noise::Spread;
 use super::{SQUARE_EXTENT, TRIANGLE_EXTENT};
 use crate::settings::handles::{
     CLIFFS, CONTOUR, CRAGGINESS, ELEVATION, EROSION, HEIGHT, HURST, ROUGHNESS, SEA_LEVEL,
@@ -25,9 +26,10 @@ pub(crate) struct Params {
     pub(crate) water_line: WaterLine,
     pub(crate) lakes: bool,
     pub(crate) cliffs: f32,
-    /// FL3's pseudo-normal deviations (`look = "fl3"`): the sum of two
-    /// uniform numbers, where ours are one.
-    pub(crate) pseudo_normal: bool,
+    /// How the deviations are spread: FL3's pseudo-normal ones (`look =
+    /// "fl3"`), the essay's `cos(random * PI)` (`look = "essay"`), ours
+    /// uniform.
+    pub(crate) spread: Spread,
     /// The essay's square with its outer edges undisplaced (`look =
     /// "essay"`): the border's points keep their ends' mean.
     pub(crate) still_edges: bool,
@@ -52,7 +54,11 @@ impl Params {
             water_line: s.water_line,
             lakes: s.lakes,
             cliffs: CLIFFS.clamp(s.cliffs),
-            pseudo_normal: s.look == Look::Fl3,
+            spread: match s.look {
+                Look::Fl3 => Spread::Triangle,
+                Look::Essay => Spread::Arcsine,
+                _ => Spread::Uniform,
+            },
             still_edges: s.look == Look::Essay,
         }
     }

@@ -206,6 +206,28 @@ impl View {
         view
     }
 
+    /// A `size` x `size` grid `extent` units wide seen through `camera`
+    /// placed by a seed program's own rules rather than fitted: its
+    /// unscaled screen point `u` drawn at pixel `offset + scale * u`.
+    pub(crate) fn through(
+        camera: Camera,
+        size: usize,
+        extent: f32,
+        scale: f32,
+        offset: Vec2,
+    ) -> Self {
+        let steps = size.saturating_sub(1).max(1) as f32;
+        View {
+            cell: extent / steps,
+            scale,
+            offset,
+            camera: Some(camera),
+            size,
+            tilt: TILT_SIN_COS,
+            relief: 1.0,
+        }
+    }
+
     /// Distance of a point in front of the camera, as a fraction of the
     /// distance to the middle of the back edge (0 for the oblique view,
     /// which has no camera): what aerial haze grows with.
