@@ -12,6 +12,7 @@ use glam::{Vec2, Vec3};
 use super::camera::Camera;
 use super::view::View;
 use crate::terrain::Heightfield;
+use crate::terrain::heightmap::quantise::Quantisation;
 
 /// The essay's canvas, in its pixels (`<canvas width="1000" height="600">`).
 pub const CANVAS: Vec2 = Vec2::new(1000.0, 600.0);
@@ -23,9 +24,6 @@ const SCREEN: f32 = 600.0;
 const CENTRE: Vec3 = Vec3::new(500.0, 850.0, 2400.0);
 /// The square's side, `Math.pow(2, N)` with `N = 11`.
 const SIDE: f32 = 2048.0;
-/// The base is taken to this share of the square's width (see
-/// [`Square::of`]).
-const BASE_STEPS: f32 = 1024.0;
 
 /// The essay's square as it stands in the field: its side and the height
 /// of its base (its corners, which the essay keeps at its `center`'s
@@ -38,20 +36,20 @@ pub(crate) struct Square {
 
 impl Square {
     /// The square `field` holds, not yet turned: its width, and its
-    /// corners' mean height for its base, to the nearest [`BASE_STEPS`]th
-    /// of its width: a data set's 16-bit heights (a few thousandths of a
-    /// unit off once saved and opened) put the eye in the same place, so
-    /// the picture comes back pixel for pixel, and no eye is moved by more
-    /// than a 2048th of the width (under a thousandth of its height).
+    /// corners' mean height for its base, on the 16-bit grid a data set
+    /// saves it on (`snap_to_grid`'s, spanning the field's lowest to
+    /// highest point, which a save keeps exactly): a set saved and opened
+    /// again has its heights on that grid, so its eye stands where it stood
+    /// and the picture comes back pixel for pixel.
     pub(crate) fn of(field: &Heightfield) -> Self {
         let last = field.size().saturating_sub(1);
         let corners = [(0, 0), (last, 0), (0, last), (last, last)];
         let sum: f32 = corners.iter().map(|&(x, y)| field.get(x, y)).sum();
-        let side = field.extent();
-        let step = side / BASE_STEPS;
-        let base = (0.25 * sum / step).round() * step;
+        let (lo, hi) = field.min_max();
+        let grid = Quantisation::spanning(lo, hi);
+        let base = grid.height(grid.sample(0.25 * sum));
         Square {
-            side,
+            side: field.extent(),
             base: if base.is_finite() { base } else { 0.0 },
         }
     }
