@@ -238,6 +238,53 @@ fn the_essays_deviations_are_the_cosine_of_a_random_half_turn() {
     assert_eq!(bits(essay), bits(square_displacements("essay", 3)));
 }
 
+/// The root mean square of the finest level's displacements of the square
+/// generator's centres (from their four corners' mean) and of its edge
+/// midpoints (from their two ends' mean), under `look`.
+fn centre_and_edge_rms(look: &str) -> (f64, f64) {
+    let s = with(&[
+        ("look", look),
+        ("generator", "square"),
+        ("detail", "8"),
+        ("water_line", "generator"),
+        ("erosion", "0"),
+        ("cliffs", "0"),
+        ("lakes", "false"),
+    ]);
+    let f = terrain::generate(&s, 11);
+    let n = f.size();
+    let h = |x: usize, y: usize| f64::from(f.get(x, y));
+    let (mut centre, mut edge) = ((0.0, 0), (0.0, 0));
+    for y in (1..n - 1).step_by(2) {
+        for x in (1..n - 1).step_by(2) {
+            let corners = h(x - 1, y - 1) + h(x + 1, y - 1) + h(x - 1, y + 1) + h(x + 1, y + 1);
+            centre = (centre.0 + (h(x, y) - 0.25 * corners).powi(2), centre.1 + 1);
+            // The edge midpoint below this centre (inside the square).
+            if y + 1 < n - 1 {
+                let ends = 0.5 * (h(x - 1, y + 1) + h(x + 1, y + 1));
+                edge = (edge.0 + (h(x, y + 1) - ends).powi(2), edge.1 + 1);
+            }
+        }
+    }
+    (
+        (centre.0 / f64::from(centre.1)).sqrt(),
+        (edge.0 / f64::from(edge.1)).sqrt(),
+    )
+}
+
+/// The essay displaces an edge's midpoint by `side * cos(random * PI) *
+/// side_roughness` (0.15) and a square's centre by the same with
+/// `center_roughness` (0.2): its edges three quarters as far as its
+/// centres, where ours displaces both alike.
+#[test]
+fn the_essays_edges_are_displaced_three_quarters_as_far_as_its_centres() {
+    let (c, e) = centre_and_edge_rms("essay");
+    let (oc, oe) = centre_and_edge_rms("ours");
+    eprintln!("edge / centre: essay {:.3}, ours {:.3}", e / c, oe / oc);
+    assert!((0.72..0.78).contains(&(e / c)), "essay {}", e / c);
+    assert!((0.95..1.05).contains(&(oe / oc)), "ours {}", oe / oc);
+}
+
 #[test]
 fn fl3s_filled_mode_is_flat_green_and_blue_outlined_in_black() {
     let s = with(&[("look", "fl3")]);

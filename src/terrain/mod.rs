@@ -212,6 +212,7 @@ fn subdivide_all<P: Put>(
             let rule = square::Square {
                 ordering,
                 cragginess: p.cragginess,
+                edge_share: p.edge_share,
             };
             let first_depth = rule.start(heights, size, p.elevation, &noise, put);
             // Only a moved water line needs the extremes.

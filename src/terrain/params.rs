@@ -33,7 +33,14 @@ pub(crate) struct Params {
     /// The essay's square with its outer edges undisplaced (`look =
     /// "essay"`): the border's points keep their ends' mean.
     pub(crate) still_edges: bool,
+    /// What an edge midpoint's displacement is scaled by against a
+    /// centre's (the square generators), where it is not the same: the
+    /// essay's `side_roughness = 0.15` against `center_roughness = 0.2`.
+    pub(crate) edge_share: Option<f32>,
 }
+
+/// The essay's edge midpoints' roughness against its centres'.
+const ESSAY_EDGE_SHARE: f32 = 0.15 / 0.2;
 
 impl Params {
     /// Clamps each setting into its range in the key table; a NaN falls
@@ -60,6 +67,7 @@ impl Params {
                 _ => Spread::Uniform,
             },
             still_edges: s.look == Look::Essay,
+            edge_share: (s.look == Look::Essay).then_some(ESSAY_EDGE_SHARE),
         }
     }
 

@@ -36,6 +36,9 @@ pub(crate) struct Square {
     pub(crate) ordering: Ordering,
     /// The initial random range, halved per level.
     pub(crate) cragginess: f32,
+    /// Edge midpoints' displacements against centres' (see
+    /// `Params::edge_share`); the same when `None`.
+    pub(crate) edge_share: Option<f32>,
 }
 
 /// Depth of the diamond generator's starting lattice: 2^depth + 1 points
@@ -99,6 +102,17 @@ impl Rule for Square {
     }
 
     fn edge_row<P: Put>(&self, rows: EdgeRows<'_>, offsets: &[f32], put: &P) {
+        if let Some(share) = self.edge_share {
+            let scaled: Vec<f32> = offsets.iter().map(|o| o * share).collect();
+            return self.edges(rows, &scaled, put);
+        }
+        self.edges(rows, offsets, put)
+    }
+}
+
+impl Square {
+    /// [`Rule::edge_row`] with the offsets as given.
+    fn edges<P: Put>(&self, rows: EdgeRows<'_>, offsets: &[f32], put: &P) {
         let EdgeRows { above, row, below } = rows;
         if self.ordering == Ordering::Midpoint || (above.is_none() && below.is_none()) {
             return edge_row_of_ends(row, offsets, put);
