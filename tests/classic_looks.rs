@@ -285,6 +285,44 @@ fn the_essays_edges_are_displaced_three_quarters_as_far_as_its_centres() {
     assert!((0.95..1.05).contains(&(oe / oc)), "ours {}", oe / oc);
 }
 
+/// The essay's square, turned, keeps straight edges, as the essay draws
+/// them: a cell on the land's edge is cut along the square's side instead
+/// of left out. Nearly flat land (height 1) seen from seed 7's turn (56.25
+/// degrees): the land's lowest pixel in each column runs straight from the
+/// side corners down to the nearest one (before: 5.9 px off it).
+#[test]
+fn the_essays_turned_square_keeps_straight_edges() {
+    let s = with(&[("look", "essay"), ("height", "1")]);
+    let (w, h) = (640u32, 384u32);
+    let field = terrain::generate(&s, 7);
+    let mut frame = Frame::new(w, h).unwrap();
+    render_full(&field, &s, &mut frame);
+    let page = frame.get(0, 0);
+    let bottom: Vec<Option<u32>> = (0..w)
+        .map(|x| (0..h).rev().find(|&y| frame.get(x, y) != page))
+        .collect();
+    let columns: Vec<u32> = (0..w).filter(|&x| bottom[x as usize].is_some()).collect();
+    let (left, right) = (columns[0], *columns.last().unwrap());
+    let low = |x: u32| bottom[x as usize].unwrap() as f32;
+    let front = (left..=right)
+        .max_by_key(|&x| bottom[x as usize].unwrap())
+        .unwrap();
+    assert!(
+        front > left + 40 && front + 40 < right,
+        "{left} {front} {right}"
+    );
+    let mut worst = 0.0f32;
+    for (a, b) in [(left, front), (front, right)] {
+        // Away from the corners, whose pixels a sliver may miss.
+        for x in a + 3..b - 2 {
+            let t = (x - a) as f32 / (b - a) as f32;
+            let line = low(a) + (low(b) - low(a)) * t;
+            worst = worst.max((low(x) - line).abs());
+        }
+    }
+    assert!(worst <= 2.0, "the edge strays {worst} px from straight");
+}
+
 #[test]
 fn fl3s_filled_mode_is_flat_green_and_blue_outlined_in_black() {
     let s = with(&[("look", "fl3")]);

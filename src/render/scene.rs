@@ -89,6 +89,24 @@ pub(crate) enum FieldRef<'a> {
     Borrowed(&'a Heightfield),
 }
 
+impl<'a> FieldRef<'a> {
+    /// Another reference to the same field.
+    fn again(&self) -> FieldRef<'a> {
+        match self {
+            FieldRef::Shared(f) => FieldRef::Shared(Arc::clone(f)),
+            FieldRef::Borrowed(f) => FieldRef::Borrowed(f),
+        }
+    }
+}
+
+/// The essay's square as it was before the turn, the turn, and the scale
+/// its heights are drawn at (see [`Heightfield::drawn`]).
+pub(crate) struct Outline<'a> {
+    pub square: FieldRef<'a>,
+    pub turn: turn::Turn,
+    pub scale: f32,
+}
+
 impl std::ops::Deref for FieldRef<'_> {
     type Target = Heightfield;
 
@@ -144,6 +162,9 @@ pub(crate) struct Scene<'a> {
     /// Whether the field has points outside the land (NaN: the essay's
     /// turned square), whose cells are left undrawn.
     pub holes: bool,
+    /// The essay's square before it was turned, and the turn: where a cell
+    /// on the land's edge is cut along the square's side (order/cut.rs).
+    pub outline: Option<Outline<'a>>,
     /// Under the classic light, the shear of the parallelogram the oblique
     /// view draws (grid steps left per row forward; 0 otherwise): seed
     /// 000's listing lights the faces of its parallelogram, not of a square.
@@ -173,13 +194,21 @@ impl<'a> Scene<'a> {
         let holes = settings.look == Look::Essay;
         // The essay's square, before it is turned, for its camera.
         let mut square = None;
+        let mut outline = None;
         if holes {
             square = Some(easel::Square::of(&field));
             let degrees = turn::essay_degrees(field.identity());
+            outline = Some(Outline {
+                square: field.again(),
+                turn: turn::Turn::new(field.size(), degrees),
+                scale: 1.0,
+            });
             field = FieldRef::Shared(Arc::new(turn::turned_by(&field, degrees)));
         }
         if let Some(drawn) = field.drawn() {
-            square = square.map(|s| s.scaled(field.drawn_scale()));
+            let f = field.drawn_scale();
+            square = square.map(|s| s.scaled(f));
+            outline = outline.map(|o| Outline { scale: f, ..o });
             field = FieldRef::Shared(Arc::new(drawn));
         }
         if matches!(style, Style::Sonar | Style::Outline) {
@@ -282,6 +311,7 @@ impl<'a> Scene<'a> {
             rows,
             lakes,
             holes,
+            outline,
             normal_shear,
             listing_diagonal,
             listing_cuts,

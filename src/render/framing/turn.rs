@@ -40,21 +40,69 @@ pub fn essay_degrees(identity: u64) -> f32 {
 /// are NaN. Heights between grid points are blended bilinearly.
 pub fn turned_by(field: &Heightfield, degrees: f32) -> Heightfield {
     let n = field.size();
-    let (sin, cos) = degrees.to_radians().sin_cos();
-    let grow = sin.abs() + cos.abs();
-    let mut out = Heightfield::flat(field.exponent(), field.extent() * grow);
+    let turn = Turn::new(n, degrees);
+    let mut out = Heightfield::flat(field.exponent(), field.extent() * turn.grow);
     out.set_seed(field.seed());
-    let last = (n - 1) as f32;
-    let centre = 0.5 * last;
     for y in 0..n {
         for x in 0..n {
-            // This point, in source grid steps from the centre.
-            let (u, v) = ((x as f32 - centre) * grow, (y as f32 - centre) * grow);
-            let (sx, sy) = (centre + cos * u - sin * v, centre + sin * u + cos * v);
-            out.set(x, y, sample(field, sx, sy, last));
+            let (sx, sy) = turn.source(x as f32, y as f32);
+            out.set(x, y, sample(field, sx, sy, turn.last));
         }
     }
     out
+}
+
+/// How [`turned_by`] maps its grid onto the field's: where a point of the
+/// turned grid comes from, and where the square's sides cross it.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Turn {
+    sin: f32,
+    cos: f32,
+    /// The turned grid's steps per field step (its extent's growth).
+    grow: f32,
+    centre: f32,
+    last: f32,
+}
+
+impl Turn {
+    /// The turn of a field `size` points a side by `degrees`.
+    pub(crate) fn new(size: usize, degrees: f32) -> Self {
+        let (sin, cos) = degrees.to_radians().sin_cos();
+        let last = (size - 1) as f32;
+        Turn {
+            sin,
+            cos,
+            grow: sin.abs() + cos.abs(),
+            centre: 0.5 * last,
+            last,
+        }
+    }
+
+    /// The field's grid position of turned grid position (`x`, `y`).
+    #[inline]
+    pub(crate) fn source(&self, x: f32, y: f32) -> (f32, f32) {
+        // In source grid steps from the centre.
+        let (u, v) = ((x - self.centre) * self.grow, (y - self.centre) * self.grow);
+        (
+            self.centre + self.cos * u - self.sin * v,
+            self.centre + self.sin * u + self.cos * v,
+        )
+    }
+
+    /// How far turned grid position (`x`, `y`) lies inside each of the
+    /// square's four sides, in field steps (all at least 0 inside).
+    pub(crate) fn inside(&self, x: f32, y: f32) -> [f32; 4] {
+        let (sx, sy) = self.source(x, y);
+        [sx, self.last - sx, sy, self.last - sy]
+    }
+
+    /// The field's height at turned grid position (`x`, `y`), taken to the
+    /// square's nearest point if it lies outside.
+    pub(crate) fn height(&self, field: &Heightfield, x: f32, y: f32) -> f32 {
+        let (sx, sy) = self.source(x, y);
+        let last = self.last;
+        sample(field, sx.clamp(0.0, last), sy.clamp(0.0, last), last)
+    }
 }
 
 /// The field's height at grid position (`x`, `y`), bilinear; NaN outside

@@ -3,6 +3,7 @@
 //! frame in bands of columns with only the cells that reach each band.
 
 pub(super) mod bands;
+pub(super) mod cut;
 pub(super) mod edges;
 pub(super) mod mirrored;
 pub(super) mod reach;

@@ -25,19 +25,19 @@ enum Paint {
 
 /// A triangle corner: grid position, true height, screen position, light.
 #[derive(Clone, Copy)]
-struct Corner {
-    g: Vec2,
-    h: f32,
+pub(super) struct Corner {
+    pub(super) g: Vec2,
+    pub(super) h: f32,
     /// The water surface over the corner (see `Vert::w`).
-    w: f32,
-    p: Fixed2,
-    lit: f32,
-    sky: f32,
-    haze: u32,
+    pub(super) w: f32,
+    pub(super) p: Fixed2,
+    pub(super) lit: f32,
+    pub(super) sky: f32,
+    pub(super) haze: u32,
     /// Under smooth shading, the land's colour here.
-    colour: u32,
+    pub(super) colour: u32,
     /// Outside the land (see `Vert::off`).
-    off: bool,
+    pub(super) off: bool,
 }
 
 impl Corner {
@@ -66,7 +66,7 @@ impl ShorePoint for Corner {
 }
 
 /// A grid triangle's corners, in drawing order.
-type Face<'c> = [&'c Corner; 3];
+pub(super) type Face<'c> = [&'c Corner; 3];
 
 /// A strip's two projected grid rows: `y` are their grid rows, back first.
 struct StripRows<'r> {
@@ -154,8 +154,11 @@ impl Scene<'_> {
         // A cell crossing the water line puts its shore points on the
         // water's plane, possibly outside its corners' box: never skip those.
         let crosses = v.iter().any(|v| v.h < v.w) && v.iter().any(|v| v.h > v.w);
+        // A cell on the land's edge is cut along the square's side, whose
+        // corners may lie outside its own corners' box.
+        let cut = self.holes && v.iter().any(|v| v.off);
         let corners = [top[x].p, top[x + 1].p, bottom[x].p, bottom[x + 1].p];
-        if !crosses {
+        if !crosses && !cut {
             match centre_box(corners, canvas.clip()) {
                 Some([x0, x1, y0, _]) if !canvas.hidden(x0, x1, y0) => {}
                 _ => return,
@@ -168,15 +171,21 @@ impl Scene<'_> {
             None if rightward && !self.listing_diagonal => [[&tl, &tr, &bl], [&tr, &br, &bl]],
             None => [[&tl, &tr, &br], [&tl, &br, &bl]],
         };
-        if self.holes && [&tl, &tr, &bl, &br].iter().any(|c| c.off) {
-            // On the edge of the land: only its faces with no corner outside.
+        if cut {
+            // On the edge of the land: each face's part inside the square.
             let faces = if canvas.keeps_first() {
                 [near, far]
             } else {
                 [far, near]
             };
-            for face in faces.into_iter().filter(|f| f.iter().all(|c| !c.off)) {
-                self.fill_face(canvas, face);
+            for face in faces.into_iter().filter(|f| f.iter().any(|c| !c.off)) {
+                match &self.outline {
+                    Some(outline) if face.iter().any(|c| c.off) => {
+                        self.fill_cut(canvas, outline, face)
+                    }
+                    _ if face.iter().all(|c| !c.off) => self.fill_face(canvas, face),
+                    _ => {}
+                }
             }
             return;
         }
@@ -194,7 +203,7 @@ impl Scene<'_> {
     /// (seed 000's DrawTriangle). The face's water is a lake's where a
     /// corner lies under one (its other corners then stand at or above the
     /// lake's lip), else the sea's.
-    fn fill_face(&self, canvas: &mut Canvas, c: Face) {
+    pub(super) fn fill_face(&self, canvas: &mut Canvas, c: Face) {
         let level = c[0].w.max(c[1].w).max(c[2].w);
         let wet = c.map(|k| k.h < level);
         if c.iter().all(|k| k.h <= level) {
