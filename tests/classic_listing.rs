@@ -131,6 +131,41 @@ fn listing_faces(x: usize, y: usize) -> [([[usize; 2]; 3], [f32; 2]); 2] {
     ]
 }
 
+/// A pixel inside face `corners` of `f` (drawn in `frame` of `w` x `h`):
+/// the point `inside` (fractions of cell (`cx`, `cy`)) on the face's plane,
+/// where `facts` place it.
+fn face_pixel(
+    facts: &SceneFacts,
+    (w, h): (u32, u32),
+    (f, corners): (&Heightfield, [[usize; 2]; 3]),
+    (cx, cy): (usize, usize),
+    inside: [f32; 2],
+) -> (u32, u32) {
+    let g = corners.map(|[x, y]| (x as f32, y as f32, f.get(x, y)));
+    let at = (cx as f32 + inside[0], cy as f32 + inside[1]);
+    let z = plane_height(g, at);
+    let n = (f.size() - 1) as f32;
+    let p = facts.place(at.0 / n, at.1 / n, z);
+    ((p.x * w as f32) as u32, (p.y * h as f32) as u32)
+}
+
+/// The listing's brightness `i` of face `corners` of `f` and its corners'
+/// mean height `az`, both in the listing's own heights: `NormalizeMap`'s,
+/// the highest point at `normal_height` (the look draws them at its relief).
+fn listing_face(
+    listing: &Listing,
+    f: &Heightfield,
+    corners: [[usize; 2]; 3],
+    normal_height: f64,
+) -> (f64, f64) {
+    let highest = f.min_max().1 as f64;
+    let heights = corners.map(|[x, y]| f.get(x, y) as f64 * normal_height / highest);
+    let points: [DVec3; 3] =
+        std::array::from_fn(|k| DVec3::new(corners[k][0] as f64, corners[k][1] as f64, heights[k]));
+    let (_, i) = listing.shade(points);
+    (i, heights.iter().sum::<f64>() / 3.0)
+}
+
 /// Height of the plane through `corners` (grid points, heights) at `at`.
 fn plane_height(corners: [(f32, f32, f32); 3], at: (f32, f32)) -> f32 {
     let [a, b, c] = corners;
@@ -218,19 +253,7 @@ fn a_rendered_face_has_the_listings_brightness_and_split() {
             let [a, b, c] = heights;
             let mean = (a + c + b) / 3.0;
             let want = palette.land(mean, normal, 1.0);
-            let g = corners.map(|[x, y]| (x as f32, y as f32));
-            let at = (cx as f32 + inside[0], cy as f32 + inside[1]);
-            let z = plane_height(
-                [
-                    (g[0].0, g[0].1, a),
-                    (g[1].0, g[1].1, b),
-                    (g[2].0, g[2].1, c),
-                ],
-                at,
-            );
-            let n = (f.size() - 1) as f32;
-            let p = facts.place(at.0 / n, at.1 / n, z);
-            let (px, py) = ((p.x * w as f32) as u32, (p.y * h as f32) as u32);
+            let (px, py) = face_pixel(&facts, (w, h), (&f, corners), (cx, cy), inside);
             let got = frame.get(px, py);
             assert_eq!(
                 got, want,
@@ -383,37 +406,13 @@ fn a_rendered_face_has_the_listings_colour() {
     assert_eq!(frame.get(2, 2), 0, "the window behind the land is black");
     let listing = Listing::new(w as f64);
     let normal_height = 10000.0 * s.height as f64;
-    let highest = f.min_max().1 as f64;
     let mut colours = std::collections::BTreeSet::new();
     for cy in (1..15).step_by(3) {
         for cx in (1..15).step_by(2) {
             for (corners, inside) in listing_faces(cx, cy) {
-                let heights = corners.map(|[x, y]| f.get(x, y));
-                // The listing's own heights: NormalizeMap's, the highest
-                // point at normalHeight; the look draws them at its relief.
-                let points: [DVec3; 3] = std::array::from_fn(|k| {
-                    let [x, y] = corners[k];
-                    let z = heights[k] as f64 * normal_height / highest;
-                    DVec3::new(x as f64, y as f64, z)
-                });
-                let (_, i) = listing.shade(points);
-                let az =
-                    heights.iter().map(|&z| z as f64).sum::<f64>() / 3.0 * normal_height / highest;
+                let (i, az) = listing_face(&listing, &f, corners, normal_height);
                 let want = listing_colour(az, normal_height, i);
-                let g = corners.map(|[x, y]| (x as f32, y as f32));
-                let at = (cx as f32 + inside[0], cy as f32 + inside[1]);
-                let [a, b, c] = heights;
-                let z = plane_height(
-                    [
-                        (g[0].0, g[0].1, a),
-                        (g[1].0, g[1].1, b),
-                        (g[2].0, g[2].1, c),
-                    ],
-                    at,
-                );
-                let n = (f.size() - 1) as f32;
-                let p = facts.place(at.0 / n, at.1 / n, z);
-                let (px, py) = ((p.x * w as f32) as u32, (p.y * h as f32) as u32);
+                let (px, py) = face_pixel(&facts, (w, h), (&f, corners), (cx, cy), inside);
                 let got = frame.get(px, py);
                 assert_eq!(
                     got, want,
@@ -631,21 +630,13 @@ fn a_rendered_mono_face_has_the_listings_pattern() {
     assert_eq!(frame.get(2, 2), 0, "the window behind the land is black");
     let listing = Listing::new(w as f64);
     let normal_height = 10000.0 * s.height as f64;
-    let highest = f.min_max().1 as f64;
     let n = (f.size() - 1) as f32;
     let (mut tiles, mut patterns) = (0, std::collections::BTreeSet::new());
     for cy in 1..15 {
         for cx in 1..15 {
             for (corners, _) in listing_faces(cx, cy) {
                 let heights = corners.map(|[x, y]| f.get(x, y));
-                let points: [DVec3; 3] = std::array::from_fn(|k| {
-                    let [x, y] = corners[k];
-                    let z = heights[k] as f64 * normal_height / highest;
-                    DVec3::new(x as f64, y as f64, z)
-                });
-                let (_, i) = listing.shade(points);
-                let az =
-                    heights.iter().map(|&z| z as f64).sum::<f64>() / 3.0 * normal_height / highest;
+                let (i, az) = listing_face(&listing, &f, corners, normal_height);
                 let want = listing_pattern(az, normal_height, i);
                 let screen: [(f32, f32); 3] = std::array::from_fn(|k| {
                     let [x, y] = corners[k];

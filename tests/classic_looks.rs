@@ -171,12 +171,10 @@ fn fl3s_deviations_are_pseudo_normal_where_ours_are_uniform() {
     );
 }
 
-/// The finest level's horizontal-edge displacements of the square
-/// generator's field under `look` (each point between two others on an
-/// even row, less their mean; not the border's rows, which the essay
-/// leaves undisplaced), drawn on `threads` threads.
-fn square_displacements(look: &str, threads: usize) -> Vec<f64> {
-    let s = with(&[
+/// `look`'s square generator at detail 8 with nothing after it that moves
+/// points (no sea line, erosion, cliffs or lakes): its displacements as made.
+fn bare_square(look: &str) -> Settings {
+    with(&[
         ("look", look),
         ("generator", "square"),
         ("detail", "8"),
@@ -184,7 +182,15 @@ fn square_displacements(look: &str, threads: usize) -> Vec<f64> {
         ("erosion", "0"),
         ("cliffs", "0"),
         ("lakes", "false"),
-    ]);
+    ])
+}
+
+/// The finest level's horizontal-edge displacements of the square
+/// generator's field under `look` (each point between two others on an
+/// even row, less their mean; not the border's rows, which the essay
+/// leaves undisplaced), drawn on `threads` threads.
+fn square_displacements(look: &str, threads: usize) -> Vec<f64> {
+    let s = bare_square(look);
     let f = terrain::generate_with_threads(&s, 11, threads);
     let n = f.size();
     let mut d = Vec::new();
@@ -242,15 +248,7 @@ fn the_essays_deviations_are_the_cosine_of_a_random_half_turn() {
 /// generator's centres (from their four corners' mean) and of its edge
 /// midpoints (from their two ends' mean), under `look`.
 fn centre_and_edge_rms(look: &str) -> (f64, f64) {
-    let s = with(&[
-        ("look", look),
-        ("generator", "square"),
-        ("detail", "8"),
-        ("water_line", "generator"),
-        ("erosion", "0"),
-        ("cliffs", "0"),
-        ("lakes", "false"),
-    ]);
+    let s = bare_square(look);
     let f = terrain::generate(&s, 11);
     let n = f.size();
     let h = |x: usize, y: usize| f64::from(f.get(x, y));
