@@ -159,11 +159,10 @@ pub(crate) struct Scene<'a> {
     /// Whether the field's lakes are drawn (the filled looks; Sonar and
     /// Outline draw the ground's mesh).
     lakes: bool,
-    /// Whether the field has points outside the land (NaN: the essay's
-    /// turned square), whose cells are left undrawn.
-    pub holes: bool,
-    /// The essay's square before it was turned, and the turn: where a cell
-    /// on the land's edge is cut along the square's side (order/cut.rs).
+    /// The essay's square before it was turned, and the turn, when the
+    /// field has points outside the land (NaN: the square turned): cells
+    /// wholly outside are left undrawn, one on the land's edge is cut along
+    /// the square's side (order/cut.rs).
     pub outline: Option<Outline<'a>>,
     /// Under the classic light, the shear of the parallelogram the oblique
     /// view draws (grid steps left per row forward; 0 otherwise): seed
@@ -191,11 +190,10 @@ impl<'a> Scene<'a> {
     pub(crate) fn new(field: FieldRef<'a>, settings: &Settings, width: u32, height: u32) -> Self {
         let style = Style::of(settings.color);
         let mut field = turned(field, settings.rotation);
-        let holes = settings.look == Look::Essay;
         // The essay's square, before it is turned, for its camera.
         let mut square = None;
         let mut outline = None;
-        if holes {
+        if settings.look == Look::Essay {
             square = Some(easel::Square::of(&field));
             let degrees = turn::essay_degrees(field.identity());
             outline = Some(Outline {
@@ -310,7 +308,6 @@ impl<'a> Scene<'a> {
             row_top,
             rows,
             lakes,
-            holes,
             outline,
             normal_shear,
             listing_diagonal,
@@ -319,6 +316,13 @@ impl<'a> Scene<'a> {
             sees_right,
             sees_front,
         }
+    }
+
+    /// Whether the field has points outside the land (see
+    /// [`Scene::outline`]).
+    #[inline]
+    pub(crate) fn holes(&self) -> bool {
+        self.outline.is_some()
     }
 
     /// Cells per row.

@@ -57,7 +57,7 @@ impl Scene<'_> {
             if !self.may_touch(canvas.clip(), [tl.0, tr.0, bl.0, br.0], sonar) {
                 continue;
             }
-            if self.holes && [tl.0, tr.0, bl.0, br.0].iter().any(|v| v.off) {
+            if self.holes() && [tl.0, tr.0, bl.0, br.0].iter().any(|v| v.off) {
                 continue;
             }
             let own = self.owned_edges(s, x);

@@ -148,7 +148,7 @@ impl Scene<'_> {
         let (top, bottom) = (&rows.top, &rows.bottom);
         let v = [&top[x], &top[x + 1], &bottom[x], &bottom[x + 1]];
         // A cell wholly outside the land (the essay's turned square).
-        if self.holes && v.iter().all(|v| v.off) {
+        if self.holes() && v.iter().all(|v| v.off) {
             return;
         }
         // A cell crossing the water line puts its shore points on the
@@ -156,7 +156,7 @@ impl Scene<'_> {
         let crosses = v.iter().any(|v| v.h < v.w) && v.iter().any(|v| v.h > v.w);
         // A cell on the land's edge is cut along the square's side, whose
         // corners may lie outside its own corners' box.
-        let cut = self.holes && v.iter().any(|v| v.off);
+        let cut = self.holes() && v.iter().any(|v| v.off);
         let corners = [top[x].p, top[x + 1].p, bottom[x].p, bottom[x + 1].p];
         if !crosses && !cut {
             match centre_box(corners, canvas.clip()) {
