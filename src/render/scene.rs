@@ -216,21 +216,19 @@ impl<'a> Scene<'a> {
         let shaded = style.is_filled();
         let wants_sky = style == Style::Shaded && !lighting.classic;
         let light = lighting.sun;
-        // The shadow sweep is the long one: the palette's tables, the sky's
-        // sweep and the view run beside it.
-        let ((palette, skylight, row_top, view, rows), shadow) = std::thread::scope(|s| {
+        // Three parts of about equal length (1080p: the shadow sweep 2.3 ms,
+        // the sky's sweeps 1.6 ms, the palette's tables and the view 2.7
+        // ms), each on a thread: this start is the frame's serial part.
+        let ((palette, row_top, view, rows), skylight, shadow) = std::thread::scope(|s| {
             let others = s.spawn(|| {
                 let palette = Palette::lit_by(settings, &field, lighting);
-                let skylight = wants_sky.then(|| SkyLight::new(&field));
                 let (row_top, view, rows) =
                     framed(&field, settings, (shaded, square), width, height);
-                (palette, skylight, row_top, view, rows)
+                (palette, row_top, view, rows)
             });
+            let skylight = s.spawn(|| wants_sky.then(|| SkyLight::new(&field)));
             let shadow = (shaded && settings.shadows).then(|| shadow::cast(&field, light));
-            let others = others
-                .join()
-                .unwrap_or_else(|p| std::panic::resume_unwind(p));
-            (others, shadow)
+            (joined(others), joined(skylight), shadow)
         });
         let size = field.size();
         let sky = backdrop(&palette, &view, style, height);
@@ -503,6 +501,13 @@ impl<'a> Scene<'a> {
         }
         (lo.floor() as i64 - 1, hi.ceil() as i64 + 1)
     }
+}
+
+/// What a scoped thread returned; its panic goes on up.
+fn joined<T>(thread: std::thread::ScopedJoinHandle<'_, T>) -> T {
+    thread
+        .join()
+        .unwrap_or_else(|p| std::panic::resume_unwind(p))
 }
 
 /// The highest point of each row (at least sea level), the view fitted to

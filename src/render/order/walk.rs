@@ -109,6 +109,13 @@ pub(crate) fn draw_strips(
         {
             return;
         }
+        let cells = match canvas.keeps_first() {
+            true => scene.cells_showing(s, canvas, cells),
+            false => cells,
+        };
+        if cells.is_empty() {
+            return;
+        }
         rows.load(scene, s, cells.start..(cells.end + 1).min(n));
         let (top, bottom) = (&mut rows.top[..], &mut rows.bottom[..]);
         match scene.style {
