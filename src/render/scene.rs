@@ -77,6 +77,8 @@ pub(crate) struct Vert {
     pub colour: u32,
     /// Whether `lit`, `sky` and `haze` are worked out (see [`Scene::shade`]).
     pub shaded: bool,
+    /// Whether `colour` is worked out (see [`Scene::shade`]).
+    pub coloured: bool,
     /// Outside the land (the essay's turned square): cells touching it are
     /// not drawn.
     pub off: bool,
@@ -389,24 +391,35 @@ impl<'a> Scene<'a> {
         }
     }
 
-    /// Works out the light of point `x` of grid row `y`, once.
+    /// Works out the light of point `x` of grid row `y`, once, and if
+    /// `coloured` (a land face may touch the point) its colour under
+    /// smooth shading: water faces need only the light, and a point with
+    /// water all round it is never coloured (at 1080p 42% of the shaded
+    /// points of seed 42, 34-64% of those of seeds 1, 2, 3 and 5).
     #[inline(always)]
-    pub(crate) fn shade(&self, v: &mut Vert, x: usize, y: usize) {
+    pub(crate) fn shade(&self, v: &mut Vert, x: usize, y: usize, coloured: bool) {
         if !v.shaded {
             self.shade_now(v, x, y);
         }
+        if coloured && self.smooth && !v.coloured {
+            self.colour_now(v, x, y);
+        }
     }
 
-    /// [`Scene::shade`]'s work, apart so that the check inlines.
+    /// [`Scene::shade`]'s light, apart so that the check inlines.
     #[inline(never)]
     fn shade_now(&self, v: &mut Vert, x: usize, y: usize) {
-        let ground = v.h.max(v.w);
         (v.lit, v.sky) = self.light_at(x, y);
-        v.haze = self.haze_at(x as f32, y as f32, ground);
-        if self.smooth {
-            v.colour = self.hazed(self.land_at(x, y, ground, v.lit, v.sky), v.haze);
-        }
+        v.haze = self.haze_at(x as f32, y as f32, v.h.max(v.w));
         v.shaded = true;
+    }
+
+    /// [`Scene::shade`]'s colour, once the point's light is worked out.
+    #[inline(never)]
+    fn colour_now(&self, v: &mut Vert, x: usize, y: usize) {
+        let ground = v.h.max(v.w);
+        v.colour = self.hazed(self.land_at(x, y, ground, v.lit, v.sky), v.haze);
+        v.coloured = true;
     }
 
     /// The direct light and the share of the sky reaching grid point (`x`, `y`).

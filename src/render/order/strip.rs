@@ -77,12 +77,13 @@ struct StripRows<'r> {
 
 impl StripRows<'_> {
     /// The corners at column `x` of the back and the front row, their
-    /// points shaded first (each once).
+    /// points shaded first (each once), and coloured if `coloured` (see
+    /// [`Scene::shade`]).
     #[inline(always)]
-    fn column(&mut self, scene: &Scene, x: usize) -> [Corner; 2] {
+    fn column(&mut self, scene: &Scene, x: usize, coloured: bool) -> [Corner; 2] {
         let [y0, y1] = self.y;
-        scene.shade(&mut self.top[x], x, y0);
-        scene.shade(&mut self.bottom[x], x, y1);
+        scene.shade(&mut self.top[x], x, y0, coloured);
+        scene.shade(&mut self.bottom[x], x, y1, coloured);
         [
             Corner::at(x, y0, &self.top[x]),
             Corner::at(x, y1, &self.bottom[x]),
@@ -119,13 +120,13 @@ impl Scene<'_> {
                 self.fill_cell(c, &mut rows, x, false)
             }),
             2 if self.sees_right && cells.end == last => {
-                let [a, b] = rows.column(self, last);
+                let [a, b] = rows.column(self, last, false);
                 self.fill_skirt(canvas, a, b, Vec3::X);
             }
             3 if self.sees_front && s + 1 == self.strips() => {
                 painter_order(canvas, cells.clone(), |canvas, x| {
-                    let [_, a] = rows.column(self, x);
-                    let [_, b] = rows.column(self, x + 1);
+                    let [_, a] = rows.column(self, x, false);
+                    let [_, b] = rows.column(self, x + 1, false);
                     self.fill_skirt(canvas, a, b, Vec3::NEG_Y);
                 });
             }
@@ -164,8 +165,11 @@ impl Scene<'_> {
                 _ => return,
             }
         }
-        let [tl, bl] = rows.column(self, x);
-        let [tr, br] = rows.column(self, x + 1);
+        // Each corner at or under its water: every face is water, which
+        // needs no corner colours.
+        let land = !v.iter().all(|v| v.h <= v.w);
+        let [tl, bl] = rows.column(self, x, land);
+        let [tr, br] = rows.column(self, x + 1, land);
         let [far, near] = match self.eye {
             Some(eye) => split_by_heights(eye, [&tl, &tr, &bl, &br]),
             None if rightward && !self.listing_diagonal => [[&tl, &tr, &bl], [&tr, &br, &bl]],
