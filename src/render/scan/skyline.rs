@@ -19,7 +19,7 @@
 use crate::render::damage::Damage;
 use crate::render::frame::{Frame, Rect};
 use crate::render::shade::colour::blend_packed;
-use crate::render::shade::sky::Sky;
+use crate::render::shade::sky::{Sky, SkySeen};
 
 use super::horizon::{Edge, SAMPLES};
 
@@ -47,7 +47,8 @@ impl Run {
 /// edge is taken as it is (a straight sea horizon or a peak narrower than
 /// a pixel has no staircase to tell its height by).
 pub(crate) fn smooth(frame: &mut Frame, sky: &Sky, exact: &[Option<Edge>]) -> (Damage, Vec<u32>) {
-    let tops = land_tops(frame, sky, exact);
+    let mut seen = SkySeen::default();
+    let tops = land_tops(frame, sky, exact, &mut seen);
     let runs = runs_of(&tops, frame.height());
     let exact: Vec<Option<Edge>> = (0..tops.len())
         .map(|x| {
@@ -76,7 +77,7 @@ pub(crate) fn smooth(frame: &mut Frame, sky: &Sky, exact: &[Option<Edge>]) -> (D
                 },
                 |e| e.samples,
             );
-            if let Some(rows) = mix_column(frame, sky, x, run.top, &edge) {
+            if let Some(rows) = mix_column(frame, (sky, &mut seen), x, run.top, &edge) {
                 damage.add(Rect {
                     x0: x,
                     y0: rows.0,
@@ -147,12 +148,15 @@ fn edge_in(middles: &[f32], level: &[bool], x: usize, at: f32) -> f32 {
 /// (a pixel is land when its centre is covered), which its first pixel,
 /// checked to be the sky, confirms; elsewhere it starts at the top. A sky
 /// with weather costs a lot a pixel to tell.
-fn land_tops(frame: &Frame, sky: &Sky, exact: &[Option<Edge>]) -> Vec<u32> {
+fn land_tops<'s>(
+    frame: &Frame,
+    sky: &'s Sky,
+    exact: &[Option<Edge>],
+    seen: &mut SkySeen<'s>,
+) -> Vec<u32> {
     let (w, h) = (frame.width() as usize, frame.height());
     let pixels = frame.pixels();
-    let mut cache = None;
-    let mut shows =
-        |x: usize, y: u32| sky.shows(pixels[y as usize * w + x], x as u32, y, &mut cache);
+    let mut shows = |x: usize, y: u32| sky.shows(pixels[y as usize * w + x], x as u32, y, seen);
     let mut tops = vec![h; w];
     let mut from_top = Vec::new();
     for (x, top) in tops.iter_mut().enumerate() {
@@ -229,9 +233,9 @@ fn edge_at(run: &Run, left: Option<&Run>, right: Option<&Run>, x: f32) -> f32 {
 /// Mixes column `x` where the edge (its height at each sample across the
 /// column) cuts pixels; `top` is the column's first row of land. Returns
 /// the rows changed, if any.
-fn mix_column(
+fn mix_column<'s>(
     frame: &mut Frame,
-    sky: &Sky,
+    (sky, seen): (&'s Sky, &mut SkySeen<'s>),
     x: u32,
     top: u32,
     edge: &[f32; SAMPLES],
@@ -250,7 +254,11 @@ fn mix_column(
             .sum::<f32>()
             / SAMPLES as f32;
         let own = if y >= top { frame.get(x, y) } else { land };
-        let mixed = blend_packed(sky.colour(x, y), own, (cover * 256.0 + 0.5) as u32);
+        let mixed = blend_packed(
+            sky.colour_seen(x, y, seen),
+            own,
+            (cover * 256.0 + 0.5) as u32,
+        );
         if mixed != frame.get(x, y) {
             frame.set(x, y, mixed);
             let (a, _) = changed.get_or_insert((y, y + 1));

@@ -3,6 +3,7 @@
 //! slow gradient across a large screen shows no bands; in the looks with
 //! depth, the weather in it too (the sun's glow and cloud, [`Weather`]).
 
+use std::collections::HashMap;
 use std::sync::Arc;
 
 use super::colour::{Rgb, unpack};
@@ -14,6 +15,17 @@ const BAYER: [[u8; 4]; 4] = [[0, 8, 2, 10], [12, 4, 14, 6], [3, 11, 1, 9], [15, 
 /// How the blend to the horizon colour speeds up towards the horizon
 /// (1 = linear; above 1 keeps the upper sky deep and brightens near the land).
 const HORIZON_CURVE: f32 = 1.6;
+
+/// What [`Sky::colour_seen`] keeps of the pixels it has looked at.
+#[derive(Default)]
+pub(crate) struct SkySeen<'s> {
+    /// Without weather: the last row and its four colours.
+    phases: Option<(u32, [u32; 4])>,
+    /// With weather: each row's gradient colour and weather, and each
+    /// anchor (row, anchor).
+    rows: HashMap<u32, (Rgb, WeatherRow<'s>)>,
+    anchors: HashMap<(u32, u32), Rgb>,
+}
 
 /// The background of one frame.
 #[derive(Debug, Clone)]
@@ -100,33 +112,46 @@ impl Sky {
     }
 
     /// The packed colour [`Sky::paint`] gives pixel (`x`, `y`).
+    #[cfg(test)]
     pub(crate) fn colour(&self, x: u32, y: u32) -> u32 {
-        match &self.weather {
-            Some(w) => {
-                let (g, row) = (self.gradient(y as f32 + 0.5), w.row(y as f32 + 0.5));
-                let k = x / STEP;
-                between(anchor(&row, g, k), anchor(&row, g, k + 1), x, y)
-            }
-            None => self.row_colours(y)[(x & 3) as usize],
-        }
+        self.colour_seen(x, y, &mut SkySeen::default())
     }
 
     /// Whether pixel (`x`, `y`) of a frame holds the sky as painted.
-    /// Without weather a row's four colours are worked out once for the
-    /// whole row (`row` caches them).
-    pub(crate) fn shows(&self, px: u32, x: u32, y: u32, row: &mut Option<(u32, [u32; 4])>) -> bool {
-        if self.weather.is_some() {
-            return px == self.colour(x, y);
-        }
-        let phases = match row {
-            Some((at, phases)) if *at == y => *phases,
-            _ => {
-                let phases = self.row_colours(y);
-                *row = Some((y, phases));
-                phases
-            }
+    pub(crate) fn shows<'s>(&'s self, px: u32, x: u32, y: u32, seen: &mut SkySeen<'s>) -> bool {
+        px == self.colour_seen(x, y, seen)
+    }
+
+    /// The packed colour [`Sky::paint`] gives pixel (`x`, `y`), keeping in `seen` what the pixels looked at next
+    /// will need again: a row's four colours without weather; with
+    /// weather, each row's weather and each anchor (the skyline pass asks
+    /// for a few pixels down each column, whose anchors and rows the
+    /// columns beside share: worked out afresh each time, they were most
+    /// of that pass on a cloudy 1080p slide).
+    pub(crate) fn colour_seen<'s>(&'s self, x: u32, y: u32, seen: &mut SkySeen<'s>) -> u32 {
+        let Some(w) = &self.weather else {
+            let phases = match seen.phases {
+                Some((at, phases)) if at == y => phases,
+                _ => {
+                    let phases = self.row_colours(y);
+                    seen.phases = Some((y, phases));
+                    phases
+                }
+            };
+            return phases[(x & 3) as usize];
         };
-        px == phases[(x & 3) as usize]
+        let (g, row) = seen
+            .rows
+            .entry(y)
+            .or_insert_with(|| (self.gradient(y as f32 + 0.5), w.row(y as f32 + 0.5)));
+        let k = x / STEP;
+        let mut at = |k: u32| {
+            *seen
+                .anchors
+                .entry((y, k))
+                .or_insert_with(|| anchor(row, *g, k))
+        };
+        between(at(k), at(k + 1), x, y)
     }
 
     /// The sky's colour seen at screen point (`x`, `y`), which may lie
