@@ -5,6 +5,7 @@
 use glam::Vec4;
 
 use super::raster::{Fixed2, SUBPIXEL};
+use crate::render::shade::colour::{lanes, packed_lanes};
 
 /// The colour planes of one triangle, each channel (blue, green, red,
 /// 0..=255: a packed colour's bytes in memory order) a lane of a vector: a
@@ -45,7 +46,7 @@ impl Blend {
         ];
         let det = e1[0] * e2[1] - e2[0] * e1[1];
         let inv = if det != 0.0 { 1.0 / det } else { 0.0 };
-        let [c0, c1, c2] = colours.map(channels);
+        let [c0, c1, c2] = colours.map(lanes);
         let (d1, d2) = (c1 - c0, c2 - c0);
         Blend {
             at0: c0,
@@ -69,46 +70,7 @@ impl Blend {
     pub(crate) fn at(&self, row: &RowStart, x: u32) -> u32 {
         let ox = x as f32 + 0.5 - self.origin[0];
         // +0.5 rounds.
-        packed((*row + self.dx * ox).max(self.lo).min(self.hi) + 0.5)
-    }
-}
-
-/// A packed colour's channels, 0..=255, in the lanes [`packed`] reads
-/// (blue, green, red; the fourth lane 0).
-#[inline]
-fn channels(c: u32) -> Vec4 {
-    Vec4::new(
-        (c & 0xff) as f32,
-        ((c >> 8) & 0xff) as f32,
-        ((c >> 16) & 0xff) as f32,
-        0.0,
-    )
-}
-
-/// Lanes blue, green, red (0.0..256.0, truncated; a NaN lane gives 0)
-/// packed `0x00RRGGBB`. On x86-64 the lanes are converted and narrowed
-/// together: glam converts a lane at a time, which was a fifth of the
-/// smooth-shaded pixel's cost.
-#[inline(always)]
-fn packed(c: Vec4) -> u32 {
-    #[cfg(target_arch = "x86_64")]
-    {
-        use std::arch::x86_64::{
-            _mm_cvtsi128_si32, _mm_cvttps_epi32, _mm_packs_epi32, _mm_packus_epi16,
-        };
-        // SAFETY: SSE2 is part of x86-64 itself, so these instructions
-        // exist on every machine the build runs on. NaN converts to
-        // i32::MIN, which the saturating narrowing takes to 0.
-        unsafe {
-            let lanes = _mm_cvttps_epi32(c.into());
-            let words = _mm_packs_epi32(lanes, lanes);
-            _mm_cvtsi128_si32(_mm_packus_epi16(words, words)) as u32
-        }
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        let c = c.as_uvec4();
-        c.z << 16 | c.y << 8 | c.x
+        packed_lanes((*row + self.dx * ox).max(self.lo).min(self.hi) + 0.5)
     }
 }
 
@@ -138,7 +100,7 @@ mod tests {
         let b = Blend::new(v, [0x102030, 0x203040, 0x304050]);
         for x in 0..100 {
             let c = b.at(&b.row(0), x);
-            let ch = channels(c);
+            let ch = lanes(c);
             assert!((16.0..=48.0).contains(&ch.z), "{c:06x}");
             assert!((48.0..=80.0).contains(&ch.x), "{c:06x}");
         }
