@@ -8,6 +8,7 @@
 //! walks and projects only those (`Scene::cells_reaching`).
 
 use std::sync::Mutex;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use super::walk::{Rows, draw_strips};
 use crate::render::frame::Frame;
@@ -93,27 +94,16 @@ impl<'f> Columns<'f> {
 
 /// Draws the sky and every strip of `scene` into `frame`, on all cores.
 pub(crate) fn render(scene: &Scene, frame: &mut Frame) {
-    if !scene.clean_edges {
-        draw_bands(scene, frame);
-        return;
-    }
-    // The horizon needs only the scene: it is swept while the bands draw.
-    let width = frame.width();
-    let horizon = std::thread::scope(|s| {
-        let sweep = s.spawn(|| Horizon::sweep(scene, width));
-        draw_bands(scene, frame);
-        sweep.join()
-    });
-    match horizon {
-        Ok(horizon) => {
-            clean_edges(scene, &horizon, frame);
-        }
-        Err(panic) => std::panic::resume_unwind(panic),
+    if let Some(horizon) = draw_bands(scene, frame, scene.clean_edges) {
+        clean_edges(scene, &horizon, frame);
     }
 }
 
-/// [`render`]'s drawing, the edges left as drawn.
-fn draw_bands(scene: &Scene, frame: &mut Frame) {
+/// [`render`]'s drawing, the edges left as drawn; and if `sweep`, the
+/// horizon, swept by the first thread to start while the others take the
+/// bands. (On a thread of its own beside a thread per core, the sweep had
+/// three threads share two cores.)
+fn draw_bands(scene: &Scene, frame: &mut Frame, sweep: bool) -> Option<Horizon> {
     let width = frame.width();
     let threads = std::thread::available_parallelism()
         .map_or(1, |n| n.get())
@@ -127,10 +117,18 @@ fn draw_bands(scene: &Scene, frame: &mut Frame) {
             &mut Rows::new(),
             width,
         );
-        return;
+        return sweep.then(|| Horizon::sweep(scene, width));
     }
     let queue = Mutex::new(Columns::new(frame, threads));
+    let to_sweep = AtomicBool::new(sweep);
+    let swept = Mutex::new(None);
     let work = || {
+        if to_sweep.swap(false, Ordering::Relaxed) {
+            let horizon = Horizon::sweep(scene, width);
+            if let Ok(mut swept) = swept.lock() {
+                *swept = Some(horizon);
+            }
+        }
         let mut rows = Rows::new();
         loop {
             // The lock is held only to take the next band.
@@ -147,6 +145,7 @@ fn draw_bands(scene: &Scene, frame: &mut Frame) {
         }
         work();
     });
+    swept.into_inner().ok().flatten()
 }
 
 /// `canvas` made ready for `scene`: filled faces are drawn front to back
