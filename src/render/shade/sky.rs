@@ -24,7 +24,7 @@ pub(crate) struct SkySeen<'s> {
     /// Without weather: the last row and its four colours.
     phases: Option<(u32, [u32; 4])>,
     /// With weather: each row's gradient colour and weather, and each
-    /// anchor (row, anchor).
+    /// anchor (row, anchor), as lanes.
     rows: HashMap<u32, (Rgb, WeatherRow<'s>)>,
     anchors: HashMap<(u32, u32), Vec4>,
 }
@@ -83,35 +83,17 @@ impl Sky {
         let end = canvas.all_written_from();
         if let Some(w) = &self.weather {
             // Only where the land left the sky showing: the weather costs.
-            let k0 = x0 / STEP;
-            let n = ((x1.max(x0 + 1) - 1) / STEP + 2 - k0) as usize;
-            let mut rows: [Option<AnchorRow>; 2] = [None, None];
-            let mut blended = Vec::with_capacity(n);
+            let mut anchors = Vec::new();
             for y in clip.y0 as u32..end as u32 {
-                let r0 = y - y % ROWS;
-                if rows[0].as_ref().is_none_or(|r| r.y != r0) {
-                    rows = match rows {
-                        [_, Some(next)] if next.y == r0 => [Some(next), None],
-                        _ => [Some(AnchorRow::new(self, w, r0, n)), None],
-                    };
-                }
-                if y != r0 && rows[1].is_none() {
-                    rows[1] = Some(AnchorRow::new(self, w, r0 + ROWS, n));
-                }
+                let (g, row) = (self.gradient(y as f32 + 0.5), w.row(y as f32 + 0.5));
                 let dither = dither_row(y);
                 for (a, b) in canvas.open_runs(y) {
-                    let first = (a / STEP - k0) as usize;
-                    let ks = first..=((b - 1) / STEP + 1 - k0) as usize;
-                    blended.clear();
-                    for k in ks {
-                        let [upper, lower] = rows.each_mut();
-                        let upper = upper.as_mut().map_or(Vec4::ZERO, |r| r.at(k, k0));
-                        let lower = lower.as_mut().map_or(upper, |r| r.at(k, k0));
-                        blended.push(between_rows(upper, lower, y));
-                    }
+                    let first = a / STEP;
+                    anchors.clear();
+                    anchors.extend((first..=(b - 1) / STEP + 1).map(|k| anchor(&row, g, k)));
                     canvas.fill_with(y, a, b, |x| {
-                        let k = (x / STEP - k0) as usize - first;
-                        pixel(blended[k], blended[k + 1], x, dither)
+                        let k = (x / STEP - first) as usize;
+                        pixel(anchors[k], anchors[k + 1], x, dither)
                     });
                 }
             }
@@ -161,24 +143,18 @@ impl Sky {
             };
             return phases[(x & 3) as usize];
         };
-        let r0 = y - y % ROWS;
-        let r1 = if y == r0 { r0 } else { r0 + ROWS };
-        let mut at = |r: u32, k: u32| {
-            if let Some(&c) = seen.anchors.get(&(r, k)) {
-                return c;
-            }
-            let (g, row) = seen
-                .rows
-                .entry(r)
-                .or_insert_with(|| (self.gradient(r as f32 + 0.5), w.row(r as f32 + 0.5)));
-            let c = anchor(row, *g, k);
-            seen.anchors.insert((r, k), c);
-            c
-        };
+        let (g, row) = seen
+            .rows
+            .entry(y)
+            .or_insert_with(|| (self.gradient(y as f32 + 0.5), w.row(y as f32 + 0.5)));
         let k = x / STEP;
-        let left = between_rows(at(r0, k), at(r1, k), y);
-        let right = between_rows(at(r0, k + 1), at(r1, k + 1), y);
-        pixel(left, right, x, dither_row(y))
+        let mut at = |k: u32| {
+            *seen
+                .anchors
+                .entry((y, k))
+                .or_insert_with(|| anchor(row, *g, k))
+        };
+        pixel(at(k), at(k + 1), x, dither_row(y))
     }
 
     /// The sky's colour seen at screen point (`x`, `y`), which may lie
@@ -228,56 +204,12 @@ impl Sky {
 /// the pixels between are blended (glow and cloud change little over a few
 /// pixels, and the noise is most of a sky pixel's cost).
 const STEP: u32 = 4;
-/// Rows between the rows where the weather is worked out: the rows between
-/// are blended from the anchors above and below. Two halve the weather's
-/// cost (11.5 of 96 ms of a default 1080p frame's work on a cloudy slide)
-/// and soften only what a row's own sample aliased: near the horizon line
-/// the finest clouds are a few rows tall.
-const ROWS: u32 = 2;
-
-/// One anchor row's weather, its anchors worked out as the runs of sky
-/// along the rows it serves ask for them.
-struct AnchorRow<'s> {
-    y: u32,
-    gradient: Rgb,
-    weather: WeatherRow<'s>,
-    /// Anchors from the band's first on, as [`anchor`] gives them;
-    /// `None` until worked out.
-    anchors: Vec<Option<Vec4>>,
-}
-
-impl<'s> AnchorRow<'s> {
-    /// Anchor row `y` of `sky` under `weather`, `n` anchors wide.
-    fn new(sky: &Sky, weather: &'s Weather, y: u32, n: usize) -> Self {
-        AnchorRow {
-            y,
-            gradient: sky.gradient(y as f32 + 0.5),
-            weather: weather.row(y as f32 + 0.5),
-            anchors: vec![None; n],
-        }
-    }
-
-    /// Anchor `i` counted from the band's first, anchor `k0`.
-    #[inline]
-    fn at(&mut self, i: usize, k0: u32) -> Vec4 {
-        *self.anchors[i].get_or_insert_with(|| anchor(&self.weather, self.gradient, k0 + i as u32))
-    }
-}
-
 /// The weather of `row` over gradient colour `g` at the centre of column
 /// `k * STEP`, as lanes (blue, green, red, 0; 0..=1).
 #[inline]
 fn anchor(row: &WeatherRow, g: Rgb, k: u32) -> Vec4 {
     let c = row.over(g, (k * STEP) as f32 + 0.5);
     Vec4::new(c[2], c[1], c[0], 0.0)
-}
-
-/// The anchor for row `y` from those of the anchor rows above it
-/// (`upper`) and below it (`lower`; the same on an anchor row).
-#[inline]
-fn between_rows(upper: Vec4, lower: Vec4, y: u32) -> Vec4 {
-    let t = (y % ROWS) as f32 * (1.0 / ROWS as f32);
-    upper + (lower - upper) * t
 }
 
 /// Pixel `x` of a row whose dither steps are `dither`, blended from the
