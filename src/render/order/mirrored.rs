@@ -56,7 +56,7 @@ impl Scene<'_> {
     fn mirrored_land(&self, p: Vec2, h: f32, level: f32) -> u32 {
         let last = self.cells() as f32;
         let (x, y) = (p.x.round().clamp(0.0, last), p.y.round().clamp(0.0, last));
-        let land = self.land_point(x as usize, y as usize);
+        let land = self.land_point(x as i32 as usize, y as i32 as usize);
         self.hazed(land, self.haze_at(p.x, p.y, 2.0 * level - h))
     }
 

@@ -3,7 +3,6 @@
 //! slow gradient across a large screen shows no bands; in the looks with
 //! depth, the weather in it too (the sun's glow and cloud, [`Weather`]).
 
-use std::collections::HashMap;
 use std::sync::Arc;
 
 use glam::Vec4;
@@ -18,16 +17,25 @@ const BAYER: [[u8; 4]; 4] = [[0, 8, 2, 10], [12, 4, 14, 6], [3, 11, 1, 9], [15, 
 /// (1 = linear; above 1 keeps the upper sky deep and brightens near the land).
 const HORIZON_CURVE: f32 = 1.6;
 
-/// What [`Sky::colour_seen`] keeps of the pixels it has looked at.
+/// What [`Sky::colour_seen`] keeps of the pixels it has looked at: a few
+/// kilobytes, whatever the frame (kept in full, the anchors of a 4K
+/// frame's skyline took megabytes of a slide show's peak).
 #[derive(Default)]
 pub(crate) struct SkySeen<'s> {
     /// Without weather: the last row and its four colours.
     phases: Option<(u32, [u32; 4])>,
-    /// With weather: each row's gradient colour and weather, and each
-    /// anchor (row, anchor), as lanes.
-    rows: HashMap<u32, (Rgb, WeatherRow<'s>)>,
-    anchors: HashMap<(u32, u32), Vec4>,
+    /// With weather: rows' gradient colours and weather, a slot each by
+    /// the row's low bits, and anchors as lanes, a slot each by row and
+    /// anchor; a slot keeps the last one put there.
+    rows: Vec<Option<(u32, Rgb, WeatherRow<'s>)>>,
+    anchors: Vec<Option<((u32, u32), Vec4)>>,
 }
+
+/// Slots of [`SkySeen`]'s rows and anchors (powers of two): the skyline
+/// pass looks down one column after another, so what it needs again lies
+/// a few rows and anchors away.
+const SEEN_ROWS: usize = 64;
+const SEEN_ANCHORS: usize = 1024;
 
 /// The background of one frame.
 #[derive(Debug, Clone)]
@@ -143,17 +151,30 @@ impl Sky {
             };
             return phases[(x & 3) as usize];
         };
-        let (g, row) = seen
-            .rows
-            .entry(y)
-            .or_insert_with(|| (self.gradient(y as f32 + 0.5), w.row(y as f32 + 0.5)));
-        let k = x / STEP;
-        let mut at = |k: u32| {
-            *seen
-                .anchors
-                .entry((y, k))
-                .or_insert_with(|| anchor(row, *g, k))
+        if seen.rows.is_empty() {
+            seen.rows.resize_with(SEEN_ROWS, || None);
+            seen.anchors.resize(SEEN_ANCHORS, None);
+        }
+        let slot = y as usize & (SEEN_ROWS - 1);
+        if seen.rows[slot].as_ref().is_none_or(|(at, ..)| *at != y) {
+            let (g, row) = (self.gradient(y as f32 + 0.5), w.row(y as f32 + 0.5));
+            seen.rows[slot] = Some((y, g, row));
+        }
+        let Some((_, g, row)) = &seen.rows[slot] else {
+            unreachable!("the row's slot was just filled");
         };
+        let mut at = |k: u32| {
+            let i = (y as usize * 31 + k as usize) & (SEEN_ANCHORS - 1);
+            match seen.anchors[i] {
+                Some((key, c)) if key == (y, k) => c,
+                _ => {
+                    let c = anchor(row, *g, k);
+                    seen.anchors[i] = Some(((y, k), c));
+                    c
+                }
+            }
+        };
+        let k = x / STEP;
         pixel(at(k), at(k + 1), x, dither_row(y))
     }
 
