@@ -218,9 +218,9 @@ impl<'a> Scene<'a> {
         let shaded = style.is_filled();
         let wants_sky = style == Style::Shaded && !lighting.classic;
         let light = lighting.sun;
-        // Three parts of about equal length (1080p: the shadow sweep 2.3 ms,
-        // the sky's sweeps 1.6 ms, the palette's tables and the view 2.7
-        // ms), each on a thread: this start is the frame's serial part.
+        // Three parts, each on a thread (1080p: the shadow sweep 2.3 ms, the
+        // sky's sweeps 1.6 ms, the palette's tables and the view's fit
+        // about 1.2 ms): this start is the frame's serial part.
         let ((palette, row_top, view, rows), skylight, shadow) = std::thread::scope(|s| {
             let others = s.spawn(|| {
                 let palette = Palette::lit_by(settings, &field, lighting);

@@ -80,7 +80,8 @@ pub(crate) fn lanes(c: u32) -> Vec4 {
 }
 
 /// Lanes blue, green, red (each in 0.0..256.0, truncated; a NaN lane
-/// gives 0) packed `0x00RRGGBB`. On x86-64 the lanes are converted and
+/// gives 0; callers clamp, as a lane of 2^31 or more would pack as 0)
+/// packed `0x00RRGGBB`. On x86-64 the lanes are converted and
 /// narrowed together: a channel at a time, the conversion (which Rust
 /// saturates) was a fifth of a smooth-shaded pixel's cost and a third of
 /// mixing two colours.

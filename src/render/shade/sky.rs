@@ -133,12 +133,12 @@ impl Sky {
         px == self.colour_seen(x, y, seen)
     }
 
-    /// The packed colour [`Sky::paint`] gives pixel (`x`, `y`), keeping in `seen` what the pixels looked at next
-    /// will need again: a row's four colours without weather; with
-    /// weather, each row's weather and each anchor (the skyline pass asks
-    /// for a few pixels down each column, whose anchors and rows the
-    /// columns beside share: worked out afresh each time, they were most
-    /// of that pass on a cloudy 1080p slide).
+    /// The packed colour [`Sky::paint`] gives pixel (`x`, `y`), keeping in
+    /// `seen` what the pixels looked at next will need again: a row's four
+    /// colours without weather; with weather, rows' weather and anchors
+    /// (the skyline pass asks for a few pixels down each column, whose
+    /// anchors and rows the columns beside share: worked out afresh each
+    /// time, they were most of that pass on a cloudy 1080p slide).
     pub(crate) fn colour_seen<'s>(&'s self, x: u32, y: u32, seen: &mut SkySeen<'s>) -> u32 {
         let Some(w) = &self.weather else {
             let phases = match seen.phases {
@@ -225,6 +225,7 @@ impl Sky {
 /// the pixels between are blended (glow and cloud change little over a few
 /// pixels, and the noise is most of a sky pixel's cost).
 const STEP: u32 = 4;
+
 /// The weather of `row` over gradient colour `g` at the centre of column
 /// `k * STEP`, as lanes (blue, green, red, 0; 0..=1).
 #[inline]
@@ -240,8 +241,7 @@ fn anchor(row: &WeatherRow, g: Rgb, k: u32) -> Vec4 {
 fn pixel(a: Vec4, b: Vec4, x: u32, dither: [f32; 4]) -> u32 {
     let t = (x % STEP) as f32 * (1.0 / STEP as f32);
     let c = (a + (b - a) * t) * 255.0 + dither[(x & 3) as usize];
-    // Lanes at 256 and over pack as 255.
-    packed_lanes(c.max(Vec4::ZERO))
+    packed_lanes(c.clamp(Vec4::ZERO, Vec4::splat(255.0)))
 }
 
 /// Row `y`'s steps of the ordered dither, by column `x & 3`, in levels.
