@@ -17,9 +17,9 @@ const BAYER: [[u8; 4]; 4] = [[0, 8, 2, 10], [12, 4, 14, 6], [3, 11, 1, 9], [15, 
 /// (1 = linear; above 1 keeps the upper sky deep and brightens near the land).
 const HORIZON_CURVE: f32 = 1.6;
 
-/// What [`Sky::colour_seen`] keeps of the pixels it has looked at: a few
-/// kilobytes, whatever the frame (kept in full, the anchors of a 4K
-/// frame's skyline took megabytes of a slide show's peak).
+/// What [`Sky::colour_seen`] keeps of the pixels it has looked at: about
+/// 60 kB, whatever the frame (kept in full, the anchors of a 4K frame's
+/// skyline took megabytes of a slide show's peak).
 #[derive(Default)]
 pub(crate) struct SkySeen<'s> {
     /// Without weather: the last row and its four colours.
