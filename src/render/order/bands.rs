@@ -5,7 +5,7 @@
 //! one thread draws everything: the result does not depend on the thread
 //! count. Bands of columns, not rows: in the vista a strip spans much of the
 //! frame's height but only a few cells of it reach a given column, so a band
-//! walks and projects only those (`Scene::cells_reaching`).
+//! walks and projects only those (`StripReach::cells_reaching`).
 
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, Ordering};

@@ -14,55 +14,88 @@ use crate::render::scene::Scene;
 /// Pixels added on each side of a band: fixed-point rounding and the lines
 /// of Sonar and Outline (a pixel either side of their points) stay inside.
 const MARGIN_PX: f32 = 2.0;
-/// Cells a block of [`Scene::cells_showing`]'s: the row tops' blocks.
+/// Cells a block of [`StripReach::cells_showing`]'s: the row tops' blocks.
 const BLOCK: usize = 16;
 
-impl Scene<'_> {
-    /// Cells of strip `s` whose faces, skirts and lines can touch columns
-    /// `clip.x0..clip.x1`: every cell unless the view is known to keep the
-    /// order of grid columns on screen ([`Scene::columns_reached`]).
+impl<'a> Scene<'a> {
+    /// How far strip `s`'s cells reach across the screen, if the view is
+    /// known to keep the order of grid columns on screen: worked out once
+    /// a strip, for both [`StripReach::cells_reaching`] and
+    /// [`StripReach::cells_showing`].
     ///
-    /// The cells reaching a band are one run, found by bisection, starting
-    /// from `near` (the run of
-    /// the strip before, which is seldom far off: each band walks every
+    /// Along one grid row at one height the screen column only grows with
+    /// the grid column (a straight line, all of it in front of the camera),
+    /// and a point's column lies between its columns at sea level and at
+    /// the strip's top. So the columns a cell reaches are bounded by
+    /// monotone functions of its grid column.
+    pub(crate) fn strip_reach(&self, s: usize) -> Option<StripReach<'_, 'a>> {
+        let (y0, y1) = self.strip_grid_rows(s);
+        let top = self.row_top.row(y0).max(self.row_top.row(y1));
+        let reach = StripReach {
+            scene: self,
+            s,
+            lines: [(y0, 0.0), (y0, top), (y1, 0.0), (y1, top)],
+        };
+        let cells = self.cells();
+        let ordered = (reach.lines.iter()).all(|&l| reach.column(0, l) < reach.column(cells, l));
+        ordered.then_some(reach)
+    }
+}
+
+/// Strip `s` of a scene whose view keeps the order of grid columns on
+/// screen ([`Scene::strip_reach`]).
+pub(crate) struct StripReach<'s, 'a> {
+    scene: &'s Scene<'a>,
+    s: usize,
+    /// The strip's two grid rows, each at sea level and at the strip's top.
+    lines: [(usize, f32); 4],
+}
+
+impl StripReach<'_, '_> {
+    /// The screen column of grid column `gx` on `line`.
+    fn column(&self, gx: usize, (row, h): (usize, f32)) -> f32 {
+        self.scene.view.project(gx as f32, row as f32, h).x
+    }
+
+    /// The screen columns (least, greatest) grid column `gx` of the strip
+    /// can reach, at any height up to the strip's top.
+    fn columns(&self, gx: usize) -> (f32, f32) {
+        (self.lines.iter()).fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), &l| {
+            let x = self.column(gx, l);
+            (lo.min(x), hi.max(x))
+        })
+    }
+
+    /// The strip's cells whose faces, skirts and lines can touch columns
+    /// `clip.x0..clip.x1`.
+    ///
+    /// They are one run, found by bisection, starting from `near` (the run
+    /// of the strip before, which is seldom far off: each band walks every
     /// strip, and bisecting the whole row each time cost 0.8% of the
     /// bands' instructions at 1080p).
-    pub(crate) fn cells_reaching(
-        &self,
-        s: usize,
-        clip: &Clip,
-        near: &Range<usize>,
-    ) -> Range<usize> {
-        let cells = self.cells();
-        let Some(reach) = self.columns_reached(s) else {
-            return 0..cells;
-        };
+    pub(crate) fn cells_reaching(&self, clip: &Clip, near: &Range<usize>) -> Range<usize> {
+        let cells = self.scene.cells();
         let (left, right) = (clip.x0 as f32 - MARGIN_PX, clip.x1 as f32 + MARGIN_PX);
         // Cell gx spans grid columns gx..=gx + 1.
-        let start = partition_near(cells, near.start, |gx| reach(gx + 1).1 < left);
-        let end = partition_near(cells, near.end, |gx| reach(gx).0 < right);
+        let start = partition_near(cells, near.start, |gx| self.columns(gx + 1).1 < left);
+        let end = partition_near(cells, near.end, |gx| self.columns(gx).0 < right);
         start..end.max(start)
     }
 
-    /// `cells` of strip `s` less the blocks of [`BLOCK`] cells at either
+    /// `cells` of the strip less the blocks of [`BLOCK`] cells at either
     /// end that lie wholly behind what `canvas` (drawn front to back)
     /// holds already: their points are then neither projected nor shaded.
     /// Behind a near ridge most cells of a band's strips are hidden (at
     /// 1080p 244 k of the 561 k cells walked), and the ridge mostly hides a
     /// run at one end of a band.
-    pub(crate) fn cells_showing(
-        &self,
-        s: usize,
-        canvas: &Canvas,
-        mut cells: Range<usize>,
-    ) -> Range<usize> {
-        let Some(reach) = self.columns_reached(s) else {
-            return cells;
-        };
+    pub(crate) fn cells_showing(&self, canvas: &Canvas, mut cells: Range<usize>) -> Range<usize> {
         let clip = canvas.clip();
         let hidden = |run: Range<usize>| {
-            let top = self.strip_top(s, &run);
-            let (lo, hi) = (reach(run.start).0 - MARGIN_PX, reach(run.end).1 + MARGIN_PX);
+            let top = self.scene.strip_top(self.s, &run);
+            let (lo, hi) = (
+                self.columns(run.start).0 - MARGIN_PX,
+                self.columns(run.end).1 + MARGIN_PX,
+            );
             let x0 = (lo.floor() as i64).max(clip.x0);
             let x1 = (hi.ceil() as i64).min(clip.x1 - 1);
             x0 > x1 || canvas.hidden(x0, x1, top)
@@ -82,34 +115,6 @@ impl Scene<'_> {
             cells.end = start;
         }
         cells
-    }
-
-    /// For strip `s`, the screen columns (least, greatest) its grid
-    /// column `gx` can reach, at any height up to the strip's top; `None`
-    /// unless the view is known to keep the order of grid columns on
-    /// screen.
-    ///
-    /// Along one grid row at one height the screen column only grows with
-    /// the grid column (a straight line, all of it in front of the camera),
-    /// and a point's column lies between its columns at sea level and at
-    /// the strip's top. So the columns a cell reaches are bounded by
-    /// monotone functions of its grid column.
-    fn columns_reached(&self, s: usize) -> Option<impl Fn(usize) -> (f32, f32) + '_> {
-        let cells = self.cells();
-        let (y0, y1) = self.strip_grid_rows(s);
-        let top = self.row_top.row(y0).max(self.row_top.row(y1));
-        let lines = [(y0, 0.0), (y0, top), (y1, 0.0), (y1, top)];
-        let column =
-            move |gx: usize, (row, h): (usize, f32)| self.view.project(gx as f32, row as f32, h).x;
-        let ordered = lines.iter().all(|&l| column(0, l) < column(cells, l));
-        ordered.then_some(move |gx: usize| {
-            lines
-                .iter()
-                .fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), &l| {
-                    let x = column(gx, l);
-                    (lo.min(x), hi.max(x))
-                })
-        })
     }
 }
 
@@ -175,9 +180,14 @@ mod tests {
         let clip = *canvas.clip();
         let mut kept = 0;
         // Nothing drawn yet: every cell reaching the frame stays.
+        let reach = |s: usize| {
+            scene
+                .strip_reach(s)
+                .expect("the vista keeps columns in order")
+        };
         for s in 0..scene.strips() {
-            let cells = scene.cells_reaching(s, &clip, &(0..scene.cells()));
-            assert_eq!(scene.cells_showing(s, &canvas, cells.clone()), cells);
+            let cells = reach(s).cells_reaching(&clip, &(0..scene.cells()));
+            assert_eq!(reach(s).cells_showing(&canvas, cells.clone()), cells);
             kept += cells.len();
         }
         assert!(kept > 1000, "{kept} cells reach the frame");
@@ -186,9 +196,9 @@ mod tests {
             canvas.fill(y, 0, w, 0x123456);
         }
         for s in 0..scene.strips() {
-            let cells = scene.cells_reaching(s, &clip, &(0..scene.cells()));
+            let cells = reach(s).cells_reaching(&clip, &(0..scene.cells()));
             assert!(
-                scene.cells_showing(s, &canvas, cells).is_empty(),
+                reach(s).cells_showing(&canvas, cells).is_empty(),
                 "strip {s}"
             );
         }

@@ -95,11 +95,15 @@ pub(crate) fn draw_strips(
             return;
         }
         let filled = scene.style.is_filled();
-        let cells = if narrow && filled {
-            reaching = scene.cells_reaching(s, &clip, &reaching);
-            reaching.clone()
-        } else {
-            0..scene.cells()
+        let reach = (narrow && filled || canvas.keeps_first())
+            .then(|| scene.strip_reach(s))
+            .flatten();
+        let cells = match &reach {
+            Some(reach) if narrow && filled => {
+                reaching = reach.cells_reaching(&clip, &reaching);
+                reaching.clone()
+            }
+            _ => 0..scene.cells(),
         };
         // Drawing front to back, a strip whose cells here all lie below
         // what the band holds across its width is hidden: not projected.
@@ -109,9 +113,9 @@ pub(crate) fn draw_strips(
         {
             return;
         }
-        let cells = match canvas.keeps_first() {
-            true => scene.cells_showing(s, canvas, cells),
-            false => cells,
+        let cells = match &reach {
+            Some(reach) if canvas.keeps_first() => reach.cells_showing(canvas, cells),
+            _ => cells,
         };
         if cells.is_empty() {
             return;
