@@ -517,7 +517,7 @@ impl<'a> Scene<'a> {
 }
 
 /// What a scoped thread returned; its panic goes on up.
-fn joined<T>(thread: std::thread::ScopedJoinHandle<'_, T>) -> T {
+pub(crate) fn joined<T>(thread: std::thread::ScopedJoinHandle<'_, T>) -> T {
     thread
         .join()
         .unwrap_or_else(|p| std::panic::resume_unwind(p))

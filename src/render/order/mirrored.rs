@@ -8,6 +8,7 @@ use glam::{Vec2, Vec3};
 
 use crate::render::scene::Scene;
 use crate::render::shade::colour::blend_packed;
+use crate::render::shade::index;
 use crate::render::shade::mirror::{Mirror, Seen};
 
 /// How much the strongest streak (ripple 1) takes from the mirror.
@@ -56,7 +57,7 @@ impl Scene<'_> {
     fn mirrored_land(&self, p: Vec2, h: f32, level: f32) -> u32 {
         let last = self.cells() as f32;
         let (x, y) = (p.x.round().clamp(0.0, last), p.y.round().clamp(0.0, last));
-        let land = self.land_point(x as i32 as usize, y as i32 as usize);
+        let land = self.land_point(index(x), index(y));
         self.hazed(land, self.haze_at(p.x, p.y, 2.0 * level - h))
     }
 

@@ -9,7 +9,7 @@ use super::horizon::{Edge, Horizon};
 use super::{crests, skyline};
 use crate::render::damage::Damage;
 use crate::render::frame::Frame;
-use crate::render::scene::Scene;
+use crate::render::scene::{Scene, joined};
 
 /// Mixes the pixels along the skyline and the crests of `frame`, which
 /// holds every strip of `scene`; `horizon` is the scene's swept across the
@@ -22,14 +22,11 @@ pub(crate) fn clean_edges(scene: &Scene, horizon: &Horizon, frame: &mut Frame) -
     // The crests' pixels are far apart in memory and their mixing waits on
     // it: two threads, a half of the columns each, take half the time.
     let [mut left, mut right] = halves(frame);
-    let theirs = std::thread::scope(|s| {
+    std::thread::scope(|s| {
         let theirs = s.spawn(|| crests::smooth(&mut right, scene, horizon, &tops));
         crests::smooth(&mut left, scene, horizon, &tops);
-        theirs.join()
+        joined(theirs);
     });
-    if let Err(panic) = theirs {
-        std::panic::resume_unwind(panic);
-    }
     for r in [left, right]
         .iter()
         .flat_map(|c| c.damage().rects().collect::<Vec<_>>())

@@ -27,6 +27,7 @@ use std::sync::atomic::{AtomicU32, Ordering};
 use glam::{Vec2, Vec3};
 
 use super::colour::{Rgb, blend_packed, to_u32};
+use super::index;
 use crate::render::framing::tops::finite;
 use crate::terrain::Heightfield;
 
@@ -205,9 +206,7 @@ impl Mirror {
         // negatives to 0, and truncates: the floor of a positive number).
         let i = (((g.x - self.origin.x) / u - self.first) / self.apart).max(0.0);
         let last = self.profiles.len() - 1;
-        // Through i32, which saturates as usize does: a float to usize
-        // conversion is a branchy sequence on x86, and this runs per face.
-        let i0 = (i as i32 as usize).min(last);
+        let i0 = index(i).min(last);
         let t = (i - i0 as f32).min(1.0);
         // The streak tilts the water: the line leaves as one off level
         // water nearer or farther would.
@@ -220,7 +219,7 @@ impl Mirror {
             return None;
         }
         // Truncation rounds (j is at least 0), without a libm call.
-        let j = j as i32 as usize;
+        let j = index(j);
         let near = self.sample(field, i0, j, level, rise, &colour);
         let (colour, share, dir) =
             match self.sample(field, (i0 + 1).min(last), j, level, rise, &colour) {
@@ -365,7 +364,7 @@ impl Profile {
             let y = last - mirror.stride * k;
             let x = mirror.origin.x + spread * mirror.back(k);
             if x >= 0.0 && x <= last as f32 {
-                let x0 = (x as i32 as usize).min(last - 1);
+                let x0 = index(x).min(last - 1);
                 let i = y * size + x0;
                 let (a, b) = (finite(all[i]), finite(all[i + 1]));
                 *h = a + (b - a) * (x - x0 as f32);

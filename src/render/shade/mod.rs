@@ -19,3 +19,12 @@ pub mod shadow;
 pub(super) mod sky;
 pub(super) mod skylight;
 pub(super) mod weather;
+
+/// `v` truncated to an index into a grid or a table: NaN and negatives
+/// 0, values past `i32::MAX` that (callers take the least with their last
+/// index). Through i32: a float to usize conversion is a branchy sequence
+/// on x86, and these run per point, per face and per pixel.
+#[inline]
+pub(crate) fn index(v: f32) -> usize {
+    (v as i32).max(0) as usize
+}

@@ -23,6 +23,7 @@ use super::colour::{Rgb, mix, mix_packed, pack, scale_packed, scale_packed3, to_
 use super::dither;
 use super::essay;
 use super::facings;
+use super::index;
 use super::light::Lighting;
 use super::listing;
 use crate::settings::{ColorMode, Look, Settings, Sun};
@@ -232,10 +233,11 @@ impl Palette {
             return essay::colour(normal);
         }
         // Clamped as floats (NaN stays NaN and casts to bin 0).
-        let h = (mean_height * self.height_scale + jitter(mean_height))
-            .clamp(0.0, (HEIGHT_BINS - 1) as f32) as i32 as usize;
-        let s = ((1.0 - normal.z) * self.steep_scale).clamp(0.0, (STEEP_BINS - 1) as f32) as i32
-            as usize;
+        let h = index(
+            (mean_height * self.height_scale + jitter(mean_height))
+                .clamp(0.0, (HEIGHT_BINS - 1) as f32),
+        );
+        let s = index(((1.0 - normal.z) * self.steep_scale).clamp(0.0, (STEEP_BINS - 1) as f32));
         self.lit_base(self.land[s * HEIGHT_BINS + h], normal, lit, sky)
     }
 
@@ -252,10 +254,10 @@ impl Palette {
         if self.essay {
             return essay::colour(normal);
         }
-        let h = (height * self.height_scale).clamp(0.0, (HEIGHT_BINS - 1) as f32) as i32 as usize;
+        let h = index((height * self.height_scale).clamp(0.0, (HEIGHT_BINS - 1) as f32));
         // Between the middles of the two nearest steepness classes.
         let s = ((1.0 - normal.z) * self.steep_scale - 0.5).clamp(0.0, (STEEP_BINS - 1) as f32);
-        let s0 = s as i32 as usize;
+        let s0 = index(s);
         let s1 = (s0 + 1).min(STEEP_BINS - 1);
         let base = mix_packed(
             self.land[s0 * HEIGHT_BINS + h],
@@ -286,11 +288,7 @@ impl Palette {
     #[inline]
     pub fn water(&self, depth: f32) -> u32 {
         let last = self.water.len() - 1;
-        // Through i32 after a clamp (NaN stays NaN and casts to 0, as
-        // before): a float to usize conversion is a branchy sequence on
-        // x86, a sixth of a water face's own work.
-        let i = (depth * self.depth_scale).clamp(0.0, last as f32) as i32 as usize;
-        self.water[i.min(last)]
+        self.water[index(depth * self.depth_scale).min(last)]
     }
 
     /// Colour of a skirt face (the cut side of the map) facing `normal`.

@@ -10,6 +10,7 @@
 
 use glam::Vec3;
 
+use super::index;
 use super::shadow;
 use crate::terrain::Heightfield;
 
@@ -68,9 +69,7 @@ impl SkyLight {
     #[inline]
     pub(crate) fn rows_at(&self, y: usize) -> (usize, usize, f32) {
         let fy = y as f32 / self.stride;
-        // Through i32 (the grid is far smaller): a float to usize
-        // conversion is a branchy sequence on x86, and this runs per point.
-        let y0 = ((fy as i32).max(0) as usize).min(self.size - 1);
+        let y0 = index(fy).min(self.size - 1);
         (y0, (y0 + 1).min(self.size - 1), fy - y0 as f32)
     }
 
@@ -79,7 +78,7 @@ impl SkyLight {
     pub(crate) fn blend(&self, (y0, y1, ty): (usize, usize, f32), x: usize) -> f32 {
         let fx = x as f32 / self.stride;
         let last = self.size - 1;
-        let x0 = ((fx as i32).max(0) as usize).min(last);
+        let x0 = index(fx).min(last);
         let x1 = (x0 + 1).min(last);
         let tx = fx - x0 as f32;
         let row = |y: usize| {
