@@ -516,6 +516,17 @@ impl<'a> Scene<'a> {
     }
 }
 
+/// `a()` here and `b()` on a thread of its own, at once.
+pub(crate) fn both<A: Send, B: Send>(
+    a: impl FnOnce() -> A + Send,
+    b: impl FnOnce() -> B + Send,
+) -> (A, B) {
+    std::thread::scope(|s| {
+        let theirs = s.spawn(b);
+        (a(), joined(theirs))
+    })
+}
+
 /// What a scoped thread returned; its panic goes on up.
 pub(crate) fn joined<T>(thread: std::thread::ScopedJoinHandle<'_, T>) -> T {
     thread

@@ -14,14 +14,18 @@
 //!
 //! This runs once the frame is complete (it needs each column's
 //! neighbours), on the full frame and at the painter's last step alike, so
-//! both end with the same pixels.
+//! both end with the same pixels. Only the runs and the edges' middles need
+//! the whole width: the columns' tops are found, and their pixels mixed,
+//! column by column, so parts of the frame's width can do both at once.
 
-use crate::render::damage::Damage;
-use crate::render::frame::{Frame, Rect};
+use crate::render::frame::Frame;
 use crate::render::shade::colour::blend_packed;
 use crate::render::shade::sky::{Sky, SkySeen};
 
+use super::canvas::Canvas;
 use super::horizon::{Edge, SAMPLES};
+#[cfg(test)]
+use crate::render::damage::Damage;
 
 /// A run of columns whose land starts at the same row.
 #[derive(Clone, Copy)]
@@ -40,54 +44,97 @@ impl Run {
     }
 }
 
-/// Mixes the pixels along the skyline of a complete `frame` whose sky is
-/// `sky`; returns the pixels it changed and each column's first row of
-/// land. `exact` is the land's top edge as the mesh draws it, per column
-/// where it is known: where a column's top is where that edge puts it, the
-/// edge is taken as it is (a straight sea horizon or a peak narrower than
-/// a pixel has no staircase to tell its height by).
-pub(crate) fn smooth(frame: &mut Frame, sky: &Sky, exact: &[Option<Edge>]) -> (Damage, Vec<u32>) {
-    let mut seen = SkySeen::default();
-    let tops = land_tops(frame, sky, exact, &mut seen);
-    let runs = runs_of(&tops, frame.height());
-    let exact: Vec<Option<Edge>> = (0..tops.len())
-        .map(|x| {
-            exact
-                .get(x)
-                .copied()
-                .flatten()
-                .filter(|e| agrees(e, tops[x]))
-        })
-        .collect();
-    let (mut middles, level) = middles(&runs, tops.len());
-    for (x, e) in exact.iter().enumerate() {
-        if let Some(e) = e {
-            middles[x] = e.centre;
+/// The skyline of a complete frame, ready to be mixed column by column:
+/// each column's first row of land, the runs of columns that share it, and
+/// the edge across each column of land.
+pub(crate) struct Skyline {
+    tops: Vec<u32>,
+    runs: Vec<Run>,
+    /// The mesh's edge where it agrees with the column's top (see
+    /// [`Skyline::new`]).
+    exact: Vec<Option<Edge>>,
+    middles: Vec<f32>,
+    level: Vec<bool>,
+}
+
+impl Skyline {
+    /// The skyline of a frame `height` rows high whose columns' first rows
+    /// of land are `tops` ([`land_tops`]). `exact` is the land's top edge as
+    /// the mesh draws it, per column where it is known: where a column's
+    /// top is where that edge puts it, the edge is taken as it is (a
+    /// straight sea horizon or a peak narrower than a pixel has no
+    /// staircase to tell its height by).
+    pub(crate) fn new(tops: Vec<u32>, exact: &[Option<Edge>], height: u32) -> Self {
+        let runs = runs_of(&tops, height);
+        let exact: Vec<Option<Edge>> = (0..tops.len())
+            .map(|x| {
+                exact
+                    .get(x)
+                    .copied()
+                    .flatten()
+                    .filter(|e| agrees(e, tops[x]))
+            })
+            .collect();
+        let (mut middles, level) = middles(&runs, tops.len());
+        for (x, e) in exact.iter().enumerate() {
+            if let Some(e) = e {
+                middles[x] = e.centre;
+            }
+        }
+        Skyline {
+            tops,
+            runs,
+            exact,
+            middles,
+            level,
         }
     }
-    let mut damage = Damage::default();
-    for run in &runs {
-        for x in run.x0..=run.x1 {
-            let edge: [f32; SAMPLES] = exact[x as usize].map_or_else(
-                || {
-                    std::array::from_fn(|k| {
-                        let at = (k as f32 + 0.5) / SAMPLES as f32;
-                        edge_in(&middles, &level, x as usize, at)
-                    })
-                },
-                |e| e.samples,
-            );
-            if let Some(rows) = mix_column(frame, (sky, &mut seen), x, run.top, &edge) {
-                damage.add(Rect {
-                    x0: x,
-                    y0: rows.0,
-                    x1: x + 1,
-                    y1: rows.1,
-                });
+
+    /// Each column's first row of land (the height where it has none).
+    pub(crate) fn tops(&self) -> &[u32] {
+        &self.tops
+    }
+
+    /// Mixes the pixels along the skyline in `canvas`'s columns, whose sky
+    /// is `sky` (as seen so far along them: `seen`); what it changed is the
+    /// canvas's damage. Each column is mixed from its own pixels alone, so
+    /// canvases of different columns can be mixed at once.
+    pub(crate) fn mix<'s>(&self, canvas: &mut Canvas, sky: &'s Sky, seen: &mut SkySeen<'s>) {
+        let clip = *canvas.clip();
+        let (x0, x1) = (clip.x0 as u32, clip.x1 as u32);
+        for run in &self.runs {
+            for x in run.x0.max(x0)..(run.x1 + 1).min(x1) {
+                let edge: [f32; SAMPLES] = self.exact[x as usize].map_or_else(
+                    || {
+                        std::array::from_fn(|k| {
+                            let at = (k as f32 + 0.5) / SAMPLES as f32;
+                            edge_in(&self.middles, &self.level, x as usize, at)
+                        })
+                    },
+                    |e| e.samples,
+                );
+                if let Some(rows) = mix_column(canvas, (sky, seen), x, run.top, &edge) {
+                    canvas.touch(x, rows.0, x + 1, rows.1);
+                }
             }
         }
     }
-    (damage, tops)
+}
+
+/// The whole skyline of `frame` mixed on this thread: what the tests
+/// look at.
+#[cfg(test)]
+fn smooth(frame: &mut Frame, sky: &Sky, exact: &[Option<Edge>]) -> (Damage, Vec<u32>) {
+    let width = frame.width() as usize;
+    let known = |x: usize| exact.get(x).copied().flatten();
+    let exact: Vec<Option<Edge>> = (0..width).map(known).collect();
+    let mut seen = SkySeen::default();
+    let tops = land_tops(frame, sky, &exact, 0, &mut seen);
+    let skyline = Skyline::new(tops, &exact, frame.height());
+    let width = frame.width();
+    let mut canvas = Canvas::new(frame.pixels_mut(), width, 0);
+    skyline.mix(&mut canvas, sky, &mut seen);
+    (canvas.damage(), skyline.tops)
 }
 
 /// Whether `edge` puts a column's first row of land at `top`: the first
@@ -143,24 +190,27 @@ fn edge_in(middles: &[f32], level: &[bool], x: usize, at: f32) -> f32 {
 }
 
 /// The first row of each column that is not the sky (the height when the
-/// whole column is sky). Where the mesh's edge across a column is known
-/// (`exact`), the search starts just above it: no land is drawn higher
-/// (a pixel is land when its centre is covered), which its first pixel,
-/// checked to be the sky, confirms; elsewhere it starts at the top. A sky
-/// with weather costs a lot a pixel to tell.
-fn land_tops<'s>(
+/// whole column is sky), for the columns from `x0` on that `exact` holds.
+/// Where the mesh's edge across a column is known (`exact`), the search
+/// starts just above it: no land is drawn higher (a pixel is land when its
+/// centre is covered), which its first pixel, checked to be the sky,
+/// confirms; elsewhere it starts at the top. A sky with weather costs a
+/// lot a pixel to tell.
+pub(crate) fn land_tops<'s>(
     frame: &Frame,
     sky: &'s Sky,
     exact: &[Option<Edge>],
+    x0: usize,
     seen: &mut SkySeen<'s>,
 ) -> Vec<u32> {
     let (w, h) = (frame.width() as usize, frame.height());
     let pixels = frame.pixels();
     let mut shows = |x: usize, y: u32| sky.shows(pixels[y as usize * w + x], x as u32, y, seen);
-    let mut tops = vec![h; w];
+    let mut tops = vec![h; exact.len()];
     let mut from_top = Vec::new();
-    for (x, top) in tops.iter_mut().enumerate() {
-        let above = exact.get(x).copied().flatten().map(|e| {
+    for (i, (top, edge)) in tops.iter_mut().zip(exact).enumerate() {
+        let x = x0 + i;
+        let above = edge.map(|e| {
             let least = e.samples.iter().fold(e.centre, |m, &s| m.min(s));
             (least - 2.0).floor()
         });
@@ -169,7 +219,7 @@ fn land_tops<'s>(
                 *top = (y0 as u32 + 1..h).find(|&y| !shows(x, y)).unwrap_or(h);
             }
             Some(y0) if y0 < 0.0 => *top = (0..h).find(|&y| !shows(x, y)).unwrap_or(h),
-            _ => from_top.push(x),
+            _ => from_top.push(i),
         }
     }
     // The rest row by row, as the plain sky's colours come a row at a time.
@@ -178,9 +228,9 @@ fn land_tops<'s>(
         if open == 0 {
             break;
         }
-        for &x in &from_top {
-            if tops[x] == h && !shows(x, y) {
-                tops[x] = y;
+        for &i in &from_top {
+            if tops[i] == h && !shows(x0 + i, y) {
+                tops[i] = y;
                 open -= 1;
             }
         }
@@ -234,7 +284,7 @@ fn edge_at(run: &Run, left: Option<&Run>, right: Option<&Run>, x: f32) -> f32 {
 /// column) cuts pixels; `top` is the column's first row of land. Returns
 /// the rows changed, if any.
 fn mix_column<'s>(
-    frame: &mut Frame,
+    canvas: &mut Canvas,
     (sky, seen): (&'s Sky, &mut SkySeen<'s>),
     x: u32,
     top: u32,
@@ -244,8 +294,10 @@ fn mix_column<'s>(
     let hi = edge.iter().copied().fold(f32::NEG_INFINITY, f32::max);
     let first = (lo.floor().max(0.0) as u32).min(top);
     // Rows between the edge and the column's top are land all across.
-    let end = (hi.ceil().max(0.0) as u32).max(top).min(frame.height());
-    let land = frame.get(x, top);
+    let end = (hi.ceil().max(0.0) as u32)
+        .max(top)
+        .min(canvas.clip().y1 as u32);
+    let land = canvas.get(x, top);
     let mut changed = None;
     for y in first..end {
         let cover: f32 = edge
@@ -253,14 +305,15 @@ fn mix_column<'s>(
             .map(|&e| (y as f32 + 1.0 - e).clamp(0.0, 1.0))
             .sum::<f32>()
             / SAMPLES as f32;
-        let own = if y >= top { frame.get(x, y) } else { land };
+        let now = canvas.get(x, y);
+        let own = if y >= top { now } else { land };
         let mixed = blend_packed(
             sky.colour_seen(x, y, seen),
             own,
             (cover * 256.0 + 0.5) as u32,
         );
-        if mixed != frame.get(x, y) {
-            frame.set(x, y, mixed);
+        if mixed != now {
+            canvas.plot(x, y, mixed);
             let (a, _) = changed.get_or_insert((y, y + 1));
             changed = Some((*a, y + 1));
         }
