@@ -3,7 +3,7 @@
 
 use std::sync::Arc;
 
-use glam::Vec2;
+use glam::{Vec2, Vec4};
 
 use super::framing::easel;
 use super::framing::tops::{RowTops, finite};
@@ -356,17 +356,39 @@ impl<'a> Scene<'a> {
     pub(crate) fn project_points(&self, y: usize, xs: std::ops::Range<usize>, out: &mut [Vert]) {
         let row = self.field.row(y);
         let line = self.view.along_row(y as f32);
+        // Four points projected at once (a division each, in lanes); the
+        // last few of a run padded with the last point.
+        let mut waiting = [(0usize, 0.0f32); 4];
+        let mut n = 0;
+        let project = |waiting: &[(usize, f32); 4], n: usize, out: &mut [Vert]| {
+            let gx = Vec4::from_array(waiting.map(|(x, _)| x as f32));
+            let z = Vec4::from_array(waiting.map(|(_, z)| z));
+            let [px, py] = line.project4(gx, z);
+            let (px, py) = (px.to_array(), py.to_array());
+            for (k, &(x, _)) in waiting.iter().enumerate().take(n) {
+                out[x].p = to_fixed(px[k], py[k]);
+            }
+        };
         self.surfaces(y, xs, |x, w| {
             let h = finite(row[x]);
-            let p = line.project(x as f32, h.max(w));
             out[x] = Vert {
-                p: to_fixed(p.x, p.y),
                 h,
                 w,
                 off: !row[x].is_finite(),
                 ..Vert::default()
             };
+            waiting[n] = (x, h.max(w));
+            n += 1;
+            if n == 4 {
+                project(&waiting, n, out);
+                n = 0;
+            }
         });
+        if n > 0 {
+            let last = waiting[n - 1];
+            waiting[n..].fill(last);
+            project(&waiting, n, out);
+        }
     }
 
     /// Calls `f` with each point `x` of `xs` in grid row `y` and the water

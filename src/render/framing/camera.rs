@@ -1,6 +1,6 @@
 //! The perspective camera of the vista and perspective views.
 
-use glam::{Vec2, Vec3};
+use glam::{Vec2, Vec3, Vec4};
 
 /// A single-point perspective camera, in world units (x right, y towards
 /// the front, z up).
@@ -34,6 +34,17 @@ impl RowCamera {
         let depth = (dx * self.forward.x + self.forward_y + dz * self.forward.z).max(self.near);
         let up = dx * self.up.x + self.up_y + dz * self.up.z;
         Vec2::new(dx / depth, -up / depth)
+    }
+
+    /// [`RowCamera::project`] of four points at once (their x and y in
+    /// lanes): the same operations lane by lane, so the same bits.
+    #[inline]
+    pub(crate) fn project4(&self, x: Vec4, z: Vec4) -> [Vec4; 2] {
+        let (dx, dz) = (x - Vec4::splat(self.eye.x), z - Vec4::splat(self.eye.z));
+        let depth = (dx * self.forward.x + Vec4::splat(self.forward_y) + dz * self.forward.z)
+            .max(Vec4::splat(self.near));
+        let up = dx * self.up.x + Vec4::splat(self.up_y) + dz * self.up.z;
+        [dx / depth, -up / depth]
     }
 }
 

@@ -5,7 +5,7 @@
 //! `Heightfield::extent` giving the grid's width in those units, so relief is
 //! drawn at its true scale.
 
-use glam::{Vec2, Vec3};
+use glam::{Vec2, Vec3, Vec4};
 
 use super::camera::{Camera, RowCamera};
 use super::tops::finite;
@@ -115,6 +115,27 @@ impl RowView {
             }
         };
         self.offset + self.scale * unscaled
+    }
+
+    /// [`RowView::project`] of four points at once (grid columns `gx`,
+    /// heights `z`): their pixel x and y in lanes, the same bits.
+    #[inline]
+    pub(crate) fn project4(&self, gx: Vec4, z: Vec4) -> [Vec4; 2] {
+        let x = gx * self.cell;
+        let [ux, uy] = match &self.camera {
+            Some(cam) => cam.project4(x, z),
+            None => {
+                let (sin, cos) = self.tilt;
+                [
+                    x - Vec4::splat(SHEAR * self.y),
+                    Vec4::splat(self.y * cos) - z * self.relief * sin,
+                ]
+            }
+        };
+        [
+            Vec4::splat(self.offset.x) + self.scale * ux,
+            Vec4::splat(self.offset.y) + self.scale * uy,
+        ]
     }
 }
 
@@ -413,6 +434,34 @@ mod tests {
                 for (gx, z) in [(0.0, 0.0), (5.0, 12.5), (64.0, 60.0), (31.0, -3.0)] {
                     let (a, b) = (row.project(gx, z), view.project(gx, gy, z));
                     assert_eq!(a, b, "{kind:?} at ({gx}, {gy}, {z})");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn four_points_at_once_project_to_the_same_bits_as_one_by_one() {
+        for kind in [ViewKind::Vista, ViewKind::Perspective, ViewKind::Oblique] {
+            let view = View::new(kind, 65, 250.0, 60.0, 640, 360);
+            for gy in [0.0, 17.0, 64.0] {
+                let row = view.along_row(gy);
+                // Behind the eye, far off the grid and at odd heights too.
+                let gx = [0.0, 5.0, 64.0, 31.0, 1e4, -700.0, 13.0, 47.0];
+                let z = [0.0, 12.5, 60.0, -3.0, 1e5, 0.1, -1e4, 7.25];
+                for k in (0..gx.len()).step_by(4) {
+                    let lanes = |v: &[f32; 8]| Vec4::from_slice(&v[k..k + 4]);
+                    let [px, py] = row.project4(lanes(&gx), lanes(&z));
+                    for lane in 0..4 {
+                        let one = row.project(gx[k + lane], z[k + lane]);
+                        let four = Vec2::new(px[lane], py[lane]);
+                        assert_eq!(
+                            (one.x.to_bits(), one.y.to_bits()),
+                            (four.x.to_bits(), four.y.to_bits()),
+                            "{kind:?} at ({}, {gy}, {})",
+                            gx[k + lane],
+                            z[k + lane]
+                        );
+                    }
                 }
             }
         }
