@@ -32,9 +32,10 @@ const FADE: f32 = 0.06;
 const LATTICE: usize = 128;
 /// The noise's greatest sum over its octaves (1 + 1/2 + 1/4 ...).
 const NOISE_RANGE: f32 = 1.9375;
-/// How far under the cloud's threshold a sum must stay for the finer
-/// octaves to be skipped: far above the rounding of a few additions, so
-/// that the sky is the same as with every octave summed.
+/// How far under the cloud's threshold (or over its full thickness) a sum
+/// must stay for the finer octaves to be skipped: far above the rounding
+/// of a few additions, so that the sky is the same as with every octave
+/// summed.
 const CLEAR_MARGIN: f32 = 1e-3;
 
 /// Share of the slides that `clouds = "varied"` leaves clear.
@@ -170,24 +171,40 @@ impl SheetRow<'_> {
         let sheet = self.sheet;
         let mut x = sheet.origin[0] + across * self.scale;
         let (mut sum, mut weight) = (0.0, 1.0);
-        // Below this sum, no cloud.
+        // Below this sum, no cloud; above `full`, the cloud's heart.
         let clear = sheet.threshold * NOISE_RANGE - CLEAR_MARGIN;
+        let full = (sheet.threshold + sheet.span) * NOISE_RANGE + CLEAR_MARGIN;
         for layer in &self.layers {
             sum += weight * sheet.value(x, layer);
             weight *= 0.5;
             x = x * 2.03 + 17.1;
             // The layers left add less than twice the next one's weight
             // (each value lies in -1..1): where even that cannot reach the
-            // cloud's threshold, the finer layers need not be looked at.
+            // cloud's threshold, or take the sum below its full thickness,
+            // the finer layers need not be looked at.
             if sum + 2.0 * weight < clear {
                 return NONE;
             }
+            if sum - 2.0 * weight > full {
+                return self.cover_of(1.0);
+            }
         }
+        self.cover(sum)
+    }
+
+    /// The cover where the layers sum to `sum`.
+    fn cover(&self, sum: f32) -> Cover {
+        let sheet = self.sheet;
         let n = sum / NOISE_RANGE;
         let thickness = ((n - sheet.threshold) / sheet.span).clamp(0.0, 1.0);
         if thickness <= 0.0 {
             return NONE;
         }
+        self.cover_of(thickness)
+    }
+
+    /// The cover of cloud `thickness` (0..=1) thick.
+    fn cover_of(&self, thickness: f32) -> Cover {
         Cover {
             opacity: smoothstep(0.0, 0.6, thickness) * self.fade,
             thickness,
@@ -270,6 +287,43 @@ mod tests {
             "{thin} {broken} {overcast}"
         );
         assert!(overcast > 380, "overcast covers nearly all: {overcast}");
+    }
+
+    #[test]
+    fn the_layers_skipped_change_no_cover() {
+        // Every layer summed, as before any was skipped.
+        let summed = |row: &SheetRow, across: f32| {
+            let sheet = row.sheet;
+            let mut x = sheet.origin[0] + across * row.scale;
+            let (mut sum, mut weight) = (0.0, 1.0);
+            for layer in &row.layers {
+                sum += weight * sheet.value(x, layer);
+                weight *= 0.5;
+                x = x * 2.03 + 17.1;
+            }
+            row.cover(sum)
+        };
+        let (mut clear, mut full) = (0, 0);
+        for amount in [0.15, 0.4, 0.7, 1.0] {
+            let sheet = CloudSheet::new(amount, 42);
+            for i in 0..4000 {
+                let (across, up) = (
+                    (i % 80) as f32 * 0.021 - 0.84,
+                    0.004 + (i / 80) as f32 * 0.01,
+                );
+                let Some(row) = sheet.row(up) else { continue };
+                let seen = row.seen(across);
+                assert_eq!(
+                    seen,
+                    summed(&row, across),
+                    "amount {amount} at ({across}, {up})"
+                );
+                clear += usize::from(seen == NONE);
+                full += usize::from(seen.thickness == 1.0);
+            }
+        }
+        // Both ways out are taken.
+        assert!(clear > 1000 && full > 1000, "{clear} clear, {full} full");
     }
 
     #[test]
