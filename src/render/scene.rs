@@ -3,7 +3,7 @@
 
 use std::sync::Arc;
 
-use glam::{Vec2, Vec4};
+use glam::Vec2;
 
 use super::framing::easel;
 use super::framing::tops::{RowTops, finite};
@@ -356,17 +356,15 @@ impl<'a> Scene<'a> {
     pub(crate) fn project_points(&self, y: usize, xs: std::ops::Range<usize>, out: &mut [Vert]) {
         let row = self.field.row(y);
         let line = self.view.along_row(y as f32);
-        // Four points projected at once (a division each, in lanes); the
-        // last few of a run padded with the last point.
-        let mut waiting = [(0usize, 0.0f32); 4];
+        // Four points projected at once (RowView::project_few).
+        let mut waiting = [(0usize, [0.0f32; 2]); 4];
         let mut n = 0;
-        let project = |waiting: &[(usize, f32); 4], n: usize, out: &mut [Vert]| {
-            let gx = Vec4::from_array(waiting.map(|(x, _)| x as f32));
-            let z = Vec4::from_array(waiting.map(|(_, z)| z));
-            let [px, py] = line.project4(gx, z);
-            let (px, py) = (px.to_array(), py.to_array());
-            for (k, &(x, _)) in waiting.iter().enumerate().take(n) {
-                out[x].p = to_fixed(px[k], py[k]);
+        let project = |waiting: &[(usize, [f32; 2])], out: &mut [Vert]| {
+            let points: [[f32; 2]; 4] =
+                std::array::from_fn(|k| waiting.get(k).map_or([0.0; 2], |w| w.1));
+            let projected = line.project_few(&points[..waiting.len()]);
+            for (&(x, _), p) in waiting.iter().zip(projected) {
+                out[x].p = to_fixed(p[0], p[1]);
             }
         };
         self.surfaces(y, xs, |x, w| {
@@ -377,18 +375,14 @@ impl<'a> Scene<'a> {
                 off: !row[x].is_finite(),
                 ..Vert::default()
             };
-            waiting[n] = (x, h.max(w));
+            waiting[n] = (x, [x as f32, h.max(w)]);
             n += 1;
             if n == 4 {
-                project(&waiting, n, out);
+                project(&waiting, out);
                 n = 0;
             }
         });
-        if n > 0 {
-            let last = waiting[n - 1];
-            waiting[n..].fill(last);
-            project(&waiting, n, out);
-        }
+        project(&waiting[..n], out);
     }
 
     /// Calls `f` with each point `x` of `xs` in grid row `y` and the water
@@ -567,7 +561,7 @@ pub(crate) fn both_if<A: Send, B: Send>(
 }
 
 /// What a scoped thread returned; its panic goes on up.
-pub(crate) fn joined<T>(thread: std::thread::ScopedJoinHandle<'_, T>) -> T {
+fn joined<T>(thread: std::thread::ScopedJoinHandle<'_, T>) -> T {
     thread
         .join()
         .unwrap_or_else(|p| std::panic::resume_unwind(p))

@@ -36,13 +36,17 @@ impl RowCamera {
         Vec2::new(dx / depth, -up / depth)
     }
 
-    /// [`RowCamera::project`] of four points at once (their x and y in
-    /// lanes): the same operations lane by lane, so the same bits.
+    /// [`RowCamera::project`] of four points at once (their world x and
+    /// height in lanes): the same operations lane by lane, so the same bits.
     #[inline]
     pub(crate) fn project4(&self, x: Vec4, z: Vec4) -> [Vec4; 2] {
         let (dx, dz) = (x - Vec4::splat(self.eye.x), z - Vec4::splat(self.eye.z));
-        let depth = (dx * self.forward.x + Vec4::splat(self.forward_y) + dz * self.forward.z)
-            .max(Vec4::splat(self.near));
+        let depth = dx * self.forward.x + Vec4::splat(self.forward_y) + dz * self.forward.z;
+        // `f32::max`'s choice on every platform (a vector max may keep a
+        // NaN on one and drop it on another): `near` unless the depth is
+        // greater.
+        let near = Vec4::splat(self.near);
+        let depth = Vec4::select(depth.cmpgt(near), depth, near);
         let up = dx * self.up.x + Vec4::splat(self.up_y) + dz * self.up.z;
         [dx / depth, -up / depth]
     }

@@ -137,6 +137,21 @@ impl RowView {
             Vec4::splat(self.offset.y) + self.scale * uy,
         ]
     }
+
+    /// The pixel positions of up to four `points` (grid column, height),
+    /// worked out at once ([`RowView::project4`], the last point standing
+    /// in for the missing ones; none: all 0): a projection is two
+    /// divisions, which four points share in lanes.
+    #[inline]
+    pub(crate) fn project_few(&self, points: &[[f32; 2]]) -> [[f32; 2]; 4] {
+        let Some(&last) = points.last() else {
+            return [[0.0; 2]; 4];
+        };
+        let lane = |k: usize| points.get(k).copied().unwrap_or(last);
+        let [gx, z] = [0, 1].map(|i| Vec4::from_array(std::array::from_fn(|k| lane(k)[i])));
+        let [px, py] = self.project4(gx, z);
+        std::array::from_fn(|k| [px[k], py[k]])
+    }
 }
 
 impl View {
@@ -448,6 +463,14 @@ mod tests {
                 // Behind the eye, far off the grid and at odd heights too.
                 let gx = [0.0, 5.0, 64.0, 31.0, 1e4, -700.0, 13.0, 47.0];
                 let z = [0.0, 12.5, 60.0, -3.0, 1e5, 0.1, -1e4, 7.25];
+                // Fewer than four: the lanes given, the same bits.
+                for n in 1..=4 {
+                    let points: Vec<[f32; 2]> = (0..n).map(|k| [gx[k], z[k]]).collect();
+                    for (k, p) in row.project_few(&points).iter().take(n).enumerate() {
+                        let one = row.project(gx[k], z[k]);
+                        assert_eq!(p.map(f32::to_bits), [one.x.to_bits(), one.y.to_bits()]);
+                    }
+                }
                 for k in (0..gx.len()).step_by(4) {
                     let lanes = |v: &[f32; 8]| Vec4::from_slice(&v[k..k + 4]);
                     let [px, py] = row.project4(lanes(&gx), lanes(&z));

@@ -12,7 +12,6 @@
 //! Only the frame's geometry is read, never its pixels, so the horizon is
 //! the same for the full frame's bands and the painter's strips.
 
-use glam::Vec4;
 use std::ops::RangeInclusive;
 
 use crate::render::framing::tops::finite;
@@ -201,14 +200,9 @@ fn project_points(scene: &Scene, gy: usize, gxs: RangeInclusive<usize>, out: &mu
     scene.surfaces(gy, *gxs.start()..*gxs.end() + 1, |gx, w| {
         out.push([gx as f32, finite(row[gx]).max(w)]);
     });
-    // Four at a time (a division each, in lanes), the last few padded.
     for points in out.chunks_mut(4) {
-        let lane = |k: usize| points[k.min(points.len() - 1)];
-        let [gx, z] = [0, 1].map(|i| Vec4::from_array(std::array::from_fn(|k| lane(k)[i])));
-        let [px, py] = line.project4(gx, z);
-        for (k, p) in points.iter_mut().enumerate() {
-            *p = [px[k], py[k]];
-        }
+        let projected = line.project_few(points);
+        points.copy_from_slice(&projected[..points.len()]);
     }
 }
 

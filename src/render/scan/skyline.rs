@@ -125,13 +125,12 @@ impl Skyline {
 /// look at.
 #[cfg(test)]
 fn smooth(frame: &mut Frame, sky: &Sky, exact: &[Option<Edge>]) -> (Damage, Vec<u32>) {
-    let width = frame.width() as usize;
-    let known = |x: usize| exact.get(x).copied().flatten();
+    let (width, height) = (frame.width(), frame.height());
+    let known = |x: u32| exact.get(x as usize).copied().flatten();
     let exact: Vec<Option<Edge>> = (0..width).map(known).collect();
     let mut seen = SkySeen::default();
     let tops = land_tops(frame, sky, &exact, 0, &mut seen);
-    let skyline = Skyline::new(tops, &exact, frame.height());
-    let width = frame.width();
+    let skyline = Skyline::new(tops, &exact, height);
     let mut canvas = Canvas::new(frame.pixels_mut(), width, 0);
     skyline.mix(&mut canvas, sky, &mut seen);
     (canvas.damage(), skyline.tops)
