@@ -357,14 +357,12 @@ impl<'a> Scene<'a> {
         let row = self.field.row(y);
         let line = self.view.along_row(y as f32);
         // Four points projected at once (RowView::project_few).
-        let mut waiting = [(0usize, [0.0f32; 2]); 4];
+        let (mut xs_waiting, mut waiting) = ([0usize; 4], [[0.0f32; 2]; 4]);
         let mut n = 0;
-        let project = |waiting: &[(usize, [f32; 2])], out: &mut [Vert]| {
-            let points: [[f32; 2]; 4] =
-                std::array::from_fn(|k| waiting.get(k).map_or([0.0; 2], |w| w.1));
-            let projected = line.project_few(&points[..waiting.len()]);
-            for (&(x, _), p) in waiting.iter().zip(projected) {
-                out[x].p = to_fixed(p[0], p[1]);
+        let project = |xs: &[usize], points: &[[f32; 2]], out: &mut [Vert]| {
+            let [px, py] = line.project_few(points);
+            for (k, &x) in xs.iter().enumerate() {
+                out[x].p = to_fixed(px[k], py[k]);
             }
         };
         self.surfaces(y, xs, |x, w| {
@@ -375,14 +373,14 @@ impl<'a> Scene<'a> {
                 off: !row[x].is_finite(),
                 ..Vert::default()
             };
-            waiting[n] = (x, [x as f32, h.max(w)]);
+            (xs_waiting[n], waiting[n]) = (x, [x as f32, h.max(w)]);
             n += 1;
             if n == 4 {
-                project(&waiting, out);
+                project(&xs_waiting, &waiting, out);
                 n = 0;
             }
         });
-        project(&waiting[..n], out);
+        project(&xs_waiting[..n], &waiting[..n], out);
     }
 
     /// Calls `f` with each point `x` of `xs` in grid row `y` and the water

@@ -138,19 +138,22 @@ impl RowView {
         ]
     }
 
-    /// The pixel positions of up to four `points` (grid column, height),
-    /// worked out at once ([`RowView::project4`], the last point standing
-    /// in for the missing ones; none: all 0): a projection is two
+    /// The pixel x and y (in lanes) of up to four `points` (grid column,
+    /// height), worked out at once ([`RowView::project4`]; the last point
+    /// stands in for the missing ones, none gives 0): a projection is two
     /// divisions, which four points share in lanes.
     #[inline]
-    pub(crate) fn project_few(&self, points: &[[f32; 2]]) -> [[f32; 2]; 4] {
+    pub(crate) fn project_few(&self, points: &[[f32; 2]]) -> [[f32; 4]; 2] {
         let Some(&last) = points.last() else {
-            return [[0.0; 2]; 4];
+            return [[0.0; 4]; 2];
         };
-        let lane = |k: usize| points.get(k).copied().unwrap_or(last);
-        let [gx, z] = [0, 1].map(|i| Vec4::from_array(std::array::from_fn(|k| lane(k)[i])));
-        let [px, py] = self.project4(gx, z);
-        std::array::from_fn(|k| [px[k], py[k]])
+        let mut lanes = [last; 4];
+        let n = points.len().min(4);
+        lanes[..n].copy_from_slice(&points[..n]);
+        let [a, b, c, d] = lanes;
+        let gx = Vec4::new(a[0], b[0], c[0], d[0]);
+        let z = Vec4::new(a[1], b[1], c[1], d[1]);
+        self.project4(gx, z).map(|v| v.to_array())
     }
 }
 
@@ -466,9 +469,13 @@ mod tests {
                 // Fewer than four: the lanes given, the same bits.
                 for n in 1..=4 {
                     let points: Vec<[f32; 2]> = (0..n).map(|k| [gx[k], z[k]]).collect();
-                    for (k, p) in row.project_few(&points).iter().take(n).enumerate() {
+                    let [px, py] = row.project_few(&points);
+                    for k in 0..n {
                         let one = row.project(gx[k], z[k]);
-                        assert_eq!(p.map(f32::to_bits), [one.x.to_bits(), one.y.to_bits()]);
+                        assert_eq!(
+                            [px[k].to_bits(), py[k].to_bits()],
+                            [one.x.to_bits(), one.y.to_bits()]
+                        );
                     }
                 }
                 for k in (0..gx.len()).step_by(4) {

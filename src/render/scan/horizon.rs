@@ -201,8 +201,10 @@ fn project_points(scene: &Scene, gy: usize, gxs: RangeInclusive<usize>, out: &mu
         out.push([gx as f32, finite(row[gx]).max(w)]);
     });
     for points in out.chunks_mut(4) {
-        let projected = line.project_few(points);
-        points.copy_from_slice(&projected[..points.len()]);
+        let [px, py] = line.project_few(points);
+        for (k, p) in points.iter_mut().enumerate() {
+            *p = [px[k], py[k]];
+        }
     }
 }
 
