@@ -13,6 +13,7 @@ pub mod clock;
 pub mod commands;
 pub mod console;
 pub mod contrib;
+pub mod cores;
 pub mod fsutil;
 pub mod help;
 pub mod log;

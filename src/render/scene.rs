@@ -222,8 +222,7 @@ impl<'a> Scene<'a> {
         // the frame's serial start (1080p, seed 42: the shadow sweep 1.7 ms,
         // the sky's sweeps 1.5, the view's fit 1.0, the palette's tables
         // 0.5). Three threads on two cores took 3.1 ms, these pairs 2.4.
-        let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
-        let wide = cores >= 4;
+        let wide = crate::cores::cores() >= 4;
         let (((row_top, view, rows), skylight), (shadow, palette)) = both(
             || {
                 both_if(

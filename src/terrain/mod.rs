@@ -185,7 +185,7 @@ fn weather(
 }
 
 fn default_threads() -> usize {
-    std::thread::available_parallelism().map_or(1, |n| n.get().min(8))
+    crate::cores::cores().min(8)
 }
 
 /// Sets the starting points and runs the chosen generator's subdivision;

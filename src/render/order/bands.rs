@@ -108,8 +108,7 @@ pub(crate) fn render(scene: &Scene, frame: &mut Frame) {
 /// three threads share two cores.)
 fn draw_bands(scene: &Scene, frame: &mut Frame, sweep: bool) -> Option<Horizon> {
     let width = frame.width();
-    let threads = std::thread::available_parallelism()
-        .map_or(1, |n| n.get())
+    let threads = crate::cores::cores()
         .min(MAX_THREADS)
         .min((width / MIN_BAND_COLUMNS) as usize);
     if threads < 2 {

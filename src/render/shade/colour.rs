@@ -43,8 +43,7 @@ pub fn unpack(c: u32) -> Rgb {
 /// clamped at white).
 #[inline]
 pub fn scale_packed3(c: u32, k: Rgb) -> u32 {
-    let k = Vec4::new(k[2], k[1], k[0], 0.0);
-    packed_lanes((lanes(c) * k + 0.5).clamp(Vec4::ZERO, Vec4::splat(255.0)))
+    packed_lanes((lanes(c) * rgb_lanes(k) + 0.5).clamp(Vec4::ZERO, Vec4::splat(255.0)))
 }
 
 /// Blends packed colour `c` towards packed `to` by `t` (0..=1, in 1/256ths).
@@ -77,6 +76,12 @@ pub(crate) fn lanes(c: u32) -> Vec4 {
         ((c >> 16) & 0xff) as f32,
         0.0,
     )
+}
+
+/// An [`Rgb`] in [`lanes`]' order: blue, green, red, 0.
+#[inline]
+pub(crate) fn rgb_lanes(c: Rgb) -> Vec4 {
+    Vec4::new(c[2], c[1], c[0], 0.0)
 }
 
 /// Lanes blue, green, red (each in 0.0..256.0, truncated; a NaN lane

@@ -111,6 +111,15 @@ struct Sampled {
 }
 
 impl Sampled {
+    /// A look packed in a `u32`, as the sea's samples are cached: the
+    /// colour in the low three bytes, the share in 7 bits above (at most
+    /// [`SHARE_MAX`], so never [`EMPTY`]), whether it points near the sun
+    /// in the top bit.
+    fn pack(colour: u32, share: u32, sun: bool) -> u32 {
+        (colour & 0x00ff_ffff) | share.min(SHARE_MAX) << 24 | u32::from(sun) << 31
+    }
+
+    /// A look [`Sampled::pack`]ed.
     fn of(packed: u32) -> Self {
         Sampled {
             colour: packed & 0x00ff_ffff,
@@ -233,7 +242,7 @@ impl Mirror {
         if !(rise > 0.0 && u > 0.0) {
             return None;
         }
-        // The fan's place (`as` takes NaN and negatives to 0, and
+        // The fan's place (`index` takes NaN and negatives to 0, and
         // truncates: the floor of a positive number).
         let i = (((g.x - self.origin.x) / u - self.first) / self.apart).max(0.0);
         let last = self.profiles.len() - 1;
@@ -377,7 +386,7 @@ impl Mirror {
         let schlick = F0 + (1.0 - F0) * (1.0 - down).powi(5);
         let share = ((GAIN * schlick).min(MOST) * SHARE_MAX as f32) as u32;
         let near = dir.dot(self.sun) > NEAR_SUN;
-        (colour(seen) & 0x00ff_ffff) | share.min(SHARE_MAX) << 24 | u32::from(near) << 31
+        Sampled::pack(colour(seen), share, near)
     }
 
     /// The sun's glitter on a facet whose line would be `dir` were it level,

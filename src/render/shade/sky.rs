@@ -7,7 +7,7 @@ use std::sync::Arc;
 
 use glam::Vec4;
 
-use super::colour::{Rgb, packed_lanes, unpack};
+use super::colour::{Rgb, packed_lanes, rgb_lanes, unpack};
 use super::weather::{Weather, WeatherRow};
 use crate::render::scan::canvas::Canvas;
 
@@ -230,8 +230,7 @@ const STEP: u32 = 4;
 /// `k * STEP`, as lanes (blue, green, red, 0; 0..=1).
 #[inline]
 fn anchor(row: &WeatherRow, g: Rgb, k: u32) -> Vec4 {
-    let c = row.over(g, (k * STEP) as f32 + 0.5);
-    Vec4::new(c[2], c[1], c[0], 0.0)
+    rgb_lanes(row.over(g, (k * STEP) as f32 + 0.5))
 }
 
 /// Pixel `x` of a row whose dither steps are `dither`, blended from the
