@@ -20,10 +20,10 @@ use crate::render::scene::Scene;
 /// Most threads used; more bands would mostly repeat per-strip work.
 const MAX_THREADS: usize = 8;
 /// Bands narrower than this are not worth a thread: each walks every strip
-/// and finds the cells reaching it. The last bands of a frame take 2 ms
-/// and more even this narrow (1080p, seed 42), and the other thread waits
-/// for the last: 16 columns rather than 32 made the frame 0.7% faster at
-/// 1080p and 1.6% at 4K.
+/// and finds the cells reaching it. The last bands of a frame take 1-2 ms
+/// even this narrow (1080p, seed 42), and the other thread waits for the
+/// last: 16 columns rather than 32 made the frame 0.7% faster at 1080p
+/// and 1.6% at 4K.
 const MIN_BAND_COLUMNS: u32 = 16;
 
 /// One band: its first column and its part of every frame row.
