@@ -4,7 +4,7 @@
 //! mountain's scene at several frame sizes, details and `low_detail`
 //! against each other: only the grid may differ between them.
 
-use glam::Vec2;
+use glam::{Vec2, Vec3};
 
 use super::scene::{FieldRef, Scene};
 use super::shade::light::Lighting;
@@ -66,6 +66,25 @@ impl SceneFacts {
     pub fn place(&self, x: f32, y: f32, z: f32) -> Vec2 {
         let p = self.view.project(x * self.cells, y * self.cells, z);
         p / Vec2::new(self.width, self.height)
+    }
+}
+
+impl SceneFacts {
+    /// The eye and the unit sight line through `x` of the frame's width
+    /// and `y` of its height from its top left corner, in world units (x
+    /// right, y towards the front, z up; grid point (`gx`, `gy`) at height
+    /// `z` lies at (`gx`, `gy`) times [`SceneFacts::cell`], `z`); `None` in
+    /// the oblique view, which has no eye. For measurements that trace
+    /// lines of their own, as the reflections' figure does.
+    pub fn sight_line(&self, x: f32, y: f32) -> Option<(Vec3, Vec3)> {
+        let eye = self.view.eye()?;
+        let sight = self.view.sight(x * self.width, y * self.height)?;
+        Some((eye, sight))
+    }
+
+    /// Width of one grid step in world units (heights' units).
+    pub fn cell(&self) -> f32 {
+        self.view.cell()
     }
 }
 
