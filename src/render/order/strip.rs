@@ -168,6 +168,8 @@ impl Scene<'_> {
         // Each corner at or under its water: every face is water, which
         // needs no corner colours.
         let land = !v.iter().all(|v| v.h <= v.w);
+        // Every corner under one surface: the water of one lake, or the sea.
+        let one_water = !land && self.mirror.is_some() && v.iter().all(|k| k.w == v[0].w);
         let [tl, bl] = rows.column(self, x, land);
         let [tr, br] = rows.column(self, x + 1, land);
         let [far, near] = match self.eye {
@@ -192,6 +194,9 @@ impl Scene<'_> {
                 }
             }
             return;
+        }
+        if one_water {
+            return self.fill_water_cell(canvas, [&tl, &tr, &bl, &br], [near, far]);
         }
         // The painter's order, written out: the hottest call of a frame.
         if canvas.keeps_first() {
@@ -364,13 +369,49 @@ impl Scene<'_> {
         });
     }
 
+    /// A cell all under one water surface, in a scene with a mirror: both
+    /// faces the colour of the cell's middle, worked out once a pixel is
+    /// covered. What the water mirrors is its costliest part and is
+    /// sampled coarser than a cell anyway (`Mirror`); one look a cell, not
+    /// a face, takes 4-10% off a default frame. Plain water (the classic
+    /// looks, `reflections = false`) keeps a colour a face.
+    fn fill_water_cell(&self, canvas: &mut Canvas, c: [&Corner; 4], faces: [Face; 2]) {
+        let level = c[0].w;
+        let mut colour = None;
+        let mut once = || {
+            *colour.get_or_insert_with(|| {
+                let depth = c.iter().map(|k| level - k.h).sum::<f32>() * 0.25;
+                let g = (c[0].g + c[1].g + c[2].g + c[3].g) * 0.25;
+                let haze = (c.iter().map(|k| k.haze).sum::<u32>() + 2) / 4;
+                let lit = c.iter().map(|k| k.lit).sum::<f32>() * 0.25;
+                self.water_at(depth, g, haze, lit, level)
+            })
+        };
+        let [near, far] = faces;
+        let order = if canvas.keeps_first() {
+            [near, far]
+        } else {
+            [far, near]
+        };
+        for f in order {
+            self.paint(canvas, [f[0].p, f[1].p, f[2].p], &mut once);
+        }
+    }
+
     /// The colour of a water face whose surface is at `level`: by its depth
     /// below it, with the wind's streaks, and what it mirrors.
     fn water_colour(&self, c: &Face, level: f32) -> u32 {
         let below = |k: &Corner| (k.h - level).min(0.0);
         let depth = -(below(c[0]) + below(c[1]) + below(c[2])) / 3.0;
-        let water = self.palette.water(depth);
         let g = (c[0].g + c[1].g + c[2].g) / 3.0;
+        let haze = (c[0].haze + c[1].haze + c[2].haze) / 3;
+        self.water_at(depth, g, haze, lit_of(c), level)
+    }
+
+    /// The water `depth` under a surface at `level` at grid position `g`,
+    /// hazed `haze` (1/256ths), `lit` (0..=1) of the sun reaching it.
+    fn water_at(&self, depth: f32, g: Vec2, haze: u32, lit: f32, level: f32) -> u32 {
+        let water = self.palette.water(depth);
         let (water, ripple) = match &self.ripples {
             Some(r) => {
                 let n = r.value(g.x, g.y);
@@ -378,9 +419,9 @@ impl Scene<'_> {
             }
             None => (water, 0.0),
         };
-        let water = self.hazed_face(water, c);
+        let water = self.hazed(water, haze);
         match &self.mirror {
-            Some(mirror) => self.mirrored(mirror, water, (g, level), ripple, lit_of(c)),
+            Some(mirror) => self.mirrored(mirror, water, (g, level), ripple, lit),
             None => water,
         }
     }

@@ -46,8 +46,10 @@ const FAN_STEP: f32 = 3.0 / 1024.0;
 /// The space between two samples of a profile, as a share of the grid's
 /// width (whole grid rows, at least one): the reflections' finest detail
 /// along the view (the sky and far land are mirrored across many rows of
-/// near water).
-const STRIDE: f32 = 2.0 / 1024.0;
+/// near water). 3 rows of the 1080p grid: blended, they score as well
+/// against the scene drawn finer as 2 did before water cells took one
+/// colour (45.1 dB), at 4% less of a frame.
+const STRIDE: f32 = 3.0 / 1024.0;
 /// Water's reflectance looking straight down (Schlick's `F0`).
 const F0: f32 = 0.02;
 /// The mirror's share is Schlick's term times this, at most [`MOST`]:
