@@ -31,8 +31,9 @@
 //! land hides it), the pixel showing it is the mirrored land. Per shore
 //! column, the mean luma of those land pixels against the mean of their
 //! water pixels, correlated along the shore as above. A perfect mirror
-//! (all mirror, no streaks, sampled six times finer) scores 0.99 raw and
-//! 0.80 detrended there, against 0.80 and 0.32 straight above.
+//! (the renderer's mirror constants set to all mirror, no streaks, sampled
+//! six times finer: BENCHMARKS.md) scores 0.99 raw and 0.80 detrended
+//! there, against 0.80 and 0.32 straight above.
 //!
 //! Even without reflections the water's own colour follows the land near
 //! it (shallow water lies off gentle, lighter shores), so the third
@@ -44,7 +45,7 @@
 
 use glam::{Vec2, Vec3};
 use mountains::render::classes::{Class, render_classes};
-use mountains::render::facts::SceneFacts;
+use mountains::render::facts::{SceneFacts, drawn_field};
 use mountains::render::{Frame, detail, render_full};
 use mountains::settings::{Settings, load};
 use mountains::terrain::{self, Heightfield};
@@ -113,7 +114,10 @@ fn main() {
         let detrended = pearson(&detrend(&land, window), &detrend(&water, window));
         print!("{seed} {} {raw:.3} {detrended:.3}", land.len());
         figures.push((raw, detrended));
-        let tracer = Tracer::new(&field, SceneFacts::of(&field, &s, w, h), w, h);
+        // The ground as drawn (turned by `rotation`, ...), which the
+        // facts' sight lines go with.
+        let drawn = drawn_field(&field, &s, w, h);
+        let tracer = Tracer::new(&drawn, SceneFacts::of(&field, &s, w, h), w, h);
         let unmirrored = Settings {
             reflections: false,
             ..s.clone()
@@ -122,7 +126,7 @@ fn main() {
         render_full(&field, &unmirrored, &mut plain);
         let [land, water, own] = traced_shores(&frame, &plain, &classes, &tracer);
         if land.len() < FEWEST {
-            println!(" | {} - -", land.len());
+            println!(" | {} - - | - -", land.len());
             continue;
         }
         let raw = pearson(&land, &water);
@@ -269,11 +273,12 @@ impl<'a> Tracer<'a> {
             return None;
         }
         let up = Vec3::new(sight.x, sight.y, -sight.z);
-        let land = self.march(sea, up)?;
+        let land = self.march(sea, up, f32::INFINITY)?;
         // Seen from the eye: no ground between (followed from a grid step
         // off the land, towards the eye, until it leaves the grid).
         let home = (eye - land).normalize();
-        if self.march(land + home * self.cell, home).is_some() {
+        let reach = (eye - land).length() - self.cell;
+        if self.march(land + home * self.cell, home, reach).is_some() {
             return None;
         }
         let g = Vec2::new(land.x, land.y) / (self.cell * self.cells);
@@ -283,15 +288,19 @@ impl<'a> Tracer<'a> {
     }
 
     /// Where the line from `from` along unit `dir` first meets the ground,
-    /// before it leaves the grid or rises over the highest land (found half
-    /// a grid step at a time, then to a hundredth of one).
-    fn march(&self, from: Vec3, dir: Vec3) -> Option<Vec3> {
+    /// within `reach` of `from` and before it leaves the grid or rises over
+    /// the highest land (found half a grid step at a time, then to 1/128th
+    /// of one).
+    fn march(&self, from: Vec3, dir: Vec3, reach: f32) -> Option<Vec3> {
         let across = Vec2::new(dir.x, dir.y).length() / self.cell;
         let step = 0.5 / across.max(1e-6);
         let above = |p: Vec3| self.height(p).map(|h| p.z > h);
         let mut t = 0.0;
         loop {
             let next = t + step;
+            if next > reach {
+                return None;
+            }
             let p = from + dir * next;
             if (dir.z > 0.0 && p.z > self.top) || self.height(p).is_none() {
                 return None;
@@ -359,6 +368,11 @@ fn pearson(a: &[f64], b: &[f64]) -> f64 {
 /// beyond what its own colour, as drawn without reflections, does. 0
 /// where `b` is all `c` (no reflections).
 fn partial(a: &[f64], b: &[f64], c: &[f64]) -> f64 {
+    let mean = c.iter().sum::<f64>() / c.len() as f64;
+    if c.iter().all(|&v| v == mean) {
+        // Nothing to take out.
+        return pearson(a, b);
+    }
     let (ab, ac, bc) = (pearson(a, b), pearson(a, c), pearson(b, c));
     let rest = ((1.0 - ac * ac) * (1.0 - bc * bc)).sqrt();
     if rest < 1e-9 || !rest.is_finite() {

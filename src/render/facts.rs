@@ -72,8 +72,9 @@ impl SceneFacts {
 impl SceneFacts {
     /// The eye and the unit sight line through `x` of the frame's width
     /// and `y` of its height from its top left corner, in world units (x
-    /// right, y towards the front, z up; grid point (`gx`, `gy`) at height
-    /// `z` lies at (`gx`, `gy`) times [`SceneFacts::cell`], `z`); `None` in
+    /// right, y towards the front, z up; point (`gx`, `gy`) of the grid
+    /// drawn ([`drawn_field`]) at height `z` lies at (`gx`, `gy`) times
+    /// [`SceneFacts::cell`], `z`); `None` in
     /// the oblique view, which has no eye. For measurements that trace
     /// lines of their own, as the reflections' figure does.
     pub fn sight_line(&self, x: f32, y: f32) -> Option<(Vec3, Vec3)> {
@@ -82,10 +83,27 @@ impl SceneFacts {
         Some((eye, sight))
     }
 
-    /// Width of one grid step in world units (heights' units).
+    /// Width of one step of the grid drawn (see [`drawn_field`]) in world
+    /// units (heights' units). Unlike the rest of the facts it depends on
+    /// the grid: it is for tracing lines over the ground drawn.
     pub fn cell(&self) -> f32 {
         self.view.cell()
     }
+}
+
+/// The field as drawing `field` with `settings` in a `width` x `height`
+/// frame lays it out, which [`SceneFacts::sight_line`] and
+/// [`SceneFacts::cell`] go with: turned by `rotation` (and the essay's
+/// turn), a data set at its drawn scale, Sonar's and Outline's coarser
+/// grid; `field` itself otherwise.
+pub fn drawn_field(
+    field: &Heightfield,
+    settings: &Settings,
+    width: u32,
+    height: u32,
+) -> Heightfield {
+    let scene = Scene::new(FieldRef::Borrowed(field), settings, width, height);
+    (*scene.field).clone()
 }
 
 impl SceneFacts {

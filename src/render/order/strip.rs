@@ -371,9 +371,9 @@ impl Scene<'_> {
 
     /// A cell all under one water surface, in a scene with a mirror: both
     /// faces the colour of the cell's middle, worked out once a pixel is
-    /// covered. What the water mirrors is its costliest part and is
-    /// sampled coarser than a cell anyway (`Mirror`); one look a cell, not
-    /// a face, takes 4-10% off a default frame. Plain water (the classic
+    /// covered: its depth, streak, glitter and what it mirrors, the last
+    /// sampled about as coarsely anyway (`Mirror`). A look a cell, not a
+    /// face, takes 4-7% off a default frame. Plain water (the classic
     /// looks, `reflections = false`) keeps a colour a face.
     fn fill_water_cell(&self, canvas: &mut Canvas, c: [&Corner; 4], faces: [Face; 2]) {
         let level = c[0].w;
