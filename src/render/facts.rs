@@ -74,9 +74,9 @@ impl SceneFacts {
     /// and `y` of its height from its top left corner, in world units (x
     /// right, y towards the front, z up; point (`gx`, `gy`) of the grid
     /// drawn ([`drawn_field`]) at height `z` lies at (`gx`, `gy`) times
-    /// [`SceneFacts::cell`], `z`); `None` in
-    /// the oblique view, which has no eye. For measurements that trace
-    /// lines of their own, as the reflections' figure does.
+    /// [`SceneFacts::cell`], `z`); `None` in the oblique view, which has
+    /// no eye. For measurements that trace lines of their own, as the
+    /// reflections' figure does.
     pub fn sight_line(&self, x: f32, y: f32) -> Option<(Vec3, Vec3)> {
         let eye = self.view.eye()?;
         let sight = self.view.sight(x * self.width, y * self.height)?;
