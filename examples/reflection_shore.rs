@@ -44,6 +44,7 @@
 //! without reflections.
 
 use glam::{Vec2, Vec3};
+use mountains::quality::image;
 use mountains::render::classes::{Class, render_classes};
 use mountains::render::facts::{SceneFacts, drawn_field};
 use mountains::render::{Frame, detail, render_full};
@@ -229,11 +230,10 @@ fn shore_pixels(classes: &Frame) -> Vec<(u32, u32)> {
         .collect()
 }
 
-/// The luma of pixel (`x`, `y`).
+/// The luma of pixel (`x`, `y`), as the quality measurement takes it.
 fn luma(frame: &Frame, x: u32, y: u32) -> f64 {
     let c = frame.pixels()[(y * frame.width() + x) as usize];
-    let (r, g, b) = ((c >> 16) & 0xff, (c >> 8) & 0xff, c & 0xff);
-    0.299 * r as f64 + 0.587 * g as f64 + 0.114 * b as f64
+    f64::from(image::luma(image::channels(c)))
 }
 
 /// Sight lines reflected off the sea and followed over the field.
@@ -275,7 +275,7 @@ impl<'a> Tracer<'a> {
         let up = Vec3::new(sight.x, sight.y, -sight.z);
         let land = self.march(sea, up, f32::INFINITY)?;
         // Seen from the eye: no ground between (followed from a grid step
-        // off the land, towards the eye, until it leaves the grid).
+        // off the land towards the eye, to a grid step short of it).
         let home = (eye - land).normalize();
         let reach = (eye - land).length() - self.cell;
         if self.march(land + home * self.cell, home, reach).is_some() {

@@ -443,57 +443,60 @@ impl View {
 mod tests {
     use super::*;
 
-    #[test]
-    fn a_row_projects_to_the_same_pixels_as_the_view() {
+    /// `check` for rows at the back, the middle and the front of a small
+    /// field in each kind of view.
+    fn each_row(mut check: impl FnMut(ViewKind, &View, f32, &RowView)) {
         for kind in [ViewKind::Vista, ViewKind::Perspective, ViewKind::Oblique] {
             let view = View::new(kind, 65, 250.0, 60.0, 640, 360);
             for gy in [0.0, 17.0, 64.0] {
-                let row = view.along_row(gy);
-                for (gx, z) in [(0.0, 0.0), (5.0, 12.5), (64.0, 60.0), (31.0, -3.0)] {
-                    let (a, b) = (row.project(gx, z), view.project(gx, gy, z));
-                    assert_eq!(a, b, "{kind:?} at ({gx}, {gy}, {z})");
-                }
+                check(kind, &view, gy, &view.along_row(gy));
             }
         }
     }
 
     #[test]
+    fn a_row_projects_to_the_same_pixels_as_the_view() {
+        each_row(|kind, view, gy, row| {
+            for (gx, z) in [(0.0, 0.0), (5.0, 12.5), (64.0, 60.0), (31.0, -3.0)] {
+                let (a, b) = (row.project(gx, z), view.project(gx, gy, z));
+                assert_eq!(a, b, "{kind:?} at ({gx}, {gy}, {z})");
+            }
+        });
+    }
+
+    #[test]
     fn four_points_at_once_project_to_the_same_bits_as_one_by_one() {
-        for kind in [ViewKind::Vista, ViewKind::Perspective, ViewKind::Oblique] {
-            let view = View::new(kind, 65, 250.0, 60.0, 640, 360);
-            for gy in [0.0, 17.0, 64.0] {
-                let row = view.along_row(gy);
-                // Behind the eye, far off the grid and at odd heights too.
-                let gx = [0.0, 5.0, 64.0, 31.0, 1e4, -700.0, 13.0, 47.0];
-                let z = [0.0, 12.5, 60.0, -3.0, 1e5, 0.1, -1e4, 7.25];
-                // Fewer than four: the lanes given, the same bits.
-                for n in 1..=4 {
-                    let points: Vec<[f32; 2]> = (0..n).map(|k| [gx[k], z[k]]).collect();
-                    let [px, py] = row.project_few(&points);
-                    for k in 0..n {
-                        let one = row.project(gx[k], z[k]);
-                        assert_eq!(
-                            [px[k].to_bits(), py[k].to_bits()],
-                            [one.x.to_bits(), one.y.to_bits()]
-                        );
-                    }
-                }
-                for k in (0..gx.len()).step_by(4) {
-                    let lanes = |v: &[f32; 8]| Vec4::from_slice(&v[k..k + 4]);
-                    let [px, py] = row.project4(lanes(&gx), lanes(&z));
-                    for lane in 0..4 {
-                        let one = row.project(gx[k + lane], z[k + lane]);
-                        let four = Vec2::new(px[lane], py[lane]);
-                        assert_eq!(
-                            (one.x.to_bits(), one.y.to_bits()),
-                            (four.x.to_bits(), four.y.to_bits()),
-                            "{kind:?} at ({}, {gy}, {})",
-                            gx[k + lane],
-                            z[k + lane]
-                        );
-                    }
+        each_row(|kind, _, gy, row| {
+            // Behind the eye, far off the grid and at odd heights too.
+            let gx = [0.0, 5.0, 64.0, 31.0, 1e4, -700.0, 13.0, 47.0];
+            let z = [0.0, 12.5, 60.0, -3.0, 1e5, 0.1, -1e4, 7.25];
+            // Fewer than four: the lanes given, the same bits.
+            for n in 1..=4 {
+                let points: Vec<[f32; 2]> = (0..n).map(|k| [gx[k], z[k]]).collect();
+                let [px, py] = row.project_few(&points);
+                for k in 0..n {
+                    let one = row.project(gx[k], z[k]);
+                    assert_eq!(
+                        [px[k].to_bits(), py[k].to_bits()],
+                        [one.x.to_bits(), one.y.to_bits()]
+                    );
                 }
             }
-        }
+            for k in (0..gx.len()).step_by(4) {
+                let lanes = |v: &[f32; 8]| Vec4::from_slice(&v[k..k + 4]);
+                let [px, py] = row.project4(lanes(&gx), lanes(&z));
+                for lane in 0..4 {
+                    let one = row.project(gx[k + lane], z[k + lane]);
+                    let four = Vec2::new(px[lane], py[lane]);
+                    assert_eq!(
+                        (one.x.to_bits(), one.y.to_bits()),
+                        (four.x.to_bits(), four.y.to_bits()),
+                        "{kind:?} at ({}, {gy}, {})",
+                        gx[k + lane],
+                        z[k + lane]
+                    );
+                }
+            }
+        });
     }
 }

@@ -376,17 +376,8 @@ impl Scene<'_> {
     /// face, takes 4-7% off a default frame. Plain water (the classic
     /// looks, `reflections = false`) keeps a colour a face.
     fn fill_water_cell(&self, canvas: &mut Canvas, c: [&Corner; 4], faces: [Face; 2]) {
-        let level = c[0].w;
         let mut colour = None;
-        let mut once = || {
-            *colour.get_or_insert_with(|| {
-                let depth = c.iter().map(|k| level - k.h).sum::<f32>() * 0.25;
-                let g = (c[0].g + c[1].g + c[2].g + c[3].g) * 0.25;
-                let haze = (c.iter().map(|k| k.haze).sum::<u32>() + 2) / 4;
-                let lit = c.iter().map(|k| k.lit).sum::<f32>() * 0.25;
-                self.water_at(depth, g, haze, lit, level)
-            })
-        };
+        let mut once = || *colour.get_or_insert_with(|| self.water_colour(&c, c[0].w));
         let [near, far] = faces;
         let order = if canvas.keeps_first() {
             [near, far]
@@ -398,19 +389,15 @@ impl Scene<'_> {
         }
     }
 
-    /// The colour of a water face whose surface is at `level`: by its depth
-    /// below it, with the wind's streaks, and what it mirrors.
-    fn water_colour(&self, c: &Face, level: f32) -> u32 {
-        let below = |k: &Corner| (k.h - level).min(0.0);
-        let depth = -(below(c[0]) + below(c[1]) + below(c[2])) / 3.0;
-        let g = (c[0].g + c[1].g + c[2].g) / 3.0;
-        let haze = (c[0].haze + c[1].haze + c[2].haze) / 3;
-        self.water_at(depth, g, haze, lit_of(c), level)
-    }
-
-    /// The water `depth` under a surface at `level` at grid position `g`,
-    /// hazed `haze` (1/256ths), `lit` (0..=1) of the sun reaching it.
-    fn water_at(&self, depth: f32, g: Vec2, haze: u32, lit: f32, level: f32) -> u32 {
+    /// The colour of the water over corners `c` (a face's, or a cell's)
+    /// under a surface at `level`: by their mean depth below it, with the
+    /// wind's streak at their middle, and what it mirrors there.
+    fn water_colour(&self, c: &[&Corner], level: f32) -> u32 {
+        let n = c.len() as f32;
+        let depth = -c.iter().map(|k| (k.h - level).min(0.0)).sum::<f32>() / n;
+        let g = c.iter().map(|k| k.g).sum::<Vec2>() / n;
+        let haze = c.iter().map(|k| k.haze).sum::<u32>() / c.len() as u32;
+        let lit = c.iter().map(|k| k.lit).sum::<f32>() / n;
         let water = self.palette.water(depth);
         let (water, ripple) = match &self.ripples {
             Some(r) => {

@@ -49,7 +49,7 @@ const FAN_STEP: f32 = 3.0 / 1024.0;
 /// near water). 3 rows of the 1080p grid, against 2: the water 45.1 dB
 /// against the scene drawn finer (44.7), 3-4% less of a default frame, but
 /// a softer image along the view (the mirror's part of the reflection
-/// figure, examples/reflection_shore, 0.322 against 0.355; issue 19
+/// figure, examples/reflection_shore, 0.321 against 0.355; issue 19
 /// wants 0.3).
 const STRIDE: f32 = 3.0 / 1024.0;
 /// Water's reflectance looking straight down (Schlick's `F0`).
@@ -104,7 +104,7 @@ pub(crate) struct Look {
     pub near_sun: Option<Vec3>,
 }
 
-/// A sample's look unpacked (see [`Mirror::pack`]), or several blended.
+/// A sample's look unpacked (see [`Sampled::pack`]), or several blended.
 #[derive(Debug, Clone, Copy)]
 struct Sampled {
     colour: u32,
