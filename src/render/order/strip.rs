@@ -77,13 +77,13 @@ struct StripRows<'r> {
 
 impl StripRows<'_> {
     /// The corners at column `x` of the back and the front row, their
-    /// points shaded first (each once), and coloured if `coloured` (see
+    /// points shaded first (each once; lit and coloured too if `land`, see
     /// [`Scene::shade`]).
     #[inline(always)]
-    fn column(&mut self, scene: &Scene, x: usize, coloured: bool) -> [Corner; 2] {
+    fn column(&mut self, scene: &Scene, x: usize, land: bool) -> [Corner; 2] {
         let [y0, y1] = self.y;
-        scene.shade(&mut self.top[x], x, y0, coloured);
-        scene.shade(&mut self.bottom[x], x, y1, coloured);
+        scene.shade(&mut self.top[x], x, y0, land);
+        scene.shade(&mut self.bottom[x], x, y1, land);
         [
             Corner::at(x, y0, &self.top[x]),
             Corner::at(x, y1, &self.bottom[x]),
