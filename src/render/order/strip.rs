@@ -170,6 +170,9 @@ impl Scene<'_> {
         let land = !v.iter().all(|v| v.h <= v.w);
         // Every corner under one surface: the water of one lake, or the sea.
         let one_water = !land && self.mirror.is_some() && v.iter().all(|k| k.w == v[0].w);
+        // Every corner above every corner's water: both faces are land.
+        let top_water = v.iter().fold(f32::NEG_INFINITY, |w, v| w.max(v.w));
+        let dry = v.iter().all(|v| v.h > top_water);
         let [tl, bl] = rows.column(self, x, land);
         let [tr, br] = rows.column(self, x + 1, land);
         let [far, near] = match self.eye {
@@ -197,6 +200,18 @@ impl Scene<'_> {
         }
         if one_water {
             return self.fill_water_cell(canvas, [&tl, &tr, &bl, &br], [near, far]);
+        }
+        if dry && self.smooth() {
+            // Land alone: each face's corners blended, without `fill_face`'s
+            // look for water.
+            let [first, second] = if canvas.keeps_first() {
+                [near, far]
+            } else {
+                [far, near]
+            };
+            self.fill_smooth_land(canvas, first);
+            self.fill_smooth_land(canvas, second);
+            return;
         }
         // The painter's order, written out: the hottest call of a frame.
         if canvas.keeps_first() {
@@ -331,16 +346,25 @@ impl Scene<'_> {
     /// those faces would only be painted over. On rugged ground that is a
     /// good share of the triangles, and the tallest, thinnest ones.
     fn fill_land(&self, canvas: &mut Canvas, c: Face, normal: impl FnOnce() -> Vec3, lit: f32) {
+        if self.smooth() {
+            return self.fill_smooth_land(canvas, c);
+        }
         if faces_away([c[0].p, c[1].p, c[2].p]) {
             return;
-        }
-        if self.smooth() {
-            let colours = [c[0].colour, c[1].colour, c[2].colour];
-            return self.paint_blend(canvas, [c[0].p, c[1].p, c[2].p], colours);
         }
         self.paint(canvas, [c[0].p, c[1].p, c[2].p], || {
             self.land_colour(&c, normal(), lit)
         });
+    }
+
+    /// A land triangle under smooth shading ([`Scene::fill_land`]'s).
+    #[inline(always)]
+    fn fill_smooth_land(&self, canvas: &mut Canvas, c: Face) {
+        if faces_away([c[0].p, c[1].p, c[2].p]) {
+            return;
+        }
+        let colours = [c[0].colour, c[1].colour, c[2].colour];
+        self.paint_blend(canvas, [c[0].p, c[1].p, c[2].p], colours);
     }
 
     /// The one colour of a land face (flat shading).
