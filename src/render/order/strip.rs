@@ -169,7 +169,8 @@ impl Scene<'_> {
         // needs no corner colours.
         let land = !v.iter().all(|v| v.h <= v.w);
         // Every corner under one surface: the water of one lake, or the sea.
-        let one_water = !land && self.mirror.is_some() && v.iter().all(|k| k.w == v[0].w);
+        let one_water = !land && v.iter().all(|k| k.w == v[0].w);
+        let surface = v[0].w;
         // Every corner above every corner's water: both faces are land.
         let top_water = v.iter().fold(f32::NEG_INFINITY, |w, v| w.max(v.w));
         let dry = v.iter().all(|v| v.h > top_water);
@@ -198,28 +199,29 @@ impl Scene<'_> {
             }
             return;
         }
-        if one_water {
+        if one_water && self.mirror.is_some() {
             return self.fill_water_cell(canvas, [&tl, &tr, &bl, &br], [near, far]);
         }
-        if dry && self.smooth() {
-            // Land alone: each face's corners blended, without `fill_face`'s
-            // look for water.
-            let [first, second] = if canvas.keeps_first() {
-                [near, far]
-            } else {
-                [far, near]
-            };
-            self.fill_smooth_land(canvas, first);
-            self.fill_smooth_land(canvas, second);
+        let order = if canvas.keeps_first() {
+            [near, far]
+        } else {
+            [far, near]
+        };
+        if one_water {
+            // Both faces water under one surface: `fill_face`'s choice made.
+            for face in order {
+                self.fill_water(canvas, face, surface);
+            }
             return;
         }
-        // The painter's order, written out: the hottest call of a frame.
-        if canvas.keeps_first() {
-            self.fill_face(canvas, near);
-            self.fill_face(canvas, far);
-        } else {
-            self.fill_face(canvas, far);
-            self.fill_face(canvas, near);
+        for face in order {
+            if dry && self.smooth() {
+                // Land alone: each face's corners blended, without
+                // `fill_face`'s look for water.
+                self.fill_smooth_land(canvas, face);
+            } else {
+                self.fill_face(canvas, face);
+            }
         }
     }
 
