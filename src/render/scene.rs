@@ -720,3 +720,43 @@ fn turned(field: FieldRef<'_>, rotation: u32) -> FieldRef<'_> {
     out.set_lakes(field.lakes().map(|l| Arc::new(l.turned(source))));
     FieldRef::Shared(Arc::new(out))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::settings::{Clouds, Detail};
+
+    /// Point (`x`, `y`) of `scene`, projected and then shaded with `land`.
+    fn shaded(scene: &Scene, x: usize, y: usize, land: bool) -> Vert {
+        let mut row = vec![Vert::default(); scene.cells() + 1];
+        scene.project_points(y, x..x + 1, &mut row);
+        scene.shade(&mut row[x], x, y, land);
+        row[x]
+    }
+
+    #[test]
+    fn points_are_lit_only_where_land_or_a_mirror_needs_their_light() {
+        let settings = |reflections| Settings {
+            detail: Detail::Level(6),
+            clouds: Clouds::Amount(0.0),
+            reflections,
+            ..Settings::default()
+        };
+        let field = crate::terrain::generate(&settings(false), 42);
+        let (x, y) = (40, 50);
+        let plain = Scene::new(FieldRef::Borrowed(&field), &settings(false), 320, 180);
+        assert!(plain.mirror.is_none() && plain.smooth);
+        let water = shaded(&plain, x, y, false);
+        assert!(water.hazed && !water.lit_known && !water.coloured);
+        let land = shaded(&plain, x, y, true);
+        assert!(land.hazed && land.lit_known && land.coloured);
+        assert_eq!((land.lit, land.sky), plain.light_at(x, y));
+        assert_eq!(land.haze, water.haze);
+        // Water that mirrors takes its points' light.
+        let mirroring = Scene::new(FieldRef::Borrowed(&field), &settings(true), 320, 180);
+        assert!(mirroring.mirror.is_some());
+        let water = shaded(&mirroring, x, y, false);
+        assert!(water.lit_known && !water.coloured);
+        assert_eq!((water.lit, water.sky), mirroring.light_at(x, y));
+    }
+}
