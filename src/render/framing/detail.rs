@@ -7,13 +7,12 @@
 //! points a side at 1920x1080 in the vista, 2049 at 3840x2160, far fewer in
 //! a 152x112 preview.
 //!
-//! Faces stay flat-shaded, one colour each, as in the classics. Shading
-//! interpolated across a face (Gouraud) was weighed for large foreground
-//! cells and left out: at this rule's ~4 px a face is a grain of the land's
-//! texture (seen at 1:1), which interpolation would only smooth away, for
-//! 5-13% of a frame (LOOKS.md); larger faces come only from a
-//! detail the user picks or from `low_detail`, whose big facets are the
-//! look Mountain Terrain asks for.
+//! At this rule's ~4 px a face is a grain of the land's texture (seen at
+//! 1:1): under smooth shading (the default in the vista and the
+//! perspective) its corners' colours blend across it; the classic looks
+//! keep one colour a face, as the seeds drew them. Larger faces come only
+//! from a detail the user picks or from `low_detail`, whose big facets
+//! are the look Mountain Terrain asks for.
 
 use super::view::View;
 use crate::settings::{Detail, Settings};
