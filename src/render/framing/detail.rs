@@ -9,10 +9,10 @@
 //!
 //! At this rule's ~4 px a face is a grain of the land's texture (seen at
 //! 1:1): under smooth shading (the default in the vista and the
-//! perspective) its corners' colours blend across it; the classic looks
-//! keep one colour a face, as the seeds drew them. Larger faces come only
-//! from a detail the user picks or from `low_detail`, whose big facets
-//! are the look Mountain Terrain asks for.
+//! perspective) its corners' colours blend across it; the classic looks,
+//! the seed programs' and `shading = "flat"` keep one colour a face.
+//! Larger faces come only from a detail the user picks or from
+//! `low_detail`, whose big facets are the look Mountain Terrain asks for.
 
 use super::view::View;
 use crate::settings::{Detail, Settings};

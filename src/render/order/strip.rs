@@ -38,6 +38,9 @@ pub(super) struct Corner {
     pub(super) colour: u32,
     /// Outside the land (see `Vert::off`).
     pub(super) off: bool,
+    /// Whether `lit` and `sky` are worked out (see `Vert::lit_known`): a
+    /// land face's corners always are.
+    pub(super) lit_known: bool,
 }
 
 impl Corner {
@@ -52,6 +55,7 @@ impl Corner {
             haze: v.haze,
             colour: v.colour,
             off: v.off,
+            lit_known: v.lit_known,
         }
     }
 }
@@ -77,8 +81,9 @@ struct StripRows<'r> {
 
 impl StripRows<'_> {
     /// The corners at column `x` of the back and the front row, their
-    /// points shaded first (each once; lit and coloured too if `land`, see
-    /// [`Scene::shade`]).
+    /// points shaded first, each once: lit if `land` (a land face may touch
+    /// them) or the water mirrors, coloured if `land` under smooth shading
+    /// (see [`Scene::shade`]).
     #[inline(always)]
     fn column(&mut self, scene: &Scene, x: usize, land: bool) -> [Corner; 2] {
         let [y0, y1] = self.y;
@@ -166,8 +171,10 @@ impl Scene<'_> {
             }
         }
         // Each corner at or under its water: every face is water, which
-        // needs no corner colours.
-        let land = !v.iter().all(|v| v.h <= v.w);
+        // needs no corner colours (nor light, unless it mirrors). A cut
+        // cell's pieces take their heights from the square's side, which
+        // may stand above the water its corners lie under.
+        let land = cut || !v.iter().all(|v| v.h <= v.w);
         // Every corner under one surface: the water of one lake, or the sea.
         let one_water = !land && v.iter().all(|k| k.w == v[0].w);
         let surface = v[0].w;
@@ -322,6 +329,7 @@ impl Scene<'_> {
             haze: (a.haze as f32 + (b.haze as f32 - a.haze as f32) * f) as u32,
             colour: mix_packed(a.colour, b.colour, f),
             off: false,
+            lit_known: a.lit_known && b.lit_known,
         }
     }
 
@@ -371,6 +379,10 @@ impl Scene<'_> {
 
     /// The one colour of a land face (flat shading).
     fn land_colour(&self, c: &Face, normal: Vec3, lit: f32) -> u32 {
+        debug_assert!(
+            c.iter().all(|k| k.lit_known),
+            "a land face's corner is unlit"
+        );
         let mean = (c[0].h + c[1].h + c[2].h) / 3.0;
         let sky = (c[0].sky + c[1].sky + c[2].sky) / 3.0;
         let land = self.palette.land_in(mean.max(0.0), normal, lit, sky);
@@ -624,6 +636,10 @@ fn faces_away(p: [Fixed2; 3]) -> bool {
 
 /// Light on a face: the mean of its corners'.
 fn lit_of(c: &Face) -> f32 {
+    debug_assert!(
+        c.iter().all(|k| k.lit_known),
+        "a land face's corner is unlit"
+    );
     (c[0].lit + c[1].lit + c[2].lit) / 3.0
 }
 
