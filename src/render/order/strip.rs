@@ -188,48 +188,33 @@ impl Scene<'_> {
             None if rightward && !self.listing_diagonal => [[&tl, &tr, &bl], [&tr, &br, &bl]],
             None => [[&tl, &tr, &br], [&tl, &br, &bl]],
         };
+        // The farther face first (reversed on a canvas keeping the first
+        // write), each drawn the way the cell's kind needs.
+        let faces = [far, near].into_iter();
         if cut {
             // On the edge of the land: each face's part inside the square.
-            let faces = if canvas.keeps_first() {
-                [near, far]
-            } else {
-                [far, near]
-            };
-            for face in faces.into_iter().filter(|f| f.iter().any(|c| !c.off)) {
-                match &self.outline {
-                    Some(outline) if face.iter().any(|c| c.off) => {
-                        self.fill_cut(canvas, outline, face)
-                    }
-                    _ if face.iter().all(|c| !c.off) => self.fill_face(canvas, face),
-                    _ => {}
-                }
-            }
-            return;
+            return painter_order(canvas, faces, |canvas, face| match &self.outline {
+                _ if face.iter().all(|c| c.off) => {}
+                Some(outline) if face.iter().any(|c| c.off) => self.fill_cut(canvas, outline, face),
+                _ if face.iter().all(|c| !c.off) => self.fill_face(canvas, face),
+                _ => {}
+            });
         }
         if one_water && self.mirror.is_some() {
-            return self.fill_water_cell(canvas, [&tl, &tr, &bl, &br], [near, far]);
+            return self.fill_water_cell(canvas, [&tl, &tr, &bl, &br], faces);
         }
-        let order = if canvas.keeps_first() {
-            [near, far]
-        } else {
-            [far, near]
-        };
-        if one_water {
-            // Both faces water under one surface: `fill_face`'s choice made.
-            for face in order {
+        painter_order(canvas, faces, |canvas, face| {
+            if one_water {
+                // Water under one surface: `fill_face`'s choice made.
                 self.fill_water(canvas, face, surface);
-            }
-            return;
-        }
-        for face in order {
-            if dry && self.smooth() {
-                // Land alone: each face's corners blended, without
-                // `fill_face`'s look for water.
+            } else if dry && self.smooth() {
+                // Land alone: the corners blended, without `fill_face`'s
+                // look for water.
                 self.fill_smooth_land(canvas, face);
             } else {
                 self.fill_face(canvas, face);
             }
-        }
+        });
     }
 
     /// One grid triangle: water, land, or both split at the water line
@@ -412,19 +397,19 @@ impl Scene<'_> {
     /// covered: its depth, streak, glitter and what it mirrors, the last
     /// sampled about as coarsely anyway (`Mirror`). A look a cell, not a
     /// face, takes 4-7% off a default frame. Plain water (the classic
-    /// looks, `reflections = false`) keeps a colour a face.
-    fn fill_water_cell(&self, canvas: &mut Canvas, c: [&Corner; 4], faces: [Face; 2]) {
+    /// looks, `reflections = false`) keeps a colour a face. `faces` are
+    /// the cell's, the farther first.
+    fn fill_water_cell<'c>(
+        &self,
+        canvas: &mut Canvas,
+        c: [&Corner; 4],
+        faces: impl DoubleEndedIterator<Item = Face<'c>>,
+    ) {
         let mut colour = None;
         let mut once = || *colour.get_or_insert_with(|| self.water_colour(&c, c[0].w));
-        let [near, far] = faces;
-        let order = if canvas.keeps_first() {
-            [near, far]
-        } else {
-            [far, near]
-        };
-        for f in order {
-            self.paint(canvas, [f[0].p, f[1].p, f[2].p], &mut once);
-        }
+        painter_order(canvas, faces, |canvas, f| {
+            self.paint(canvas, [f[0].p, f[1].p, f[2].p], &mut once)
+        });
     }
 
     /// The colour of the water over corners `c` (a face's, or a cell's)
