@@ -277,3 +277,36 @@ fn placed_points_on_their_sight_lines(settings: &Settings) {
         );
     }
 }
+
+/// The field the measurements trace over is the one drawn: turned with
+/// the mountain, coarsened where Sonar needs a legible grid, the field
+/// itself otherwise.
+#[test]
+fn the_drawn_field_is_the_field_as_the_frame_lays_it_out() {
+    use mountains::render::facts::drawn_field;
+    use mountains::settings::{ColorMode, Detail};
+    let settings = Settings {
+        detail: Detail::Level(6),
+        ..Settings::default()
+    };
+    let field = terrain::generate(&settings, 3);
+    let n = field.size();
+    let same = drawn_field(&field, &settings, 640, 360);
+    assert_eq!(same.size(), n);
+    assert_eq!(same.row(17), field.row(17));
+    // A quarter turn brings the old right edge to the back.
+    let turned = Settings {
+        rotation: 90,
+        ..settings.clone()
+    };
+    let drawn = drawn_field(&field, &turned, 640, 360);
+    for (x, y) in [(0, 0), (5, 40), (63, 2), (30, 64)] {
+        assert_eq!(drawn.get(x, y), field.get(n - 1 - y, x), "({x}, {y})");
+    }
+    // Sonar in a preview draws a coarser grid.
+    let sonar = Settings {
+        color: ColorMode::Sonar,
+        ..settings
+    };
+    assert!(drawn_field(&field, &sonar, 152, 112).size() < n);
+}

@@ -102,8 +102,8 @@ pub fn drawn_field(
     width: u32,
     height: u32,
 ) -> Heightfield {
-    let scene = Scene::new(FieldRef::Borrowed(field), settings, width, height);
-    (*scene.field).clone()
+    let (drawn, _, _) = super::scene::laid_out(FieldRef::Borrowed(field), settings, width, height);
+    (*drawn).clone()
 }
 
 impl SceneFacts {

@@ -194,29 +194,7 @@ impl<'a> Scene<'a> {
     /// Prepares `field` seen as `settings` ask, in a `width` x `height` frame.
     pub(crate) fn new(field: FieldRef<'a>, settings: &Settings, width: u32, height: u32) -> Self {
         let style = Style::of(settings.color);
-        let mut field = turned(field, settings.rotation);
-        // The essay's square, before it is turned, for its camera.
-        let mut square = None;
-        let mut outline = None;
-        if settings.look == Look::Essay {
-            square = Some(easel::Square::of(&field));
-            let degrees = turn::essay_degrees(field.identity());
-            outline = Some(Outline {
-                square: field.again(),
-                turn: turn::Turn::new(field.size(), degrees),
-                scale: 1.0,
-            });
-            field = FieldRef::Shared(Arc::new(turn::turned_by(&field, degrees)));
-        }
-        if let Some(drawn) = field.drawn() {
-            let f = field.drawn_scale();
-            square = square.map(|s| s.scaled(f));
-            outline = outline.map(|o| Outline { scale: f, ..o });
-            field = FieldRef::Shared(Arc::new(drawn));
-        }
-        if matches!(style, Style::Sonar | Style::Outline) {
-            field = legible(field, settings, width, height);
-        }
+        let (field, square, outline) = laid_out(field, settings, width, height);
         let lighting = Palette::lighting_for(settings, &field);
         let shaded = style.is_filled();
         let wants_sky = style == Style::Shaded && !lighting.classic;
@@ -696,6 +674,42 @@ fn legible<'a>(field: FieldRef<'a>, settings: &Settings, width: u32, height: u32
     }
     let levels = (min_px / px).log2().ceil() as u32;
     FieldRef::Shared(Arc::new(field.coarsened(levels)))
+}
+
+/// `field` as `settings` lay it out in a `width` x `height` frame: turned
+/// by `rotation` and the essay's turn, a data set at its drawn scale,
+/// Sonar's and Outline's grid coarsened to stay legible; with the essay's
+/// square (before its turn, for its camera) and the outline its cells are
+/// cut along.
+pub(crate) fn laid_out<'a>(
+    field: FieldRef<'a>,
+    settings: &Settings,
+    width: u32,
+    height: u32,
+) -> (FieldRef<'a>, Option<easel::Square>, Option<Outline<'a>>) {
+    let mut field = turned(field, settings.rotation);
+    let mut square = None;
+    let mut outline = None;
+    if settings.look == Look::Essay {
+        square = Some(easel::Square::of(&field));
+        let degrees = turn::essay_degrees(field.identity());
+        outline = Some(Outline {
+            square: field.again(),
+            turn: turn::Turn::new(field.size(), degrees),
+            scale: 1.0,
+        });
+        field = FieldRef::Shared(Arc::new(turn::turned_by(&field, degrees)));
+    }
+    if let Some(drawn) = field.drawn() {
+        let f = field.drawn_scale();
+        square = square.map(|s| s.scaled(f));
+        outline = outline.map(|o| Outline { scale: f, ..o });
+        field = FieldRef::Shared(Arc::new(drawn));
+    }
+    if matches!(Style::of(settings.color), Style::Sonar | Style::Outline) {
+        field = legible(field, settings, width, height);
+    }
+    (field, square, outline)
 }
 
 fn turned(field: FieldRef<'_>, rotation: u32) -> FieldRef<'_> {
