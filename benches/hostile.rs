@@ -1,4 +1,4 @@
-//! How long the hostile corpus takes (tests/hostile_support): the whole of
+//! How long the hostile corpus takes (tests/common/hostile.rs): the whole of
 //! each half, and the slowest single case, so a spoilt file that makes the
 //! decoder or the preferences check slow shows here (the tests bound memory
 //! and messages, not time).
@@ -10,10 +10,10 @@ use criterion::{Criterion, criterion_group, criterion_main};
 use mountains::settings::{Settings, load};
 use mountains::terrain::heightmap::decode;
 
-#[path = "../tests/heightmap_support/mod.rs"]
-mod heightmap_support;
-#[path = "../tests/hostile_support/mod.rs"]
-mod hostile_support;
+#[path = "../tests/common/heightmaps.rs"]
+mod heightmaps;
+#[path = "../tests/common/hostile.rs"]
+mod hostile;
 
 fn decode_case(png: &[u8]) {
     let _ = std::hint::black_box(decode(png, Path::new("spoilt.png")));
@@ -45,8 +45,8 @@ fn slowest<T>(cases: &[T], run: impl Fn(&T)) -> (usize, Duration) {
 }
 
 fn bench_corpus(c: &mut Criterion) {
-    let data_sets = hostile_support::data_sets();
-    let files = hostile_support::preference_files();
+    let data_sets = hostile::data_sets();
+    let files = hostile::preference_files();
     let (i, t) = slowest(&data_sets, |png| decode_case(png));
     eprintln!("slowest spoilt data set: case {i}, {t:?}");
     let (i, t) = slowest(&files, |text| check_case(text));

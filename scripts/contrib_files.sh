@@ -1,6 +1,6 @@
 #!/bin/sh
 # Writes contrib/mountains.xml and contrib/mountains.6 from the key table
-# (tests/contrib_files.rs fails while they differ from what the program prints).
+# (tests/platforms/contrib_files.rs fails while they differ from what the program prints).
 set -eu
 cd "$(dirname "$0")/.."
 cargo build --quiet

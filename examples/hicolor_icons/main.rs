@@ -1,7 +1,7 @@
 //! Writes the Linux desktop icons, `assets/hicolor/NxN/apps/mountains.png`,
 //! from the pictures of `assets/mountains.ico` (the Windows icon,
 //! scripts/windows_icon.sh): one icon on both systems, and no image tool
-//! needed. `sh scripts/linux_icons.sh` runs this; tests/packages.rs fails
+//! needed. `sh scripts/linux_icons.sh` runs this; tests/platforms/packages.rs fails
 //! while the PNGs differ from the icon.
 //!
 //! cargo run --example hicolor_icons

@@ -162,9 +162,23 @@ pub fn delete_monitors(conn: &RustConnection, root: Window, first: usize, count:
 /// the screen's physical size (the server tells nothing when monitors are
 /// only defined or deleted). Each call gives a size the last did not.
 pub fn announce_change(conn: &RustConnection, root: Window) {
-    use std::sync::atomic::{AtomicU32, Ordering};
-    static CALLS: AtomicU32 = AtomicU32::new(0);
-    let extra = 1 + CALLS.fetch_add(1, Ordering::Relaxed) % 2;
+    // Counted per connection: the tests of one binary share this process,
+    // and a count shared between their servers could repeat one's size.
+    static CALLS: std::sync::Mutex<Vec<(usize, u32)>> = std::sync::Mutex::new(Vec::new());
+    let key = std::ptr::from_ref(conn) as usize;
+    let mut calls = CALLS.lock().unwrap_or_else(|e| e.into_inner());
+    let n = match calls.iter_mut().find(|(k, _)| *k == key) {
+        Some((_, n)) => {
+            *n += 1;
+            *n
+        }
+        None => {
+            calls.push((key, 0));
+            0
+        }
+    };
+    drop(calls);
+    let extra = 1 + n % 2;
     let (width, height) = screen_size(conn, root);
     let (mm_w, mm_h) = (u32::from(width) / 4 + extra, u32::from(height) / 4);
     conn.randr_set_screen_size(root, width, height, mm_w, mm_h)

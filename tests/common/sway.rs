@@ -12,8 +12,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Child, Command, ExitStatus, Stdio};
 use std::time::{Duration, Instant};
 
-#[path = "signals.rs"]
-pub mod signals;
+pub use super::signals;
 
 /// How long a test waits for something that normally takes a fraction of a second.
 pub const PATIENCE: Duration = Duration::from_secs(15);
@@ -44,12 +43,12 @@ impl Sway {
         for tool in ["sway", "swaymsg", "grim", "wtype"] {
             if !installed(tool) {
                 let what = format!("{tool} is not installed");
-                crate::tools::missing(&what, INSTALL, "MOUNTAINS_REQUIRE_WAYLAND");
+                super::tools::missing(&what, INSTALL, "MOUNTAINS_REQUIRE_WAYLAND");
                 return None;
             }
         }
         if xwayland && !installed("Xwayland") {
-            crate::tools::missing(
+            super::tools::missing(
                 "Xwayland is not installed",
                 INSTALL,
                 "MOUNTAINS_REQUIRE_WAYLAND",
@@ -272,7 +271,7 @@ impl Sway {
         self.shots.set(n);
         let path = self.runtime.join(format!("shot-{n}.png"));
         self.run("grim", &[path.to_str().unwrap()]);
-        let (w, h, _, pixels) = crate::headless::read_png(&path);
+        let (w, h, _, pixels) = super::headless::read_png(&path);
         let _ = std::fs::remove_file(&path);
         (w, h, pixels)
     }
@@ -283,7 +282,7 @@ impl Sway {
         self.shots.set(n);
         let path = self.runtime.join(format!("shot-{n}.png"));
         self.run("grim", &["-o", output, path.to_str().unwrap()]);
-        let (w, h, _, pixels) = crate::headless::read_png(&path);
+        let (w, h, _, pixels) = super::headless::read_png(&path);
         let _ = std::fs::remove_file(&path);
         (w, h, pixels)
     }

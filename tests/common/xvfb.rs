@@ -11,8 +11,7 @@ use std::process::{Child, Command, ExitStatus, Stdio};
 use std::time::{Duration, Instant};
 
 // The program a test signals must not inherit an ignored signal.
-#[path = "signals.rs"]
-pub mod signals;
+pub use super::signals;
 
 use x11rb::connection::Connection;
 use x11rb::protocol::xproto::{
@@ -67,7 +66,7 @@ impl Xvfb {
             Ok(c) => c,
             Err(e) => {
                 let what = format!("Xvfb cannot start ({e})");
-                crate::tools::missing(&what, "apt-get install xvfb", "MOUNTAINS_REQUIRE_DISPLAY");
+                super::tools::missing(&what, "apt-get install xvfb", "MOUNTAINS_REQUIRE_DISPLAY");
                 return None;
             }
         };
@@ -440,9 +439,13 @@ impl Drop for Xvfb {
 pub struct TempDir(pub PathBuf);
 
 impl TempDir {
-    /// A fresh directory named after the test.
+    /// A fresh directory named after the test, and numbered: the tests of
+    /// one binary share its process id, and two may pick one name.
     pub fn new(name: &str) -> TempDir {
-        let dir = std::env::temp_dir().join(format!("mountains-{name}-{}", std::process::id()));
+        static MADE: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+        let n = MADE.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        let pid = std::process::id();
+        let dir = std::env::temp_dir().join(format!("mountains-{name}-{pid}-{n}"));
         let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(&dir).unwrap();
         TempDir(dir)

@@ -6,7 +6,7 @@
  * ProcessPrng in bcryptprimitives.dll, which Wine 8.0 does not have: the
  * exe then fails to load with c0000135 (DLL not found). Placed next to the
  * exe, this DLL answers ProcessPrng with RtlGenRandom (advapi32's
- * SystemFunction036), which Wine has. Built by tests/saver_wine.rs with
+ * SystemFunction036), which Wine has. Built by tests/platforms/wine.rs with
  *   x86_64-w64-mingw32-gcc -O2 -shared -o bcryptprimitives.dll \
  *     bcryptprimitives.c bcryptprimitives.def -ladvapi32
  */

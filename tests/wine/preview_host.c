@@ -1,6 +1,6 @@
 /*
  * A test stand-in for the Control Panel's Screen Saver dialog, run under
- * Wine by tests/saver_wine.rs.
+ * Wine by tests/platforms/wine.rs.
  *
  *   preview_host.exe SAVER.EXE SECONDS unaware|per-monitor
  *

@@ -1,0 +1,605 @@
+//! The binary's one-shot commands, run as a user would run them.
+
+use crate::common::headless;
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn mountains(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_mountains"))
+        .args(args)
+        .env("HOME", scratch("home"))
+        .env("XDG_CONFIG_HOME", scratch("home").join("config"))
+        .env("XDG_DATA_HOME", scratch("home").join("data"))
+        .output()
+        .expect("run mountains")
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir()
+        .join(format!("mountains-commands-{}", std::process::id()))
+        .join(name);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn png_size(path: &Path) -> (u32, u32) {
+    let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(path).unwrap()));
+    let reader = decoder.read_info().unwrap();
+    (reader.info().width, reader.info().height)
+}
+
+#[test]
+fn render_writes_a_png_of_the_asked_size_and_prints_the_seed() {
+    let out = scratch("render").join("m.png");
+    let o = mountains(&[
+        "render",
+        "--size",
+        "160x90",
+        "--set",
+        "seed=42",
+        "--set",
+        "detail=5",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(png_size(&out), (160, 90));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("seed 42"));
+}
+
+#[test]
+fn render_prints_a_random_seed_that_reproduces_the_picture() {
+    let dir = scratch("reproduce");
+    let (a, b) = (dir.join("a.png"), dir.join("b.png"));
+    let o = mountains(&[
+        "render",
+        "--size",
+        "64x48",
+        "--set",
+        "detail=5",
+        "-o",
+        a.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let stdout = String::from_utf8_lossy(&o.stdout).into_owned();
+    let seed = stdout.split_whitespace().nth(1).expect("seed printed");
+    let set = format!("seed={seed}");
+    let o = mountains(&[
+        "render",
+        "--size",
+        "64x48",
+        "--set",
+        "detail=5",
+        "--set",
+        &set,
+        "-o",
+        b.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(std::fs::read(&a).unwrap(), std::fs::read(&b).unwrap());
+}
+
+#[test]
+fn bad_arguments_exit_2_and_name_the_flag() {
+    for (args, needle) in [
+        (vec!["--bogus"], "--bogus"),
+        (vec!["render", "-o", "x.png", "--size", "wide"], "--size"),
+        (
+            vec!["render", "-o", "x.png", "--set", "detail=99"],
+            "detail",
+        ),
+        (
+            vec!["render", "-o", "x.png", "--set", "colour=red"],
+            "did you mean `color`",
+        ),
+        (
+            vec!["render", "-o", "x.png", "--size", "100000x100000"],
+            "too large",
+        ),
+        (
+            vec!["render", "-o", "x.png", "--config", "/nonexistent/m.toml"],
+            "/nonexistent/m.toml",
+        ),
+    ] {
+        let o = mountains(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains(needle), "{args:?}: {}", stderr(&o));
+    }
+}
+
+/// A mistake on the command line is said in a line that stays on the
+/// screen: the message with the nearest flag, and where to read the rest,
+/// not the whole usage after it.
+#[test]
+fn a_mistyped_flag_is_answered_in_two_lines() {
+    let o = mountains(&["--colour", "sonar"]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    assert_eq!(
+        err.lines().collect::<Vec<_>>(),
+        [
+            "mountains: unknown argument `--colour`; did you mean `--color`?",
+            "`mountains --help` lists every mode, flag and key."
+        ],
+        "{err}"
+    );
+}
+
+/// One rule for a preferences file everywhere: a bad value is a warning
+/// naming file:line:key, its key keeps the default and the picture is
+/// made; the file is left as it was.
+#[test]
+fn render_warns_about_a_broken_config_value_and_draws_on_the_default() {
+    let dir = scratch("broken");
+    let config = dir.join("m.toml");
+    let text = "# mine\ncragginess = 999\n";
+    std::fs::write(&config, text).unwrap();
+    let out = dir.join("x.png");
+    let o = mountains(&[
+        "render",
+        "--config",
+        config.to_str().unwrap(),
+        "--size",
+        "64x36",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(
+        err.contains("mountains: warning: ")
+            && err.contains("m.toml:2:14: key `cragginess`")
+            && err.contains("using the default"),
+        "{err}"
+    );
+    assert!(!err.contains("error:"), "{err}");
+    assert_eq!(png_size(&out), (64, 36));
+    assert_eq!(std::fs::read_to_string(&config).unwrap(), text);
+}
+
+/// `--set` is typed for this one run: a bad value is an error, said as one,
+/// and nothing is drawn.
+#[test]
+fn a_bad_set_value_is_an_error_that_says_so() {
+    let out = scratch("bad-set").join("x.png");
+    let o = mountains(&[
+        "render",
+        "--set",
+        "cragginess=999",
+        "--size",
+        "64x36",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("mountains: error: --set: key `cragginess`"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!out.exists());
+}
+
+/// `--config /dev/null` is the usual way to say "no preferences": the
+/// defaults, with no word about it, for `render` and `--check-config`.
+#[cfg(unix)]
+#[test]
+fn config_dev_null_means_the_defaults() {
+    let out = scratch("dev-null").join("x.png");
+    let o = mountains(&[
+        "render",
+        "--config",
+        "/dev/null",
+        "--size",
+        "64x36",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(stderr(&o), "");
+    assert_eq!(png_size(&out), (64, 36));
+    for args in [
+        &["--check-config", "/dev/null"][..],
+        &["--config", "/dev/null", "--check-config"],
+    ] {
+        let o = mountains(args);
+        assert_eq!(o.status.code(), Some(0), "{args:?}: {}", stderr(&o));
+        let said = String::from_utf8_lossy(&o.stdout);
+        assert!(said.contains("the defaults are in use"), "{args:?}: {said}");
+    }
+}
+
+#[test]
+fn check_config_exits_0_for_good_and_1_for_bad() {
+    let dir = scratch("check");
+    let good = dir.join("good.toml");
+    std::fs::write(&good, "color = \"sonar\"\n").unwrap();
+    let o = mountains(&["--check-config", good.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, "color = \"pink\"\n").unwrap();
+    let o = mountains(&["--check-config", bad.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        stderr(&o).contains("bad.toml:1:9: key `color`"),
+        "{}",
+        stderr(&o)
+    );
+    let shipped = concat!(env!("CARGO_MANIFEST_DIR"), "/config/default.toml");
+    assert_eq!(
+        mountains(&["--check-config", shipped]).status.code(),
+        Some(0)
+    );
+}
+
+#[test]
+fn help_lists_every_key() {
+    let o = mountains(&["--help"]);
+    assert!(o.status.success());
+    let text = String::from_utf8_lossy(&o.stdout);
+    for key in mountains::settings::keys::KEYS {
+        assert!(text.contains(key.name), "--help lacks {}", key.name);
+    }
+    for binding in mountains::saver::input::WINDOW_KEYS {
+        let line = format!("  {:<15} {}", binding.label, binding.doc);
+        assert!(text.contains(&line), "--help lacks the window key {line:?}");
+    }
+}
+
+#[test]
+fn heightmap_saves_a_data_set_that_loads_back_with_its_seed() {
+    let out = scratch("heightmap").join("h.png");
+    let o = mountains(&[
+        "heightmap",
+        "--set",
+        "seed=7",
+        "--set",
+        "detail=5",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("seed 7"));
+    let data = mountains::terrain::heightmap::load(&out).unwrap();
+    assert_eq!((data.seed, data.field.size()), (Some(7), 33));
+    let expected = mountains::terrain::generate(&settings_with(7, 5), 7);
+    let step = (expected.max() - expected.min()) / 65535.0;
+    for (a, b) in data.field.heights().iter().zip(expected.heights()) {
+        assert!((a - b).abs() <= step, "{a} vs {b}");
+    }
+}
+
+#[test]
+fn render_open_draws_a_saved_data_set() {
+    let dir = scratch("open");
+    let (h, a, b) = (dir.join("h.png"), dir.join("a.png"), dir.join("b.png"));
+    let arg = |p: &Path| p.to_str().unwrap().to_string();
+    let run = |args: &[&str]| {
+        let o = mountains(args);
+        assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+    };
+    run(&[
+        "heightmap",
+        "--set",
+        "detail=5",
+        "--set",
+        "seed=9",
+        "-o",
+        &arg(&h),
+    ]);
+    run(&[
+        "render",
+        "--size",
+        "80x60",
+        "--open",
+        &arg(&h),
+        "-o",
+        &arg(&a),
+    ]);
+    run(&[
+        "render",
+        "--size",
+        "80x60",
+        "--open",
+        &arg(&h),
+        "--set",
+        "color=sonar",
+        "-o",
+        &arg(&b),
+    ]);
+    assert_ne!(
+        std::fs::read(&a).unwrap(),
+        std::fs::read(&b).unwrap(),
+        "sonar looks like natural"
+    );
+    let o = mountains(&[
+        "render",
+        "-o",
+        &arg(&a),
+        "--open",
+        &arg(&dir.join("missing.png")),
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stderr(&o).contains("missing.png"), "{}", stderr(&o));
+}
+
+/// `--open` draws a data set under the look its file recorded (and the
+/// height): the picture the same file makes with those keys given on the
+/// command line, and, but for the 16-bit heights' rounding, the picture
+/// `render` made of the mountain before it was saved; a look given on the
+/// command line wins over the file's.
+#[test]
+fn render_open_draws_a_data_set_under_its_recorded_look() {
+    let dir = scratch("open-look");
+    let files = ["h.png", "made.png", "opened.png", "told.png", "theirs.png"].map(|f| dir.join(f));
+    let [h, made, opened, told, theirs] = files.each_ref().map(|p| p.to_str().unwrap());
+    let run = |args: &[&str]| {
+        let o = mountains(args);
+        assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+    };
+    let recorded = ["--set", "look=essay", "--set", "height=7"];
+    let sets = [&recorded[..], &["--set", "detail=5", "--set", "seed=9"]].concat();
+    run(&[&["heightmap", "-o", h][..], &sets].concat());
+    run(&[&["render", "--size", "80x60", "-o", made][..], &sets].concat());
+    run(&["render", "--size", "80x60", "--open", h, "-o", opened]);
+    run(&[
+        &["render", "--size", "80x60", "--open", h, "-o", told][..],
+        &recorded,
+    ]
+    .concat());
+    let look = "look=mountain-terrain";
+    run(&[
+        "render", "--size", "80x60", "--open", h, "--set", look, "-o", theirs,
+    ]);
+    let read = |p: &str| std::fs::read(p).unwrap();
+    assert_eq!(
+        read(opened),
+        read(told),
+        "not drawn under the keys its file recorded"
+    );
+    // Saving rounds the heights to 16 bits: an edge may cross a pixel
+    // centre, no more (the essay's camera keeps its place exactly).
+    let pixels = |p: &str| headless::read_rgb_png(Path::new(p));
+    let (a, b) = (pixels(made), pixels(opened));
+    let moved = a.iter().zip(&b).filter(|(x, y)| x != y).count();
+    assert!(
+        moved * 100 <= a.len(),
+        "{moved} of {} pixels differ from the picture it was saved from",
+        a.len()
+    );
+    assert_ne!(read(theirs), read(opened), "the command line's look lost");
+}
+
+fn settings_with(seed: u64, detail: u32) -> mountains::settings::Settings {
+    mountains::settings::Settings {
+        seed: Some(seed),
+        detail: mountains::settings::Detail::Level(detail),
+        ..Default::default()
+    }
+}
+
+/// No preferences file is no mistake: the defaults are in use. A file named
+/// with `--config` is checked, and so is every `--set`.
+#[test]
+fn check_config_without_a_file_is_fine_and_honours_config_and_set() {
+    let o = mountains(&["--check-config"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(out.contains("the defaults are in use"), "{out}");
+    let dir = scratch("check-config-flags");
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, "cragginess = 500\n").unwrap();
+    let o = mountains(&["--config", bad.to_str().unwrap(), "--check-config"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        stderr(&o).contains("bad.toml:1:14: key `cragginess`"),
+        "{}",
+        stderr(&o)
+    );
+    let o = mountains(&["--check-config", "--set", "color=pink"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stderr(&o).contains("--set: key `color`"), "{}", stderr(&o));
+    let missing = dir.join("missing.toml");
+    let o = mountains(&["--check-config", missing.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        stderr(&o).contains("missing.toml: no such file"),
+        "{}",
+        stderr(&o)
+    );
+}
+
+/// A key this version does not know (the settings screen keeps it) is a
+/// warning with a suggestion for `render`, and still a failure for
+/// `--check-config`.
+#[test]
+fn an_unknown_key_is_a_warning_for_render_and_an_error_for_check_config() {
+    let dir = scratch("unknown-key");
+    let config = dir.join("newer.toml");
+    std::fs::write(&config, "colour = \"sonar\"\nfuture_key = 3\n").unwrap();
+    let out = dir.join("m.png");
+    let o = mountains(&[
+        "render",
+        "--config",
+        config.to_str().unwrap(),
+        "--size",
+        "64x36",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(out.exists());
+    let err = stderr(&o);
+    assert!(
+        err.contains("warning: ") && err.contains("did you mean `color`?"),
+        "{err}"
+    );
+    assert!(err.contains("key `future_key`"), "{err}");
+    let o = mountains(&["--check-config", config.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stderr(&o).contains("error: "), "{}", stderr(&o));
+}
+
+/// `-o` writes what its extension says, or refuses before any work.
+#[test]
+fn the_output_extension_chooses_the_format() {
+    let dir = scratch("formats");
+    let jpg = dir.join("m.JPG");
+    let o = mountains(&[
+        "render",
+        "--size",
+        "96x54",
+        "--set",
+        "seed=3",
+        "-o",
+        jpg.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let bytes = std::fs::read(&jpg).unwrap();
+    assert_eq!(&bytes[..3], &[0xff, 0xd8, 0xff], "not a JPEG");
+    let raw = dir.join("h.r16");
+    let o = mountains(&[
+        "heightmap",
+        "--set",
+        "detail=5",
+        "--set",
+        "seed=3",
+        "-o",
+        raw.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(std::fs::read(&raw).unwrap().len(), 33 * 33 * 2);
+    assert!(String::from_utf8_lossy(&o.stdout).contains("33x33 16-bit little-endian"));
+    for (args, allowed) in [
+        (&["render", "-o"][..], ".png, .jpg, .jpeg"),
+        (&["heightmap", "-o"][..], ".png, .r16, .raw"),
+    ] {
+        let bad = dir.join("out.gif");
+        let mut all = args.to_vec();
+        all.push(bad.to_str().unwrap());
+        let o = mountains(&all);
+        assert_eq!(o.status.code(), Some(2));
+        let err = stderr(&o);
+        assert!(
+            err.contains("-o ") && err.contains("cannot be written as .gif"),
+            "{err}"
+        );
+        assert!(err.contains(allowed), "{err}");
+        assert!(!bad.exists());
+    }
+}
+
+/// Which standard stream [`unread`] leaves with no reader.
+#[derive(Clone, Copy, Debug)]
+enum Stream {
+    Stdout,
+    Stderr,
+}
+
+/// Runs the binary with `stream` a pipe whose read end is closed before the
+/// program starts (as `mountains --help | true` ends up when `true` is
+/// quick): every write to it fails with EPIPE. The other stream is kept.
+/// There is no display, so a window mode ends at once with its messages.
+fn unread(args: &[&str], stream: Stream) -> Output {
+    let (reader, writer) = std::io::pipe().expect("a pipe");
+    drop(reader);
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_mountains"));
+    cmd.args(args)
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .env("HOME", scratch("home"))
+        .env("XDG_CONFIG_HOME", scratch("home").join("config"))
+        .env("XDG_DATA_HOME", scratch("home").join("data"));
+    match stream {
+        Stream::Stdout => cmd.stdout(writer),
+        Stream::Stderr => cmd.stderr(writer),
+    };
+    cmd.output().expect("run mountains")
+}
+
+/// A closed stdout is a reader that left (`| head -1`, `| true`): every
+/// printing command drops what it had to say there, without a panic (exit
+/// 101) or a word on stderr, and ends with the status it would have had: a
+/// file written is still a success, a check's verdict still its verdict.
+/// The product itself not delivered (`-o -`) stays a failure.
+#[test]
+fn a_closed_stdout_loses_only_the_printed_lines() {
+    let dir = scratch("closed-stdout");
+    let (png, data, raw) = (dir.join("m.png"), dir.join("h.png"), dir.join("h.r16"));
+    let good = dir.join("good.toml");
+    std::fs::write(&good, "color = \"sonar\"\n").unwrap();
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, "color = \"pink\"\n").unwrap();
+    let render = ["render", "--size", "32x24", "--set", "detail=4", "-o"];
+    let heightmap = ["heightmap", "--set", "detail=4", "-o"];
+    let cases: Vec<(Vec<&str>, i32)> = vec![
+        (vec!["--help"], 0),
+        (vec!["--version"], 0),
+        (vec!["--xscreensaver-xml"], 0),
+        (vec!["--man-page"], 0),
+        (vec!["/a"], 0),
+        ([&render[..], &[png.to_str().unwrap()]].concat(), 0),
+        ([&heightmap[..], &[data.to_str().unwrap()]].concat(), 0),
+        ([&heightmap[..], &[raw.to_str().unwrap()]].concat(), 0),
+        (vec!["--check-config"], 0),
+        (vec!["--check-config", good.to_str().unwrap()], 0),
+        (vec!["--check-config", "--set", "seed=4"], 0),
+        (vec!["--check-config", bad.to_str().unwrap()], 1),
+        ([&render[..], &["-"]].concat(), 1),
+    ];
+    for (args, code) in cases {
+        let o = unread(&args, Stream::Stdout);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(code), "{args:?}: {err}");
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+        if code == 0 {
+            assert!(err.is_empty(), "{args:?} said: {err}");
+        }
+    }
+    for file in [&png, &data, &raw] {
+        assert!(file.exists(), "{} was not written", file.display());
+    }
+    let o = unread(&[&render[..], &["-"]].concat(), Stream::Stdout);
+    assert!(stderr(&o).contains("-o -: cannot write"), "{}", stderr(&o));
+}
+
+/// A closed stderr (`2>&1 | head -1`) does not turn a message into a panic:
+/// a usage error is still exit 2, a warning still lets the work finish, and
+/// a window mode (here `--root` with no display, warned about a bad value
+/// first) still ends by its own failure, exit 1.
+#[test]
+fn a_closed_stderr_keeps_the_exit_status() {
+    let dir = scratch("closed-stderr");
+    let config = dir.join("m.toml");
+    std::fs::write(&config, "no_such_key = 1\n").unwrap();
+    let out = dir.join("m.png");
+    let warned = [
+        "render",
+        "--size",
+        "32x24",
+        "--set",
+        "detail=4",
+        "--config",
+        config.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ];
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, "color = \"pink\"\n").unwrap();
+    for (args, code) in [
+        (&["/x"][..], 2),
+        (&["render", "-o", "x.png", "--set", "colour=red"][..], 2),
+        (&warned[..], 0),
+        (&["--check-config", bad.to_str().unwrap()][..], 1),
+        (&["--root", "--config", bad.to_str().unwrap()][..], 1),
+    ] {
+        let o = unread(args, Stream::Stderr);
+        assert_eq!(o.status.code(), Some(code), "{args:?}");
+    }
+    assert!(out.exists());
+}

@@ -1,0 +1,55 @@
+//! Peak heap of a 4K slide show from drawing a slide to the first strips of
+//! the next: the frame, one 2049-point field and the scene's maps, never the
+//! heights of two mountains at once (issue 18: VmHWM under 100 MB at 4K,
+//! where the frame and the window's image take 33 MB each). Measured by a
+//! counting allocator, so the bound holds on any machine and at any speed.
+
+use std::time::{Duration, Instant};
+
+use mountains::saver::show::Show;
+use mountains::saver::slideshow::Pacing;
+use mountains::settings::Settings;
+
+use crate::common::counting;
+
+/// The one test of this file: the counters are the whole process's.
+#[test]
+fn a_4k_slide_show_holds_one_field_beside_its_frame() {
+    let _alone = counting::alone();
+    let frame_bytes = 3840 * 2160 * 4;
+    let field_bytes = 2049 * 2049 * 4;
+    let settings = Settings {
+        seed: Some(42),
+        ..Settings::default()
+    };
+    // No clock: the times below are only what the show is told.
+    let t0 = Instant::now();
+    let at = |ms: u64| t0 + Duration::from_millis(ms);
+    let pacing = Pacing::from_seconds(1.0, 2.0, true);
+    let before = counting::reset_peak();
+    let mut show = Show::new(settings, None, pacing, (3840, 2160), t0);
+    assert_eq!(
+        show.current().map(|m| m.field.size()),
+        Some(2049),
+        "detail auto changed at 4K: the bound below is for 2049 points"
+    );
+    // The whole slide drawn: the hold begins and the next mountain is made.
+    show.tick(at(1000));
+    assert!(show.tick(at(2000)).is_empty(), "not held");
+    // The end of the hold waits for it, then draws the next slide's first strips.
+    assert!(!show.tick(at(3100)).is_empty(), "the show did not move on");
+    let peak = counting::peak() - before;
+    assert!(
+        peak >= frame_bytes + field_bytes,
+        "the count missed the frame or the field: {peak} bytes"
+    );
+    // The scene's maps and the generator's and shadow sweep's temporaries
+    // are well under half a field; a second field is not.
+    let bound = frame_bytes + field_bytes + field_bytes / 2;
+    assert!(
+        peak <= bound,
+        "peak heap {:.1} MB, more than the frame, a field and half a field ({:.1} MB)",
+        peak as f64 / 1e6,
+        bound as f64 / 1e6
+    );
+}

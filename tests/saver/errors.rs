@@ -1,0 +1,200 @@
+//! Window modes that cannot run say why, in words, without panicking.
+#![cfg(unix)]
+
+use crate::common::xvfb;
+
+use std::process::Command;
+
+use xvfb::{PATIENCE, Saver, Xvfb};
+
+/// The winit modes run on Wayland or X11 and name both; the embedded modes
+/// need an X window and name X.
+#[test]
+fn without_display_the_saver_and_the_settings_say_set_display() {
+    let winit = "no display: set WAYLAND_DISPLAY (Wayland) or DISPLAY (X11); neither is set";
+    let layer =
+        "no Wayland compositor: --layer draws on Wayland; set WAYLAND_DISPLAY (it is not set)";
+    let only_linux = cfg!(target_os = "linux").then_some((&["--layer", "background"][..], layer));
+    for (mode, said) in [
+        (&["/s"][..], winit),
+        (&["--window"], winit),
+        (&["--root"], "no X display: set DISPLAY (it is not set)"),
+        (
+            &["--window-id", "0x400001"],
+            "no X display: set DISPLAY (it is not set)",
+        ),
+        (&["--settings"], winit),
+    ]
+    .into_iter()
+    .chain(only_linux)
+    {
+        let home = xvfb::TempDir::new("no-display");
+        let out = Command::new(env!("CARGO_BIN_EXE_mountains"))
+            .args(mode)
+            .env_remove("DISPLAY")
+            .env_remove("WAYLAND_DISPLAY")
+            .env_remove("WAYLAND_SOCKET")
+            .env("HOME", &home.0)
+            .env("XDG_CONFIG_HOME", home.0.join("config"))
+            .env("XDG_DATA_HOME", home.0.join("data"))
+            .output()
+            .expect("run mountains");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            !out.status.success(),
+            "{mode:?} succeeded without a display"
+        );
+        assert!(stderr.contains(said), "{mode:?}: {stderr}");
+        assert!(!stderr.contains("panicked"), "{mode:?}: {stderr}");
+        // Not a path into a library's source.
+        assert!(!stderr.contains(".rs:"), "{mode:?}: {stderr}");
+    }
+}
+
+/// Log lines are in local time and say so: a POSIX zone string works
+/// without the tz database.
+#[test]
+fn log_lines_carry_local_time_and_its_offset() {
+    let home = xvfb::TempDir::new("log-local-time");
+    let out = Command::new(env!("CARGO_BIN_EXE_mountains"))
+        .args(["--root"])
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .env("TZ", "IST-5:30")
+        .env("HOME", &home.0)
+        .env("XDG_CONFIG_HOME", home.0.join("config"))
+        .env("XDG_DATA_HOME", home.0.join("data"))
+        .output()
+        .expect("run mountains");
+    assert!(!out.status.success());
+    let log =
+        std::fs::read_to_string(home.0.join("data/mountains/mountains.log")).expect("the log");
+    let line = log.lines().next().unwrap_or_default();
+    // [YYYY-MM-DD HH:MM:SS +05:30] message
+    assert!(
+        line.starts_with('[') && line[20..28].eq(" +05:30]"),
+        "{line:?}"
+    );
+}
+
+#[test]
+fn display_a_window_id_that_does_not_exist_is_named() {
+    let Some(x) = Xvfb::start(320, 240, &[]) else {
+        return;
+    };
+    let mut saver = Saver::start(&x, "no-window", &["--window-id", "0x3fffff0"], &[]);
+    let status = saver.wait(PATIENCE).expect("mountains should give up");
+    assert!(!status.success());
+    let stderr = saver.stderr();
+    assert!(stderr.contains("no X window 0x3fffff0"), "{stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    // Typed in decimal, it is named in decimal too.
+    let mut saver = Saver::start(&x, "no-window-decimal", &["--window-id", "67108848"], &[]);
+    saver.wait(PATIENCE).expect("mountains should give up");
+    let stderr = saver.stderr();
+    assert!(
+        stderr.contains("no X window 0x3fffff0 (67108848)"),
+        "{stderr}"
+    );
+}
+
+/// A window of a 30- or a 16-bit true-colour screen, as a daemon on such a
+/// screen gives --window-id (or --root), gets each pixel packed into its
+/// visual's masks (both were refused); an 8-bit window still is, in words.
+#[test]
+fn display_window_id_draws_into_30_and_16_bit_windows() {
+    for depth in [30u8, 16] {
+        let Some(x) = Xvfb::start(320, 240, &[&format!("depth={depth}")]) else {
+            return;
+        };
+        let window = x.create_window(100, 100);
+        assert_eq!(x.depth(window), depth);
+        let id = format!("0x{window:x}");
+        let mut saver = Saver::start(&x, "deep-window", &["--window-id", &id], &[]);
+        xvfb::poll(
+            &mut saver,
+            &format!("a mountain in a {depth}-bit window"),
+            || xvfb::looks_drawn(&as_rgb(&x, window, depth)),
+        );
+        let stderr = saver.stderr();
+        assert!(!stderr.contains("panicked"), "{stderr}");
+    }
+    let Some(x) = Xvfb::start(320, 240, &["depth=8"]) else {
+        return;
+    };
+    let window = x.create_window(100, 100);
+    let id = format!("0x{window:x}");
+    let mut saver = Saver::start(&x, "depth8", &["--window-id", &id], &[]);
+    xvfb::expect_refusal(&mut saver, "8-bit windows are not supported");
+}
+
+/// A 100x100 `window` of a `depth`-bit (30: 10 bits a channel; 16: 5-6-5)
+/// screen as 0x00RRGGBB pixels, read with GetImage.
+fn as_rgb(x: &Xvfb, window: u32, depth: u8) -> Vec<u32> {
+    use x11rb::protocol::xproto::{ConnectionExt as _, ImageFormat};
+    let reply = x
+        .conn
+        .get_image(ImageFormat::Z_PIXMAP, window, 0, 0, 100, 100, !0)
+        .expect("GetImage request")
+        .reply()
+        .expect("GetImage reply");
+    let eight = |v: u32, bits: u32| v * 255 / ((1 << bits) - 1);
+    if depth == 16 {
+        let pixels = reply
+            .data
+            .chunks_exact(2)
+            .map(|b| u32::from(u16::from_le_bytes([b[0], b[1]])));
+        pixels
+            .map(|p| eight(p >> 11, 5) << 16 | eight((p >> 5) & 63, 6) << 8 | eight(p & 31, 5))
+            .collect()
+    } else {
+        let pixels = reply
+            .data
+            .chunks_exact(4)
+            .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]));
+        pixels
+            .map(|p| {
+                let ch = |s: u32| eight((p >> s) & 1023, 10);
+                ch(20) << 16 | ch(10) << 8 | ch(0)
+            })
+            .collect()
+    }
+}
+
+/// When the X server goes away, every mode says so in words, on stderr and
+/// in mountains.log, and ends with status 1: Xlib's own handler printed
+/// "X connection to :N broken" and the embedded modes ended with 0 and no
+/// word, and nothing reached the log a screensaver's user can look at.
+#[test]
+fn display_the_server_going_away_is_said_and_logged() {
+    for mode in ["--window", "/s", "--root", "--window-id"] {
+        let Some(x) = Xvfb::start(320, 240, &[]) else {
+            return;
+        };
+        let mut args = vec![mode];
+        let window = (mode == "--window-id").then(|| x.create_window(120, 90));
+        let id = window.map(|w| format!("0x{w:x}")).unwrap_or_default();
+        if window.is_some() {
+            args.push(&id);
+        }
+        let mut saver = Saver::start(&x, "server-gone", &args, &[]);
+        // Drawing: the given window, or the screen (the root or a window of
+        // its own), shows a mountain.
+        xvfb::poll(&mut saver, &format!("{mode} drawing"), || match window {
+            Some(w) => xvfb::looks_drawn(&x.grab(w, 120, 90)),
+            None => xvfb::looks_drawn(&x.grab_screen()),
+        });
+        x.signal("KILL");
+        let status = saver.wait(PATIENCE).expect("mountains should end");
+        let stderr = saver.stderr();
+        let said = "error: the X server went away (display ";
+        assert_eq!(status.code(), Some(1), "{mode}: {stderr}");
+        assert!(stderr.contains(said), "{mode}: {stderr}");
+        assert!(!stderr.contains("panicked"), "{mode}: {stderr}");
+        let log = std::fs::read_to_string(saver.data_dir().join("mountains.log"));
+        assert!(
+            log.is_ok_and(|l| l.contains(said)),
+            "{mode}: nothing in the log"
+        );
+    }
+}

@@ -1,0 +1,349 @@
+//! The settings window under Xvfb: it opens, keys change a value, Enter
+//! saves keeping comments, Esc leaves the file byte-identical, and the
+//! screen is drawn at 100% and 200%.
+//!
+//! Each test starts its own `Xvfb -noreset -displayfd`. Without Xvfb or
+//! xdotool the tests say they skipped, unless `MOUNTAINS_REQUIRE_DISPLAY=1`.
+#![cfg(unix)]
+
+use crate::common::tools;
+use crate::common::xvfb;
+
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::thread::sleep;
+use std::time::Duration;
+
+use x11rb::connection::Connection;
+use x11rb::protocol::xproto::{ConnectionExt, ImageFormat};
+use xvfb::Xvfb;
+
+/// Waits are bounded so a broken build fails instead of hanging CI; the
+/// bound is generous because the machine may be busy.
+const POLL: Duration = Duration::from_millis(100);
+const MAX_POLLS: u32 = 600;
+
+/// Starts a private Xvfb with autorepeat off, because a busy machine may
+/// deliver a key release late; a missing Xvfb or xdotool fails the test
+/// (or skips it if asked to: see common/tools.rs).
+fn start_display() -> Option<Xvfb> {
+    let x = Xvfb::start(2560, 1600, &["-ardelay", "60000"])?;
+    if Command::new("xdotool").arg("version").output().is_err() {
+        tools::missing(
+            "xdotool is not installed",
+            "apt-get install xdotool",
+            "MOUNTAINS_REQUIRE_DISPLAY",
+        );
+        return None;
+    }
+    Some(x)
+}
+
+/// Runs xdotool against the test's display and returns what it printed.
+fn xdotool(x: &Xvfb, args: &[&str]) -> String {
+    let out = Command::new("xdotool")
+        .args(args)
+        .env("DISPLAY", x.display())
+        .output()
+        .expect("xdotool runs");
+    String::from_utf8_lossy(&out.stdout).trim().to_string()
+}
+
+/// The settings window process; killed if the test ends early.
+struct App {
+    child: Child,
+    stderr_path: PathBuf,
+}
+
+impl Drop for App {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+impl App {
+    fn start(x: &Xvfb, config: &Path, home: &Path, scale: u32) -> App {
+        let stderr_path = home.join("stderr.txt");
+        let stderr = std::fs::File::create(&stderr_path).unwrap();
+        let mut command = Command::new(env!("CARGO_BIN_EXE_mountains"));
+        let child = xvfb::signals::as_from_a_terminal(&mut command)
+            .arg("--settings")
+            .arg("--config")
+            .arg(config)
+            .env("DISPLAY", x.display())
+            .env("HOME", home)
+            .env("WINIT_X11_SCALE_FACTOR", scale.to_string())
+            .env_remove("XDG_CONFIG_HOME")
+            .env_remove("XDG_DATA_HOME")
+            .env_remove("WAYLAND_DISPLAY")
+            .stdout(Stdio::null())
+            .stderr(stderr)
+            .spawn()
+            .expect("the binary starts");
+        App { child, stderr_path }
+    }
+
+    fn stderr(&self) -> String {
+        std::fs::read_to_string(&self.stderr_path).unwrap_or_default()
+    }
+
+    /// The window id, once the window is mapped.
+    fn window(&mut self, x: &Xvfb) -> u32 {
+        for _ in 0..MAX_POLLS {
+            let found = xdotool(
+                x,
+                &["search", "--onlyvisible", "--name", "^Mountains settings$"],
+            );
+            if let Some(id) = found.lines().next().and_then(|l| l.trim().parse().ok()) {
+                return id;
+            }
+            if let Ok(Some(status)) = self.child.try_wait() {
+                panic!(
+                    "the app exited ({status}) before showing a window: {}",
+                    self.stderr()
+                );
+            }
+            sleep(POLL);
+        }
+        panic!("no settings window appeared: {}", self.stderr());
+    }
+
+    fn wait_exit(&mut self) -> std::process::ExitStatus {
+        for _ in 0..MAX_POLLS {
+            if let Ok(Some(status)) = self.child.try_wait() {
+                return status;
+            }
+            sleep(POLL);
+        }
+        panic!("the settings window did not close: {}", self.stderr());
+    }
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("display-{name}"));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+const COMMENTED: &str = "# my mountains\n\n# sharp ones\ncragginess = 40   # keep this\n\
+                         color = \"sonar\"\nmystery = \"unknown key\"\n";
+
+fn press(x: &Xvfb, window: u32, keys: &[&str]) {
+    let id = window.to_string();
+    // No window manager runs under Xvfb: give the window the focus ourselves.
+    xdotool(x, &["windowfocus", "--sync", &id]);
+    let mut args = vec!["key", "--delay", "80"];
+    args.extend_from_slice(keys);
+    xdotool(x, &args);
+}
+
+/// Waits until the window shows the dialog grey at `(x, y)`: drawn.
+fn wait_drawn(display: &str, window: u32) -> (u32, u32, Vec<u32>) {
+    let (conn, _) = x11rb::connect(Some(display)).expect("connect to Xvfb");
+    for _ in 0..MAX_POLLS {
+        if let Some((w, h, px)) = grab(&conn, window)
+            && px.get((h / 2 * w + w - 3) as usize) == Some(&0xC0C0C0)
+        {
+            return (w, h, px);
+        }
+        sleep(POLL);
+    }
+    panic!("the window was never drawn");
+}
+
+/// The window's pixels as 0x00RRGGBB.
+fn grab(conn: &impl Connection, window: u32) -> Option<(u32, u32, Vec<u32>)> {
+    let geo = conn.get_geometry(window).ok()?.reply().ok()?;
+    let (w, h) = (u32::from(geo.width), u32::from(geo.height));
+    let img = conn
+        .get_image(
+            ImageFormat::Z_PIXMAP,
+            window,
+            0,
+            0,
+            geo.width,
+            geo.height,
+            !0,
+        )
+        .ok()?
+        .reply()
+        .ok()?;
+    if img.data.len() < (w * h * 4) as usize {
+        return None;
+    }
+    let px = img
+        .data
+        .chunks_exact(4)
+        .map(|b| u32::from_le_bytes([b[0], b[1], b[2], 0]))
+        .collect();
+    Some((w, h, px))
+}
+
+#[test]
+fn display_keys_change_a_value_and_enter_saves_keeping_comments() {
+    let Some(x) = start_display() else { return };
+    let home = scratch("enter");
+    let config = home.join("mountains.toml");
+    std::fs::write(&config, COMMENTED).unwrap();
+    let mut app = App::start(&x, &config, &home, 1);
+    let window = app.window(&x);
+    wait_drawn(x.display(), window);
+    // Seed, Generator, Cragginess: two rows down, one step right, Enter = OK.
+    press(&x, window, &["Down", "Down", "Right", "Return"]);
+    let status = app.wait_exit();
+    assert!(status.success(), "{status}: {}", app.stderr());
+    let saved = std::fs::read_to_string(&config).unwrap();
+    assert_eq!(saved, COMMENTED.replace("= 40 ", "= 41 "));
+}
+
+/// SIGTERM and SIGHUP close the settings screen as Cancel does: exit 0,
+/// the file untouched (they used to kill it by the signal).
+#[test]
+fn display_sigterm_and_sighup_close_the_settings_like_cancel() {
+    for signal in ["TERM", "HUP"] {
+        let Some(x) = start_display() else { return };
+        let home = scratch(&format!("signal-{signal}"));
+        let config = home.join("mountains.toml");
+        std::fs::write(&config, COMMENTED).unwrap();
+        let mut app = App::start(&x, &config, &home, 1);
+        let window = app.window(&x);
+        wait_drawn(x.display(), window);
+        let sent = Command::new("kill")
+            .args([format!("-{signal}"), app.child.id().to_string()])
+            .status()
+            .expect("run kill");
+        assert!(sent.success());
+        let status = app.wait_exit();
+        assert!(status.success(), "SIG{signal}: {status}: {}", app.stderr());
+        assert_eq!(std::fs::read(&config).unwrap(), COMMENTED.as_bytes());
+    }
+}
+
+/// Another client destroying the settings window (as `xdotool search
+/// --pid`, then XDestroyWindow) ends the screen as Cancel does: exit 0,
+/// the file untouched. It used to run on with no window until SIGTERM,
+/// where `--window` and `/p` end at once.
+#[test]
+fn display_a_destroyed_window_ends_the_settings_like_cancel() {
+    let Some(x) = start_display() else { return };
+    let home = scratch("destroyed");
+    let config = home.join("mountains.toml");
+    std::fs::write(&config, COMMENTED).unwrap();
+    let mut app = App::start(&x, &config, &home, 1);
+    let window = app.window(&x);
+    wait_drawn(x.display(), window);
+    x.conn
+        .destroy_window(window)
+        .expect("send DestroyWindow")
+        .check()
+        .expect("DestroyWindow");
+    let status = app.wait_exit();
+    assert!(status.success(), "{status}: {}", app.stderr());
+    assert_eq!(std::fs::read(&config).unwrap(), COMMENTED.as_bytes());
+}
+
+#[test]
+fn display_escape_leaves_the_file_byte_identical() {
+    let Some(x) = start_display() else { return };
+    let home = scratch("escape");
+    let config = home.join("mountains.toml");
+    std::fs::write(&config, COMMENTED).unwrap();
+    let mut app = App::start(&x, &config, &home, 1);
+    let window = app.window(&x);
+    wait_drawn(x.display(), window);
+    press(&x, window, &["Down", "Down", "Right", "Right", "Escape"]);
+    let status = app.wait_exit();
+    assert!(status.success(), "{status}: {}", app.stderr());
+    assert_eq!(std::fs::read(&config).unwrap(), COMMENTED.as_bytes());
+}
+
+#[test]
+fn display_mouse_clicks_plus_then_ok() {
+    use mountains::settings_ui::layout::{Button, Layout};
+    let Some(x) = start_display() else { return };
+    let home = scratch("mouse");
+    let config = home.join("mountains.toml");
+    std::fs::write(&config, COMMENTED).unwrap();
+    let mut app = App::start(&x, &config, &home, 1);
+    let window = app.window(&x);
+    wait_drawn(x.display(), window);
+    let l = Layout::new(960, 620, 1);
+    let crag = mountains::settings::keys::KEYS
+        .iter()
+        .position(|k| k.name == "cragginess")
+        .unwrap();
+    let (_, (p0, p1)) = l.minus_plus();
+    let plus = ((p0 + p1) / 2, l.row(crag).y0 + 9);
+    let ok = l.button(Button::Ok);
+    let ok = ((ok.x0 + ok.x1) / 2, (ok.y0 + ok.y1) / 2);
+    let id = window.to_string();
+    for (px, py) in [plus, plus, ok] {
+        let (px, py) = (px.to_string(), py.to_string());
+        xdotool(&x, &["mousemove", "--window", &id, &px, &py]);
+        xdotool(&x, &["click", "1"]);
+    }
+    let status = app.wait_exit();
+    assert!(status.success(), "{status}: {}", app.stderr());
+    let saved = std::fs::read_to_string(&config).unwrap();
+    assert_eq!(saved, COMMENTED.replace("= 40 ", "= 42 "));
+}
+
+/// Opens the window at `scale`, checks its size, and writes a screenshot
+/// (`target/tmp/settings-ui-<scale>x.png`) for a person to look at.
+fn screenshot(scale: u32) {
+    let Some(x) = start_display() else { return };
+    let home = scratch(&format!("shot{scale}"));
+    let config = home.join("mountains.toml");
+    std::fs::write(&config, COMMENTED).unwrap();
+    let mut app = App::start(&x, &config, &home, scale);
+    let window = app.window(&x);
+    wait_drawn(x.display(), window);
+    press(&x, window, &["Down", "Down", "Right"]);
+    // Exactly two rows down: the Cragginess label is highlighted in navy.
+    let l = mountains::settings_ui::layout::Layout::new(960 * scale, 620 * scale, scale);
+    let probe = |row: usize, w: u32| {
+        let r = l.row(row);
+        ((r.y0 + l.px(2)) * w + r.x0 + l.px(20)) as usize
+    };
+    let mut shot = wait_drawn(x.display(), window);
+    for _ in 0..MAX_POLLS {
+        if shot.2.get(probe(2, shot.0)) == Some(&0x000080) {
+            break;
+        }
+        sleep(POLL);
+        shot = wait_drawn(x.display(), window);
+    }
+    let (w, h, px) = shot;
+    assert_eq!(
+        (w, h),
+        (960 * scale, 620 * scale),
+        "the window follows the scale"
+    );
+    assert_eq!(
+        px[probe(2, w)],
+        0x000080,
+        "the Cragginess row has the focus"
+    );
+    assert_ne!(px[probe(1, w)], 0x000080);
+    assert_ne!(px[probe(3, w)], 0x000080, "each key press counts once");
+    let mut frame = mountains::render::Frame::new(w, h).unwrap();
+    frame.pixels_mut().copy_from_slice(&px);
+    let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("settings-ui-{scale}x.png"));
+    mountains::snapshot::write_png(&out, &frame).unwrap();
+    eprintln!("screenshot: {}", out.display());
+    press(&x, window, &["Escape"]);
+    assert!(app.wait_exit().success(), "{}", app.stderr());
+    assert_eq!(std::fs::read(&config).unwrap(), COMMENTED.as_bytes());
+}
+
+#[test]
+fn display_screenshot_at_100_percent() {
+    screenshot(1);
+}
+
+#[test]
+fn display_screenshot_at_200_percent() {
+    screenshot(2);
+}

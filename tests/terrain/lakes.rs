@@ -1,0 +1,218 @@
+//! Mountain lakes: basins above the sea filled to their lowest lip. A lake
+//! never spills (no lake point above its surface, the surface exactly the
+//! basin's lip, found here by a slow search of its own), holds its whole
+//! basin, and never covers the sea.
+
+use std::cmp::Reverse;
+use std::collections::{BinaryHeap, VecDeque};
+
+use mountains::settings::{Generator, Settings};
+use mountains::terrain::{Heightfield, Lakes, generate, generate_with_threads};
+
+const AROUND: [(isize, isize); 8] = [
+    (-1, -1),
+    (0, -1),
+    (1, -1),
+    (-1, 0),
+    (1, 0),
+    (-1, 1),
+    (0, 1),
+    (1, 1),
+];
+
+fn neighbours(n: usize, x: usize, y: usize) -> impl Iterator<Item = (usize, usize)> {
+    AROUND.into_iter().filter_map(move |(dx, dy)| {
+        let (x, y) = (x as isize + dx, y as isize + dy);
+        (x >= 0 && y >= 0 && (x as usize) < n && (y as usize) < n)
+            .then_some((x as usize, y as usize))
+    })
+}
+
+/// The points of each lake, as (x, y).
+fn points_of(lakes: &Lakes) -> Vec<Vec<(usize, usize)>> {
+    let mut out = vec![Vec::new(); lakes.count()];
+    for y in 0..lakes.size() {
+        for run in lakes.row(y) {
+            for x in run.start..run.end {
+                out[run.lake as usize].push((x as usize, y));
+            }
+        }
+    }
+    out
+}
+
+/// The lowest height water at (x, y) must rise to before it can leave the
+/// grid or reach the sea: over every path to the border or to a point at or
+/// below sea level, the least of the path's highest point (Dijkstra on the
+/// path's maximum, with a binary heap: slow and plain).
+fn lip_by_search(f: &Heightfield, start: (usize, usize)) -> f32 {
+    let n = f.size();
+    let mut best = vec![f32::INFINITY; n * n];
+    let mut heap = BinaryHeap::new();
+    let h0 = f.get(start.0, start.1);
+    best[start.1 * n + start.0] = h0;
+    heap.push(Reverse((h0.to_bits(), start)));
+    while let Some(Reverse((bits, (x, y)))) = heap.pop() {
+        let level = f32::from_bits(bits);
+        if level > best[y * n + x] {
+            continue;
+        }
+        let border = x == 0 || y == 0 || x == n - 1 || y == n - 1;
+        if border || f.get(x, y) <= 0.0 {
+            return level;
+        }
+        for (nx, ny) in neighbours(n, x, y) {
+            let through = level.max(f.get(nx, ny).max(0.0));
+            if through < best[ny * n + nx] {
+                best[ny * n + nx] = through;
+                heap.push(Reverse((through.to_bits(), (nx, ny))));
+            }
+        }
+    }
+    f32::INFINITY
+}
+
+/// Every law of a lake, checked on `field`'s lakes.
+fn check_lakes(field: &Heightfield, what: &str) -> usize {
+    let lakes = field.lakes().expect("lakes were asked for");
+    let n = field.size();
+    for (lake, points) in points_of(lakes).iter().enumerate() {
+        let level = lakes.level(lake as u32);
+        assert!(
+            level > 0.0,
+            "{what}: lake {lake} at {level}, not above the sea"
+        );
+        for &(x, y) in points {
+            let h = field.get(x, y);
+            assert!(
+                h < level,
+                "{what}: lake {lake} spills: {h} at ({x}, {y}) over {level}"
+            );
+            assert!(h > 0.0, "{what}: lake {lake} covers the sea at ({x}, {y})");
+        }
+        // The surface is the basin's lowest lip.
+        let lip = lip_by_search(field, points[0]);
+        assert_eq!(level, lip, "{what}: lake {lake}'s surface is not its lip");
+        // The lake is the whole basin: every point joined to it below the lip.
+        let mut basin = vec![false; n * n];
+        let mut queue = VecDeque::from([points[0]]);
+        basin[points[0].1 * n + points[0].0] = true;
+        let mut size = 0;
+        while let Some((x, y)) = queue.pop_front() {
+            size += 1;
+            for (nx, ny) in neighbours(n, x, y) {
+                if !basin[ny * n + nx] && field.get(nx, ny) < level {
+                    basin[ny * n + nx] = true;
+                    queue.push_back((nx, ny));
+                }
+            }
+        }
+        assert_eq!(
+            size,
+            points.len(),
+            "{what}: lake {lake} is not its whole basin"
+        );
+        assert!(points.iter().all(|&(x, y)| basin[y * n + x]));
+    }
+    lakes.count()
+}
+
+/// A paraboloid bowl standing above the sea: its lowest lip is the middle
+/// of each edge, so it holds one lake, a disc, at that height.
+#[test]
+fn a_bowl_holds_one_lake_at_its_lip() {
+    let n = 33;
+    let c = 16.0f32;
+    let heights: Vec<f32> = (0..n * n)
+        .map(|i| {
+            let (x, y) = ((i % n) as f32 - c, (i / n) as f32 - c);
+            1.0 + 10.0 * (x * x + y * y) / (c * c)
+        })
+        .collect();
+    let mut field = Heightfield::from_heights(n, 100.0, heights).unwrap();
+    let lakes = Lakes::of(field.heights(), n);
+    assert_eq!(lakes.count(), 1);
+    assert_eq!(lakes.level(0), 11.0, "the lip: the middle of an edge");
+    assert_eq!(lakes.lake_at(16, 16), Some(0));
+    assert_eq!(lakes.lake_at(0, 16), None, "the lip itself is dry");
+    assert_eq!(lakes.surface_at(16, 16), 11.0);
+    assert_eq!(lakes.surface_at(1, 1), 0.0);
+    // Every point below the lip is under water: the disc of radius c.
+    let wet = field.heights().iter().filter(|&&h| h < 11.0).count();
+    assert_eq!(lakes.areas(), vec![wet]);
+    field.set_lakes(Some(lakes.into()));
+    assert_eq!(check_lakes(&field, "bowl"), 1);
+}
+
+/// A pit of a few points is filled, not drawn; the same pit counts once
+/// the least area is lowered to it.
+#[test]
+fn a_small_pit_is_no_lake() {
+    let n = 65;
+    let mut heights = vec![5.0f32; n * n];
+    heights[30 * n + 30] = 1.0;
+    heights[30 * n + 31] = 2.0;
+    assert_eq!(Lakes::of(&heights, n).count(), 0);
+    let lakes = Lakes::at_least(&heights, n, 2);
+    assert_eq!((lakes.count(), lakes.level(0)), (1, 5.0));
+    assert_eq!(lakes.areas(), vec![2]);
+}
+
+/// Sea below a basin's rim drains it: a basin reaching below sea level is
+/// sea (as Fractal Mountain Climbing drew it), never a lake over the sea.
+#[test]
+fn the_sea_is_an_outlet_not_a_lake() {
+    let n = 33;
+    let c = 16.0f32;
+    let heights: Vec<f32> = (0..n * n)
+        .map(|i| {
+            let (x, y) = ((i % n) as f32 - c, (i / n) as f32 - c);
+            -2.0 + 10.0 * (x * x + y * y) / (c * c)
+        })
+        .collect();
+    assert_eq!(Lakes::of(&heights, n).count(), 0);
+}
+
+#[test]
+fn generated_lakes_never_spill_and_fill_their_basins() {
+    let mut total = 0;
+    for generator in [
+        Generator::Diamond,
+        Generator::Square,
+        Generator::Triangle,
+        Generator::Brownian,
+    ] {
+        for seed in 1..=6 {
+            let s = Settings {
+                generator,
+                detail: mountains::settings::Detail::Level(8),
+                ..Settings::default()
+            };
+            let field = generate(&s, seed);
+            total += check_lakes(&field, &format!("{generator:?} seed {seed}"));
+        }
+    }
+    // The laws above would hold trivially with no lakes at all.
+    assert!(total >= 5, "only {total} lakes in 24 mountains");
+}
+
+#[test]
+fn lakes_are_asked_for_and_the_same_on_any_thread_count() {
+    let s = Settings {
+        detail: mountains::settings::Detail::Level(10),
+        ..Settings::default()
+    };
+    assert!(s.lakes, "lakes are on by default");
+    let one = generate_with_threads(&s, 3, 1);
+    let two = generate_with_threads(&s, 3, 2);
+    assert_eq!(one.lakes(), two.lakes());
+    let dry = generate(
+        &Settings {
+            lakes: false,
+            ..s.clone()
+        },
+        3,
+    );
+    assert!(dry.lakes().is_none());
+    assert_eq!(dry.heights(), one.heights(), "lakes change no height");
+}
