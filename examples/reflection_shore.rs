@@ -32,8 +32,9 @@
 //! column, the mean luma of those land pixels against the mean of their
 //! water pixels, correlated along the shore as above. A perfect mirror
 //! (the renderer's mirror constants set to all mirror, no streaks, sampled
-//! six times finer: BENCHMARKS.md) scores 0.99 raw and 0.80 detrended
-//! there, against 0.80 and 0.32 straight above.
+//! six times finer: docs/benchmarks-history.md, "The reflection figure,
+//! traced") scores 0.99 raw and 0.80 detrended there, against 0.80 and
+//! 0.32 straight above.
 //!
 //! Even without reflections the water's own colour follows the land near
 //! it (shallow water lies off gentle, lighter shores), so the third

@@ -67,8 +67,8 @@ Windows flags take / or -, any case: /s -S /p:1234 /c:1234.
 xscreensaver flags take one or two dashes: -root --root -window-id --window-id;
 -root with -window-id (either order) draws into the window, as the settings
 dialog's preview asks.
---layer needs a compositor with wlr-layer-shell (sway, Hyprland, river, KDE
-Plasma; not GNOME): `--layer background` is a wallpaper, and the background
+--layer needs a compositor with wlr-layer-shell (sway, Hyprland, river, labwc,
+KDE Plasma; not GNOME): `--layer background` is a wallpaper, and the background
 under swaylock-plugin's lock (swaylock-plugin --command 'mountains --layer
 background'); it ends on SIGTERM or SIGINT, not on input.
 ";
