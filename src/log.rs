@@ -29,6 +29,13 @@ pub fn warn(message: &str) {
     record(message);
 }
 
+/// Reports a problem that stops what was asked (a bad flag, no display),
+/// worded by [`crate::console::error`].
+pub fn error(message: &str) {
+    crate::console::error(message);
+    record(&crate::console::error_text(message));
+}
+
 /// The result of a worker thread, or `None` if it panicked: then the panic
 /// is reported (a Windows .scr has no stderr for the default report) and
 /// the caller carries on without it.
