@@ -88,7 +88,11 @@ done
 shlibs=$(cd "$work" && dpkg-shlibdeps -O -e debian/mountains/usr/bin/mountains 2>"$work/shlibdeps.err" |
   sed -n 's/^shlibs:Depends=//p')
 [ -n "$shlibs" ] || { cat "$work/shlibdeps.err" >&2; echo "deb.sh: dpkg-shlibdeps found no libraries" >&2; exit 1; }
-size=$(du -sk --exclude=DEBIAN "$root" | cut -f1)
+# Installed-Size as dpkg-gencontrol counts it, the same on any filesystem
+# (du counts blocks, which differ): a file or link its size in KiB rounded
+# up, anything else (a folder) 1 KiB.
+size=$(find "$root" -path "$root/DEBIAN" -prune -o -printf '%y %s\n' |
+  awk '{ kib += ($1 == "f" || $1 == "l") ? int(($2 + 1023) / 1024) : 1 } END { print kib }')
 description=$(sed -n 's/^description = "\(.*\)"$/\1/p' Cargo.toml | head -n 1)
 cat >"$root/DEBIAN/control" <<EOF
 Package: mountains

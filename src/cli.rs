@@ -248,13 +248,14 @@ impl Parser<'_> {
             .map_err(|v| UsageError(format!("{flag}: {v:?} is not valid text")))
     }
 
-    /// A window handle may follow as the next argument (`/p 1234`); a word
-    /// that is not a flag is taken as one (`/p abc` says it is no handle).
-    fn optional_handle(&mut self) -> Result<Option<u64>, UsageError> {
+    /// A window handle for `flag` may follow as the next argument (`/p
+    /// 1234`); a word that is not a flag is taken as one (`/p abc` says it
+    /// is no handle).
+    fn optional_handle(&mut self, flag: &str) -> Result<Option<u64>, UsageError> {
         match self.args.get(self.pos).and_then(|a| a.to_str()) {
             Some(s) if !s.is_empty() && !s.starts_with(['-', '/']) && !is_word(s) => {
                 self.pos += 1;
-                parse_handle(s).map(Some)
+                handle_for(flag, s).map(Some)
             }
             _ => Ok(None),
         }
@@ -392,23 +393,25 @@ impl Parser<'_> {
             Some((l, h)) => (l, Some(h)),
             None => (rest, None),
         };
-        if letter.len() != 1 {
+        if letter.len() != 1 || !"spca".contains(letter.to_ascii_lowercase().as_str()) {
             return Ok(None);
         }
+        // The flag as typed, without its handle: `/p` of `/p:abc`.
+        let flag = &arg[..arg.len() - rest.len() + letter.len()];
         let handle = match attached {
-            Some(h) => Some(parse_handle(h)?),
+            Some(h) => Some(handle_for(flag, h)?),
             None => None,
         };
         let mode = match letter.to_ascii_lowercase().as_str() {
             "s" => Mode::Fullscreen,
             "p" => Mode::Preview {
-                parent: handle.or(self.optional_handle()?),
+                parent: handle.or(self.optional_handle(flag)?),
             },
             "c" => Mode::Settings {
-                parent: handle.or(self.optional_handle()?),
+                parent: handle.or(self.optional_handle(flag)?),
             },
             "a" => {
-                let _ = handle.or(self.optional_handle()?);
+                let _ = handle.or(self.optional_handle(flag)?);
                 Mode::ChangePassword
             }
             _ => return Ok(None),
@@ -497,13 +500,18 @@ fn layer_named(flag: &str, name: &str) -> Result<Layer, UsageError> {
 
 /// An X window id for `flag`: a handle that fits X's 32 bits.
 fn x_window_id(flag: &str, text: &str) -> Result<u64, UsageError> {
-    let id = parse_handle(text)?;
+    let id = handle_for(flag, text)?;
     if id > u64::from(u32::MAX) {
         return Err(UsageError(format!(
             "{flag} {text}: X window ids have 32 bits (at most 0xffffffff)"
         )));
     }
     Ok(id)
+}
+
+/// The window handle `text` given to `flag`, or a message naming both.
+fn handle_for(flag: &str, text: &str) -> Result<u64, UsageError> {
+    parse_handle(text).map_err(|e| UsageError(format!("{flag}: {e}")))
 }
 
 /// A window handle: decimal, or hex with `0x` (xscreensaver writes both).

@@ -16,7 +16,9 @@ pub const EXIT_USAGE: u8 = 2;
 /// The mountain to show: a data set from `--open` (its notes said on
 /// stderr), else a generated one.
 pub fn mountain(settings: &Settings, open: Option<&Path>) -> Result<Mountain, String> {
-    let (mountain, notes) = Mountain::open_or_generate(settings, open)?;
+    // Only a data set can fail, and its message starts with its file.
+    let (mountain, notes) =
+        Mountain::open_or_generate(settings, open).map_err(|e| format!("--open {e}"))?;
     if let Some(path) = open {
         for note in &notes {
             console::err(&format!("mountains: {}: {note}", path.display()));
@@ -36,8 +38,8 @@ pub fn render(
     let Some(mut frame) = Frame::new(width, height) else {
         let pixels = u64::from(width) * u64::from(height);
         if pixels > crate::render::frame::MAX_PIXELS {
-            console::err(&format!(
-                "mountains: --size {width}x{height}: too large (at most {} pixels)",
+            console::error(&format!(
+                "--size {width}x{height}: too large (at most {} pixels)",
                 crate::render::frame::MAX_PIXELS
             ));
             return ExitCode::from(EXIT_USAGE);
@@ -109,7 +111,8 @@ pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> Exi
             return console::status(Err(e), ExitCode::SUCCESS);
         }
     } else if let Err(e) = heightmap::save(output, &field, seed, settings) {
-        return fail(&e.to_string());
+        // Its message starts with the file.
+        return fail(&format!("-o {e}"));
     }
     console::status(print_seed(seed, output), ExitCode::SUCCESS)
 }
@@ -135,7 +138,7 @@ fn say(output: &Path, line: &str) -> std::io::Result<()> {
 }
 
 fn fail(message: &str) -> ExitCode {
-    console::err(&format!("mountains: {message}"));
+    console::error(message);
     ExitCode::FAILURE
 }
 
@@ -151,7 +154,7 @@ pub fn check_config(
 ) -> ExitCode {
     let named = path.or(config).map(Path::to_path_buf);
     let Some(file) = named.clone().or_else(paths::config_file) else {
-        return fail("no preferences file given and no home directory to look in");
+        return fail("--check-config: no preferences file given and no home directory to look in");
     };
     let mut settings = Settings::default();
     let mut problems = Vec::new();
@@ -168,7 +171,12 @@ pub fn check_config(
     } else if present {
         problems = load::apply_file(&mut settings, &file);
     } else if named.is_some() {
-        return fail(&format!("{}: no such file", file.display()));
+        let flag = if path.is_some() {
+            "--check-config"
+        } else {
+            "--config"
+        };
+        return fail(&format!("{flag} {}: no such file", file.display()));
     } else {
         printed = console::outln(&format!(
             "mountains: no preferences file at {}; the defaults are in use",
@@ -180,7 +188,7 @@ pub fn check_config(
             problems.push(p);
         }
     }
-    for line in load::report_with(&problems, |p| format!("error: {p}")) {
+    for line in load::report_with(&problems, |p| console::error_line(&p.to_string())) {
         console::err(&line);
     }
     if !problems.is_empty() {

@@ -63,13 +63,30 @@ pub fn quiet_failed_messages() {
     }));
 }
 
+/// Says on stderr why the program cannot do what it was asked, as every
+/// such message is said: `mountains: error: ` and then `message`, which
+/// names the flag, file or key it is about.
+pub fn error(message: &str) {
+    err(&error_line(message));
+}
+
+/// `message` as [`error`] writes it on stderr.
+pub fn error_line(message: &str) -> String {
+    format!("mountains: {}", error_text(message))
+}
+
+/// `message` as an error without the program's name, as the log keeps it.
+pub fn error_text(message: &str) -> String {
+    format!("error: {message}")
+}
+
 /// `code`, or 1 with a message when stdout failed other than by a reader
 /// leaving.
 pub fn status(printed: io::Result<()>, code: ExitCode) -> ExitCode {
     match printed {
         Ok(()) => code,
         Err(e) => {
-            err(&format!("mountains: cannot write to standard output: {e}"));
+            error(&format!("cannot write to standard output: {e}"));
             ExitCode::FAILURE
         }
     }

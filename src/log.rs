@@ -2,8 +2,9 @@
 //! because a Windows .scr has no console and xscreensaver hides stderr.
 
 use std::io::Write;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::sync::Mutex;
+use std::sync::atomic::{AtomicU32, Ordering};
 
 /// The log file is started afresh (the old one kept as `.old`) past this size.
 const MAX_LOG_BYTES: u64 = 256 * 1024;
@@ -26,6 +27,13 @@ pub fn file() -> Option<PathBuf> {
 pub fn warn(message: &str) {
     crate::console::err(&format!("mountains: {message}"));
     record(message);
+}
+
+/// Reports a problem that stops what was asked (a bad flag, no display),
+/// worded by [`crate::console::error`].
+pub fn error(message: &str) {
+    crate::console::error(message);
+    record(&crate::console::error_text(message));
 }
 
 /// The result of a worker thread, or `None` if it panicked: then the panic
@@ -120,7 +128,7 @@ mod console {
 /// its rotation size.
 const MAX_LINE_BYTES: usize = 4096;
 
-fn append(path: &PathBuf, message: &str) -> std::io::Result<()> {
+fn append(path: &Path, message: &str) -> std::io::Result<()> {
     let message = cut(message, MAX_LINE_BYTES);
     if let Some(dir) = path.parent() {
         std::fs::create_dir_all(dir)?;
@@ -129,14 +137,52 @@ fn append(path: &PathBuf, message: &str) -> std::io::Result<()> {
     let line = format!("[{}] {message}\n", crate::clock::local(crate::clock::now()));
     // Rotate before a line that would take the log past its size, so the
     // log itself never exceeds it.
-    if std::fs::metadata(path).is_ok_and(|m| m.len() + line.len() as u64 > MAX_LOG_BYTES) {
-        std::fs::rename(path, path.with_extension("log.old"))?;
+    let full =
+        |p: &Path| std::fs::metadata(p).is_ok_and(|m| m.len() + line.len() as u64 > MAX_LOG_BYTES);
+    if full(path) {
+        rotate(path, full)?;
     }
     let mut f = std::fs::OpenOptions::new()
         .create(true)
         .append(true)
         .open(path)?;
     f.write_all(line.as_bytes())
+}
+
+/// Keeps the full log at `path` as `.old`. Instances that find it full at
+/// the same moment must not each rename it there: the second would put
+/// the log the first has just started over the history. So each takes
+/// the log under a name of its own (a rename is atomic: only one takes a
+/// given file), and looks at what it took: the full log becomes `.old`;
+/// a log another instance has just started is given back.
+fn rotate(path: &Path, full: impl Fn(&Path) -> bool) -> std::io::Result<()> {
+    static TAKEN: AtomicU32 = AtomicU32::new(0);
+    let n = TAKEN.fetch_add(1, Ordering::Relaxed);
+    let taken = path.with_extension(format!("log.{}-{n}", std::process::id()));
+    match std::fs::rename(path, &taken) {
+        // Another instance took it first.
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(()),
+        other => other?,
+    }
+    if full(&taken) {
+        return std::fs::rename(&taken, path.with_extension("log.old"));
+    }
+    give_back(&taken, path)
+}
+
+/// Puts the log at `taken` back at `path`. A link never replaces a file:
+/// if an instance has started yet another log there, the lines are added
+/// to it instead.
+fn give_back(taken: &Path, path: &Path) -> std::io::Result<()> {
+    if std::fs::hard_link(taken, path).is_err() {
+        let lines = std::fs::read(taken)?;
+        let mut f = std::fs::OpenOptions::new()
+            .create(true)
+            .append(true)
+            .open(path)?;
+        f.write_all(&lines)?;
+    }
+    std::fs::remove_file(taken)
 }
 
 /// `message` cut to at most `max` bytes, at a character boundary, saying so.
@@ -202,6 +248,57 @@ mod tests {
             .unwrap()
             .len();
         assert!(old <= MAX_LOG_BYTES && old > MAX_LOG_BYTES / 2, "{old}");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    /// Six instances that find the log full at the same moment rotate it
+    /// once: `.old` is the full log, and every instance's line is kept
+    /// (one used to rotate the log another had just started, putting that
+    /// log's few lines over the history).
+    #[test]
+    fn instances_rotating_at_once_keep_the_history() {
+        const WRITERS: usize = 6;
+        let dir = std::env::temp_dir().join(format!("mountains-log6-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("mountains.log");
+        let old = path.with_extension("log.old");
+        for round in 0..60 {
+            // A log one short line from full, with this round's mark.
+            let mark = format!("history of round {round}\n");
+            let fill = MAX_LOG_BYTES as usize - mark.len() - 8;
+            std::fs::write(&path, mark.clone() + &"h".repeat(fill)).unwrap();
+            let start = std::sync::Arc::new(std::sync::Barrier::new(WRITERS));
+            let writers: Vec<_> = (0..WRITERS)
+                .map(|w| {
+                    let (path, start) = (path.clone(), start.clone());
+                    std::thread::spawn(move || {
+                        start.wait();
+                        append(&path, &format!("round {round} writer {w}"))
+                    })
+                })
+                .collect();
+            for writer in writers {
+                let wrote = writer.join().unwrap();
+                assert!(wrote.is_ok(), "round {round}: {wrote:?}");
+            }
+            let history = std::fs::read_to_string(&old).unwrap();
+            assert!(
+                history.starts_with(&mark),
+                "round {round}: .old holds {} bytes, not the full log",
+                history.len()
+            );
+            let log = std::fs::read_to_string(&path).unwrap();
+            for w in 0..WRITERS {
+                let line = format!("round {round} writer {w}\n");
+                assert!(
+                    log.contains(&line) || history.contains(&line),
+                    "round {round}: writer {w}'s line is lost"
+                );
+            }
+            let strays = std::fs::read_dir(&dir).unwrap().count();
+            assert_eq!(strays, 2, "round {round}: files left beside the log");
+        }
         let _ = std::fs::remove_dir_all(&dir);
     }
 }

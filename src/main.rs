@@ -22,17 +22,15 @@ fn main() -> ExitCode {
     let inv = match cli::parse(&args) {
         Ok(inv) => inv,
         Err(e) => {
-            // The message names what was wrong; the usage after it would
-            // push it off a small terminal.
-            console::err(&format!(
-                "mountains: {e}\n`mountains --help` lists every mode, flag and key."
-            ));
             // Arguments Windows sent and we did not understand are invisible
             // without a console: keep them in the log as well.
             if cfg!(windows) {
                 gui_log();
-                log::record(&e.to_string());
             }
+            // The message names what was wrong; the usage after it would
+            // push it off a small terminal.
+            log::error(&e.to_string());
+            console::err("`mountains --help` lists every mode, flag and key.");
             return ExitCode::from(EXIT_USAGE);
         }
     };
@@ -80,7 +78,7 @@ fn main() -> ExitCode {
     let loaded = match load::resolve(inv.config.as_deref(), &inv.sets, unreadable) {
         Ok(l) => l,
         Err(p) => {
-            console::err(&format!("mountains: error: {p}"));
+            console::error(&p.to_string());
             return ExitCode::from(EXIT_USAGE);
         }
     };
@@ -104,7 +102,7 @@ fn main() -> ExitCode {
             // in its source instead of what to do.
             #[cfg(unix)]
             if let Err(e) = saver::libcheck::check_display(inv.xss.display.is_some()) {
-                log::warn(&e.to_string());
+                log::error(&e.to_string());
                 return ExitCode::FAILURE;
             }
             #[cfg(unix)]
@@ -173,7 +171,7 @@ fn run_saver(
     match saver::run(mode, loaded.settings, opened, xss) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            log::warn(&e.to_string());
+            log::error(&e.to_string());
             ExitCode::FAILURE
         }
     }

@@ -50,7 +50,7 @@ impl fmt::Display for SaverError {
             SaverError::NoSuchWindow(id) => write!(f, "there is no X window 0x{id:x} ({id})"),
             SaverError::ServerGone(display) => write!(
                 f,
-                "error: the X server went away (display {display}): nothing left to draw on"
+                "the X server went away (display {display}): nothing left to draw on"
             ),
             SaverError::Unsupported(what) => f.write_str(what),
             SaverError::Other(what) => f.write_str(what),

@@ -17,7 +17,8 @@ use super::keys::{self, Value};
 /// One thing wrong in a preferences source.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Problem {
-    /// Where it came from: a file path, or `--set`.
+    /// Where it came from: a file path (`--config PATH` when that flag's
+    /// file is refused), or `--set`.
     pub source: String,
     /// 1-based line and column, when the source is a file.
     pub position: Option<(usize, usize)>,
@@ -360,7 +361,10 @@ pub fn resolve(
         problems = apply_file(&mut settings, path);
         let refused = config.is_some() && unreadable != Unreadable::Defaults;
         if refused && problems.iter().any(Problem::is_unreadable) {
-            return Err(problems.remove(0));
+            // A mistake on the command line: named by its flag.
+            let mut refusal = problems.remove(0);
+            refusal.source = format!("--config {}", refusal.source);
+            return Err(refusal);
         }
     }
     for (key, value) in sets {

@@ -31,7 +31,7 @@ use crate::settings::{load, paths};
 /// platform's), starting from `loaded`. `parent` owns the window on Windows.
 pub fn run(config: Option<&Path>, loaded: &load::Loaded, parent: Option<u64>) -> ExitCode {
     let Some(path) = config_path(config, loaded) else {
-        crate::console::err("mountains: no home directory: cannot find the preferences file");
+        crate::console::error("no home directory: cannot find the preferences file");
         return ExitCode::FAILURE;
     };
     let settings = loaded.settings.clone();
@@ -43,7 +43,7 @@ pub fn run(config: Option<&Path>, loaded: &load::Loaded, parent: Option<u64>) ->
     match window::run(make, owner) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            crate::log::warn(&e);
+            crate::log::error(&e);
             ExitCode::FAILURE
         }
     }

@@ -112,6 +112,64 @@ fn bad_arguments_exit_2_and_name_the_flag() {
     }
 }
 
+/// Every error begins the same way and names the flag it is about (or the
+/// argument nothing takes): they began `mountains: -o x.bmp:` or
+/// `mountains: error: --set:`, and `/p:` said only "`` is not a window
+/// handle".
+#[test]
+fn every_error_says_error_and_names_its_flag() {
+    let dir = scratch("errors");
+    let missing = dir.join("none/m.toml").display().to_string();
+    let no_dir = dir.join("none/x.png").display().to_string();
+    let missing = missing.as_str();
+    fn render<'a>(more: &[&'a str]) -> Vec<&'a str> {
+        [&["render", "-o", "x.png"], more].concat()
+    }
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (vec!["--bogus"], "--bogus"),
+        (vec!["render", "-o", "x.bmp"], "-o x.bmp"),
+        (vec!["heightmap", "-o", "x.jpg"], "-o x.jpg"),
+        (vec!["render"], "-o"),
+        (vec!["/p:"], "/p"),
+        (vec!["/p", "junk"], "/p"),
+        (vec!["/P:junk"], "/P"),
+        (vec!["-c:0"], "-c"),
+        (vec!["--window-id", "junk"], "--window-id"),
+        (vec!["--window-id", "0x100000000"], "--window-id"),
+        (vec!["--layer", "wallpaper"], "--layer"),
+        (vec!["-delay", "soon"], "-delay"),
+        (vec!["-cragginess"], "-cragginess"),
+        (vec!["--window", "--root"], "--root"),
+        (vec!["--size", "64x36"], "--size"),
+        (render(&["--size", "wide"]), "--size"),
+        (render(&["--size", "0x5"]), "--size"),
+        (render(&["--size", "40000x2"]), "--size"),
+        (render(&["--set", "cragginess=999"]), "--set"),
+        (render(&["--set", "nokey=1"]), "--set"),
+        (render(&["--set", "novalue"]), "--set"),
+        (render(&["--config", ""]), "--config"),
+        (render(&["--config", missing]), "--config"),
+        (render(&["--open", "/nonexistent/h.png"]), "--open"),
+        (vec!["--check-config", missing], "--check-config"),
+        (vec!["--config", missing, "--check-config"], "--config"),
+        (
+            vec![
+                "render", "--size", "8x8", "--set", "detail=4", "-o", &no_dir,
+            ],
+            "-o",
+        ),
+        (vec!["heightmap", "--set", "detail=4", "-o", &no_dir], "-o"),
+    ];
+    for (args, flag) in cases {
+        let o = mountains(&args);
+        let err = stderr(&o);
+        assert!(!o.status.success(), "{args:?}: {err}");
+        let first = err.lines().next().unwrap_or_default();
+        assert!(first.starts_with("mountains: error: "), "{args:?}: {err}");
+        assert!(first.contains(flag), "{args:?}: no {flag} in {first}");
+    }
+}
+
 /// A mistake on the command line is said in a line that stays on the
 /// screen: the message with the nearest flag, and where to read the rest,
 /// not the whole usage after it.
@@ -123,7 +181,7 @@ fn a_mistyped_flag_is_answered_in_two_lines() {
     assert_eq!(
         err.lines().collect::<Vec<_>>(),
         [
-            "mountains: unknown argument `--colour`; did you mean `--color`?",
+            "mountains: error: unknown argument `--colour`; did you mean `--color`?",
             "`mountains --help` lists every mode, flag and key."
         ],
         "{err}"

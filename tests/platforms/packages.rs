@@ -118,20 +118,20 @@ fn arch() -> String {
     stdout("dpkg", &["--print-architecture"]).trim().to_string()
 }
 
-/// One line of `dpkg-deb -c`: mode, owner, and a link's target.
+/// One line of `dpkg-deb -c`: mode, owner, size in bytes, and a link's target.
 #[derive(Debug, PartialEq)]
 struct Entry {
     mode: String,
     owner: String,
+    size: u64,
     link: Option<String>,
 }
 
-/// The package's files by path (without the leading `.`), folders left out.
-fn contents(deb: &Path) -> BTreeMap<String, Entry> {
+/// Every entry of the package by path (without the leading `.`), folders too.
+fn listing(deb: &Path) -> BTreeMap<String, Entry> {
     let listing = stdout("dpkg-deb", &["-c", &deb.display().to_string()]);
     listing
         .lines()
-        .filter(|l| !l.starts_with('d'))
         .map(|line| {
             let fields: Vec<&str> = line.split_whitespace().collect();
             assert!(fields.len() >= 6, "{line}");
@@ -140,11 +140,43 @@ fn contents(deb: &Path) -> BTreeMap<String, Entry> {
             let entry = Entry {
                 mode: fields[0].into(),
                 owner: fields[1].into(),
+                size: fields[2].parse().expect("a size in bytes"),
                 link,
             };
             (path, entry)
         })
         .collect()
+}
+
+/// The package's files by path (without the leading `.`), folders left out.
+fn contents(deb: &Path) -> BTreeMap<String, Entry> {
+    let mut entries = listing(deb);
+    entries.retain(|_, e| !e.mode.starts_with('d'));
+    entries
+}
+
+/// What the package's entries take once installed, in KiB as
+/// dpkg-gencontrol counts them: a file its size rounded up, anything else
+/// (a folder, a link) 1.
+fn installed_kib(deb: &Path) -> u64 {
+    listing(deb)
+        .values()
+        .map(|e| {
+            if e.mode.starts_with('-') {
+                e.size.div_ceil(1024)
+            } else {
+                1
+            }
+        })
+        .sum()
+}
+
+/// Whether the ELF file at `path` keeps its symbol table or debug info.
+fn has_symbols(path: &Path) -> bool {
+    let sections = stdout("readelf", &["-S", "-W", &path.display().to_string()]);
+    [".symtab", ".debug_info", ".debug_line"]
+        .iter()
+        .any(|s| sections.contains(s))
 }
 
 /// Everything the package installs, and nothing else.
@@ -226,14 +258,25 @@ fn deb_depends_on_the_c_library_and_every_library_opened_at_run_time() {
     unique.sort();
     unique.dedup();
     assert_eq!(unique.len(), names.len(), "a package twice: {depends}");
+    // What the files packaged take, not what the folder they were put
+    // together in took (blocks differ from one filesystem to another).
     let size: u64 = field("Installed-Size").parse().expect("a number of KiB");
-    let binary = std::fs::metadata(env!("CARGO_BIN_EXE_mountains"))
-        .unwrap()
-        .len();
-    assert!(
-        size > 0 && size * 1024 < binary,
-        "{size} KiB: the binary is not stripped?"
-    );
+    assert_eq!(size, installed_kib(deb), "Installed-Size");
+    // The binary packaged is the one given, stripped on the way: smaller
+    // when the given one has symbols (a test or debug build), no larger
+    // when the profile stripped it already (release).
+    let given = Path::new(env!("CARGO_BIN_EXE_mountains"));
+    let binary = std::fs::metadata(given).unwrap().len();
+    let packaged = contents(deb)["/usr/bin/mountains"].size;
+    assert!(packaged > 0, "an empty binary");
+    if has_symbols(given) {
+        assert!(
+            packaged < binary,
+            "{packaged} of {binary} bytes: not stripped?"
+        );
+    } else {
+        assert!(packaged <= binary, "{packaged} of {binary} bytes");
+    }
 }
 
 /// A scratch dpkg root whose database holds this system's entries for the
@@ -353,19 +396,9 @@ fn deb_installs_runs_and_is_removed_without_a_trace() {
             "{program}"
         );
     }
-    let sections = stdout(
-        "readelf",
-        &[
-            "-S",
-            "-W",
-            &root.dir.join("usr/bin/mountains").display().to_string(),
-        ],
-    );
     assert!(
-        ![".symtab", ".debug_info", ".debug_line"]
-            .iter()
-            .any(|s| sections.contains(s)),
-        "not stripped:\n{sections}"
+        !has_symbols(&root.dir.join("usr/bin/mountains")),
+        "not stripped"
     );
     // The contrib files as they are in the sources; the man page gzipped.
     let same = |installed: &str, source: &str| {

@@ -28,6 +28,6 @@ pub fn report_when_the_server_goes() {
 
 /// Xlib's call when the connection breaks.
 unsafe extern "C" fn server_gone(_display: *mut Display) -> c_int {
-    crate::log::warn(&SaverError::server_gone().to_string());
+    crate::log::error(&SaverError::server_gone().to_string());
     std::process::exit(1)
 }
