@@ -79,3 +79,13 @@ fn the_table_of_commands_is_the_usage() {
         "README's table lacks {missing:?}; --help's usage lacks {extra:?}"
     );
 }
+
+/// The settings window's sizes in the README are the layout's own.
+#[test]
+fn the_settings_window_sizes_are_the_layouts() {
+    use mountains::settings_ui::layout::{MIN_H, MIN_W, WINDOW_H, WINDOW_W};
+    let text = readme().split_whitespace().collect::<Vec<_>>().join(" ");
+    let said =
+        format!("opens at {WINDOW_W}x{WINDOW_H} and may be made as small as {MIN_W}x{MIN_H}");
+    assert!(text.contains(&said), "README should say: {said}");
+}
