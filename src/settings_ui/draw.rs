@@ -2,13 +2,18 @@
 //! Windows 95 dialog (seed 003's Settings dialog is the reference).
 
 use super::font::{self, ADVANCE};
-use super::layout::{Button, CTRL_X, LABEL_X, Layout, ROW_H, SEED_BUTTON, VALUE_X};
+use super::help::{self, Tone};
+use super::layout::{
+    Button, CTRL_END, CTRL_X, HELP_CHARS, HELP_LINE, LABEL_X, Layout, PANEL_W, ROW_H, SEED_BUTTON,
+    VALUE_X,
+};
 use super::model::Model;
 use super::values::{self, Widget};
 use super::widgets::{
     ALERT, DARK, DIM, FACE, FIELD, HINT, SELECT, SELECT_TEXT, TEXT, bevel, blit, centred_text,
-    dotted, fill, fit, fit_middle, help_then_message, outline, text, tick, typed_text, wrap,
+    dotted, etched, fill, outline, scroll_bar, text, tick, typed_text,
 };
+use super::wrap::{fit, fit_middle, help_then_message, wrap};
 use crate::render::{Frame, Rect};
 use crate::settings::keys::{self, KEYS, Value};
 
@@ -30,20 +35,31 @@ pub fn draw(frame: &mut Frame, layout: &Layout, model: &Model, extras: &Extras<'
         let focused = model.focused_button() == Some(*b);
         draw_button(frame, layout, *r, b.caption(), focused, *b == Button::Ok);
     }
-    for (y, title) in &layout.headings {
-        let x = layout.panel_x + layout.px(2);
-        text(frame, layout, x, *y + layout.px(4), title, SELECT);
-        let w = layout.px(font::text_width(title));
-        let line_y = *y + layout.px(15);
-        fill(frame, Rect::sized(x, line_y, w, layout.px(1)), SELECT);
-    }
-    for i in 0..KEYS.len() {
-        draw_row(frame, layout, model, i);
-    }
+    draw_rows(frame, layout, model);
     draw_help(frame, layout, model, extras);
     if let Some(list) = &model.open_list {
         draw_list(frame, layout, &list.files, list.pick);
     }
+}
+
+/// The shown part of the settings list, its scroll bar, and a line under
+/// it that parts it from the help.
+fn draw_rows(frame: &mut Frame, layout: &Layout, model: &Model) {
+    for (y, title) in layout.headings() {
+        let x = layout.panel_x + layout.px(2);
+        text(frame, layout, x, y + layout.px(4), title, SELECT);
+        let w = layout.px(font::text_width(title));
+        let line_y = y + layout.px(15);
+        fill(frame, Rect::sized(x, line_y, w, layout.px(1)), SELECT);
+    }
+    for i in layout.rows_shown().filter(|i| *i < KEYS.len()) {
+        draw_row(frame, layout, model, i);
+    }
+    if let Some(bar) = layout.list.bar() {
+        scroll_bar(frame, layout, &bar);
+    }
+    let under = layout.help_y - layout.px(4);
+    etched(frame, layout, layout.panel_x, under, layout.px(PANEL_W));
 }
 
 fn draw_button(
@@ -88,14 +104,17 @@ fn draw_preview(frame: &mut Frame, layout: &Layout, extras: &Extras<'_>) {
         blit(frame, pic, inner.x0, inner.y0);
     }
     let y = inner.y1 + layout.px(5);
-    text(
-        frame,
-        layout,
-        inner.x0 + layout.px(4),
-        y,
-        extras.caption,
-        TEXT,
-    );
+    // In a narrow window the caption stays off the panel: the hint after
+    // its last wide gap goes first, then a long name loses its middle.
+    let chars = ((inner.x1 - inner.x0) / layout.px(ADVANCE)).saturating_sub(2) as usize;
+    let mut caption = extras.caption;
+    while caption.chars().count() > chars
+        && let Some(gap) = caption.rfind("   ")
+    {
+        caption = &caption[..gap];
+    }
+    let caption = fit_middle(caption, chars);
+    text(frame, layout, inner.x0 + layout.px(4), y, &caption, TEXT);
 }
 
 /// The preview picture's size for a layout.
@@ -147,7 +166,7 @@ fn draw_row(frame: &mut Frame, layout: &Layout, model: &Model, i: usize) {
         Widget::Slider => draw_slider(frame, layout, model, i, editing),
         Widget::Check => draw_check(frame, layout, model, i),
         Widget::Choice => draw_choice(frame, layout, model, i),
-        Widget::Text => draw_field(frame, layout, model, i, editing, 372),
+        Widget::Text => draw_field(frame, layout, model, i, editing, CTRL_END),
         Widget::Seed => {
             draw_field(frame, layout, model, i, editing, SEED_BUTTON.0 - 4);
             let r = layout.row(i);
@@ -268,33 +287,22 @@ fn draw_field(
 
 fn draw_help(frame: &mut Frame, layout: &Layout, model: &Model, extras: &Extras<'_>) {
     let x = layout.panel_x + layout.px(2);
-    let chars = (372 / ADVANCE) as usize;
+    let chars = HELP_CHARS;
     let mut y = layout.help_y;
-    let line = layout.px(12);
-    let mut lines: Vec<(String, u32)> = Vec::new();
-    if let Some(i) = model.focused_row() {
-        let key = &KEYS[i];
-        lines.push((key.doc.to_string(), TEXT));
-        lines.push((format!("Allowed: {}", key.kind.allowed()), HINT));
-        if values::accepts_typing(key) {
-            lines.push(("Type a value and press Enter; Esc cancels.".into(), HINT));
-        }
-    } else {
-        lines.push((
-            "Tab moves, arrows change, Enter saves, Esc cancels.".into(),
-            HINT,
-        ));
-    }
+    let line = layout.px(HELP_LINE);
+    let mut lines: Vec<(String, u32)> = help::lines(model.focused_row().map(|i| &KEYS[i]))
+        .into_iter()
+        .map(|(l, tone)| (l, if tone == Tone::Text { TEXT } else { HINT }))
+        .collect();
     if (0..KEYS.len()).any(|i| model.changed(i)) {
-        lines.push(("* changed here; OK saves, Cancel forgets.".into(), HINT));
+        lines.push((help::CHANGED.into(), HINT));
     }
     let alert = if model.file_error.is_some() {
         ALERT
     } else {
         TEXT
     };
-    let bottom = layout.button(Button::Ok).y0 - layout.px(14);
-    let rows = (bottom.saturating_sub(y) / line) as usize;
+    let rows = (layout.file_y.saturating_sub(y) / line) as usize;
     let (help, colours): (Vec<String>, Vec<u32>) = lines.into_iter().unzip();
     // Each help line keeps its colour through wrapping.
     let mut coloured = Vec::new();
@@ -309,7 +317,7 @@ fn draw_help(frame: &mut Frame, layout: &Layout, model: &Model, extras: &Extras<
     }
     // A long path keeps its file name.
     let file = format!("File: {}", fit_middle(extras.file, chars.saturating_sub(6)));
-    text(frame, layout, x, bottom + layout.px(2), &file, HINT);
+    text(frame, layout, x, layout.file_y + layout.px(2), &file, HINT);
 }
 
 /// A data set as listed: its name first, then the folder it is in.

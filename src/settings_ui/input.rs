@@ -44,3 +44,13 @@ pub enum Input {
     /// Wheel turned at a pixel; positive lines are away from the user.
     Wheel(f64, f64, i32),
 }
+
+impl Input {
+    /// True for a key; false for the pointer's presses, moves and wheel.
+    pub fn is_key(&self) -> bool {
+        !matches!(
+            self,
+            Input::Press(..) | Input::Move(..) | Input::Release(..) | Input::Wheel(..)
+        )
+    }
+}

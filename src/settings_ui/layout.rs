@@ -4,36 +4,59 @@
 //! (1 at 100%, 2 at 200%), so the font stays crisp and hit-testing matches
 //! drawing exactly at every scale.
 
+use super::font::ADVANCE;
+use super::help;
+use super::list_view::{BarPart, Line, ListView};
 use super::values::{self, Widget};
 use crate::render::Rect;
-use crate::settings::keys::KEYS;
+use crate::settings::keys::{KEYS, Key};
 
 /// Logical size the window asks for.
 pub const WINDOW_W: u32 = 960;
 /// Logical height the window asks for.
 pub const WINDOW_H: u32 = 620;
+/// The narrowest the window may be made, logical pixels: the panel, the
+/// margins, and a preview as wide as the buttons above it.
+pub const MIN_W: u32 = 640;
+/// The lowest the window may be made, logical pixels: the list then shows
+/// eight lines and scrolls, and the help below it is whole.
+pub const MIN_H: u32 = WINDOW_H / 2;
 
 const MARGIN: u32 = 8;
-const PANEL_W: u32 = 372;
+/// Width of the settings panel, logical pixels.
+pub const PANEL_W: u32 = 372;
 /// Height of one settings row, logical pixels.
 pub const ROW_H: u32 = 17;
 const BUTTON_H: u32 = 22;
 const BUTTON_W: u32 = 84;
 const TOOL_W: u32 = 64;
+/// The scroll bar, at the panel's right.
+const SCROLL_W: u32 = 14;
+/// A row: the panel less the scroll bar's column.
+const ROW_W: u32 = PANEL_W - SCROLL_W;
+/// One line of help.
+pub const HELP_LINE: u32 = 12;
+/// Characters in a line of help: the panel's width.
+pub const HELP_CHARS: usize = (PANEL_W / ADVANCE) as usize;
+const HELP_GAP: u32 = 6;
+/// The file line over the buttons.
+const FILE_H: u32 = 14;
 
 /// Control columns inside a row, logical pixels from the panel's left.
 pub const LABEL_X: u32 = 12;
 /// Where a row's control starts.
 pub const CTRL_X: u32 = 128;
+/// Where a row's control ends, clear of the scroll bar.
+pub const CTRL_END: u32 = ROW_W - 4;
 const MINUS: (u32, u32) = (128, 142);
-const TRACK: (u32, u32) = (148, 290);
-const PLUS: (u32, u32) = (296, 310);
+const TRACK: (u32, u32) = (148, 274);
+const PLUS: (u32, u32) = (280, 294);
 /// Where a slider's value text starts.
-pub const VALUE_X: u32 = 316;
+pub const VALUE_X: u32 = 300;
 const LEFT_ARROW: (u32, u32) = MINUS;
-const RIGHT_ARROW: (u32, u32) = (358, 372);
+const RIGHT_ARROW: (u32, u32) = (CTRL_END - 14, CTRL_END);
 /// The seed row's "Random" / "Keep" button.
-pub const SEED_BUTTON: (u32, u32) = (306, 372);
+pub const SEED_BUTTON: (u32, u32) = (CTRL_END - 66, CTRL_END);
 
 /// The buttons, in focus order after the rows.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -109,6 +132,8 @@ pub enum Part {
 pub enum Hit {
     /// A settings row (index into `KEYS`) and the part of it.
     Row(usize, Part),
+    /// A part of the settings list's scroll bar.
+    Bar(BarPart),
     /// A button.
     Button(Button),
     /// Entry `i` of the open-a-data-set list.
@@ -128,16 +153,20 @@ pub struct Layout {
     pub height: u32,
     /// Left edge of the settings panel, pixels.
     pub panel_x: u32,
-    /// Top of each row, pixels, indexed like `KEYS`.
-    pub row_y: Vec<u32>,
-    /// Section headings: top, text.
-    pub headings: Vec<(u32, &'static str)>,
+    /// The settings list (headings and rows) and the window it is seen
+    /// through: what is shown, and where it is scrolled to.
+    pub list: ListView,
     /// Where the focused key's help text starts, pixels.
     pub help_y: u32,
+    /// Top of the line naming the preferences file, pixels: the help ends
+    /// above it.
+    pub file_y: u32,
     /// Each button and its rectangle.
     pub buttons: Vec<(Button, Rect)>,
     /// The preview picture.
     pub preview: Rect,
+    /// The row whose control is the seed's field and button.
+    seed_row: Option<usize>,
 }
 
 /// The whole scale for a window's scale factor (1.25 -> 1, 1.5 and 2 -> 2),
@@ -158,27 +187,43 @@ pub fn whole_scale(scale_factor: f64, monitor: Option<(u32, u32)>) -> u32 {
     s
 }
 
-impl Layout {
-    /// Plans a `width` x `height` frame at whole `scale`. A frame smaller
-    /// than the window asks for keeps the panel's size and shrinks the preview.
-    pub fn new(width: u32, height: u32, scale: u32) -> Layout {
-        let s = scale.max(1);
-        let w_log = (width / s).max(WINDOW_W);
-        let h_log = (height / s).max(WINDOW_H);
-        let panel = w_log - MARGIN - PANEL_W;
-        let mut y = MARGIN;
-        let mut row_y = Vec::with_capacity(KEYS.len());
-        let mut headings = Vec::new();
-        for key in KEYS {
-            if let Some((_, title)) = SECTIONS.iter().find(|(k, _)| *k == key.name) {
-                headings.push((y * s, *title));
-                y += ROW_H;
-            }
-            row_y.push(y * s);
-            y += ROW_H;
+/// The lines of the settings list for `keys`: each key's row, a section's
+/// heading before the row that starts it.
+fn lines_of(keys: &[Key]) -> Vec<Line> {
+    let mut lines = Vec::with_capacity(keys.len() + SECTIONS.len());
+    for (i, key) in keys.iter().enumerate() {
+        if let Some((_, title)) = SECTIONS.iter().find(|(k, _)| *k == key.name) {
+            lines.push(Line::Heading(title));
         }
-        let help_y = y + 6;
+        lines.push(Line::Row(i));
+    }
+    lines
+}
+
+impl Layout {
+    /// Plans a `width` x `height` frame at whole `scale`, scrolled to the
+    /// top. A frame smaller than the window may be made keeps the smallest
+    /// layout, clipped.
+    pub fn new(width: u32, height: u32, scale: u32) -> Layout {
+        Layout::with_keys(width, height, scale, KEYS)
+    }
+
+    /// `new` for a list of `keys` other than the key table's (tests plan
+    /// the keys still to come). The list shows as many whole lines as fit
+    /// above the longest help, and scrolls when they are not all shown;
+    /// extra height goes to the preview, extra width too.
+    pub fn with_keys(width: u32, height: u32, scale: u32, keys: &[Key]) -> Layout {
+        let s = scale.max(1);
+        let w_log = (width / s).max(MIN_W);
+        let h_log = (height / s).max(MIN_H);
+        let panel = w_log - MARGIN - PANEL_W;
         let by = h_log - MARGIN - BUTTON_H;
+        let file_y = by - FILE_H;
+        let lines = lines_of(keys);
+        let help_h = help::most_rows(keys, HELP_CHARS) as u32 * HELP_LINE;
+        let room = file_y.saturating_sub(MARGIN + HELP_GAP + help_h);
+        let shown = (room / ROW_H).clamp(1, lines.len().max(1) as u32);
+        let help_y = MARGIN + shown * ROW_H + HELP_GAP;
         let mut buttons = Vec::new();
         for (i, b) in [Button::New, Button::Open, Button::SaveData]
             .iter()
@@ -205,17 +250,33 @@ impl Layout {
             x1: r.x1 * s,
             y1: r.y1 * s,
         };
+        let area = Rect::sized(panel, MARGIN, PANEL_W, shown * ROW_H);
         Layout {
             scale: s,
             width,
             height,
             panel_x: panel * s,
-            row_y,
-            headings,
+            list: ListView::new(lines, area, ROW_H, SCROLL_W, s),
             help_y: help_y * s,
+            file_y: file_y * s,
             buttons: buttons.into_iter().map(|(b, r)| (b, scaled(r))).collect(),
             preview: scaled(preview),
+            seed_row: keys.iter().position(|k| values::widget(k) == Widget::Seed),
         }
+    }
+
+    /// Scrolls the list as little as shows row `i` whole.
+    pub fn reveal_row(&mut self, i: usize) {
+        if let Some(line) = self.list.line_of_row(i) {
+            self.list.reveal(line);
+        }
+    }
+
+    /// Whether row `i` is shown (not scrolled out of the list's window).
+    pub fn row_shown(&self, i: usize) -> bool {
+        self.list
+            .line_of_row(i)
+            .is_some_and(|l| self.list.top(l).is_some())
     }
 
     /// A logical length in pixels.
@@ -231,15 +292,35 @@ impl Layout {
             .map_or(Rect::default(), |(_, r)| *r)
     }
 
-    /// The rectangle of row `i` (across the whole panel).
+    /// The rectangle of row `i` (across the panel up to the scroll bar)
+    /// where it is shown; an empty one while it is scrolled out of sight.
     pub fn row(&self, i: usize) -> Rect {
-        let y0 = self.row_y.get(i).copied().unwrap_or(0);
+        let top = self.list.line_of_row(i).and_then(|l| self.list.top(l));
+        let Some(y0) = top else {
+            return Rect::default();
+        };
         Rect {
             x0: self.panel_x,
             y0,
-            x1: self.panel_x + self.px(PANEL_W),
+            x1: self.panel_x + self.px(ROW_W),
             y1: y0 + self.px(ROW_H),
         }
+    }
+
+    /// The shown section headings: top, pixels, and title.
+    pub fn headings(&self) -> impl Iterator<Item = (u32, &'static str)> + '_ {
+        self.list.visible().filter_map(|(y, line)| match line {
+            Line::Heading(title) => Some((y, title)),
+            Line::Row(_) => None,
+        })
+    }
+
+    /// The shown rows (indices into `KEYS`), top to bottom.
+    pub fn rows_shown(&self) -> impl Iterator<Item = usize> + '_ {
+        self.list.visible().filter_map(|(_, line)| match line {
+            Line::Row(i) => Some(i),
+            Line::Heading(_) => None,
+        })
     }
 
     /// A span of a row's columns (logical, from the panel's left) in pixels.
@@ -303,10 +384,23 @@ impl Layout {
         if let Some((b, _)) = self.buttons.iter().find(|(_, r)| inside(r)) {
             return Some(Hit::Button(*b));
         }
-        if let Some(i) = (0..self.row_y.len()).find(|i| inside(&self.row(*i))) {
+        if let Some(part) = self.list.bar_part(xi, yi) {
+            return Some(Hit::Bar(part));
+        }
+        if let Some(i) = self.rows_shown().find(|i| inside(&self.row(*i))) {
             return Some(Hit::Row(i, self.part(i, x)));
         }
         inside(&self.preview).then_some(Hit::Preview)
+    }
+
+    /// Whether the point `(x, y)` (pixels) is over the settings list or
+    /// its scroll bar: where the wheel scrolls the list.
+    pub fn over_list(&self, x: f64, y: f64) -> bool {
+        x.is_finite()
+            && y.is_finite()
+            && x >= 0.0
+            && y >= 0.0
+            && self.list.contains(x as u32, y as u32)
     }
 
     /// The part of row `i` at pixel column `x`.
@@ -315,7 +409,7 @@ impl Layout {
             let (a, b) = self.columns(span);
             x >= a as f64 && x < b as f64
         };
-        let seed = KEYS.get(i).map(values::widget) == Some(Widget::Seed);
+        let seed = self.seed_row == Some(i);
         if seed && within(SEED_BUTTON) {
             Part::Next
         } else if seed && within((CTRL_X, SEED_BUTTON.0)) {

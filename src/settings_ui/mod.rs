@@ -2,7 +2,8 @@
 //! a live preview mountain on the other, drawn with our own framebuffer and
 //! bitmap font, usable by keyboard alone and by mouse.
 //!
-//! `model` (state and inputs), `layout` (geometry, hit-testing), `values`
+//! `model` (state and inputs), `layout` (geometry, hit-testing; the
+//! settings list's scrolling window: `list_view`), `values`
 //! (widgets from the key table) and `draw` are pure and tested without a
 //! window; `screen` ties them to files and the preview; `window` is the
 //! winit + softbuffer shell.
@@ -12,8 +13,10 @@ pub mod editor;
 pub mod font;
 mod font_ascii;
 mod font_latin1;
+mod help;
 mod input;
 pub mod layout;
+pub mod list_view;
 pub mod model;
 pub mod open_list;
 pub mod preview;
@@ -21,6 +24,7 @@ pub mod screen;
 pub mod values;
 mod widgets;
 pub mod window;
+mod wrap;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;

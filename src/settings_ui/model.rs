@@ -5,6 +5,7 @@ use std::path::PathBuf;
 
 pub use super::input::Input;
 use super::layout::{Button, Hit, Layout, Part};
+use super::list_view::BarPart;
 use super::open_list::{OpenList, Outcome};
 use super::values::{self, Widget};
 use crate::settings::keys::{self, Change, KEYS, Key, Value};
@@ -54,11 +55,24 @@ pub struct Model {
     pub open_list: Option<OpenList>,
     /// The seed of the preview mountain, when it has one.
     pub preview_seed: Option<u64>,
-    /// The row whose slider is being dragged.
-    dragging: Option<usize>,
+    /// What the held mouse button is dragging.
+    drag: Option<Drag>,
     /// The button under a press, activated on release over it.
     pressed: Option<Button>,
 }
+
+/// What a held mouse button is dragging.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Drag {
+    /// The slider of row `i`.
+    Slider(usize),
+    /// The scroll bar's thumb, grabbed at pixel row `y` while line `first`
+    /// was the list's top.
+    Thumb { y: f64, first: usize },
+}
+
+/// Lines the list scrolls for one notch of the wheel.
+const WHEEL_LINES: i64 = 3;
 
 /// How many places the focus can be: every row, then every button.
 pub fn focus_count() -> usize {
@@ -77,7 +91,7 @@ impl Model {
             file_error: None,
             open_list: None,
             preview_seed: None,
-            dragging: None,
+            drag: None,
             pressed: None,
         };
         m.reload(m.settings.clone(), problems);
@@ -148,8 +162,18 @@ impl Model {
             .collect()
     }
 
-    /// Handles one input against the current layout.
-    pub fn handle(&mut self, input: Input, layout: &Layout) -> Effect {
+    /// Handles one input against the current layout, scrolling its list
+    /// as the input asks; after a key the focused row is scrolled into view.
+    pub fn handle(&mut self, input: Input, layout: &mut Layout) -> Effect {
+        let key = input.is_key();
+        let effect = self.handle_input(input, layout);
+        if key && let Some(i) = self.focused_row() {
+            layout.reveal_row(i);
+        }
+        effect
+    }
+
+    fn handle_input(&mut self, input: Input, layout: &mut Layout) -> Effect {
         if self.open_list.is_some()
             && let Some(effect) = self.handle_list(&input, layout)
         {
@@ -171,7 +195,7 @@ impl Model {
             Input::Backspace => self.backspace(),
             Input::Char(c) => self.typed(c),
             Input::Press(x, y) => self.press(layout, x, y),
-            Input::Move(x, _) => self.drag_to(layout, x),
+            Input::Move(x, y) => self.drag_to(layout, x, y),
             Input::Release(x, y) => self.release(layout, x, y),
             Input::Wheel(x, y, lines) => self.wheel(layout, x, y, lines),
         }
@@ -446,8 +470,12 @@ impl Model {
         Effect::Redraw
     }
 
-    fn press(&mut self, layout: &Layout, x: f64, y: f64) -> Effect {
+    fn press(&mut self, layout: &mut Layout, x: f64, y: f64) -> Effect {
         match layout.hit(x, y, None) {
+            Some(Hit::Bar(part)) => {
+                self.press_bar(layout, part, y);
+                Effect::Redraw
+            }
             Some(Hit::Button(b)) => {
                 self.pressed = Some(b);
                 Effect::Redraw
@@ -471,7 +499,7 @@ impl Model {
             (Widget::Slider, Part::Minus) => self.step_row(i, -1, false),
             (Widget::Slider, Part::Plus) => self.step_row(i, 1, false),
             (Widget::Slider, Part::Track(f)) => {
-                self.dragging = Some(i);
+                self.drag = Some(Drag::Slider(i));
                 self.set_fraction(i, f)
             }
             (Widget::Choice, Part::Minus) => self.cycle(i, -1),
@@ -497,15 +525,38 @@ impl Model {
         }
     }
 
-    fn drag_to(&mut self, layout: &Layout, x: f64) -> Effect {
-        match self.dragging {
-            Some(i) => self.set_fraction(i, layout.track_fraction(x)),
+    /// The scroll bar: the arrows move a line, the track a page (the lines
+    /// shown but one, so the line at the edge stays in sight), the thumb is
+    /// grabbed.
+    fn press_bar(&mut self, layout: &mut Layout, part: BarPart, y: f64) {
+        let list = &mut layout.list;
+        let page = list.shown().saturating_sub(1).max(1) as i64;
+        match part {
+            BarPart::Up => list.scroll_by(-1),
+            BarPart::Down => list.scroll_by(1),
+            BarPart::PageUp => list.scroll_by(-page),
+            BarPart::PageDown => list.scroll_by(page),
+            BarPart::Thumb => {
+                let first = list.first();
+                self.drag = Some(Drag::Thumb { y, first });
+            }
+        }
+    }
+
+    fn drag_to(&mut self, layout: &mut Layout, x: f64, y: f64) -> Effect {
+        match self.drag {
+            Some(Drag::Slider(i)) => self.set_fraction(i, layout.track_fraction(x)),
+            Some(Drag::Thumb { y: y0, first }) => {
+                let to = layout.list.dragged(first, y - y0);
+                layout.list.scroll_to(to);
+                Effect::Redraw
+            }
             None => Effect::Redraw,
         }
     }
 
     fn release(&mut self, layout: &Layout, x: f64, y: f64) -> Effect {
-        self.dragging = None;
+        self.drag = None;
         let pressed = self.pressed.take();
         match (pressed, layout.hit(x, y, None)) {
             (Some(b), Some(Hit::Button(h))) if b == h => self.activate(b),
@@ -513,14 +564,24 @@ impl Model {
         }
     }
 
-    fn wheel(&mut self, layout: &Layout, x: f64, y: f64, lines: i32) -> Effect {
+    /// The wheel scrolls the list; over the focused row's slider or choice
+    /// it steps that value instead, so scrolling past a control never
+    /// changes it by chance.
+    fn wheel(&mut self, layout: &mut Layout, x: f64, y: f64, lines: i32) -> Effect {
+        if lines == 0 {
+            return Effect::Redraw;
+        }
         match layout.hit(x, y, None) {
-            Some(Hit::Row(i, _)) if lines != 0 => {
-                self.focus_row(i);
-                match values::widget(&KEYS[i]) {
-                    Widget::Slider | Widget::Choice => self.step_row(i, lines.signum(), false),
-                    _ => Effect::Redraw,
-                }
+            Some(Hit::Row(i, part))
+                if self.focused_row() == Some(i)
+                    && part != Part::Label
+                    && matches!(values::widget(&KEYS[i]), Widget::Slider | Widget::Choice) =>
+            {
+                self.step_row(i, lines.signum(), false)
+            }
+            _ if layout.over_list(x, y) => {
+                layout.list.scroll_by(-i64::from(lines) * WHEEL_LINES);
+                Effect::Redraw
             }
             _ => Effect::Redraw,
         }

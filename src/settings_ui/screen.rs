@@ -76,13 +76,19 @@ impl Screen {
         &self.layout
     }
 
-    /// Follows a new window size or scale.
+    /// Follows a new window size or scale: the list keeps its place as far
+    /// as it can, and the focused row stays in sight.
     pub fn resize(&mut self, width: u32, height: u32, scale: u32) {
         let Some(frame) = Frame::new(width, height) else {
             return;
         };
         self.frame = frame;
+        let first = self.layout.list.first();
         self.layout = Layout::new(width, height, scale);
+        self.layout.list.scroll_to(first);
+        if let Some(i) = self.model.focused_row() {
+            self.layout.reveal_row(i);
+        }
         self.preview
             .repaint(&self.model.settings, self.preview_size());
     }
@@ -100,7 +106,7 @@ impl Screen {
 
     /// Handles one input and carries out what it asks for.
     pub fn input(&mut self, input: Input) -> Next {
-        let effect = self.model.handle(input, &self.layout);
+        let effect = self.model.handle(input, &mut self.layout);
         self.apply(effect)
     }
 

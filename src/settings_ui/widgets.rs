@@ -1,9 +1,10 @@
 //! The settings screen's widget kit: a classic bevelled look drawn into a
-//! frame (boxes, text, a caret, a tick, a focus rectangle), scaled by the
-//! layout; what goes where is `draw.rs`'s business.
+//! frame (boxes, text, a caret, a tick, a focus rectangle, a scroll bar),
+//! scaled by the layout; what goes where is `draw.rs`'s business.
 
 use super::font::{self, ADVANCE, GLYPH_H, GLYPH_W};
 use super::layout::{Layout, ROW_H};
+use super::list_view::Bar;
 use crate::render::{Frame, Rect};
 
 /// The classic palette: button face, bevel light and shadow, text, the
@@ -51,15 +52,6 @@ pub(super) fn text(frame: &mut Frame, layout: &Layout, x: u32, y: u32, s: &str, 
             }
         }
     }
-}
-
-/// Cuts `s` to at most `chars` characters, marking the cut with "..".
-pub(super) fn fit(s: &str, chars: usize) -> String {
-    if s.chars().count() <= chars {
-        return s.to_string();
-    }
-    let keep: String = s.chars().take(chars.saturating_sub(2)).collect();
-    format!("{keep}..")
 }
 
 /// A raised (or, with `sunken`, pressed-in) bevelled box.
@@ -134,59 +126,55 @@ pub(super) fn tick(frame: &mut Frame, layout: &Layout, x: u32, y: u32) {
     }
 }
 
-/// Splits `s` into lines of at most `width` characters at spaces.
-pub(super) fn wrap(s: &str, width: usize) -> Vec<String> {
-    let mut lines = Vec::new();
-    let mut cur = String::new();
-    for word in s.split_whitespace() {
-        let word = fit_middle(word, width);
-        if !cur.is_empty() && cur.chars().count() + 1 + word.chars().count() > width {
-            lines.push(std::mem::take(&mut cur));
-        }
-        if !cur.is_empty() {
-            cur.push(' ');
-        }
-        cur.push_str(&word);
+/// A classic scroll bar: arrow buttons at its ends, a dithered track, and
+/// a raised thumb as long as the share of the list shown.
+pub(super) fn scroll_bar(frame: &mut Frame, layout: &Layout, bar: &Bar) {
+    dithered(frame, layout, bar.track);
+    for (r, up) in [(bar.up, true), (bar.down, false)] {
+        fill(frame, r, FACE);
+        bevel(frame, layout, r, false);
+        arrow(frame, layout, r, up);
     }
-    if !cur.is_empty() {
-        lines.push(cur);
-    }
-    lines
+    fill(frame, bar.thumb, FACE);
+    bevel(frame, layout, bar.thumb, false);
 }
 
-/// `word` shortened to `chars` by leaving out its middle: a path keeps its
-/// start and its file name.
-pub(super) fn fit_middle(word: &str, chars: usize) -> String {
-    let n = word.chars().count();
-    if n <= chars || chars < 5 {
-        return fit(word, chars);
+/// The track's checkerboard of face and light, one square a logical pixel.
+fn dithered(frame: &mut Frame, layout: &Layout, r: Rect) {
+    let k = layout.scale;
+    fill(frame, r, FACE);
+    for y in (r.y0..r.y1).step_by(k as usize) {
+        for x in (r.x0..r.x1).step_by(k as usize) {
+            if ((x - r.x0) / k + (y - r.y0) / k).is_multiple_of(2) {
+                fill(frame, Rect::sized(x, y, k, k), LIGHT);
+            }
+        }
     }
-    let tail = (chars - 2) / 2;
-    let head = chars - 2 - tail;
-    let start: String = word.chars().take(head).collect();
-    let end: String = word.chars().skip(n - tail).collect();
-    format!("{start}..{end}")
 }
 
-/// Which of `help` (lines, each to be wrapped) and `message` to show in
-/// `rows` rows of `width` characters: the whole message, wrapped, comes
-/// first in priority (an error must not be cut mid-sentence), the help fills
-/// the rows left above it. Returns the wrapped help lines and message lines.
-pub(super) fn help_then_message(
-    help: &[String],
-    message: &str,
-    width: usize,
-    rows: usize,
-) -> (Vec<String>, Vec<String>) {
-    let mut message = wrap(message, width);
-    message.truncate(rows);
-    let room = rows - message.len();
-    let help = help
-        .iter()
-        .flat_map(|l| wrap(l, width))
-        .take(room)
-        .collect();
-    (help, message)
+/// A solid triangle, 7 logical pixels wide and 4 high, centred in `r`,
+/// pointing up or down.
+fn arrow(frame: &mut Frame, layout: &Layout, r: Rect, up: bool) {
+    let k = layout.scale;
+    let x = r.x0 + layout.px(((r.x1 - r.x0) / k).saturating_sub(7) / 2);
+    let y = r.y0 + layout.px(((r.y1 - r.y0) / k).saturating_sub(4) / 2);
+    for row in 0..4u32 {
+        let half = if up { row } else { 3 - row };
+        let r = Rect::sized(
+            x + layout.px(3 - half),
+            y + layout.px(row),
+            layout.px(2 * half + 1),
+            k,
+        );
+        fill(frame, r, TEXT);
+    }
+}
+
+/// A line cut into the face: shadow over light, `w` pixels long.
+pub(super) fn etched(frame: &mut Frame, layout: &Layout, x: u32, y: u32, w: u32) {
+    let t = layout.px(1);
+    fill(frame, Rect::sized(x, y, w, t), SHADOW);
+    fill(frame, Rect::sized(x, y + t, w, t), LIGHT);
 }
 
 /// The classic dotted focus rectangle.
@@ -202,35 +190,5 @@ pub(super) fn dotted(frame: &mut Frame, r: Rect, k: u32) {
         fill(frame, Rect::sized(r.x0, y, k, k), DARK);
         fill(frame, Rect::sized(r.x1 - k, y, k, k), DARK);
         y += 2 * k;
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn a_long_path_keeps_its_start_and_its_file_name() {
-        let path = "/home/someone/a/very/long/folder/name/for/the/preferences/mountains.toml";
-        let short = fit_middle(path, 30);
-        assert_eq!(short.chars().count(), 30);
-        assert!(short.starts_with("/home/someone"), "{short}");
-        assert!(short.ends_with("mountains.toml"), "{short}");
-        assert_eq!(fit_middle("short", 30), "short");
-    }
-
-    #[test]
-    fn the_message_is_shown_whole_and_the_help_gives_way() {
-        let help: Vec<String> = (0..5).map(|i| format!("help line {i}")).collect();
-        let message = "cannot save /home/someone/.config/mountains/mountains.toml: \
-                       No space left on device. Free some space and press OK again.";
-        let (h, m) = help_then_message(&help, message, 30, 6);
-        assert_eq!(m.join(" ").split_whitespace().last(), Some("again."));
-        assert_eq!(h.len() + m.len(), 6);
-        assert!(m.len() >= 3 && h.len() <= 3, "{h:?} {m:?}");
-        // With room for everything, nothing is dropped.
-        let (h, m) = help_then_message(&help, message, 30, 20);
-        assert_eq!(h.len(), 5);
-        assert!(m.len() >= 3);
     }
 }

@@ -11,7 +11,7 @@ use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
 use winit::keyboard::{Key, ModifiersState, NamedKey};
 use winit::window::{Window, WindowId};
 
-use super::layout::{WINDOW_H, WINDOW_W, whole_scale};
+use super::layout::{MIN_H, MIN_W, WINDOW_H, WINDOW_W, whole_scale};
 use super::model::Input;
 use super::screen::{Next, Screen};
 
@@ -68,7 +68,7 @@ fn attributes(parent: Option<u64>) -> winit::window::WindowAttributes {
     let attrs = Window::default_attributes()
         .with_title("Mountains settings")
         .with_inner_size(LogicalSize::new(WINDOW_W, WINDOW_H))
-        .with_min_inner_size(LogicalSize::new(WINDOW_W / 2, WINDOW_H / 2));
+        .with_min_inner_size(LogicalSize::new(MIN_W, MIN_H));
     owned_by(attrs, parent)
 }
 
@@ -117,6 +117,7 @@ impl App {
         let surface =
             softbuffer::Surface::new(&context, window.clone()).map_err(|e| e.to_string())?;
         self.scale = pick_scale(&window);
+        keep_min_size(&window, self.scale);
         let want = PhysicalSize::new(WINDOW_W * self.scale, WINDOW_H * self.scale);
         let size = window
             .request_inner_size(want)
@@ -207,6 +208,12 @@ impl App {
     }
 }
 
+/// The smallest window in pixels at our whole scale, which may differ from
+/// the scale factor winit turns logical sizes into (1.5 is drawn at 2).
+fn keep_min_size(window: &Window, scale: u32) {
+    window.set_min_inner_size(Some(PhysicalSize::new(MIN_W * scale, MIN_H * scale)));
+}
+
 /// The whole scale for the window's scale factor and its monitor.
 fn pick_scale(window: &Window) -> u32 {
     let monitor = window
@@ -261,6 +268,7 @@ impl ApplicationHandler<Terminate> for App {
             WindowEvent::ScaleFactorChanged { .. } => {
                 if let Some(w) = &self.window {
                     self.scale = pick_scale(w);
+                    keep_min_size(w, self.scale);
                 }
                 self.resized();
             }

@@ -402,3 +402,15 @@ fn the_install_pages_give_no_sizes_in_prose() {
         }
     }
 }
+
+/// The settings window's sizes in its documentation are the layout's own.
+#[test]
+fn the_settings_window_sizes_are_the_layouts() {
+    use mountains::settings_ui::layout::{MIN_H, MIN_W, WINDOW_H, WINDOW_W};
+    let page = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/keys.md");
+    let text = std::fs::read_to_string(page).expect("docs/keys.md");
+    let text = text.split_whitespace().collect::<Vec<_>>().join(" ");
+    let said =
+        format!("opens at {WINDOW_W}x{WINDOW_H} and may be made as small as {MIN_W}x{MIN_H}");
+    assert!(text.contains(&said), "docs/keys.md should say: {said}");
+}

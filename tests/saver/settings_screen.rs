@@ -347,3 +347,129 @@ fn display_screenshot_at_100_percent() {
 fn display_screenshot_at_200_percent() {
     screenshot(2);
 }
+
+/// Grabs the window until `ready` holds for its pixels (width, height,
+/// 0x00RRGGBB), within the bounded wait.
+fn wait_until(
+    display: &str,
+    window: u32,
+    what: &str,
+    ready: impl Fn(u32, u32, &[u32]) -> bool,
+) -> (u32, u32, Vec<u32>) {
+    let (conn, _) = x11rb::connect(Some(display)).expect("connect to Xvfb");
+    for _ in 0..MAX_POLLS {
+        if let Some((w, h, px)) = grab(&conn, window)
+            && ready(w, h, &px)
+        {
+            return (w, h, px);
+        }
+        sleep(POLL);
+    }
+    panic!("never shown: {what}");
+}
+
+/// Whether the last row is drawn focused (white on navy) where a layout of
+/// `w` x `h` scrolled to show it puts it, its help's first line is inked,
+/// and so is the file line.
+fn last_row_and_help_drawn(w: u32, h: u32, px: &[u32]) -> bool {
+    use mountains::settings_ui::layout::Layout;
+    let mut l = Layout::new(w, h, 1);
+    let last = mountains::settings::keys::KEYS.len() - 1;
+    l.reveal_row(last);
+    let r = l.row(last);
+    let at = |x: u32, y: u32| px.get((y * w + x) as usize).copied();
+    let inked = |y0: u32| {
+        (y0..y0 + 8)
+            .any(|y| (l.panel_x..l.panel_x + 300).any(|x| matches!(at(x, y), Some(0x404040 | 0))))
+    };
+    at(r.x0 + 2, r.y0 + 2) == Some(0x000080) && inked(l.help_y) && inked(l.file_y + 2)
+}
+
+fn save_shot(w: u32, h: u32, px: &[u32], name: &str) {
+    let mut frame = mountains::render::Frame::new(w, h).unwrap();
+    frame.pixels_mut().copy_from_slice(px);
+    let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
+    mountains::snapshot::write_png(&out, &frame).unwrap();
+    eprintln!("screenshot: {}", out.display());
+}
+
+/// Issue 36: the window opens at 960x620 and may be made no smaller than
+/// the layout's minimum (its size hints say so); at both sizes the last
+/// row, reached with the keys, is drawn whole with its help and the file
+/// line below it, and the wheel scrolls the list. Writes
+/// `target/tmp/settings-ui-960x620-last.png` and `...-640x310-last.png`.
+#[test]
+fn display_the_last_row_and_its_help_show_at_the_default_and_the_smallest_size() {
+    use mountains::settings_ui::layout::{Layout, MIN_H, MIN_W};
+    use x11rb::protocol::xproto::AtomEnum;
+    let Some(x) = start_display() else { return };
+    let home = scratch("fit");
+    let config = home.join("mountains.toml");
+    std::fs::write(&config, COMMENTED).unwrap();
+    let mut app = App::start(&x, &config, &home, 1);
+    let window = app.window(&x);
+    wait_drawn(x.display(), window);
+    let hints = x
+        .conn
+        .get_property(
+            false,
+            window,
+            AtomEnum::WM_NORMAL_HINTS,
+            AtomEnum::WM_SIZE_HINTS,
+            0,
+            18,
+        )
+        .unwrap()
+        .reply()
+        .unwrap();
+    let hints: Vec<u32> = hints.value32().expect("32-bit size hints").collect();
+    assert!(hints[0] & 16 != 0, "a minimum size is set: {hints:?}");
+    assert_eq!((hints[5], hints[6]), (MIN_W, MIN_H), "the minimum size");
+
+    // Up from the first row: Cancel, the other six buttons, the last row.
+    press(&x, window, &["Up"; 8]);
+    let (w, h, px) = wait_until(
+        x.display(),
+        window,
+        "the last row at 960x620",
+        |w, h, px| (w, h) == (960, 620) && last_row_and_help_drawn(w, h, px),
+    );
+    save_shot(w, h, &px, "settings-ui-960x620-last.png");
+
+    xdotool(
+        &x,
+        &[
+            "windowsize",
+            &window.to_string(),
+            &MIN_W.to_string(),
+            &MIN_H.to_string(),
+        ],
+    );
+    let (w, h, px) = wait_until(x.display(), window, "the last row, smallest", |w, h, px| {
+        (w, h) == (MIN_W, MIN_H) && last_row_and_help_drawn(w, h, px)
+    });
+    save_shot(w, h, &px, &format!("settings-ui-{MIN_W}x{MIN_H}-last.png"));
+
+    // The wheel over a label scrolls the list: the focused row goes out of
+    // sight below and comes back.
+    let mut l = Layout::new(MIN_W, MIN_H, 1);
+    l.reveal_row(mountains::settings::keys::KEYS.len() - 1);
+    let area = l.list.area();
+    let (lx, ly) = (
+        (l.panel_x + 40).to_string(),
+        ((area.y0 + area.y1) / 2).to_string(),
+    );
+    let id = window.to_string();
+    xdotool(&x, &["mousemove", "--window", &id, &lx, &ly]);
+    xdotool(&x, &["click", "4"]);
+    wait_until(x.display(), window, "the list scrolled up", |w, h, px| {
+        (w, h) == (MIN_W, MIN_H) && !last_row_and_help_drawn(w, h, px)
+    });
+    xdotool(&x, &["click", "5"]);
+    wait_until(x.display(), window, "the list scrolled back", |w, h, px| {
+        (w, h) == (MIN_W, MIN_H) && last_row_and_help_drawn(w, h, px)
+    });
+    press(&x, window, &["Escape"]);
+    assert!(app.wait_exit().success(), "{}", app.stderr());
+    assert_eq!(std::fs::read(&config).unwrap(), COMMENTED.as_bytes());
+}

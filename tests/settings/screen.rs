@@ -9,9 +9,13 @@ use std::path::{Path, PathBuf};
 use mountains::render::Rect;
 use mountains::saved;
 use mountains::settings::Detail;
-use mountains::settings::keys::{self, KEYS, Kind, Value};
+use mountains::settings::keys::{self, KEYS, Key, Kind, Value};
 use mountains::settings::{ColorMode, Settings, load};
-use mountains::settings_ui::layout::{Button, Hit, Layout, Part, WINDOW_H, WINDOW_W};
+use mountains::settings_ui::font::ADVANCE;
+use mountains::settings_ui::layout::{
+    Button, HELP_LINE, Hit, Layout, MIN_H, MIN_W, PANEL_W, Part, WINDOW_H, WINDOW_W,
+};
+use mountains::settings_ui::list_view::BarPart;
 use mountains::settings_ui::model::{Effect, Input, Model, focus_count};
 use mountains::settings_ui::screen::{Next, Screen};
 use mountains::settings_ui::values;
@@ -51,7 +55,7 @@ fn value(m: &Model, name: &str) -> Value {
     keys::get(&m.settings, keys::find(name).unwrap())
 }
 
-fn focus_on(m: &mut Model, l: &Layout, name: &str) {
+fn focus_on(m: &mut Model, l: &mut Layout, name: &str) {
     while m.focused_row() != Some(row(name)) {
         m.handle(Input::Tab { back: false }, l);
     }
@@ -63,13 +67,13 @@ fn centre(r: Rect) -> (f64, f64) {
 
 #[test]
 fn tab_visits_every_row_in_key_order_then_every_button_and_wraps() {
-    let l = layout(1);
+    let mut l = layout(1);
     let mut m = model();
     assert_eq!(m.focused_row(), Some(0));
     let mut seen_rows = vec![0];
     let mut seen_buttons = Vec::new();
     for _ in 1..focus_count() {
-        m.handle(Input::Tab { back: false }, &l);
+        m.handle(Input::Tab { back: false }, &mut l);
         match (m.focused_row(), m.focused_button()) {
             (Some(r), None) => seen_rows.push(r),
             (None, Some(b)) => seen_buttons.push(b),
@@ -78,17 +82,17 @@ fn tab_visits_every_row_in_key_order_then_every_button_and_wraps() {
     }
     assert_eq!(seen_rows, (0..KEYS.len()).collect::<Vec<_>>());
     assert_eq!(seen_buttons, Button::ALL.to_vec());
-    m.handle(Input::Tab { back: false }, &l);
+    m.handle(Input::Tab { back: false }, &mut l);
     assert_eq!(m.focused_row(), Some(0), "Tab wraps to the first row");
-    m.handle(Input::Tab { back: true }, &l);
+    m.handle(Input::Tab { back: true }, &mut l);
     assert_eq!(
         m.focused_button(),
         Some(Button::Cancel),
         "Shift+Tab goes back"
     );
-    m.handle(Input::Up, &l);
+    m.handle(Input::Up, &mut l);
     assert_eq!(m.focused_button(), Some(Button::Ok));
-    m.handle(Input::Left, &l);
+    m.handle(Input::Left, &mut l);
     assert_eq!(
         m.focused_button(),
         Some(Button::EditFile),
@@ -98,7 +102,7 @@ fn tab_visits_every_row_in_key_order_then_every_button_and_wraps() {
 
 #[test]
 fn home_and_end_reach_exactly_the_key_tables_range() {
-    let l = layout(1);
+    let mut l = layout(1);
     let mut m = model();
     for (i, key) in KEYS.iter().enumerate() {
         let (min, max) = match key.kind {
@@ -107,29 +111,29 @@ fn home_and_end_reach_exactly_the_key_tables_range() {
             _ => continue,
         };
         m.focus = i;
-        m.handle(Input::End, &l);
+        m.handle(Input::End, &mut l);
         assert_eq!(
             values::number(&m.settings, key),
             Some(max as f32 as f64),
             "{}",
             key.name
         );
-        m.handle(Input::Right, &l);
-        m.handle(Input::PageUp, &l);
+        m.handle(Input::Right, &mut l);
+        m.handle(Input::PageUp, &mut l);
         assert_eq!(
             values::number(&m.settings, key),
             Some(max as f32 as f64),
             "{} stays at max",
             key.name
         );
-        m.handle(Input::Home, &l);
+        m.handle(Input::Home, &mut l);
         assert_eq!(
             values::number(&m.settings, key),
             Some(min as f32 as f64),
             "{}",
             key.name
         );
-        m.handle(Input::Left, &l);
+        m.handle(Input::Left, &mut l);
         assert_eq!(
             values::number(&m.settings, key),
             Some(min as f32 as f64),
@@ -141,18 +145,18 @@ fn home_and_end_reach_exactly_the_key_tables_range() {
 
 #[test]
 fn slider_steps_suit_each_range() {
-    let l = layout(1);
+    let mut l = layout(1);
     let mut m = model();
-    focus_on(&mut m, &l, "cragginess");
-    m.handle(Input::Right, &l);
+    focus_on(&mut m, &mut l, "cragginess");
+    m.handle(Input::Right, &mut l);
     assert_eq!(m.settings.cragginess, 65);
-    m.handle(Input::PageUp, &l);
+    m.handle(Input::PageUp, &mut l);
     assert_eq!(m.settings.cragginess, 78, "a big step is a tenth of 1-128");
-    focus_on(&mut m, &l, "sea_level");
-    m.handle(Input::Right, &l);
+    focus_on(&mut m, &mut l, "sea_level");
+    m.handle(Input::Right, &mut l);
     assert_eq!(m.settings.sea_level, 0.02);
     for _ in 0..4 {
-        m.handle(Input::Right, &l);
+        m.handle(Input::Right, &mut l);
     }
     assert_eq!(
         value(&m, "sea_level"),
@@ -161,14 +165,14 @@ fn slider_steps_suit_each_range() {
         Value::Float(0.1),
         "no binary drift"
     );
-    focus_on(&mut m, &l, "pause_seconds");
-    m.handle(Input::Left, &l);
+    focus_on(&mut m, &mut l, "pause_seconds");
+    m.handle(Input::Left, &mut l);
     assert_eq!(
         m.settings.pause_seconds, 8.0,
         "fine steps at small values of a wide range"
     );
-    m.handle(Input::End, &l);
-    m.handle(Input::Left, &l);
+    m.handle(Input::End, &mut l);
+    m.handle(Input::Left, &mut l);
     assert_eq!(
         m.settings.pause_seconds, 3580.0,
         "coarse steps at large values"
@@ -177,66 +181,66 @@ fn slider_steps_suit_each_range() {
 
 #[test]
 fn choices_cycle_and_wrap_and_checks_toggle() {
-    let l = layout(1);
+    let mut l = layout(1);
     let mut m = model();
-    focus_on(&mut m, &l, "color");
-    m.handle(Input::Left, &l);
+    focus_on(&mut m, &mut l, "color");
+    m.handle(Input::Left, &mut l);
     assert_eq!(
         m.settings.color,
         ColorMode::Ridges,
         "left from the first wraps to the last"
     );
-    m.handle(Input::Right, &l);
-    m.handle(Input::Space, &l);
+    m.handle(Input::Right, &mut l);
+    m.handle(Input::Space, &mut l);
     assert_eq!(m.settings.color, ColorMode::Gray);
-    focus_on(&mut m, &l, "rotation");
-    m.handle(Input::Right, &l);
+    focus_on(&mut m, &mut l, "rotation");
+    m.handle(Input::Right, &mut l);
     assert_eq!(m.settings.rotation, 90);
-    focus_on(&mut m, &l, "shadows");
-    assert_eq!(m.handle(Input::Space, &l), Effect::Repaint);
+    focus_on(&mut m, &mut l, "shadows");
+    assert_eq!(m.handle(Input::Space, &mut l), Effect::Repaint);
     assert!(!m.settings.shadows);
-    m.handle(Input::Right, &l);
+    m.handle(Input::Right, &mut l);
     assert!(m.settings.shadows, "right means on");
 }
 
 #[test]
 fn only_drawing_keys_repaint_the_current_mountain() {
-    let l = layout(1);
+    let mut l = layout(1);
     let mut m = model();
-    focus_on(&mut m, &l, "color");
-    assert_eq!(m.handle(Input::Right, &l), Effect::Repaint);
-    focus_on(&mut m, &l, "relative_depth");
-    assert_eq!(m.handle(Input::Space, &l), Effect::Repaint);
-    focus_on(&mut m, &l, "sun");
-    assert_eq!(m.handle(Input::Right, &l), Effect::Repaint);
-    focus_on(&mut m, &l, "low_detail");
-    assert_eq!(m.handle(Input::Space, &l), Effect::Regenerate);
-    focus_on(&mut m, &l, "cragginess");
-    assert_eq!(m.handle(Input::Right, &l), Effect::Redraw);
+    focus_on(&mut m, &mut l, "color");
+    assert_eq!(m.handle(Input::Right, &mut l), Effect::Repaint);
+    focus_on(&mut m, &mut l, "relative_depth");
+    assert_eq!(m.handle(Input::Space, &mut l), Effect::Repaint);
+    focus_on(&mut m, &mut l, "sun");
+    assert_eq!(m.handle(Input::Right, &mut l), Effect::Repaint);
+    focus_on(&mut m, &mut l, "low_detail");
+    assert_eq!(m.handle(Input::Space, &mut l), Effect::Regenerate);
+    focus_on(&mut m, &mut l, "cragginess");
+    assert_eq!(m.handle(Input::Right, &mut l), Effect::Redraw);
     assert!(m.message.contains("next mountain"), "{}", m.message);
-    assert_eq!(m.handle(Input::Char('n'), &l), Effect::NewMountain);
+    assert_eq!(m.handle(Input::Char('n'), &mut l), Effect::NewMountain);
     // The slide show's pacing changes nothing drawn: no "next mountain"
     // (it said so for every key it did not repaint).
-    focus_on(&mut m, &l, "pause_seconds");
-    assert_eq!(m.handle(Input::Right, &l), Effect::Redraw);
+    focus_on(&mut m, &mut l, "pause_seconds");
+    assert_eq!(m.handle(Input::Right, &mut l), Effect::Redraw);
     assert_eq!(m.message, "");
     // The numeric detail remakes the preview as Low Detail does (it waited
     // for the next mountain although Low Detail halves it).
-    focus_on(&mut m, &l, "detail");
-    assert_eq!(m.handle(Input::Right, &l), Effect::Regenerate);
+    focus_on(&mut m, &mut l, "detail");
+    assert_eq!(m.handle(Input::Right, &mut l), Effect::Regenerate);
 }
 
 #[test]
 fn typed_values_go_through_the_key_table() {
-    let l = layout(1);
+    let mut l = layout(1);
     let mut m = model();
-    focus_on(&mut m, &l, "cragginess");
+    focus_on(&mut m, &mut l, "cragginess");
     for c in "200".chars() {
-        m.handle(Input::Char(c), &l);
+        m.handle(Input::Char(c), &mut l);
     }
     assert_eq!(m.editing.as_deref(), Some("200"));
     assert_eq!(
-        m.handle(Input::Enter, &l),
+        m.handle(Input::Enter, &mut l),
         Effect::Redraw,
         "Enter ends typing, not the dialog"
     );
@@ -246,34 +250,34 @@ fn typed_values_go_through_the_key_table() {
     );
     assert!(m.message.contains("1 to 128"), "{}", m.message);
     for c in "100".chars() {
-        m.handle(Input::Char(c), &l);
+        m.handle(Input::Char(c), &mut l);
     }
-    m.handle(Input::Tab { back: false }, &l);
+    m.handle(Input::Tab { back: false }, &mut l);
     assert_eq!(
         m.settings.cragginess, 100,
         "leaving the row applies what was typed"
     );
-    focus_on(&mut m, &l, "seed");
+    focus_on(&mut m, &mut l, "seed");
     for c in "1234".chars() {
-        m.handle(Input::Char(c), &l);
+        m.handle(Input::Char(c), &mut l);
     }
-    m.handle(Input::Enter, &l);
+    m.handle(Input::Enter, &mut l);
     assert_eq!(m.settings.seed, Some(1234));
-    m.handle(Input::Right, &l);
+    m.handle(Input::Right, &mut l);
     assert_eq!(
         m.settings.seed, None,
         "arrows switch the seed back to random"
     );
-    focus_on(&mut m, &l, "draw_seconds");
-    m.handle(Input::Backspace, &l);
-    m.handle(Input::Char('5'), &l);
+    focus_on(&mut m, &mut l, "draw_seconds");
+    m.handle(Input::Backspace, &mut l);
+    m.handle(Input::Char('5'), &mut l);
     assert_eq!(
         m.editing.as_deref(),
         Some("8.5"),
         "backspace edits the shown value"
     );
     assert_eq!(
-        m.handle(Input::Escape, &l),
+        m.handle(Input::Escape, &mut l),
         Effect::Redraw,
         "Esc cancels typing only"
     );
@@ -282,7 +286,7 @@ fn typed_values_go_through_the_key_table() {
 
 #[test]
 fn ok_cancel_and_defaults() {
-    let l = layout(1);
+    let mut l = layout(1);
     let start = Settings {
         cragginess: 7,
         color: ColorMode::Sonar,
@@ -290,11 +294,11 @@ fn ok_cancel_and_defaults() {
     };
     let mut m = Model::new(start.clone(), &[]);
     assert_eq!(
-        m.handle(Input::Enter, &l),
+        m.handle(Input::Enter, &mut l),
         Effect::Save,
         "Enter on a row is OK"
     );
-    assert_eq!(m.handle(Input::Escape, &l), Effect::Close);
+    assert_eq!(m.handle(Input::Escape, &mut l), Effect::Close);
     assert_eq!(m.settings, start, "neither changes the values");
     assert_eq!(m.activate(Button::Defaults), Effect::Regenerate);
     assert_eq!(m.settings, Settings::default());
@@ -305,7 +309,7 @@ fn ok_cancel_and_defaults() {
 
 #[test]
 fn a_file_that_does_not_parse_cannot_be_saved_and_offers_edit_file() {
-    let l = layout(1);
+    let mut l = layout(1);
     let mut s = Settings::default();
     let problems = load::apply_toml(&mut s, "color = = 3\n", "/home/u/mountains.toml");
     let mut m = Model::new(s, &problems);
@@ -316,9 +320,13 @@ fn a_file_that_does_not_parse_cannot_be_saved_and_offers_edit_file() {
         m.message
     );
     assert!(m.message.contains("Edit file"), "{}", m.message);
-    assert_eq!(m.handle(Input::Enter, &l), Effect::EditFile);
+    assert_eq!(m.handle(Input::Enter, &mut l), Effect::EditFile);
     assert_eq!(m.activate(Button::Ok), Effect::Redraw, "OK does not save");
-    assert_eq!(m.handle(Input::Enter, &l), Effect::Redraw, "nor does Enter");
+    assert_eq!(
+        m.handle(Input::Enter, &mut l),
+        Effect::Redraw,
+        "nor does Enter"
+    );
 }
 
 #[test]
@@ -352,8 +360,15 @@ fn hit_testing_agrees_at_100_and_200_percent() {
     }
     assert_eq!(one.hit(-1.0, 5.0, None), None);
     assert_eq!(one.hit(f64::NAN, 5.0, None), None);
-    // Rows do not overlap and sit below one another.
+    // Rows do not overlap and sit below one another, wherever the list
+    // is scrolled to.
+    let mut one = one;
     for i in 1..KEYS.len() {
+        one.reveal_row(i);
+        assert!(
+            one.row_shown(i - 1) && one.row_shown(i),
+            "rows {i} and before"
+        );
         assert!(one.row(i).y0 >= one.row(i - 1).y1);
     }
 }
@@ -361,28 +376,43 @@ fn hit_testing_agrees_at_100_and_200_percent() {
 #[test]
 fn mouse_clicks_drags_and_wheel_change_values() {
     for scale in [1, 2] {
-        let l = layout(scale);
+        let mut l = layout(scale);
         let mut m = model();
         let y = f64::from(l.row(row("cragginess")).y0 + l.px(9));
         let ((m0, m1), (p0, p1)) = l.minus_plus();
-        m.handle(Input::Press(f64::from(p0 + p1) / 2.0, y), &l);
-        m.handle(Input::Release(f64::from(p0 + p1) / 2.0, y), &l);
+        m.handle(Input::Press(f64::from(p0 + p1) / 2.0, y), &mut l);
+        m.handle(Input::Release(f64::from(p0 + p1) / 2.0, y), &mut l);
         assert_eq!(m.settings.cragginess, 65, "plus at {scale}x");
-        m.handle(Input::Press(f64::from(m0 + m1) / 2.0, y), &l);
+        m.handle(Input::Press(f64::from(m0 + m1) / 2.0, y), &mut l);
         assert_eq!(m.settings.cragginess, 64, "minus at {scale}x");
         let (t0, t1) = l.track();
-        m.handle(Input::Press(f64::from(t0 + t1) / 2.0, y), &l);
+        m.handle(Input::Press(f64::from(t0 + t1) / 2.0, y), &mut l);
         assert_eq!(m.settings.cragginess, 65, "middle of 1-128 at {scale}x");
-        m.handle(Input::Move(f64::from(t1) + 500.0, y + 300.0), &l);
+        m.handle(Input::Move(f64::from(t1) + 500.0, y + 300.0), &mut l);
         assert_eq!(
             m.settings.cragginess, 128,
             "dragging past the end at {scale}x"
         );
-        m.handle(Input::Release(f64::from(t1) + 500.0, y + 300.0), &l);
-        m.handle(Input::Move(f64::from(t0), y), &l);
+        m.handle(Input::Release(f64::from(t1) + 500.0, y + 300.0), &mut l);
+        m.handle(Input::Move(f64::from(t0), y), &mut l);
         assert_eq!(m.settings.cragginess, 128, "no drag after release");
         let dy = f64::from(l.row(row("detail")).y0 + l.px(9));
-        m.handle(Input::Wheel(f64::from(t0), dy, 1), &l);
+        // The wheel over a row without the focus scrolls the list (at its
+        // top here: nothing moves) and changes nothing.
+        m.handle(Input::Wheel(f64::from(t0), dy, 1), &mut l);
+        assert_eq!(
+            m.settings.detail,
+            Detail::Auto,
+            "wheel over detail at {scale}x"
+        );
+        assert_eq!(m.focused_row(), Some(row("cragginess")));
+        assert_eq!(l.list.first(), 0);
+        // Clicked (on its label, which changes nothing), the row takes the wheel.
+        let label_x = f64::from(l.row(row("detail")).x0 + l.px(20));
+        m.handle(Input::Press(label_x, dy), &mut l);
+        m.handle(Input::Release(label_x, dy), &mut l);
+        assert_eq!(m.settings.detail, Detail::Auto);
+        m.handle(Input::Wheel(f64::from(t0), dy, 1), &mut l);
         // The key's least level: 3 (seed 000's Iterations menu).
         assert_eq!(
             m.settings.detail,
@@ -391,15 +421,15 @@ fn mouse_clicks_drags_and_wheel_change_values() {
         );
         assert_eq!(m.focused_row(), Some(row("detail")));
         let cy = f64::from(l.row(row("shadows")).y0 + l.px(9));
-        m.handle(Input::Press(f64::from(m0) + 2.0, cy), &l);
+        m.handle(Input::Press(f64::from(m0) + 2.0, cy), &mut l);
         assert!(!m.settings.shadows, "check box at {scale}x");
         let (ok_x, ok_y) = centre(l.button(Button::Ok));
-        assert_eq!(m.handle(Input::Press(ok_x, ok_y), &l), Effect::Redraw);
-        assert_eq!(m.handle(Input::Release(ok_x, ok_y), &l), Effect::Save);
+        assert_eq!(m.handle(Input::Press(ok_x, ok_y), &mut l), Effect::Redraw);
+        assert_eq!(m.handle(Input::Release(ok_x, ok_y), &mut l), Effect::Save);
         let (cx, cy) = centre(l.button(Button::Cancel));
-        m.handle(Input::Press(cx, cy), &l);
+        m.handle(Input::Press(cx, cy), &mut l);
         assert_eq!(
-            m.handle(Input::Release(ok_x, ok_y), &l),
+            m.handle(Input::Release(ok_x, ok_y), &mut l),
             Effect::Redraw,
             "releasing away from the pressed button does nothing"
         );
@@ -408,25 +438,25 @@ fn mouse_clicks_drags_and_wheel_change_values() {
 
 #[test]
 fn the_open_list_is_driven_by_keys_and_clicks() {
-    let l = layout(1);
+    let mut l = layout(1);
     let mut m = model();
     let files = vec![PathBuf::from("/d/a.png"), PathBuf::from("/d/b.png")];
     m.show_list(files.clone(), "/d");
-    m.handle(Input::Down, &l);
+    m.handle(Input::Down, &mut l);
     assert_eq!(
-        m.handle(Input::Enter, &l),
+        m.handle(Input::Enter, &mut l),
         Effect::OpenDataSet(files[1].clone())
     );
     assert!(m.open_list.is_none());
     m.show_list(files.clone(), "/d");
     let (x, y) = centre(l.list_item(0));
     assert_eq!(
-        m.handle(Input::Press(x, y), &l),
+        m.handle(Input::Press(x, y), &mut l),
         Effect::OpenDataSet(files[0].clone())
     );
     m.show_list(files, "/d");
     assert_eq!(
-        m.handle(Input::Escape, &l),
+        m.handle(Input::Escape, &mut l),
         Effect::Redraw,
         "Esc closes the list only"
     );
@@ -539,18 +569,18 @@ fn the_200_percent_screen_is_the_100_percent_screen_doubled() {
 fn the_seed_button_keeps_the_preview_mountain_or_goes_back_to_random() {
     use mountains::settings_ui::layout::SEED_BUTTON;
     for scale in [1, 2] {
-        let l = layout(scale);
+        let mut l = layout(scale);
         let mut m = model();
         m.preview_seed = Some(99);
         let (b0, b1) = l.columns(SEED_BUTTON);
         let y = f64::from(l.row(row("seed")).y0 + l.px(9));
         let x = f64::from(b0 + b1) / 2.0;
-        m.handle(Input::Press(x, y), &l);
+        m.handle(Input::Press(x, y), &mut l);
         assert_eq!(m.settings.seed, Some(99), "Keep at {scale}x");
-        m.handle(Input::Press(x, y), &l);
+        m.handle(Input::Press(x, y), &mut l);
         assert_eq!(m.settings.seed, None, "Random at {scale}x");
         let (f0, _) = l.columns((130, 131));
-        m.handle(Input::Press(f64::from(f0), y), &l);
+        m.handle(Input::Press(f64::from(f0), y), &mut l);
         assert_eq!(
             m.editing.as_deref(),
             Some("random"),
@@ -778,4 +808,303 @@ fn two_screens_saving_one_after_the_other_keep_both_changes() {
         Settings::default().color,
         "the second screen's edit"
     );
+}
+
+/// The size the window opens at and the smallest it may be made.
+const SIZES: [(u32, u32); 2] = [(WINDOW_W, WINDOW_H), (MIN_W, MIN_H)];
+
+/// How many lines of `width` characters `s` takes, broken at spaces.
+fn wrapped_lines(s: &str, width: usize) -> usize {
+    let mut lines = 0;
+    let mut used = 0;
+    for word in s.split_whitespace() {
+        let n = word.chars().count().min(width);
+        if used > 0 && used + 1 + n <= width {
+            used += 1 + n;
+        } else {
+            lines += 1;
+            used = n;
+        }
+    }
+    lines
+}
+
+/// The lines of help a focused key's row brings: what it does, what it
+/// allows, and, when it takes typing, how to type.
+fn help_lines(key: &Key) -> usize {
+    let width = (PANEL_W / ADVANCE) as usize;
+    let allowed = format!("Allowed: {}", key.kind.allowed());
+    wrapped_lines(key.doc, width)
+        + wrapped_lines(&allowed, width)
+        + usize::from(values::accepts_typing(key))
+}
+
+/// Checks that row `i` of `l` is shown whole inside the list's window,
+/// above the help, and is what a click on it hits.
+fn assert_row_shown_whole(l: &Layout, i: usize, what: &str) {
+    assert!(l.row_shown(i), "{what}: row {i} is shown");
+    let (r, area) = (l.row(i), l.list.area());
+    assert!(
+        r.y0 >= area.y0 && r.y1 <= area.y1 && r.x1 <= area.x1,
+        "{what}: row {i} {r:?} inside the list {area:?}"
+    );
+    assert!(r.y1 < l.help_y, "{what}: row {i} above the help");
+    let (x, y) = (f64::from(r.x0 + l.px(20)), f64::from(r.y0 + l.px(9)));
+    assert_eq!(l.hit(x, y, None), Some(Hit::Row(i, Part::Label)), "{what}");
+}
+
+/// Issue 36: at 960x620 the file line was drawn over the last row and the
+/// focused key's help had no room. At the default size and the smallest,
+/// at 100% and 200%, the list, the help, the file line and the buttons
+/// follow one another inside the window; Tab reaches every row, each is
+/// scrolled into sight whole, and the help has room for its key's lines,
+/// the changed line and a two-line message.
+#[test]
+fn every_row_and_its_whole_help_fit_at_the_default_and_the_smallest_size() {
+    for (w, h) in SIZES {
+        for scale in [1, 2] {
+            let what = format!("{w}x{h} at {scale}x");
+            let mut l = Layout::new(w * scale, h * scale, scale);
+            let area = l.list.area();
+            assert!(area.y1 < l.help_y && l.help_y < l.file_y, "{what}");
+            let ok = l.button(Button::Ok);
+            assert!(l.file_y + l.px(2 + 7) <= ok.y0, "{what}: file line over OK");
+            assert!(ok.y1 <= h * scale && l.button(Button::Cancel).x1 <= w * scale);
+            assert!(area.x1 <= w * scale, "{what}: the panel in the window");
+            assert!(l.button(Button::SaveData).x1 <= l.preview.x1, "{what}");
+            assert!(
+                l.preview.x1 <= l.panel_x,
+                "{what}: the preview left of the panel"
+            );
+            assert!(l.list.last_first() > 0, "{what}: the list scrolls here");
+            let help_rows = ((l.file_y - l.help_y) / l.px(HELP_LINE)) as usize;
+            let mut m = model();
+            for (i, key) in KEYS.iter().enumerate() {
+                assert_eq!(m.focused_row(), Some(i));
+                assert_row_shown_whole(&l, i, &what);
+                assert!(
+                    help_rows >= help_lines(key) + 1 + 2,
+                    "{what}: {} needs {} lines of help, has {help_rows}",
+                    key.name,
+                    help_lines(key)
+                );
+                m.handle(Input::Tab { back: false }, &mut l);
+            }
+            assert_eq!(l.list.first(), l.list.last_first(), "{what}: at the end");
+            for _ in Button::ALL {
+                m.handle(Input::Tab { back: false }, &mut l);
+            }
+            assert_eq!(m.focused_row(), Some(0));
+            assert_eq!(
+                l.list.first(),
+                0,
+                "{what}: back at the top, heading and all"
+            );
+        }
+    }
+    // A window tall enough shows every row and no scroll bar.
+    let tall = Layout::new(WINDOW_W, 900, 1);
+    assert!(tall.list.bar().is_none());
+    for i in 0..KEYS.len() {
+        assert_row_shown_whole(&tall, i, "960x900");
+    }
+}
+
+/// The keys still to come (world, latitude, longitude, on_battery), planned
+/// as copies of keys of their kinds: the list grows by four lines and
+/// scrolls to show each; the help keeps its room.
+#[test]
+fn four_more_keys_still_fit_by_scrolling() {
+    let mut keys: Vec<Key> = KEYS.to_vec();
+    for (name, like) in [
+        ("world", "look"),
+        ("latitude", "sea_level"),
+        ("longitude", "sea_level"),
+        ("on_battery", "shadows"),
+    ] {
+        let mut key = KEYS[row(like)];
+        key.name = name;
+        keys.push(key);
+    }
+    for (w, h) in SIZES {
+        for scale in [1, 2] {
+            let what = format!("{w}x{h} at {scale}x with {} keys", keys.len());
+            let base = Layout::new(w * scale, h * scale, scale);
+            let mut l = Layout::with_keys(w * scale, h * scale, scale, &keys);
+            assert_eq!(l.list.lines().len(), base.list.lines().len() + 4);
+            assert_eq!(l.list.last_first(), base.list.last_first() + 4, "{what}");
+            assert_eq!((l.help_y, l.file_y), (base.help_y, base.file_y), "{what}");
+            for i in (0..keys.len()).chain((0..keys.len()).rev()) {
+                l.reveal_row(i);
+                assert_row_shown_whole(&l, i, &what);
+            }
+        }
+    }
+}
+
+/// The wheel over the list scrolls it three lines a notch and changes no
+/// value; the scroll bar's arrows move a line, its track a page, its thumb
+/// drags; a key brings the focused row back into sight.
+#[test]
+fn the_wheel_the_scroll_bar_and_the_keys_move_the_list() {
+    for scale in [1, 2] {
+        let mut l = layout(scale);
+        let mut m = model();
+        let last = KEYS.len() - 1;
+        let label = |l: &Layout, i: usize| {
+            let r = l.row(i);
+            (f64::from(r.x0 + l.px(20)), f64::from(r.y0 + l.px(9)))
+        };
+        let (x, y) = label(&l, row("detail"));
+        let (_, (p0, _)) = l.minus_plus();
+        m.handle(Input::Wheel(f64::from(p0), y, -1), &mut l);
+        assert_eq!(l.list.first(), 3, "a notch toward the user at {scale}x");
+        m.handle(Input::Wheel(x, y, -100), &mut l);
+        assert_eq!(
+            l.list.first(),
+            l.list.last_first(),
+            "no further than the end"
+        );
+        assert!(l.row_shown(last));
+        m.handle(Input::Wheel(x, y, 100), &mut l);
+        assert_eq!(l.list.first(), 0);
+        assert_eq!(m.settings, start(), "scrolling changed nothing");
+        let (px, py) = centre(l.preview);
+        m.handle(Input::Wheel(px, py, -1), &mut l);
+        assert_eq!(l.list.first(), 0, "the wheel over the preview");
+
+        let bar = l.list.bar().expect("a scroll bar at 960x620");
+        let hit = |l: &Layout, r: Rect| l.hit(centre(r).0, centre(r).1, None);
+        assert_eq!(hit(&l, bar.down), Some(Hit::Bar(BarPart::Down)));
+        m.handle(Input::Press(centre(bar.down).0, centre(bar.down).1), &mut l);
+        assert_eq!(l.list.first(), 1, "the down arrow at {scale}x");
+        m.handle(Input::Press(centre(bar.up).0, centre(bar.up).1), &mut l);
+        assert_eq!(l.list.first(), 0, "the up arrow");
+        let below = f64::from(bar.down.y0 - 2);
+        m.handle(Input::Press(centre(bar.track).0, below), &mut l);
+        assert_eq!(
+            l.list.first(),
+            (l.list.shown() - 1).min(l.list.last_first())
+        );
+        m.handle(Input::Wheel(x, y, 100), &mut l);
+
+        let thumb = l.list.bar().unwrap().thumb;
+        let (tx, ty) = centre(thumb);
+        m.handle(Input::Press(tx, ty), &mut l);
+        // The thumb travels the track less its own length.
+        let travel = f64::from((bar.track.y1 - bar.track.y0) - (thumb.y1 - thumb.y0));
+        m.handle(Input::Move(tx, ty + 2.0 * travel), &mut l);
+        assert_eq!(
+            l.list.first(),
+            l.list.last_first(),
+            "the thumb dragged down"
+        );
+        m.handle(Input::Move(tx, ty + travel / 2.0), &mut l);
+        let half = l.list.first();
+        assert_eq!(
+            half,
+            l.list.last_first().div_ceil(2),
+            "half way at {scale}x"
+        );
+        m.handle(Input::Release(tx, ty + travel / 2.0), &mut l);
+        m.handle(Input::Move(tx, ty), &mut l);
+        assert_eq!(l.list.first(), half, "no drag after release");
+        assert_eq!(m.settings, start(), "nothing changed");
+
+        // Focus on the first row, scrolled out of sight: a key shows it.
+        m.handle(Input::Wheel(x, y, -100), &mut l);
+        assert!(!l.row_shown(0));
+        m.handle(Input::Down, &mut l);
+        assert_row_shown_whole(&l, 1, "after Down");
+        m.handle(Input::Up, &mut l);
+        assert_eq!(l.list.first(), 0, "the first row brings its heading");
+        m.handle(Input::Up, &mut l);
+        assert_eq!(m.focused_button(), Some(Button::Cancel));
+        for _ in Button::ALL {
+            m.handle(Input::Up, &mut l);
+        }
+        assert_eq!(m.focused_row(), Some(last));
+        assert_row_shown_whole(&l, last, "Up from the buttons");
+    }
+}
+
+/// Sees the focused row's highlight, its help lines and the file line in
+/// a drawn frame; counts the help's lines by their ink.
+fn assert_drawn(frame: &mountains::render::Frame, l: &Layout, i: usize, what: &str) {
+    let px = |x: u32, y: u32| frame.pixels()[(y * frame.width() + x) as usize];
+    let r = l.row(i);
+    assert_eq!(
+        px(r.x0 + l.px(2), r.y0 + l.px(2)),
+        0x000080,
+        "{what}: highlight"
+    );
+    let ink = |y0: u32, y1: u32| {
+        (y0..y1).any(|y| {
+            (l.panel_x..l.panel_x + l.px(PANEL_W)).any(|x| matches!(px(x, y), 0x000000 | 0x404040))
+        })
+    };
+    let line = l.px(HELP_LINE);
+    let drawn: Vec<bool> = (0..(l.file_y - l.help_y) / line)
+        .map(|n| ink(l.help_y + n * line, l.help_y + n * line + line))
+        .collect();
+    let want = help_lines(&KEYS[i]);
+    let inked = drawn.iter().filter(|d| **d).count();
+    assert!(
+        drawn[..want].iter().all(|d| *d) && inked == want,
+        "{what}: {} has {want} lines of help, drawn {drawn:?}",
+        KEYS[i].name
+    );
+    assert!(ink(l.file_y, l.file_y + l.px(10)), "{what}: the file line");
+    // Between the list and the help: only the face and the line parting them.
+    let under = l.list.area().y1..l.help_y - l.px(4);
+    for y in under {
+        for x in l.panel_x..l.panel_x + l.px(PANEL_W) {
+            assert_eq!(
+                px(x, y),
+                0xC0C0C0,
+                "{what}: drawn under the list at {x},{y}"
+            );
+        }
+    }
+}
+
+/// The drawn screen at 960x620 and at the smallest size, 100% and 200%:
+/// each focused row is drawn where the layout says, its whole help below
+/// the list and the file line under it; after a resize the focused row
+/// stays in sight. Writes `target/tmp/settings-ui-<w>x<h>-<key>.png`.
+#[test]
+fn the_drawn_screen_shows_each_focused_row_and_its_whole_help() {
+    let dir = scratch("fit");
+    let file = dir.join("mountains.toml");
+    let out = Path::new(env!("CARGO_TARGET_TMPDIR"));
+    let mut sc = screen(&file, 1);
+    for scale in [1, 2] {
+        for (w, h) in SIZES {
+            let what = format!("{w}x{h} at {scale}x");
+            sc.resize(w * scale, h * scale, scale);
+            while sc.step_preview() {}
+            while sc.model.focused_row() != Some(0) {
+                sc.input(Input::Tab { back: false });
+            }
+            for (i, key) in KEYS.iter().enumerate() {
+                let frame = sc.draw().clone();
+                assert_drawn(&frame, sc.layout(), i, &what);
+                let shot = matches!(key.name, "look" | "heightmaps_dir");
+                if scale == 1 && shot {
+                    let name = format!("settings-ui-{w}x{h}-{}.png", key.name);
+                    mountains::snapshot::write_png(&out.join(name), &frame).unwrap();
+                }
+                sc.input(Input::Tab { back: false });
+            }
+        }
+    }
+    // The last row focused at the default size stays in sight when the
+    // window is made as small as it may be.
+    sc.resize(WINDOW_W, WINDOW_H, 1);
+    sc.input(Input::Tab { back: true });
+    while sc.model.focused_row().is_none() {
+        sc.input(Input::Tab { back: true });
+    }
+    sc.resize(MIN_W, MIN_H, 1);
+    assert_row_shown_whole(sc.layout(), KEYS.len() - 1, "resized");
 }

@@ -1,7 +1,7 @@
 //! Files saved by format 1 must keep loading as the same mountain.
 //!
 //! `tests/data/heightmap_v1.png` was written by `regenerate_golden_file`
-//! (run it with `cargo test --test heightmap_golden -- --ignored` only when
+//! (run it with `cargo test --test terrain heightmap_golden -- --ignored` only when
 //! the format deliberately changes, and bump `meta::FORMAT_VERSION` then).
 
 use crate::common::heightmaps;
