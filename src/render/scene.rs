@@ -5,13 +5,13 @@ use std::sync::Arc;
 
 use glam::Vec2;
 
+use super::base::colour::blend_packed;
+use super::base::fixed::{Fixed2, to_fixed};
 use super::framing::easel;
 use super::framing::tops::{RowTops, finite};
 use super::framing::turn;
 use super::framing::view::{Oblique, View, listing_relief};
-use super::scan::raster::{Fixed2, to_fixed};
 use super::shade::clouds;
-use super::shade::colour::blend_packed;
 use super::shade::dither;
 use super::shade::haze::Haze;
 use super::shade::mirror::Mirror;
@@ -24,6 +24,7 @@ use super::shade::skylight::SkyLight;
 use super::shade::weather::Weather;
 use crate::settings::{ColorMode, Look, Settings, Shading, ViewKind};
 use crate::terrain::Heightfield;
+use crate::threads::{both, both_if};
 
 /// How faces are put on screen.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -526,33 +527,6 @@ impl<'a> Scene<'a> {
         }
         (lo.floor() as i64 - 1, hi.ceil() as i64 + 1)
     }
-}
-
-/// `a()` here and `b()` on a thread of its own, at once.
-pub(crate) fn both<A: Send, B: Send>(
-    a: impl FnOnce() -> A + Send,
-    b: impl FnOnce() -> B + Send,
-) -> (A, B) {
-    std::thread::scope(|s| {
-        let theirs = s.spawn(b);
-        (a(), joined(theirs))
-    })
-}
-
-/// [`both`] if `at_once`, else `a()` and then `b()` here.
-pub(crate) fn both_if<A: Send, B: Send>(
-    at_once: bool,
-    a: impl FnOnce() -> A + Send,
-    b: impl FnOnce() -> B + Send,
-) -> (A, B) {
-    if at_once { both(a, b) } else { (a(), b()) }
-}
-
-/// What a scoped thread returned; its panic goes on up.
-fn joined<T>(thread: std::thread::ScopedJoinHandle<'_, T>) -> T {
-    thread
-        .join()
-        .unwrap_or_else(|p| std::panic::resume_unwind(p))
 }
 
 /// The highest point of each row (at least sea level), the view fitted to

@@ -8,13 +8,10 @@
 //! walks and projects only those (`StripReach::cells_reaching`).
 
 use std::sync::Mutex;
-use std::sync::atomic::{AtomicBool, Ordering};
 
 use super::walk::{Rows, draw_strips};
-use crate::render::frame::Frame;
-use crate::render::scan::canvas::Canvas;
-use crate::render::scan::clean::clean_edges;
-use crate::render::scan::horizon::Horizon;
+use crate::render::base::canvas::Canvas;
+use crate::render::base::frame::Frame;
 use crate::render::scene::Scene;
 
 /// Most threads used; more bands would mostly repeat per-strip work.
@@ -95,18 +92,16 @@ impl<'f> Columns<'f> {
     }
 }
 
-/// Draws the sky and every strip of `scene` into `frame`, on all cores.
-pub(crate) fn render(scene: &Scene, frame: &mut Frame) {
-    if let Some(horizon) = draw_bands(scene, frame, scene.clean_edges) {
-        clean_edges(scene, &horizon, frame);
-    }
-}
-
-/// [`render`]'s drawing, the edges left as drawn; and if `sweep`, the
-/// horizon, swept by the first thread to start while the others take the
-/// bands. (On a thread of its own beside a thread per core, the sweep had
-/// three threads share two cores.)
-fn draw_bands(scene: &Scene, frame: &mut Frame, sweep: bool) -> Option<Horizon> {
+/// Draws the sky and every strip of `scene` into `frame`, on all cores,
+/// the edges left as drawn; and runs `beside` (if given) on the first
+/// thread to start while the others take the bands, returning what it
+/// returned. (On a thread of its own beside a thread per core, a job
+/// beside the bands had three threads share two cores.)
+pub(crate) fn draw_bands<T: Send>(
+    scene: &Scene,
+    frame: &mut Frame,
+    beside: Option<impl FnOnce() -> T + Send>,
+) -> Option<T> {
     let width = frame.width();
     let threads = crate::cores::cores()
         .min(MAX_THREADS)
@@ -119,17 +114,18 @@ fn draw_bands(scene: &Scene, frame: &mut Frame, sweep: bool) -> Option<Horizon> 
             &mut Rows::new(),
             width,
         );
-        return sweep.then(|| Horizon::sweep(scene, width));
+        return beside.map(|job| job());
     }
     let queue = Mutex::new(Columns::new(frame, threads));
-    let to_sweep = AtomicBool::new(sweep);
-    let swept = Mutex::new(None);
+    let beside = Mutex::new(beside);
+    let done = Mutex::new(None);
     let work = || {
-        if to_sweep.swap(false, Ordering::Relaxed) {
-            let horizon = Horizon::sweep(scene, width);
-            if let Ok(mut swept) = swept.lock() {
-                *swept = Some(horizon);
-            }
+        // The first thread to start takes the job; the others find none.
+        let job = beside.lock().map_or(None, |mut b| b.take());
+        if let Some(result) = job.map(|job| job())
+            && let Ok(mut done) = done.lock()
+        {
+            *done = Some(result);
         }
         let mut rows = Rows::new();
         loop {
@@ -147,7 +143,7 @@ fn draw_bands(scene: &Scene, frame: &mut Frame, sweep: bool) -> Option<Horizon> 
         }
         work();
     });
-    swept.into_inner().ok().flatten()
+    done.into_inner().ok().flatten()
 }
 
 /// `canvas` made ready for `scene`: filled faces are drawn front to back

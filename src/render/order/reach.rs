@@ -7,8 +7,8 @@
 
 use std::ops::Range;
 
-use crate::render::scan::canvas::Canvas;
-use crate::render::scan::raster::Clip;
+use crate::render::base::canvas::Canvas;
+use crate::render::base::fixed::Clip;
 use crate::render::scene::Scene;
 
 /// Pixels added on each side of a band: fixed-point rounding and the lines

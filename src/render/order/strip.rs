@@ -3,13 +3,14 @@
 
 use glam::{Vec2, Vec3};
 
+use crate::render::base::canvas::Canvas;
+use crate::render::base::colour::blend_packed;
+use crate::render::base::colour::mix_packed;
+use crate::render::base::fixed::Fixed2;
 use crate::render::scan::blend::Blend;
-use crate::render::scan::canvas::Canvas;
-use crate::render::scan::raster::{Fixed2, Triangle, centre_box};
+use crate::render::scan::raster::{Triangle, centre_box};
 use crate::render::scan::shore::{ShoreLine, ShorePoint};
 use crate::render::scene::{Scene, Style, Vert};
-use crate::render::shade::colour::blend_packed;
-use crate::render::shade::colour::mix_packed;
 use crate::render::shade::dither;
 
 /// White and black, the only two colours of Mono.

@@ -28,8 +28,8 @@ use std::sync::atomic::{AtomicU32, Ordering};
 
 use glam::{Vec2, Vec3};
 
-use super::colour::{Rgb, blend_packed, to_u32};
 use super::index;
+use crate::render::base::colour::{Rgb, blend_packed, to_u32};
 use crate::render::framing::tops::finite;
 use crate::terrain::Heightfield;
 

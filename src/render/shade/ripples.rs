@@ -7,7 +7,7 @@
 //! units and their pattern is drawn from the mountain's identity, so a seed
 //! has the same sea at every frame size, detail and `low_detail`.
 
-use super::colour::blend_packed;
+use crate::render::base::colour::blend_packed;
 use crate::terrain::Heightfield;
 use crate::terrain::heightfield::MAX_EXPONENT;
 use crate::terrain::noise::Noise;

@@ -4,14 +4,15 @@
 //! pixels, never the order they were drawn in, so the full frame's bands
 //! and the painter's last step end with the same pixels.
 
-use super::canvas::Canvas;
 use super::crests;
 use super::horizon::{Edge, Horizon};
 use super::skyline::{self, Skyline};
-use crate::render::damage::Damage;
-use crate::render::frame::Frame;
-use crate::render::scene::{Scene, both};
+use crate::render::base::canvas::Canvas;
+use crate::render::base::damage::Damage;
+use crate::render::base::frame::Frame;
+use crate::render::scene::Scene;
 use crate::render::shade::sky::SkySeen;
+use crate::threads::both;
 
 /// Columns counted together when the crests are shared out.
 const BLOCK: u32 = 16;

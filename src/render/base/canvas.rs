@@ -11,9 +11,9 @@
 //! Both end with the same pixels; the second lets the full frame skip the
 //! faces hidden behind what is already drawn.
 
-use super::raster::Clip;
-use crate::render::damage::Damage;
-use crate::render::frame::Rect;
+use super::damage::Damage;
+use super::fixed::Clip;
+use super::frame::Rect;
 
 /// Columns `x0..x0 + width` of rows `y0..` of a frame, a slice per row.
 pub(crate) struct Canvas<'a> {
