@@ -201,9 +201,10 @@ impl<'a> Scene<'a> {
         let wants_sky = style == Style::Shaded && !lighting.classic;
         let light = lighting.sun;
         // Four parts, two to a thread, or each on its own with four cores:
-        // the frame's serial start (1080p, seed 42: the shadow sweep 1.7 ms,
-        // the sky's sweeps 1.5, the view's fit 1.0, the palette's tables
-        // 0.5). Three threads on two cores took 3.1 ms, these pairs 2.4.
+        // the frame's serial start (the shadow sweep, the sky's sweeps, the
+        // view's fit, the palette's tables), paired so the two threads
+        // carry about the same; three threads on two cores would only
+        // take turns.
         let wide = crate::cores::cores() >= 4;
         let (((row_top, view, rows), skylight), (shadow, palette)) = both(
             || {
@@ -398,8 +399,8 @@ impl<'a> Scene<'a> {
     /// (a land face may touch the point) or the water mirrors, its light;
     /// and if `land`, its colour under smooth shading. Plain water takes
     /// neither light nor colour from its points: a point with plain water
-    /// all round it is never lit or coloured (at 1080p 42% of the shaded
-    /// points of seed 42, 34-64% of those of seeds 1, 2, 3 and 5).
+    /// all round it is never lit or coloured (often much of the grid: the
+    /// sea is wide).
     #[inline(always)]
     pub(crate) fn shade(&self, v: &mut Vert, x: usize, y: usize, land: bool) {
         if !v.hazed {

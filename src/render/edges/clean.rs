@@ -26,8 +26,8 @@ const BLOCK: u32 = 16;
 /// work, each a part of the columns holding half of the crests: each finds
 /// its part's skyline, and once the skyline's runs are known across the
 /// width, mixes its part. The crests' pixels are far apart in memory and
-/// their mixing waits on it; the crests crowd where the land does (at 4K,
-/// halves of the width left one thread 2.4 ms behind the other).
+/// their mixing waits on it; the crests crowd where the land does, so
+/// halves of the width would leave one thread well behind the other.
 pub(crate) fn clean_edges(scene: &Scene, horizon: &Horizon, frame: &mut Frame) -> Damage {
     let (width, height) = (frame.width(), frame.height());
     let at = crests_middle(horizon, width);

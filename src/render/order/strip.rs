@@ -397,7 +397,7 @@ impl Scene<'_> {
     /// faces the colour of the cell's middle, worked out once a pixel is
     /// covered: its depth, streak, glitter and what it mirrors, the last
     /// sampled about as coarsely anyway (`Mirror`). A look a cell, not a
-    /// face, takes 4-7% off a default frame. Plain water (the classic
+    /// face, works that out half as often. Plain water (the classic
     /// looks, `reflections = false`) keeps a colour a face. `faces` are
     /// the cell's, the farther first.
     fn fill_water_cell<'c>(
