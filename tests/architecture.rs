@@ -169,13 +169,19 @@ fn longest(full: &[String], modules: &BTreeMap<Vec<String>, PathBuf>) -> Option<
         .find_map(|n| modules.get(&full[..n]).cloned())
 }
 
+/// The crate's source files and what each imports.
+struct Imports {
+    /// The `src` folder.
+    src: PathBuf,
+    /// For each file, the files it imports (its own tests aside).
+    edges: BTreeMap<PathBuf, BTreeSet<PathBuf>>,
+    /// Every source file but main.rs, by its module path.
+    modules: BTreeMap<Vec<String>, PathBuf>,
+}
+
 /// Every source file of the crate (but main.rs) by its module path, and
-/// for each file the files it imports (its own tests aside).
-fn imports() -> (
-    PathBuf,
-    BTreeMap<PathBuf, BTreeSet<PathBuf>>,
-    BTreeMap<Vec<String>, PathBuf>,
-) {
+/// for each file the files it imports.
+fn imports() -> Imports {
     let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut files = Vec::new();
     sources(&src, &mut files);
@@ -195,12 +201,16 @@ fn imports() -> (
             }
         }
     }
-    (src, edges, modules)
+    Imports {
+        src,
+        edges,
+        modules,
+    }
 }
 
 #[test]
 fn no_source_file_imports_round_a_circle() {
-    let (src, edges, _) = imports();
+    let Imports { src, edges, .. } = imports();
     // Depth-first search for a way back to where it started.
     let name = |p: &PathBuf| p.strip_prefix(&src).unwrap().display().to_string();
     for start in edges.keys() {
@@ -248,7 +258,11 @@ fn floor(module: &[String]) -> Option<usize> {
 
 #[test]
 fn no_room_of_render_imports_a_room_above_it() {
-    let (src, edges, modules) = imports();
+    let Imports {
+        src,
+        edges,
+        modules,
+    } = imports();
     let module_of_file: BTreeMap<&PathBuf, &Vec<String>> =
         modules.iter().map(|(m, f)| (f, m)).collect();
     let name = |p: &PathBuf| p.strip_prefix(&src).unwrap().display().to_string();
