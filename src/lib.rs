@@ -30,5 +30,6 @@ pub mod signals;
 pub mod snapshot;
 pub mod spelling;
 pub mod terrain;
+mod threads;
 #[cfg(unix)]
 pub mod x11_visual;

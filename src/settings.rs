@@ -1,6 +1,6 @@
 //! Every user preference, in one `Settings` value.
 //!
-//! The key table (names, ranges, docs) lives in `settings/keys.rs`, reading
+//! The key table (names, ranges, docs) lives in `settings/keys/`, reading
 //! files and `--set` in `settings/load.rs`; this file holds the types.
 
 pub mod handles;
@@ -12,103 +12,133 @@ pub mod save;
 
 use serde::{Deserialize, Serialize};
 
-/// Whose picture the mountain is drawn as: ours, or one of the seed
-/// programs' (`settings/looks.rs` holds the keys each look sets; the
-/// renderer and the generator read the parts no key can say).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Look {
-    /// Today's picture: every key at its own default.
-    Ours,
-    /// Seed 000, MacTech's *Fractal Mountain Climbing* (1991): its
-    /// triangles, HSV ramp, light, tilt and water.
-    FractalMountainClimbing,
-    /// Seed 003, *Mountain Terrain 3.0* (1997): a filter colour ANDed with
-    /// a darkness from nine facings, pure blue water.
-    MountainTerrain,
-    /// Seed 004, *3D Fractal Landscapes* (FL3): Filled mode, pseudo-normal
-    /// deviations, single-point perspective.
-    Fl3,
-    /// Seed 002, the essay on recursive subdivision: its view turned in
-    /// steps of 11.25 degrees, the square's outer edges undisplaced.
-    Essay,
+/// A unit enum a key chooses among, each variant's name written once: serde
+/// reads and writes the variant by that name, `NAMES` lists the names in
+/// order for the key table, and `name` gives one back.
+macro_rules! choice {
+    (
+        $(#[$meta:meta])*
+        pub enum $name:ident {
+            $($(#[$vmeta:meta])* $variant:ident = $text:literal,)*
+        }
+    ) => {
+        $(#[$meta])*
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+        pub enum $name {
+            $($(#[$vmeta])* #[serde(rename = $text)] $variant,)*
+        }
+
+        impl $name {
+            /// Every variant's name, in order: the values its key accepts.
+            pub const NAMES: &'static [&'static str] = &[$($text),*];
+
+            /// The variant's name, as its key writes it.
+            pub const fn name(self) -> &'static str {
+                match self {
+                    $($name::$variant => $text,)*
+                }
+            }
+        }
+    };
 }
 
-/// Which fractal generator builds the heightfield.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Generator {
-    /// Mountain Terrain 3.0: square subdivision, cragginess halved per level.
-    Square,
-    /// Square subdivision in diamond-square order (edge midpoints from the
-    /// neighbouring centres), which removes the straight creases, started
-    /// from a 5x5 lattice of heights (xmountains' `-t`) rather than four corners.
-    Diamond,
-    /// Fractal Mountain Climbing: triangle subdivision on a parallelogram.
-    Triangle,
-    /// Fractional Brownian surface of a chosen roughness (`hurst`), by
-    /// spectral synthesis: Mountain Terrain 3.0's hoped-for version 4.0.
-    Brownian,
+choice! {
+    /// Whose picture the mountain is drawn as: ours, or one of the seed
+    /// programs' (`settings/looks.rs` holds the keys each look sets; the
+    /// renderer and the generator read the parts no key can say).
+    pub enum Look {
+        /// Today's picture: every key at its own default.
+        Ours = "ours",
+        /// Seed 000, MacTech's *Fractal Mountain Climbing* (1991): its
+        /// triangles, HSV ramp, light, tilt and water.
+        FractalMountainClimbing = "fractal-mountain-climbing",
+        /// Seed 003, *Mountain Terrain 3.0* (1997): a filter colour ANDed with
+        /// a darkness from nine facings, pure blue water.
+        MountainTerrain = "mountain-terrain",
+        /// Seed 004, *3D Fractal Landscapes* (FL3): Filled mode, pseudo-normal
+        /// deviations, single-point perspective.
+        Fl3 = "fl3",
+        /// Seed 002, the essay on recursive subdivision: its view turned in
+        /// steps of 11.25 degrees, the square's outer edges undisplaced.
+        Essay = "essay",
+    }
 }
 
-/// The four starting profiles of Fractal Mountain Climbing (seed 000).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Profile {
-    /// Profile 1: high back corner, low front corner: slopes into the sea.
-    Slope,
-    /// Profile 2: one high corner, the rest at sea level.
-    Peak,
-    /// Profile 3: one low corner, the rest at sea level.
-    Bay,
-    /// Profile 4: raised centre and back edges: an island massif.
-    Massif,
+choice! {
+    /// Which fractal generator builds the heightfield.
+    pub enum Generator {
+        /// Mountain Terrain 3.0: square subdivision, cragginess halved per level.
+        Square = "square",
+        /// Square subdivision in diamond-square order (edge midpoints from the
+        /// neighbouring centres), which removes the straight creases, started
+        /// from a 5x5 lattice of heights (xmountains' `-t`) rather than four corners.
+        Diamond = "diamond",
+        /// Fractal Mountain Climbing: triangle subdivision on a parallelogram.
+        Triangle = "triangle",
+        /// Fractional Brownian surface of a chosen roughness (`hurst`), by
+        /// spectral synthesis: Mountain Terrain 3.0's hoped-for version 4.0.
+        Brownian = "brownian",
+    }
 }
 
-/// How faces are coloured.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum ColorMode {
-    /// Water blue, green lowlands, brown, snow above the treeline.
-    Natural,
-    /// Colour filter: shaded grey.
-    Gray,
-    /// Colour filter: red.
-    Red,
-    /// Colour filter: green.
-    Green,
-    /// Colour filter: blue.
-    Blue,
-    /// Colour filter: yellow.
-    Yellow,
-    /// Colour filter: cyan.
-    Cyan,
-    /// Colour filter: purple.
-    Purple,
-    /// Black faces, one-pixel white outlines.
-    Sonar,
-    /// FL3's Filled mode: land faces one flat green, water faces one flat
-    /// blue, no shading, each outlined by the pen (Delphi's default black).
-    Filled,
-    /// Wire mesh only: land green, water blue.
-    Outline,
-    /// Black and white: seed 000's 17 8x8 patterns (`bwPat`).
-    Mono,
-    /// Layered 2D ridge silhouettes fading into the distance.
-    Ridges,
+choice! {
+    /// The four starting profiles of Fractal Mountain Climbing (seed 000).
+    pub enum Profile {
+        /// Profile 1: high back corner, low front corner: slopes into the sea.
+        Slope = "slope",
+        /// Profile 2: one high corner, the rest at sea level.
+        Peak = "peak",
+        /// Profile 3: one low corner, the rest at sea level.
+        Bay = "bay",
+        /// Profile 4: raised centre and back edges: an island massif.
+        Massif = "massif",
+    }
 }
 
-/// The projection used to draw the mountain.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum ViewKind {
-    /// A camera low in front of the land looking across it to the horizon,
-    /// fitted per frame so the land spans the whole width (xmountains' view).
-    Vista,
-    /// The classic tilted, sheared parallelogram (orthographic).
-    Oblique,
-    /// Single-point perspective.
-    Perspective,
+choice! {
+    /// How faces are coloured.
+    pub enum ColorMode {
+        /// Water blue, green lowlands, brown, snow above the treeline.
+        Natural = "natural",
+        /// Colour filter: shaded grey.
+        Gray = "gray",
+        /// Colour filter: red.
+        Red = "red",
+        /// Colour filter: green.
+        Green = "green",
+        /// Colour filter: blue.
+        Blue = "blue",
+        /// Colour filter: yellow.
+        Yellow = "yellow",
+        /// Colour filter: cyan.
+        Cyan = "cyan",
+        /// Colour filter: purple.
+        Purple = "purple",
+        /// Black faces, one-pixel white outlines.
+        Sonar = "sonar",
+        /// FL3's Filled mode: land faces one flat green, water faces one flat
+        /// blue, no shading, each outlined by the pen (Delphi's default black).
+        Filled = "filled",
+        /// Wire mesh only: land green, water blue.
+        Outline = "outline",
+        /// Black and white: seed 000's 17 8x8 patterns (`bwPat`).
+        Mono = "mono",
+        /// Layered 2D ridge silhouettes fading into the distance.
+        Ridges = "ridges",
+    }
+}
+
+choice! {
+    /// The projection used to draw the mountain.
+    pub enum ViewKind {
+        /// A camera low in front of the land looking across it to the horizon,
+        /// fitted per frame so the land spans the whole width (xmountains' view).
+        Vista = "vista",
+        /// The classic tilted, sheared parallelogram (orthographic).
+        Oblique = "oblique",
+        /// Single-point perspective.
+        Perspective = "perspective",
+    }
 }
 
 /// How fine the grid is.
@@ -121,51 +151,51 @@ pub enum Detail {
     Level(u32),
 }
 
-/// What `sea_level` is measured from.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum WaterLine {
-    /// The height with [`COAST_SEA_SHARE`] of the map below it: every
-    /// mountain has land and a coast.
-    Coast,
-    /// The generator's own zero (Mountain Terrain 3.0: some maps all sea).
-    Generator,
+choice! {
+    /// What `sea_level` is measured from.
+    pub enum WaterLine {
+        /// The height with [`COAST_SEA_SHARE`] of the map below it: every
+        /// mountain has land and a coast.
+        Coast = "coast",
+        /// The generator's own zero (Mountain Terrain 3.0: some maps all sea).
+        Generator = "generator",
+    }
 }
 
 /// Share of the map under water when `water_line = "coast"` and
 /// `sea_level = 0`.
 pub const COAST_SEA_SHARE: f32 = 0.3;
 
-/// Which light falls on the land.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Sun {
-    /// Morning, midday, evening or sunset, drawn from each mountain's heights.
-    Varied,
-    /// A low, cool light from the left and a pale sky.
-    Morning,
-    /// A high white light and a deep blue sky.
-    Midday,
-    /// A low, warm light from the right and a glowing horizon.
-    Evening,
-    /// Evening looking into the sun: the land against a glowing sky, the
-    /// water below the sun glittering.
-    Sunset,
-    /// Seed 000's light as its listing computes it: from the back right,
-    /// 28 degrees up, brightness `0.5 + 0.5 cos`.
-    Classic,
+choice! {
+    /// Which light falls on the land.
+    pub enum Sun {
+        /// Morning, midday, evening or sunset, drawn from each mountain's heights.
+        Varied = "varied",
+        /// A low, cool light from the left and a pale sky.
+        Morning = "morning",
+        /// A high white light and a deep blue sky.
+        Midday = "midday",
+        /// A low, warm light from the right and a glowing horizon.
+        Evening = "evening",
+        /// Evening looking into the sun: the land against a glowing sky, the
+        /// water below the sun glittering.
+        Sunset = "sunset",
+        /// Seed 000's light as its listing computes it: from the back right,
+        /// 28 degrees up, brightness `0.5 + 0.5 cos`.
+        Classic = "classic",
+    }
 }
 
-/// How light falls across a land face.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Shading {
-    /// Light worked out at every grid point and blended across each face,
-    /// so slopes read as continuous ground (the vista and perspective view
-    /// in colour; the classic looks stay flat).
-    Smooth,
-    /// One colour per face, as the seed programs draw them.
-    Flat,
+choice! {
+    /// How light falls across a land face.
+    pub enum Shading {
+        /// Light worked out at every grid point and blended across each face,
+        /// so slopes read as continuous ground (the vista and perspective view
+        /// in colour; the classic looks stay flat).
+        Smooth = "smooth",
+        /// One colour per face, as the seed programs draw them.
+        Flat = "flat",
+    }
 }
 
 /// How much cloud the sky holds.
@@ -177,14 +207,14 @@ pub enum Clouds {
     Amount(f32),
 }
 
-/// Which monitors the full-screen saver covers.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Monitors {
-    /// One window, with its own mountain, on every monitor.
-    All,
-    /// Only the primary monitor; the others are blanked.
-    Primary,
+choice! {
+    /// Which monitors the full-screen saver covers.
+    pub enum Monitors {
+        /// One window, with its own mountain, on every monitor.
+        All = "all",
+        /// Only the primary monitor; the others are blanked.
+        Primary = "primary",
+    }
 }
 
 /// Smallest grid exponent (9x9 points): the `detail` key's least value

@@ -20,8 +20,7 @@ pub fn offer(name: Option<&str>) -> String {
 /// for a long name; the first of equally near ones.
 ///
 /// It allocates nothing and stops on each name once it is out of reach: a
-/// file of 100,000 unknown keys runs this for each (issue 22: a vector per
-/// row made it 6 s). Names longer than [`LONGEST`] characters are never
+/// hostile file of many unknown keys runs this for each. Names longer than [`LONGEST`] characters are never
 /// near (no key or flag is nearly that long).
 pub fn nearest<S: AsRef<str>>(typed: &str, known: impl IntoIterator<Item = S>) -> Option<S> {
     let mut typed_chars = ['\0'; LONGEST];

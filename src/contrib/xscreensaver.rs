@@ -11,11 +11,11 @@ use std::fmt::Write;
 
 use super::{default_text, label};
 use crate::cli::key_flags::flag_name;
-use crate::settings::keys::{AMOUNT_MENU, KEYS, Key, Kind};
+use crate::settings::keys::{AMOUNT_MENU, KEYS, Key, Kind, MONITORS, SEED};
 
 /// Keys with no widget: the seed is drawn afresh for every mountain under
 /// xscreensaver, and xscreensaver itself chooses the monitors.
-const NO_WIDGET: &[&str] = &["seed", "monitors"];
+const NO_WIDGET: &[&str] = &[SEED.name, MONITORS.name];
 
 /// Menus side by side per row, and check boxes: the dialog must fit a
 /// 720-pixel screen (two menus a row made it 753 pixels tall).

@@ -1,7 +1,7 @@
 //! Visible facet edges: steps of colour between neighbouring flat-colour
 //! facets of the land, judged by the CIE76 colour difference.
 //!
-//! Definitions (the figures of LOOKS.md and issue 18):
+//! Definitions (the figures BENCHMARKS.md reports):
 //! - a *facet* is a 4-connected run of land pixels of exactly one colour;
 //! - a land pixel lies on a *visible facet edge* when one of its four
 //!   neighbours is land in another facet, both facets hold at least

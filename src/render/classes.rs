@@ -6,8 +6,8 @@
 //! `render_full`, so each pixel's class is the surface `render_full`
 //! leaves there.
 
-use super::frame::Frame;
-use super::order::bands;
+use super::base::frame::Frame;
+use super::painter::draw_full;
 use super::scene::{FieldRef, Scene, Style};
 use super::shade::ripples::Ripples;
 use super::shade::sky::Sky;
@@ -64,7 +64,7 @@ pub fn render_classes(field: &Heightfield, settings: &Settings, frame: &mut Fram
     scene.mirror = None;
     // Each pixel one class: no mixing across the coast or the skyline.
     scene.clean_edges = false;
-    bands::render(&scene, frame);
+    draw_full(&scene, frame);
     Some(())
 }
 

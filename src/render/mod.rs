@@ -1,18 +1,29 @@
 //! Everything a person sees, drawn into a `Frame`. Pure: no windows.
 //!
-//! The folders are the pipeline's stages: `framing/` (camera, view, which
-//! rows), `shade/` (light and colour), `order/` (painting order: strips,
-//! bands), `scan/` (triangles and lines into pixels). The files at the top
-//! tie them together: `scene.rs` (everything fixed for one frame),
-//! `painter.rs` (the slide show's steps), `frame.rs` and `damage.rs` (the
-//! output), `ridges.rs` (Ridges mode, its own look), `facts.rs` and
-//! `classes.rs` (what tests and measurements read).
+//! The folders are the pipeline's rooms, each standing on those below it
+//! and importing nothing from those above (tests/architecture.rs checks),
+//! from the bottom:
+//!
+//! - `base/`, the ground floor: the frame and its damage, the canvas,
+//!   colour arithmetic, fixed-point screen positions;
+//! - `framing/`: camera, view, which rows;
+//! - `shade/`: light and colour;
+//! - `scene.rs`: everything fixed for one frame, made from the two above;
+//! - `scan/`: triangles and lines into pixels;
+//! - `order/`: painting order (strips, bands), the scene's faces and lines
+//!   handed to `scan/`;
+//! - `edges/`: the skyline and the crests drawn clean once the frame is
+//!   complete, the passes that need the whole scene.
+//!
+//! The files at the top tie them together: `painter.rs` (the slide show's
+//! steps and the full frame), `ridges.rs` (Ridges mode, its own look),
+//! `facts.rs` and `classes.rs` (what tests and measurements read).
 
+mod base;
 #[doc(hidden)]
 pub mod classes;
-pub mod damage;
+mod edges;
 pub mod facts;
-pub mod frame;
 mod framing;
 mod order;
 pub mod painter;
@@ -22,9 +33,10 @@ mod scene;
 mod shade;
 
 // The public paths from before the rooms (`render::palette`, ...) stay.
+pub use base::{colour, damage, frame};
 pub use framing::{detail, turn, view};
 pub use scan::raster;
-pub use shade::{colour, dither, essay, facings, light, listing, palette, shadow};
+pub use shade::{dither, essay, facings, light, listing, palette, shadow};
 
 pub use damage::Damage;
 pub use frame::{Frame, Rect};

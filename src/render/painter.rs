@@ -2,14 +2,14 @@
 
 use std::sync::Arc;
 
-use super::damage::Damage;
-use super::frame::{Frame, Rect};
+use super::base::canvas::Canvas;
+use super::base::damage::Damage;
+use super::base::frame::{Frame, Rect};
+use super::edges::clean::clean_edges;
+use super::edges::horizon::{Horizon, HorizonSweep};
 use super::order::bands;
 use super::order::walk::{Rows, draw_strips};
 use super::ridges::Ridges;
-use super::scan::canvas::Canvas;
-use super::scan::clean::clean_edges;
-use super::scan::horizon::HorizonSweep;
 use super::scene::{FieldRef, Scene};
 use crate::settings::{ColorMode, Settings};
 use crate::terrain::Heightfield;
@@ -151,7 +151,7 @@ impl Painter {
         let size_fits = frame.width() == self.width && frame.height() == self.height;
         match &self.how {
             How::Mesh(scene, ..) if self.next == 0 && size_fits => {
-                bands::render(scene, frame);
+                draw_full(scene, frame);
                 self.next = self.strips_total();
                 self.let_go_when_done();
                 frame.bounds()
@@ -171,5 +171,16 @@ pub fn render_full(field: &Heightfield, settings: &Settings, frame: &mut Frame) 
         return;
     }
     let scene = Scene::new(FieldRef::Borrowed(field), settings, w, h);
-    bands::render(&scene, frame);
+    draw_full(&scene, frame);
+}
+
+/// Draws the sky and every strip of `scene` into `frame` in bands on all
+/// cores, then its edges clean, from the horizon one thread sweeps beside
+/// the bands.
+pub(crate) fn draw_full(scene: &Scene, frame: &mut Frame) {
+    let width = frame.width();
+    let sweep = scene.clean_edges.then_some(|| Horizon::sweep(scene, width));
+    if let Some(horizon) = bands::draw_bands(scene, frame, sweep) {
+        clean_edges(scene, &horizon, frame);
+    }
 }

@@ -8,8 +8,8 @@
 //! nearer ones darker (aerial perspective), and each layer fades into mist
 //! below its crest, so the valleys between ranges read as haze.
 
-use super::frame::{Frame, Rect};
-use super::shade::colour::{Rgb, mix, to_u32};
+use super::base::colour::{Rgb, mix, to_u32};
+use super::base::frame::{Frame, Rect};
 use crate::settings::Settings;
 use crate::terrain::{Heightfield, splitmix};
 

@@ -5,13 +5,13 @@ use std::sync::Arc;
 
 use glam::Vec2;
 
+use super::base::colour::blend_packed;
+use super::base::fixed::{Fixed2, to_fixed};
 use super::framing::easel;
 use super::framing::tops::{RowTops, finite};
 use super::framing::turn;
 use super::framing::view::{Oblique, View, listing_relief};
-use super::scan::raster::{Fixed2, to_fixed};
 use super::shade::clouds;
-use super::shade::colour::blend_packed;
 use super::shade::dither;
 use super::shade::haze::Haze;
 use super::shade::mirror::Mirror;
@@ -24,6 +24,7 @@ use super::shade::skylight::SkyLight;
 use super::shade::weather::Weather;
 use crate::settings::{ColorMode, Look, Settings, Shading, ViewKind};
 use crate::terrain::Heightfield;
+use crate::threads::{both, both_if};
 
 /// How faces are put on screen.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -200,9 +201,10 @@ impl<'a> Scene<'a> {
         let wants_sky = style == Style::Shaded && !lighting.classic;
         let light = lighting.sun;
         // Four parts, two to a thread, or each on its own with four cores:
-        // the frame's serial start (1080p, seed 42: the shadow sweep 1.7 ms,
-        // the sky's sweeps 1.5, the view's fit 1.0, the palette's tables
-        // 0.5). Three threads on two cores took 3.1 ms, these pairs 2.4.
+        // the frame's serial start (the shadow sweep, the sky's sweeps, the
+        // view's fit, the palette's tables), paired so the two threads
+        // carry about the same; three threads on two cores would only
+        // take turns.
         let wide = crate::cores::cores() >= 4;
         let (((row_top, view, rows), skylight), (shadow, palette)) = both(
             || {
@@ -397,8 +399,8 @@ impl<'a> Scene<'a> {
     /// (a land face may touch the point) or the water mirrors, its light;
     /// and if `land`, its colour under smooth shading. Plain water takes
     /// neither light nor colour from its points: a point with plain water
-    /// all round it is never lit or coloured (at 1080p 42% of the shaded
-    /// points of seed 42, 34-64% of those of seeds 1, 2, 3 and 5).
+    /// all round it is never lit or coloured (often much of the grid: the
+    /// sea is wide).
     #[inline(always)]
     pub(crate) fn shade(&self, v: &mut Vert, x: usize, y: usize, land: bool) {
         if !v.hazed {
@@ -526,33 +528,6 @@ impl<'a> Scene<'a> {
         }
         (lo.floor() as i64 - 1, hi.ceil() as i64 + 1)
     }
-}
-
-/// `a()` here and `b()` on a thread of its own, at once.
-pub(crate) fn both<A: Send, B: Send>(
-    a: impl FnOnce() -> A + Send,
-    b: impl FnOnce() -> B + Send,
-) -> (A, B) {
-    std::thread::scope(|s| {
-        let theirs = s.spawn(b);
-        (a(), joined(theirs))
-    })
-}
-
-/// [`both`] if `at_once`, else `a()` and then `b()` here.
-pub(crate) fn both_if<A: Send, B: Send>(
-    at_once: bool,
-    a: impl FnOnce() -> A + Send,
-    b: impl FnOnce() -> B + Send,
-) -> (A, B) {
-    if at_once { both(a, b) } else { (a(), b()) }
-}
-
-/// What a scoped thread returned; its panic goes on up.
-fn joined<T>(thread: std::thread::ScopedJoinHandle<'_, T>) -> T {
-    thread
-        .join()
-        .unwrap_or_else(|p| std::panic::resume_unwind(p))
 }
 
 /// The highest point of each row (at least sea level), the view fitted to

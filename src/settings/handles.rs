@@ -1,71 +1,81 @@
-//! Keys of the table by names the compiler checks. Code that needs a key's
-//! range or its row (the generator's clamps, the palette, the keyboard's
-//! actions) refers to it through one of these constants, so a misspelt key
-//! is a compile error, not a panic the first time that line runs; a test
-//! checks each constant against the table.
+//! Rows of the key table by their kind. Code that needs a key's range or
+//! its row (the generator's clamps, the palette, the keyboard's actions)
+//! refers to it through one of these constants, each its row's constant
+//! (`keys::HEIGHT`) seen as a whole number, a number or any key; a test
+//! checks each one's kind against its row.
 
-use super::keys::{Key, Kind, Value, find};
+use super::keys::{self, Key, Kind, Value};
 
 /// A key of any kind.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct AnyKey(&'static str);
+#[derive(Clone, Copy, Debug)]
+pub struct AnyKey(&'static Key);
 
 /// A whole-number key.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct IntKey(&'static str);
+#[derive(Clone, Copy, Debug)]
+pub struct IntKey(&'static Key);
 
 /// A number key.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct FloatKey(&'static str);
+#[derive(Clone, Copy, Debug)]
+pub struct FloatKey(&'static Key);
 
 /// `color`: the colour mode.
-pub const COLOR: AnyKey = AnyKey("color");
+pub const COLOR: AnyKey = AnyKey(&keys::COLOR);
 /// `relative_depth`: water coloured by its depth.
-pub const RELATIVE_DEPTH: AnyKey = AnyKey("relative_depth");
+pub const RELATIVE_DEPTH: AnyKey = AnyKey(&keys::RELATIVE_DEPTH);
 /// `low_detail`: the coarser grid.
-pub const LOW_DETAIL: AnyKey = AnyKey("low_detail");
+pub const LOW_DETAIL: AnyKey = AnyKey(&keys::LOW_DETAIL);
 /// `cragginess`: how sharply the square generators crease.
-pub const CRAGGINESS: IntKey = IntKey("cragginess");
+pub const CRAGGINESS: IntKey = IntKey(&keys::CRAGGINESS);
 /// `height`: the mountain's height, 1 to 10.
-pub const HEIGHT: IntKey = IntKey("height");
+pub const HEIGHT: IntKey = IntKey(&keys::HEIGHT);
 /// `elevation`: the square generators' corner heights.
-pub const ELEVATION: FloatKey = FloatKey("elevation");
+pub const ELEVATION: FloatKey = FloatKey(&keys::ELEVATION);
 /// `roughness`: the triangle generator's smoothness base.
-pub const ROUGHNESS: FloatKey = FloatKey("roughness");
+pub const ROUGHNESS: FloatKey = FloatKey(&keys::ROUGHNESS);
 /// `contour`: the triangle generator's power on heights.
-pub const CONTOUR: FloatKey = FloatKey("contour");
+pub const CONTOUR: FloatKey = FloatKey(&keys::CONTOUR);
 /// `hurst`: the Brownian surface's roughness.
-pub const HURST: FloatKey = FloatKey("hurst");
+pub const HURST: FloatKey = FloatKey(&keys::HURST);
 /// `erosion`: how much the land is worn.
-pub const EROSION: FloatKey = FloatKey("erosion");
+pub const EROSION: FloatKey = FloatKey(&keys::EROSION);
 /// `sea_level`: where the sea stands.
-pub const SEA_LEVEL: FloatKey = FloatKey("sea_level");
+pub const SEA_LEVEL: FloatKey = FloatKey(&keys::SEA_LEVEL);
 /// `cliffs`: terraces and cliffs, 0 to 1.
-pub const CLIFFS: FloatKey = FloatKey("cliffs");
+pub const CLIFFS: FloatKey = FloatKey(&keys::CLIFFS);
 
-/// The key's row in the table.
-fn row(name: &str) -> &'static Key {
-    find(name).unwrap_or_else(|| unreachable!("`{name}` is not a key (see the handles' test)"))
+macro_rules! same_key {
+    ($($t:ty),*) => {$(
+        /// Two handles are equal when they name the same key.
+        impl PartialEq for $t {
+            fn eq(&self, other: &Self) -> bool {
+                self.0.name == other.0.name
+            }
+        }
+
+        impl Eq for $t {}
+    )*};
 }
+
+same_key!(AnyKey, IntKey, FloatKey);
 
 impl AnyKey {
     /// The key's row in the table.
     pub fn row(self) -> &'static Key {
-        row(self.0)
+        self.0
     }
 }
 
 impl IntKey {
     /// The key's row in the table.
     pub fn row(self) -> &'static Key {
-        row(self.0)
+        self.0
     }
 
     /// The key's least and greatest values.
     pub fn range(self) -> (i64, i64) {
         match self.row().kind {
             Kind::Int { min, max } => (min, max),
-            other => unreachable!("`{}` is {other:?}, not a whole number", self.0),
+            other => unreachable!("`{}` is {other:?}, not a whole number", self.0.name),
         }
     }
 
@@ -81,14 +91,14 @@ impl IntKey {
 impl FloatKey {
     /// The key's row in the table.
     pub fn row(self) -> &'static Key {
-        row(self.0)
+        self.0
     }
 
     /// The key's least and greatest values.
     pub fn range(self) -> (f64, f64) {
         match self.row().kind {
             Kind::Float { min, max } => (min, max),
-            other => unreachable!("`{}` is {other:?}, not a number", self.0),
+            other => unreachable!("`{}` is {other:?}, not a number", self.0.name),
         }
     }
 
@@ -101,7 +111,7 @@ impl FloatKey {
         }
         match (self.row().default)() {
             Value::Float(default) => default as f32,
-            other => unreachable!("`{}` defaults to {other:?}", self.0),
+            other => unreachable!("`{}` defaults to {other:?}", self.0.name),
         }
     }
 }
@@ -113,11 +123,14 @@ mod tests {
     #[test]
     fn every_handle_names_a_key_of_its_kind() {
         for key in [COLOR, RELATIVE_DEPTH, LOW_DETAIL] {
-            assert!(find(key.0).is_some(), "{key:?}");
+            assert!(keys::find(key.0.name).is_some(), "{key:?}");
         }
         for key in [CRAGGINESS, HEIGHT] {
             assert!(
-                matches!(find(key.0).map(|k| k.kind), Some(Kind::Int { .. })),
+                matches!(
+                    keys::find(key.0.name).map(|k| k.kind),
+                    Some(Kind::Int { .. })
+                ),
                 "{key:?}"
             );
         }
@@ -125,7 +138,7 @@ mod tests {
             ELEVATION, ROUGHNESS, CONTOUR, HURST, EROSION, SEA_LEVEL, CLIFFS,
         ];
         for key in floats {
-            let row = find(key.0);
+            let row = keys::find(key.0.name);
             assert!(
                 matches!(row.map(|k| k.kind), Some(Kind::Float { .. })),
                 "{key:?}"

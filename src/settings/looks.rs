@@ -6,10 +6,15 @@
 //! pseudo-normal numbers, the essay's numbers, turns and camera) are read from
 //! `Settings::look` by the renderer and the generator.
 //!
-//! Only data here: the key table (`keys.rs`) checks every value against
-//! its key's range, and a test there applies every preset.
+//! Only data here, each key named by its row's constant and each choice by
+//! its enum: the key table (`keys/`) checks every value against its key's
+//! range, and a test applies every preset.
 
-use super::Look;
+use super::keys::table::{
+    CLIFFS, COLOR, CONTOUR, DETAIL, ELEVATION, EROSION, GENERATOR, HEIGHT, LAKES, PROFILE,
+    RELATIVE_DEPTH, ROUGHNESS, SEA_LEVEL, SHADING, SHADOWS, SUN, VIEW, WATER_LINE,
+};
+use super::{ColorMode, Generator, Look, Profile, Shading, Sun, ViewKind, WaterLine};
 
 /// A key's value as a look gives it (the key table's `Value`, in a form
 /// a constant can hold).
@@ -33,22 +38,22 @@ use Preset::{Bool, Float, Int, Str};
 /// `z = 0`); `_DrawTriangle`'s light, one colour a face, no shadows;
 /// `CalcPoint3`'s parallelogram seen from the front.
 const FRACTAL_MOUNTAIN_CLIMBING: &[(&str, Preset)] = &[
-    ("generator", Str("triangle")),
-    ("detail", Int(5)),
-    ("contour", Float(1.5)),
-    ("roughness", Float(2.0)),
-    ("height", Int(5)),
-    ("profile", Str("slope")),
-    ("erosion", Float(0.0)),
-    ("cliffs", Float(0.0)),
-    ("lakes", Bool(false)),
-    ("water_line", Str("generator")),
-    ("sea_level", Float(0.0)),
-    ("relative_depth", Bool(false)),
-    ("shadows", Bool(false)),
-    ("sun", Str("classic")),
-    ("shading", Str("flat")),
-    ("view", Str("oblique")),
+    (GENERATOR.name, Str(Generator::Triangle.name())),
+    (DETAIL.name, Int(5)),
+    (CONTOUR.name, Float(1.5)),
+    (ROUGHNESS.name, Float(2.0)),
+    (HEIGHT.name, Int(5)),
+    (PROFILE.name, Str(Profile::Slope.name())),
+    (EROSION.name, Float(0.0)),
+    (CLIFFS.name, Float(0.0)),
+    (LAKES.name, Bool(false)),
+    (WATER_LINE.name, Str(WaterLine::Generator.name())),
+    (SEA_LEVEL.name, Float(0.0)),
+    (RELATIVE_DEPTH.name, Bool(false)),
+    (SHADOWS.name, Bool(false)),
+    (SUN.name, Str(Sun::Classic.name())),
+    (SHADING.name, Str(Shading::Flat.name())),
+    (VIEW.name, Str(ViewKind::Oblique.name())),
 ];
 
 /// Seed 003, *Mountain Terrain 3.0*'s help file: square subdivision of a
@@ -57,37 +62,37 @@ const FRACTAL_MOUNTAIN_CLIMBING: &[(&str, Preset)] = &[
 /// water level, a parallelogram drawn in stripes, one facing's darkness a
 /// triangle ANDed with the colour preference ("Gray is 0x00FFFFFF").
 const MOUNTAIN_TERRAIN: &[(&str, Preset)] = &[
-    ("generator", Str("square")),
-    ("detail", Int(6)),
-    ("elevation", Float(100.0)),
-    ("erosion", Float(0.0)),
-    ("cliffs", Float(0.0)),
-    ("lakes", Bool(false)),
-    ("water_line", Str("generator")),
-    ("sea_level", Float(0.0)),
-    ("color", Str("gray")),
-    ("shadows", Bool(false)),
-    ("sun", Str("classic")),
-    ("shading", Str("flat")),
-    ("view", Str("oblique")),
+    (GENERATOR.name, Str(Generator::Square.name())),
+    (DETAIL.name, Int(6)),
+    (ELEVATION.name, Float(100.0)),
+    (EROSION.name, Float(0.0)),
+    (CLIFFS.name, Float(0.0)),
+    (LAKES.name, Bool(false)),
+    (WATER_LINE.name, Str(WaterLine::Generator.name())),
+    (SEA_LEVEL.name, Float(0.0)),
+    (COLOR.name, Str(ColorMode::Gray.name())),
+    (SHADOWS.name, Bool(false)),
+    (SUN.name, Str(Sun::Classic.name())),
+    (SHADING.name, Str(Shading::Flat.name())),
+    (VIEW.name, Str(ViewKind::Oblique.name())),
 ];
 
 /// Seed 004, FL3: triangles fractured ply by ply (eight plys: "eight
 /// plys is hardly too fine a resolution"), Filled mode, sea level where
 /// the generator's zero is, single-point perspective, no sun.
 const FL3: &[(&str, Preset)] = &[
-    ("generator", Str("triangle")),
-    ("detail", Int(8)),
-    ("erosion", Float(0.0)),
-    ("cliffs", Float(0.0)),
-    ("lakes", Bool(false)),
-    ("water_line", Str("generator")),
-    ("sea_level", Float(0.0)),
-    ("color", Str("filled")),
-    ("relative_depth", Bool(false)),
-    ("shadows", Bool(false)),
-    ("shading", Str("flat")),
-    ("view", Str("perspective")),
+    (GENERATOR.name, Str(Generator::Triangle.name())),
+    (DETAIL.name, Int(8)),
+    (EROSION.name, Float(0.0)),
+    (CLIFFS.name, Float(0.0)),
+    (LAKES.name, Bool(false)),
+    (WATER_LINE.name, Str(WaterLine::Generator.name())),
+    (SEA_LEVEL.name, Float(0.0)),
+    (COLOR.name, Str(ColorMode::Filled.name())),
+    (RELATIVE_DEPTH.name, Bool(false)),
+    (SHADOWS.name, Bool(false)),
+    (SHADING.name, Str(Shading::Flat.name())),
+    (VIEW.name, Str(ViewKind::Perspective.name())),
 ];
 
 /// Seed 002, the essay's final program: each square's centre and four edge
@@ -102,17 +107,17 @@ const FL3: &[(&str, Preset)] = &[
 /// side at every level (`center_roughness`), about twice our relief at the
 /// default height: height 10.
 const ESSAY: &[(&str, Preset)] = &[
-    ("generator", Str("square")),
-    ("detail", Int(8)),
-    ("height", Int(10)),
-    ("water_line", Str("generator")),
-    ("sea_level", Float(-1.0)),
-    ("erosion", Float(0.0)),
-    ("cliffs", Float(0.0)),
-    ("lakes", Bool(false)),
-    ("shadows", Bool(false)),
-    ("shading", Str("flat")),
-    ("view", Str("perspective")),
+    (GENERATOR.name, Str(Generator::Square.name())),
+    (DETAIL.name, Int(8)),
+    (HEIGHT.name, Int(10)),
+    (WATER_LINE.name, Str(WaterLine::Generator.name())),
+    (SEA_LEVEL.name, Float(-1.0)),
+    (EROSION.name, Float(0.0)),
+    (CLIFFS.name, Float(0.0)),
+    (LAKES.name, Bool(false)),
+    (SHADOWS.name, Bool(false)),
+    (SHADING.name, Str(Shading::Flat.name())),
+    (VIEW.name, Str(ViewKind::Perspective.name())),
 ];
 
 /// The keys `look` sets and their values (none for ours).

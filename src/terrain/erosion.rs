@@ -6,7 +6,7 @@
 //! The droplets run on a coarse copy of the field (at most [`COARSE_CELLS`]
 //! cells a side) and the change they make is added to the fine field,
 //! bilinearly: the gullies they carve are several cells wide anyway, and a
-//! 1025 grid would take twenty times as long. One droplet after another, from
+//! fine grid would take many times as long. One droplet after another, from
 //! a generator seeded by the mountain's seed: the result does not depend on
 //! the thread count.
 

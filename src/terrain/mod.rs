@@ -82,9 +82,9 @@ pub fn generate_with_threads(settings: &Settings, seed: u64, threads: usize) -> 
 
 /// [`generate`] into an existing field, reusing its memory when its size
 /// fits (else it is replaced): a slide show that recycles the previous
-/// mountain's field skips the cost of fresh pages (at 4097x4097 the kernel
-/// spends about as long providing 64 MiB of zeroed pages as the generator
-/// spends filling them). Every point is overwritten; the result is the
+/// mountain's field skips the cost of fresh pages (for a large field the
+/// kernel's zeroed pages cost about as much as the generator's filling
+/// them). Every point is overwritten; the result is the
 /// same bits as `generate`.
 pub fn generate_into(settings: &Settings, seed: u64, field: &mut Heightfield) {
     let params = Params::from_settings(settings);

@@ -83,13 +83,13 @@ impl Params {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::settings::keys::{Kind, find};
+    use crate::settings::keys::{self, Key, Kind};
 
-    fn range(name: &str) -> (f32, f32) {
-        match find(name).unwrap().kind {
+    fn range(key: &Key) -> (f32, f32) {
+        match key.kind {
             Kind::Float { min, max } => (min as f32, max as f32),
             Kind::Int { min, max } => (min as f32, max as f32),
-            other => panic!("{name}: {other:?}"),
+            other => panic!("{}: {other:?}", key.name),
         }
     }
 
@@ -117,17 +117,17 @@ mod tests {
             p.cragginess,
             p.height,
         ];
-        let names = [
-            "elevation",
-            "roughness",
-            "contour",
-            "erosion",
-            "sea_level",
-            "cragginess",
-            "height",
+        let rows = [
+            keys::ELEVATION,
+            keys::ROUGHNESS,
+            keys::CONTOUR,
+            keys::EROSION,
+            keys::SEA_LEVEL,
+            keys::CRAGGINESS,
+            keys::HEIGHT,
         ];
-        for (name, got) in names.iter().zip(got) {
-            assert_eq!(got, range(name).0, "{name}");
+        for (key, got) in rows.iter().zip(got) {
+            assert_eq!(got, range(key).0, "{}", key.name);
         }
         let high = Settings {
             elevation: 1e9,
@@ -137,7 +137,7 @@ mod tests {
             ..Settings::default()
         };
         let p = Params::from_settings(&high);
-        assert_eq!(p.elevation, range("elevation").1);
+        assert_eq!(p.elevation, range(&keys::ELEVATION).1);
         // A NaN takes the key's default.
         let nan = Settings {
             roughness: f32::NAN,
@@ -147,8 +147,8 @@ mod tests {
             Params::from_settings(&nan).roughness,
             Settings::default().roughness
         );
-        assert_eq!(p.roughness, range("roughness").1);
-        assert_eq!(p.cragginess, range("cragginess").1);
-        assert_eq!(p.height, range("height").1);
+        assert_eq!(p.roughness, range(&keys::ROUGHNESS).1);
+        assert_eq!(p.cragginess, range(&keys::CRAGGINESS).1);
+        assert_eq!(p.height, range(&keys::HEIGHT).1);
     }
 }

@@ -1,7 +1,8 @@
 //! The layout keeps its promises: no two source files import each other,
-//! directly or round a circle (docs/architecture.md). A circle ties files
-//! that should be one, or hides a piece both need; this finds one as soon
-//! as it is written.
+//! directly or round a circle, and no room of `render` imports a room
+//! above it (docs/architecture.md). A circle ties files that should be
+//! one, or hides a piece both need; an arrow back up ties a stage to one
+//! that comes later. This finds either as soon as it is written.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
@@ -168,8 +169,19 @@ fn longest(full: &[String], modules: &BTreeMap<Vec<String>, PathBuf>) -> Option<
         .find_map(|n| modules.get(&full[..n]).cloned())
 }
 
-#[test]
-fn no_source_file_imports_round_a_circle() {
+/// The crate's source files and what each imports.
+struct Imports {
+    /// The `src` folder.
+    src: PathBuf,
+    /// For each file, the files it imports (its own tests aside).
+    edges: BTreeMap<PathBuf, BTreeSet<PathBuf>>,
+    /// Every source file but main.rs, by its module path.
+    modules: BTreeMap<Vec<String>, PathBuf>,
+}
+
+/// Every source file of the crate (but main.rs) by its module path, and
+/// for each file the files it imports.
+fn imports() -> Imports {
     let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut files = Vec::new();
     sources(&src, &mut files);
@@ -189,6 +201,16 @@ fn no_source_file_imports_round_a_circle() {
             }
         }
     }
+    Imports {
+        src,
+        edges,
+        modules,
+    }
+}
+
+#[test]
+fn no_source_file_imports_round_a_circle() {
+    let Imports { src, edges, .. } = imports();
     // Depth-first search for a way back to where it started.
     let name = |p: &PathBuf| p.strip_prefix(&src).unwrap().display().to_string();
     for start in edges.keys() {
@@ -212,5 +234,67 @@ fn no_source_file_imports_round_a_circle() {
         edges.len() > 50,
         "only {} files import anything: the scan is broken",
         edges.len()
+    );
+}
+
+/// The rooms of `render`, from the ground floor up (docs/architecture.md):
+/// a file may import its own room and the rooms below it. The files at the
+/// top of `render` (`mod.rs`, the painter, ...) stand above them all.
+const RENDER_FLOORS: &[&str] = &[
+    "base", "framing", "shade", "scene", "scan", "order", "edges",
+];
+
+/// The floor of `render` a module stands on, or `None` outside `render`.
+fn floor(module: &[String]) -> Option<usize> {
+    match module {
+        [first, rest @ ..] if first == "render" => Some(
+            rest.first()
+                .and_then(|room| RENDER_FLOORS.iter().position(|r| r == room))
+                .unwrap_or(RENDER_FLOORS.len()),
+        ),
+        _ => None,
+    }
+}
+
+#[test]
+fn no_room_of_render_imports_a_room_above_it() {
+    let Imports {
+        src,
+        edges,
+        modules,
+    } = imports();
+    let module_of_file: BTreeMap<&PathBuf, &Vec<String>> =
+        modules.iter().map(|(m, f)| (f, m)).collect();
+    let name = |p: &PathBuf| p.strip_prefix(&src).unwrap().display().to_string();
+    let mut checked = 0;
+    let mut up = Vec::new();
+    for (from, tos) in &edges {
+        let Some(low) = floor(module_of_file[from]) else {
+            continue;
+        };
+        for to in tos {
+            let Some(high) = floor(module_of_file[to]) else {
+                continue;
+            };
+            checked += 1;
+            if high > low {
+                up.push(format!("{} -> {}", name(from), name(to)));
+            }
+        }
+    }
+    assert!(
+        up.is_empty(),
+        "imports from a room of render up to a room above it:\n{}",
+        up.join("\n")
+    );
+    // Every room is there and imports or is imported: a renamed room
+    // would otherwise leave its files on the top floor, unchecked.
+    for room in RENDER_FLOORS {
+        let key: Vec<String> = ["render", room].iter().map(|s| s.to_string()).collect();
+        assert!(modules.contains_key(&key), "no room render/{room}");
+    }
+    assert!(
+        checked > 60,
+        "only {checked} imports inside render: the scan is broken"
     );
 }

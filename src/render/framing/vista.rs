@@ -76,12 +76,12 @@ impl Shot {
 ///
 /// `None` for land so tall (over [`VISTA_TALLEST`]) that even then it
 /// rises out of the top of the frame: a camera this low in front of it
-/// sees only the near slope (issue 22: a data set's relief can be many
-/// times its width), so the caller frames it another way. `None` too when
+/// sees only the near slope (a data set's relief can be many times its
+/// width), so the caller frames it another way. `None` too when
 /// the near edge's lowest point (`near_floor`) stands above the camera: it
 /// would look up at the edge's face and see only that wall, one colour
 /// (a raised plateau, land lifted over a sea far below, a wall along the
-/// near edge: issue 22 item 8).
+/// near edge).
 pub(crate) fn fitted(
     extent: f32,
     width: f32,

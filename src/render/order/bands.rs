@@ -8,22 +8,17 @@
 //! walks and projects only those (`StripReach::cells_reaching`).
 
 use std::sync::Mutex;
-use std::sync::atomic::{AtomicBool, Ordering};
 
 use super::walk::{Rows, draw_strips};
-use crate::render::frame::Frame;
-use crate::render::scan::canvas::Canvas;
-use crate::render::scan::clean::clean_edges;
-use crate::render::scan::horizon::Horizon;
+use crate::render::base::canvas::Canvas;
+use crate::render::base::frame::Frame;
 use crate::render::scene::Scene;
 
 /// Most threads used; more bands would mostly repeat per-strip work.
 const MAX_THREADS: usize = 8;
-/// Bands narrower than this are not worth a thread: each walks every strip
-/// and finds the cells reaching it. The last bands of a frame take 1-2 ms
-/// even this narrow (1080p, seed 42), and the other thread waits for the
-/// last: 16 columns rather than 32 made the frame 0.7% faster at 1080p
-/// and 1.6% at 4K.
+/// The narrowest band. Each band walks every strip and finds the cells
+/// reaching it, so a narrower one is not worth a thread; yet the other
+/// threads wait for the last band, so a wider floor keeps them waiting.
 const MIN_BAND_COLUMNS: u32 = 16;
 
 /// One band: its first column and its part of every frame row.
@@ -36,17 +31,13 @@ struct Band<'f> {
 /// right in bands that shrink as they run out.
 ///
 /// The work is not even across the frame (a seed's land may crowd one
-/// side) and two cores are not always equally fast, so with four equal
-/// bands one thread sat idle at the end: a median 4.9-8.5 ms of a 1080p
-/// frame and 18-19 ms of a 4K one (seed 42, two cores). Each thread takes a
-/// share of what is left (guided scheduling), so the last bands are
-/// narrow and the threads finish close together. A band is not free: it
-/// walks every strip again and draws the cells on its edges twice, about
-/// 0.3-0.4 ms of work at 1080p whatever its width (a frame cut into 64
-/// bands took 96 ms of work, into 2 bands 76 ms). Taking a `threads`-th
-/// of what is left, not half that, halves the bands (17 to 9 at 1080p)
-/// and made the frame 1-4% faster over seeds 1-11 and 42 (none slower),
-/// 2-4% at 4K (seed 42).
+/// side) and two cores are not always equally fast, so with equal bands
+/// one thread sat idle at the end. Each thread takes a share of what is
+/// left (guided scheduling), so the last bands are narrow and the threads
+/// finish close together. A band is not free: it walks every strip again
+/// and draws the cells on its edges twice, whatever its width. So each
+/// takes a `threads`-th of what is left, not half that: about half as many
+/// bands, for threads that still finish together.
 struct Columns<'f> {
     x0: u32,
     width: u32,
@@ -95,18 +86,16 @@ impl<'f> Columns<'f> {
     }
 }
 
-/// Draws the sky and every strip of `scene` into `frame`, on all cores.
-pub(crate) fn render(scene: &Scene, frame: &mut Frame) {
-    if let Some(horizon) = draw_bands(scene, frame, scene.clean_edges) {
-        clean_edges(scene, &horizon, frame);
-    }
-}
-
-/// [`render`]'s drawing, the edges left as drawn; and if `sweep`, the
-/// horizon, swept by the first thread to start while the others take the
-/// bands. (On a thread of its own beside a thread per core, the sweep had
-/// three threads share two cores.)
-fn draw_bands(scene: &Scene, frame: &mut Frame, sweep: bool) -> Option<Horizon> {
+/// Draws the sky and every strip of `scene` into `frame`, on all cores,
+/// the edges left as drawn; and runs `beside` (if given) on the first
+/// thread to start while the others take the bands, returning what it
+/// returned. (On a thread of its own beside a thread per core, a job
+/// beside the bands had three threads share two cores.)
+pub(crate) fn draw_bands<T: Send>(
+    scene: &Scene,
+    frame: &mut Frame,
+    beside: Option<impl FnOnce() -> T + Send>,
+) -> Option<T> {
     let width = frame.width();
     let threads = crate::cores::cores()
         .min(MAX_THREADS)
@@ -119,17 +108,18 @@ fn draw_bands(scene: &Scene, frame: &mut Frame, sweep: bool) -> Option<Horizon> 
             &mut Rows::new(),
             width,
         );
-        return sweep.then(|| Horizon::sweep(scene, width));
+        return beside.map(|job| job());
     }
     let queue = Mutex::new(Columns::new(frame, threads));
-    let to_sweep = AtomicBool::new(sweep);
-    let swept = Mutex::new(None);
+    let beside = Mutex::new(beside);
+    let done = Mutex::new(None);
     let work = || {
-        if to_sweep.swap(false, Ordering::Relaxed) {
-            let horizon = Horizon::sweep(scene, width);
-            if let Ok(mut swept) = swept.lock() {
-                *swept = Some(horizon);
-            }
+        // The first thread to start takes the job; the others find none.
+        let job = beside.lock().map_or(None, |mut b| b.take());
+        if let Some(result) = job.map(|job| job())
+            && let Ok(mut done) = done.lock()
+        {
+            *done = Some(result);
         }
         let mut rows = Rows::new();
         loop {
@@ -147,7 +137,7 @@ fn draw_bands(scene: &Scene, frame: &mut Frame, sweep: bool) -> Option<Horizon> 
         }
         work();
     });
-    swept.into_inner().ok().flatten()
+    done.into_inner().ok().flatten()
 }
 
 /// `canvas` made ready for `scene`: filled faces are drawn front to back

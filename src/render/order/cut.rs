@@ -4,8 +4,8 @@
 //! stepping from cell to cell.
 
 use super::strip::{Corner, Face};
-use crate::render::scan::canvas::Canvas;
-use crate::render::scan::raster::to_fixed;
+use crate::render::base::canvas::Canvas;
+use crate::render::base::fixed::to_fixed;
 use crate::render::scene::{Outline, Scene};
 
 /// Most corners a triangle cut by a square's four sides can have.

@@ -6,8 +6,8 @@
 
 use glam::{Vec2, Vec3};
 
+use crate::render::base::colour::blend_packed;
 use crate::render::scene::Scene;
-use crate::render::shade::colour::blend_packed;
 use crate::render::shade::index;
 use crate::render::shade::mirror::{Mirror, Seen};
 

@@ -4,7 +4,7 @@
 
 pub(super) mod bands;
 pub(super) mod cut;
-pub(super) mod edges;
+pub(super) mod lines;
 pub(super) mod mirrored;
 pub(super) mod reach;
 pub(super) mod strip;

@@ -7,8 +7,8 @@
 
 use std::ops::Range;
 
-use crate::render::scan::canvas::Canvas;
-use crate::render::scan::raster::Clip;
+use crate::render::base::canvas::Canvas;
+use crate::render::base::fixed::Clip;
 use crate::render::scene::Scene;
 
 /// Pixels added on each side of a band: fixed-point rounding and the lines
@@ -70,9 +70,9 @@ impl StripReach<'_, '_> {
     /// `clip.x0..clip.x1`.
     ///
     /// They are one run, found by bisection, starting from `near` (the run
-    /// of the strip before, which is seldom far off: each band walks every
-    /// strip, and bisecting the whole row each time cost 0.8% of the
-    /// bands' instructions at 1080p).
+    /// of the strip before, which is seldom far off): each band walks every
+    /// strip, so bisecting the whole row each time would repeat that work
+    /// for every strip of every band.
     pub(crate) fn cells_reaching(&self, clip: &Clip, near: &Range<usize>) -> Range<usize> {
         let cells = self.scene.cells();
         let (left, right) = (clip.x0 as f32 - MARGIN_PX, clip.x1 as f32 + MARGIN_PX);

@@ -3,13 +3,14 @@
 
 use glam::{Vec2, Vec3};
 
+use crate::render::base::canvas::Canvas;
+use crate::render::base::colour::blend_packed;
+use crate::render::base::colour::mix_packed;
+use crate::render::base::fixed::Fixed2;
 use crate::render::scan::blend::Blend;
-use crate::render::scan::canvas::Canvas;
-use crate::render::scan::raster::{Fixed2, Triangle, centre_box};
+use crate::render::scan::raster::{Triangle, centre_box};
 use crate::render::scan::shore::{ShoreLine, ShorePoint};
 use crate::render::scene::{Scene, Style, Vert};
-use crate::render::shade::colour::blend_packed;
-use crate::render::shade::colour::mix_packed;
 use crate::render::shade::dither;
 
 /// White and black, the only two colours of Mono.
@@ -396,7 +397,7 @@ impl Scene<'_> {
     /// faces the colour of the cell's middle, worked out once a pixel is
     /// covered: its depth, streak, glitter and what it mirrors, the last
     /// sampled about as coarsely anyway (`Mirror`). A look a cell, not a
-    /// face, takes 4-7% off a default frame. Plain water (the classic
+    /// face, works that out half as often. Plain water (the classic
     /// looks, `reflections = false`) keeps a colour a face. `faces` are
     /// the cell's, the farther first.
     fn fill_water_cell<'c>(

@@ -5,7 +5,7 @@
 use std::ops::Range;
 
 use super::strip::painter_order;
-use crate::render::scan::canvas::Canvas;
+use crate::render::base::canvas::Canvas;
 use crate::render::scene::{Scene, Style, Vert};
 
 /// Two projected grid rows, reused from strip to strip; only the points a

@@ -4,8 +4,8 @@
 
 use glam::Vec4;
 
-use super::raster::{Fixed2, SUBPIXEL};
-use crate::render::shade::colour::{lanes, packed_lanes};
+use crate::render::base::colour::{lanes, packed_lanes};
+use crate::render::base::fixed::{Fixed2, SUBPIXEL};
 
 /// The colour planes of one triangle, each channel (blue, green, red,
 /// 0..=255: a packed colour's bytes in memory order) a lane of a vector: a
@@ -77,7 +77,7 @@ impl Blend {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::render::raster::to_fixed;
+    use crate::render::base::fixed::to_fixed;
 
     #[test]
     fn corners_get_their_own_colours_and_the_middle_the_mean() {

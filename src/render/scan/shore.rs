@@ -7,8 +7,8 @@
 //! half a pixel away to half on the line (the share of a pixel a straight
 //! edge cuts off, to first order).
 
-use super::raster::SUBPIXEL;
-use crate::render::shade::colour::mix_packed;
+use crate::render::base::colour::mix_packed;
+use crate::render::base::fixed::SUBPIXEL;
 
 /// The shore line through one face, on screen.
 pub(crate) struct ShoreLine {
@@ -85,7 +85,7 @@ mod tests {
     }
 
     fn at(x: f32, y: f32, c: u32) -> P {
-        P(crate::render::raster::to_fixed(x, y), c)
+        P(crate::render::base::fixed::to_fixed(x, y), c)
     }
 
     #[test]

@@ -10,7 +10,7 @@
 
 use glam::Vec3;
 
-use super::colour::Rgb;
+use crate::render::base::colour::Rgb;
 use crate::settings::Sun;
 use crate::terrain::Heightfield;
 

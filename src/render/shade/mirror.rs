@@ -28,8 +28,8 @@ use std::sync::atomic::{AtomicU32, Ordering};
 
 use glam::{Vec2, Vec3};
 
-use super::colour::{Rgb, blend_packed, to_u32};
 use super::index;
+use crate::render::base::colour::{Rgb, blend_packed, to_u32};
 use crate::render::framing::tops::finite;
 use crate::terrain::Heightfield;
 
@@ -46,11 +46,10 @@ const FAN_STEP: f32 = 3.0 / 1024.0;
 /// The space between two samples of a profile, as a share of the grid's
 /// width (whole grid rows, at least one): the reflections' finest detail
 /// along the view (the sky and far land are mirrored across many rows of
-/// near water). 3 rows of the 1080p grid, against 2: the water 45.1 dB
-/// against the scene drawn finer (44.7), 3-4% less of a default frame, but
-/// a softer image along the view (the mirror's part of the reflection
-/// figure, examples/reflection_shore, 0.321 against 0.355; issue 19
-/// wants 0.3).
+/// near water). 3 rows of the 1080p grid rather than 2: the water as close
+/// to the scene drawn finer, for less work, but a softer image along the
+/// view (the mirror's part of the reflection figure that
+/// examples/reflection_shore measures).
 const STRIDE: f32 = 3.0 / 1024.0;
 /// Water's reflectance looking straight down (Schlick's `F0`).
 const F0: f32 = 0.02;

@@ -1,10 +1,9 @@
 //! Light and colour: the sun and the sky's light, shadows, sky light, smooth
 //! normals, the palette, haze, ripples on the water and what it mirrors, the
-//! sky's gradient, its clouds and the sun's glow, and
-//! Mono's dither, and the colour arithmetic they share.
+//! sky's gradient, its clouds and the sun's glow, and Mono's dither (their
+//! colour arithmetic is the ground floor's: `base/colour.rs`).
 
 pub(super) mod clouds;
-pub mod colour;
 pub mod dither;
 pub mod essay;
 pub mod facings;

@@ -19,13 +19,15 @@
 //! lowland turns black under the red filter; the tint keeps every face's
 //! brightness, stays in the filter's hue family, and snow turns a pale tint.
 
-use super::colour::{Rgb, mix, mix_packed, pack, scale_packed, scale_packed3, to_u32, unpack};
 use super::dither;
 use super::essay;
 use super::facings;
 use super::index;
 use super::light::Lighting;
 use super::listing;
+use crate::render::base::colour::{
+    Rgb, mix, mix_packed, pack, scale_packed, scale_packed3, to_u32, unpack,
+};
 use crate::settings::{ColorMode, Look, Settings, Sun};
 use crate::terrain::Heightfield;
 use glam::Vec3;

@@ -7,7 +7,7 @@
 //! units and their pattern is drawn from the mountain's identity, so a seed
 //! has the same sea at every frame size, detail and `low_detail`.
 
-use super::colour::blend_packed;
+use crate::render::base::colour::blend_packed;
 use crate::terrain::Heightfield;
 use crate::terrain::heightfield::MAX_EXPONENT;
 use crate::terrain::noise::Noise;
@@ -114,7 +114,8 @@ impl Ripples {
 
     /// Smooth value noise in -1..1 on the lattice, for `u`, `v` >= 0 (grid
     /// positions are): truncation is the floor there, without a libm call
-    /// (and `as i32`, not `as usize`, which costs three times as much).
+    /// (and `as i32`, not `as usize`, whose conversion is a branchy
+    /// sequence on x86).
     #[inline]
     fn noise(&self, u: f32, v: f32) -> f32 {
         let (a, b) = (u as i32, v as i32);

@@ -30,10 +30,10 @@ const NONE: f32 = -1.0e30;
 
 /// Finest grid the sweep runs on, in points a side: a finer field (a 4K
 /// frame's 2049) is swept on every second point and its light read back
-/// bilinearly. The sweep's lines wait on memory, so a 2049 field took 16 ms
-/// of a 4K frame's ~150 with one core idle; its shadows at 4 to 8 pixels a
-/// swept cell look no different (seeds 42 and 8 compared at 1:1), the
-/// faces keep their own slopes.
+/// bilinearly. The sweep's lines wait on memory and run while the other
+/// cores wait, so a finer sweep is a large share of a 4K frame's start;
+/// its shadows at 4 to 8 pixels a swept cell look no different (compared
+/// at 1:1), the faces keep their own slopes.
 const MAX_SWEPT: usize = 1025;
 
 /// Per grid point, how much direct light arrives (1 lit, 0 shadowed).
@@ -215,9 +215,9 @@ fn sweep(
 
 /// Rows ahead whose part of a block is fetched early: every row lies a page
 /// or more from the next, where the processor's own prefetching stops, so a
-/// block's gather and scatter otherwise wait on a miss per row. 8 rows took
-/// the 1025 sweep from 5.9-6.9 to 3.0-3.6 ms and the 2049 one from 8.4-9.6
-/// to 4.9-5.4 ms on a slow evening (4 to 24 measured: 4-8 alike).
+/// block's gather and scatter otherwise wait on a miss per row. From 4 to
+/// 8 rows ahead did alike (of 4 to 24 tried); far fewer leave the misses,
+/// far more fetch lines evicted before their use.
 const AHEAD: usize = 8;
 
 /// Asks for the cache lines holding the first and last item of `items`
@@ -240,9 +240,8 @@ fn prefetch<T>(items: Option<&[T]>) {
 
 /// Columns swept per block in a column sweep: two cache lines of heights
 /// per row, which the processor fetches as a pair. Each row is a page or
-/// more from the next, so a block pays a miss per row: 32 columns took the
-/// 4K sweep from 24 to 16 ms against 16 (64 was slower again: its write
-/// streams collide).
+/// more from the next, so a block pays a miss per row, and a wider block
+/// shares it among more columns; at 64 its write streams collide.
 const COLUMN_BLOCK: usize = 32;
 
 /// The state of a sweep: the horizons over the last line swept.

@@ -7,9 +7,9 @@ use std::sync::Arc;
 
 use glam::Vec4;
 
-use super::colour::{Rgb, packed_lanes, rgb_lanes, unpack};
 use super::weather::{Weather, WeatherRow};
-use crate::render::scan::canvas::Canvas;
+use crate::render::base::canvas::Canvas;
+use crate::render::base::colour::{Rgb, packed_lanes, rgb_lanes, unpack};
 
 /// 4x4 Bayer thresholds, 0..16.
 const BAYER: [[u8; 4]; 4] = [[0, 8, 2, 10], [12, 4, 14, 6], [3, 11, 1, 9], [15, 7, 13, 5]];
@@ -187,7 +187,7 @@ impl Sky {
             Some(w) => w.over(c, x, y),
             None => c,
         };
-        super::colour::to_u32(c)
+        crate::render::base::colour::to_u32(c)
     }
 
     /// The gradient's colour (0..=1) at screen height `y`.

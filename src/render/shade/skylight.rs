@@ -4,9 +4,9 @@
 //! Ambient light that reaches every face alike flattens a landscape; with
 //! the sky's share per point, valley floors and gullies darken and ridges
 //! stand out even in the shade. The sweeps run on a coarse copy of the
-//! field (at most [`COARSE_CELLS`] cells a side, ~2 ms) and are sampled
+//! field (at most [`COARSE_CELLS`] cells a side) and are sampled
 //! bilinearly at each grid point: occlusion varies slowly, so a finer grid
-//! shows nothing more for many times the cost (LOOKS.md: 100 ms at 1025).
+//! shows nothing more for many times the cost.
 
 use glam::Vec3;
 

@@ -419,19 +419,19 @@ fn read_params<'a>(
 
 /// The generator parameters stored with a seed, and the settings key each sets.
 const PARAM_KEYS: &[(&str, &str)] = &[
-    (KEY_GENERATOR, "generator"),
-    (KEY_CRAGGINESS, "cragginess"),
-    (KEY_ELEVATION, "elevation"),
-    (KEY_ROUGHNESS, "roughness"),
-    (KEY_CONTOUR, "contour"),
-    (KEY_PROFILE, "profile"),
-    (KEY_HEIGHT, "height"),
-    (KEY_DETAIL, "detail"),
-    (KEY_LOW_DETAIL, "low_detail"),
-    (KEY_SEA_FRACTION, "sea_level"),
-    (KEY_EROSION, "erosion"),
-    (KEY_HURST, "hurst"),
-    (KEY_CLIFFS, "cliffs"),
+    (KEY_GENERATOR, keys::GENERATOR.name),
+    (KEY_CRAGGINESS, keys::CRAGGINESS.name),
+    (KEY_ELEVATION, keys::ELEVATION.name),
+    (KEY_ROUGHNESS, keys::ROUGHNESS.name),
+    (KEY_CONTOUR, keys::CONTOUR.name),
+    (KEY_PROFILE, keys::PROFILE.name),
+    (KEY_HEIGHT, keys::HEIGHT.name),
+    (KEY_DETAIL, keys::DETAIL.name),
+    (KEY_LOW_DETAIL, keys::LOW_DETAIL.name),
+    (KEY_SEA_FRACTION, keys::SEA_LEVEL.name),
+    (KEY_EROSION, keys::EROSION.name),
+    (KEY_HURST, keys::HURST.name),
+    (KEY_CLIFFS, keys::CLIFFS.name),
     (KEY_LOOK, LOOK),
 ];
 
@@ -439,7 +439,7 @@ const PARAM_KEYS: &[(&str, &str)] = &[
 /// choosing a look through the key table also moves the keys that follow
 /// it (a key at its default takes the look's value), and a recorded key
 /// must come back exactly as it was written.
-const LOOK: &str = "look";
+const LOOK: &str = keys::LOOK.name;
 
 #[cfg(test)]
 mod tests {

@@ -10,10 +10,9 @@
 
 use glam::Vec2;
 
-use crate::render::scan::canvas::Canvas;
-use crate::render::scan::raster::{
-    Clip, Fixed2, SUBPIXEL, centre_box, draw_line, draw_line_end, fill_triangle,
-};
+use crate::render::base::canvas::Canvas;
+use crate::render::base::fixed::{Clip, Fixed2, SUBPIXEL};
+use crate::render::scan::raster::{centre_box, draw_line, draw_line_end, fill_triangle};
 use crate::render::scene::{Scene, Vert};
 use crate::settings::ColorMode;
 

@@ -18,14 +18,14 @@
 //! the whole width: the columns' tops are found, and their pixels mixed,
 //! column by column, so parts of the frame's width can do both at once.
 
-use crate::render::frame::Frame;
-use crate::render::shade::colour::blend_packed;
+use crate::render::base::colour::blend_packed;
+use crate::render::base::frame::Frame;
 use crate::render::shade::sky::{Sky, SkySeen};
 
-use super::canvas::Canvas;
 use super::horizon::{Edge, SAMPLES};
+use crate::render::base::canvas::Canvas;
 #[cfg(test)]
-use crate::render::damage::Damage;
+use crate::render::base::damage::Damage;
 
 /// A run of columns whose land starts at the same row.
 #[derive(Clone, Copy)]

@@ -8,10 +8,10 @@
 //! floating horizon's crests); the two colours are the frame's own, read
 //! just above and just below the edge, so light and haze stay as drawn.
 
-use super::canvas::Canvas;
 use super::horizon::{Crest, Edge, Horizon};
+use crate::render::base::canvas::Canvas;
+use crate::render::base::colour::blend_packed;
 use crate::render::scene::Scene;
-use crate::render::shade::colour::blend_packed;
 
 /// Most rows one crest mixes in a column: the rest of a sliver's height
 /// stays as drawn.
@@ -113,7 +113,7 @@ fn alike(a: u32, b: u32) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::render::frame::Frame;
+    use crate::render::base::frame::Frame;
 
     const FAR: u32 = 0x0080_8080;
     const NEAR: u32 = 0x0000_4000;

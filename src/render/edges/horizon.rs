@@ -139,7 +139,7 @@ fn edge_of(scene: &Scene, rows: &[(u32, u32)], reach: u32, top: Top, x: u32) -> 
 }
 
 /// A sweep of the horizon under way, so that the painter can spread it
-/// over its steps (at 4K it costs about as much as a tenth of the strips).
+/// over its steps (at a large frame, one step carrying it all would stall).
 pub(crate) struct HorizonSweep {
     sweep: Sweep,
     /// Kept rows swept so far, from the front.

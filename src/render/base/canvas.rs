@@ -11,9 +11,9 @@
 //! Both end with the same pixels; the second lets the full frame skip the
 //! faces hidden behind what is already drawn.
 
-use super::raster::Clip;
-use crate::render::damage::Damage;
-use crate::render::frame::Rect;
+use super::damage::Damage;
+use super::fixed::Clip;
+use super::frame::Rect;
 
 /// Columns `x0..x0 + width` of rows `y0..` of a frame, a slice per row.
 pub(crate) struct Canvas<'a> {
@@ -100,8 +100,8 @@ impl<'a> Canvas<'a> {
 
     /// Sets row `y`, columns `x0..x1` (frame coordinates, already clipped)
     /// to `colour(x)`, or on a first-write canvas its unwritten pixels.
-    // Always inlined: a call per span of one to three pixels cost 1% of a
-    // frame.
+    // Always inlined: most spans are one to three pixels, so a call per
+    // span would cost more than its writes.
     #[inline(always)]
     pub(crate) fn fill_with(&mut self, y: u32, x0: u32, x1: u32, colour: impl Fn(u32) -> u32) {
         let Some(solid) = &mut self.solid else {
@@ -178,7 +178,7 @@ impl<'a> Canvas<'a> {
 
     /// What has been drawn so far, in frame coordinates. A canvas that
     /// keeps the first write is drawn whole in one go, sky included, and
-    /// answers its whole rectangle (tracking each write cost 1%).
+    /// answers its whole rectangle (no need to track each write).
     pub(crate) fn damage(&self) -> Damage {
         if self.solid.is_some() {
             let c = self.clip;

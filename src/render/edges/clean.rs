@@ -4,14 +4,15 @@
 //! pixels, never the order they were drawn in, so the full frame's bands
 //! and the painter's last step end with the same pixels.
 
-use super::canvas::Canvas;
 use super::crests;
 use super::horizon::{Edge, Horizon};
 use super::skyline::{self, Skyline};
-use crate::render::damage::Damage;
-use crate::render::frame::Frame;
-use crate::render::scene::{Scene, both};
+use crate::render::base::canvas::Canvas;
+use crate::render::base::damage::Damage;
+use crate::render::base::frame::Frame;
+use crate::render::scene::Scene;
 use crate::render::shade::sky::SkySeen;
+use crate::threads::both;
 
 /// Columns counted together when the crests are shared out.
 const BLOCK: u32 = 16;
@@ -25,8 +26,8 @@ const BLOCK: u32 = 16;
 /// work, each a part of the columns holding half of the crests: each finds
 /// its part's skyline, and once the skyline's runs are known across the
 /// width, mixes its part. The crests' pixels are far apart in memory and
-/// their mixing waits on it; the crests crowd where the land does (at 4K,
-/// halves of the width left one thread 2.4 ms behind the other).
+/// their mixing waits on it; the crests crowd where the land does, so
+/// halves of the width would leave one thread well behind the other.
 pub(crate) fn clean_edges(scene: &Scene, horizon: &Horizon, frame: &mut Frame) -> Damage {
     let (width, height) = (frame.width(), frame.height());
     let at = crests_middle(horizon, width);
