@@ -746,7 +746,8 @@ mod tests {
     fn an_opened_data_set_is_drawn_under_its_recorded_look() {
         let t0 = Instant::now();
         let mut made = small_settings();
-        crate::settings::load::apply_set(&mut made, "look", "essay").unwrap();
+        crate::settings::load::apply_set(&mut made, crate::settings::keys::LOOK.name, "essay")
+            .unwrap();
         let field = Arc::new(crate::terrain::generate(&made, 5));
         let opened = Mountain {
             field: field.clone(),

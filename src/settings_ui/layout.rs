@@ -9,7 +9,7 @@ use super::help;
 use super::list_view::{BarPart, Line, ListView};
 use super::values::{self, Widget};
 use crate::render::Rect;
-use crate::settings::keys::{KEYS, Key};
+use crate::settings::keys::{self, KEYS, Key};
 
 /// Logical size the window asks for.
 pub const WINDOW_W: u32 = 960;
@@ -105,9 +105,9 @@ impl Button {
 
 /// Section headings, placed before the row of the named key.
 pub const SECTIONS: &[(&str, &str)] = &[
-    ("seed", "The mountain"),
-    ("look", "The look"),
-    ("auto_redraw", "The slide show"),
+    (keys::SEED.name, "The mountain"),
+    (keys::LOOK.name, "The look"),
+    (keys::AUTO_REDRAW.name, "The slide show"),
 ];
 
 /// Which part of a row a point is on.

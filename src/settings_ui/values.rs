@@ -261,20 +261,19 @@ mod tests {
             generator,
             ..Settings::default()
         };
-        let key = |name| keys::find(name).unwrap();
         let brownian = of(Generator::Brownian);
-        assert!(matters(&brownian, key("hurst")));
-        assert!(!matters(&brownian, key("cragginess")));
-        assert!(!matters(&brownian, key("roughness")));
-        assert!(matters(&brownian, key("height")));
-        assert!(!matters(&of(Generator::Diamond), key("hurst")));
-        assert!(matters(&of(Generator::Diamond), key("cragginess")));
-        assert!(!matters(&of(Generator::Triangle), key("hurst")));
+        assert!(matters(&brownian, &keys::HURST));
+        assert!(!matters(&brownian, &keys::CRAGGINESS));
+        assert!(!matters(&brownian, &keys::ROUGHNESS));
+        assert!(matters(&brownian, &keys::HEIGHT));
+        assert!(!matters(&of(Generator::Diamond), &keys::HURST));
+        assert!(matters(&of(Generator::Diamond), &keys::CRAGGINESS));
+        assert!(!matters(&of(Generator::Triangle), &keys::HURST));
     }
 
     #[test]
     fn labels_read_like_words() {
-        let key = keys::find("low_detail").unwrap();
+        let key = &keys::LOW_DETAIL;
         assert_eq!(label(key), "Low detail");
     }
 }
