@@ -10,7 +10,8 @@ mod xvfb;
 #[path = "common/randr.rs"]
 mod randr;
 
-use xvfb::{Geometry, Saver, Xvfb, looks_drawn, poll};
+use x11rb::protocol::xproto::ConnectionExt as _;
+use xvfb::{Geometry, Saver, Xvfb, expect_exit, looks_drawn, poll};
 
 const LEFT: Geometry = (0, 0, 640, 480);
 const RIGHT: Geometry = (640, 0, 640, 480);
@@ -150,4 +151,92 @@ fn display_fullscreen_opens_and_closes_windows_as_monitors_come_and_go() {
     // The input grab survived the windows coming and going: a key ends it.
     x.key(38);
     xvfb::expect_exit(&mut saver, "a key after the windows changed");
+}
+
+/// Where the pointer is on the screen.
+fn pointer(x: &Xvfb) -> (i16, i16) {
+    let reply = x.conn.query_pointer(x.root).unwrap().reply().unwrap();
+    (reply.root_x, reply.root_y)
+}
+
+/// Starts `/s` on `x` and waits for its mountain on the whole screen.
+fn start_drawn(x: &Xvfb, name: &str) -> Saver {
+    let mut saver = Saver::start(x, name, &["/s", "--set", "pause_seconds=60"], &[]);
+    let screen = (0, 0, x.size.0, x.size.1);
+    poll(&mut saver, "a mountain on the screen", || {
+        looks_drawn(&x.grab_rect(screen))
+    });
+    saver
+}
+
+/// Waits for the saver's window to fit the 640x480 screen the test made,
+/// and for a mountain on it: the server's move of the pointer has long
+/// reached the saver by then.
+fn expect_fitted_to_640x480(x: &Xvfb, saver: &mut Saver) {
+    poll(saver, "the window to fit the 640x480 mode", || {
+        x.mapped_places() == vec![LEFT]
+    });
+    poll(saver, "a mountain fitted to 640x480", || {
+        looks_drawn(&x.grab_rect(LEFT))
+    });
+    saver.assert_running();
+}
+
+/// A smaller mode puts the pointer back onto the screen: the server moved
+/// it, not a person, and the saver runs on (issue 36: it ended at once,
+/// "ended by PointerAt(639, 479)"). A move after the change still ends it.
+#[test]
+fn display_fullscreen_a_mode_change_that_moves_the_pointer_does_not_end_it() {
+    let Some(x) = Xvfb::start(1280, 1024, &[]) else {
+        return;
+    };
+    let mut saver = start_drawn(&x, "mon-clamp");
+    assert_eq!(
+        pointer(&x),
+        (640, 512),
+        "Xvfb starts with the pointer centred"
+    );
+    randr::set_resolution(&x.conn, x.root, 640, 480);
+    assert_eq!(pointer(&x), (639, 479), "the server moved the pointer");
+    expect_fitted_to_640x480(&x, &mut saver);
+    x.warp_to(300, 300);
+    expect_exit(&mut saver, "the pointer moved after the mode change");
+}
+
+/// Many mode changes in a row, each moving the pointer further in: none
+/// is a person; a relative move afterwards is.
+#[test]
+fn display_fullscreen_a_storm_of_mode_changes_does_not_end_it() {
+    let Some(x) = Xvfb::start(1280, 1024, &[]) else {
+        return;
+    };
+    // Near the corner before the saver starts: each smaller mode moves it.
+    x.warp_to(1200, 1000);
+    let mut saver = start_drawn(&x, "mon-storm");
+    for _ in 0..4 {
+        for (w, h) in [(1024, 768), (800, 600), (640, 480), (1280, 1024)] {
+            randr::set_resolution(&x.conn, x.root, w, h);
+        }
+    }
+    randr::set_resolution(&x.conn, x.root, 640, 480);
+    assert_eq!(pointer(&x), (639, 479), "the server moved the pointer");
+    expect_fitted_to_640x480(&x, &mut saver);
+    x.move_by(-30, 0);
+    expect_exit(&mut saver, "a 30 px move after the storm");
+}
+
+/// The output goes off and comes back with a smaller mode (a projector
+/// unplugged and plugged again): the pointer the server moves is no person.
+#[test]
+fn display_fullscreen_an_output_that_goes_and_comes_back_smaller_does_not_end_it() {
+    let Some(x) = Xvfb::start(1280, 1024, &[]) else {
+        return;
+    };
+    let mut saver = start_drawn(&x, "mon-off");
+    randr::switch_off(&x.conn, x.root);
+    randr::set_resolution(&x.conn, x.root, 640, 480);
+    assert_eq!(pointer(&x), (639, 479), "the server moved the pointer");
+    expect_fitted_to_640x480(&x, &mut saver);
+    x.key(38);
+    expect_exit(&mut saver, "a key after the output came back");
 }

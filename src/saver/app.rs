@@ -62,6 +62,10 @@ enum UserEvent {
     /// from XInput 2 raw motion: winit's counts absolute devices' places).
     #[cfg_attr(not(unix), allow(dead_code))]
     PointerMoved(f64, f64),
+    /// The screen changed and the server may have moved the pointer: it is
+    /// here now (full screen on X11, from the input grab's connection).
+    #[cfg_attr(not(unix), allow(dead_code))]
+    PointerPlaced(i16, i16),
 }
 
 /// Runs `mode` with winit until it ends.
@@ -363,6 +367,11 @@ impl ApplicationHandler<UserEvent> for App {
                     event_loop.exit()
                 }
             }
+            UserEvent::PointerPlaced(x, y) => {
+                self.trace
+                    .note(&format!("the screen changed; the pointer is at ({x}, {y})"));
+                self.wake.origin_at(x.into(), y.into())
+            }
         }
     }
 
@@ -451,6 +460,7 @@ impl App {
                 let event = match pointer {
                     Pointer::At(x, y) => UserEvent::PointerAt(x, y),
                     Pointer::Moved(dx, dy) => UserEvent::PointerMoved(dx, dy),
+                    Pointer::Placed(x, y) => UserEvent::PointerPlaced(x, y),
                 };
                 let _ = proxy.send_event(event);
             });
@@ -543,9 +553,17 @@ impl App {
         if self.mode != AppMode::Fullscreen || old.len() != self.screens.len() {
             return;
         }
-        // The server may have moved the pointer onto a monitor that stays:
-        // its next place is the new origin.
-        self.wake.reset_origin();
+        // The server may have moved the pointer onto a monitor that stays.
+        // The grab's connection says where (`UserEvent::PointerPlaced`);
+        // without it, the next place is the new origin. (With it, that
+        // next place would be the person's first move, not counted.)
+        #[cfg(unix)]
+        let placed_by_grab = self.watching_pointer;
+        #[cfg(not(unix))]
+        let placed_by_grab = false;
+        if !placed_by_grab {
+            self.wake.reset_origin();
+        }
         for change in heads::plan(&old, new) {
             match change {
                 Change::Fit(i, head) => self.fit(event_loop, i, head),

@@ -9,7 +9,8 @@
 //! pointer (`xdotool mousemove`, remote desktops) sends no raw event: the
 //! grab asks for the pointer's motion and a thread passes each place on,
 //! and with it the relative devices' raw motion (see x11/motion.rs: winit
-//! counts an absolute device's place as motion).
+//! counts an absolute device's place as motion). The pointer the server
+//! moves itself when the screen changes is no person (see x11/placed.rs).
 
 use std::sync::Arc;
 
@@ -20,6 +21,7 @@ use x11rb::rust_connection::RustConnection;
 use x11rb::{CURRENT_TIME, NONE};
 
 use super::motion::Devices;
+use super::placed::{self, ServerMoves};
 
 /// Attempts before giving up: the window may take a few frames to be viewable.
 const ATTEMPTS: u32 = 50;
@@ -31,6 +33,9 @@ pub enum Pointer {
     At(i16, i16),
     /// A relative device moved it by this much (perhaps against an edge).
     Moved(f64, f64),
+    /// The screen changed and the server may have moved it itself: it is
+    /// at this place now, the origin to measure from (see x11/placed.rs).
+    Placed(i16, i16),
 }
 
 /// The grab, held as long as this lives (closing the connection releases it).
@@ -111,35 +116,21 @@ impl InputGrab {
 
     /// Calls `tell` with the pointer's place on the screen (root
     /// coordinates) at each motion the pointer grab reports and with each
-    /// relative device's raw motion, on a thread of its own, until the
+    /// relative device's raw motion, and after a screen change with the
+    /// place the server put it, on a thread of its own, until the
     /// connection ends. True when the raw motion is watched (XInput 2.2);
     /// nothing is without a connection.
     pub fn watch_motion(&self, tell: impl Fn(Pointer) + Send + 'static) -> bool {
         let Some(conn) = self.conn.clone() else {
             return false;
         };
-        let mut devices = Devices::watch(&*conn, self.root);
+        let devices = Devices::watch(&*conn, self.root);
         let raw = devices.is_some();
         let root = self.root;
-        let watch = move || {
-            // A move before the grab held and the raw motion was asked for
-            // reached neither: the place now tells of it.
-            if let Some(p) = conn.query_pointer(root).ok().and_then(|c| c.reply().ok()) {
-                tell(Pointer::At(p.root_x, p.root_y));
-            }
-            while let Ok(event) = conn.wait_for_event() {
-                match event {
-                    Event::MotionNotify(e) => tell(Pointer::At(e.root_x, e.root_y)),
-                    Event::XinputRawMotion(e) => {
-                        if let Some((dx, dy)) = devices.as_ref().map(|d| d.travel(&e)) {
-                            tell(Pointer::Moved(dx, dy));
-                        }
-                    }
-                    Event::XinputHierarchy(_) => devices = Devices::query(&*conn),
-                    _ => {}
-                }
-            }
-        };
+        if !placed::watch_screen(&*conn, root) {
+            crate::log::warn("screen changes cannot be told from pointer moves");
+        }
+        let watch = move || follow_pointer(&conn, root, devices, tell);
         let spawned = std::thread::Builder::new()
             .name("x11-pointer".into())
             .spawn(watch);
@@ -148,5 +139,48 @@ impl InputGrab {
             return false;
         }
         raw
+    }
+}
+
+/// The grab's thread: tells each place and relative move of the pointer
+/// until the connection ends.
+fn follow_pointer(
+    conn: &RustConnection,
+    root: u32,
+    mut devices: Option<Devices>,
+    tell: impl Fn(Pointer),
+) {
+    // The place last told: a screen change that left the pointer there
+    // tells nothing new (one change sends several events).
+    let mut last = None;
+    // A move before the grab held and the raw motion was asked for
+    // reached neither: the place now tells of it.
+    if let Some(p) = conn.query_pointer(root).ok().and_then(|c| c.reply().ok()) {
+        last = Some((p.root_x, p.root_y));
+        tell(Pointer::At(p.root_x, p.root_y));
+    }
+    let mut server_moves = ServerMoves::default();
+    while let Ok((event, sequence)) = conn.wait_for_event_with_sequence() {
+        match event {
+            Event::MotionNotify(_) if server_moves.before_the_answer(sequence) => {}
+            Event::MotionNotify(e) => {
+                last = Some((e.root_x, e.root_y));
+                tell(Pointer::At(e.root_x, e.root_y));
+            }
+            e if placed::is_screen_change(&e, root) => {
+                let place = server_moves.look(conn, root);
+                if let Some(p) = place.filter(|&p| Some(p) != last) {
+                    last = Some(p);
+                    tell(Pointer::Placed(p.0, p.1));
+                }
+            }
+            Event::XinputRawMotion(e) => {
+                if let Some((dx, dy)) = devices.as_ref().map(|d| d.travel(&e)) {
+                    tell(Pointer::Moved(dx, dy));
+                }
+            }
+            Event::XinputHierarchy(_) => devices = Devices::query(conn),
+            _ => {}
+        }
     }
 }
