@@ -188,16 +188,65 @@ fn display_the_server_going_away_is_said_and_logged() {
             None => xvfb::looks_drawn(&x.grab_screen()),
         });
         x.signal("KILL");
-        let status = saver.wait(PATIENCE).expect("mountains should end");
-        let stderr = saver.stderr();
-        let said = "error: the X server went away (display ";
-        assert_eq!(status.code(), Some(1), "{mode}: {stderr}");
-        assert!(stderr.contains(said), "{mode}: {stderr}");
-        assert!(!stderr.contains("panicked"), "{mode}: {stderr}");
-        let log = std::fs::read_to_string(saver.data_dir().join("mountains.log"));
-        assert!(
-            log.is_ok_and(|l| l.contains(said)),
-            "{mode}: nothing in the log"
-        );
+        expect_server_gone(&mut saver, mode);
+    }
+}
+
+/// Checks that the saver ended with status 1 saying the server went away,
+/// on stderr and in mountains.log.
+fn expect_server_gone(saver: &mut Saver, what: &str) {
+    let status = saver.wait(PATIENCE).expect("mountains should end");
+    let stderr = saver.stderr();
+    let said = "error: the X server went away (display ";
+    assert_eq!(status.code(), Some(1), "{what}: {stderr}");
+    assert!(stderr.contains(said), "{what}: {stderr}");
+    assert!(!stderr.contains("panicked"), "{what}: {stderr}");
+    let log = std::fs::read_to_string(saver.data_dir().join("mountains.log"));
+    assert!(
+        log.is_ok_and(|l| l.contains(said)),
+        "{what}: nothing in the log"
+    );
+}
+
+/// An X server that shuts down (SIGTERM) destroys its clients' windows
+/// before it closes the saver's connection: the window the saver draws in
+/// goes as when the daemon ends it. That is still the server going away,
+/// and said so, while drawing and while holding a finished slide, for
+/// `--window-id` and for `--root` on `$XSCREENSAVER_WINDOW` (issue 36
+/// item 3: both ended with 0, no word, nothing in the log).
+#[test]
+fn display_a_server_shutting_down_is_said_while_drawing_and_holding() {
+    for mode in ["--window-id", "--root"] {
+        for holding in [false, true] {
+            let Some(x) = Xvfb::start(320, 240, &[]) else {
+                return;
+            };
+            let window = x.create_window(120, 90);
+            let id = format!("0x{window:x}");
+            let root = mode == "--root";
+            let mut args = match root {
+                true => vec![mode],
+                false => vec![mode, id.as_str()],
+            };
+            args.extend(["--set", "pause_seconds=60"]);
+            let env = match root {
+                true => vec![("XSCREENSAVER_WINDOW", id.as_str())],
+                false => vec![],
+            };
+            let mut saver = Saver::start(&x, "server-shutdown", &args, &env);
+            let what = format!("{mode}, holding: {holding}");
+            xvfb::poll(&mut saver, &format!("{what}: drawing"), || {
+                xvfb::lit_fraction(&x.grab(window, 120, 90)) > 0.0
+            });
+            if holding {
+                xvfb::poll(&mut saver, &format!("{what}: a slide"), || {
+                    xvfb::looks_drawn(&x.grab(window, 120, 90))
+                });
+                // Drawn in half a second (draw_seconds=0.5), then held.
+                std::thread::sleep(std::time::Duration::from_millis(1500));
+            }
+            x.signal("TERM");
+            expect_server_gone(&mut saver, &what);
+        }
     }
 }

@@ -147,6 +147,11 @@ fn spawn_event_thread(
                     Notice::Resized(e.width.into(), e.height.into())
                 }
                 Event::Expose(e) if e.window == xid && e.count == 0 => Notice::Exposed,
+                // A server that shuts down (SIGTERM, the session ending)
+                // destroys the other clients' windows, xscreensaver's among
+                // them, before it closes our connection: that is no
+                // daemon ending us, and it must be said.
+                Event::DestroyNotify(e) if e.window == xid && !server_answers(&conn) => break,
                 Event::DestroyNotify(e) if e.window == xid => Notice::Destroyed,
                 _ => continue,
             };
@@ -162,6 +167,12 @@ fn spawn_event_thread(
         .spawn(watch)
         .map(drop)
         .map_err(|e| SaverError::Other(format!("cannot start the X event thread: {e}")))
+}
+
+/// True if the X server still answers a request: false while it shuts
+/// down, which serves no request from then on.
+fn server_answers(conn: &RustConnection) -> bool {
+    conn.get_input_focus().is_ok_and(|c| c.reply().is_ok())
 }
 
 /// The drawing loop of an embedded slide show.
