@@ -350,10 +350,7 @@ impl ApplicationHandler<UserEvent> for App {
 
     fn user_event(&mut self, event_loop: &ActiveEventLoop, event: UserEvent) {
         match event {
-            UserEvent::Terminate => {
-                self.trace.ended_by(&event);
-                event_loop.exit()
-            }
+            UserEvent::Terminate => self.end_on_signal(event_loop),
             UserEvent::Heads(heads) => self.follow_heads(event_loop, &heads),
             UserEvent::PointerAt(x, y) => {
                 if self.mode == AppMode::Fullscreen && self.wake.moved_to(x.into(), y.into()) {
@@ -376,12 +373,19 @@ impl ApplicationHandler<UserEvent> for App {
     }
 
     fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
+        if crate::signals::ending() {
+            return self.end_on_signal(event_loop);
+        }
         let now = Instant::now();
         for i in 0..self.screens.len() {
             let damage = self.screens[i].show.tick(now);
             // The slide show moves on by itself: the title follows.
             self.update_title(i);
             self.present(event_loop, i, damage);
+        }
+        // A signal while strips were drawn: they stopped for it.
+        if crate::signals::ending() {
+            return self.end_on_signal(event_loop);
         }
         #[cfg(windows)]
         if let AppMode::Child(parent) = self.mode {
@@ -466,6 +470,15 @@ impl App {
             });
         }
         !held
+    }
+
+    /// SIGTERM, SIGINT or SIGHUP: the handler's flag or the watcher's
+    /// notice, whichever the loop sees first.
+    fn end_on_signal(&mut self, event_loop: &ActiveEventLoop) {
+        if !event_loop.exiting() {
+            self.trace.ended_by(&UserEvent::Terminate);
+            event_loop.exit();
+        }
     }
 
     fn fail(&mut self, event_loop: &ActiveEventLoop, error: SaverError) {

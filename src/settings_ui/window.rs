@@ -305,6 +305,10 @@ impl ApplicationHandler<Terminate> for App {
     }
 
     fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
+        // The signal handler's flag, seen before the watcher's notice.
+        if crate::signals::ending() {
+            return event_loop.exit();
+        }
         if self.screen.as_mut().is_some_and(Screen::poll_file)
             && let Some(w) = &self.window
         {

@@ -192,6 +192,11 @@ impl Embedded {
             if !damage.is_empty() {
                 self.present(damage)?;
             }
+            // The signal handler's flag: strips being drawn stopped for it.
+            if crate::signals::ending() {
+                self.trace.ended_by(&Notice::Terminate);
+                return Ok(());
+            }
             let first = match self.show.wake_at(now) {
                 Some(at) => rx.recv_timeout(at.saturating_duration_since(Instant::now())),
                 None => rx.recv().map_err(|_| RecvTimeoutError::Disconnected),
@@ -213,7 +218,11 @@ impl Embedded {
         let mut exposed = false;
         for notice in notices {
             match notice {
-                Notice::Destroyed | Notice::Terminate => return Ok(true),
+                Notice::Terminate => {
+                    self.trace.ended_by(&notice);
+                    return Ok(true);
+                }
+                Notice::Destroyed => return Ok(true),
                 Notice::ServerGone => return Err(SaverError::server_gone()),
                 Notice::Resized(w, h) => size = Some((w, h)),
                 Notice::Exposed => exposed = true,
