@@ -103,7 +103,8 @@ fn display_a_window_id_that_does_not_exist_is_named() {
 
 /// A window of a 30- or a 16-bit true-colour screen, as a daemon on such a
 /// screen gives --window-id (or --root), gets each pixel packed into its
-/// visual's masks (both were refused); an 8-bit window still is, in words.
+/// visual's masks (both were refused); an 8-bit window still is, in words
+/// (see `display_an_8_bit_screen_is_refused_in_words_in_every_mode`).
 #[test]
 fn display_window_id_draws_into_30_and_16_bit_windows() {
     for depth in [30u8, 16] {
@@ -128,7 +129,39 @@ fn display_window_id_draws_into_30_and_16_bit_windows() {
     let window = x.create_window(100, 100);
     let id = format!("0x{window:x}");
     let mut saver = Saver::start(&x, "depth8", &["--window-id", &id], &[]);
-    xvfb::expect_refusal(&mut saver, "8-bit windows are not supported");
+    let said = format!("window 0x{window:x} is 8-bit PseudoColor and this X screen offers only");
+    xvfb::expect_refusal(&mut saver, &said);
+}
+
+/// A screen of 8-bit visuals only is refused in every mode, saying what it
+/// offers, what is needed and what to do: the settings screen said only
+/// `Platform error: Some("Visual 0x21 ...")` (issue 36 item 5).
+#[test]
+fn display_an_8_bit_screen_is_refused_in_words_in_every_mode() {
+    let Some(x) = Xvfb::start(320, 240, &["depth=8"]) else {
+        return;
+    };
+    let window = x.create_window(100, 100);
+    let id = format!("0x{window:x}");
+    let offers = "offers only 8-bit visuals (PseudoColor, ";
+    let needed = "; mountains draws in TrueColor of 15 to 32 bits: run the X server at depth 24";
+    for args in [
+        &["/s"][..],
+        &["--window"],
+        &["/p"],
+        &["--root"],
+        &["--window-id", &id],
+        &["--settings"],
+    ] {
+        let mut saver = Saver::start(&x, "depth8-modes", args, &[]);
+        let status = saver.wait(PATIENCE).expect("mountains should give up");
+        let stderr = saver.stderr();
+        assert_eq!(status.code(), Some(1), "{args:?}: {stderr}");
+        assert!(stderr.contains(offers), "{args:?}: {stderr}");
+        assert!(stderr.contains(needed), "{args:?}: {stderr}");
+        assert!(!stderr.contains("Platform error"), "{args:?}: {stderr}");
+        assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
+    }
 }
 
 /// A 100x100 `window` of a `depth`-bit (30: 10 bits a channel; 16: 5-6-5)

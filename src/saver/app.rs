@@ -129,6 +129,10 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
         false => super::x11::pointer::first_look(mode == AppMode::Fullscreen),
     };
     #[cfg(unix)]
+    if let Some(why) = first_look.refusal {
+        return Err(SaverError::Unsupported(why));
+    }
+    #[cfg(unix)]
     let (x11_visual, pointer_origin) = (first_look.visual, first_look.pointer);
     #[cfg(not(unix))]
     let x11_visual = None;

@@ -37,6 +37,10 @@ struct App {
 /// Opens the window and runs it until OK or Cancel. `parent` is the window
 /// that owns the dialog on Windows (`/c:<HWND>`).
 pub fn run(make: MakeScreen, parent: Option<u64>) -> Result<(), String> {
+    #[cfg(unix)]
+    if let Some(why) = x11_refusal() {
+        return Err(why);
+    }
     let event_loop = EventLoop::<Terminate>::with_user_event()
         .build()
         .map_err(|e| format!("cannot open a window: {e}"))?;
@@ -100,6 +104,17 @@ fn owned_by(
         Some(id) => winit::platform::x11::WindowAttributesExtX11::with_x11_visual(attrs, id),
         None => attrs,
     }
+}
+
+/// Why nothing can be drawn on the X screen (8-bit visuals only), where
+/// the window opens on X11 (winit's own choice: Wayland wherever a
+/// compositor is named).
+#[cfg(unix)]
+fn x11_refusal() -> Option<String> {
+    if std::env::var_os("WAYLAND_DISPLAY").is_some() {
+        return None;
+    }
+    crate::x11_visual::refusal()
 }
 
 impl App {
