@@ -54,6 +54,55 @@ fn without_display_the_saver_and_the_settings_say_set_display() {
     }
 }
 
+/// A DISPLAY naming no server, an unknown host or nothing a display name
+/// can be is said with its value, in every X mode the settings screen
+/// included, never with a place in a library's source (the settings said
+/// "os error at /root/.cargo/registry/src/.../winit-0.30.13/src/...").
+#[test]
+fn a_display_that_cannot_be_opened_is_named_in_every_mode() {
+    let dead = dead_display();
+    let displays = [dead.as_str(), "nohost.invalid:0", "garbage", ":", "::"];
+    for display in displays {
+        for mode in ["--settings", "/s", "--window", "--root"] {
+            let home = xvfb::TempDir::new("bad-display");
+            let out = Command::new(env!("CARGO_BIN_EXE_mountains"))
+                .arg(mode)
+                .env("DISPLAY", display)
+                .env_remove("WAYLAND_DISPLAY")
+                .env_remove("WAYLAND_SOCKET")
+                .env("HOME", &home.0)
+                .env("XDG_CONFIG_HOME", home.0.join("config"))
+                .env("XDG_DATA_HOME", home.0.join("data"))
+                .output()
+                .expect("run mountains");
+            let stderr = String::from_utf8_lossy(&out.stderr);
+            let what = format!("DISPLAY={display:?} {mode}");
+            assert!(!out.status.success(), "{what} succeeded");
+            assert!(
+                stderr.contains(&format!("no X display: cannot open DISPLAY={display:?}: "))
+                    || stderr.contains(&format!("no X display: DISPLAY={display:?} is not")),
+                "{what}: {stderr}"
+            );
+            for path in [".cargo/registry", "src/", ".rs:"] {
+                assert!(!stderr.contains(path), "{what}: {stderr}");
+            }
+            assert!(!stderr.contains("panicked"), "{what}: {stderr}");
+        }
+    }
+}
+
+/// A display number no X server listens on here.
+fn dead_display() -> String {
+    let taken = |n: u32| {
+        std::path::Path::new(&format!("/tmp/.X11-unix/X{n}")).exists()
+            || std::path::Path::new(&format!("/tmp/.X{n}-lock")).exists()
+    };
+    let free = (950..1000)
+        .find(|&n| !taken(n))
+        .expect("a free display number");
+    format!(":{free}")
+}
+
 /// Log lines are in local time and say so: a POSIX zone string works
 /// without the tz database.
 #[test]

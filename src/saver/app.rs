@@ -98,10 +98,9 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
     let wayland = force_backend(&mut builder, backend);
     #[cfg(not(unix))]
     let wayland = false;
-    let event_loop = builder.build().map_err(|e| match wayland {
-        true => SaverError::NoCompositor(e.to_string()),
-        false => SaverError::no_display(&e.to_string()),
-    })?;
+    let event_loop = builder
+        .build()
+        .map_err(|e| SaverError::from_event_loop(&e.to_string(), wayland))?;
     // Without a window manager our windows never get keyboard focus, so the
     // full-screen saver listens to raw device input instead.
     event_loop.listen_device_events(match mode {
@@ -622,9 +621,10 @@ impl App {
         if attrs.fullscreen.is_some() {
             self.wake.expect_injected_alt();
         }
-        let window = event_loop
-            .create_window(attrs)
-            .map_err(|e| SaverError::Other(format!("cannot create a window: {e}")))?;
+        let window = event_loop.create_window(attrs).map_err(|e| {
+            let e = super::without_source_place(&e.to_string());
+            SaverError::Other(format!("cannot create a window: {e}"))
+        })?;
         let window = Rc::new(window);
         if self.mode == AppMode::Fullscreen {
             window.set_cursor_visible(false);
