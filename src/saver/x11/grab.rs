@@ -57,6 +57,13 @@ impl InputGrab {
             .as_ref()
             .and_then(|(c, screen)| c.setup().roots.get(*screen))
             .map_or(0, |s| s.root);
+        // Before the pointer grab, whose motion events they explain: a
+        // screen change before the grab's thread starts is then queued.
+        if let Some((c, _)) = conn.as_ref()
+            && !placed::watch_screen(c, root)
+        {
+            crate::log::warn("screen changes cannot be told from pointer moves");
+        }
         InputGrab {
             conn: conn.map(|(c, _)| Arc::new(c)),
             root,
@@ -127,9 +134,6 @@ impl InputGrab {
         let devices = Devices::watch(&*conn, self.root);
         let raw = devices.is_some();
         let root = self.root;
-        if !placed::watch_screen(&*conn, root) {
-            crate::log::warn("screen changes cannot be told from pointer moves");
-        }
         let watch = move || follow_pointer(&conn, root, devices, tell);
         let spawned = std::thread::Builder::new()
             .name("x11-pointer".into())
@@ -147,39 +151,78 @@ impl InputGrab {
 fn follow_pointer(
     conn: &RustConnection,
     root: u32,
-    mut devices: Option<Devices>,
+    devices: Option<Devices>,
     tell: impl Fn(Pointer),
 ) {
-    // The place last told: a screen change that left the pointer there
-    // tells nothing new (one change sends several events).
-    let mut last = None;
+    let mut follower = Follower {
+        conn,
+        root,
+        devices,
+        server_moves: ServerMoves::default(),
+        last: None,
+        tell,
+    };
     // A move before the grab held and the raw motion was asked for
-    // reached neither: the place now tells of it.
-    if let Some(p) = conn.query_pointer(root).ok().and_then(|c| c.reply().ok()) {
-        last = Some((p.root_x, p.root_y));
-        tell(Pointer::At(p.root_x, p.root_y));
+    // reached neither: the place now tells of it, unless the screen
+    // changed meanwhile (its events came before the answer, and are
+    // queued now).
+    let Some(first) = follower.server_moves.look(conn, root) else {
+        return;
+    };
+    let mut queued = Vec::new();
+    while let Ok(Some(event)) = conn.poll_for_event_with_sequence() {
+        queued.push(event);
     }
-    let mut server_moves = ServerMoves::default();
+    let moves = follower.server_moves;
+    let changed = queued
+        .iter()
+        .any(|(e, seq)| moves.before_the_answer(*seq) && placed::is_screen_change(e, root));
+    follower.last = Some(first);
+    (follower.tell)(match changed {
+        true => Pointer::Placed(first.0, first.1),
+        false => Pointer::At(first.0, first.1),
+    });
+    for (event, sequence) in queued {
+        follower.handle(event, sequence);
+    }
     while let Ok((event, sequence)) = conn.wait_for_event_with_sequence() {
+        follower.handle(event, sequence);
+    }
+}
+
+/// What the grab's thread knows between two events.
+struct Follower<'a, T: Fn(Pointer)> {
+    conn: &'a RustConnection,
+    root: u32,
+    devices: Option<Devices>,
+    server_moves: ServerMoves,
+    /// The place last told: a screen change that left the pointer there
+    /// tells nothing new (one change sends several events).
+    last: Option<(i16, i16)>,
+    tell: T,
+}
+
+impl<T: Fn(Pointer)> Follower<'_, T> {
+    fn handle(&mut self, event: Event, sequence: u64) {
         match event {
-            Event::MotionNotify(_) if server_moves.before_the_answer(sequence) => {}
+            Event::MotionNotify(_) if self.server_moves.before_the_answer(sequence) => {}
             Event::MotionNotify(e) => {
-                last = Some((e.root_x, e.root_y));
-                tell(Pointer::At(e.root_x, e.root_y));
+                self.last = Some((e.root_x, e.root_y));
+                (self.tell)(Pointer::At(e.root_x, e.root_y));
             }
-            e if placed::is_screen_change(&e, root) => {
-                let place = server_moves.look(conn, root);
-                if let Some(p) = place.filter(|&p| Some(p) != last) {
-                    last = Some(p);
-                    tell(Pointer::Placed(p.0, p.1));
+            e if placed::is_screen_change(&e, self.root) => {
+                let place = self.server_moves.look(self.conn, self.root);
+                if let Some(p) = place.filter(|&p| Some(p) != self.last) {
+                    self.last = Some(p);
+                    (self.tell)(Pointer::Placed(p.0, p.1));
                 }
             }
             Event::XinputRawMotion(e) => {
-                if let Some((dx, dy)) = devices.as_ref().map(|d| d.travel(&e)) {
-                    tell(Pointer::Moved(dx, dy));
+                if let Some((dx, dy)) = self.devices.as_ref().map(|d| d.travel(&e)) {
+                    (self.tell)(Pointer::Moved(dx, dy));
                 }
             }
-            Event::XinputHierarchy(_) => devices = Devices::query(conn),
+            Event::XinputHierarchy(_) => self.devices = Devices::query(self.conn),
             _ => {}
         }
     }
