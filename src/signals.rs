@@ -1,9 +1,24 @@
 //! Ending cleanly on SIGTERM (how xscreensaver stops a hack), SIGINT and
 //! SIGHUP (the terminal or session going away).
 
+use std::sync::atomic::{AtomicBool, Ordering};
+
 /// How long the main loop has to end after `on_terminate`'s notice before
-/// the process ends without it.
-pub const GRACE: std::time::Duration = std::time::Duration::from_millis(500);
+/// the process ends without it. A signal must end every window mode within
+/// half a second (xscreensaver sends SIGTERM when it switches hacks), and
+/// on a loaded machine ending a process (its threads, its memory) takes
+/// a good part of that.
+pub const GRACE: std::time::Duration = std::time::Duration::from_millis(250);
+
+/// Set once a signal asked the window modes to end.
+static ENDING: AtomicBool = AtomicBool::new(false);
+
+/// True once SIGTERM, SIGINT or SIGHUP asked the window modes to end: long
+/// work on the main loop (strips being drawn) stops early, so that the
+/// loop reads the notice now rather than after the work.
+pub fn ending() -> bool {
+    ENDING.load(Ordering::Relaxed)
+}
 
 /// Calls `notify` on a watcher thread each time SIGTERM, SIGINT or SIGHUP
 /// arrives, instead of letting the signal kill the process with a failure
@@ -16,7 +31,9 @@ pub const GRACE: std::time::Duration = std::time::Duration::from_millis(500);
 /// progress are removed first, so no file is left half made.
 #[cfg(unix)]
 pub fn on_terminate(notify: impl Fn() + Send + 'static) -> std::io::Result<()> {
+    mark_ending_at_once()?;
     watch(move |_| {
+        ENDING.store(true, Ordering::Relaxed);
         notify();
         std::thread::sleep(GRACE);
         crate::fsutil::partial::remove_all();
@@ -41,16 +58,38 @@ pub fn end_cleanly() -> std::io::Result<()> {
     })
 }
 
+/// Sets [`ending`] in the signal handler itself, on the thread the signal
+/// interrupts (the main thread, when it runs): on a loaded machine the
+/// watcher thread can wait a fifth of a second for the processor before
+/// it reads the signal, and the main loop looks at the flag between
+/// strips and after each turn.
+#[cfg(unix)]
+fn mark_ending_at_once() -> std::io::Result<()> {
+    for signal in wanted() {
+        // SAFETY: the action only stores to an atomic, which is
+        // async-signal-safe; it allocates nothing and takes no lock.
+        unsafe {
+            signal_hook::low_level::register(signal, || ENDING.store(true, Ordering::Relaxed))?;
+        }
+    }
+    Ok(())
+}
+
+/// SIGTERM, SIGINT and SIGHUP, less those ignored when we were started.
+#[cfg(unix)]
+fn wanted() -> Vec<i32> {
+    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+    [SIGTERM, SIGINT, SIGHUP]
+        .into_iter()
+        .filter(|&s| !inherited_ignore(s))
+        .collect()
+}
+
 /// Calls `on_signal` on a watcher thread for each SIGTERM, SIGINT or SIGHUP
 /// not ignored when we were started.
 #[cfg(unix)]
 fn watch(on_signal: impl Fn(i32) + Send + 'static) -> std::io::Result<()> {
-    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
-    let wanted: Vec<i32> = [SIGTERM, SIGINT, SIGHUP]
-        .into_iter()
-        .filter(|&s| !inherited_ignore(s))
-        .collect();
-    let mut signals = signal_hook::iterator::Signals::new(wanted)?;
+    let mut signals = signal_hook::iterator::Signals::new(wanted())?;
     std::thread::Builder::new()
         .name("signals".into())
         .spawn(move || {

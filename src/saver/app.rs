@@ -62,6 +62,10 @@ enum UserEvent {
     /// from XInput 2 raw motion: winit's counts absolute devices' places).
     #[cfg_attr(not(unix), allow(dead_code))]
     PointerMoved(f64, f64),
+    /// The screen changed and the server may have moved the pointer: it is
+    /// here now (full screen on X11, from the input grab's connection).
+    #[cfg_attr(not(unix), allow(dead_code))]
+    PointerPlaced(i16, i16),
 }
 
 /// Runs `mode` with winit until it ends.
@@ -94,10 +98,9 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
     let wayland = force_backend(&mut builder, backend);
     #[cfg(not(unix))]
     let wayland = false;
-    let event_loop = builder.build().map_err(|e| match wayland {
-        true => SaverError::NoCompositor(e.to_string()),
-        false => SaverError::no_display(&e.to_string()),
-    })?;
+    let event_loop = builder
+        .build()
+        .map_err(|e| SaverError::from_event_loop(&e.to_string(), wayland))?;
     // Without a window manager our windows never get keyboard focus, so the
     // full-screen saver listens to raw device input instead.
     event_loop.listen_device_events(match mode {
@@ -124,6 +127,10 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
         true => super::x11::pointer::FirstLook::default(),
         false => super::x11::pointer::first_look(mode == AppMode::Fullscreen),
     };
+    #[cfg(unix)]
+    if let Some(why) = first_look.refusal {
+        return Err(SaverError::Unsupported(why));
+    }
     #[cfg(unix)]
     let (x11_visual, pointer_origin) = (first_look.visual, first_look.pointer);
     #[cfg(not(unix))]
@@ -346,10 +353,7 @@ impl ApplicationHandler<UserEvent> for App {
 
     fn user_event(&mut self, event_loop: &ActiveEventLoop, event: UserEvent) {
         match event {
-            UserEvent::Terminate => {
-                self.trace.ended_by(&event);
-                event_loop.exit()
-            }
+            UserEvent::Terminate => self.end_on_signal(event_loop),
             UserEvent::Heads(heads) => self.follow_heads(event_loop, &heads),
             UserEvent::PointerAt(x, y) => {
                 if self.mode == AppMode::Fullscreen && self.wake.moved_to(x.into(), y.into()) {
@@ -363,16 +367,28 @@ impl ApplicationHandler<UserEvent> for App {
                     event_loop.exit()
                 }
             }
+            UserEvent::PointerPlaced(x, y) => {
+                self.trace
+                    .note(&format!("the screen changed; the pointer is at ({x}, {y})"));
+                self.wake.origin_at(x.into(), y.into())
+            }
         }
     }
 
     fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
+        if crate::signals::ending() {
+            return self.end_on_signal(event_loop);
+        }
         let now = Instant::now();
         for i in 0..self.screens.len() {
             let damage = self.screens[i].show.tick(now);
             // The slide show moves on by itself: the title follows.
             self.update_title(i);
             self.present(event_loop, i, damage);
+        }
+        // A signal while strips were drawn: they stopped for it.
+        if crate::signals::ending() {
+            return self.end_on_signal(event_loop);
         }
         #[cfg(windows)]
         if let AppMode::Child(parent) = self.mode {
@@ -451,11 +467,21 @@ impl App {
                 let event = match pointer {
                     Pointer::At(x, y) => UserEvent::PointerAt(x, y),
                     Pointer::Moved(dx, dy) => UserEvent::PointerMoved(dx, dy),
+                    Pointer::Placed(x, y) => UserEvent::PointerPlaced(x, y),
                 };
                 let _ = proxy.send_event(event);
             });
         }
         !held
+    }
+
+    /// SIGTERM, SIGINT or SIGHUP: the handler's flag or the watcher's
+    /// notice, whichever the loop sees first.
+    fn end_on_signal(&mut self, event_loop: &ActiveEventLoop) {
+        if !event_loop.exiting() {
+            self.trace.ended_by(&UserEvent::Terminate);
+            event_loop.exit();
+        }
     }
 
     fn fail(&mut self, event_loop: &ActiveEventLoop, error: SaverError) {
@@ -543,9 +569,17 @@ impl App {
         if self.mode != AppMode::Fullscreen || old.len() != self.screens.len() {
             return;
         }
-        // The server may have moved the pointer onto a monitor that stays:
-        // its next place is the new origin.
-        self.wake.reset_origin();
+        // The server may have moved the pointer onto a monitor that stays.
+        // The grab's connection says where (`UserEvent::PointerPlaced`);
+        // without it, the next place is the new origin. (With it, that
+        // next place would be the person's first move, not counted.)
+        #[cfg(unix)]
+        let placed_by_grab = self.watching_pointer;
+        #[cfg(not(unix))]
+        let placed_by_grab = false;
+        if !placed_by_grab {
+            self.wake.reset_origin();
+        }
         for change in heads::plan(&old, new) {
             match change {
                 Change::Fit(i, head) => self.fit(event_loop, i, head),
@@ -587,9 +621,10 @@ impl App {
         if attrs.fullscreen.is_some() {
             self.wake.expect_injected_alt();
         }
-        let window = event_loop
-            .create_window(attrs)
-            .map_err(|e| SaverError::Other(format!("cannot create a window: {e}")))?;
+        let window = event_loop.create_window(attrs).map_err(|e| {
+            let e = super::without_source_place(&e.to_string());
+            SaverError::Other(format!("cannot create a window: {e}"))
+        })?;
         let window = Rc::new(window);
         if self.mode == AppMode::Fullscreen {
             window.set_cursor_visible(false);

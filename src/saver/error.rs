@@ -67,11 +67,13 @@ impl SaverError {
     }
 
     /// The display could not be opened; says whether `DISPLAY` is unset or
-    /// which display failed, keeping only the last part of `detail`.
+    /// what it was, keeping only the last part of `detail`.
     pub fn no_display(detail: &str) -> Self {
         let reason = detail.rsplit(": ").next().unwrap_or(detail);
         match std::env::var("DISPLAY") {
-            Ok(d) if !d.is_empty() => SaverError::NoDisplay(format!("cannot open {d}: {reason}")),
+            Ok(d) if !d.is_empty() => {
+                SaverError::NoDisplay(format!("cannot open DISPLAY={d:?}: {reason}"))
+            }
             _ => SaverError::NoDisplay("set DISPLAY (it is not set)".into()),
         }
     }
@@ -79,6 +81,76 @@ impl SaverError {
     /// The display named by `DISPLAY` could not be reached.
     #[cfg(unix)]
     pub(crate) fn from_connect(e: x11rb::errors::ConnectError) -> Self {
-        Self::no_display(&e.to_string())
+        use x11rb::errors::{ConnectError, DisplayParsingError};
+        match (e, std::env::var("DISPLAY")) {
+            (ConnectError::DisplayParsingError(DisplayParsingError::MalformedValue(_)), Ok(d)) => {
+                SaverError::NoDisplay(format!(
+                    "DISPLAY={d:?} is not a display name (such as :0, :1 or host:0)"
+                ))
+            }
+            (e, _) => Self::no_display(&e.to_string()),
+        }
+    }
+
+    /// winit could not open the X display: its words say only "Failed to
+    /// open connection to X server", after a place in its source. A
+    /// connection of our own says why (nobody answers, an unknown host, a
+    /// malformed name), in the same words as the embedded modes.
+    #[cfg(unix)]
+    pub fn x_unreachable(winit_detail: &str) -> Self {
+        match x11rb::rust_connection::RustConnection::connect(None) {
+            Err(e) => Self::from_connect(e),
+            Ok(_) => Self::no_display(&without_source_place(winit_detail)),
+        }
+    }
+
+    /// The event loop of a winit mode could not start: on Wayland the
+    /// compositor, on X11 the display could not be reached.
+    pub fn from_event_loop(detail: &str, wayland: bool) -> Self {
+        if wayland {
+            let reason = without_source_place(detail);
+            let var = |name| std::env::var(name).ok().filter(|v: &String| !v.is_empty());
+            return SaverError::NoCompositor(match var("WAYLAND_DISPLAY") {
+                Some(d) => format!("cannot connect to {d} (WAYLAND_DISPLAY): {reason}"),
+                None => reason,
+            });
+        }
+        #[cfg(unix)]
+        return Self::x_unreachable(detail);
+        #[cfg(not(unix))]
+        Self::Other(without_source_place(detail))
+    }
+}
+
+/// winit's error text without the place in winit's source where it was
+/// made ("os error at /root/.cargo/registry/.../mod.rs:788: "), which
+/// tells a user nothing.
+pub fn without_source_place(text: &str) -> String {
+    let place = text.find("os error at ").and_then(|start| {
+        let file = start + text[start..].find(".rs:")?;
+        let end = file + text[file..].find(": ")? + 2;
+        Some((start, end))
+    });
+    match place {
+        Some((start, end)) => format!("{}{}", &text[..start], &text[end..]),
+        None => text.to_string(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn winit_s_place_in_its_source_is_left_out() {
+        let winit = "os error at /root/.cargo/registry/src/index.crates.io-1949cf8c6b5b557f/\
+                     winit-0.30.13/src/platform_impl/linux/mod.rs:788: Failed to open connection";
+        assert_eq!(without_source_place(winit), "Failed to open connection");
+        let wrapped = format!("cannot open a window: {winit}");
+        assert_eq!(
+            without_source_place(&wrapped),
+            "cannot open a window: Failed to open connection"
+        );
+        assert_eq!(without_source_place("no place: here"), "no place: here");
     }
 }

@@ -195,6 +195,14 @@ impl WakeDetector {
         self.origin = None;
     }
 
+    /// Takes (x, y) as the new origin: the display changed and the system
+    /// says where it has put the cursor.
+    pub fn origin_at(&mut self, x: f64, y: f64) {
+        if x.is_finite() && y.is_finite() {
+            self.origin = Some((x, y));
+        }
+    }
+
     /// Adds relative pointer motion; true once the net travel passes the threshold.
     pub fn moved(&mut self, dx: f64, dy: f64) -> bool {
         if !dx.is_finite() || !dy.is_finite() {
@@ -376,5 +384,18 @@ mod tests {
         assert!(!w.moved_to(965.0, 540.0));
         assert!(w.moved_to(971.0, 540.0));
         assert!(!WakeDetector::new().moved_to(f64::NAN, 0.0));
+    }
+
+    #[test]
+    fn a_place_the_system_gives_is_the_new_origin() {
+        let mut w = WakeDetector::new();
+        assert!(!w.moved_to(960.0, 540.0));
+        // The screen shrank to 640x480: the pointer was put in its corner.
+        w.origin_at(639.0, 479.0);
+        assert!(!w.moved_to(639.0, 479.0));
+        assert!(!w.moved_to(630.0, 479.0));
+        assert!(w.moved_to(620.0, 479.0));
+        w.origin_at(f64::NAN, 0.0);
+        assert!(w.moved_to(620.0, 479.0), "a nonsense place changes nothing");
     }
 }

@@ -55,7 +55,7 @@ use crate::cli::{Mode, XssOptions};
 use crate::mountain::Mountain;
 use crate::settings::Settings;
 
-pub use error::SaverError;
+pub use error::{SaverError, without_source_place};
 pub use trace::{Trace, mark_start};
 
 /// Runs a window mode until it ends. `opened` is a data set to show instead

@@ -184,8 +184,13 @@ impl Show {
         }
     }
 
-    /// Does what is due at `now` and returns the pixels that changed.
+    /// Does what is due at `now` and returns the pixels that changed;
+    /// nothing once a signal asked the program to end (the next mountain
+    /// would be waited for, a redraw shown, strips drawn, for no one).
     pub fn tick(&mut self, now: Instant) -> Damage {
+        if crate::signals::ending() {
+            return Damage::default();
+        }
         if self.redraw.as_ref().is_some_and(|r| !r.is_done()) {
             return Damage::default();
         }
@@ -202,11 +207,11 @@ impl Show {
             Due::Wait => Damage::default(),
             Due::Draw(strips) => {
                 let lifted = self.overlay.lift(frame);
-                let mut damage = painter.step(frame, strips);
+                let (mut damage, drawn) = step_unless_ending(painter, frame, strips);
                 damage.add(lifted);
                 self.overlay.count_frame(now);
                 damage.add(self.overlay.draw(frame, now));
-                self.slideshow.drew(strips, now);
+                self.slideshow.drew(drawn, now);
                 if painter.is_done() && !self.slideshow.is_holding() {
                     self.slideshow.finish_now(now);
                 }
@@ -225,6 +230,12 @@ impl Show {
             return Rect::default();
         }
         let next = match std::mem::replace(&mut self.next, Next::None) {
+            // A signal came while the next mountain was still being made
+            // (a loaded machine): the program ends, nothing more is shown.
+            Next::Pending(handle, made) if !finished_unless_ending(&handle) => {
+                self.next = Next::Pending(handle, made);
+                return Rect::default();
+            }
             // Made again below, on this thread, if its thread failed.
             Next::Pending(handle, made) => {
                 crate::log::joined(handle, "making the next mountain").map(|m| (m, Some(made)))
@@ -493,6 +504,40 @@ impl Show {
     fn generator_settings_for(&self, settings: &Settings) -> Settings {
         detail::for_frame(settings, self.size.0, self.size.1)
     }
+}
+
+/// Waits for `thread` to finish; false if a signal asked the program to
+/// end first (joining would keep the loop from reading the notice).
+fn finished_unless_ending<T>(thread: &JoinHandle<T>) -> bool {
+    while !thread.is_finished() {
+        if crate::signals::ending() {
+            return false;
+        }
+        std::thread::sleep(Duration::from_millis(2));
+    }
+    true
+}
+
+/// Strips drawn between two looks at `signals::ending`: a look costs
+/// nothing, a strip a fraction of a millisecond.
+const STRIPS_BETWEEN_LOOKS: usize = 4;
+
+/// Draws `strips` more strips, fewer if a signal asks the program to end
+/// meanwhile: a show that fell behind (a loaded machine, nice 10 under
+/// xscreensaver) catches up with hundreds of strips in one tick, and the
+/// loop would read the notice only after them. Returns the pixels changed
+/// and the strips drawn.
+fn step_unless_ending(painter: &mut Painter, frame: &mut Frame, strips: usize) -> (Damage, usize) {
+    let mut damage = Damage::default();
+    let mut drawn = 0;
+    while drawn < strips && !crate::signals::ending() {
+        let n = (strips - drawn).min(STRIPS_BETWEEN_LOOKS);
+        for r in painter.step(frame, n).rects() {
+            damage.add(r);
+        }
+        drawn += n;
+    }
+    (damage, drawn)
 }
 
 #[cfg(test)]

@@ -37,9 +37,13 @@ struct App {
 /// Opens the window and runs it until OK or Cancel. `parent` is the window
 /// that owns the dialog on Windows (`/c:<HWND>`).
 pub fn run(make: MakeScreen, parent: Option<u64>) -> Result<(), String> {
+    #[cfg(unix)]
+    if let Some(why) = x11_refusal() {
+        return Err(why);
+    }
     let event_loop = EventLoop::<Terminate>::with_user_event()
         .build()
-        .map_err(|e| format!("cannot open a window: {e}"))?;
+        .map_err(|e| event_loop_failed(&e.to_string()))?;
     // SIGTERM, SIGINT, SIGHUP: close as Cancel does (nothing written), exit 0.
     let proxy = event_loop.create_proxy();
     crate::signals::on_terminate(move || {
@@ -102,6 +106,28 @@ fn owned_by(
     }
 }
 
+/// Why the event loop could not start, in the saver's words: which
+/// display was named and why it cannot be opened, not a place in winit's
+/// source (`SaverError::from_event_loop`). winit's own choice of window
+/// system: Wayland wherever a compositor is named.
+fn event_loop_failed(detail: &str) -> String {
+    let wayland = ["WAYLAND_DISPLAY", "WAYLAND_SOCKET"]
+        .iter()
+        .any(|v| std::env::var_os(v).is_some_and(|v| !v.is_empty()));
+    crate::saver::SaverError::from_event_loop(detail, wayland).to_string()
+}
+
+/// Why nothing can be drawn on the X screen (8-bit visuals only), where
+/// the window opens on X11 (winit's own choice: Wayland wherever a
+/// compositor is named).
+#[cfg(unix)]
+fn x11_refusal() -> Option<String> {
+    if std::env::var_os("WAYLAND_DISPLAY").is_some() {
+        return None;
+    }
+    crate::x11_visual::refusal()
+}
+
 impl App {
     fn fail(&mut self, event_loop: &ActiveEventLoop, message: String) {
         self.error = Some(message);
@@ -111,7 +137,10 @@ impl App {
     fn open(&mut self, event_loop: &ActiveEventLoop) -> Result<(), String> {
         let window = event_loop
             .create_window(attributes(self.parent))
-            .map_err(|e| format!("cannot open the settings window: {e}"))?;
+            .map_err(|e| {
+                let e = crate::saver::without_source_place(&e.to_string());
+                format!("cannot open the settings window: {e}")
+            })?;
         let window = Rc::new(window);
         let context = softbuffer::Context::new(window.clone()).map_err(|e| e.to_string())?;
         let surface =
@@ -313,6 +342,10 @@ impl ApplicationHandler<Terminate> for App {
     }
 
     fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
+        // The signal handler's flag, seen before the watcher's notice.
+        if crate::signals::ending() {
+            return event_loop.exit();
+        }
         if self.screen.as_mut().is_some_and(Screen::poll_file)
             && let Some(w) = &self.window
         {

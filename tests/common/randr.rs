@@ -96,6 +96,33 @@ pub fn set_resolution(conn: &RustConnection, root: Window, width: u16, height: u
     }
 }
 
+/// Turns the output off, like `xrandr --output screen --off`: the screen
+/// keeps its size, with no monitor showing it. `set_resolution` turns it
+/// on again.
+pub fn switch_off(conn: &RustConnection, root: Window) {
+    let (_, crtc, config_timestamp) = output_and_crtc(conn, root);
+    let reply = conn
+        .randr_set_crtc_config(
+            crtc,
+            x11rb::CURRENT_TIME,
+            config_timestamp,
+            0,
+            0,
+            x11rb::NONE,
+            Rotation::ROTATE0,
+            &[],
+        )
+        .unwrap()
+        .reply()
+        .unwrap();
+    assert_eq!(
+        u8::from(reply.status),
+        0,
+        "SetCrtcConfig refused ({:?})",
+        reply.status
+    );
+}
+
 fn screen_size(conn: &RustConnection, root: Window) -> (u16, u16) {
     let g = conn.get_geometry(root).unwrap().reply().unwrap();
     (g.width, g.height)

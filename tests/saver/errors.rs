@@ -4,6 +4,8 @@
 use crate::common::xvfb;
 
 use std::process::Command;
+use x11rb::protocol::xproto::ConnectionExt as _;
+use x11rb::wrapper::ConnectionExt as _;
 
 use xvfb::{PATIENCE, Saver, Xvfb};
 
@@ -49,6 +51,55 @@ fn without_display_the_saver_and_the_settings_say_set_display() {
         // Not a path into a library's source.
         assert!(!stderr.contains(".rs:"), "{mode:?}: {stderr}");
     }
+}
+
+/// A DISPLAY naming no server, an unknown host or nothing a display name
+/// can be is said with its value, in every X mode the settings screen
+/// included, never with a place in a library's source (the settings said
+/// "os error at /root/.cargo/registry/src/.../winit-0.30.13/src/...").
+#[test]
+fn a_display_that_cannot_be_opened_is_named_in_every_mode() {
+    let dead = dead_display();
+    let displays = [dead.as_str(), "nohost.invalid:0", "garbage", ":", "::"];
+    for display in displays {
+        for mode in ["--settings", "/s", "--window", "--root"] {
+            let home = xvfb::TempDir::new("bad-display");
+            let out = Command::new(env!("CARGO_BIN_EXE_mountains"))
+                .arg(mode)
+                .env("DISPLAY", display)
+                .env_remove("WAYLAND_DISPLAY")
+                .env_remove("WAYLAND_SOCKET")
+                .env("HOME", &home.0)
+                .env("XDG_CONFIG_HOME", home.0.join("config"))
+                .env("XDG_DATA_HOME", home.0.join("data"))
+                .output()
+                .expect("run mountains");
+            let stderr = String::from_utf8_lossy(&out.stderr);
+            let what = format!("DISPLAY={display:?} {mode}");
+            assert!(!out.status.success(), "{what} succeeded");
+            assert!(
+                stderr.contains(&format!("no X display: cannot open DISPLAY={display:?}: "))
+                    || stderr.contains(&format!("no X display: DISPLAY={display:?} is not")),
+                "{what}: {stderr}"
+            );
+            for path in [".cargo/registry", "src/", ".rs:"] {
+                assert!(!stderr.contains(path), "{what}: {stderr}");
+            }
+            assert!(!stderr.contains("panicked"), "{what}: {stderr}");
+        }
+    }
+}
+
+/// A display number no X server listens on here.
+fn dead_display() -> String {
+    let taken = |n: u32| {
+        std::path::Path::new(&format!("/tmp/.X11-unix/X{n}")).exists()
+            || std::path::Path::new(&format!("/tmp/.X{n}-lock")).exists()
+    };
+    let free = (950..1000)
+        .find(|&n| !taken(n))
+        .expect("a free display number");
+    format!(":{free}")
 }
 
 /// Log lines are in local time and say so: a POSIX zone string works
@@ -100,7 +151,8 @@ fn display_a_window_id_that_does_not_exist_is_named() {
 
 /// A window of a 30- or a 16-bit true-colour screen, as a daemon on such a
 /// screen gives --window-id (or --root), gets each pixel packed into its
-/// visual's masks (both were refused); an 8-bit window still is, in words.
+/// visual's masks (both were refused); an 8-bit window still is, in words
+/// (see `display_an_8_bit_screen_is_refused_in_words_in_every_mode`).
 #[test]
 fn display_window_id_draws_into_30_and_16_bit_windows() {
     for depth in [30u8, 16] {
@@ -125,7 +177,39 @@ fn display_window_id_draws_into_30_and_16_bit_windows() {
     let window = x.create_window(100, 100);
     let id = format!("0x{window:x}");
     let mut saver = Saver::start(&x, "depth8", &["--window-id", &id], &[]);
-    xvfb::expect_refusal(&mut saver, "8-bit windows are not supported");
+    let said = format!("window 0x{window:x} is 8-bit PseudoColor and this X screen offers only");
+    xvfb::expect_refusal(&mut saver, &said);
+}
+
+/// A screen of 8-bit visuals only is refused in every mode, saying what it
+/// offers, what is needed and what to do: the settings screen said only
+/// `Platform error: Some("Visual 0x21 ...")` (issue 36 item 5).
+#[test]
+fn display_an_8_bit_screen_is_refused_in_words_in_every_mode() {
+    let Some(x) = Xvfb::start(320, 240, &["depth=8"]) else {
+        return;
+    };
+    let window = x.create_window(100, 100);
+    let id = format!("0x{window:x}");
+    let offers = "offers only 8-bit visuals (PseudoColor, ";
+    let needed = "; mountains draws in TrueColor of 15 to 32 bits: run the X server at depth 24";
+    for args in [
+        &["/s"][..],
+        &["--window"],
+        &["/p"],
+        &["--root"],
+        &["--window-id", &id],
+        &["--settings"],
+    ] {
+        let mut saver = Saver::start(&x, "depth8-modes", args, &[]);
+        let status = saver.wait(PATIENCE).expect("mountains should give up");
+        let stderr = saver.stderr();
+        assert_eq!(status.code(), Some(1), "{args:?}: {stderr}");
+        assert!(stderr.contains(offers), "{args:?}: {stderr}");
+        assert!(stderr.contains(needed), "{args:?}: {stderr}");
+        assert!(!stderr.contains("Platform error"), "{args:?}: {stderr}");
+        assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
+    }
 }
 
 /// A 100x100 `window` of a `depth`-bit (30: 10 bits a channel; 16: 5-6-5)
@@ -185,16 +269,88 @@ fn display_the_server_going_away_is_said_and_logged() {
             None => xvfb::looks_drawn(&x.grab_screen()),
         });
         x.signal("KILL");
-        let status = saver.wait(PATIENCE).expect("mountains should end");
-        let stderr = saver.stderr();
-        let said = "error: the X server went away (display ";
-        assert_eq!(status.code(), Some(1), "{mode}: {stderr}");
-        assert!(stderr.contains(said), "{mode}: {stderr}");
-        assert!(!stderr.contains("panicked"), "{mode}: {stderr}");
-        let log = std::fs::read_to_string(saver.data_dir().join("mountains.log"));
-        assert!(
-            log.is_ok_and(|l| l.contains(said)),
-            "{mode}: nothing in the log"
-        );
+        expect_server_gone(&mut saver, mode);
     }
+}
+
+/// Checks that the saver ended with status 1 saying the server went away,
+/// on stderr and in mountains.log.
+fn expect_server_gone(saver: &mut Saver, what: &str) {
+    let status = saver.wait(PATIENCE).expect("mountains should end");
+    let stderr = saver.stderr();
+    let said = "error: the X server went away (display ";
+    assert_eq!(status.code(), Some(1), "{what}: {stderr}");
+    assert!(stderr.contains(said), "{what}: {stderr}");
+    assert!(!stderr.contains("panicked"), "{what}: {stderr}");
+    let log = std::fs::read_to_string(saver.data_dir().join("mountains.log"));
+    assert!(
+        log.is_ok_and(|l| l.contains(said)),
+        "{what}: nothing in the log"
+    );
+}
+
+/// An X server that shuts down (SIGTERM) destroys its clients' windows
+/// before it closes the saver's connection: the window the saver draws in
+/// goes as when the daemon ends it. That is still the server going away,
+/// and said so, while drawing and while holding a finished slide, for
+/// `--window-id` and for `--root` on `$XSCREENSAVER_WINDOW` (issue 36
+/// item 3: both ended with 0, no word, nothing in the log).
+///
+/// Whether a shutting-down Xvfb gets the DestroyNotify out before it closes
+/// the connection varies from run to run (1 in 6 here), so each case also
+/// plays that order out for sure: the test holds the server (GrabServer:
+/// events still go out, no other client's request is answered), destroys
+/// the window, and kills the server.
+#[test]
+fn display_a_server_shutting_down_is_said_while_drawing_and_holding() {
+    for mode in ["--window-id", "--root"] {
+        for holding in [false, true] {
+            for shutdown in ["SIGTERM", "destroyed, then no answer"] {
+                let what = format!("{mode}, holding: {holding}, {shutdown}");
+                let Some((x, window, mut saver)) = embedded_drawing(mode, holding, &what) else {
+                    return;
+                };
+                if shutdown == "SIGTERM" {
+                    x.signal("TERM");
+                } else {
+                    x.conn.grab_server().unwrap();
+                    x.destroy_window(window);
+                    x.conn.sync().unwrap();
+                    x.signal("KILL");
+                }
+                expect_server_gone(&mut saver, &what);
+            }
+        }
+    }
+}
+
+/// An Xvfb with a 120x90 window, and the saver in `mode` drawing in it
+/// (`--root` through `$XSCREENSAVER_WINDOW`); if `holding`, its first
+/// slide is finished and held.
+fn embedded_drawing(mode: &str, holding: bool, what: &str) -> Option<(Xvfb, u32, Saver)> {
+    let x = Xvfb::start(320, 240, &[])?;
+    let window = x.create_window(120, 90);
+    let id = format!("0x{window:x}");
+    let root = mode == "--root";
+    let mut args = match root {
+        true => vec![mode],
+        false => vec![mode, id.as_str()],
+    };
+    args.extend(["--set", "pause_seconds=60"]);
+    let env = match root {
+        true => vec![("XSCREENSAVER_WINDOW", id.as_str())],
+        false => vec![],
+    };
+    let mut saver = Saver::start(&x, "server-shutdown", &args, &env);
+    xvfb::poll(&mut saver, &format!("{what}: drawing"), || {
+        xvfb::lit_fraction(&x.grab(window, 120, 90)) > 0.0
+    });
+    if holding {
+        xvfb::poll(&mut saver, &format!("{what}: a slide"), || {
+            xvfb::looks_drawn(&x.grab(window, 120, 90))
+        });
+        // Drawn in half a second (draw_seconds=0.5), then held.
+        std::thread::sleep(std::time::Duration::from_millis(1500));
+    }
+    Some((x, window, saver))
 }

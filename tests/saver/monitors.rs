@@ -6,7 +6,8 @@ use crate::common::xvfb;
 
 use crate::common::randr;
 
-use xvfb::{Geometry, Saver, Xvfb, looks_drawn, poll};
+use x11rb::protocol::xproto::ConnectionExt as _;
+use xvfb::{Geometry, Saver, Xvfb, expect_exit, looks_drawn, poll};
 
 const LEFT: Geometry = (0, 0, 640, 480);
 const RIGHT: Geometry = (640, 0, 640, 480);
@@ -146,4 +147,99 @@ fn display_fullscreen_opens_and_closes_windows_as_monitors_come_and_go() {
     // The input grab survived the windows coming and going: a key ends it.
     x.key(38);
     xvfb::expect_exit(&mut saver, "a key after the windows changed");
+}
+
+/// Where the pointer is on the screen.
+fn pointer(x: &Xvfb) -> (i16, i16) {
+    let reply = x.conn.query_pointer(x.root).unwrap().reply().unwrap();
+    (reply.root_x, reply.root_y)
+}
+
+/// Starts `/s` on `x` and waits for its mountain on the whole screen and
+/// for its input grab, whose connection tells the server's moves of the
+/// pointer from a person's (before it holds, a window's pointer events
+/// are the witness: see app.rs).
+fn start_drawn(x: &Xvfb, name: &str) -> Saver {
+    let trace = [("MOUNTAINS_TRACE", "1")];
+    let mut saver = Saver::start(x, name, &["/s", "--set", "pause_seconds=60"], &trace);
+    let screen = (0, 0, x.size.0, x.size.1);
+    poll(&mut saver, "a mountain on the screen", || {
+        looks_drawn(&x.grab_rect(screen))
+    });
+    poll(&mut saver, "the input grab", || {
+        x.pointer_grabbed_elsewhere()
+    });
+    saver
+}
+
+/// Waits for the saver's window to fit the 640x480 screen the test made,
+/// and for a mountain on it: the server's move of the pointer has long
+/// reached the saver by then.
+fn expect_fitted_to_640x480(x: &Xvfb, saver: &mut Saver) {
+    poll(saver, "the window to fit the 640x480 mode", || {
+        x.mapped_places() == vec![LEFT]
+    });
+    poll(saver, "a mountain fitted to 640x480", || {
+        looks_drawn(&x.grab_rect(LEFT))
+    });
+    saver.assert_running();
+}
+
+/// An 800x600 screen with the pointer near its corner, outside the
+/// 640x480 the tests shrink it to, and `/s` drawn on it.
+fn cornered(name: &str) -> Option<(Xvfb, Saver)> {
+    let x = Xvfb::start(800, 600, &[])?;
+    x.warp_to(780, 580);
+    assert_eq!(pointer(&x), (780, 580));
+    let saver = start_drawn(&x, name);
+    Some((x, saver))
+}
+
+/// A smaller mode puts the pointer back onto the screen: the server moved
+/// it, not a person, and the saver runs on (issue 36: it ended at once,
+/// "ended by PointerAt(639, 479)"). A move after the change still ends it.
+#[test]
+fn display_fullscreen_a_mode_change_that_moves_the_pointer_does_not_end_it() {
+    let Some((x, mut saver)) = cornered("mon-clamp") else {
+        return;
+    };
+    randr::set_resolution(&x.conn, x.root, 640, 480);
+    assert_eq!(pointer(&x), (639, 479), "the server moved the pointer");
+    expect_fitted_to_640x480(&x, &mut saver);
+    x.warp_to(300, 300);
+    expect_exit(&mut saver, "the pointer moved after the mode change");
+}
+
+/// Many mode changes in a row, each moving the pointer further in: none
+/// is a person; a relative move afterwards is.
+#[test]
+fn display_fullscreen_a_storm_of_mode_changes_does_not_end_it() {
+    let Some((x, mut saver)) = cornered("mon-storm") else {
+        return;
+    };
+    for _ in 0..4 {
+        for (w, h) in [(760, 560), (700, 520), (640, 480), (800, 600)] {
+            randr::set_resolution(&x.conn, x.root, w, h);
+        }
+    }
+    randr::set_resolution(&x.conn, x.root, 640, 480);
+    assert_eq!(pointer(&x), (639, 479), "the server moved the pointer");
+    expect_fitted_to_640x480(&x, &mut saver);
+    x.move_by(-30, 0);
+    expect_exit(&mut saver, "a 30 px move after the storm");
+}
+
+/// The output goes off and comes back with a smaller mode (a projector
+/// unplugged and plugged again): the pointer the server moves is no person.
+#[test]
+fn display_fullscreen_an_output_that_goes_and_comes_back_smaller_does_not_end_it() {
+    let Some((x, mut saver)) = cornered("mon-off") else {
+        return;
+    };
+    randr::switch_off(&x.conn, x.root);
+    randr::set_resolution(&x.conn, x.root, 640, 480);
+    assert_eq!(pointer(&x), (639, 479), "the server moved the pointer");
+    expect_fitted_to_640x480(&x, &mut saver);
+    x.key(38);
+    expect_exit(&mut saver, "a key after the output came back");
 }

@@ -82,6 +82,10 @@ pub fn run(layer: Layer, settings: Settings, opened: Option<Mountain>) -> Result
             .dispatch(timeout, &mut app)
             .map_err(|e| SaverError::NoCompositor(format!("the connection failed: {e}")))?;
         timeout = app.step(Instant::now());
+        // The signal handler's flag: strips being drawn stopped for it.
+        if crate::signals::ending() && !app.ended {
+            app.end(&"SIGTERM or SIGINT");
+        }
     }
     app.error.map_or(Ok(()), Err)
 }

@@ -108,6 +108,12 @@ fn format_of(setup: &Setup, depth: u8, visual: u32) -> Result<Format, String> {
     })
 }
 
+/// True when a window of `depth` bits and visual `visual` can be drawn
+/// into, by softbuffer or by this path.
+pub fn can_draw(setup: &Setup, depth: u8, visual: u32) -> bool {
+    format_of(setup, depth, visual).is_ok()
+}
+
 /// True when the server offers MIT-SHM (softbuffer then presents cheaply).
 pub fn server_has_shm(conn: &RustConnection) -> bool {
     matches!(conn.extension_information("MIT-SHM"), Ok(Some(_)))

@@ -93,6 +93,9 @@ pub fn run(
     let conn = Arc::new(conn);
     let xid = window.unwrap_or_else(|| root_target(&conn, screen));
     let size = watch_window(&conn, xid)?;
+    if let Some(why) = crate::x11_visual::window_refusal(&*conn, screen, xid) {
+        return Err(SaverError::Unsupported(why));
+    }
     let (tx, rx) = mpsc::channel();
     spawn_event_thread(conn.clone(), xid, tx.clone())?;
     crate::signals::on_terminate(move || {
@@ -147,6 +150,11 @@ fn spawn_event_thread(
                     Notice::Resized(e.width.into(), e.height.into())
                 }
                 Event::Expose(e) if e.window == xid && e.count == 0 => Notice::Exposed,
+                // A server that shuts down (SIGTERM, the session ending)
+                // destroys the other clients' windows, xscreensaver's among
+                // them, before it closes our connection: that is no
+                // daemon ending us, and it must be said.
+                Event::DestroyNotify(e) if e.window == xid && !server_answers(&conn) => break,
                 Event::DestroyNotify(e) if e.window == xid => Notice::Destroyed,
                 _ => continue,
             };
@@ -162,6 +170,12 @@ fn spawn_event_thread(
         .spawn(watch)
         .map(drop)
         .map_err(|e| SaverError::Other(format!("cannot start the X event thread: {e}")))
+}
+
+/// True if the X server still answers a request: false while it shuts
+/// down, which serves no request from then on.
+fn server_answers(conn: &RustConnection) -> bool {
+    conn.get_input_focus().is_ok_and(|c| c.reply().is_ok())
 }
 
 /// The drawing loop of an embedded slide show.
@@ -180,6 +194,11 @@ impl Embedded {
             let damage = self.show.tick(now);
             if !damage.is_empty() {
                 self.present(damage)?;
+            }
+            // The signal handler's flag: strips being drawn stopped for it.
+            if crate::signals::ending() {
+                self.trace.ended_by(&Notice::Terminate);
+                return Ok(());
             }
             let first = match self.show.wake_at(now) {
                 Some(at) => rx.recv_timeout(at.saturating_duration_since(Instant::now())),
@@ -202,7 +221,11 @@ impl Embedded {
         let mut exposed = false;
         for notice in notices {
             match notice {
-                Notice::Destroyed | Notice::Terminate => return Ok(true),
+                Notice::Terminate => {
+                    self.trace.ended_by(&notice);
+                    return Ok(true);
+                }
+                Notice::Destroyed => return Ok(true),
                 Notice::ServerGone => return Err(SaverError::server_gone()),
                 Notice::Resized(w, h) => size = Some((w, h)),
                 Notice::Exposed => exposed = true,

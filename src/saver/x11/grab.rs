@@ -9,7 +9,8 @@
 //! pointer (`xdotool mousemove`, remote desktops) sends no raw event: the
 //! grab asks for the pointer's motion and a thread passes each place on,
 //! and with it the relative devices' raw motion (see x11/motion.rs: winit
-//! counts an absolute device's place as motion).
+//! counts an absolute device's place as motion). The pointer the server
+//! moves itself when the screen changes is no person (see x11/placed.rs).
 
 use std::sync::Arc;
 
@@ -20,6 +21,7 @@ use x11rb::rust_connection::RustConnection;
 use x11rb::{CURRENT_TIME, NONE};
 
 use super::motion::Devices;
+use super::placed::{self, ServerMoves};
 
 /// Attempts before giving up: the window may take a few frames to be viewable.
 const ATTEMPTS: u32 = 50;
@@ -31,6 +33,9 @@ pub enum Pointer {
     At(i16, i16),
     /// A relative device moved it by this much (perhaps against an edge).
     Moved(f64, f64),
+    /// The screen changed and the server may have moved it itself: it is
+    /// at this place now, the origin to measure from (see x11/placed.rs).
+    Placed(i16, i16),
 }
 
 /// The grab, held as long as this lives (closing the connection releases it).
@@ -52,6 +57,13 @@ impl InputGrab {
             .as_ref()
             .and_then(|(c, screen)| c.setup().roots.get(*screen))
             .map_or(0, |s| s.root);
+        // Before the pointer grab, whose motion events they explain: a
+        // screen change before the grab's thread starts is then queued.
+        if let Some((c, _)) = conn.as_ref()
+            && !placed::watch_screen(c, root)
+        {
+            crate::log::warn("screen changes cannot be told from pointer moves");
+        }
         InputGrab {
             conn: conn.map(|(c, _)| Arc::new(c)),
             root,
@@ -111,35 +123,18 @@ impl InputGrab {
 
     /// Calls `tell` with the pointer's place on the screen (root
     /// coordinates) at each motion the pointer grab reports and with each
-    /// relative device's raw motion, on a thread of its own, until the
+    /// relative device's raw motion, and after a screen change with the
+    /// place the server put it, on a thread of its own, until the
     /// connection ends. True when the raw motion is watched (XInput 2.2);
     /// nothing is without a connection.
     pub fn watch_motion(&self, tell: impl Fn(Pointer) + Send + 'static) -> bool {
         let Some(conn) = self.conn.clone() else {
             return false;
         };
-        let mut devices = Devices::watch(&*conn, self.root);
+        let devices = Devices::watch(&*conn, self.root);
         let raw = devices.is_some();
         let root = self.root;
-        let watch = move || {
-            // A move before the grab held and the raw motion was asked for
-            // reached neither: the place now tells of it.
-            if let Some(p) = conn.query_pointer(root).ok().and_then(|c| c.reply().ok()) {
-                tell(Pointer::At(p.root_x, p.root_y));
-            }
-            while let Ok(event) = conn.wait_for_event() {
-                match event {
-                    Event::MotionNotify(e) => tell(Pointer::At(e.root_x, e.root_y)),
-                    Event::XinputRawMotion(e) => {
-                        if let Some((dx, dy)) = devices.as_ref().map(|d| d.travel(&e)) {
-                            tell(Pointer::Moved(dx, dy));
-                        }
-                    }
-                    Event::XinputHierarchy(_) => devices = Devices::query(&*conn),
-                    _ => {}
-                }
-            }
-        };
+        let watch = move || follow_pointer(&conn, root, devices, tell);
         let spawned = std::thread::Builder::new()
             .name("x11-pointer".into())
             .spawn(watch);
@@ -148,5 +143,87 @@ impl InputGrab {
             return false;
         }
         raw
+    }
+}
+
+/// The grab's thread: tells each place and relative move of the pointer
+/// until the connection ends.
+fn follow_pointer(
+    conn: &RustConnection,
+    root: u32,
+    devices: Option<Devices>,
+    tell: impl Fn(Pointer),
+) {
+    let mut follower = Follower {
+        conn,
+        root,
+        devices,
+        server_moves: ServerMoves::default(),
+        last: None,
+        tell,
+    };
+    // A move before the grab held and the raw motion was asked for
+    // reached neither: the place now tells of it, unless the screen
+    // changed meanwhile (its events came before the answer, and are
+    // queued now).
+    let Some(first) = follower.server_moves.look(conn, root) else {
+        return;
+    };
+    let mut queued = Vec::new();
+    while let Ok(Some(event)) = conn.poll_for_event_with_sequence() {
+        queued.push(event);
+    }
+    let moves = follower.server_moves;
+    let changed = queued
+        .iter()
+        .any(|(e, seq)| moves.before_the_answer(*seq) && placed::is_screen_change(e, root));
+    follower.last = Some(first);
+    (follower.tell)(match changed {
+        true => Pointer::Placed(first.0, first.1),
+        false => Pointer::At(first.0, first.1),
+    });
+    for (event, sequence) in queued {
+        follower.handle(event, sequence);
+    }
+    while let Ok((event, sequence)) = conn.wait_for_event_with_sequence() {
+        follower.handle(event, sequence);
+    }
+}
+
+/// What the grab's thread knows between two events.
+struct Follower<'a, T: Fn(Pointer)> {
+    conn: &'a RustConnection,
+    root: u32,
+    devices: Option<Devices>,
+    server_moves: ServerMoves,
+    /// The place last told: a screen change that left the pointer there
+    /// tells nothing new (one change sends several events).
+    last: Option<(i16, i16)>,
+    tell: T,
+}
+
+impl<T: Fn(Pointer)> Follower<'_, T> {
+    fn handle(&mut self, event: Event, sequence: u64) {
+        match event {
+            Event::MotionNotify(_) if self.server_moves.before_the_answer(sequence) => {}
+            Event::MotionNotify(e) => {
+                self.last = Some((e.root_x, e.root_y));
+                (self.tell)(Pointer::At(e.root_x, e.root_y));
+            }
+            e if placed::is_screen_change(&e, self.root) => {
+                let place = self.server_moves.look(self.conn, self.root);
+                if let Some(p) = place.filter(|&p| Some(p) != self.last) {
+                    self.last = Some(p);
+                    (self.tell)(Pointer::Placed(p.0, p.1));
+                }
+            }
+            Event::XinputRawMotion(e) => {
+                if let Some((dx, dy)) = self.devices.as_ref().map(|d| d.travel(&e)) {
+                    (self.tell)(Pointer::Moved(dx, dy));
+                }
+            }
+            Event::XinputHierarchy(_) => self.devices = Devices::query(self.conn),
+            _ => {}
+        }
     }
 }

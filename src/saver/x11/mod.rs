@@ -7,5 +7,6 @@ pub mod embed;
 pub mod grab;
 pub mod heads;
 pub(super) mod motion;
+mod placed;
 pub(super) mod pointer;
 pub mod server_gone;
