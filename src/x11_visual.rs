@@ -38,7 +38,7 @@ pub fn drawable_visual_on(conn: &impl Connection, screen: usize) -> Option<u32> 
 /// Why no window can be drawn on screen `screen` (what it offers, what is
 /// needed, what to do), as a sentence; `None` when one of its visuals will
 /// do. A screen of 8-bit visuals only was refused with softbuffer's "Visual
-/// 0x21 does not use softbuffer's pixel format" (issue 36 item 5).
+/// 0x21 does not use softbuffer's pixel format".
 pub fn screen_refusal(setup: &Setup, screen: usize) -> Option<String> {
     let offers = only_offers(setup, screen)?;
     Some(format!(

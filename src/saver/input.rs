@@ -285,7 +285,7 @@ mod tests {
     fn other_keys_do_nothing() {
         assert_eq!(action_for_key(&ch("x")), None);
         assert_eq!(action_for_key(&ch("")), None);
-        // F1 shows the list of keys now (issue 10); other function keys do nothing.
+        // F1 shows the list of keys now; other function keys do nothing.
         assert_eq!(action_for_key(&Key::Named(NamedKey::F2)), None);
     }
 

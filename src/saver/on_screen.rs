@@ -3,8 +3,8 @@
 //!
 //! At 4K the auto grid has 2049 points a side: 16.8 MB of heights. Holding
 //! the shown mountain's heights while the next one is generated put two
-//! fields beside the frame and the window's image (VmHWM 109 MB, issue 18's
-//! target is 100). A generated mountain is its seed and the generator's
+//! fields beside the frame and the window's image, past what a screensaver
+//! should hold. A generated mountain is its seed and the generator's
 //! settings ("one seed, one mountain"), so its heights are let go during the
 //! hold and made again, bit for bit, in the rare case something wants them
 //! before the slide leaves the screen (a redraw after a resize or a colour

@@ -5,7 +5,7 @@
 //! A redraw nobody waits for any more (its window closed, a new slide came)
 //! is called off when dropped: its thread stops at the next stage instead of
 //! drawing a frame no one will see. Under a storm of monitor changes such
-//! threads piled up, each with a frame and a scene of its own (issue 22).
+//! threads piled up, each with a frame and a scene of its own.
 
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};

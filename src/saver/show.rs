@@ -53,7 +53,7 @@ pub struct Show {
     /// A complete redraw under way; the old frame stays up until it is done.
     redraw: Option<Redraw>,
     /// Asked for while `redraw` ran: one redraw at a time, so a storm of
-    /// resizes costs one thread, not one each (issue 22).
+    /// resizes costs one thread, not one each.
     again: Option<Again>,
     slideshow: Slideshow,
     /// Number of the slide on screen, counted from 0: picks its source.
@@ -458,7 +458,7 @@ impl Show {
 
     /// Starts generating the next mountain in the background, once per
     /// hold. The heights on screen, drawn, are let go first: the two
-    /// fields are not in memory at once (peak memory at 4K, issue 18).
+    /// fields are not in memory at once (the peak memory at 4K).
     fn prepare_next(&mut self) {
         if self.opened.is_some() {
             return;
@@ -648,7 +648,7 @@ mod tests {
 
     /// A storm of resizes (monitors changing) costs one redraw at a time:
     /// those asked while one runs become one more, at the latest size,
-    /// started when the first is shown (issue 22: one thread each piled up).
+    /// started when the first is shown (not a thread each, piling up).
     #[test]
     fn resizes_during_a_redraw_make_one_more_at_the_last_size() {
         let t0 = Instant::now();

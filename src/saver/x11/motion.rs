@@ -4,7 +4,7 @@
 //! winit passes every raw motion on as a delta, but an absolute device (XTEST
 //! as VNC servers drive it, a virtual machine's tablet) reports where it
 //! is: absolute motion to where the pointer already is came out as a jump
-//! of (300, 200) and ended the full-screen saver (issue 22 item 3). An
+//! of (300, 200) and ended the full-screen saver. An
 //! absolute device's motion that moves the pointer is seen where the pointer
 //! goes (the input grab's motion events); its raw values count nothing here.
 //! Nor do those of the XTEST devices, whose absolute fake motion passes for

@@ -2,7 +2,7 @@
 //! monitor goes, the server puts the pointer back onto what is left of the
 //! screen, and the input grab reports that as a motion like any other. A
 //! mode change (a docking laptop, a game, a projector) then ended the
-//! full-screen saver with nobody there (issue 36 item 1).
+//! full-screen saver with nobody there.
 //!
 //! The server tells of the screen's change (RandR events, the root's
 //! ConfigureNotify) before the motion it queues for the pointer it moved.
