@@ -377,6 +377,11 @@ impl Parser<'_> {
     fn key_flag(&mut self, arg: &str) -> Result<(), UsageError> {
         let (key, own) = key_flags::lookup(arg).ok_or_else(|| unknown_argument(arg))?;
         let kv = key_flags::take(arg, key, own, || self.value_str(arg).ok())?;
+        // Checked here, against the defaults (a value's range and type do
+        // not depend on the other keys), so the message names the flag typed.
+        let mut scratch = crate::settings::Settings::default();
+        crate::settings::load::apply_set(&mut scratch, &kv.0, &kv.1)
+            .map_err(|problem| UsageError(format!("{arg}: {}", problem.message)))?;
         self.inv.sets.push(kv);
         Ok(())
     }

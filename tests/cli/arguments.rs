@@ -214,10 +214,17 @@ fn every_key_is_a_flag_of_its_own() {
         .map(|(k, v)| (k.as_str(), v.as_str()))
         .collect();
     assert_eq!(got, want);
+    // Each flag with a value it accepts, its key's default: a value out of
+    // a key's range is refused as the flag is read.
+    let defaults = mountains::settings::Settings::default();
     for key in mountains::settings::keys::KEYS {
         let flag = format!("-{}", key.name.replace('_', "-"));
         let boolean = key.kind == mountains::settings::keys::Kind::Bool;
-        let args: &[&str] = if boolean { &[&flag] } else { &[&flag, "1"] };
+        let value = match mountains::settings::keys::get(&defaults, key) {
+            mountains::settings::keys::Value::Str(s) => s,
+            v => v.to_string(),
+        };
+        let args: &[&str] = if boolean { &[&flag] } else { &[&flag, &value] };
         let inv = parse(args).unwrap_or_else(|e| panic!("{flag}: {e}"));
         assert_eq!(inv.sets[0].0, key.name, "{flag}");
     }
