@@ -30,17 +30,7 @@ fn without_display_the_saver_and_the_settings_say_set_display() {
     .into_iter()
     .chain(only_linux)
     {
-        let home = xvfb::TempDir::new("no-display");
-        let out = Command::new(env!("CARGO_BIN_EXE_mountains"))
-            .args(mode)
-            .env_remove("DISPLAY")
-            .env_remove("WAYLAND_DISPLAY")
-            .env_remove("WAYLAND_SOCKET")
-            .env("HOME", &home.0)
-            .env("XDG_CONFIG_HOME", home.0.join("config"))
-            .env("XDG_DATA_HOME", home.0.join("data"))
-            .output()
-            .expect("run mountains");
+        let out = without_wayland(mode, None);
         let stderr = String::from_utf8_lossy(&out.stderr);
         assert!(
             !out.status.success(),
@@ -63,17 +53,7 @@ fn a_display_that_cannot_be_opened_is_named_in_every_mode() {
     let displays = [dead.as_str(), "nohost.invalid:0", "garbage", ":", "::"];
     for display in displays {
         for mode in ["--settings", "/s", "--window", "--root"] {
-            let home = xvfb::TempDir::new("bad-display");
-            let out = Command::new(env!("CARGO_BIN_EXE_mountains"))
-                .arg(mode)
-                .env("DISPLAY", display)
-                .env_remove("WAYLAND_DISPLAY")
-                .env_remove("WAYLAND_SOCKET")
-                .env("HOME", &home.0)
-                .env("XDG_CONFIG_HOME", home.0.join("config"))
-                .env("XDG_DATA_HOME", home.0.join("data"))
-                .output()
-                .expect("run mountains");
+            let out = without_wayland(&[mode], Some(display));
             let stderr = String::from_utf8_lossy(&out.stderr);
             let what = format!("DISPLAY={display:?} {mode}");
             assert!(!out.status.success(), "{what} succeeded");
@@ -88,6 +68,25 @@ fn a_display_that_cannot_be_opened_is_named_in_every_mode() {
             assert!(!stderr.contains("panicked"), "{what}: {stderr}");
         }
     }
+}
+
+/// Runs the binary with `args` in a private home, with no Wayland and
+/// `display` as DISPLAY (unset for `None`), to its end.
+fn without_wayland(args: &[&str], display: Option<&str>) -> std::process::Output {
+    let home = xvfb::TempDir::new("no-wayland");
+    let mut command = Command::new(env!("CARGO_BIN_EXE_mountains"));
+    command
+        .args(args)
+        .env_remove("WAYLAND_DISPLAY")
+        .env_remove("WAYLAND_SOCKET")
+        .env("HOME", &home.0)
+        .env("XDG_CONFIG_HOME", home.0.join("config"))
+        .env("XDG_DATA_HOME", home.0.join("data"));
+    match display {
+        Some(display) => command.env("DISPLAY", display),
+        None => command.env_remove("DISPLAY"),
+    };
+    command.output().expect("run mountains")
 }
 
 /// A display number no X server listens on here.
