@@ -45,8 +45,8 @@ pub fn one_pool() {
 /// but once it frees such a block it raises its threshold to the block's
 /// size, and a later field or map of that size comes from a pool instead,
 /// whose freed pages it keeps: a slide show making a 4K mountain every
-/// slide grew from 97 to 114 MB (VmRSS) by its third slide, the heights
-/// of slides gone. Fixing the threshold (at glibc's own starting value)
+/// slide kept growing over its first slides, holding the heights of
+/// slides gone. Fixing the threshold (at glibc's own starting value)
 /// keeps what the process holds to what is alive. For the long-running
 /// modes; call before other threads start.
 pub fn give_back_big_blocks() {
