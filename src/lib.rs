@@ -19,6 +19,7 @@ pub mod help;
 pub mod log;
 pub mod memory;
 pub mod mountain;
+pub mod platform;
 pub mod quality;
 pub mod quote;
 pub mod render;
@@ -31,5 +32,3 @@ pub mod snapshot;
 pub mod spelling;
 pub mod terrain;
 mod threads;
-#[cfg(unix)]
-pub mod x11_visual;

@@ -101,12 +101,13 @@ fn main() -> ExitCode {
             // The saver's own check: without it winit's error names a file
             // in its source instead of what to do.
             #[cfg(unix)]
-            if let Err(e) = saver::libcheck::check_display(inv.xss.display.is_some()) {
+            if let Err(e) = mountains::platform::libcheck::check_display(inv.xss.display.is_some())
+            {
                 log::error(&e.to_string());
                 return ExitCode::FAILURE;
             }
             #[cfg(unix)]
-            saver::x11::server_gone::report_when_the_server_goes();
+            mountains::platform::x11::server_gone::report_when_the_server_goes();
             mountains::settings_ui::run(inv.config.as_deref(), &loaded, *parent)
         }
         mode => run_saver(mode, loaded, open, &inv.xss),
@@ -167,7 +168,7 @@ fn run_saver(
         }
     });
     #[cfg(unix)]
-    saver::x11::server_gone::report_when_the_server_goes();
+    mountains::platform::x11::server_gone::report_when_the_server_goes();
     match saver::run(mode, loaded.settings, opened, xss) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {

@@ -21,9 +21,9 @@ use super::screen::Screen;
 use super::show::Show;
 use super::slideshow::Pacing;
 use super::trace::Trace;
-#[cfg(unix)]
-use super::x11::grab::Pointer;
 use crate::mountain::Mountain;
+#[cfg(unix)]
+use crate::platform::x11::grab::Pointer;
 use crate::render::Damage;
 use crate::settings::{Monitors, Settings};
 
@@ -71,10 +71,10 @@ enum UserEvent {
 /// Runs `mode` with winit until it ends.
 pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Result<(), SaverError> {
     #[cfg(unix)]
-    let backend = super::libcheck::check_display(super::options::x_display_named())?;
+    let backend = crate::platform::libcheck::check_display(super::options::x_display_named())?;
     #[cfg(target_os = "linux")]
     let _claim = match mode {
-        AppMode::Fullscreen => match super::single::claim(backend) {
+        AppMode::Fullscreen => match crate::platform::single::claim(backend) {
             Ok(Some(claim)) => Some(claim),
             Ok(None) => {
                 crate::console::err(
@@ -92,7 +92,7 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
     let mut builder = EventLoop::<UserEvent>::with_user_event();
     #[cfg(windows)]
     if let AppMode::Child(_) = mode {
-        super::win32::embed::leave_dpi_to_the_parent(&mut builder);
+        crate::platform::win32::embed::leave_dpi_to_the_parent(&mut builder);
     }
     #[cfg(unix)]
     let wayland = force_backend(&mut builder, backend);
@@ -124,8 +124,8 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
     // reports as raw motion) are measured from.
     #[cfg(unix)]
     let first_look = match wayland {
-        true => super::x11::pointer::FirstLook::default(),
-        false => super::x11::pointer::first_look(mode == AppMode::Fullscreen),
+        true => crate::platform::x11::pointer::FirstLook::default(),
+        false => crate::platform::x11::pointer::first_look(mode == AppMode::Fullscreen),
     };
     #[cfg(unix)]
     if let Some(why) = first_look.refusal {
@@ -168,9 +168,9 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
 #[cfg(unix)]
 fn force_backend(
     builder: &mut winit::event_loop::EventLoopBuilder<UserEvent>,
-    backend: super::backend::Backend,
+    backend: crate::platform::backend::Backend,
 ) -> bool {
-    use super::backend::Backend;
+    use crate::platform::backend::Backend;
     use winit::platform::wayland::EventLoopBuilderExtWayland;
     use winit::platform::x11::EventLoopBuilderExtX11;
     match backend {
@@ -186,12 +186,12 @@ fn force_backend(
 #[cfg(unix)]
 fn watch_heads(event_loop: &EventLoop<UserEvent>) -> Vec<Head> {
     let proxy = event_loop.create_proxy();
-    let watched = super::x11::heads::watch(move |heads| {
+    let watched = crate::platform::x11::heads::watch(move |heads| {
         let _ = proxy.send_event(UserEvent::Heads(heads));
     });
     watched.unwrap_or_else(|e| {
         crate::log::warn(&format!("monitor changes will not be followed: {e}"));
-        super::x11::heads::query().unwrap_or_default()
+        crate::platform::x11::heads::query().unwrap_or_default()
     })
 }
 
@@ -216,7 +216,7 @@ struct App {
     started: bool,
     /// Full screen on X11: the keyboard and pointer grab, until it holds.
     #[cfg(unix)]
-    grab: Option<super::x11::grab::InputGrab>,
+    grab: Option<crate::platform::x11::grab::InputGrab>,
     /// Whether the grab's pointer motion is passed on yet.
     #[cfg(unix)]
     watching_pointer: bool,
@@ -246,7 +246,7 @@ impl ApplicationHandler<UserEvent> for App {
         // event (Wine may deliver none until then) would become the origin.
         #[cfg(windows)]
         if self.mode == AppMode::Fullscreen
-            && let Some((x, y)) = super::win32::fullscreen::cursor_position()
+            && let Some((x, y)) = crate::platform::win32::fullscreen::cursor_position()
         {
             self.wake.moved_to(x.into(), y.into());
         }
@@ -406,8 +406,8 @@ impl ApplicationHandler<UserEvent> for App {
             .filter_map(|s| s.show.wake_at(now))
             .min();
         #[cfg(windows)]
-        let parent =
-            matches!(self.mode, AppMode::Child(_)).then(|| now + super::win32::embed::PARENT_POLL);
+        let parent = matches!(self.mode, AppMode::Child(_))
+            .then(|| now + crate::platform::win32::embed::PARENT_POLL);
         #[cfg(not(windows))]
         let parent = None;
         let grab = grabbing.then(|| now + super::slideshow::FRAME_INTERVAL);
@@ -452,7 +452,7 @@ impl App {
                 .first()
                 .and_then(|s| super::present::x11_window_id(&*s.window));
             match xid {
-                Some(xid) => self.grab = Some(super::x11::grab::InputGrab::new(xid)),
+                Some(xid) => self.grab = Some(crate::platform::x11::grab::InputGrab::new(xid)),
                 None => return false,
             }
         }
@@ -493,10 +493,10 @@ impl App {
     /// the threshold from where it started. False when its place is unknown.
     #[cfg(windows)]
     fn cursor_moved_win32(&mut self, event_loop: &ActiveEventLoop) -> bool {
-        if super::win32::fullscreen::take_display_change() {
+        if crate::platform::win32::fullscreen::take_display_change() {
             self.wake.reset_origin();
         }
-        let Some((x, y)) = super::win32::fullscreen::cursor_position() else {
+        let Some((x, y)) = crate::platform::win32::fullscreen::cursor_position() else {
             return false;
         };
         if self.wake.moved_to(x.into(), y.into()) {
@@ -520,10 +520,10 @@ impl App {
             }
             #[cfg(windows)]
             AppMode::Child(parent) => {
-                let matched = super::win32::embed::match_parent_dpi(parent);
+                let matched = crate::platform::win32::embed::match_parent_dpi(parent);
                 self.trace
                     .note(&format!("preview DPI awareness as the parent's: {matched}"));
-                let attrs = super::win32::embed::child_attributes(base, parent)?;
+                let attrs = crate::platform::win32::embed::child_attributes(base, parent)?;
                 self.add_screen(event_loop, attrs, true, None)
             }
         }
@@ -629,7 +629,7 @@ impl App {
         if self.mode == AppMode::Fullscreen {
             window.set_cursor_visible(false);
             #[cfg(windows)]
-            super::win32::fullscreen::keep_covering(&window);
+            crate::platform::win32::fullscreen::keep_covering(&window);
         }
         let size = window.inner_size();
         let size = (size.width, size.height);
@@ -722,7 +722,7 @@ impl App {
     /// The preview child follows its parent's size and dies with it.
     #[cfg(windows)]
     fn follow_parent(&mut self, event_loop: &ActiveEventLoop, parent: u64) {
-        use super::win32::embed::{follow_parent, parent_alive};
+        use crate::platform::win32::embed::{follow_parent, parent_alive};
         let alive = match self.screens.first() {
             Some(s) => follow_parent(parent, &s.window),
             None => parent_alive(parent),

@@ -25,31 +25,21 @@
 
 pub mod actions;
 pub mod app;
-#[cfg(unix)]
-pub mod backend;
 mod buffer_history;
-mod error;
+pub(crate) mod error;
 pub mod heads;
 pub mod input;
-pub mod libcheck;
 mod on_screen;
-mod options;
+pub(crate) mod options;
 mod overlay;
 mod placement;
 pub mod present;
 mod redraw;
 mod screen;
 pub mod show;
-#[cfg(target_os = "linux")]
-pub mod single;
 pub mod slideshow;
 pub mod source;
-mod trace;
-#[cfg(target_os = "linux")]
-pub mod wayland;
-pub mod win32;
-#[cfg(unix)]
-pub mod x11;
+pub(crate) mod trace;
 
 use crate::cli::{Mode, XssOptions};
 use crate::mountain::Mountain;
@@ -113,7 +103,7 @@ fn run_embedded(
         })?),
         None => None,
     };
-    x11::embed::run(window, settings, opened)
+    crate::platform::x11::embed::run(window, settings, opened)
 }
 
 #[cfg(not(unix))]
@@ -135,7 +125,7 @@ fn run_layer(
     settings: Settings,
     opened: Option<Mountain>,
 ) -> Result<(), SaverError> {
-    wayland::layer::run(layer, settings, opened)
+    crate::platform::wayland::layer::run(layer, settings, opened)
 }
 
 #[cfg(not(target_os = "linux"))]
@@ -151,7 +141,7 @@ fn run_layer(
 
 #[cfg(unix)]
 fn check_library(library: &str, package: &str) -> Result<(), SaverError> {
-    if libcheck::can_dlopen(library) {
+    if crate::platform::libcheck::can_dlopen(library) {
         return Ok(());
     }
     Err(SaverError::MissingLibrary {

@@ -12,7 +12,7 @@ use crate::render::{Damage, Frame, Rect};
 
 use super::buffer_history::BufferHistory;
 #[cfg(unix)]
-use super::x11::bands::BandPresenter;
+use crate::platform::x11::bands::BandPresenter;
 
 /// Presents frames on one window, choosing the path that works on this server.
 pub struct Presenter<W: HasWindowHandle + HasDisplayHandle + Clone> {
@@ -122,7 +122,7 @@ impl<W: HasWindowHandle + HasDisplayHandle + Clone> Presenter<W> {
             };
             // Sent before the MIT-SHM query, so both answers come in one round trip.
             let geometry = conn.get_geometry(xid);
-            let has_shm = super::x11::bands::server_has_shm(&conn);
+            let has_shm = crate::platform::x11::bands::server_has_shm(&conn);
             let depth = geometry.ok().and_then(|c| c.reply().ok()).map(|g| g.depth);
             self.alpha = depth.map_or(0, opaque_alpha);
             if has_shm {

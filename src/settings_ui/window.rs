@@ -100,7 +100,7 @@ fn owned_by(
     if std::env::var_os("WAYLAND_DISPLAY").is_some() {
         return attrs;
     }
-    match crate::x11_visual::drawable_visual() {
+    match crate::platform::x11::visual::drawable_visual() {
         Some(id) => winit::platform::x11::WindowAttributesExtX11::with_x11_visual(attrs, id),
         None => attrs,
     }
@@ -125,7 +125,7 @@ fn x11_refusal() -> Option<String> {
     if std::env::var_os("WAYLAND_DISPLAY").is_some() {
         return None;
     }
-    crate::x11_visual::refusal()
+    crate::platform::x11::visual::refusal()
 }
 
 impl App {

@@ -54,7 +54,7 @@ const NAMESPACE: &str = "mountains";
 
 /// Runs the slide show on `layer` of every output until it ends.
 pub fn run(layer: Layer, settings: Settings, opened: Option<Mountain>) -> Result<(), SaverError> {
-    crate::saver::libcheck::check_wayland_client()?;
+    crate::platform::libcheck::check_wayland_client()?;
     let conn = Connection::connect_to_env().map_err(not_connected)?;
     let (globals, queue) =
         registry_queue_init(&conn).map_err(|e| SaverError::NoCompositor(e.to_string()))?;

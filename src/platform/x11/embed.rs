@@ -93,7 +93,7 @@ pub fn run(
     let conn = Arc::new(conn);
     let xid = window.unwrap_or_else(|| root_target(&conn, screen));
     let size = watch_window(&conn, xid)?;
-    if let Some(why) = crate::x11_visual::window_refusal(&*conn, screen, xid) {
+    if let Some(why) = crate::platform::x11::visual::window_refusal(&*conn, screen, xid) {
         return Err(SaverError::Unsupported(why));
     }
     let (tx, rx) = mpsc::channel();

@@ -5,7 +5,7 @@
 #[cfg(unix)]
 use super::backend::{self, Backend};
 #[cfg(unix)]
-use super::error::SaverError;
+use crate::saver::error::SaverError;
 
 /// Each library winit and softbuffer open under X11, and the Debian/Ubuntu package holding it.
 pub const X11_LIBRARIES: &[(&str, &str)] = &[

@@ -26,9 +26,9 @@ pub fn first_look(pointer: bool) -> FirstLook {
         return FirstLook::default();
     };
     FirstLook {
-        visual: crate::x11_visual::drawable_visual_on(&conn, screen),
+        visual: crate::platform::x11::visual::drawable_visual_on(&conn, screen),
         pointer: pointer.then(|| pointer_position(&conn, screen)).flatten(),
-        refusal: crate::x11_visual::screen_refusal(conn.setup(), screen),
+        refusal: crate::platform::x11::visual::screen_refusal(conn.setup(), screen),
     }
 }
 

@@ -8,5 +8,6 @@ pub mod grab;
 pub mod heads;
 pub(super) mod motion;
 mod placed;
-pub(super) mod pointer;
+pub(crate) mod pointer;
 pub mod server_gone;
+pub mod visual;
