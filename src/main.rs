@@ -12,7 +12,7 @@ use std::process::ExitCode;
 use mountains::cli::{self, Mode};
 use mountains::commands::{self, EXIT_USAGE};
 use mountains::settings::{load, paths};
-use mountains::{console, help, log, saver};
+use mountains::{console, help, log, platform, saver};
 
 fn main() -> ExitCode {
     saver::mark_start();
@@ -98,17 +98,17 @@ fn main() -> ExitCode {
         }
         Mode::Settings { parent } => {
             gui_log();
-            // The saver's own check: without it winit's error names a file
-            // in its source instead of what to do.
-            #[cfg(unix)]
-            if let Err(e) = mountains::platform::libcheck::check_display(inv.xss.display.is_some())
-            {
-                log::error(&e.to_string());
-                return ExitCode::FAILURE;
-            }
-            #[cfg(unix)]
-            mountains::platform::x11::server_gone::report_when_the_server_goes();
-            mountains::settings_ui::run(inv.config.as_deref(), &loaded, *parent)
+            // The saver's own choice and check: without it winit's error
+            // names a file in its source instead of what to do.
+            let backend = match platform::choose_backend(inv.xss.display.is_some()) {
+                Ok(backend) => backend,
+                Err(e) => {
+                    log::error(&e.to_string());
+                    return ExitCode::FAILURE;
+                }
+            };
+            platform::report_when_the_server_goes();
+            mountains::settings_ui::run(inv.config.as_deref(), &loaded, *parent, backend)
         }
         mode => run_saver(mode, loaded, open, &inv.xss),
     }
@@ -167,8 +167,7 @@ fn run_saver(
             None
         }
     });
-    #[cfg(unix)]
-    mountains::platform::x11::server_gone::report_when_the_server_goes();
+    platform::report_when_the_server_goes();
     match saver::run(mode, loaded.settings, opened, xss) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {

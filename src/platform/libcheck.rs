@@ -50,6 +50,7 @@ pub fn check_display(x_named: bool) -> Result<Backend, SaverError> {
     match chosen {
         Backend::X11 => check_libraries("X", X11_LIBRARIES)?,
         Backend::Wayland => check_libraries("Wayland", WAYLAND_LIBRARIES)?,
+        Backend::Windows => {}
     }
     Ok(chosen)
 }

@@ -43,6 +43,8 @@ pub(crate) mod trace;
 
 use crate::cli::{Mode, XssOptions};
 use crate::mountain::Mountain;
+use crate::platform;
+use crate::platform::modes::run_embedded;
 use crate::settings::Settings;
 
 pub use error::{SaverError, without_source_place};
@@ -67,7 +69,7 @@ pub fn run(
         } => run_in_parent(*handle, settings, opened),
         Mode::XRoot => run_embedded(None, settings, opened),
         Mode::XWindowId(id) => run_embedded(Some(*id), settings, opened),
-        Mode::Layer(layer) => run_layer(*layer, settings, opened),
+        Mode::Layer(layer) => platform::modes::run_layer(*layer, settings, opened),
         other => Err(SaverError::Unsupported(format!(
             "{other:?} is not a window mode"
         ))),
@@ -80,73 +82,8 @@ fn run_in_parent(
     settings: Settings,
     opened: Option<Mountain>,
 ) -> Result<(), SaverError> {
-    #[cfg(windows)]
-    {
-        app::run(app::AppMode::Child(handle), settings, opened)
+    match platform::modes::PREVIEW_AS_CHILD {
+        true => app::run(app::AppMode::Child(handle), settings, opened),
+        false => run_embedded(Some(handle), settings, opened),
     }
-    #[cfg(not(windows))]
-    {
-        run_embedded(Some(handle), settings, opened)
-    }
-}
-
-#[cfg(unix)]
-fn run_embedded(
-    window: Option<u64>,
-    settings: Settings,
-    opened: Option<Mountain>,
-) -> Result<(), SaverError> {
-    check_library("libxcb.so.1", "libxcb1")?;
-    let window = match window {
-        Some(id) => Some(u32::try_from(id).map_err(|_| {
-            SaverError::Unsupported(format!("{id} is not an X window id (too large)"))
-        })?),
-        None => None,
-    };
-    crate::platform::x11::embed::run(window, settings, opened)
-}
-
-#[cfg(not(unix))]
-fn run_embedded(
-    _window: Option<u64>,
-    _settings: Settings,
-    _opened: Option<Mountain>,
-) -> Result<(), SaverError> {
-    Err(SaverError::Unsupported(
-        "--root and --window-id need X11; on Windows use /s or /p".into(),
-    ))
-}
-
-/// `--layer`: wlr-layer-shell surfaces, on Linux (where the Wayland
-/// libraries are loaded at run time).
-#[cfg(target_os = "linux")]
-fn run_layer(
-    layer: crate::cli::Layer,
-    settings: Settings,
-    opened: Option<Mountain>,
-) -> Result<(), SaverError> {
-    crate::platform::wayland::layer::run(layer, settings, opened)
-}
-
-#[cfg(not(target_os = "linux"))]
-fn run_layer(
-    _layer: crate::cli::Layer,
-    _settings: Settings,
-    _opened: Option<Mountain>,
-) -> Result<(), SaverError> {
-    Err(SaverError::Unsupported(
-        "--layer needs a Wayland compositor with wlr-layer-shell (Linux)".into(),
-    ))
-}
-
-#[cfg(unix)]
-fn check_library(library: &str, package: &str) -> Result<(), SaverError> {
-    if crate::platform::libcheck::can_dlopen(library) {
-        return Ok(());
-    }
-    Err(SaverError::MissingLibrary {
-        system: "X",
-        library: library.into(),
-        package: package.into(),
-    })
 }

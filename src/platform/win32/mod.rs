@@ -4,3 +4,5 @@
 #[cfg(windows)]
 pub mod embed;
 pub mod fullscreen;
+#[cfg(windows)]
+pub mod host;

@@ -89,7 +89,7 @@ pub fn run(
     settings: Settings,
     opened: Option<Mountain>,
 ) -> Result<(), SaverError> {
-    let (conn, screen) = RustConnection::connect(None).map_err(SaverError::from_connect)?;
+    let (conn, screen) = RustConnection::connect(None).map_err(super::connect::connect_failed)?;
     let conn = Arc::new(conn);
     let xid = window.unwrap_or_else(|| root_target(&conn, screen));
     let size = watch_window(&conn, xid)?;

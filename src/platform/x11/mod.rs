@@ -3,11 +3,24 @@
 //! as plain images, the server going away).
 
 pub mod bands;
+pub mod connect;
 pub mod embed;
 pub mod grab;
 pub mod heads;
+pub mod host;
 pub(super) mod motion;
 mod placed;
 pub(crate) mod pointer;
 pub mod server_gone;
 pub mod visual;
+
+use raw_window_handle::{HasWindowHandle, RawWindowHandle};
+
+/// The X11 window id behind a window handle, if it is an X11 window.
+pub fn window_id(window: &impl HasWindowHandle) -> Option<u32> {
+    match window.window_handle().ok()?.as_raw() {
+        RawWindowHandle::Xlib(h) => u32::try_from(h.window).ok(),
+        RawWindowHandle::Xcb(h) => Some(h.window.get()),
+        _ => None,
+    }
+}
