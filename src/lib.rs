@@ -27,7 +27,7 @@ pub mod saved;
 pub mod saver;
 pub mod settings;
 pub mod settings_ui;
-pub mod signals;
+
 pub mod snapshot;
 pub mod spelling;
 pub mod terrain;

@@ -24,7 +24,7 @@ fn main() -> ExitCode {
         Err(e) => {
             // Arguments Windows sent and we did not understand are invisible
             // without a console: keep them in the log as well.
-            if cfg!(windows) {
+            if platform::os::NO_CONSOLE {
                 gui_log();
             }
             // The message names what was wrong; the usage after it would
@@ -62,7 +62,7 @@ fn main() -> ExitCode {
     }
     if matches!(inv.mode, Mode::Render { .. } | Mode::Heightmap { .. }) {
         mountains::memory::one_pool();
-        if let Err(e) = mountains::signals::end_cleanly() {
+        if let Err(e) = mountains::platform::signals::end_cleanly() {
             console::err(&format!("warning: cannot watch for SIGTERM: {e}"));
         }
     } else {

@@ -77,6 +77,7 @@ fn check_libraries(system: &'static str, libraries: &[(&str, &str)]) -> Result<(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::saver::error::SaverError;
 
     #[test]
     fn names_the_first_missing_library_and_its_package() {

@@ -25,6 +25,8 @@ pub mod images;
 pub mod libcheck;
 pub mod modal;
 pub mod modes;
+pub mod os;
+pub mod signals;
 #[cfg(target_os = "linux")]
 pub mod single;
 #[cfg(layer_shell_platform)]

@@ -96,7 +96,7 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
         _ => DeviceEvents::Never,
     });
     let proxy = event_loop.create_proxy();
-    crate::signals::on_terminate(move || {
+    crate::platform::signals::on_terminate(move || {
         let _ = proxy.send_event(UserEvent::Terminate);
     })
     .map_err(|e| SaverError::Other(format!("cannot watch for SIGTERM: {e}")))?;
@@ -217,7 +217,7 @@ impl ApplicationHandler<UserEvent> for App {
     }
 
     fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
-        if crate::signals::ending() {
+        if crate::platform::signals::ending() {
             return self.end_on_signal(event_loop);
         }
         let now = Instant::now();
@@ -228,7 +228,7 @@ impl ApplicationHandler<UserEvent> for App {
             self.present(event_loop, i, damage);
         }
         // A signal while strips were drawn: they stopped for it.
-        if crate::signals::ending() {
+        if crate::platform::signals::ending() {
             return self.end_on_signal(event_loop);
         }
         let first = self.screens.first().map(|s| &*s.window);

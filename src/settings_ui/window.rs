@@ -53,7 +53,7 @@ pub fn run(make: MakeScreen, parent: Option<u64>, backend: Backend) -> Result<()
         .map_err(|e| platform::event_loop_failed(&e.to_string(), backend).to_string())?;
     // SIGTERM, SIGINT, SIGHUP: close as Cancel does (nothing written), exit 0.
     let proxy = event_loop.create_proxy();
-    crate::signals::on_terminate(move || {
+    crate::platform::signals::on_terminate(move || {
         let _ = proxy.send_event(Terminate);
     })
     .map_err(|e| format!("cannot watch for SIGTERM: {e}"))?;
@@ -299,7 +299,7 @@ impl ApplicationHandler<Terminate> for App {
 
     fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
         // The signal handler's flag, seen before the watcher's notice.
-        if crate::signals::ending() {
+        if crate::platform::signals::ending() {
             return event_loop.exit();
         }
         if self.screen.as_mut().is_some_and(Screen::poll_file)

@@ -2,6 +2,10 @@
 //! and full-screen windows refitted after a display change.
 
 #[cfg(windows)]
+pub mod clock;
+#[cfg(windows)]
+pub mod console;
+#[cfg(windows)]
 pub mod embed;
 pub mod fullscreen;
 #[cfg(windows)]

@@ -98,7 +98,7 @@ pub fn run(
     }
     let (tx, rx) = mpsc::channel();
     spawn_event_thread(conn.clone(), xid, tx.clone())?;
-    crate::signals::on_terminate(move || {
+    crate::platform::signals::on_terminate(move || {
         let _ = tx.send(Notice::Terminate);
     })
     .map_err(|e| SaverError::Other(format!("cannot watch for SIGTERM: {e}")))?;
@@ -196,7 +196,7 @@ impl Embedded {
                 self.present(damage)?;
             }
             // The signal handler's flag: strips being drawn stopped for it.
-            if crate::signals::ending() {
+            if crate::platform::signals::ending() {
                 self.trace.ended_by(&Notice::Terminate);
                 return Ok(());
             }
