@@ -38,8 +38,8 @@ pub enum Motion {
     /// Already counted another way (the X11 grab's own motion), or the
     /// pointer is still near where it started.
     Handled,
-    /// The pointer is this far from where it started (Windows, which
-    /// reads the cursor's place): the saver ends.
+    /// The cursor is here, far enough from where it started (Windows,
+    /// which reads the cursor's place): the saver ends.
     MovedTo(i32, i32),
     /// The pointer moved far enough, as the event showed: the saver ends.
     Away,

@@ -1,27 +1,21 @@
-//! The window layer: the only module that knows about winit, softbuffer and X11.
+//! The window layer: the slide shows on winit and softbuffer windows.
+//! What one window system knows lives in `crate::platform`.
 //!
 //! `run` takes a window mode and paces a slide show of mountains on it:
 //! full screen on every monitor (`app`), a small preview or a normal window
-//! (`app`), or a window another program owns (`x11::embed`, `win32::embed`).
-//!
-//! Each platform's own files have a room: `x11/`, `win32/` and `wayland/`;
-//! the platform-neutral show and its window logic stay here.
+//! (`app`), or a window another program owns (`platform::modes`: a
+//! foreign X window; a Windows preview's parent is `app`'s child mode).
 //!
 //! The pure parts, unit-tested without a display: `slideshow` (pacing),
 //! `show` (one window's frame, painter and next mountain), `source` (where
 //! each slide comes from), `input` (keys and what wakes the saver),
 //! `actions` (settings steps, file names), `heads` (which monitors get a
-//! window). The rest talks to the system: `x11::heads` asks the X server for
-//! its monitors and follows their changes, `win32::fullscreen` refits
-//! full-screen windows after a Windows display change, `present` and
-//! `x11::bands` put frames on screen, `x11::grab` keeps input from other
-//! programs (crate::signals turns SIGTERM into a clean exit), `libcheck` names a
-//! missing X or Wayland library before winit panics on it, `backend` picks
-//! X11 or Wayland, `buffer_history` tells `present` what each buffer lacks,
-//! `single` keeps a second `/s` off a display that has one. `wayland::layer`
-//! runs the shows on wlr-layer-shell surfaces (`--layer`), presenting
-//! through `wayland::target`'s raw handles, each buffer covering its output
-//! as `wayland::cover` reckons.
+//! window). The rest talks to the system through the platform's facade:
+//! `app` runs winit with a `platform::Host` (the monitors, the pointer,
+//! the input grab, the preview's parent), `placement` puts full-screen
+//! windows on their monitors, `present` puts frames on screen (softbuffer,
+//! else `platform::images`), `buffer_history` tells `present` what each
+//! buffer lacks.
 
 pub mod actions;
 pub mod app;

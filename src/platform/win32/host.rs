@@ -52,7 +52,7 @@ impl<N: Notify> Host<N> {
 
     /// Nothing to add.
     pub fn window_attributes(&self, attrs: WindowAttributes) -> WindowAttributes {
-        super::super::window::named(attrs, None)
+        crate::platform::window::named(attrs, None)
     }
 
     /// The cursor's place at start (full screen) is the origin a move is

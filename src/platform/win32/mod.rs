@@ -1,12 +1,12 @@
 //! The Win32 room: foreign windows (the Screen Saver dialog's preview)
 //! and full-screen windows refitted after a display change.
 
-#[cfg(windows)]
+#[cfg(windows_platform)]
 pub mod clock;
-#[cfg(windows)]
+#[cfg(windows_platform)]
 pub mod console;
-#[cfg(windows)]
+#[cfg(windows_platform)]
 pub mod embed;
 pub mod fullscreen;
-#[cfg(windows)]
+#[cfg(windows_platform)]
 pub mod host;

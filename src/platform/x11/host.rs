@@ -92,7 +92,7 @@ impl<N: Notify> Host<N> {
     /// is named), and the visual to draw with on an X screen whose own
     /// one softbuffer cannot take (see visual.rs).
     pub fn window_attributes(&self, attrs: WindowAttributes) -> WindowAttributes {
-        super::super::window::named(attrs, self.visual)
+        crate::platform::window::named(attrs, self.visual)
     }
 
     /// Where the pointer started, taken before the windows mapped.
