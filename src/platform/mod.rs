@@ -15,9 +15,11 @@
 //! Wayland, `libcheck` names a missing X or Wayland library before winit
 //! panics on it, `single` keeps a second `/s` off a display that has one.
 //!
-//! `cfg(x11_platform)`, `cfg(wayland_platform)` and `cfg(windows_platform)`
-//! (build.rs) say which window system code is for; outside these rooms
-//! the crate has almost none.
+//! `cfg(x11_platform)`, `cfg(wayland_platform)`, `cfg(layer_shell_platform)`
+//! and `cfg(windows_platform)` (build.rs) say which window system code is
+//! for; `unix`, `windows` and `target_os` are left for the OS itself.
+//! Outside these rooms the crate has almost no platform `cfg`
+//! (tests/cli/architecture.rs counts them).
 
 pub mod backend;
 pub mod events;

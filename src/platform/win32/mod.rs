@@ -1,5 +1,6 @@
-//! The Win32 room: foreign windows (the Screen Saver dialog's preview)
-//! and full-screen windows refitted after a display change.
+//! The Win32 room: foreign windows (the Screen Saver dialog's preview),
+//! full-screen windows refitted after a display change, `host` (the winit
+//! saver's Windows side), the parent's console and the time zone.
 
 #[cfg(windows_platform)]
 pub mod clock;

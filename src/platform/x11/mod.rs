@@ -1,6 +1,7 @@
 //! The X11 room: the saver's talk with an X server (foreign windows, the
 //! monitors and their changes, the input grab and its pointer, frames put
-//! as plain images, the server going away).
+//! as plain images, the visual to draw with, the server going away), and
+//! `host`, the winit saver's side on the desktop Unixes.
 
 pub mod bands;
 pub mod connect;
@@ -10,7 +11,7 @@ pub mod heads;
 pub mod host;
 pub(super) mod motion;
 mod placed;
-pub(crate) mod pointer;
+mod pointer;
 pub mod server_gone;
 pub mod visual;
 
