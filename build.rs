@@ -1,6 +1,8 @@
-//! Puts the Windows resources into the exe: version information, the name
-//! the Screen Saver Settings list shows (string 1) and the icon. Nothing
-//! happens for other targets, so a Linux build needs no resource compiler.
+//! Names the platforms for `cfg` (`x11_platform`, `wayland_platform`,
+//! `windows_platform`), and puts the Windows resources into the exe:
+//! version information, the name the Screen Saver Settings list shows
+//! (string 1) and the icon. The resources are made for Windows only, so a
+//! Linux build needs no resource compiler.
 
 /// What Windows shows for the saver: string 1 of a `.scr` is its name in
 /// the Screen Saver Settings list (without it, the file name shows).
@@ -13,6 +15,7 @@ const ICON: &str = "assets/mountains.ico";
 const LANGUAGE: u16 = 0x0409;
 
 fn main() {
+    platform_aliases();
     println!("cargo:rerun-if-changed=build.rs");
     println!("cargo:rerun-if-changed={ICON}");
     // winresource runs these if set, else mingw's for the target.
@@ -20,6 +23,19 @@ fn main() {
     println!("cargo:rerun-if-env-changed=AR");
     if std::env::var("CARGO_CFG_TARGET_OS").as_deref() == Ok("windows") {
         windows_resources();
+    }
+}
+
+/// A `cfg` says which window system code is for, not which OS family
+/// happens to carry it: `cfg(x11_platform)`, not `cfg(unix)`. The desktop
+/// Unixes run X11 and Wayland (one binary, both loaded at run time);
+/// wlr-layer-shell (`--layer`) and the per-display claim need Linux.
+fn platform_aliases() {
+    cfg_aliases::cfg_aliases! {
+        x11_platform: { all(unix, not(target_vendor = "apple"), not(target_os = "android")) },
+        wayland_platform: { all(unix, not(target_vendor = "apple"), not(target_os = "android")) },
+        layer_shell_platform: { target_os = "linux" },
+        windows_platform: { windows },
     }
 }
 

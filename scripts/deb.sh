@@ -4,7 +4,7 @@
 # and settings XML, the man page, the desktop entries and icons, and the
 # copyright. Depends: the C libraries the binary links (dpkg-shlibdeps) and
 # the X11 and Wayland libraries it opens at run time (the table in
-# src/saver/libcheck.rs, the one place that lists them).
+# src/platform/libcheck.rs, the one place that lists them).
 #
 # Usage: sh scripts/deb.sh [--binary PATH] [--out DIR]
 #   --binary  package this binary (stripped on the way) instead of building

@@ -132,7 +132,7 @@ impl std::fmt::Display for UsageError {
 /// The mode used when no mode argument is given: Windows opens the settings
 /// (that is what Configure sends), elsewhere a normal window.
 pub fn default_mode() -> Mode {
-    if cfg!(windows) {
+    if crate::platform::os::SETTINGS_WITHOUT_A_MODE {
         Mode::Settings { parent: None }
     } else {
         Mode::Window

@@ -56,44 +56,9 @@ fn civil_from_days(z: i64) -> (i64, u32, u32) {
     (yoe + era * 400 + i64::from(m <= 2), m, d)
 }
 
-/// The local offset from UTC at `secs`, in seconds (summer time included).
-#[cfg(target_os = "linux")]
-pub fn utc_offset(secs: u64) -> i64 {
-    let t = secs as libc::time_t;
-    // SAFETY: `localtime_r` only writes the `tm` we own and reads `t`; it is
-    // the thread-safe variant (no shared static result).
-    unsafe {
-        let mut tm: libc::tm = std::mem::zeroed();
-        if libc::localtime_r(&t, &mut tm).is_null() {
-            return 0;
-        }
-        tm.tm_gmtoff
-    }
-}
-
-/// The local offset from UTC now, in seconds (summer time included).
-#[cfg(windows)]
-pub fn utc_offset(_secs: u64) -> i64 {
-    use windows_sys::Win32::System::Time::{GetTimeZoneInformation, TIME_ZONE_INFORMATION};
-    // SAFETY: the call fills the structure we own and nothing else.
-    let (state, tz) = unsafe {
-        let mut tz: TIME_ZONE_INFORMATION = std::mem::zeroed();
-        (GetTimeZoneInformation(&mut tz), tz)
-    };
-    // 1: standard time, 2: summer time; the bias is minutes *behind* UTC.
-    let extra = match state {
-        1 => tz.StandardBias,
-        2 => tz.DaylightBias,
-        _ => 0,
-    };
-    -i64::from(tz.Bias + extra) * 60
-}
-
-/// Elsewhere: UTC, which `local` then says (+00:00).
-#[cfg(not(any(target_os = "linux", windows)))]
-pub fn utc_offset(_secs: u64) -> i64 {
-    0
-}
+/// The local offset from UTC at `secs`, in seconds (summer time
+/// included; the system's, see `platform::os`).
+pub use crate::platform::os::utc_offset;
 
 #[cfg(test)]
 mod tests {

@@ -30,16 +30,7 @@ pub fn open_regular(path: &Path, cap: u64) -> io::Result<File> {
 /// Windows), the usual way to say "no file": it reads as empty, so a
 /// preferences file there means the defaults, not an error.
 pub fn is_null_device(path: &Path) -> bool {
-    #[cfg(unix)]
-    {
-        std::fs::canonicalize(path).is_ok_and(|real| real == Path::new("/dev/null"))
-    }
-    #[cfg(not(unix))]
-    {
-        path.file_stem()
-            .and_then(|s| s.to_str())
-            .is_some_and(|s| s.eq_ignore_ascii_case("nul"))
-    }
+    crate::platform::os::is_null_device(path)
 }
 
 /// The bytes of the regular file at `path`, at most `cap` of them (a file
@@ -71,20 +62,7 @@ fn kind_of(meta: &std::fs::Metadata) -> &'static str {
     if t.is_dir() {
         return "a folder";
     }
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::FileTypeExt;
-        if t.is_fifo() {
-            return "a FIFO (named pipe)";
-        }
-        if t.is_char_device() || t.is_block_device() {
-            return "a device";
-        }
-        if t.is_socket() {
-            return "a socket";
-        }
-    }
-    "not a file"
+    crate::platform::os::special_file_kind(&t).unwrap_or("not a file")
 }
 
 /// Writes what `write` makes to `path`, or to standard output when `path`

@@ -19,6 +19,7 @@ pub mod help;
 pub mod log;
 pub mod memory;
 pub mod mountain;
+pub mod platform;
 pub mod quality;
 pub mod quote;
 pub mod render;
@@ -26,10 +27,8 @@ pub mod saved;
 pub mod saver;
 pub mod settings;
 pub mod settings_ui;
-pub mod signals;
+
 pub mod snapshot;
 pub mod spelling;
 pub mod terrain;
 mod threads;
-#[cfg(unix)]
-pub mod x11_visual;

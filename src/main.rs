@@ -12,7 +12,7 @@ use std::process::ExitCode;
 use mountains::cli::{self, Mode};
 use mountains::commands::{self, EXIT_USAGE};
 use mountains::settings::{load, paths};
-use mountains::{console, help, log, saver};
+use mountains::{console, help, log, platform, saver};
 
 fn main() -> ExitCode {
     saver::mark_start();
@@ -24,7 +24,7 @@ fn main() -> ExitCode {
         Err(e) => {
             // Arguments Windows sent and we did not understand are invisible
             // without a console: keep them in the log as well.
-            if cfg!(windows) {
+            if platform::os::NO_CONSOLE {
                 gui_log();
             }
             // The message names what was wrong; the usage after it would
@@ -62,7 +62,7 @@ fn main() -> ExitCode {
     }
     if matches!(inv.mode, Mode::Render { .. } | Mode::Heightmap { .. }) {
         mountains::memory::one_pool();
-        if let Err(e) = mountains::signals::end_cleanly() {
+        if let Err(e) = mountains::platform::signals::end_cleanly() {
             console::err(&format!("warning: cannot watch for SIGTERM: {e}"));
         }
     } else {
@@ -98,16 +98,17 @@ fn main() -> ExitCode {
         }
         Mode::Settings { parent } => {
             gui_log();
-            // The saver's own check: without it winit's error names a file
-            // in its source instead of what to do.
-            #[cfg(unix)]
-            if let Err(e) = saver::libcheck::check_display(inv.xss.display.is_some()) {
-                log::error(&e.to_string());
-                return ExitCode::FAILURE;
-            }
-            #[cfg(unix)]
-            saver::x11::server_gone::report_when_the_server_goes();
-            mountains::settings_ui::run(inv.config.as_deref(), &loaded, *parent)
+            // The saver's own choice and check: without it winit's error
+            // names a file in its source instead of what to do.
+            let backend = match platform::choose_backend(inv.xss.display.is_some()) {
+                Ok(backend) => backend,
+                Err(e) => {
+                    log::error(&e.to_string());
+                    return ExitCode::FAILURE;
+                }
+            };
+            platform::report_when_the_server_goes();
+            mountains::settings_ui::run(inv.config.as_deref(), &loaded, *parent, backend)
         }
         mode => run_saver(mode, loaded, open, &inv.xss),
     }
@@ -166,8 +167,7 @@ fn run_saver(
             None
         }
     });
-    #[cfg(unix)]
-    saver::x11::server_gone::report_when_the_server_goes();
+    platform::report_when_the_server_goes();
     match saver::run(mode, loaded.settings, opened, xss) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {

@@ -32,12 +32,7 @@ pub fn room_to_work(exponent: u32) -> Result<(), u64> {
 /// for a 1080p `render`, while 104 MiB worked). A one-shot command makes
 /// a few large allocations, so sharing one pool costs nothing measurable.
 pub fn one_pool() {
-    #[cfg(all(target_os = "linux", target_env = "gnu"))]
-    // SAFETY: mallopt only sets a tuning value of the allocator; called
-    // before any other thread starts.
-    unsafe {
-        libc::mallopt(libc::M_ARENA_MAX, 1);
-    }
+    crate::platform::os::allocate_from_one_pool();
 }
 
 /// Big blocks (a field, a frame, a shadow map) each get pages of their own
@@ -50,14 +45,8 @@ pub fn one_pool() {
 /// keeps what the process holds to what is alive. For the long-running
 /// modes; call before other threads start.
 pub fn give_back_big_blocks() {
-    #[cfg(all(target_os = "linux", target_env = "gnu"))]
-    // SAFETY: mallopt only sets a tuning value of the allocator; called
-    // before any other thread starts.
-    unsafe {
-        libc::mallopt(libc::M_MMAP_THRESHOLD, BIG_BLOCK_BYTES);
-    }
+    crate::platform::os::map_blocks_from(BIG_BLOCK_BYTES);
 }
 
 /// glibc's starting mmap threshold: blocks this size and over are mapped.
-#[cfg(all(target_os = "linux", target_env = "gnu"))]
-const BIG_BLOCK_BYTES: libc::c_int = 128 * 1024;
+const BIG_BLOCK_BYTES: i32 = 128 * 1024;

@@ -1,6 +1,7 @@
 //! The winit modes: full screen on every monitor, the small preview, the
 //! normal window, and (Windows) the child of the Control Panel preview.
 
+use std::fmt::Debug;
 use std::rc::Rc;
 use std::time::Instant;
 
@@ -21,9 +22,9 @@ use super::screen::Screen;
 use super::show::Show;
 use super::slideshow::Pacing;
 use super::trace::Trace;
-#[cfg(unix)]
-use super::x11::grab::Pointer;
 use crate::mountain::Mountain;
+use crate::platform::events::{Motion, Notice, Notify};
+use crate::platform::{self, Host};
 use crate::render::Damage;
 use crate::settings::{Monitors, Settings};
 
@@ -37,7 +38,6 @@ pub enum AppMode {
     /// A normal resizable window with the keyboard commands.
     Window,
     /// A child of a Windows window (`/p HWND`), following its size.
-    #[cfg(windows)]
     Child(u64),
 }
 
@@ -51,30 +51,21 @@ const WINDOW_SIZE: PhysicalSize<u32> = PhysicalSize::new(960, 600);
 enum UserEvent {
     /// SIGTERM or SIGINT arrived.
     Terminate,
-    /// The monitors are now these (full screen on X11).
-    #[cfg_attr(not(unix), allow(dead_code))]
-    Heads(Vec<Head>),
-    /// The pointer is at this place on the screen (full screen on X11,
-    /// from the input grab: warps send no raw motion).
-    #[cfg_attr(not(unix), allow(dead_code))]
-    PointerAt(i16, i16),
-    /// A relative pointing device moved by this much (full screen on X11,
-    /// from XInput 2 raw motion: winit's counts absolute devices' places).
-    #[cfg_attr(not(unix), allow(dead_code))]
-    PointerMoved(f64, f64),
-    /// The screen changed and the server may have moved the pointer: it is
-    /// here now (full screen on X11, from the input grab's connection).
-    #[cfg_attr(not(unix), allow(dead_code))]
-    PointerPlaced(i16, i16),
+    /// News from a platform room's thread.
+    Platform(Notice),
+}
+
+impl Notify for winit::event_loop::EventLoopProxy<UserEvent> {
+    fn notify(&self, notice: Notice) {
+        let _ = self.send_event(UserEvent::Platform(notice));
+    }
 }
 
 /// Runs `mode` with winit until it ends.
 pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Result<(), SaverError> {
-    #[cfg(unix)]
-    let backend = super::libcheck::check_display(super::options::x_display_named())?;
-    #[cfg(target_os = "linux")]
+    let backend = platform::choose_backend(super::options::x_display_named())?;
     let _claim = match mode {
-        AppMode::Fullscreen => match super::single::claim(backend) {
+        AppMode::Fullscreen => match platform::claim_display(backend) {
             Ok(Some(claim)) => Some(claim),
             Ok(None) => {
                 crate::console::err(
@@ -89,18 +80,15 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
         },
         _ => None,
     };
+    let parent = match mode {
+        AppMode::Child(parent) => Some(parent),
+        _ => None,
+    };
     let mut builder = EventLoop::<UserEvent>::with_user_event();
-    #[cfg(windows)]
-    if let AppMode::Child(_) = mode {
-        super::win32::embed::leave_dpi_to_the_parent(&mut builder);
-    }
-    #[cfg(unix)]
-    let wayland = force_backend(&mut builder, backend);
-    #[cfg(not(unix))]
-    let wayland = false;
+    platform::use_backend(&mut builder, backend, parent);
     let event_loop = builder
         .build()
-        .map_err(|e| SaverError::from_event_loop(&e.to_string(), wayland))?;
+        .map_err(|e| platform::event_loop_failed(&e.to_string(), backend))?;
     // Without a window manager our windows never get keyboard focus, so the
     // full-screen saver listens to raw device input instead.
     event_loop.listen_device_events(match mode {
@@ -108,54 +96,22 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
         _ => DeviceEvents::Never,
     });
     let proxy = event_loop.create_proxy();
-    crate::signals::on_terminate(move || {
+    crate::platform::signals::on_terminate(move || {
         let _ = proxy.send_event(UserEvent::Terminate);
     })
     .map_err(|e| SaverError::Other(format!("cannot watch for SIGTERM: {e}")))?;
-    #[cfg(unix)]
-    let server_heads = match mode {
-        AppMode::Fullscreen if !wayland => watch_heads(&event_loop),
-        _ => Vec::new(),
-    };
-    #[cfg(not(unix))]
-    let server_heads = Vec::new();
-    // X11: the visual and, for full screen, the pointer's place before the
-    // windows map: the origin its moves (warps too, which no device
-    // reports as raw motion) are measured from.
-    #[cfg(unix)]
-    let first_look = match wayland {
-        true => super::x11::pointer::FirstLook::default(),
-        false => super::x11::pointer::first_look(mode == AppMode::Fullscreen),
-    };
-    #[cfg(unix)]
-    if let Some(why) = first_look.refusal {
-        return Err(SaverError::Unsupported(why));
-    }
-    #[cfg(unix)]
-    let (x11_visual, pointer_origin) = (first_look.visual, first_look.pointer);
-    #[cfg(not(unix))]
-    let x11_visual = None;
+    let fullscreen = mode == AppMode::Fullscreen;
+    let host = Host::new(backend, fullscreen, parent, event_loop.create_proxy())?;
     let mut app = App {
         mode,
-        wayland,
+        host,
         settings,
         opened,
         screens: Vec::new(),
-        server_heads,
-        x11_visual,
-        #[cfg(unix)]
-        pointer_origin,
         wake: WakeDetector::new(),
         error: None,
         trace: Trace::from_env(),
         started: false,
-        #[cfg(unix)]
-        grab: None,
-        #[cfg(unix)]
-        watching_pointer: false,
-        #[cfg(unix)]
-        raw_motion_watched: false,
-        proxy: event_loop.create_proxy(),
     };
     event_loop
         .run_app(&mut app)
@@ -163,70 +119,17 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
     app.error.map_or(Ok(()), Err)
 }
 
-/// Makes winit use `backend`, the one whose libraries were checked (winit
-/// would choose by itself, without heeding `-display`); true for Wayland.
-#[cfg(unix)]
-fn force_backend(
-    builder: &mut winit::event_loop::EventLoopBuilder<UserEvent>,
-    backend: super::backend::Backend,
-) -> bool {
-    use super::backend::Backend;
-    use winit::platform::wayland::EventLoopBuilderExtWayland;
-    use winit::platform::x11::EventLoopBuilderExtX11;
-    match backend {
-        Backend::X11 => builder.with_x11(),
-        Backend::Wayland => builder.with_wayland(),
-    };
-    backend == Backend::Wayland
-}
-
-/// X11 full screen: the server's monitors at start and, from then on,
-/// `UserEvent::Heads` whenever they change. Without RandR: Xinerama's list,
-/// not followed.
-#[cfg(unix)]
-fn watch_heads(event_loop: &EventLoop<UserEvent>) -> Vec<Head> {
-    let proxy = event_loop.create_proxy();
-    let watched = super::x11::heads::watch(move |heads| {
-        let _ = proxy.send_event(UserEvent::Heads(heads));
-    });
-    watched.unwrap_or_else(|e| {
-        crate::log::warn(&format!("monitor changes will not be followed: {e}"));
-        super::x11::heads::query().unwrap_or_default()
-    })
-}
-
 struct App {
     mode: AppMode,
-    /// Running on a Wayland compositor: no window positions, no grabs,
-    /// full screen is the compositor's to give.
-    wayland: bool,
+    /// What the window system asks of this run and knows for it.
+    host: Host<winit::event_loop::EventLoopProxy<UserEvent>>,
     settings: Settings,
     opened: Option<Mountain>,
     screens: Vec<Screen>,
-    /// The monitors the X server listed at start (empty: ask winit).
-    server_heads: Vec<Head>,
-    /// The X visual windows are made with, when not the screen's own.
-    x11_visual: Option<u32>,
-    /// X11 full screen: the pointer's place before the windows opened.
-    #[cfg(unix)]
-    pointer_origin: Option<(f64, f64)>,
     wake: WakeDetector,
     error: Option<SaverError>,
     trace: Trace,
     started: bool,
-    /// Full screen on X11: the keyboard and pointer grab, until it holds.
-    #[cfg(unix)]
-    grab: Option<super::x11::grab::InputGrab>,
-    /// Whether the grab's pointer motion is passed on yet.
-    #[cfg(unix)]
-    watching_pointer: bool,
-    /// Whether relative devices' raw motion comes from the grab's thread
-    /// (`UserEvent::PointerMoved`), so winit's own is not counted.
-    #[cfg(unix)]
-    raw_motion_watched: bool,
-    /// For events from threads of our own (the grab's pointer motion).
-    #[cfg_attr(not(unix), allow(dead_code))]
-    proxy: winit::event_loop::EventLoopProxy<UserEvent>,
 }
 
 impl ApplicationHandler<UserEvent> for App {
@@ -234,21 +137,13 @@ impl ApplicationHandler<UserEvent> for App {
         if std::mem::replace(&mut self.started, true) {
             return;
         }
-        #[cfg(unix)]
-        if let Some((x, y)) = self.pointer_origin.take() {
-            self.wake.moved_to(x, y);
-        }
         if let Err(e) = self.open_windows(event_loop) {
             self.fail(event_loop, e);
         }
-        // The cursor's place at start is the origin a move is measured
-        // from. Taken lazily, a move that arrives before the first motion
-        // event (Wine may deliver none until then) would become the origin.
-        #[cfg(windows)]
-        if self.mode == AppMode::Fullscreen
-            && let Some((x, y)) = super::win32::fullscreen::cursor_position()
-        {
-            self.wake.moved_to(x.into(), y.into());
+        // The pointer's place at start is the origin a move is measured
+        // from: taken before any event, so that no move becomes it.
+        if let Some((x, y)) = self.host.start_origin() {
+            self.wake.moved_to(x, y);
         }
     }
 
@@ -265,11 +160,10 @@ impl ApplicationHandler<UserEvent> for App {
             // winit scales a window it thinks moved to a monitor of another
             // scale (after RandR or Xft.dpi changes); a full-screen window
             // keeps covering its monitor exactly.
-            #[cfg(unix)]
             WindowEvent::ScaleFactorChanged {
                 mut inner_size_writer,
                 ..
-            } if !self.wayland => {
+            } if self.host.keeps_size_on_rescale() => {
                 if let Some(h) = self.screens[i].head {
                     let size = PhysicalSize::new(h.width, h.height);
                     let _ = inner_size_writer.request_inner_size(size);
@@ -281,41 +175,12 @@ impl ApplicationHandler<UserEvent> for App {
             {
                 self.key(event_loop, i, &event.logical_key)
             }
-            // Raw motion may not arrive (Wine before its first one); the
-            // window's own pointer event is the second witness.
-            #[cfg(windows)]
-            WindowEvent::CursorMoved { .. } if self.mode == AppMode::Fullscreen => {
-                self.cursor_moved_win32(event_loop);
-            }
-            // Wayland sends no raw motion without the relative-pointer
-            // protocol; the pointer's place on our window tells as well.
-            WindowEvent::CursorMoved { position, .. }
-                if self.mode == AppMode::Fullscreen
-                    && self.wayland
-                    && self.wake.moved_to(position.x, position.y) =>
-            {
-                self.trace.ended_by(&event);
-                event_loop.exit()
-            }
-            // X11: raw motion misses a warped pointer (`xdotool mousemove`,
-            // remote desktops); the pointer's place on the screen does not.
-            // Once the grab reports the pointer in root coordinates
-            // (`UserEvent::PointerAt`) this witness stands down: its place
-            // is relative to a window, and a window a monitor change moved
-            // would turn a pointer that stayed into a move.
-            #[cfg(unix)]
-            WindowEvent::CursorMoved { position, .. }
-                if self.mode == AppMode::Fullscreen && !self.wayland && !self.watching_pointer =>
-            {
-                let window = self.screens[i].window.inner_position();
-                if let Ok(at) = window
-                    && self
-                        .wake
-                        .moved_to(f64::from(at.x) + position.x, f64::from(at.y) + position.y)
-                {
-                    self.trace.ended_by(&event);
-                    event_loop.exit()
-                }
+            // The pointer's place on our window: a second witness beside
+            // raw motion, which misses some moves (see `Host::cursor_moved`).
+            WindowEvent::CursorMoved { position, .. } if self.mode == AppMode::Fullscreen => {
+                let window = &*self.screens[i].window;
+                let motion = self.host.cursor_moved(window, position, &mut self.wake);
+                self.end_on_motion(event_loop, motion, &event);
             }
             WindowEvent::MouseInput {
                 state: ElementState::Pressed,
@@ -332,18 +197,11 @@ impl ApplicationHandler<UserEvent> for App {
     }
 
     fn device_event(&mut self, event_loop: &ActiveEventLoop, _: DeviceId, event: DeviceEvent) {
-        #[cfg(windows)]
         if let (AppMode::Fullscreen, DeviceEvent::MouseMotion { .. }) = (self.mode, &event) {
-            // winit passes absolute devices' coordinates on as deltas, and
-            // Wine sends one such motion when the window appears: the
-            // cursor's position is what counts.
-            if self.cursor_moved_win32(event_loop) {
-                return;
+            match self.host.motion(&mut self.wake) {
+                Motion::Raw => {}
+                motion => return self.end_on_motion(event_loop, motion, &event),
             }
-        }
-        #[cfg(unix)]
-        if self.raw_motion_watched && matches!(event, DeviceEvent::MouseMotion { .. }) {
-            return;
         }
         if self.mode == AppMode::Fullscreen && self.wake.device_event(&event) {
             self.trace.ended_by(&event);
@@ -354,29 +212,12 @@ impl ApplicationHandler<UserEvent> for App {
     fn user_event(&mut self, event_loop: &ActiveEventLoop, event: UserEvent) {
         match event {
             UserEvent::Terminate => self.end_on_signal(event_loop),
-            UserEvent::Heads(heads) => self.follow_heads(event_loop, &heads),
-            UserEvent::PointerAt(x, y) => {
-                if self.mode == AppMode::Fullscreen && self.wake.moved_to(x.into(), y.into()) {
-                    self.trace.ended_by(&event);
-                    event_loop.exit()
-                }
-            }
-            UserEvent::PointerMoved(dx, dy) => {
-                if self.mode == AppMode::Fullscreen && self.wake.moved(dx, dy) {
-                    self.trace.ended_by(&event);
-                    event_loop.exit()
-                }
-            }
-            UserEvent::PointerPlaced(x, y) => {
-                self.trace
-                    .note(&format!("the screen changed; the pointer is at ({x}, {y})"));
-                self.wake.origin_at(x.into(), y.into())
-            }
+            UserEvent::Platform(notice) => self.notice(event_loop, notice),
         }
     }
 
     fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
-        if crate::signals::ending() {
+        if crate::platform::signals::ending() {
             return self.end_on_signal(event_loop);
         }
         let now = Instant::now();
@@ -387,92 +228,48 @@ impl ApplicationHandler<UserEvent> for App {
             self.present(event_loop, i, damage);
         }
         // A signal while strips were drawn: they stopped for it.
-        if crate::signals::ending() {
+        if crate::platform::signals::ending() {
             return self.end_on_signal(event_loop);
         }
-        #[cfg(windows)]
-        if let AppMode::Child(parent) = self.mode {
-            self.follow_parent(event_loop, parent);
+        let first = self.screens.first().map(|s| &*s.window);
+        let tick = self.host.tick(first, now);
+        if tick.parent_gone {
+            self.trace.ended_by(&"the parent window is gone");
+            event_loop.exit();
         }
-        #[cfg(unix)]
-        let grabbing = self.grab_input();
-        #[cfg(not(unix))]
-        let grabbing = false;
-        // Wake for the earliest of: a show's next strip or slide, the
-        // Windows preview's look at its parent, a retry of the input grab.
+        // Wake for the earliest of: a show's next strip or slide, what the
+        // platform asks (the Windows preview's look at its parent, a retry
+        // of the X11 input grab).
         let shows = self
             .screens
             .iter()
             .filter_map(|s| s.show.wake_at(now))
             .min();
-        #[cfg(windows)]
-        let parent =
-            matches!(self.mode, AppMode::Child(_)).then(|| now + super::win32::embed::PARENT_POLL);
-        #[cfg(not(windows))]
-        let parent = None;
-        let grab = grabbing.then(|| now + super::slideshow::FRAME_INTERVAL);
-        let wake = [shows, parent, grab].into_iter().flatten().min();
+        let wake = [shows, tick.wake_at].into_iter().flatten().min();
         event_loop.set_control_flow(wake.map_or(ControlFlow::Wait, ControlFlow::WaitUntil));
     }
 }
 
-/// Every window's title and name: the Wayland app_id and the X11 class are
-/// "mountains", as the desktop entry is named.
-/// `x11_visual`: the visual to draw with on an X screen whose own one
-/// softbuffer cannot take (see x11_visual.rs).
-fn base_attributes(x11_visual: Option<u32>) -> WindowAttributes {
-    let attrs = Window::default_attributes().with_title("mountains");
-    #[cfg(unix)]
-    let attrs = winit::platform::wayland::WindowAttributesExtWayland::with_name(
-        attrs,
-        "mountains",
-        "mountains",
-    );
-    #[cfg(unix)]
-    let attrs = match x11_visual {
-        Some(id) => winit::platform::x11::WindowAttributesExtX11::with_x11_visual(attrs, id),
-        None => attrs,
-    };
-    #[cfg(not(unix))]
-    let _ = x11_visual;
-    attrs
-}
-
 impl App {
-    /// Full screen: grabs keyboard and pointer for the first window; true
-    /// while the grab is still being attempted.
-    #[cfg(unix)]
-    fn grab_input(&mut self) -> bool {
-        if self.mode != AppMode::Fullscreen {
-            return false;
-        }
-        if self.grab.is_none() {
-            let xid = self
-                .screens
-                .first()
-                .and_then(|s| super::present::x11_window_id(&*s.window));
-            match xid {
-                Some(xid) => self.grab = Some(super::x11::grab::InputGrab::new(xid)),
-                None => return false,
+    /// News from a platform room: the monitors changed, or the pointer
+    /// moved (full screen on X11, from the input grab: warps send no raw
+    /// motion, and winit counts absolute devices' places).
+    fn notice(&mut self, event_loop: &ActiveEventLoop, notice: Notice) {
+        let fullscreen = self.mode == AppMode::Fullscreen;
+        let away = match notice {
+            Notice::Heads(ref heads) => return self.follow_heads(event_loop, heads),
+            Notice::PointerAt(x, y) => fullscreen && self.wake.moved_to(x.into(), y.into()),
+            Notice::PointerMoved(dx, dy) => fullscreen && self.wake.moved(dx, dy),
+            Notice::PointerPlaced(x, y) => {
+                self.trace
+                    .note(&format!("the screen changed; the pointer is at ({x}, {y})"));
+                return self.wake.origin_at(x.into(), y.into());
             }
-        }
-        let Some(grab) = self.grab.as_mut() else {
-            return false;
         };
-        let held = grab.try_grab();
-        if held && !self.watching_pointer {
-            self.watching_pointer = true;
-            let proxy = self.proxy.clone();
-            self.raw_motion_watched = grab.watch_motion(move |pointer| {
-                let event = match pointer {
-                    Pointer::At(x, y) => UserEvent::PointerAt(x, y),
-                    Pointer::Moved(dx, dy) => UserEvent::PointerMoved(dx, dy),
-                    Pointer::Placed(x, y) => UserEvent::PointerPlaced(x, y),
-                };
-                let _ = proxy.send_event(event);
-            });
+        if away {
+            self.trace.ended_by(&notice);
+            event_loop.exit()
         }
-        !held
     }
 
     /// SIGTERM, SIGINT or SIGHUP: the handler's flag or the watcher's
@@ -484,30 +281,24 @@ impl App {
         }
     }
 
+    /// Ends the saver if `motion` says the pointer went away (`event`
+    /// showed it, or the cursor's place).
+    fn end_on_motion(&mut self, event_loop: &ActiveEventLoop, motion: Motion, event: &dyn Debug) {
+        match motion {
+            Motion::Raw | Motion::Handled => return,
+            Motion::MovedTo(x, y) => self.trace.ended_by(&(x, y)),
+            Motion::Away => self.trace.ended_by(event),
+        }
+        event_loop.exit();
+    }
+
     fn fail(&mut self, event_loop: &ActiveEventLoop, error: SaverError) {
         self.error.get_or_insert(error);
         event_loop.exit();
     }
 
-    /// Full screen on Windows: ends the saver if the cursor is further than
-    /// the threshold from where it started. False when its place is unknown.
-    #[cfg(windows)]
-    fn cursor_moved_win32(&mut self, event_loop: &ActiveEventLoop) -> bool {
-        if super::win32::fullscreen::take_display_change() {
-            self.wake.reset_origin();
-        }
-        let Some((x, y)) = super::win32::fullscreen::cursor_position() else {
-            return false;
-        };
-        if self.wake.moved_to(x.into(), y.into()) {
-            self.trace.ended_by(&(x, y));
-            event_loop.exit();
-        }
-        true
-    }
-
     fn open_windows(&mut self, event_loop: &ActiveEventLoop) -> Result<(), SaverError> {
-        let base = base_attributes(self.x11_visual);
+        let base = self.base_attributes();
         match self.mode {
             AppMode::Fullscreen => self.open_fullscreen(event_loop, base),
             AppMode::Preview => {
@@ -518,12 +309,8 @@ impl App {
                 let attrs = base.with_inner_size(WINDOW_SIZE);
                 self.add_screen(event_loop, attrs, true, None)
             }
-            #[cfg(windows)]
-            AppMode::Child(parent) => {
-                let matched = super::win32::embed::match_parent_dpi(parent);
-                self.trace
-                    .note(&format!("preview DPI awareness as the parent's: {matched}"));
-                let attrs = super::win32::embed::child_attributes(base, parent)?;
+            AppMode::Child(_) => {
+                let attrs = self.host.child_attributes(base, &self.trace)?;
                 self.add_screen(event_loop, attrs, true, None)
             }
         }
@@ -536,7 +323,7 @@ impl App {
         event_loop: &ActiveEventLoop,
         base: WindowAttributes,
     ) -> Result<(), SaverError> {
-        let found = find_heads(event_loop, &self.server_heads, self.wayland);
+        let found = find_heads(event_loop, self.host.server_heads(), self.host.wayland());
         if found.is_empty() {
             let attrs = base
                 .with_decorations(false)
@@ -557,7 +344,7 @@ impl App {
         monitor: Option<&MonitorHandle>,
     ) -> Result<(), SaverError> {
         let mountain = self.settings.monitors == Monitors::All || head.primary;
-        let attrs = covering(base, &head, monitor, self.wayland);
+        let attrs = covering(base, &head, monitor, self.host.wayland());
         self.add_screen(event_loop, attrs, mountain, Some(head))
     }
 
@@ -573,11 +360,7 @@ impl App {
         // The grab's connection says where (`UserEvent::PointerPlaced`);
         // without it, the next place is the new origin. (With it, that
         // next place would be the person's first move, not counted.)
-        #[cfg(unix)]
-        let placed_by_grab = self.watching_pointer;
-        #[cfg(not(unix))]
-        let placed_by_grab = false;
-        if !placed_by_grab {
+        if !self.host.pointer_placed() {
             self.wake.reset_origin();
         }
         for change in heads::plan(&old, new) {
@@ -585,7 +368,7 @@ impl App {
                 Change::Fit(i, head) => self.fit(event_loop, i, head),
                 Change::Close(i) => drop(self.screens.remove(i)),
                 Change::Open(head) => {
-                    let base = base_attributes(self.x11_visual);
+                    let base = self.base_attributes();
                     if let Err(e) = self.open_head(event_loop, base, head, None) {
                         crate::log::warn(&format!("cannot cover a new monitor: {e}"));
                     }
@@ -616,9 +399,7 @@ impl App {
         head: Option<Head>,
     ) -> Result<(), SaverError> {
         // Before creating: the injected Alt may be read before create_window returns.
-        // winit taps Alt for every window created full screen (Windows).
-        #[cfg(windows)]
-        if attrs.fullscreen.is_some() {
+        if platform::FULLSCREEN_TAPS_ALT && attrs.fullscreen.is_some() {
             self.wake.expect_injected_alt();
         }
         let window = event_loop.create_window(attrs).map_err(|e| {
@@ -628,8 +409,7 @@ impl App {
         let window = Rc::new(window);
         if self.mode == AppMode::Fullscreen {
             window.set_cursor_visible(false);
-            #[cfg(windows)]
-            super::win32::fullscreen::keep_covering(&window);
+            platform::keep_covering(&window);
         }
         let size = window.inner_size();
         let size = (size.width, size.height);
@@ -690,7 +470,7 @@ impl App {
             // winit's injected Alt; here an Alt could be that tap, so only
             // the other keys end it (in case raw input is not working).
             let maybe_injected =
-                cfg!(windows) && *key == Key::Named(winit::keyboard::NamedKey::Alt);
+                platform::FULLSCREEN_TAPS_ALT && *key == Key::Named(winit::keyboard::NamedKey::Alt);
             if !maybe_injected {
                 self.trace.ended_by(key);
                 event_loop.exit();
@@ -719,17 +499,9 @@ impl App {
         }
     }
 
-    /// The preview child follows its parent's size and dies with it.
-    #[cfg(windows)]
-    fn follow_parent(&mut self, event_loop: &ActiveEventLoop, parent: u64) {
-        use super::win32::embed::{follow_parent, parent_alive};
-        let alive = match self.screens.first() {
-            Some(s) => follow_parent(parent, &s.window),
-            None => parent_alive(parent),
-        };
-        if !alive {
-            self.trace.ended_by(&"the parent window is gone");
-            event_loop.exit();
-        }
+    /// Every window's title, and what the platform adds to it.
+    fn base_attributes(&self) -> WindowAttributes {
+        let attrs = Window::default_attributes().with_title("mountains");
+        self.host.window_attributes(attrs)
     }
 }

@@ -78,47 +78,15 @@ impl SaverError {
         }
     }
 
-    /// The display named by `DISPLAY` could not be reached.
-    #[cfg(unix)]
-    pub(crate) fn from_connect(e: x11rb::errors::ConnectError) -> Self {
-        use x11rb::errors::{ConnectError, DisplayParsingError};
-        match (e, std::env::var("DISPLAY")) {
-            (ConnectError::DisplayParsingError(DisplayParsingError::MalformedValue(_)), Ok(d)) => {
-                SaverError::NoDisplay(format!(
-                    "DISPLAY={d:?} is not a display name (such as :0, :1 or host:0)"
-                ))
-            }
-            (e, _) => Self::no_display(&e.to_string()),
-        }
-    }
-
-    /// winit could not open the X display: its words say only "Failed to
-    /// open connection to X server", after a place in its source. A
-    /// connection of our own says why (nobody answers, an unknown host, a
-    /// malformed name), in the same words as the embedded modes.
-    #[cfg(unix)]
-    pub fn x_unreachable(winit_detail: &str) -> Self {
-        match x11rb::rust_connection::RustConnection::connect(None) {
-            Err(e) => Self::from_connect(e),
-            Ok(_) => Self::no_display(&without_source_place(winit_detail)),
-        }
-    }
-
-    /// The event loop of a winit mode could not start: on Wayland the
-    /// compositor, on X11 the display could not be reached.
-    pub fn from_event_loop(detail: &str, wayland: bool) -> Self {
-        if wayland {
-            let reason = without_source_place(detail);
-            let var = |name| std::env::var(name).ok().filter(|v: &String| !v.is_empty());
-            return SaverError::NoCompositor(match var("WAYLAND_DISPLAY") {
-                Some(d) => format!("cannot connect to {d} (WAYLAND_DISPLAY): {reason}"),
-                None => reason,
-            });
-        }
-        #[cfg(unix)]
-        return Self::x_unreachable(detail);
-        #[cfg(not(unix))]
-        Self::Other(without_source_place(detail))
+    /// The Wayland compositor could not be reached (`detail`: winit's
+    /// words): which one was named and why, without winit's source place.
+    pub fn no_compositor(detail: &str) -> Self {
+        let reason = without_source_place(detail);
+        let var = |name| std::env::var(name).ok().filter(|v: &String| !v.is_empty());
+        SaverError::NoCompositor(match var("WAYLAND_DISPLAY") {
+            Some(d) => format!("cannot connect to {d} (WAYLAND_DISPLAY): {reason}"),
+            None => reason,
+        })
     }
 }
 

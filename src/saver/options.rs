@@ -15,7 +15,6 @@ pub(crate) fn set_options(xss: &XssOptions) {
 }
 
 /// True when `-display` named an X display for this run.
-#[cfg_attr(not(unix), allow(dead_code))]
 pub(crate) fn x_display_named() -> bool {
     XSS.get().is_some_and(|x| x.display.is_some())
 }

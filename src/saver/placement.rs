@@ -1,7 +1,6 @@
 //! Where full-screen windows go: the monitors to cover (the X server's
 //! list, else winit's), and window attributes that cover one exactly.
 
-use winit::dpi::{PhysicalPosition, PhysicalSize};
 use winit::event_loop::ActiveEventLoop;
 use winit::monitor::MonitorHandle;
 use winit::window::{WindowAttributes, WindowLevel};
@@ -57,7 +56,6 @@ pub(super) fn find_heads(
 /// Wayland client cannot place its windows: it asks for full screen on
 /// the monitor, and the compositor gives the window the output's size in
 /// its real pixels.
-#[cfg_attr(unix, allow(unused_variables))]
 pub(super) fn covering(
     base: WindowAttributes,
     head: &Head,
@@ -71,24 +69,5 @@ pub(super) fn covering(
         let on = winit::window::Fullscreen::Borderless(monitor.cloned());
         return attrs.with_fullscreen(Some(on));
     }
-    #[cfg(windows)]
-    let attrs = match monitor {
-        Some(monitor) => attrs.with_fullscreen(Some(winit::window::Fullscreen::Borderless(Some(
-            monitor.clone(),
-        )))),
-        None => attrs
-            .with_position(PhysicalPosition::new(head.x, head.y))
-            .with_inner_size(PhysicalSize::new(head.width, head.height)),
-    };
-    #[cfg(unix)]
-    let attrs = {
-        // Works with and without a window manager: override-redirect windows
-        // are placed exactly where asked.
-        use winit::platform::x11::WindowAttributesExtX11;
-        attrs
-            .with_override_redirect(true)
-            .with_position(PhysicalPosition::new(head.x, head.y))
-            .with_inner_size(PhysicalSize::new(head.width, head.height))
-    };
-    attrs
+    crate::platform::on_head(attrs, head, monitor)
 }

@@ -3,25 +3,19 @@
 
 use std::num::NonZeroU32;
 
-#[cfg(unix)]
-use raw_window_handle::RawWindowHandle;
 use raw_window_handle::{HasDisplayHandle, HasWindowHandle};
 use softbuffer::{Context, Surface};
 
 use crate::render::{Damage, Frame, Rect};
 
 use super::buffer_history::BufferHistory;
-#[cfg(unix)]
-use super::x11::bands::BandPresenter;
+use crate::platform::images::PlainImages;
 
 /// Presents frames on one window, choosing the path that works on this server.
 pub struct Presenter<W: HasWindowHandle + HasDisplayHandle + Clone> {
-    /// `None` when softbuffer refused the window and the bands draw instead.
+    /// `None` when softbuffer refused the window and plain images draw instead.
     surface: Option<Surface<W, W>>,
-    #[cfg(unix)]
-    xid: Option<u32>,
-    #[cfg(unix)]
-    bands: Option<BandPresenter>,
+    images: PlainImages,
     /// ORed into every pixel softbuffer gets: 0xff000000 for a 32-bit (ARGB)
     /// window, whose top byte is alpha (0 would be see-through under a
     /// compositor); 0 for a 24-bit one.
@@ -34,31 +28,17 @@ pub struct Presenter<W: HasWindowHandle + HasDisplayHandle + Clone> {
     wait_after_present: bool,
 }
 
-/// The X11 window id behind a window handle, if it is an X11 window.
-#[cfg(unix)]
-pub fn x11_window_id(window: &impl HasWindowHandle) -> Option<u32> {
-    match window.window_handle().ok()?.as_raw() {
-        RawWindowHandle::Xlib(h) => u32::try_from(h.window).ok(),
-        RawWindowHandle::Xcb(h) => Some(h.window.get()),
-        _ => None,
-    }
-}
-
 impl<W: HasWindowHandle + HasDisplayHandle + Clone> Presenter<W> {
     /// Prepares presenting on `window`.
     pub fn new(window: W) -> Result<Self, String> {
-        #[cfg(unix)]
-        let xid = x11_window_id(&window);
+        let images = PlainImages::for_window(&window);
         let wayland = is_wayland(&window);
         let surface = Context::new(window.clone())
             .and_then(|context| Surface::new(&context, window))
             .map_err(|e| e.to_string());
         let mut presenter = Presenter {
             surface: None,
-            #[cfg(unix)]
-            xid,
-            #[cfg(unix)]
-            bands: None,
+            images,
             alpha: 0,
             history: BufferHistory::new(),
             wait_after_present: !wayland,
@@ -68,33 +48,17 @@ impl<W: HasWindowHandle + HasDisplayHandle + Clone> Presenter<W> {
                 presenter.surface = Some(surface);
                 presenter.avoid_wire_transfers();
             }
-            Err(e) => presenter.bands_instead_of_softbuffer(e)?,
+            Err(e) => presenter.images.instead_of_softbuffer(e)?,
         }
         Ok(presenter)
-    }
-
-    /// A foreign window whose visual softbuffer does not take can still get
-    /// 24- or 32-bit pixels through plain PutImage.
-    fn bands_instead_of_softbuffer(&mut self, problem: String) -> Result<(), String> {
-        #[cfg(unix)]
-        if let Some(xid) = self.xid {
-            let bands = BandPresenter::connect(xid).map_err(|e| format!("{problem}; {e}"))?;
-            crate::log::warn(&format!(
-                "softbuffer cannot draw in window 0x{xid:x} ({problem}); sending plain images instead"
-            ));
-            self.bands = Some(bands);
-            return Ok(());
-        }
-        Err(problem)
     }
 
     /// Shows the pixels of `damage` (the whole frame if the window lost its
     /// previous contents). Switches to the fallback once, with a warning,
     /// if softbuffer fails.
     pub fn present(&mut self, frame: &Frame, damage: &Damage) -> Result<(), String> {
-        #[cfg(unix)]
-        if let Some(bands) = self.bands.as_mut() {
-            return damage.rects().try_for_each(|r| bands.present(frame, r));
+        if let Some(result) = self.images.present(frame, damage) {
+            return result;
         }
         let Some(surface) = self.surface.as_mut() else {
             return Err("nothing to present with".into());
@@ -110,50 +74,21 @@ impl<W: HasWindowHandle + HasDisplayHandle + Clone> Presenter<W> {
         }
     }
 
-    /// Without MIT-SHM softbuffer sends the whole frame in one request on
-    /// every present: too slow, and over the request limit for 4K frames.
-    /// The same look at the server learns the window's depth, for `alpha`.
+    /// Plain images where softbuffer would send whole frames over the
+    /// wire; the window's depth gives `alpha`.
     fn avoid_wire_transfers(&mut self) {
-        #[cfg(unix)]
-        if let Some(xid) = self.xid {
-            use x11rb::protocol::xproto::ConnectionExt as _;
-            let Ok((conn, _)) = x11rb::rust_connection::RustConnection::connect(None) else {
-                return;
-            };
-            // Sent before the MIT-SHM query, so both answers come in one round trip.
-            let geometry = conn.get_geometry(xid);
-            let has_shm = super::x11::bands::server_has_shm(&conn);
-            let depth = geometry.ok().and_then(|c| c.reply().ok()).map(|g| g.depth);
-            self.alpha = depth.map_or(0, opaque_alpha);
-            if has_shm {
-                return;
-            }
-            if let Ok(bands) = BandPresenter::with_connection(conn, xid) {
-                crate::log::warn(
-                    "the X server has no MIT-SHM: sending only the changed bands of each frame",
-                );
-                self.bands = Some(bands);
-                self.surface = None;
-            }
+        let (depth, instead) = self.images.avoid_wire_transfers();
+        self.alpha = depth.map_or(0, opaque_alpha);
+        if instead {
+            self.surface = None;
         }
     }
 
-    #[cfg_attr(not(unix), allow(unused_variables))]
+    /// softbuffer failed: plain images from now on, where there are any.
     fn fall_back(&mut self, frame: &Frame, problem: String) -> Result<(), String> {
-        #[cfg(unix)]
-        if let Some(xid) = self.xid {
-            let mut bands = BandPresenter::connect(xid)?;
-            bands.present(frame, frame.bounds())?;
-            crate::log::warn(&format!(
-                "presenting a {}x{} frame failed ({problem}); presenting in bands instead",
-                frame.width(),
-                frame.height()
-            ));
-            self.bands = Some(bands);
-            self.surface = None;
-            return Ok(());
-        }
-        Err(problem)
+        self.images.fall_back(frame, problem)?;
+        self.surface = None;
+        Ok(())
     }
 }
 
@@ -173,7 +108,6 @@ struct Soft<'a> {
 }
 
 /// What to OR into pixels for a window of `depth` bits so that it is opaque.
-#[cfg_attr(not(unix), allow(dead_code))]
 fn opaque_alpha(depth: u8) -> u32 {
     if depth == 32 { 0xff00_0000 } else { 0 }
 }

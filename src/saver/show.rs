@@ -188,7 +188,7 @@ impl Show {
     /// nothing once a signal asked the program to end (the next mountain
     /// would be waited for, a redraw shown, strips drawn, for no one).
     pub fn tick(&mut self, now: Instant) -> Damage {
-        if crate::signals::ending() {
+        if crate::platform::signals::ending() {
             return Damage::default();
         }
         if self.redraw.as_ref().is_some_and(|r| !r.is_done()) {
@@ -510,7 +510,7 @@ impl Show {
 /// end first (joining would keep the loop from reading the notice).
 fn finished_unless_ending<T>(thread: &JoinHandle<T>) -> bool {
     while !thread.is_finished() {
-        if crate::signals::ending() {
+        if crate::platform::signals::ending() {
             return false;
         }
         std::thread::sleep(Duration::from_millis(2));
@@ -530,7 +530,7 @@ const STRIPS_BETWEEN_LOOKS: usize = 4;
 fn step_unless_ending(painter: &mut Painter, frame: &mut Frame, strips: usize) -> (Damage, usize) {
     let mut damage = Damage::default();
     let mut drawn = 0;
-    while drawn < strips && !crate::signals::ending() {
+    while drawn < strips && !crate::platform::signals::ending() {
         let n = (strips - drawn).min(STRIPS_BETWEEN_LOOKS);
         for r in painter.step(frame, n).rects() {
             damage.add(r);

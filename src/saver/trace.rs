@@ -40,7 +40,6 @@ impl Trace {
     }
 
     /// Reports a fact worth knowing when a platform misbehaves.
-    #[cfg_attr(not(any(windows, target_os = "linux")), allow(dead_code))]
     pub fn note(&self, fact: &str) {
         if self.on {
             crate::console::err(&format!("mountains: trace: {fact}"));

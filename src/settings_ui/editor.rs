@@ -13,8 +13,8 @@ use crate::settings::load;
 /// reads `$EDITOR`); with none, the desktop's choice (`xdg-open`). Windows:
 /// Notepad.
 pub fn command(editor: Option<&str>, path: &Path) -> Command {
-    if cfg!(windows) {
-        let mut c = Command::new("notepad.exe");
+    if let Some(fixed) = crate::platform::os::FIXED_EDITOR {
+        let mut c = Command::new(fixed);
         c.arg(path);
         return c;
     }

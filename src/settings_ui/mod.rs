@@ -29,11 +29,23 @@ mod wrap;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
+use crate::platform::{Backend, ModalOwner, window_exists};
 use crate::settings::{load, paths};
 
 /// Runs the settings screen for the preferences file `config` (else the
-/// platform's), starting from `loaded`. `parent` owns the window on Windows.
-pub fn run(config: Option<&Path>, loaded: &load::Loaded, parent: Option<u64>) -> ExitCode {
+/// platform's), starting from `loaded`, on `backend`. `parent` owns the
+/// window on Windows.
+///
+/// Without a handle (`/c`, no argument, `--settings`) there is no owner:
+/// the foreground window is not borrowed, because it is as likely the
+/// console, Explorer or the desktop as the Screen Saver dialog (which sends
+/// `/c:HWND`), and disabling it would leave it dead if we were killed.
+pub fn run(
+    config: Option<&Path>,
+    loaded: &load::Loaded,
+    parent: Option<u64>,
+    backend: Backend,
+) -> ExitCode {
     let Some(path) = config_path(config, loaded) else {
         crate::console::error("no home directory: cannot find the preferences file");
         return ExitCode::FAILURE;
@@ -44,65 +56,11 @@ pub fn run(config: Option<&Path>, loaded: &load::Loaded, parent: Option<u64>) ->
         Box::new(move |size, scale| screen::Screen::new(settings, &problems, path, size, scale));
     let owner = parent.filter(|&h| window_exists(h));
     let _modal = ModalOwner::disable(owner);
-    match window::run(make, owner) {
+    match window::run(make, owner, backend) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             crate::log::error(&e);
             ExitCode::FAILURE
-        }
-    }
-}
-
-/// Whether `hwnd` names a window: a stale handle would make creating the
-/// owned window fail, so the settings then open on their own instead.
-///
-/// Without a handle (`/c`, no argument, `--settings`) there is no owner:
-/// the foreground window is not borrowed, because it is as likely the
-/// console, Explorer or the desktop as the Screen Saver dialog (which sends
-/// `/c:HWND`), and disabling it would leave it dead if we were killed.
-#[cfg(windows)]
-fn window_exists(hwnd: u64) -> bool {
-    // SAFETY: IsWindow accepts any value and only reports whether it names a window.
-    unsafe { windows_sys::Win32::UI::WindowsAndMessaging::IsWindow(hwnd as usize as _) != 0 }
-}
-
-#[cfg(not(windows))]
-fn window_exists(_hwnd: u64) -> bool {
-    true
-}
-
-/// Makes the dialog modal: its owner takes no input while it is open, and
-/// is enabled again when this drops (on OK, Cancel, error or panic alike).
-struct ModalOwner {
-    #[cfg(windows)]
-    hwnd: Option<windows_sys::Win32::Foundation::HWND>,
-}
-
-impl ModalOwner {
-    #[cfg(windows)]
-    fn disable(owner: Option<u64>) -> Self {
-        use windows_sys::Win32::UI::Input::KeyboardAndMouse::EnableWindow;
-        let hwnd = owner.map(|h| h as usize as windows_sys::Win32::Foundation::HWND);
-        if let Some(h) = hwnd {
-            // SAFETY: EnableWindow accepts any handle; a stale one fails harmlessly.
-            unsafe { EnableWindow(h, 0) };
-        }
-        ModalOwner { hwnd }
-    }
-
-    #[cfg(not(windows))]
-    fn disable(_owner: Option<u64>) -> Self {
-        ModalOwner {}
-    }
-}
-
-#[cfg(windows)]
-impl Drop for ModalOwner {
-    fn drop(&mut self) {
-        use windows_sys::Win32::UI::Input::KeyboardAndMouse::EnableWindow;
-        if let Some(h) = self.hwnd {
-            // SAFETY: as in `disable`.
-            unsafe { EnableWindow(h, 1) };
         }
     }
 }

@@ -11,6 +11,8 @@ use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
 use winit::keyboard::{Key, ModifiersState, NamedKey};
 use winit::window::{Window, WindowId};
 
+use crate::platform::{self, Backend};
+
 use super::layout::{MIN_H, MIN_W, WINDOW_H, WINDOW_W, whole_scale};
 use super::model::Input;
 use super::screen::{Next, Screen};
@@ -24,6 +26,7 @@ pub type MakeScreen = Box<dyn FnOnce((u32, u32), u32) -> Screen>;
 struct App {
     make: Option<MakeScreen>,
     parent: Option<u64>,
+    backend: Backend,
     window: Option<Rc<Window>>,
     surface: Option<softbuffer::Surface<Rc<Window>, Rc<Window>>>,
     screen: Option<Screen>,
@@ -34,25 +37,30 @@ struct App {
     error: Option<String>,
 }
 
-/// Opens the window and runs it until OK or Cancel. `parent` is the window
-/// that owns the dialog on Windows (`/c:<HWND>`).
-pub fn run(make: MakeScreen, parent: Option<u64>) -> Result<(), String> {
-    #[cfg(unix)]
-    if let Some(why) = x11_refusal() {
+/// Opens the window on `backend` (the saver's choice,
+/// `platform::choose_backend`) and runs it until OK or Cancel. `parent`
+/// is the window that owns the dialog on Windows (`/c:<HWND>`).
+pub fn run(make: MakeScreen, parent: Option<u64>, backend: Backend) -> Result<(), String> {
+    if let Some(why) = platform::refusal(backend) {
         return Err(why);
     }
-    let event_loop = EventLoop::<Terminate>::with_user_event()
+    let mut builder = EventLoop::<Terminate>::with_user_event();
+    platform::use_backend(&mut builder, backend, None);
+    // Why it could not start in the saver's words: which display was
+    // named and why it cannot be opened, not a place in winit's source.
+    let event_loop = builder
         .build()
-        .map_err(|e| event_loop_failed(&e.to_string()))?;
+        .map_err(|e| platform::event_loop_failed(&e.to_string(), backend).to_string())?;
     // SIGTERM, SIGINT, SIGHUP: close as Cancel does (nothing written), exit 0.
     let proxy = event_loop.create_proxy();
-    crate::signals::on_terminate(move || {
+    crate::platform::signals::on_terminate(move || {
         let _ = proxy.send_event(Terminate);
     })
     .map_err(|e| format!("cannot watch for SIGTERM: {e}"))?;
     let mut app = App {
         make: Some(make),
         parent,
+        backend,
         window: None,
         surface: None,
         screen: None,
@@ -68,64 +76,12 @@ pub fn run(make: MakeScreen, parent: Option<u64>) -> Result<(), String> {
     app.error.map_or(Ok(()), Err)
 }
 
-fn attributes(parent: Option<u64>) -> winit::window::WindowAttributes {
+fn attributes(parent: Option<u64>, backend: Backend) -> winit::window::WindowAttributes {
     let attrs = Window::default_attributes()
         .with_title("Mountains settings")
         .with_inner_size(LogicalSize::new(WINDOW_W, WINDOW_H))
         .with_min_inner_size(LogicalSize::new(MIN_W, MIN_H));
-    owned_by(attrs, parent)
-}
-
-#[cfg(windows)]
-fn owned_by(
-    attrs: winit::window::WindowAttributes,
-    parent: Option<u64>,
-) -> winit::window::WindowAttributes {
-    use winit::platform::windows::WindowAttributesExtWindows;
-    // winit 0.30 takes the handle as an isize.
-    match parent.and_then(|p| isize::try_from(p).ok()) {
-        Some(hwnd) if hwnd != 0 => attrs.with_owner_window(hwnd),
-        _ => attrs,
-    }
-}
-
-/// On X11, also the visual to draw with where the screen's own is not one
-/// softbuffer takes (a 30- or 16-bit screen).
-#[cfg(not(windows))]
-fn owned_by(
-    attrs: winit::window::WindowAttributes,
-    _parent: Option<u64>,
-) -> winit::window::WindowAttributes {
-    // winit's own choice here: Wayland wherever a compositor is named.
-    if std::env::var_os("WAYLAND_DISPLAY").is_some() {
-        return attrs;
-    }
-    match crate::x11_visual::drawable_visual() {
-        Some(id) => winit::platform::x11::WindowAttributesExtX11::with_x11_visual(attrs, id),
-        None => attrs,
-    }
-}
-
-/// Why the event loop could not start, in the saver's words: which
-/// display was named and why it cannot be opened, not a place in winit's
-/// source (`SaverError::from_event_loop`). winit's own choice of window
-/// system: Wayland wherever a compositor is named.
-fn event_loop_failed(detail: &str) -> String {
-    let wayland = ["WAYLAND_DISPLAY", "WAYLAND_SOCKET"]
-        .iter()
-        .any(|v| std::env::var_os(v).is_some_and(|v| !v.is_empty()));
-    crate::saver::SaverError::from_event_loop(detail, wayland).to_string()
-}
-
-/// Why nothing can be drawn on the X screen (8-bit visuals only), where
-/// the window opens on X11 (winit's own choice: Wayland wherever a
-/// compositor is named).
-#[cfg(unix)]
-fn x11_refusal() -> Option<String> {
-    if std::env::var_os("WAYLAND_DISPLAY").is_some() {
-        return None;
-    }
-    crate::x11_visual::refusal()
+    platform::settings_attributes(attrs, backend, parent)
 }
 
 impl App {
@@ -136,7 +92,7 @@ impl App {
 
     fn open(&mut self, event_loop: &ActiveEventLoop) -> Result<(), String> {
         let window = event_loop
-            .create_window(attributes(self.parent))
+            .create_window(attributes(self.parent, self.backend))
             .map_err(|e| {
                 let e = crate::saver::without_source_place(&e.to_string());
                 format!("cannot open the settings window: {e}")
@@ -343,7 +299,7 @@ impl ApplicationHandler<Terminate> for App {
 
     fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
         // The signal handler's flag, seen before the watcher's notice.
-        if crate::signals::ending() {
+        if crate::platform::signals::ending() {
             return event_loop.exit();
         }
         if self.screen.as_mut().is_some_and(Screen::poll_file)

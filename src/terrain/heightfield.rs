@@ -258,29 +258,10 @@ fn zeroed(len: usize) -> Vec<f32> {
         return vec![0.0; len];
     }
     let mut v: Vec<f32> = Vec::with_capacity(len);
-    advise_huge_pages(v.as_mut_ptr().cast(), bytes);
+    crate::platform::os::advise_huge_pages(v.as_mut_ptr().cast(), bytes);
     v.resize(len, 0.0);
     v
 }
-
-#[cfg(target_os = "linux")]
-fn advise_huge_pages(start: *mut u8, bytes: usize) {
-    const PAGE: usize = 4096;
-    let addr = start as usize;
-    let aligned = addr.next_multiple_of(PAGE);
-    let len = (addr + bytes).saturating_sub(aligned) / PAGE * PAGE;
-    if len > 0 {
-        // SAFETY: the range lies inside an allocation this function's
-        // caller owns and has not touched yet; MADV_HUGEPAGE changes only
-        // how the kernel backs it, never its contents or validity.
-        unsafe {
-            libc::madvise(aligned as *mut libc::c_void, len, libc::MADV_HUGEPAGE);
-        }
-    }
-}
-
-#[cfg(not(target_os = "linux"))]
-fn advise_huge_pages(_start: *mut u8, _bytes: usize) {}
 
 /// Lowest and highest of `heights` (NaN is skipped unless all are NaN:
 /// `f32::min` and `max` prefer the number).

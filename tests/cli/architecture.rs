@@ -1,8 +1,11 @@
 //! The layout keeps its promises: no two source files import each other,
-//! directly or round a circle, and no room of `render` imports a room
-//! above it (docs/architecture.md). A circle ties files that should be
-//! one, or hides a piece both need; an arrow back up ties a stage to one
-//! that comes later. This finds either as soon as it is written.
+//! directly or round a circle, no room of `render` imports a room above
+//! it, and what knows one platform stays in `src/platform` (its `cfg`s
+//! and its crates) (docs/architecture.md). A circle ties files that
+//! should be one, or hides a piece both need; an arrow back up ties a
+//! stage to one that comes later; a platform's `cfg` in a neutral file
+//! spreads one platform's knowledge over the house. This finds each as
+//! soon as it is written.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
@@ -296,5 +299,117 @@ fn no_room_of_render_imports_a_room_above_it() {
     assert!(
         checked > 60,
         "only {checked} imports inside render: the scan is broken"
+    );
+}
+
+/// The words that make a `cfg` a platform's: the OS families, the target
+/// OS, and the window systems (build.rs's aliases among them).
+const PLATFORM_WORDS: &[&str] = &[
+    "unix",
+    "windows",
+    "target_os",
+    "target_vendor",
+    "x11",
+    "wayland",
+    "_platform",
+];
+
+/// The lines of `text` with a `cfg` (attribute, `cfg!`, `cfg_attr`) that
+/// names a platform.
+fn platform_cfgs(text: &str) -> Vec<String> {
+    text.lines()
+        .map(|line| line.split("//").next().unwrap_or(""))
+        .filter(|code| {
+            ["cfg(", "cfg!(", "cfg_attr("]
+                .iter()
+                .any(|c| code.contains(c))
+        })
+        .filter(|code| PLATFORM_WORDS.iter().any(|w| code.contains(w)))
+        .map(|code| code.trim().to_string())
+        .collect()
+}
+
+/// Every file of `src`, by its path, with its platform `cfg` lines.
+fn platform_cfgs_by_file() -> Vec<(String, Vec<String>)> {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files = Vec::new();
+    sources(&src, &mut files);
+    files.sort();
+    files
+        .iter()
+        .map(|f| {
+            let name = f.strip_prefix(&src).unwrap().display().to_string();
+            (name, platform_cfgs(&std::fs::read_to_string(f).unwrap()))
+        })
+        .collect()
+}
+
+/// The most platform `cfg`s the platform-neutral files may hold.
+const NEUTRAL_PLATFORM_CFGS: usize = 5;
+
+#[test]
+fn platform_cfgs_stay_in_the_platform_rooms() {
+    let by_file = platform_cfgs_by_file();
+    let inside = |name: &str| name.starts_with("platform/") || name.starts_with("platform\\");
+    let outside: Vec<String> = by_file
+        .iter()
+        .filter(|(name, _)| !inside(name))
+        .flat_map(|(name, lines)| lines.iter().map(move |l| format!("src/{name}: {l}")))
+        .collect();
+    assert!(
+        outside.len() <= NEUTRAL_PLATFORM_CFGS,
+        "{} platform cfgs outside src/platform (at most {NEUTRAL_PLATFORM_CFGS}): \
+         move the code into a platform room behind the facade (src/platform/mod.rs)\n{}",
+        outside.len(),
+        outside.join("\n")
+    );
+    // The rooms hold them: a scan that finds none there is broken.
+    let rooms: usize = by_file
+        .iter()
+        .filter(|(name, _)| inside(name))
+        .map(|(_, lines)| lines.len())
+        .sum();
+    assert!(
+        rooms > 20,
+        "only {rooms} platform cfgs in src/platform: the scan is broken"
+    );
+}
+
+/// The crates that talk to one window system or OS.
+const PLATFORM_CRATES: &[&str] = &[
+    "x11rb::",
+    "x11_dl::",
+    "windows_sys::",
+    "smithay_client_toolkit::",
+    "winit::platform::",
+    "libc::",
+    "signal_hook::",
+    "libloading::",
+];
+
+#[test]
+fn only_the_platform_rooms_use_platform_crates() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let platform = src.join("platform");
+    let mut files = Vec::new();
+    sources(&src, &mut files);
+    let (mut inside, mut outside) = (0, Vec::new());
+    for file in &files {
+        let text = code(&std::fs::read_to_string(file).unwrap());
+        let uses = PLATFORM_CRATES.iter().filter(|c| text.contains(*c)).count();
+        if file.starts_with(&platform) {
+            inside += uses;
+        } else if uses > 0 {
+            outside.push(file.strip_prefix(&src).unwrap().display().to_string());
+        }
+    }
+    assert!(
+        outside.is_empty(),
+        "files outside src/platform use a platform's crate (x11rb, windows-sys, winit::platform, libc, ...): {}",
+        outside.join(", ")
+    );
+    assert!(
+        inside > 10,
+        "only {inside} uses in src/platform: the scan is broken"
     );
 }

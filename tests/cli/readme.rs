@@ -311,7 +311,7 @@ fn the_layer_compositors_are_the_ones_help_names() {
     );
     #[cfg(target_os = "linux")]
     {
-        let refusal = mountains::saver::wayland::layer::check_globals(&["wl_compositor"])
+        let refusal = mountains::platform::wayland::layer::check_globals(&["wl_compositor"])
             .expect_err("no layer shell is refused")
             .to_string();
         assert_eq!(&layer_compositors(&refusal), &help, "{refusal}");
@@ -329,7 +329,7 @@ fn the_layer_compositors_are_the_ones_help_names() {
 /// run time (the table its friendly check names them from).
 #[test]
 fn the_apt_line_installs_every_library_the_binary_opens() {
-    use mountains::saver::libcheck::{WAYLAND_LIBRARIES, X11_LIBRARIES};
+    use mountains::platform::libcheck::{WAYLAND_LIBRARIES, X11_LIBRARIES};
     let text = readme();
     let apt = code_lines(&text)
         .find(|l| l.contains("apt-get install"))

@@ -2,7 +2,7 @@
 //! default action, as from a terminal. A test run as a background job
 //! (POSIX shells start those with SIGINT ignored) or under `nohup` (SIGHUP)
 //! would otherwise pass the ignore on, and `mountains`, which rightly
-//! leaves a signal ignored when it was started alone (src/signals.rs),
+//! leaves a signal ignored when it was started alone (src/platform/signals.rs),
 //! would not end: the test would depend on how it was started.
 #![allow(dead_code)]
 

@@ -21,7 +21,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 use std::sync::OnceLock;
 
-use mountains::saver::libcheck::{WAYLAND_LIBRARIES, X11_LIBRARIES};
+use mountains::platform::libcheck::{WAYLAND_LIBRARIES, X11_LIBRARIES};
 
 const ROOT: &str = env!("CARGO_MANIFEST_DIR");
 const DEB_TOOLS: &str = "apt-get install dpkg-dev desktop-file-utils";

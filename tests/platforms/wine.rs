@@ -143,7 +143,7 @@ fn display_wine_fullscreen_follows_a_resolution_change() {
     assert!(fits((0, 0, 1280, 480)), "{:?}", x.mapped_windows());
     // Wine turns the RandR change into WM_DISPLAYCHANGE and itself resizes
     // a window that covered the whole old screen (it does so also without
-    // src/saver/win32/fullscreen.rs: checked), so this checks the Win32
+    // src/platform/win32/fullscreen.rs: checked), so this checks the Win32
     // side of the re-fit and redraw, not that module.
     randr::set_resolution(&x.conn, x.root, 640, 480);
     let took = poll(&mut saver, "the window to fit the 640x480 mode", || {

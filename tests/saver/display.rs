@@ -649,7 +649,7 @@ fn display_sigterm_ends_the_window_mode_while_the_x_server_is_stopped() {
 /// SIGTERM (xscreensaver switching hacks) ends every window mode while it
 /// draws, with status 0. The bound is only patience against a hang; the
 /// time each mode took is printed (issue 36 asks for half a second: see
-/// src/signals.rs for how a signal cuts the drawing short).
+/// src/platform/signals.rs for how a signal cuts the drawing short).
 #[test]
 fn display_sigterm_while_drawing_ends_every_mode() {
     let mut took = Vec::new();

@@ -244,6 +244,41 @@ fn display_a_destroyed_window_ends_the_settings_like_cancel() {
     assert_eq!(std::fs::read(&config).unwrap(), COMMENTED.as_bytes());
 }
 
+/// `-display` means X11 for the settings screen as for the saver (one
+/// choice for both): beside a compositor named in `WAYLAND_DISPLAY`, the
+/// window opens on the X display named, not on the compositor winit
+/// itself would pick (here none answers, so that pick fails).
+#[test]
+fn display_the_settings_open_on_the_x_display_named_beside_a_compositor() {
+    let Some(x) = start_display() else { return };
+    let home = scratch("display-flag");
+    let config = home.join("mountains.toml");
+    std::fs::write(&config, COMMENTED).unwrap();
+    let stderr_path = home.join("stderr.txt");
+    let mut command = Command::new(env!("CARGO_BIN_EXE_mountains"));
+    let child = xvfb::signals::as_from_a_terminal(&mut command)
+        .args(["--settings", "-display", x.display(), "--config"])
+        .arg(&config)
+        .env("HOME", &home)
+        .env("XDG_RUNTIME_DIR", &home)
+        .env("WAYLAND_DISPLAY", "mountains-no-such-compositor")
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_SOCKET")
+        .env_remove("XDG_CONFIG_HOME")
+        .env_remove("XDG_DATA_HOME")
+        .stdout(Stdio::null())
+        .stderr(std::fs::File::create(&stderr_path).unwrap())
+        .spawn()
+        .expect("the binary starts");
+    let mut app = App { child, stderr_path };
+    let window = app.window(&x);
+    wait_drawn(x.display(), window);
+    press(&x, window, &["Escape"]);
+    let status = app.wait_exit();
+    assert!(status.success(), "{status}: {}", app.stderr());
+    assert_eq!(std::fs::read(&config).unwrap(), COMMENTED.as_bytes());
+}
+
 #[test]
 fn display_escape_leaves_the_file_byte_identical() {
     let Some(x) = start_display() else { return };

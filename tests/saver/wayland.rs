@@ -262,7 +262,7 @@ fn wayland_layer_covers_the_output_with_the_rendered_mountain_and_ends_on_sigter
     saver.terminate();
     saver.expect_exit("SIGTERM");
     eprintln!("SIGTERM: ended after {:?}", asked.elapsed());
-    // Its own loop ended it, not the watcher's last resort (src/signals.rs).
+    // Its own loop ended it, not the watcher's last resort (src/platform/signals.rs).
     let said = saver.stderr();
     assert!(said.contains("ended by \"SIGTERM or SIGINT\""), "{said}");
 }

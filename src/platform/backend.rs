@@ -10,6 +10,8 @@ pub enum Backend {
     X11,
     /// A Wayland compositor (`$WAYLAND_DISPLAY` or `$WAYLAND_SOCKET`).
     Wayland,
+    /// Windows' own, the one window system there.
+    Windows,
 }
 
 /// The window system to use, given the values of `WAYLAND_DISPLAY` (or

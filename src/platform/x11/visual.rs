@@ -9,7 +9,7 @@ use x11rb::connection::Connection;
 use x11rb::protocol::xproto::{ConnectionExt as _, Screen, Setup, VisualClass, Visualtype};
 use x11rb::rust_connection::RustConnection;
 
-use crate::saver::x11::bands::can_draw;
+use super::bands::can_draw;
 
 /// What every refusal says is needed, and how to get it.
 const NEEDED: &str = "mountains draws in TrueColor of 15 to 32 bits";

@@ -23,6 +23,7 @@ pub struct Claim {
 pub fn lock_name(backend: Backend, display: &str) -> String {
     let kind = match backend {
         Backend::X11 => "x11",
+        Backend::Windows => "windows",
         Backend::Wayland => "wayland",
     };
     let safe: String = display
@@ -40,7 +41,7 @@ pub fn lock_name(backend: Backend, display: &str) -> String {
 /// caller runs on without the claim).
 pub fn claim(backend: Backend) -> Result<Option<Claim>, String> {
     let var = match backend {
-        Backend::X11 => "DISPLAY",
+        Backend::X11 | Backend::Windows => "DISPLAY",
         Backend::Wayland if std::env::var_os("WAYLAND_DISPLAY").is_some() => "WAYLAND_DISPLAY",
         Backend::Wayland => "WAYLAND_SOCKET",
     };

@@ -33,10 +33,10 @@ pub fn own_monitor<D: PartialEq>(device: &D, monitors: &[(D, Bounds)], nearest: 
         .map_or(nearest, |(_, b)| *b)
 }
 
-#[cfg(windows)]
+#[cfg(windows_platform)]
 pub use win32::{cursor_position, keep_covering, take_display_change};
 
-#[cfg(windows)]
+#[cfg(windows_platform)]
 mod win32 {
     use std::cell::RefCell;
 

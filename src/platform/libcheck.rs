@@ -2,10 +2,10 @@
 //! time: winit panics inside its loader when one is missing (or says only
 //! "not available"), so look first and name it.
 
-#[cfg(unix)]
+#[cfg(any(x11_platform, wayland_platform))]
 use super::backend::{self, Backend};
-#[cfg(unix)]
-use super::error::SaverError;
+#[cfg(any(x11_platform, wayland_platform))]
+use crate::saver::error::SaverError;
 
 /// Each library winit and softbuffer open under X11, and the Debian/Ubuntu package holding it.
 pub const X11_LIBRARIES: &[(&str, &str)] = &[
@@ -34,7 +34,7 @@ pub fn first_missing<'a>(
 }
 
 /// True when the dynamic loader can open `name`.
-#[cfg(unix)]
+#[cfg(any(x11_platform, wayland_platform))]
 pub fn can_dlopen(name: &str) -> bool {
     // SAFETY: these are the system X libraries winit itself is about to
     // load; their initialisers are the ones that run in any X program.
@@ -44,24 +44,25 @@ pub fn can_dlopen(name: &str) -> bool {
 /// The window system the winit modes will use (X11 when `x_named`, i.e.
 /// `-display` was given, else Wayland first), after checking that its
 /// libraries can be loaded.
-#[cfg(unix)]
+#[cfg(any(x11_platform, wayland_platform))]
 pub fn check_display(x_named: bool) -> Result<Backend, SaverError> {
     let chosen = backend::from_env(x_named).ok_or(SaverError::NoWindowSystem)?;
     match chosen {
         Backend::X11 => check_libraries("X", X11_LIBRARIES)?,
         Backend::Wayland => check_libraries("Wayland", WAYLAND_LIBRARIES)?,
+        Backend::Windows => {}
     }
     Ok(chosen)
 }
 
 /// `--layer`: libwayland-client, checked before the connection (which
 /// would say only that a library is missing, not which package has it).
-#[cfg(unix)]
+#[cfg(any(x11_platform, wayland_platform))]
 pub fn check_wayland_client() -> Result<(), SaverError> {
     check_libraries("Wayland", &[WAYLAND_CLIENT])
 }
 
-#[cfg(unix)]
+#[cfg(any(x11_platform, wayland_platform))]
 fn check_libraries(system: &'static str, libraries: &[(&str, &str)]) -> Result<(), SaverError> {
     match first_missing(libraries, can_dlopen) {
         Some((library, package)) => Err(SaverError::MissingLibrary {
@@ -76,6 +77,7 @@ fn check_libraries(system: &'static str, libraries: &[(&str, &str)]) -> Result<(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::saver::error::SaverError;
 
     #[test]
     fn names_the_first_missing_library_and_its_package() {
@@ -105,7 +107,7 @@ mod tests {
         );
     }
 
-    #[cfg(unix)]
+    #[cfg(any(x11_platform, wayland_platform))]
     #[test]
     fn a_library_that_does_not_exist_cannot_be_opened() {
         assert!(!can_dlopen("libmountains-no-such-library.so.42"));

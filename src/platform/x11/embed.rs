@@ -89,16 +89,16 @@ pub fn run(
     settings: Settings,
     opened: Option<Mountain>,
 ) -> Result<(), SaverError> {
-    let (conn, screen) = RustConnection::connect(None).map_err(SaverError::from_connect)?;
+    let (conn, screen) = RustConnection::connect(None).map_err(super::connect::connect_failed)?;
     let conn = Arc::new(conn);
     let xid = window.unwrap_or_else(|| root_target(&conn, screen));
     let size = watch_window(&conn, xid)?;
-    if let Some(why) = crate::x11_visual::window_refusal(&*conn, screen, xid) {
+    if let Some(why) = crate::platform::x11::visual::window_refusal(&*conn, screen, xid) {
         return Err(SaverError::Unsupported(why));
     }
     let (tx, rx) = mpsc::channel();
     spawn_event_thread(conn.clone(), xid, tx.clone())?;
-    crate::signals::on_terminate(move || {
+    crate::platform::signals::on_terminate(move || {
         let _ = tx.send(Notice::Terminate);
     })
     .map_err(|e| SaverError::Other(format!("cannot watch for SIGTERM: {e}")))?;
@@ -196,7 +196,7 @@ impl Embedded {
                 self.present(damage)?;
             }
             // The signal handler's flag: strips being drawn stopped for it.
-            if crate::signals::ending() {
+            if crate::platform::signals::ending() {
                 self.trace.ended_by(&Notice::Terminate);
                 return Ok(());
             }

@@ -1,8 +1,9 @@
 //! What the saver asks the X server once, before its windows map, on one
-//! short-lived connection: the visual to draw with (chosen by
-//! x11_visual.rs), whether there is one at all, and, for full screen, where the pointer is: the origin
-//! its moves are measured from, taken before the windows map, so a move
-//! that comes before the first motion event is still a move.
+//! short-lived connection: the visual to draw with (chosen by visual.rs),
+//! whether there is one at all, and, for full screen, where the pointer
+//! is: the origin its moves are measured from, taken before the windows
+//! map, so a move that comes before the first motion event is still a
+//! move.
 
 use x11rb::connection::Connection;
 use x11rb::protocol::xproto::ConnectionExt as _;
@@ -26,9 +27,9 @@ pub fn first_look(pointer: bool) -> FirstLook {
         return FirstLook::default();
     };
     FirstLook {
-        visual: crate::x11_visual::drawable_visual_on(&conn, screen),
+        visual: crate::platform::x11::visual::drawable_visual_on(&conn, screen),
         pointer: pointer.then(|| pointer_position(&conn, screen)).flatten(),
-        refusal: crate::x11_visual::screen_refusal(conn.setup(), screen),
+        refusal: crate::platform::x11::visual::screen_refusal(conn.setup(), screen),
     }
 }
 

@@ -54,7 +54,7 @@ const NAMESPACE: &str = "mountains";
 
 /// Runs the slide show on `layer` of every output until it ends.
 pub fn run(layer: Layer, settings: Settings, opened: Option<Mountain>) -> Result<(), SaverError> {
-    crate::saver::libcheck::check_wayland_client()?;
+    crate::platform::libcheck::check_wayland_client()?;
     let conn = Connection::connect_to_env().map_err(not_connected)?;
     let (globals, queue) =
         registry_queue_init(&conn).map_err(|e| SaverError::NoCompositor(e.to_string()))?;
@@ -74,7 +74,7 @@ pub fn run(layer: Layer, settings: Settings, opened: Option<Mountain>) -> Result
         .handle()
         .insert_source(signalled, |(), _, app| app.end(&"SIGTERM or SIGINT"))
         .map_err(|e| other("cannot watch for SIGTERM", e.error))?;
-    crate::signals::on_terminate(move || ping.ping())
+    crate::platform::signals::on_terminate(move || ping.ping())
         .map_err(|e| other("cannot watch for SIGTERM", e))?;
     let mut timeout = Some(Duration::ZERO);
     while !app.ended {
@@ -83,7 +83,7 @@ pub fn run(layer: Layer, settings: Settings, opened: Option<Mountain>) -> Result
             .map_err(|e| SaverError::NoCompositor(format!("the connection failed: {e}")))?;
         timeout = app.step(Instant::now());
         // The signal handler's flag: strips being drawn stopped for it.
-        if crate::signals::ending() && !app.ended {
+        if crate::platform::signals::ending() && !app.ended {
             app.end(&"SIGTERM or SIGINT");
         }
     }
