@@ -29,6 +29,15 @@ const CORE: f32 = 0.003;
 const HALO: f32 = 0.06;
 /// The sun's disc: 1 - cos of its radius (about 1 degree).
 const DISC: f32 = 0.000_15;
+/// The moon's disc: 1 - cos of its radius (0.26 degrees: it is 0.52
+/// degrees wide, about as wide as the sun is).
+const MOON_DISC: f32 = 0.000_010_3;
+/// The full moon's face.
+const MOON: Rgb = [0.93, 0.93, 0.87];
+/// What a full night leaves of the glow around the light, and of the
+/// light on the clouds' lit edges.
+const MOON_GLOW: f32 = 0.5;
+const MOONLIT_CLOUD: f32 = 0.6;
 
 /// The weather of one slide, seen through one view.
 #[derive(Debug, Clone)]
@@ -47,6 +56,9 @@ pub(crate) struct Weather {
     /// horizon, 0 for a high one).
     light: Rgb,
     glow: f32,
+    /// The disc's 1 - cos of its radius and its colour: the sun's, or
+    /// the moon's at night.
+    disc: (f32, Rgb),
     clouds: Option<CloudSheet>,
     amount: f32,
     /// Cloud lit by the sun (its edges) and in its own shade (its heart).
@@ -92,8 +104,18 @@ impl Weather {
         // A high sun stands far above the frame: its glow is not seen.
         let low = 1.0 - smoothstep(0.3, 0.6, sun.z);
         let glows = glows && low > 0.0;
-        let white = mix(lighting.direct, [1.0; 3], 0.15);
+        let night = lighting.night;
+        let white = mix(lighting.direct, [1.0; 3], 0.15 * (1.0 - night));
         let lit: Rgb = [0, 1, 2].map(|i| (0.8 * white[i] + 0.35 * lighting.horizon[i]).min(1.0));
+        let lit = match night > 0.0 {
+            true => lit.map(|c| c * (1.0 - (1.0 - MOONLIT_CLOUD) * night)),
+            false => lit,
+        };
+        let moon = night >= 0.5;
+        let disc = match moon {
+            true => (MOON_DISC, filter(MOON)),
+            false => (DISC, filter(mix(lighting.direct, [1.0; 3], 0.6))),
+        };
         let shade: Rgb = [0, 1, 2].map(|i| (lighting.ambient[i] + 0.3 * lighting.zenith[i]) * 1.15);
         Some(Weather {
             view: view.clone(),
@@ -103,7 +125,8 @@ impl Weather {
             height: frame.y.max(1.0),
             horizon_row,
             light: filter(lighting.direct),
-            glow: low,
+            glow: low * (1.0 - (1.0 - MOON_GLOW) * night),
+            disc,
             clouds: (amount > 0.0).then(|| CloudSheet::new(amount, draw)),
             amount,
             lit: filter(lit),
@@ -164,6 +187,24 @@ impl Weather {
     }
 }
 
+impl Weather {
+    /// How much of the sky at screen point (`x`, `y`) is clear of cloud
+    /// and of the light's disc (0..=1): where the stars show.
+    pub(crate) fn clear_at(&self, x: f32, y: f32) -> f32 {
+        if self.glows
+            && let Some(dir) = self.view.sight(x, y)
+            && 1.0 - dir.dot(self.sun) < 4.0 * self.disc.0
+        {
+            return 0.0;
+        }
+        let row = self.row(y);
+        let Some(sheet) = &row.sheet else {
+            return 1.0;
+        };
+        1.0 - sheet.seen((x - self.middle) / self.height).opacity.clamp(0.0, 1.0)
+    }
+}
+
 /// The weather along one screen row ([`Weather::row`]).
 pub(crate) struct WeatherRow<'a> {
     weather: &'a Weather,
@@ -186,8 +227,8 @@ impl WeatherRow<'_> {
         if w.glows && away < GLOW_REACH {
             let g = w.glow_at(away);
             c = [0, 1, 2].map(|i| c[i] + w.light[i] * g);
-            if away < DISC {
-                c = mix(c, mix(w.light, [1.0; 3], 0.6), 0.9);
+            if away < w.disc.0 {
+                c = mix(c, w.disc.1, 0.9);
             }
         }
         let Some(sheet) = &self.sheet else {
