@@ -5,12 +5,12 @@
 //!
 //! Below the horizon the sun lights nothing: through civil and nautical
 //! twilight (down to 12 degrees) the sky and the light fade to the
-//! night's, and the moon takes over where [`NIGHT`] puts it (no lunar
+//! night's, and the moon takes over where `sun = "night"` puts it (no lunar
 //! ephemeris: the land needs a light, and ahead of the viewer it glitters
 //! on the water).
 
 use super::clouds::smoothstep;
-use super::light::{EVENING, Lighting, MIDDAY, MORNING, NIGHT, SUNSET, Time};
+use super::light::{EVENING, Lighting, MIDDAY, MORNING, NIGHT, NIGHT_TURN, SUNSET, Time};
 use crate::render::base::colour::mix;
 
 /// Degrees below the horizon where twilight ends and the night's look is whole.
@@ -49,7 +49,7 @@ impl Lighting {
         let (fade, lamp) = if night < 0.5 {
             (1.0 - 2.0 * night, placed(time, 1.0, az))
         } else {
-            (2.0 * night - 1.0, placed(time, NIGHT.elevation, NIGHT.azimuth))
+            (2.0 * night - 1.0, placed(time, NIGHT.elevation, NIGHT.azimuth + NIGHT_TURN))
         };
         time = lamp;
         time.direct = time.direct.map(|c| c * fade);

@@ -111,20 +111,26 @@ pub(super) const SUNSET: Time = Time {
 };
 
 /// Night under the moon: "day for night" in numbers, the light about two
-/// stops down and tinted blue. The moon stands ahead of the viewer, so the
-/// near faces stand as silhouettes against a sky lit around it, slopes
-/// turned to the side catch its light, and its glitter path lies across
-/// the water in front (sight lines off the water leave it 7 to 19 degrees
-/// up in the vista); the sky stays a deep blue, lighter towards the
-/// horizon, so the land stands out against it and the frame is never black.
+/// stops down and tinted blue. The moon stands ahead of the viewer: the
+/// near faces stand as silhouettes against the sky lit around it, and its
+/// glitter lies across the water in front (sight lines off the water leave
+/// it 7 to 19 degrees up in the vista). The nights turn it aside
+/// ([`NIGHT_TURN`]), so slopes turned to it catch its light. The sky stays
+/// a deep blue, lighter towards the horizon, so the land stands out
+/// against it and the frame is never black.
 pub(super) const NIGHT: Time = Time {
-    elevation: 11.0,
-    azimuth: 75.0,
-    direct: [0.36, 0.43, 0.58],
-    ambient: [0.085, 0.105, 0.16],
+    elevation: 9.0,
+    azimuth: 90.0,
+    direct: [0.56, 0.64, 0.82],
+    ambient: [0.17, 0.20, 0.29],
     zenith: [0.015, 0.030, 0.085],
-    horizon: [0.075, 0.105, 0.185],
+    horizon: [0.08, 0.11, 0.20],
 };
+
+/// Degrees `sun = "night"` turns [`NIGHT`]'s moon to the viewer's left:
+/// its glitter still shows in the left of the frame, and slopes facing
+/// left are moonlit. Varied nights turn it at least this far either way.
+pub(super) const NIGHT_TURN: f32 = -16.0;
 
 /// The moon's glitter on the water: a pale silver, brighter than the light
 /// it lends the land (the water mirrors the disc itself).
@@ -133,10 +139,10 @@ const MOON_GLINTS: Rgb = [0.80, 0.85, 0.95];
 /// How many in 256 slides `sun = "varied"` makes night, where it may.
 pub const NIGHTS_IN_256: u64 = 32;
 
-/// Degrees a varied night's moon may stand above [`NIGHT`]'s or below it
-/// (at its lowest its disc shows at the top of the frame), and turn either
-/// way from it.
-const MOON_RISE: f32 = 8.0;
+/// Degrees a varied night's moon may stand above [`NIGHT`]'s, and turn
+/// further aside than [`NIGHT_TURN`] (either way): never further behind
+/// the range than `sun = "night"`'s.
+const MOON_RISE: f32 = 10.0;
 const MOON_TURN: f32 = 30.0;
 
 /// The sky light left on ground that sees none of the sky (light bounced
@@ -170,16 +176,13 @@ impl Lighting {
             Sun::Midday | Sun::Clock => (&MIDDAY, 0.0),
             Sun::Evening => (&EVENING, 0.0),
             Sun::Sunset => (&SUNSET, 0.0),
-            Sun::Night => return Self::at(&NIGHT, 0.0).under_moon(1.0),
+            Sun::Night => return Self::moon(0.0, NIGHT_TURN),
             // Bits of the identity the day's draw below does not read.
             Sun::Varied if nights && (draw >> 40) & 0xff < NIGHTS_IN_256 => {
                 let unit = |shift: u32| ((draw >> shift) & 0xff) as f32 / 255.0;
-                let moon = Time {
-                    elevation: NIGHT.elevation + (2.0 * unit(48) - 1.0) * MOON_RISE,
-                    ..NIGHT
-                };
-                let turn = (2.0 * unit(56) - 1.0) * MOON_TURN;
-                return Self::at(&moon, turn).under_moon(1.0);
+                let side = if (draw >> 63) == 1 { -1.0 } else { 1.0 };
+                let turn = side * (NIGHT_TURN.abs() + unit(56) * MOON_TURN);
+                return Self::moon(unit(48) * MOON_RISE, turn);
             }
             Sun::Varied => {
                 // Morning, midday or evening; half the evenings look into
@@ -215,6 +218,16 @@ impl Lighting {
             night: 0.0,
             glints: [CLASSIC_HALF; 3],
         }
+    }
+
+    /// The night's light, its moon `rise` degrees above [`NIGHT`]'s and
+    /// turned `turn` degrees.
+    fn moon(rise: f32, turn: f32) -> Self {
+        let time = Time {
+            elevation: NIGHT.elevation + rise,
+            ..NIGHT
+        };
+        Self::at(&time, turn).under_moon(1.0)
     }
 
     /// This light with `night` (0..=1) of the night's look, its glitter
