@@ -40,4 +40,4 @@ pub use shade::{dither, essay, facings, hour, light, listing, palette, shadow};
 
 pub use damage::Damage;
 pub use frame::{Frame, Rect};
-pub use painter::{Painter, render_full};
+pub use painter::{Painter, render_full, render_full_at};

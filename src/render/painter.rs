@@ -176,13 +176,23 @@ impl Painter {
 /// Draws a complete mountain into `frame`: the same pixels as stepping a
 /// `Painter` to the end, drawn in horizontal bands on all cores.
 pub fn render_full(field: &Heightfield, settings: &Settings, frame: &mut Frame) {
+    render_full_at(field, settings, frame, None);
+}
+
+/// [`render_full`] with the sun of `sun = "clock"` where `hour` puts it.
+pub fn render_full_at(
+    field: &Heightfield,
+    settings: &Settings,
+    frame: &mut Frame,
+    hour: Option<SunAt>,
+) {
     let (w, h) = (frame.width(), frame.height());
     if settings.color == ColorMode::Ridges {
         let mut p = Painter::new(Arc::new(field.clone()), settings, w, h);
         p.step(frame, usize::MAX);
         return;
     }
-    let scene = Scene::new(FieldRef::Borrowed(field), settings, w, h);
+    let scene = Scene::at_hour(FieldRef::Borrowed(field), settings, (w, h), hour);
     draw_full(&scene, frame);
 }
 
