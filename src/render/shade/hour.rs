@@ -76,36 +76,3 @@ fn blend(a: &Time, b: &Time, t: f32) -> Time {
         ..*a
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn at(elevation: f32, afternoon: bool) -> Lighting {
-        Lighting::at_hour(SunAt {
-            elevation,
-            azimuth: 120.0,
-            afternoon,
-        })
-    }
-
-    #[test]
-    fn the_sky_darkens_through_twilight_into_night() {
-        let brightness = |l: &Lighting| l.zenith.iter().sum::<f32>();
-        let hours = [40.0, 10.0, 0.0, -4.0, -8.0, -12.0, -30.0].map(|e| at(e, true));
-        for pair in hours.windows(2) {
-            assert!(brightness(&pair[1]) <= brightness(&pair[0]) + 1e-6);
-            assert!(pair[1].night >= pair[0].night);
-        }
-        assert_eq!(hours[0].night, 0.0);
-        assert_eq!(hours[6].night, 1.0);
-        assert!(hours[0].sun.z > hours[1].sun.z);
-    }
-
-    #[test]
-    fn mornings_and_evenings_differ_only_in_colour() {
-        let (am, pm) = (at(8.0, false), at(8.0, true));
-        assert_eq!(am.sun, pm.sun);
-        assert_ne!(am.direct, pm.direct);
-    }
-}
