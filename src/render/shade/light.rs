@@ -122,7 +122,7 @@ pub(super) const NIGHT: Time = Time {
     elevation: 9.0,
     azimuth: 90.0,
     direct: [0.56, 0.64, 0.82],
-    ambient: [0.17, 0.20, 0.29],
+    ambient: [0.21, 0.25, 0.35],
     zenith: [0.015, 0.030, 0.085],
     horizon: [0.08, 0.11, 0.20],
 };
