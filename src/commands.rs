@@ -62,7 +62,12 @@ pub fn render(
         Err(e) => return fail(&e),
     };
     let drawn = shown.drawn_with(settings);
-    render_full_at(&shown.field, &drawn, &mut frame, crate::solar::now_for(&drawn));
+    render_full_at(
+        &shown.field,
+        &drawn,
+        &mut frame,
+        crate::solar::now_for(&drawn),
+    );
     let seed = shown.seed;
     let format = output::format_of(output, output::PICTURES, "a picture").unwrap_or(Format::Png);
     if let Err(e) = crate::snapshot::write_picture(output, &frame, format) {

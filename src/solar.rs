@@ -85,7 +85,8 @@ fn refraction(elevation: f64) -> f64 {
     } else if elevation > 5.0 {
         58.1 / tan - 0.07 / tan.powi(3) + 0.000086 / tan.powi(5)
     } else if elevation > -0.575 {
-        1735.0 + elevation * (-518.2 + elevation * (103.4 + elevation * (-12.79 + elevation * 0.711)))
+        1735.0
+            + elevation * (-518.2 + elevation * (103.4 + elevation * (-12.79 + elevation * 0.711)))
     } else {
         -20.772 / tan
     };

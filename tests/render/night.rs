@@ -56,8 +56,16 @@ fn night_is_part_of_the_varied_draw_in_our_look_only() {
             nights += 1;
         }
         // The colour filters and the seed programs' looks keep their pictures.
-        assert_eq!(Palette::lighting_for(&gray, &field).night, 0.0, "seed {seed}");
-        assert_eq!(Palette::lighting_for(&classic, &field).night, 0.0, "seed {seed}");
+        assert_eq!(
+            Palette::lighting_for(&gray, &field).night,
+            0.0,
+            "seed {seed}"
+        );
+        assert_eq!(
+            Palette::lighting_for(&classic, &field).night,
+            0.0,
+            "seed {seed}"
+        );
     }
     assert!(nights * 20 >= 120, "{nights} nights in 120 slides");
     assert!(nights * 4 <= 120, "{nights} nights in 120 slides");
@@ -77,7 +85,10 @@ fn a_night_frame_is_dark_not_black_and_its_land_stands_out_from_its_sky() {
         let (frame, classes) = drawn(&field, &s, w, h);
         let px = frame.pixels();
         let mean = px.iter().map(|&c| luma(c)).sum::<f32>() / px.len() as f32;
-        assert!((8.0..70.0).contains(&mean), "seed {seed}: mean level {mean:.1}");
+        assert!(
+            (8.0..70.0).contains(&mean),
+            "seed {seed}: mean level {mean:.1}"
+        );
         let black = px.iter().filter(|&&c| luma(c) < 3.0).count();
         assert!(black * 100 < px.len(), "seed {seed}: {black} black pixels");
         let (mut gap, mut columns) = (0.0, 0);
@@ -95,9 +106,15 @@ fn a_night_frame_is_dark_not_black_and_its_land_stands_out_from_its_sky() {
             gap += (sky - land).abs();
             columns += 1;
         }
-        assert!(columns > w / 4, "seed {seed}: a skyline in {columns} columns");
+        assert!(
+            columns > w / 4,
+            "seed {seed}: a skyline in {columns} columns"
+        );
         let gap = gap / columns as f32;
-        assert!(gap >= 6.0, "seed {seed}: land and sky {gap:.1} levels apart");
+        assert!(
+            gap >= 6.0,
+            "seed {seed}: land and sky {gap:.1} levels apart"
+        );
     }
 }
 
@@ -115,7 +132,10 @@ fn stars_show_where_the_sky_is_clear() {
             for x in 1..w - 1 {
                 let i = (y * w + x) as usize;
                 let around = [i - 1, i + 1, i - w as usize, i + w as usize];
-                if around.iter().chain([&i]).all(|&j| Class::of(cls[j]) == Class::Sky)
+                if around
+                    .iter()
+                    .chain([&i])
+                    .all(|&j| Class::of(cls[j]) == Class::Sky)
                     && around.iter().all(|&j| luma(px[i]) >= luma(px[j]) + 10.0)
                 {
                     stars += 1;
@@ -126,7 +146,10 @@ fn stars_show_where_the_sky_is_clear() {
     };
     let (clear, overcast) = (count(0.0), count(1.0));
     assert!(clear >= 40, "{clear} stars in a clear sky");
-    assert!(overcast * 4 <= clear, "{overcast} stars overcast, {clear} clear");
+    assert!(
+        overcast * 4 <= clear,
+        "{overcast} stars overcast, {clear} clear"
+    );
 }
 
 /// The moon's glitter: water the moon's light falls on off the ripples is

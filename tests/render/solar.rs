@@ -68,7 +68,13 @@ fn the_sun_stands_where_noaas_spreadsheet_puts_it() {
 #[test]
 fn the_sun_stands_where_nrels_spa_example_puts_it() {
     let unix = utc(2003, 10, 17, 19, 30, 30);
-    check("Golden 2003-10-17", unix, (39.742476, -105.1786), 39.88838, 194.34024);
+    check(
+        "Golden 2003-10-17",
+        unix,
+        (39.742476, -105.1786),
+        39.88838,
+        194.34024,
+    );
 }
 
 /// Meeus, *Astronomical Algorithms* (2nd ed.), the algorithm NOAA's

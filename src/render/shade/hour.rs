@@ -32,8 +32,16 @@ impl Lighting {
     /// The light of the sun at `at`: its own place, colours by its height.
     pub fn at_hour(at: SunAt) -> Self {
         let low = if at.afternoon { &EVENING } else { &MORNING };
-        let el = if at.elevation.is_finite() { at.elevation } else { 0.0 };
-        let az = if at.azimuth.is_finite() { at.azimuth } else { 90.0 };
+        let el = if at.elevation.is_finite() {
+            at.elevation
+        } else {
+            0.0
+        };
+        let az = if at.azimuth.is_finite() {
+            at.azimuth
+        } else {
+            90.0
+        };
         if el >= low.elevation {
             let t = smoothstep(low.elevation, MIDDAY.elevation, el);
             return Self::at(&placed(blend(low, &MIDDAY, t), el, az), 0.0);
@@ -49,7 +57,10 @@ impl Lighting {
         let (fade, lamp) = if night < 0.5 {
             (1.0 - 2.0 * night, placed(time, 1.0, az))
         } else {
-            (2.0 * night - 1.0, placed(time, NIGHT.elevation, NIGHT.azimuth + NIGHT_TURN))
+            (
+                2.0 * night - 1.0,
+                placed(time, NIGHT.elevation, NIGHT.azimuth + NIGHT_TURN),
+            )
         };
         time = lamp;
         time.direct = time.direct.map(|c| c * fade);

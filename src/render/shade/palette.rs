@@ -22,8 +22,8 @@
 use super::dither;
 use super::essay;
 use super::facings;
-use super::index;
 use super::hour::SunAt;
+use super::index;
 use super::light::Lighting;
 use super::listing;
 use super::night;

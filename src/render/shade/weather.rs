@@ -201,7 +201,10 @@ impl Weather {
         let Some(sheet) = &row.sheet else {
             return 1.0;
         };
-        1.0 - sheet.seen((x - self.middle) / self.height).opacity.clamp(0.0, 1.0)
+        1.0 - sheet
+            .seen((x - self.middle) / self.height)
+            .opacity
+            .clamp(0.0, 1.0)
     }
 }
 
