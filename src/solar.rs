@@ -29,8 +29,8 @@ pub fn position(unix: f64, latitude: f64, longitude: f64) -> Position {
     let (sin, cos) = (|d: f64| d.to_radians().sin(), |d: f64| d.to_radians().cos());
     let julian_day = unix / 86_400.0 + 2_440_587.5;
     let t = (julian_day - 2_451_545.0) / 36_525.0;
-    let mean_long = (280.46646 + t * (36_000.76983 + t * 0.0003032)).rem_euclid(360.0);
-    let mean_anom = 357.52911 + t * (35_999.05029 - 0.0001537 * t);
+    let mean_long = (280.46646 + t * (36000.76983 + t * 0.0003032)).rem_euclid(360.0);
+    let mean_anom = 357.52911 + t * (35999.05029 - 0.0001537 * t);
     let ecc = 0.016708634 - t * (0.000042037 + 0.0000001267 * t);
     let centre = sin(mean_anom) * (1.914602 - t * (0.004817 + 0.000014 * t))
         + sin(2.0 * mean_anom) * (0.019993 - 0.000101 * t)
