@@ -111,9 +111,10 @@ pub(super) const SUNSET: Time = Time {
 };
 
 /// Night under the moon: "day for night" in numbers, the light about two
-/// stops down and tinted blue. The moon stands ahead of the viewer: the
-/// near faces stand as silhouettes against the sky lit around it, and its
-/// glitter lies across the water in front (sight lines off the water leave
+/// stops down and tinted blue. The moon stands ahead of the viewer, above
+/// the frame (its glow, faint beside the sun's, is left out): the near
+/// faces stand as silhouettes against the sky, and its glitter lies across
+/// the water in front (sight lines off the water leave
 /// it 7 to 19 degrees up in the vista). The nights turn it aside
 /// ([`NIGHT_TURN`]), so slopes turned to it catch its light. The sky stays
 /// a deep blue, lighter towards the horizon, so the land stands out

@@ -29,14 +29,7 @@ const CORE: f32 = 0.003;
 const HALO: f32 = 0.06;
 /// The sun's disc: 1 - cos of its radius (about 1 degree).
 const DISC: f32 = 0.000_15;
-/// The moon's disc: 1 - cos of its radius (0.26 degrees: it is 0.52
-/// degrees wide, about as wide as the sun is).
-const MOON_DISC: f32 = 0.000_010_3;
-/// The full moon's face.
-const MOON: Rgb = [0.93, 0.93, 0.87];
-/// What a full night leaves of the glow around the light, and of the
-/// light on the clouds' lit edges.
-const MOON_GLOW: f32 = 0.5;
+/// What a full night leaves of the light on the clouds' lit edges.
 const MOONLIT_CLOUD: f32 = 0.6;
 
 /// The weather of one slide, seen through one view.
@@ -56,9 +49,6 @@ pub(crate) struct Weather {
     /// horizon, 0 for a high one).
     light: Rgb,
     glow: f32,
-    /// The disc's 1 - cos of its radius and its colour: the sun's, or
-    /// the moon's at night.
-    disc: (f32, Rgb),
     clouds: Option<CloudSheet>,
     amount: f32,
     /// Cloud lit by the sun (its edges) and in its own shade (its heart).
@@ -103,18 +93,16 @@ impl Weather {
         let glows = off - reach < (1.0 - GLOW_REACH).acos();
         // A high sun stands far above the frame: its glow is not seen.
         let low = 1.0 - smoothstep(0.3, 0.6, sun.z);
-        let glows = glows && low > 0.0;
+        // The moon's glow is too faint to show beside its cost (every
+        // sky pixel and every mirrored one on the weather's path): a clear
+        // night keeps the plain gradient.
+        let glows = glows && low > 0.0 && lighting.night < 0.5;
         let night = lighting.night;
         let white = mix(lighting.direct, [1.0; 3], 0.15 * (1.0 - night));
         let lit: Rgb = [0, 1, 2].map(|i| (0.8 * white[i] + 0.35 * lighting.horizon[i]).min(1.0));
         let lit = match night > 0.0 {
             true => lit.map(|c| c * (1.0 - (1.0 - MOONLIT_CLOUD) * night)),
             false => lit,
-        };
-        let moon = night >= 0.5;
-        let disc = match moon {
-            true => (MOON_DISC, filter(MOON)),
-            false => (DISC, filter(mix(lighting.direct, [1.0; 3], 0.6))),
         };
         let shade: Rgb = [0, 1, 2].map(|i| (lighting.ambient[i] + 0.3 * lighting.zenith[i]) * 1.15);
         Some(Weather {
@@ -125,8 +113,7 @@ impl Weather {
             height: frame.y.max(1.0),
             horizon_row,
             light: filter(lighting.direct),
-            glow: low * (1.0 - (1.0 - MOON_GLOW) * night),
-            disc,
+            glow: low,
             clouds: (amount > 0.0).then(|| CloudSheet::new(amount, draw)),
             amount,
             lit: filter(lit),
@@ -193,7 +180,7 @@ impl Weather {
     pub(crate) fn clear_at(&self, x: f32, y: f32) -> f32 {
         if self.glows
             && let Some(dir) = self.view.sight(x, y)
-            && 1.0 - dir.dot(self.sun) < 4.0 * self.disc.0
+            && 1.0 - dir.dot(self.sun) < 4.0 * DISC
         {
             return 0.0;
         }
@@ -230,8 +217,8 @@ impl WeatherRow<'_> {
         if w.glows && away < GLOW_REACH {
             let g = w.glow_at(away);
             c = [0, 1, 2].map(|i| c[i] + w.light[i] * g);
-            if away < w.disc.0 {
-                c = mix(c, w.disc.1, 0.9);
+            if away < DISC {
+                c = mix(c, mix(w.light, [1.0; 3], 0.6), 0.9);
             }
         }
         let Some(sheet) = &self.sheet else {
