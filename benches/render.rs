@@ -6,7 +6,7 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use mountains::render::{Frame, detail, render_full};
-use mountains::settings::{Clouds, ColorMode, Settings, Shading};
+use mountains::settings::{Clouds, ColorMode, Settings, Shading, Sun};
 use mountains::terrain::{Heightfield, generate};
 
 /// The real generator's mountain (seed 42), so triangle sizes, water and
@@ -89,9 +89,29 @@ fn bench_default(c: &mut Criterion) {
     }
 }
 
+/// A night frame against a day frame of the same mountain, frame size and
+/// weather (seed 42 at the detail `auto` picks): the stars, the moon and
+/// the night's colours must cost little beside the day's light.
+fn bench_night(c: &mut Criterion) {
+    for (w, h, size) in [(1920, 1080, "1080p"), (3840, 2160, "2160p")] {
+        for (time, sun) in [("day", Sun::Midday), ("night", Sun::Night)] {
+            let chosen = Settings {
+                sun,
+                ..Settings::default()
+            };
+            let settings = detail::for_frame(&chosen, w, h);
+            let field = generate(&settings, 42);
+            let mut frame = Frame::new(w, h).unwrap();
+            c.bench_function(&format!("{time}_auto_{size}"), |b| {
+                b.iter(|| render_full(&field, &settings, &mut frame))
+            });
+        }
+    }
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(10);
-    targets = bench, bench_default
+    targets = bench, bench_default, bench_night
 }
 criterion_main!(benches);

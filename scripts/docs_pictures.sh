@@ -39,6 +39,7 @@ r natural
 r morning --set sun=morning
 r evening --set sun=evening
 r sunset --set sun=sunset
+r night --set sun=night
 r oblique --set view=oblique
 r perspective --set view=perspective
 r triangle --set generator=triangle --set profile=massif

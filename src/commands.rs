@@ -6,7 +6,7 @@ use std::process::ExitCode;
 use crate::cli::output::{self, Format};
 use crate::console;
 use crate::mountain::Mountain;
-use crate::render::{Frame, render_full};
+use crate::render::{Frame, render_full_at};
 use crate::settings::{Settings, load, paths};
 use crate::terrain::heightmap;
 
@@ -61,7 +61,13 @@ pub fn render(
         Ok(m) => m,
         Err(e) => return fail(&e),
     };
-    render_full(&shown.field, &shown.drawn_with(settings), &mut frame);
+    let drawn = shown.drawn_with(settings);
+    render_full_at(
+        &shown.field,
+        &drawn,
+        &mut frame,
+        crate::solar::now_for(&drawn),
+    );
     let seed = shown.seed;
     let format = output::format_of(output, output::PICTURES, "a picture").unwrap_or(Format::Png);
     if let Err(e) = crate::snapshot::write_picture(output, &frame, format) {

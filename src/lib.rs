@@ -29,6 +29,7 @@ pub mod settings;
 pub mod settings_ui;
 
 pub mod snapshot;
+pub mod solar;
 pub mod spelling;
 pub mod terrain;
 mod threads;

@@ -169,7 +169,8 @@ pub const COAST_SEA_SHARE: f32 = 0.3;
 choice! {
     /// Which light falls on the land.
     pub enum Sun {
-        /// Morning, midday, evening or sunset, drawn from each mountain's heights.
+        /// Morning, midday, evening, sunset or (in the natural colours of our
+        /// own look) night, drawn from each mountain's heights.
         Varied = "varied",
         /// A low, cool light from the left and a pale sky.
         Morning = "morning",
@@ -183,6 +184,12 @@ choice! {
         /// Seed 000's light as its listing computes it: from the back right,
         /// 28 degrees up, brightness `0.5 + 0.5 cos`.
         Classic = "classic",
+        /// Night: the moon lights the land coolly and glitters on the water,
+        /// stars show where the sky is clear.
+        Night = "night",
+        /// The sun where it stands now for `latitude` and `longitude`: dawn,
+        /// day, dusk and night follow the clock.
+        Clock = "clock",
     }
 }
 
@@ -274,6 +281,10 @@ pub struct Settings {
     pub shadows: bool,
     /// The light: time of day, or drawn per mountain.
     pub sun: Sun,
+    /// Degrees north of the equator (south negative) for `sun = "clock"`.
+    pub latitude: f32,
+    /// Degrees east of Greenwich (west negative) for `sun = "clock"`.
+    pub longitude: f32,
     /// Faces lit smoothly across or one colour each.
     pub shading: Shading,
     /// Cloud in the sky: drawn per mountain, or an amount from 0 to 1.

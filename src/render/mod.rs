@@ -36,8 +36,8 @@ mod shade;
 pub use base::{colour, damage, frame};
 pub use framing::{detail, turn, view};
 pub use scan::raster;
-pub use shade::{dither, essay, facings, light, listing, palette, shadow};
+pub use shade::{dither, essay, facings, hour, light, listing, palette, shadow};
 
 pub use damage::Damage;
 pub use frame::{Frame, Rect};
-pub use painter::{Painter, render_full};
+pub use painter::{Painter, render_full, render_full_at};

@@ -11,6 +11,7 @@ use super::order::bands;
 use super::order::walk::{Rows, draw_strips};
 use super::ridges::Ridges;
 use super::scene::{FieldRef, Scene};
+use super::shade::hour::SunAt;
 use crate::settings::{ColorMode, Settings};
 use crate::terrain::Heightfield;
 
@@ -39,10 +40,21 @@ enum How {
 impl Painter {
     /// Plans drawing `field` under `settings` into a `width` x `height` frame.
     pub fn new(field: Arc<Heightfield>, settings: &Settings, width: u32, height: u32) -> Self {
+        Self::at_hour(field, settings, (width, height), None)
+    }
+
+    /// [`Painter::new`] with the sun of `sun = "clock"` where `hour` puts
+    /// it (the saver works it out for now; without one it lights as midday).
+    pub fn at_hour(
+        field: Arc<Heightfield>,
+        settings: &Settings,
+        (width, height): (u32, u32),
+        hour: Option<SunAt>,
+    ) -> Self {
         let how = if settings.color == ColorMode::Ridges {
             How::Ridges(Ridges::new(&field, settings, width, height))
         } else {
-            let scene = Scene::new(FieldRef::Shared(field), settings, width, height);
+            let scene = Scene::at_hour(FieldRef::Shared(field), settings, (width, height), hour);
             let sweep = scene
                 .clean_edges
                 .then(|| Box::new(HorizonSweep::new(width)));
@@ -164,13 +176,23 @@ impl Painter {
 /// Draws a complete mountain into `frame`: the same pixels as stepping a
 /// `Painter` to the end, drawn in horizontal bands on all cores.
 pub fn render_full(field: &Heightfield, settings: &Settings, frame: &mut Frame) {
+    render_full_at(field, settings, frame, None);
+}
+
+/// [`render_full`] with the sun of `sun = "clock"` where `hour` puts it.
+pub fn render_full_at(
+    field: &Heightfield,
+    settings: &Settings,
+    frame: &mut Frame,
+    hour: Option<SunAt>,
+) {
     let (w, h) = (frame.width(), frame.height());
     if settings.color == ColorMode::Ridges {
         let mut p = Painter::new(Arc::new(field.clone()), settings, w, h);
         p.step(frame, usize::MAX);
         return;
     }
-    let scene = Scene::new(FieldRef::Borrowed(field), settings, w, h);
+    let scene = Scene::at_hour(FieldRef::Borrowed(field), settings, (w, h), hour);
     draw_full(&scene, frame);
 }
 

@@ -14,6 +14,7 @@ use super::framing::view::{Oblique, View, listing_relief};
 use super::shade::clouds;
 use super::shade::dither;
 use super::shade::haze::Haze;
+use super::shade::hour::SunAt;
 use super::shade::mirror::Mirror;
 use super::shade::normals::Normals;
 use super::shade::palette::Palette;
@@ -21,6 +22,7 @@ use super::shade::ripples::Ripples;
 use super::shade::shadow::{self, ShadowMap};
 use super::shade::sky::Sky;
 use super::shade::skylight::SkyLight;
+use super::shade::stars::Stars;
 use super::shade::weather::Weather;
 use crate::settings::{ColorMode, Look, Settings, Shading, ViewKind};
 use crate::terrain::Heightfield;
@@ -194,9 +196,19 @@ pub(crate) struct Scene<'a> {
 impl<'a> Scene<'a> {
     /// Prepares `field` seen as `settings` ask, in a `width` x `height` frame.
     pub(crate) fn new(field: FieldRef<'a>, settings: &Settings, width: u32, height: u32) -> Self {
+        Self::at_hour(field, settings, (width, height), None)
+    }
+
+    /// [`Scene::new`] with the sun of `sun = "clock"` where `hour` puts it.
+    pub(crate) fn at_hour(
+        field: FieldRef<'a>,
+        settings: &Settings,
+        (width, height): (u32, u32),
+        hour: Option<SunAt>,
+    ) -> Self {
         let style = Style::of(settings.color);
         let (field, square, outline) = laid_out(field, settings, width, height);
-        let lighting = Palette::lighting_for(settings, &field);
+        let lighting = Palette::lighting_at(settings, &field, hour);
         let shaded = style.is_filled();
         let wants_sky = style == Style::Shaded && !lighting.classic;
         let light = lighting.sun;
@@ -246,13 +258,15 @@ impl<'a> Scene<'a> {
         let sky = match ripples.is_some() {
             true => {
                 let w = weather(&palette, &view, settings, &field, &sky, [width, height]);
-                sky.with_weather(w)
+                let night = palette.lighting().night;
+                let stars = Stars::new(height, sky.horizon_row(), night, field.identity());
+                sky.with_weather(w).with_stars(stars)
             }
             false => sky,
         };
         let mirror = view.eye().filter(|_| reflections).and_then(|eye| {
             let light = palette.lighting();
-            Mirror::new(&field, eye, view.cell(), light.sun, light.direct)
+            Mirror::new(&field, eye, view.cell(), light.sun, light.glints)
         });
         let lakes = shaded && field.lakes().is_some();
         let (split, sees_right, sees_front) = match view.camera_column() {

@@ -123,7 +123,8 @@ fn draw(
     if off.load(Ordering::Relaxed) {
         return None;
     }
-    let mut painter = Painter::new(field.clone(), settings, size.0, size.1);
+    let hour = crate::solar::now_for(settings);
+    let mut painter = Painter::at_hour(field.clone(), settings, size, hour);
     if off.load(Ordering::Relaxed) {
         return None;
     }

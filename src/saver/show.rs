@@ -450,7 +450,9 @@ impl Show {
             frame.clear(0);
         }
         let drawn = mountain.drawn_with(&self.settings);
-        let painter = Painter::new(mountain.field(), &drawn, size.0, size.1);
+        // The clock's sun where it stands as this slide begins.
+        let hour = crate::solar::now_for(&drawn);
+        let painter = Painter::at_hour(mountain.field(), &drawn, size, hour);
         self.slideshow.restart(painter.strips_total(), now);
         self.painter = Some(painter);
         frame.bounds()

@@ -102,7 +102,7 @@ impl Preview {
         self.painter = self
             .field
             .as_ref()
-            .map(|f| Painter::new(f.clone(), &drawn, w, h));
+            .map(|f| Painter::at_hour(f.clone(), &drawn, (w, h), crate::solar::now_for(&drawn)));
         self.picture = Frame::new(w, h);
     }
 

@@ -198,8 +198,8 @@ fn forty_seeds_keep_their_time_of_day_and_sea_at_every_size() {
     };
     let times = kinds(times.iter().map(|t| format!("{t:?}")).collect());
     assert_eq!(
-        times, 4,
-        "40 seeds, not every time of day (morning, midday, evening, sunset)"
+        times, 5,
+        "40 seeds, not every time of day (morning, midday, evening, sunset, night)"
     );
     let seas = kinds(seas.iter().map(|t| format!("{t:?}")).collect());
     assert!(seas >= 39, "40 seeds, {seas} seas");

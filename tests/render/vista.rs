@@ -280,8 +280,14 @@ fn a_varied_sun_never_stands_further_behind_than_its_time() {
         ..Settings::default()
     };
     let field = terrain::generate(&s, 1);
-    let times =
-        [Sun::Morning, Sun::Midday, Sun::Evening, Sun::Sunset].map(|t| Lighting::new(t, &field));
+    let times = [
+        Sun::Morning,
+        Sun::Midday,
+        Sun::Evening,
+        Sun::Sunset,
+        Sun::Night,
+    ]
+    .map(|t| Lighting::new(t, &field));
     for seed in 1..=40u64 {
         let varied = Lighting::new(Sun::Varied, &terrain::generate(&s, seed));
         let time = times

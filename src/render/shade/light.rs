@@ -1,10 +1,14 @@
 //! The light on the land and the sky behind it: the sun's direction and
 //! colour, the ambient light from the sky, and the sky's own colours.
 //!
-//! `sun = "varied"` draws morning, midday or evening per mountain from the
-//! mountain's identity ([`Heightfield::identity`]: its seed, or the heights
-//! of a data set without one), so one seed always gets the same light, at
-//! every frame size, detail and `low_detail`, and a long slide show gets many. `sun = "classic"` is seed 000's light as its listing
+//! `sun = "varied"` draws morning, midday, evening, sunset or night per
+//! mountain from the mountain's identity ([`Heightfield::identity`]: its
+//! seed, or the heights of a data set without one), so one seed always gets
+//! the same light, at every frame size, detail and `low_detail`, and a long
+//! slide show gets many. At night the moon takes the sun's place (its light
+//! about two stops down and blue, "day for night"), and `night` tells the
+//! sky to show stars and the palette to take the colour out of the land
+//! (rod vision). `sun = "classic"` is seed 000's light as its listing
 //! computes it: from the back right, 28 degrees up, brightness
 //! `0.5 + 0.5 cos` (faces turned fully away reach 0; see docs/classics.md).
 
@@ -43,21 +47,28 @@ pub struct Lighting {
     /// Seed 000's model: brightness `0.5 + 0.5 cos`, no colours; faces
     /// turned away from the light go darker than half (to 0).
     pub classic: bool,
+    /// How much of the night's look (0 by day, 1 under the moon): stars,
+    /// the moon's disc for the sun's, colourless land, dark water.
+    pub night: f32,
+    /// Colour of the light's glitter on the water: the sun's direct light,
+    /// or the moon's, brighter than what it lends the land.
+    pub glints: Rgb,
 }
 
 /// A time of day: where the sun stands and what colours it brings.
-struct Time {
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Time {
     /// Degrees above the horizon.
-    elevation: f32,
+    pub(super) elevation: f32,
     /// Degrees from the viewer's left (0) through the back (90) to the right (180).
-    azimuth: f32,
-    direct: Rgb,
-    ambient: Rgb,
-    zenith: Rgb,
-    horizon: Rgb,
+    pub(super) azimuth: f32,
+    pub(super) direct: Rgb,
+    pub(super) ambient: Rgb,
+    pub(super) zenith: Rgb,
+    pub(super) horizon: Rgb,
 }
 
-const MORNING: Time = Time {
+pub(super) const MORNING: Time = Time {
     elevation: 17.0,
     azimuth: 18.0,
     direct: [1.00, 0.90, 0.76],
@@ -66,7 +77,7 @@ const MORNING: Time = Time {
     horizon: [0.86, 0.85, 0.80],
 };
 
-const MIDDAY: Time = Time {
+pub(super) const MIDDAY: Time = Time {
     elevation: 40.0,
     azimuth: 35.0,
     direct: [1.00, 0.98, 0.94],
@@ -75,7 +86,7 @@ const MIDDAY: Time = Time {
     horizon: [0.72, 0.82, 0.92],
 };
 
-const EVENING: Time = Time {
+pub(super) const EVENING: Time = Time {
     elevation: 13.0,
     azimuth: 165.0,
     direct: [1.00, 0.74, 0.48],
@@ -90,7 +101,7 @@ const EVENING: Time = Time {
 /// lines off the far water, mirrored, come near it (they leave the water
 /// 7 to 19 degrees up in the vista), low enough that its glow fills the top
 /// of the frame.
-const SUNSET: Time = Time {
+pub(super) const SUNSET: Time = Time {
     elevation: 5.0,
     azimuth: 90.0,
     direct: [1.00, 0.70, 0.44],
@@ -98,6 +109,42 @@ const SUNSET: Time = Time {
     zenith: [0.18, 0.20, 0.45],
     horizon: [0.98, 0.72, 0.52],
 };
+
+/// Night under the moon: "day for night" in numbers, the light about two
+/// stops down and tinted blue. The moon stands ahead of the viewer, above
+/// the frame (its glow, faint beside the sun's, is left out): the near
+/// faces stand as silhouettes against the sky, and its glitter lies across
+/// the water in front (sight lines off the water leave
+/// it 7 to 19 degrees up in the vista). The nights turn it aside
+/// ([`NIGHT_TURN`]), so slopes turned to it catch its light. The sky stays
+/// a deep blue, lighter towards the horizon, so the land stands out
+/// against it and the frame is never black.
+pub(super) const NIGHT: Time = Time {
+    elevation: 9.0,
+    azimuth: 90.0,
+    direct: [0.56, 0.64, 0.82],
+    ambient: [0.21, 0.25, 0.35],
+    zenith: [0.015, 0.030, 0.085],
+    horizon: [0.08, 0.11, 0.20],
+};
+
+/// Degrees `sun = "night"` turns [`NIGHT`]'s moon to the viewer's left:
+/// its glitter still shows in the left of the frame, and slopes facing
+/// left are moonlit. Varied nights turn it at least this far either way.
+pub(super) const NIGHT_TURN: f32 = -16.0;
+
+/// The moon's glitter on the water: a pale silver, brighter than the light
+/// it lends the land (the water mirrors the disc itself).
+const MOON_GLINTS: Rgb = [0.80, 0.85, 0.95];
+
+/// How many in 256 slides `sun = "varied"` makes night, where it may.
+pub const NIGHTS_IN_256: u64 = 32;
+
+/// Degrees a varied night's moon may stand above [`NIGHT`]'s, and turn
+/// further aside than [`NIGHT_TURN`] (either way): never further behind
+/// the range than `sun = "night"`'s.
+const MOON_RISE: f32 = 10.0;
+const MOON_TURN: f32 = 30.0;
 
 /// The sky light left on ground that sees none of the sky (light bounced
 /// off the land around it).
@@ -112,15 +159,32 @@ const AZIMUTH_JITTER: f32 = 20.0;
 const SUNSET_JITTER: f32 = 15.0;
 
 impl Lighting {
-    /// The light `sun` asks for on `field`.
+    /// The light `sun` asks for on `field`; a varied draw may make it
+    /// night. `sun = "clock"` without an hour given is lit as midday (see
+    /// [`Lighting::at_hour`]).
     pub fn new(sun: Sun, field: &Heightfield) -> Self {
+        Self::drawn(sun, field, true)
+    }
+
+    /// [`Lighting::new`], with `nights` saying whether a varied draw may
+    /// make night (the colour filters and the seed programs' looks keep
+    /// their pictures).
+    pub fn drawn(sun: Sun, field: &Heightfield, nights: bool) -> Self {
         let draw = field.identity();
         let (time, turn) = match sun {
             Sun::Classic => return Self::classic(),
             Sun::Morning => (&MORNING, 0.0),
-            Sun::Midday => (&MIDDAY, 0.0),
+            Sun::Midday | Sun::Clock => (&MIDDAY, 0.0),
             Sun::Evening => (&EVENING, 0.0),
             Sun::Sunset => (&SUNSET, 0.0),
+            Sun::Night => return Self::moon(0.0, NIGHT_TURN),
+            // Bits of the identity the day's draw below does not read.
+            Sun::Varied if nights && (draw >> 40) & 0xff < NIGHTS_IN_256 => {
+                let unit = |shift: u32| ((draw >> shift) & 0xff) as f32 / 255.0;
+                let side = if (draw >> 63) == 1 { -1.0 } else { 1.0 };
+                let turn = side * (NIGHT_TURN.abs() + unit(56) * MOON_TURN);
+                return Self::moon(unit(48) * MOON_RISE, turn);
+            }
             Sun::Varied => {
                 // Morning, midday or evening; half the evenings look into
                 // the sun.
@@ -152,10 +216,31 @@ impl Lighting {
             zenith: [0.02, 0.05, 0.14],
             horizon: [0.10, 0.16, 0.28],
             classic: true,
+            night: 0.0,
+            glints: [CLASSIC_HALF; 3],
         }
     }
 
-    fn at(time: &Time, turn: f32) -> Self {
+    /// The night's light, its moon `rise` degrees above [`NIGHT`]'s and
+    /// turned `turn` degrees.
+    fn moon(rise: f32, turn: f32) -> Self {
+        let time = Time {
+            elevation: NIGHT.elevation + rise,
+            ..NIGHT
+        };
+        Self::at(&time, turn).under_moon(1.0)
+    }
+
+    /// This light with `night` (0..=1) of the night's look, its glitter
+    /// turned that far to the moon's silver.
+    pub(super) fn under_moon(mut self, night: f32) -> Self {
+        self.night = night;
+        self.glints = crate::render::base::colour::mix(self.glints, MOON_GLINTS, night);
+        self
+    }
+
+    /// The light of `time`, its sun turned `turn` degrees.
+    pub(super) fn at(time: &Time, turn: f32) -> Self {
         let (el, az) = (
             time.elevation.to_radians(),
             (time.azimuth + turn).to_radians(),
@@ -168,6 +253,8 @@ impl Lighting {
             zenith: time.zenith,
             horizon: time.horizon,
             classic: false,
+            night: 0.0,
+            glints: time.direct,
         }
     }
 

@@ -8,15 +8,18 @@ pub mod dither;
 pub mod essay;
 pub mod facings;
 pub(super) mod haze;
+pub mod hour;
 pub mod light;
 pub mod listing;
 pub(super) mod mirror;
+pub(super) mod night;
 pub(super) mod normals;
 pub mod palette;
 pub(super) mod ripples;
 pub mod shadow;
 pub(super) mod sky;
 pub(super) mod skylight;
+pub(super) mod stars;
 pub(super) mod weather;
 
 /// `v` truncated to an index into a grid or a table: NaN and negatives

@@ -22,9 +22,11 @@
 use super::dither;
 use super::essay;
 use super::facings;
+use super::hour::SunAt;
 use super::index;
 use super::light::Lighting;
 use super::listing;
+use super::night;
 use crate::render::base::colour::{
     Rgb, mix, mix_packed, pack, scale_packed, scale_packed3, to_u32, unpack,
 };
@@ -120,12 +122,24 @@ impl Palette {
     /// The light `Palette::new` colours `field` under `settings` with: cheap,
     /// so the shadows (which need only the sun) can start before the tables.
     pub fn lighting_for(settings: &Settings, field: &Heightfield) -> Lighting {
+        Self::lighting_at(settings, field, None)
+    }
+
+    /// [`Palette::lighting_for`] with the sun of `sun = "clock"` where
+    /// `hour` puts it (without one, that key lights as midday).
+    pub fn lighting_at(settings: &Settings, field: &Heightfield, hour: Option<SunAt>) -> Lighting {
         let sun = match settings.color {
             // Mono's tone curve is tuned to seed 000's light.
             ColorMode::Mono => Sun::Classic,
             _ => settings.sun,
         };
-        Lighting::new(sun, field)
+        if let (Sun::Clock, Some(at)) = (sun, hour) {
+            return Lighting::at_hour(at);
+        }
+        // The colour filters and the seed programs' looks keep the
+        // pictures a varied draw gave them before there were nights.
+        let nights = settings.color == ColorMode::Natural && settings.look == Look::Ours;
+        Lighting::drawn(sun, field, nights)
     }
 
     /// [`Palette::new`] with its light worked out already
@@ -138,11 +152,16 @@ impl Palette {
         let zones = Zones::new(settings.height, lowest < 0.0);
         let steep_ref = steepness_reference(field);
         let land = land_table(mode, &zones);
+        let land = match mode {
+            ColorMode::Natural => night::land(land, lighting.night),
+            _ => land,
+        };
         let deepest = positive_or(-lowest, 1.0);
         let waters = Waters {
             relative: settings.relative_depth,
             deepest,
             reflected: (!lighting.classic).then_some(lighting.horizon),
+            night: lighting.night,
         };
         let listing = (settings.look == Look::FractalMountainClimbing
             && matches!(mode, ColorMode::Natural | ColorMode::Mono))
@@ -526,6 +545,8 @@ struct Waters {
     deepest: f32,
     /// The sky colour the surface reflects, if any.
     reflected: Option<Rgb>,
+    /// How much of the night's look (0 by day).
+    night: f32,
 }
 
 /// Water colours by depth and the depth-to-bin scale.
@@ -541,6 +562,7 @@ fn water_table(mode: ColorMode, w: &Waters, gain: f32, offset: f32) -> (Box<[u32
                 natural::SEA
             };
             let c = w.reflected.map_or(c, |sky| mix(c, sky, WATER_REFLECTS));
+            let c = night::water(c, w.night);
             match mode {
                 ColorMode::Mono => mono_water(c),
                 _ => pack(finish(mode, c), gain, offset),

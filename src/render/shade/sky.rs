@@ -7,6 +7,7 @@ use std::sync::Arc;
 
 use glam::Vec4;
 
+use super::stars::Stars;
 use super::weather::{Weather, WeatherRow};
 use crate::render::base::canvas::Canvas;
 use crate::render::base::colour::{Rgb, packed_lanes, rgb_lanes, unpack};
@@ -46,6 +47,8 @@ pub(crate) struct Sky {
     horizon_row: f32,
     /// The sun's glow and the clouds over the gradient, where there are any.
     weather: Option<Arc<Weather>>,
+    /// The stars of a night sky.
+    stars: Option<Stars>,
 }
 
 impl Sky {
@@ -61,7 +64,14 @@ impl Sky {
             horizon: unpack(horizon),
             horizon_row,
             weather: None,
+            stars: None,
         }
+    }
+
+    /// This sky with `stars` where it is clear.
+    pub(crate) fn with_stars(mut self, stars: Option<Stars>) -> Self {
+        self.stars = stars;
+        self
     }
 
     /// This sky with `weather` over its gradient (none if it shows nothing).
@@ -82,13 +92,45 @@ impl Sky {
 
     /// Fills every row of `canvas` (on a first-write canvas, what is left).
     pub(crate) fn paint(&self, canvas: &mut Canvas) {
-        let clip = *canvas.clip();
-        let (x0, x1) = (clip.x0 as u32, clip.x1 as u32);
         // Below the horizon row every row is the horizon colour: its four
         // dither rows once, not a power per row (a 1-pixel-wide frame is
         // all rows).
         let below: [[u32; 4]; 4] = std::array::from_fn(|y| self.colours_at(1.0, y as u32));
         let end = canvas.all_written_from();
+        // On a canvas that keeps the first write the stars go first, so the
+        // gradient leaves them; on one that keeps the last, after it.
+        let first = canvas.keeps_first();
+        if first {
+            self.paint_stars(canvas, end);
+        }
+        self.paint_gradient(canvas, end, below);
+        if !first {
+            self.paint_stars(canvas, end);
+        }
+    }
+
+    /// The stars' pixels of rows above `end` that are still open.
+    fn paint_stars(&self, canvas: &mut Canvas, end: i64) {
+        let Some(stars) = &self.stars else {
+            return;
+        };
+        let clip = *canvas.clip();
+        let (x0, x1) = (clip.x0 as u32, clip.x1 as u32);
+        let last = (end as f32).min(self.horizon_row.ceil()).max(0.0) as u32;
+        let mut seen = SkySeen::default();
+        for y in clip.y0 as u32..last {
+            for x in stars.in_row(y, x0, x1) {
+                let c = self.colour_seen(x, y, &mut seen);
+                canvas.fill_with(y, x, x + 1, |_| c);
+            }
+        }
+    }
+
+    /// The gradient (and the weather over it) of every open pixel of the
+    /// rows above `end`; `below` the four dither rows of the horizon colour.
+    fn paint_gradient(&self, canvas: &mut Canvas, end: i64, below: [[u32; 4]; 4]) {
+        let clip = *canvas.clip();
+        let (x0, x1) = (clip.x0 as u32, clip.x1 as u32);
         if let Some(w) = &self.weather {
             // Only where the land left the sky showing: the weather costs.
             let mut anchors = Vec::new();
@@ -140,6 +182,21 @@ impl Sky {
     /// anchors and rows the columns beside share: worked out afresh each
     /// time, they were most of that pass on a cloudy 1080p slide).
     pub(crate) fn colour_seen<'s>(&'s self, x: u32, y: u32, seen: &mut SkySeen<'s>) -> u32 {
+        let c = self.gradient_seen(x, y, seen);
+        let Some(star) = self.stars.as_ref().and_then(|s| s.at(x, y)) else {
+            return c;
+        };
+        let clear = self
+            .weather
+            .as_ref()
+            .map_or(1.0, |w| w.clear_at(x as f32 + 0.5, y as f32 + 0.5));
+        let [r, g, b] = unpack(c);
+        let lit = |v: f32, s: f32| ((v + s * clear) * 255.0 + 0.5).clamp(0.0, 255.0) as u32;
+        lit(r, star[0]) << 16 | lit(g, star[1]) << 8 | lit(b, star[2])
+    }
+
+    /// [`Sky::colour_seen`] without the stars.
+    fn gradient_seen<'s>(&'s self, x: u32, y: u32, seen: &mut SkySeen<'s>) -> u32 {
         let Some(w) = &self.weather else {
             let phases = match seen.phases {
                 Some((at, phases)) if at == y => phases,

@@ -29,6 +29,8 @@ const CORE: f32 = 0.003;
 const HALO: f32 = 0.06;
 /// The sun's disc: 1 - cos of its radius (about 1 degree).
 const DISC: f32 = 0.000_15;
+/// What a full night leaves of the light on the clouds' lit edges.
+const MOONLIT_CLOUD: f32 = 0.6;
 
 /// The weather of one slide, seen through one view.
 #[derive(Debug, Clone)]
@@ -91,9 +93,17 @@ impl Weather {
         let glows = off - reach < (1.0 - GLOW_REACH).acos();
         // A high sun stands far above the frame: its glow is not seen.
         let low = 1.0 - smoothstep(0.3, 0.6, sun.z);
-        let glows = glows && low > 0.0;
-        let white = mix(lighting.direct, [1.0; 3], 0.15);
+        // The moon's glow is too faint to show beside its cost (every
+        // sky pixel and every mirrored one on the weather's path): a clear
+        // night keeps the plain gradient.
+        let glows = glows && low > 0.0 && lighting.night < 0.5;
+        let night = lighting.night;
+        let white = mix(lighting.direct, [1.0; 3], 0.15 * (1.0 - night));
         let lit: Rgb = [0, 1, 2].map(|i| (0.8 * white[i] + 0.35 * lighting.horizon[i]).min(1.0));
+        let lit = match night > 0.0 {
+            true => lit.map(|c| c * (1.0 - (1.0 - MOONLIT_CLOUD) * night)),
+            false => lit,
+        };
         let shade: Rgb = [0, 1, 2].map(|i| (lighting.ambient[i] + 0.3 * lighting.zenith[i]) * 1.15);
         Some(Weather {
             view: view.clone(),
@@ -161,6 +171,27 @@ impl Weather {
         }
         let below = (1.0 - smoothstep(0.0, 0.3, up)) * (1.0 - smoothstep(0.15, 0.5, self.sun.z));
         mix(c, self.light, 0.45 * below)
+    }
+}
+
+impl Weather {
+    /// How much of the sky at screen point (`x`, `y`) is clear of cloud
+    /// and of the light's disc (0..=1): where the stars show.
+    pub(crate) fn clear_at(&self, x: f32, y: f32) -> f32 {
+        if self.glows
+            && let Some(dir) = self.view.sight(x, y)
+            && 1.0 - dir.dot(self.sun) < 4.0 * DISC
+        {
+            return 0.0;
+        }
+        let row = self.row(y);
+        let Some(sheet) = &row.sheet else {
+            return 1.0;
+        };
+        1.0 - sheet
+            .seen((x - self.middle) / self.height)
+            .opacity
+            .clamp(0.0, 1.0)
     }
 }
 

@@ -232,7 +232,28 @@ rows! {
         Kind::Choice(Sun::NAMES),
         Repaint,
         Value::Str(Sun::Varied.name().into()),
-        "time of day of the light; \"varied\" draws one per mountain"
+        "time of day of the light; \"varied\" draws one per mountain (night too), \
+              \"clock\" follows the real hour at latitude and longitude"
+    ),
+    LATITUDE = (
+        latitude,
+        Kind::Float {
+            min: -90.0,
+            max: 90.0
+        },
+        Repaint,
+        Value::Float(51.48),
+        "degrees north (south negative) of the place whose hour sun = \"clock\" shows"
+    ),
+    LONGITUDE = (
+        longitude,
+        Kind::Float {
+            min: -180.0,
+            max: 180.0
+        },
+        Repaint,
+        Value::Float(0.0),
+        "degrees east (west negative) of the place whose hour sun = \"clock\" shows"
     ),
     SHADING = (
         shading,
