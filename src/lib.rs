@@ -19,6 +19,7 @@ pub mod help;
 pub mod log;
 pub mod memory;
 pub mod mountain;
+pub mod power;
 pub mod quality;
 pub mod quote;
 pub mod render;

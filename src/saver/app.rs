@@ -66,6 +66,8 @@ enum UserEvent {
     /// here now (full screen on X11, from the input grab's connection).
     #[cfg_attr(not(unix), allow(dead_code))]
     PointerPlaced(i16, i16),
+    /// The power or the display's state changed (`watch.rs`).
+    Seen(super::watch::Seen),
 }
 
 /// Runs `mode` with winit until it ends.
@@ -135,9 +137,14 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
     let (x11_visual, pointer_origin) = (first_look.visual, first_look.pointer);
     #[cfg(not(unix))]
     let x11_visual = None;
+    let proxy = event_loop.create_proxy();
+    let watcher = super::watch::start(wayland, move |seen| {
+        let _ = proxy.send_event(UserEvent::Seen(seen));
+    });
     let mut app = App {
         mode,
         wayland,
+        seen: watcher.seen(),
         settings,
         opened,
         screens: Vec::new(),
@@ -202,6 +209,8 @@ struct App {
     wayland: bool,
     settings: Settings,
     opened: Option<Mountain>,
+    /// The power and the display's state, as last seen (`watch.rs`).
+    seen: super::watch::Seen,
     screens: Vec<Screen>,
     /// The monitors the X server listed at start (empty: ask winit).
     server_heads: Vec<Head>,
@@ -372,6 +381,7 @@ impl ApplicationHandler<UserEvent> for App {
                     .note(&format!("the screen changed; the pointer is at ({x}, {y})"));
                 self.wake.origin_at(x.into(), y.into())
             }
+            UserEvent::Seen(seen) => self.follow_seen(event_loop, seen),
         }
     }
 
@@ -594,6 +604,16 @@ impl App {
         }
     }
 
+    /// Every show follows the power and the display's state.
+    fn follow_seen(&mut self, event_loop: &ActiveEventLoop, seen: super::watch::Seen) {
+        self.seen = seen;
+        let now = Instant::now();
+        for i in 0..self.screens.len() {
+            let damage = super::watch::apply(seen, &mut self.screens[i].show, now);
+            self.present(event_loop, i, damage.into());
+        }
+    }
+
     fn fit(&mut self, event_loop: &ActiveEventLoop, i: usize, head: Head) {
         let screen = &mut self.screens[i];
         screen.head = Some(head);
@@ -636,7 +656,7 @@ impl App {
         let presenter = Presenter::new(window.clone())
             .map_err(|e| SaverError::Other(format!("cannot draw in the window: {e}")))?;
         let now = Instant::now();
-        let show = if mountain {
+        let mut show = if mountain {
             let pacing = Pacing::from_seconds(
                 self.settings.draw_seconds,
                 self.settings.pause_seconds,
@@ -652,6 +672,7 @@ impl App {
         } else {
             Show::blank(size, now)
         };
+        super::watch::apply(self.seen, &mut show, now);
         self.screens
             .push(Screen::new(window, presenter, show, head));
         let i = self.screens.len() - 1;

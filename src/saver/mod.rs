@@ -45,6 +45,7 @@ pub mod single;
 pub mod slideshow;
 pub mod source;
 mod trace;
+pub mod watch;
 #[cfg(target_os = "linux")]
 pub mod wayland;
 pub mod win32;

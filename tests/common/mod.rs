@@ -10,6 +10,8 @@ pub mod headless;
 pub mod heightmaps;
 pub mod hostile;
 pub mod pe;
+#[cfg(target_os = "linux")]
+pub mod power;
 #[cfg(unix)]
 pub mod randr;
 #[cfg(unix)]

@@ -2,5 +2,7 @@
 //! and full-screen windows refitted after a display change.
 
 #[cfg(windows)]
+pub mod display;
+#[cfg(windows)]
 pub mod embed;
 pub mod fullscreen;

@@ -3,6 +3,7 @@
 //! as plain images, the server going away).
 
 pub mod bands;
+pub mod dpms;
 pub mod embed;
 pub mod grab;
 pub mod heads;

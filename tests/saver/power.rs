@@ -1,0 +1,133 @@
+//! Power and display-off under Xvfb: the power state read from a fake
+//! sysfs tree, acted on by the `on_battery` key and written to the log;
+//! no work at all while held (CPU ticks from /proc, not wall-clock limits).
+#![cfg(target_os = "linux")]
+
+use std::time::Duration;
+
+use crate::common::power::{FakeSysfs, cpu_ticks, log_text};
+use crate::common::xvfb::{Saver, Xvfb, looks_drawn, poll};
+
+/// CPU ticks (1/100 s) a saver holding a slide may use in a minute: the
+/// watcher's look at the power once a second, a few file reads each.
+const IDLE_TICKS_PER_MINUTE: u64 = 2;
+
+/// How long the held saver is watched doing nothing.
+const HELD_FOR: Duration = Duration::from_secs(60);
+
+fn start(x: &Xvfb, name: &str, sys: &FakeSysfs, args: &[&str]) -> Saver {
+    let env = sys.env();
+    let env: Vec<(&str, &str)> = env.iter().map(|(k, v)| (*k, v.as_str())).collect();
+    Saver::start(x, name, args, &env)
+}
+
+/// Waits until the log says `words`.
+fn wait_for_log(saver: &mut Saver, words: &str) {
+    let data = saver.data_dir();
+    poll(saver, &format!("'{words}' in mountains.log"), || {
+        log_text(&data).contains(words)
+    });
+}
+
+/// The screen once the slide in progress is finished: the same for a
+/// second (0.5 s of drawing; a loaded machine may take longer).
+fn held_slide(saver: &mut Saver, x: &Xvfb) -> Vec<u32> {
+    let mut last = x.grab_screen();
+    poll(saver, "the slide finished and held", || {
+        std::thread::sleep(Duration::from_secs(1));
+        let now = x.grab_screen();
+        let same = now == last;
+        last = now;
+        same
+    });
+    last
+}
+
+/// On battery with the default `on_battery = "hold"`: the first slide is
+/// drawn whole, then held with no work for a minute (with a 1 s pause, 40
+/// slides would have come); back on mains the slide show goes on.
+#[test]
+fn display_on_battery_the_slide_is_finished_then_held_with_no_work() {
+    let Some(x) = Xvfb::start(640, 480, &[]) else {
+        return;
+    };
+    let sys = FakeSysfs::new("hold");
+    sys.on_battery(true);
+    let mut saver = start(&x, "battery-hold", &sys, &["/s"]);
+    wait_for_log(&mut saver, "power: on battery");
+    poll(&mut saver, "a mountain on the screen", || {
+        looks_drawn(&x.grab_screen())
+    });
+    let held = held_slide(&mut saver, &x);
+    let before = cpu_ticks(saver.pid());
+    std::thread::sleep(HELD_FOR);
+    let used = cpu_ticks(saver.pid()) - before;
+    eprintln!("on battery, held: {used} CPU ticks in {HELD_FOR:?}");
+    saver.assert_running();
+    assert!(x.grab_screen() == held, "the slide changed on battery");
+    assert!(
+        used <= IDLE_TICKS_PER_MINUTE,
+        "{used} CPU ticks in {HELD_FOR:?} while held on battery (at most {IDLE_TICKS_PER_MINUTE})"
+    );
+    sys.on_battery(false);
+    wait_for_log(&mut saver, "power: on mains power");
+    poll(&mut saver, "a new slide once the power is back", || {
+        x.grab_screen() != held
+    });
+}
+
+/// `on_battery = "same"`: the slide show goes on as on mains.
+#[test]
+fn display_on_battery_same_goes_on() {
+    let Some(x) = Xvfb::start(320, 240, &[]) else {
+        return;
+    };
+    let sys = FakeSysfs::new("same");
+    sys.on_battery(true);
+    let args = ["/s", "--set", "on_battery=same"];
+    let mut saver = start(&x, "battery-same", &sys, &args);
+    wait_for_log(&mut saver, "power: on battery");
+    poll(&mut saver, "a mountain on the screen", || {
+        looks_drawn(&x.grab_screen())
+    });
+    std::thread::sleep(Duration::from_secs(1));
+    let first = x.grab_screen();
+    poll(&mut saver, "the next slide on battery", || {
+        x.grab_screen() != first
+    });
+}
+
+/// Power-saver mode counts as on battery, from the firmware's platform
+/// profile or from power-profiles-daemon's state, and the log says so.
+#[test]
+fn display_power_saver_mode_holds_like_a_battery() {
+    let Some(x) = Xvfb::start(320, 240, &[]) else {
+        return;
+    };
+    let sys = FakeSysfs::new("saver");
+    sys.ppd_profile("power-saver");
+    let mut saver = start(&x, "power-saver", &sys, &["--root"]);
+    wait_for_log(&mut saver, "power: on mains power, in power-saver mode");
+    poll(&mut saver, "a mountain on the screen", || {
+        looks_drawn(&x.grab_screen())
+    });
+    let held = held_slide(&mut saver, &x);
+    // With a 1 s pause four slides would come.
+    std::thread::sleep(Duration::from_secs(6));
+    assert!(
+        x.grab_screen() == held,
+        "the slide changed in power-saver mode"
+    );
+    sys.ppd_profile("balanced");
+    sys.platform_profile("low-power");
+    std::thread::sleep(Duration::from_secs(3));
+    assert!(
+        x.grab_screen() == held,
+        "the slide changed with the platform profile at low-power"
+    );
+    sys.platform_profile("balanced");
+    wait_for_log(&mut saver, "power: on mains power\n");
+    poll(&mut saver, "a new slide out of power-saver mode", || {
+        x.grab_screen() != held
+    });
+}
