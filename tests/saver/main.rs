@@ -11,4 +11,5 @@ mod monitors;
 mod power;
 mod settings_screen;
 mod wayland;
+mod wayland_power;
 mod xscreensaver;

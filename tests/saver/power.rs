@@ -131,3 +131,43 @@ fn display_power_saver_mode_holds_like_a_battery() {
         x.grab_screen() != held
     });
 }
+
+/// The X server's idle time (MIT-SCREEN-SAVER, as idle daemons and
+/// xscreensaver's idle timer see it) grows while `/s` runs: no fake
+/// input, no screen-saver reset keeps the display awake.
+#[test]
+fn display_fullscreen_lets_the_x_server_count_idle_time() {
+    use x11rb::connection::RequestConnection;
+    use x11rb::protocol::screensaver::{self, ConnectionExt as _};
+    let Some(x) = Xvfb::start(320, 240, &[]) else {
+        return;
+    };
+    let has = x
+        .conn
+        .extension_information(screensaver::X11_EXTENSION_NAME);
+    assert!(has.ok().flatten().is_some(), "Xvfb has no MIT-SCREEN-SAVER");
+    let idle = || {
+        let info = x
+            .conn
+            .screensaver_query_info(x.root)
+            .unwrap()
+            .reply()
+            .unwrap();
+        info.ms_since_user_input
+    };
+    let sys = FakeSysfs::new("idle");
+    let mut saver = start(&x, "idle", &sys, &["/s"]);
+    poll(&mut saver, "a mountain on the screen", || {
+        looks_drawn(&x.grab_screen())
+    });
+    let first = idle();
+    // Slides come and go meanwhile (a 1 s pause).
+    std::thread::sleep(Duration::from_secs(4));
+    let then = idle();
+    eprintln!("X server idle: {first} ms, then {then} ms");
+    saver.assert_running();
+    assert!(
+        then >= first + 3000,
+        "the idle time was reset while the saver ran: {first} ms, then {then} ms"
+    );
+}
