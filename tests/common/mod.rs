@@ -25,5 +25,7 @@ pub mod wine;
 pub mod wl_pointer;
 #[cfg(target_os = "linux")]
 pub mod wl_proxy;
+#[cfg(target_os = "linux")]
+pub mod x_dpms;
 #[cfg(unix)]
 pub mod xvfb;

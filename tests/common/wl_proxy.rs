@@ -271,7 +271,7 @@ const MAX_FDS: usize = 28;
 
 /// Reads what arrives on `fd` with the descriptors passed along; `None`
 /// at its end.
-fn receive_with_fds(fd: RawFd) -> Option<(Vec<u8>, Vec<RawFd>)> {
+pub fn receive_with_fds(fd: RawFd) -> Option<(Vec<u8>, Vec<RawFd>)> {
     let mut data = vec![0u8; 4096];
     let mut control = vec![0u8; 1024];
     let mut iov = libc::iovec {
@@ -314,7 +314,7 @@ fn receive_with_fds(fd: RawFd) -> Option<(Vec<u8>, Vec<RawFd>)> {
 }
 
 /// Writes all of `bytes` to `fd`, the descriptors `fds` with the first part.
-fn send_with_fds(fd: RawFd, bytes: &[u8], fds: &[RawFd]) {
+pub fn send_with_fds(fd: RawFd, bytes: &[u8], fds: &[RawFd]) {
     assert!(fds.len() <= MAX_FDS, "{} descriptors at once", fds.len());
     let mut sent = 0;
     let mut fds = fds;
@@ -357,7 +357,7 @@ fn send_with_fds(fd: RawFd, bytes: &[u8], fds: &[RawFd]) {
     }
 }
 
-fn close_all(fds: &[RawFd]) {
+pub fn close_all(fds: &[RawFd]) {
     for &fd in fds {
         // SAFETY: each descriptor came from recvmsg and was passed on.
         unsafe { libc::close(fd) };

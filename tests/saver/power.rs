@@ -6,6 +6,7 @@
 use std::time::Duration;
 
 use crate::common::power::{FakeSysfs, cpu_ticks, log_text};
+use crate::common::x_dpms::XDpms;
 use crate::common::xvfb::{Saver, Xvfb, looks_drawn, poll};
 
 /// CPU ticks (1/100 s) a saver holding a slide may use in a minute: the
@@ -171,3 +172,50 @@ fn display_fullscreen_lets_the_x_server_count_idle_time() {
         "the idle time was reset while the saver ran: {first} ms, then {then} ms"
     );
 }
+
+/// DPMS off (an X server with DPMS: common/x_dpms.rs in front of Xvfb):
+/// no work at all while the monitor is off; when it is on again a fresh
+/// slide is drawn. Full screen, a slide every 1.5 s.
+#[test]
+fn display_dpms_off_stops_all_work_and_a_fresh_slide_follows() {
+    let Some(x) = Xvfb::start(640, 480, &[]) else {
+        return;
+    };
+    let dpms = XDpms::start(x.display());
+    let sys = FakeSysfs::new("dpms");
+    let mut env = sys.env();
+    env.push(("DISPLAY", dpms.display().to_string()));
+    let env: Vec<(&str, &str)> = env.iter().map(|(k, v)| (*k, v.as_str())).collect();
+    let mut saver = Saver::start(&x, "dpms", &["/s"], &env);
+    poll(&mut saver, "a mountain on the screen", || {
+        looks_drawn(&x.grab_screen())
+    });
+    dpms.set_power(false);
+    wait_for_log(&mut saver, "display: off");
+    // Within 2 s of the switch: a strip or a slide under way ends.
+    std::thread::sleep(Duration::from_secs(2));
+    let shown = x.grab_screen();
+    let before = cpu_ticks(saver.pid());
+    std::thread::sleep(OFF_FOR);
+    let used = cpu_ticks(saver.pid()) - before;
+    eprintln!("DPMS off: {used} CPU ticks in {OFF_FOR:?}");
+    saver.assert_running();
+    assert!(x.grab_screen() == shown, "drew with the monitor off");
+    assert!(
+        used <= OFF_TICKS,
+        "{used} CPU ticks in {OFF_FOR:?} with the monitor off (at most {OFF_TICKS})"
+    );
+    dpms.set_power(true);
+    wait_for_log(&mut saver, "display: on");
+    let took = poll(&mut saver, "a fresh slide with the monitor on", || {
+        x.grab_screen() != shown
+    });
+    eprintln!("DPMS on: a new picture after {took:?}");
+}
+
+/// CPU ticks (1/100 s) a saver with the monitor off may use while watched:
+/// a DPMS look a second.
+const OFF_TICKS: u64 = 1;
+
+/// How long the saver is watched with the monitor off.
+const OFF_FOR: Duration = Duration::from_secs(20);
