@@ -170,6 +170,25 @@ pub fn start(wayland: bool, notify: impl Fn(Seen) + Send + 'static) -> Watcher {
 mod tests {
     use super::*;
 
+    /// A display that a probe finds off is told within a look or two, once;
+    /// a display event says it is on again.
+    #[test]
+    fn a_probe_that_finds_the_display_off_is_told_once() {
+        let (tx, rx) = std::sync::mpsc::channel();
+        let probe: Probe = Box::new(|| Some(false));
+        let watcher = Watcher::start(Some(probe), move |seen| {
+            let _ = tx.send(seen);
+        });
+        let told = rx.recv_timeout(Duration::from_secs(10)).expect("told");
+        assert!(!told.display_on);
+        assert!(
+            rx.recv_timeout(LOOK_EVERY * 3).is_err(),
+            "told again without a change"
+        );
+        watcher.set_display(true);
+        assert!(rx.recv_timeout(Duration::from_secs(10)).unwrap().display_on);
+    }
+
     #[test]
     fn the_key_decides_only_on_battery_or_power_saver() {
         let mains = Power::default();
