@@ -9,7 +9,6 @@
 
 #[cfg(target_os = "linux")]
 pub mod sysfs;
-#[cfg(windows)]
 pub mod windows;
 
 /// What the system says about its power at one moment.
