@@ -61,15 +61,26 @@ fn supplies(dir: &Path) -> Vec<Supply> {
     };
     entries
         .flatten()
-        .map(|e| e.path())
-        .map(|p| Supply {
-            kind: read_trimmed(&p.join("type")).unwrap_or_default(),
-            online: read_trimmed(&p.join("online")).as_deref() == Some("1"),
-            status: read_trimmed(&p.join("status")).unwrap_or_default(),
-            device_scope: read_trimmed(&p.join("scope")).as_deref() == Some("Device"),
-        })
-        .filter(|s| !s.device_scope && !s.kind.is_empty())
+        .filter_map(|e| supply(&e.path()))
+        .filter(|s| !s.device_scope)
         .collect()
+}
+
+/// The supply at `dir`, reading only the files its type needs (the saver
+/// looks every few seconds for hours).
+fn supply(dir: &Path) -> Option<Supply> {
+    let kind = read_trimmed(&dir.join("type")).filter(|k| !k.is_empty())?;
+    let mut supply = Supply {
+        kind,
+        ..Supply::default()
+    };
+    if supply.is_battery() {
+        supply.device_scope = read_trimmed(&dir.join("scope")).as_deref() == Some("Device");
+        supply.status = read_trimmed(&dir.join("status")).unwrap_or_default();
+    } else {
+        supply.online = read_trimmed(&dir.join("online")).as_deref() == Some("1");
+    }
+    Some(supply)
 }
 
 /// On battery: a system battery and no mains (or USB) supply online. A

@@ -1,5 +1,5 @@
 //! Whether anyone can see the show, and at what cost: the power supply
-//! (every few seconds, `crate::power`) and whether the display is powered
+//! (every three seconds, `crate::power`) and whether the display is powered
 //! on (X11: DPMS, asked every second, `x11/dpms.rs`; Wayland: the
 //! compositor's output power events, `wayland/power.rs`; Windows: the
 //! console display state, `win32/display.rs`). A change is written to the
@@ -7,9 +7,9 @@
 //! (`apply`): a hold on battery, longer pauses, or no work at all while the
 //! display is off.
 //!
-//! The looks are a few file reads and one X request a second, on a thread
-//! that sleeps in between: the event loop itself is not woken unless
-//! something changed.
+//! The looks are a few file reads every three seconds and one X request a
+//! second, on a thread that sleeps in between: the event loop itself is not
+//! woken unless something changed.
 
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
@@ -20,9 +20,14 @@ use crate::power::Power;
 use crate::render::Rect;
 use crate::settings::OnBattery;
 
-/// Time between two looks at the power supply and a polled display: a
-/// change is followed within it.
+/// Time between two looks at a polled display: a display turned off is
+/// followed within it (no work within two seconds of the switch).
 const LOOK_EVERY: Duration = Duration::from_secs(1);
+
+/// Looks at the display per look at the power supply: a change of power is
+/// followed within three seconds, and a minute of holding costs a few
+/// milliseconds of reading files.
+const LOOKS_PER_POWER_LOOK: u32 = 3;
 
 /// What the watcher sees.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -46,9 +51,9 @@ pub struct Watcher {
 }
 
 impl Watcher {
-    /// Looks at the power now (logging it) and every second from now on,
-    /// and at the display with `probe` if given; `notify` is called on
-    /// every change.
+    /// Looks at the power now (logging it) and every three seconds from
+    /// now on, and at the display every second with `probe` if given;
+    /// `notify` is called on every change.
     pub fn start(probe: Option<Probe>, notify: impl Fn(Seen) + Send + 'static) -> Self {
         let seen = Seen {
             power: crate::power::read(),
@@ -81,16 +86,22 @@ impl Watcher {
     }
 
     fn look_forever(&self, mut probe: Option<Probe>) {
+        // Without a display to ask, the thread wakes only for the power.
+        let (pause, power_every) = match probe {
+            Some(_) => (LOOK_EVERY, LOOKS_PER_POWER_LOOK),
+            None => (LOOK_EVERY * LOOKS_PER_POWER_LOOK, 1),
+        };
+        let mut look: u32 = 0;
         loop {
-            let power = crate::power::read();
-            let display = probe.as_mut().and_then(|p| p());
-            self.update(|seen| {
-                seen.power = power;
-                if let Some(on) = display {
-                    seen.display_on = on;
-                }
-            });
-            std::thread::sleep(LOOK_EVERY);
+            if look.is_multiple_of(power_every) {
+                let power = crate::power::read();
+                self.update(|seen| seen.power = power);
+            }
+            if let Some(on) = probe.as_mut().and_then(|p| p()) {
+                self.update(|seen| seen.display_on = on);
+            }
+            look = look.wrapping_add(1);
+            std::thread::sleep(pause);
         }
     }
 
@@ -182,7 +193,7 @@ mod tests {
         let told = rx.recv_timeout(Duration::from_secs(10)).expect("told");
         assert!(!told.display_on);
         assert!(
-            rx.recv_timeout(LOOK_EVERY * 3).is_err(),
+            rx.recv_timeout(LOOK_EVERY * 4).is_err(),
             "told again without a change"
         );
         watcher.set_display(true);

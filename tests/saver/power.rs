@@ -10,7 +10,7 @@ use crate::common::x_dpms::XDpms;
 use crate::common::xvfb::{Saver, Xvfb, looks_drawn, poll};
 
 /// CPU ticks (1/100 s) a saver holding a slide may use in a minute: the
-/// watcher's look at the power once a second, a few file reads each.
+/// watcher's look at the power every three seconds, a few file reads each.
 const IDLE_TICKS_PER_MINUTE: u64 = 2;
 
 /// How long the held saver is watched doing nothing.
@@ -214,8 +214,8 @@ fn display_dpms_off_stops_all_work_and_a_fresh_slide_follows() {
 }
 
 /// CPU ticks (1/100 s) a saver with the monitor off may use while watched:
-/// a DPMS look a second.
-const OFF_TICKS: u64 = 1;
+/// a DPMS request a second and the power every three (0 or 1 were seen).
+const OFF_TICKS: u64 = 2;
 
 /// How long the saver is watched with the monitor off.
 const OFF_FOR: Duration = Duration::from_secs(20);
