@@ -8,5 +8,5 @@
 set -eu
 cd "$(dirname "$0")/.."
 cargo build --release --target x86_64-pc-windows-gnu
-MOUNTAINS_REQUIRE_WINE=1 MOUNTAINS_REQUIRE_DISPLAY=1 cargo test --test platforms -- --include-ignored wine:: "$@"
+MOUNTAINS_REQUIRE_WINE=1 MOUNTAINS_REQUIRE_DISPLAY=1 cargo test --test platforms -- --include-ignored wine:: wine_power:: "$@"
 MOUNTAINS_REQUIRE_WINE=1 cargo test --test platforms -- --include-ignored windows_resources:: "$@"

@@ -224,6 +224,19 @@ choice! {
     }
 }
 
+choice! {
+    /// What the saver does on battery or in power-saver mode.
+    pub enum OnBattery {
+        /// Finish the slide being drawn, then hold it, doing no work,
+        /// until the power returns.
+        Hold = "hold",
+        /// Go on, with pauses five times as long between slides.
+        Slow = "slow",
+        /// Go on as on mains power.
+        Same = "same",
+    }
+}
+
 /// Smallest grid exponent (9x9 points): the `detail` key's least value
 /// and the smallest heightfield, generated or loaded. Seed 000's
 /// Iterations menu starts at 3.
@@ -303,6 +316,8 @@ pub struct Settings {
     pub pause_seconds: f32,
     /// Which monitors the full-screen saver covers.
     pub monitors: Monitors,
+    /// On battery or in power-saver mode: hold the slide, slow down, or go on.
+    pub on_battery: OnBattery,
     /// Folder of PNG heightmaps mixed into the slide show (empty = none).
     pub heightmaps_dir: Option<String>,
 }

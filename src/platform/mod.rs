@@ -28,7 +28,9 @@ pub mod libcheck;
 pub mod modal;
 pub mod modes;
 pub mod os;
+pub mod power;
 pub mod signals;
+mod watch;
 #[cfg(target_os = "linux")]
 pub mod single;
 #[cfg(layer_shell_platform)]
@@ -40,6 +42,7 @@ pub mod x11;
 
 pub use backend::Backend;
 pub use modal::{ModalOwner, window_exists};
+pub use watch::start as watch_power_and_display;
 #[cfg(windows_platform)]
 pub use win32::host::Host;
 pub use window::{

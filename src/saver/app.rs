@@ -53,6 +53,8 @@ enum UserEvent {
     Terminate,
     /// News from a platform room's thread.
     Platform(Notice),
+    /// The power or the display's state changed (`watch.rs`).
+    Seen(super::watch::Seen),
 }
 
 impl Notify for winit::event_loop::EventLoopProxy<UserEvent> {
@@ -102,9 +104,14 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
     .map_err(|e| SaverError::Other(format!("cannot watch for SIGTERM: {e}")))?;
     let fullscreen = mode == AppMode::Fullscreen;
     let host = Host::new(backend, fullscreen, parent, event_loop.create_proxy())?;
+    let proxy = event_loop.create_proxy();
+    let watcher = platform::watch_power_and_display(backend, move |seen| {
+        let _ = proxy.send_event(UserEvent::Seen(seen));
+    });
     let mut app = App {
         mode,
         host,
+        seen: watcher.seen(),
         settings,
         opened,
         screens: Vec::new(),
@@ -125,6 +132,8 @@ struct App {
     host: Host<winit::event_loop::EventLoopProxy<UserEvent>>,
     settings: Settings,
     opened: Option<Mountain>,
+    /// The power and the display's state, as last seen (`watch.rs`).
+    seen: super::watch::Seen,
     screens: Vec<Screen>,
     wake: WakeDetector,
     error: Option<SaverError>,
@@ -213,6 +222,7 @@ impl ApplicationHandler<UserEvent> for App {
         match event {
             UserEvent::Terminate => self.end_on_signal(event_loop),
             UserEvent::Platform(notice) => self.notice(event_loop, notice),
+            UserEvent::Seen(seen) => self.follow_seen(event_loop, seen),
         }
     }
 
@@ -377,6 +387,16 @@ impl App {
         }
     }
 
+    /// Every show follows the power and the display's state.
+    fn follow_seen(&mut self, event_loop: &ActiveEventLoop, seen: super::watch::Seen) {
+        self.seen = seen;
+        let now = Instant::now();
+        for i in 0..self.screens.len() {
+            let damage = super::watch::apply(seen, &mut self.screens[i].show, now);
+            self.present(event_loop, i, damage.into());
+        }
+    }
+
     fn fit(&mut self, event_loop: &ActiveEventLoop, i: usize, head: Head) {
         let screen = &mut self.screens[i];
         screen.head = Some(head);
@@ -416,7 +436,7 @@ impl App {
         let presenter = Presenter::new(window.clone())
             .map_err(|e| SaverError::Other(format!("cannot draw in the window: {e}")))?;
         let now = Instant::now();
-        let show = if mountain {
+        let mut show = if mountain {
             let pacing = Pacing::from_seconds(
                 self.settings.draw_seconds,
                 self.settings.pause_seconds,
@@ -432,6 +452,7 @@ impl App {
         } else {
             Show::blank(size, now)
         };
+        super::watch::apply(self.seen, &mut show, now);
         self.screens
             .push(Screen::new(window, presenter, show, head));
         let i = self.screens.len() - 1;

@@ -34,6 +34,7 @@ pub mod show;
 pub mod slideshow;
 pub mod source;
 pub(crate) mod trace;
+pub mod watch;
 
 use crate::cli::{Mode, XssOptions};
 use crate::mountain::Mountain;

@@ -7,7 +7,7 @@ use std::time::{Duration, Instant};
 use super::on_screen::OnScreen;
 use super::overlay::Overlay;
 use super::redraw::{Drawn, Redraw};
-use super::slideshow::{Due, Pacing, Slideshow};
+use super::slideshow::{Due, Economy, Pacing, Slideshow};
 use super::source;
 use crate::mountain::Mountain;
 use crate::render::{Damage, Frame, Painter, Rect, detail};
@@ -60,6 +60,8 @@ pub struct Show {
     slide: u64,
     /// Text over the picture: `-fps`, the list of keys.
     overlay: Overlay,
+    /// The display is powered off: nothing is drawn or made until it is on.
+    asleep: bool,
 }
 
 impl Show {
@@ -110,6 +112,7 @@ impl Show {
             slideshow: Slideshow::new(pacing, 0, now),
             slide: 0,
             overlay: Overlay::default(),
+            asleep: false,
         }
     }
 
@@ -173,6 +176,9 @@ impl Show {
 
     /// When this show next needs `tick`; `None`: not until an event arrives.
     pub fn wake_at(&self, now: Instant) -> Option<Instant> {
+        if self.asleep {
+            return None;
+        }
         if self.redraw.is_some() {
             return Some(now + REDRAW_POLL);
         }
@@ -188,7 +194,7 @@ impl Show {
     /// nothing once a signal asked the program to end (the next mountain
     /// would be waited for, a redraw shown, strips drawn, for no one).
     pub fn tick(&mut self, now: Instant) -> Damage {
-        if crate::platform::signals::ending() {
+        if crate::platform::signals::ending() || self.asleep {
             return Damage::default();
         }
         if self.redraw.as_ref().is_some_and(|r| !r.is_done()) {
@@ -284,6 +290,10 @@ impl Show {
     /// other threads, and shown by the `tick` after it is done.
     pub fn resize(&mut self, size: (u32, u32), now: Instant) -> Rect {
         self.size = size;
+        // The slide the display shows when it comes back is drawn at this size.
+        if self.asleep {
+            return Rect::default();
+        }
         if self.current.is_none() {
             self.frame = Frame::new(size.0, size.1);
             return self.frame.as_ref().map(Frame::bounds).unwrap_or_default();
@@ -323,6 +333,37 @@ impl Show {
             self.again = Some(again);
         }
         true
+    }
+
+    /// Follows the power: under `Economy::Hold` the slide being drawn is
+    /// finished and held, and the next mountain is not made until the
+    /// power returns.
+    pub fn set_economy(&mut self, economy: Economy) {
+        self.slideshow.set_economy(economy);
+        if self.slideshow.is_holding() {
+            self.prepare_next();
+        }
+    }
+
+    /// Follows the display's power: while it is off nothing is drawn or
+    /// made (a redraw under way is called off); when it comes back a fresh
+    /// slide starts. Returns the pixels that changed.
+    pub fn set_display(&mut self, on: bool, now: Instant) -> Rect {
+        if self.asleep != on {
+            return Rect::default();
+        }
+        self.asleep = !on;
+        if !on {
+            self.redraw = None;
+            self.again = None;
+            return Rect::default();
+        }
+        self.advance(now)
+    }
+
+    /// True while the display is off for this show.
+    pub fn is_asleep(&self) -> bool {
+        self.asleep
     }
 
     /// Pauses or resumes the drawing and the hold.
@@ -470,7 +511,7 @@ impl Show {
         {
             current.park();
         }
-        if !matches!(self.next, Next::None) {
+        if !matches!(self.next, Next::None) || self.slideshow.is_held_for_power() {
             return;
         }
         let settings = self.generator_settings();
@@ -897,6 +938,50 @@ mod tests {
         crate::render::render_full(&now.field, &s, &mut expected);
         assert_eq!(now.field.as_ref(), &crate::terrain::generate(&made, 7));
         assert_eq!(show.frame(), Some(&expected));
+    }
+
+    /// While the display is off nothing is drawn or made and nothing
+    /// wakes the loop; when it comes back a fresh slide starts at once.
+    #[test]
+    fn display_off_stops_all_work_and_a_fresh_slide_follows() {
+        let t0 = Instant::now();
+        let mut show = Show::new(small_settings(), None, pacing(), (64, 48), t0);
+        show.tick(t0 + Duration::from_millis(300));
+        let drawn = show.slideshow.strips_done();
+        assert!(show.set_display(false, t0).is_empty());
+        assert!(show.is_asleep());
+        assert_eq!(show.wake_at(t0), None);
+        assert!(show.tick(t0 + Duration::from_secs(60)).is_empty());
+        assert_eq!(show.slideshow.strips_done(), drawn, "drew while off");
+        assert!(show.resize((80, 60), t0).is_empty(), "redrew while off");
+        assert!(show.redraw.is_none());
+        let t1 = t0 + Duration::from_secs(61);
+        let fresh = show.set_display(true, t1);
+        assert_eq!(show.slide, 1, "no fresh slide when the display came back");
+        assert_eq!((fresh.x1, fresh.y1), (80, 60));
+        assert!(show.wake_at(t1).is_some());
+    }
+
+    /// On battery with "hold" the next mountain is not made during the
+    /// hold, and nothing wakes the loop; when the power returns it is made
+    /// and the slide show goes on.
+    #[test]
+    fn a_power_hold_makes_nothing_until_the_power_returns() {
+        let t0 = Instant::now();
+        let mut show = Show::new(small_settings(), None, pacing(), (64, 48), t0);
+        show.set_economy(Economy::Hold);
+        show.tick(t0 + Duration::from_millis(1000));
+        assert!(show.slideshow.is_holding());
+        assert!(
+            matches!(show.next, Next::None),
+            "the next mountain was made"
+        );
+        assert_eq!(show.wake_at(t0 + Duration::from_secs(1)), None);
+        assert!(show.tick(t0 + Duration::from_secs(3600)).is_empty());
+        show.set_economy(Economy::None);
+        assert!(matches!(show.next, Next::Pending(..)));
+        assert!(!show.tick(t0 + Duration::from_secs(3601)).is_empty());
+        assert_eq!(show.slide, 1);
     }
 
     #[test]

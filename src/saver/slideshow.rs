@@ -63,7 +63,25 @@ pub struct Slideshow {
     draw_start: Instant,
     hold_start: Option<Instant>,
     paused_at: Option<Instant>,
+    /// Economy (on battery, power saver): how the hold changes.
+    economy: Economy,
 }
+
+/// What the slide show does while the system saves power (the `on_battery`
+/// key, when on battery or in power-saver mode).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Economy {
+    /// As usual: mains power, or `on_battery = "same"`.
+    #[default]
+    None,
+    /// The hold lasts until the power returns: no wake-up at all.
+    Hold,
+    /// Holds last [`SLOW_PAUSE_FACTOR`] times as long.
+    Slow,
+}
+
+/// How much longer a hold lasts under [`Economy::Slow`].
+pub const SLOW_PAUSE_FACTOR: u32 = 5;
 
 impl Slideshow {
     /// A slide show whose first mountain of `total` strips starts drawing at `now`.
@@ -75,6 +93,7 @@ impl Slideshow {
             draw_start: now,
             hold_start: None,
             paused_at: None,
+            economy: Economy::None,
         };
         show.restart(total, now);
         show
@@ -116,18 +135,37 @@ impl Slideshow {
         self.paused_at.is_some()
     }
 
+    /// Sets how the hold behaves from now on; the slide being drawn is
+    /// finished either way.
+    pub fn set_economy(&mut self, economy: Economy) {
+        self.economy = economy;
+    }
+
+    /// True while a hold lasts until the power returns.
+    pub fn is_held_for_power(&self) -> bool {
+        self.economy == Economy::Hold
+    }
+
+    /// The hold's length, or `None` when it lasts until something changes.
+    fn pause(&self) -> Option<Duration> {
+        match self.economy {
+            _ if !self.pacing.auto_advance => None,
+            Economy::Hold => None,
+            Economy::Slow => Some(self.pacing.pause * SLOW_PAUSE_FACTOR),
+            Economy::None => Some(self.pacing.pause),
+        }
+    }
+
     /// What is due at `now`.
     pub fn due(&self, now: Instant) -> Due {
         if self.paused_at.is_some() {
             return Due::Wait;
         }
         if let Some(hold) = self.hold_start {
-            let over = now.saturating_duration_since(hold) >= self.pacing.pause;
-            return if over && self.pacing.auto_advance {
-                Due::Advance
-            } else {
-                Due::Wait
-            };
+            let over = self
+                .pause()
+                .is_some_and(|pause| now.saturating_duration_since(hold) >= pause);
+            return if over { Due::Advance } else { Due::Wait };
         }
         match self.target(now).saturating_sub(self.done) {
             0 => Due::Wait,
@@ -150,7 +188,7 @@ impl Slideshow {
             return None;
         }
         match self.hold_start {
-            Some(hold) => self.pacing.auto_advance.then(|| hold + self.pacing.pause),
+            Some(hold) => self.pause().map(|pause| hold + pause),
             None => Some((now + self.pacing.frame).max(self.strip_time(self.done))),
         }
     }
@@ -304,6 +342,25 @@ mod tests {
         show.restart(20, t0 + Duration::from_secs(1));
         assert!(!show.is_holding());
         assert_eq!(show.due(t0 + Duration::from_secs(1)), Due::Draw(1));
+    }
+
+    /// On battery with "hold": the slide being drawn is finished, then
+    /// held with no wake-up until the power returns; "slow" stretches holds.
+    #[test]
+    fn economy_holds_after_the_slide_or_stretches_the_pause() {
+        let t0 = Instant::now();
+        let mut show = Slideshow::new(pacing(1000, 500, true), 10, t0);
+        show.set_economy(Economy::Hold);
+        assert_eq!(show.due(t0 + Duration::from_secs(2)), Due::Draw(10));
+        show.drew(10, t0 + Duration::from_secs(2));
+        assert_eq!(show.due(t0 + Duration::from_secs(3600)), Due::Wait);
+        assert_eq!(show.wake_at(t0 + Duration::from_secs(3)), None);
+        show.set_economy(Economy::Slow);
+        let held = t0 + Duration::from_secs(2);
+        assert_eq!(show.wake_at(held), Some(held + Duration::from_millis(2500)));
+        assert_eq!(show.due(held + Duration::from_millis(2499)), Due::Wait);
+        show.set_economy(Economy::None);
+        assert_eq!(show.due(held + Duration::from_millis(500)), Due::Advance);
     }
 
     #[test]

@@ -10,6 +10,8 @@ pub mod headless;
 pub mod heightmaps;
 pub mod hostile;
 pub mod pe;
+#[cfg(target_os = "linux")]
+pub mod power;
 #[cfg(unix)]
 pub mod randr;
 #[cfg(unix)]
@@ -23,5 +25,7 @@ pub mod wine;
 pub mod wl_pointer;
 #[cfg(target_os = "linux")]
 pub mod wl_proxy;
+#[cfg(target_os = "linux")]
+pub mod x_dpms;
 #[cfg(unix)]
 pub mod xvfb;

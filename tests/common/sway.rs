@@ -335,6 +335,11 @@ impl Client {
         std::fs::read_to_string(&self.stderr).unwrap_or_default()
     }
 
+    /// Its process id (setpriv execs it: the same process).
+    pub fn pid(&self) -> u32 {
+        self.child.as_ref().unwrap().id()
+    }
+
     /// Its exit status if it has ended.
     pub fn exited(&mut self) -> Option<ExitStatus> {
         self.child.as_mut().unwrap().try_wait().unwrap()

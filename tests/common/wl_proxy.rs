@@ -2,7 +2,9 @@
 //! (and file descriptor) on, and can play a compositor sway 1.7 cannot be:
 //! one without wlr-layer-shell (its global is kept from the clients), one
 //! whose output goes away (a `wl_registry.global_remove` for it), one that
-//! closes layer surfaces (`zwlr_layer_surface_v1.closed`).
+//! closes layer surfaces (`zwlr_layer_surface_v1.closed`), one that powers
+//! its outputs off and on (`zwlr_output_power_v1.mode`; sway 1.7's headless
+//! outputs fail to commit `dpms off`).
 //!
 //! It reads the wire format (a 32-bit object id, a 32-bit size << 16 |
 //! opcode, the arguments) just far enough to know the registries, the
@@ -45,6 +47,10 @@ struct Seen {
     shells: Vec<u32>,
     /// The client's `zwlr_layer_surface_v1` object ids.
     surfaces: Vec<u32>,
+    /// The client's `zwlr_output_power_manager_v1` object ids.
+    power_managers: Vec<u32>,
+    /// The client's `zwlr_output_power_v1` object ids.
+    output_powers: Vec<u32>,
 }
 
 impl WlProxy {
@@ -112,6 +118,23 @@ impl WlProxy {
             }
         }
         closed
+    }
+}
+
+impl WlProxy {
+    /// Tells every client watching its outputs' power that they are now
+    /// off (`on` false) or on; how many output power objects were told.
+    pub fn set_output_power(&self, on: bool) -> usize {
+        let mut told = 0;
+        for link in self.clients.lock().unwrap().iter() {
+            let seen = link.seen.lock().unwrap();
+            for &id in &seen.output_powers {
+                // zwlr_output_power_v1.mode(mode): 0 off, 1 on.
+                link.send(id, 0, &u32::from(on).to_ne_bytes());
+                told += 1;
+            }
+        }
+        told
     }
 }
 
@@ -189,19 +212,24 @@ fn global_interface(seen: &Seen, object: u32, opcode: u16, args: &[u8]) -> Optio
     Some((name, string_at(args, 4)?.0))
 }
 
-/// Notes the objects a request makes: registries, layer shells, layer surfaces.
+/// Notes the objects a request makes: registries, layer shells, layer
+/// surfaces, output power managers and their output powers.
 fn note_request(seen: &mut Seen, object: u32, opcode: u16, args: &[u8]) {
     match (object, opcode) {
         // wl_display.get_registry(new_id)
         (1, 1) => seen.registries.extend(word(args, 0)),
         // wl_registry.bind(name, interface, version, new_id)
-        (o, 0) if seen.registries.contains(&o) => {
-            if let Some((interface, next)) = string_at(args, 4)
-                && interface == "zwlr_layer_shell_v1"
-            {
-                seen.shells.extend(word(args, next + 4));
+        (o, 0) if seen.registries.contains(&o) => match string_at(args, 4) {
+            Some((interface, next)) if interface == "zwlr_layer_shell_v1" => {
+                seen.shells.extend(word(args, next + 4))
             }
-        }
+            Some((interface, next)) if interface == "zwlr_output_power_manager_v1" => {
+                seen.power_managers.extend(word(args, next + 4))
+            }
+            _ => {}
+        },
+        // zwlr_output_power_manager_v1.get_output_power(new_id, output)
+        (o, 0) if seen.power_managers.contains(&o) => seen.output_powers.extend(word(args, 0)),
         // zwlr_layer_shell_v1.get_layer_surface(new_id, ...)
         (o, 0) if seen.shells.contains(&o) => seen.surfaces.extend(word(args, 0)),
         _ => {}
@@ -243,7 +271,7 @@ const MAX_FDS: usize = 28;
 
 /// Reads what arrives on `fd` with the descriptors passed along; `None`
 /// at its end.
-fn receive_with_fds(fd: RawFd) -> Option<(Vec<u8>, Vec<RawFd>)> {
+pub fn receive_with_fds(fd: RawFd) -> Option<(Vec<u8>, Vec<RawFd>)> {
     let mut data = vec![0u8; 4096];
     let mut control = vec![0u8; 1024];
     let mut iov = libc::iovec {
@@ -286,7 +314,7 @@ fn receive_with_fds(fd: RawFd) -> Option<(Vec<u8>, Vec<RawFd>)> {
 }
 
 /// Writes all of `bytes` to `fd`, the descriptors `fds` with the first part.
-fn send_with_fds(fd: RawFd, bytes: &[u8], fds: &[RawFd]) {
+pub fn send_with_fds(fd: RawFd, bytes: &[u8], fds: &[RawFd]) {
     assert!(fds.len() <= MAX_FDS, "{} descriptors at once", fds.len());
     let mut sent = 0;
     let mut fds = fds;
@@ -329,7 +357,7 @@ fn send_with_fds(fd: RawFd, bytes: &[u8], fds: &[RawFd]) {
     }
 }
 
-fn close_all(fds: &[RawFd]) {
+pub fn close_all(fds: &[RawFd]) {
     for &fd in fds {
         // SAFETY: each descriptor came from recvmsg and was passed on.
         unsafe { libc::close(fd) };

@@ -7,3 +7,4 @@ mod contrib_files;
 mod packages;
 mod windows_resources;
 mod wine;
+mod wine_power;

@@ -80,7 +80,7 @@ fn a_value_written_differently_but_equal_is_kept_as_written() {
 #[test]
 fn every_key_round_trips_through_the_shipped_file() {
     use mountains::settings::{
-        Clouds, Generator, Look, Monitors, Profile, Shading, Sun, ViewKind, WaterLine,
+        Clouds, Generator, Look, Monitors, OnBattery, Profile, Shading, Sun, ViewKind, WaterLine,
     };
     let s = Settings {
         seed: Some(u64::MAX),
@@ -115,6 +115,7 @@ fn every_key_round_trips_through_the_shipped_file() {
         draw_seconds: 0.0,
         pause_seconds: 3600.0,
         monitors: Monitors::Primary,
+        on_battery: OnBattery::Slow,
         heightmaps_dir: Some("C:\\Maps \"quoted\"".into()),
     };
     let out = merge(DEFAULT_TOML, &s).unwrap();

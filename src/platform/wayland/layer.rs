@@ -76,6 +76,7 @@ pub fn run(layer: Layer, settings: Settings, opened: Option<Mountain>) -> Result
         .map_err(|e| other("cannot watch for SIGTERM", e.error))?;
     crate::platform::signals::on_terminate(move || ping.ping())
         .map_err(|e| other("cannot watch for SIGTERM", e))?;
+    follow_power(&event_loop, &mut app)?;
     let mut timeout = Some(Duration::ZERO);
     while !app.ended {
         event_loop
@@ -88,6 +89,24 @@ pub fn run(layer: Layer, settings: Settings, opened: Option<Mountain>) -> Result
         }
     }
     app.error.map_or(Ok(()), Err)
+}
+
+/// Makes every show follow the power and the outputs' power (`watch.rs`).
+fn follow_power(event_loop: &EventLoop<LayerApp>, app: &mut LayerApp) -> Result<(), SaverError> {
+    let (tx, rx) = sctk::reexports::calloop::channel::channel();
+    event_loop
+        .handle()
+        .insert_source(rx, |event, _, app: &mut LayerApp| {
+            if let sctk::reexports::calloop::channel::Event::Msg(seen) = event {
+                app.follow_seen(seen);
+            }
+        })
+        .map_err(|e| other("cannot watch the power", e.error))?;
+    let watcher = crate::platform::watch_power_and_display(crate::platform::Backend::Wayland, move |seen| {
+        let _ = tx.send(seen);
+    });
+    app.seen = watcher.seen();
+    Ok(())
 }
 
 /// Refuses a compositor that lacks a global `--layer` needs, naming it;
@@ -174,6 +193,8 @@ struct LayerApp {
     settings: Settings,
     opened: Option<Mountain>,
     covered: Vec<Covered>,
+    /// The power and the outputs' state, as last seen (`watch.rs`).
+    seen: crate::saver::watch::Seen,
     ended: bool,
     error: Option<SaverError>,
     trace: Trace,
@@ -204,6 +225,10 @@ impl LayerApp {
             settings,
             opened,
             covered: Vec::new(),
+            seen: crate::saver::watch::Seen {
+                power: crate::platform::power::Power::default(),
+                display_on: true,
+            },
             ended: false,
             error: None,
             trace: Trace::from_env(),
@@ -351,13 +376,14 @@ impl LayerApp {
             self.settings.pause_seconds,
             true,
         );
-        let show = crate::saver::options::new_show(
+        let mut show = crate::saver::options::new_show(
             self.settings.clone(),
             self.opened.clone(),
             pacing,
             size,
             now,
         );
+        crate::saver::watch::apply(self.seen, &mut show, now);
         let bounds = show.frame().map(|f| f.bounds()).unwrap_or_default();
         self.covered[i].drawing = Some(Drawing { presenter, show });
         Ok(bounds.into())
@@ -383,6 +409,19 @@ impl LayerApp {
         match d.presenter.present(frame, &damage) {
             Ok(()) => self.trace.presented(),
             Err(e) => self.fail(SaverError::Other(format!("cannot present: {e}"))),
+        }
+    }
+
+    /// Every show follows the power and the outputs' state.
+    fn follow_seen(&mut self, seen: crate::saver::watch::Seen) {
+        self.seen = seen;
+        let now = Instant::now();
+        for i in 0..self.covered.len() {
+            let damage = match self.covered[i].drawing.as_mut() {
+                Some(d) => crate::saver::watch::apply(seen, &mut d.show, now),
+                None => continue,
+            };
+            self.present(i, damage.into());
         }
     }
 

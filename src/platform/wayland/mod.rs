@@ -3,4 +3,5 @@
 
 pub(super) mod cover;
 pub mod layer;
+pub mod power;
 pub(super) mod target;

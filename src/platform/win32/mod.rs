@@ -7,6 +7,8 @@ pub mod clock;
 #[cfg(windows_platform)]
 pub mod console;
 #[cfg(windows_platform)]
+pub mod display;
+#[cfg(windows_platform)]
 pub mod embed;
 pub mod fullscreen;
 #[cfg(windows_platform)]

@@ -57,6 +57,8 @@ enum Notice {
     /// The connection to the X server broke.
     ServerGone,
     Terminate,
+    /// The power or the display's state changed.
+    Seen(crate::saver::watch::Seen),
 }
 
 /// The window `$XSCREENSAVER_WINDOW` names (hex `0x..` or decimal).
@@ -98,6 +100,10 @@ pub fn run(
     }
     let (tx, rx) = mpsc::channel();
     spawn_event_thread(conn.clone(), xid, tx.clone())?;
+    let seen_tx = tx.clone();
+    let watcher = crate::platform::watch_power_and_display(crate::platform::Backend::X11, move |seen| {
+        let _ = seen_tx.send(Notice::Seen(seen));
+    });
     crate::platform::signals::on_terminate(move || {
         let _ = tx.send(Notice::Terminate);
     })
@@ -110,7 +116,9 @@ pub fn run(
     let presenter =
         Presenter::new(target).map_err(|e| SaverError::Other(format!("window 0x{xid:x}: {e}")))?;
     let pacing = Pacing::from_seconds(settings.draw_seconds, settings.pause_seconds, true);
-    let show = crate::saver::options::new_show(settings, opened, pacing, size, Instant::now());
+    let now = Instant::now();
+    let mut show = crate::saver::options::new_show(settings, opened, pacing, size, now);
+    crate::saver::watch::apply(watcher.seen(), &mut show, now);
     let mut embedded = Embedded {
         conn,
         xid,
@@ -229,6 +237,10 @@ impl Embedded {
                 Notice::ServerGone => return Err(SaverError::server_gone()),
                 Notice::Resized(w, h) => size = Some((w, h)),
                 Notice::Exposed => exposed = true,
+                Notice::Seen(seen) => {
+                    let fresh = crate::saver::watch::apply(seen, &mut self.show, Instant::now());
+                    exposed |= !fresh.is_empty();
+                }
             }
         }
         let current = self.show.size();

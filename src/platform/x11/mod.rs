@@ -5,6 +5,7 @@
 
 pub mod bands;
 pub mod connect;
+pub mod dpms;
 pub mod embed;
 pub mod grab;
 pub mod heads;

@@ -6,8 +6,8 @@
 use super::field::Field;
 use super::kind::{Change, Key, Kind, Value};
 use crate::settings::{
-    ColorMode, Generator, Look, MAX_GRID_EXPONENT, MIN_GRID_EXPONENT, Monitors, Profile, Settings,
-    Shading, Sun, ViewKind, WaterLine,
+    ColorMode, Generator, Look, MAX_GRID_EXPONENT, MIN_GRID_EXPONENT, Monitors, OnBattery, Profile,
+    Settings, Shading, Sun, ViewKind, WaterLine,
 };
 
 /// The table: for each row `CONST = (field, kind, change, default, doc)`,
@@ -323,6 +323,13 @@ rows! {
         Nothing,
         Value::Str(Monitors::All.name().into()),
         "full screen: a mountain on every monitor, or the primary only"
+    ),
+    ON_BATTERY = (
+        on_battery,
+        Kind::Choice(OnBattery::NAMES),
+        Nothing,
+        Value::Str(OnBattery::Hold.name().into()),
+        "on battery or in power-saver mode: hold the finished slide, slow the slide show, or the same as on mains"
     ),
     HEIGHTMAPS_DIR = (
         heightmaps_dir,
