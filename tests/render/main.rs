@@ -17,6 +17,7 @@ mod reflections;
 mod scene;
 mod skirts;
 mod smooth;
+mod span;
 mod view;
 mod vista;
 mod water;
