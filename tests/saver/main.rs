@@ -9,5 +9,6 @@ mod display;
 mod errors;
 mod monitors;
 mod settings_screen;
+mod span;
 mod wayland;
 mod xscreensaver;
