@@ -120,6 +120,8 @@ fn wayland_span_two_outputs_show_one_picture() {
     ];
     sway.run("swaymsg", &place);
     sway.run("swaymsg", &["create_output"]);
+    // sway lays a new output out again: the first one goes back to 0,0.
+    sway.run("swaymsg", &["output", "HEADLESS-1", "position", "0", "0"]);
     let picture = headless_render(1280, 480);
     let args = [
         "/s",
