@@ -221,6 +221,8 @@ choice! {
         All = "all",
         /// Only the primary monitor; the others are blanked.
         Primary = "primary",
+        /// One landscape across every monitor, each showing its part.
+        Span = "span",
     }
 }
 

@@ -21,6 +21,7 @@ use super::present::Presenter;
 use super::screen::Screen;
 use super::show::Show;
 use super::slideshow::Pacing;
+use super::span::Span;
 use super::trace::Trace;
 use crate::mountain::Mountain;
 use crate::platform::events::{Motion, Notice, Notify};
@@ -115,6 +116,7 @@ pub fn run(mode: AppMode, settings: Settings, opened: Option<Mountain>) -> Resul
         settings,
         opened,
         screens: Vec::new(),
+        span: None,
         wake: WakeDetector::new(),
         error: None,
         trace: Trace::from_env(),
@@ -135,6 +137,8 @@ struct App {
     /// The power and the display's state, as last seen (`watch.rs`).
     seen: super::watch::Seen,
     screens: Vec<Screen>,
+    /// `monitors = "span"`: the one show the windows show their parts of.
+    span: Option<Span>,
     wake: WakeDetector,
     error: Option<SaverError>,
     trace: Trace,
@@ -231,6 +235,7 @@ impl ApplicationHandler<UserEvent> for App {
             return self.end_on_signal(event_loop);
         }
         let now = Instant::now();
+        self.tick_span(event_loop, now);
         for i in 0..self.screens.len() {
             let damage = self.screens[i].show.tick(now);
             // The slide show moves on by itself: the title follows.
@@ -254,6 +259,7 @@ impl ApplicationHandler<UserEvent> for App {
             .screens
             .iter()
             .filter_map(|s| s.show.wake_at(now))
+            .chain(self.span.as_ref().and_then(|s| s.wake_at(now)))
             .min();
         let wake = [shows, tick.wake_at].into_iter().flatten().min();
         event_loop.set_control_flow(wake.map_or(ControlFlow::Wait, ControlFlow::WaitUntil));
@@ -340,9 +346,10 @@ impl App {
                 .with_fullscreen(Some(winit::window::Fullscreen::Borderless(None)));
             return self.add_screen(event_loop, attrs, true, None);
         }
-        for (head, monitor) in found {
-            self.open_head(event_loop, base.clone(), head, monitor.as_ref())?;
+        for (head, monitor) in &found {
+            self.open_head(event_loop, base.clone(), *head, monitor.as_ref())?;
         }
+        self.lay_span(event_loop);
         Ok(())
     }
 
@@ -353,7 +360,11 @@ impl App {
         head: Head,
         monitor: Option<&MonitorHandle>,
     ) -> Result<(), SaverError> {
-        let mountain = self.settings.monitors == Monitors::All || head.primary;
+        let mountain = match self.settings.monitors {
+            Monitors::All => true,
+            Monitors::Primary => head.primary,
+            Monitors::Span => false,
+        };
         let attrs = covering(base, &head, monitor, self.host.wayland());
         self.add_screen(event_loop, attrs, mountain, Some(head))
     }
@@ -385,6 +396,62 @@ impl App {
                 }
             }
         }
+        self.lay_span(event_loop);
+    }
+
+    /// `monitors = "span"`: one show over the bounding rectangle of the
+    /// windows' monitors (again, as a new slide, when they changed), each
+    /// window showing its part.
+    fn lay_span(&mut self, event_loop: &ActiveEventLoop) {
+        if self.settings.monitors != Monitors::Span || self.mode != AppMode::Fullscreen {
+            return;
+        }
+        let heads: Vec<Head> = self.screens.iter().filter_map(|s| s.head).collect();
+        if self.span.as_ref().is_some_and(|s| s.laid_for(&heads)) {
+            return;
+        }
+        let (settings, opened, pacing) = (&self.settings, &self.opened, self.pacing());
+        let seen = self.seen;
+        self.span = Span::new(&heads, |size| {
+            let now = Instant::now();
+            let mut show =
+                super::options::new_show(settings.clone(), opened.clone(), pacing, size, now);
+            super::watch::apply(seen, &mut show, now);
+            show
+        });
+        for i in 0..self.screens.len() {
+            self.paint_span(event_loop, i, None);
+        }
+    }
+
+    /// Copies the span's new pixels (`damage`, or all of them) into window
+    /// `i` and presents them.
+    fn paint_span(&mut self, event_loop: &ActiveEventLoop, i: usize, damage: Option<&Damage>) {
+        let Some(span) = &self.span else { return };
+        let screen = &mut self.screens[i];
+        let changed = match damage {
+            Some(d) => span.paint(screen, d),
+            None => span.paint_all(screen),
+        };
+        self.present(event_loop, i, changed);
+    }
+
+    fn tick_span(&mut self, event_loop: &ActiveEventLoop, now: Instant) {
+        let Some(damage) = self.span.as_mut().map(|s| s.tick(now)) else {
+            return;
+        };
+        for i in 0..self.screens.len() {
+            self.paint_span(event_loop, i, Some(&damage));
+        }
+    }
+
+    /// How the slide shows move on in this mode.
+    fn pacing(&self) -> Pacing {
+        Pacing::from_seconds(
+            self.settings.draw_seconds,
+            self.settings.pause_seconds,
+            self.mode != AppMode::Window || self.settings.auto_redraw,
+        )
     }
 
     /// Every show follows the power and the display's state.
@@ -394,6 +461,12 @@ impl App {
         for i in 0..self.screens.len() {
             let damage = super::watch::apply(seen, &mut self.screens[i].show, now);
             self.present(event_loop, i, damage.into());
+        }
+        let span_changed = self.span.as_mut().map(|span| span.follow(seen, now));
+        if span_changed.is_some_and(|changed| !changed.is_empty()) {
+            for i in 0..self.screens.len() {
+                self.paint_span(event_loop, i, None);
+            }
         }
     }
 
@@ -437,11 +510,7 @@ impl App {
             .map_err(|e| SaverError::Other(format!("cannot draw in the window: {e}")))?;
         let now = Instant::now();
         let mut show = if mountain {
-            let pacing = Pacing::from_seconds(
-                self.settings.draw_seconds,
-                self.settings.pause_seconds,
-                self.mode != AppMode::Window || self.settings.auto_redraw,
-            );
+            let pacing = self.pacing();
             super::options::new_show(
                 self.settings.clone(),
                 self.opened.clone(),
@@ -470,6 +539,7 @@ impl App {
             .show
             .resize((size.width, size.height), Instant::now());
         self.present(event_loop, i, damage.into());
+        self.paint_span(event_loop, i, None);
     }
 
     fn present_all(&mut self, event_loop: &ActiveEventLoop, i: usize) {

@@ -33,6 +33,7 @@ mod screen;
 pub mod show;
 pub mod slideshow;
 pub mod source;
+pub mod span;
 pub(crate) mod trace;
 pub mod watch;
 

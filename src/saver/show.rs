@@ -147,6 +147,12 @@ impl Show {
         self.frame.as_ref()
     }
 
+    /// The pixels, to draw into from outside: a window showing its part
+    /// of a span (see `span.rs`) keeps a black show for them.
+    pub(super) fn frame_mut(&mut self) -> Option<&mut Frame> {
+        self.frame.as_mut()
+    }
+
     /// The mountain on screen, if any. While a slide is held its heights
     /// may have been let go (see `on_screen.rs`): they are made again here,
     /// which takes as long as generating them did.

@@ -19,6 +19,7 @@ mod scene;
 mod skirts;
 mod smooth;
 mod solar;
+mod span;
 mod view;
 mod vista;
 mod water;

@@ -10,6 +10,7 @@ mod errors;
 mod monitors;
 mod power;
 mod settings_screen;
+mod span;
 mod wayland;
 mod wayland_power;
 mod xscreensaver;

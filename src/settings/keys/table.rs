@@ -322,7 +322,7 @@ rows! {
         Kind::Choice(Monitors::NAMES),
         Nothing,
         Value::Str(Monitors::All.name().into()),
-        "full screen: a mountain on every monitor, or the primary only"
+        "full screen: a mountain on every monitor, the primary only, or one across all"
     ),
     ON_BATTERY = (
         on_battery,
