@@ -38,6 +38,12 @@ pub(super) fn basins(heights: &[f32], n: usize, least: usize, found: impl FnMut(
     rise.lakes(least, found);
 }
 
+/// Whether height `h` is land: above sea level (NaN, no data, is not).
+#[inline]
+fn land(h: f32) -> bool {
+    h > 0.0
+}
+
 /// One bit a point.
 struct Bits(Vec<u64>);
 
@@ -248,7 +254,7 @@ impl<'a> Rise<'a> {
         let mut root = true;
         for &k in &around[..count] {
             let hk = self.heights[k];
-            if !(hk > 0.0) {
+            if !land(hk) {
                 out = true;
             } else if self.wet.get(k) {
                 if self.mark.get(k) {
@@ -355,7 +361,7 @@ impl<'a> Rise<'a> {
             n,
             mut wet,
             pits,
-            mut joined,
+            joined,
             drained,
             mut stack,
             ..
@@ -371,7 +377,7 @@ impl<'a> Rise<'a> {
             }
             let level = f32::from_bits(joined[root]);
             let pit = pit as usize;
-            if !drained.get(root) || !(heights[pit] < level) {
+            if !drained.get(root) || heights[pit] >= level {
                 continue;
             }
             basin.clear();
