@@ -1,5 +1,9 @@
 //! Speed of the terrain generators (targets: 1025x1025 <= 3 ms, 4097x4097 <= 40 ms).
 
+#[path = "../tests/common/lakes_reference.rs"]
+#[allow(dead_code)]
+mod lakes_reference;
+
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use mountains::settings::{Generator, Settings};
 use mountains::terrain::{generate, generate_into, generate_with_threads};
@@ -101,19 +105,24 @@ fn brownian(c: &mut Criterion) {
 }
 
 /// Finding the lakes of a default mountain (`lakes = true`; part of
-/// `generate`), alone.
+/// `generate`), alone, beside the first flood (a priority-flood over the
+/// whole land, kept in the tests as the reference) on the same field.
 fn lakes(c: &mut Criterion) {
     let mut group = c.benchmark_group("lakes");
     group.sample_size(10);
-    for detail in [10, 12] {
+    for detail in [10, 11] {
         let s = Settings {
             detail: mountains::settings::Detail::Level(detail),
             ..Settings::default()
         };
         let field = generate(&s, 7);
-        let id = BenchmarkId::from_parameter((1 << detail) + 1);
-        group.bench_function(id, |b| {
-            b.iter(|| mountains::terrain::Lakes::of(field.heights(), field.size()))
+        let (heights, n) = (field.heights(), field.size());
+        let least = lakes_reference::least(heights.len());
+        group.bench_function(BenchmarkId::new("rising", n), |b| {
+            b.iter(|| mountains::terrain::Lakes::of(heights, n))
+        });
+        group.bench_function(BenchmarkId::new("first_flood", n), |b| {
+            b.iter(|| lakes_reference::lakes(heights, n, least))
         });
     }
     group.finish();

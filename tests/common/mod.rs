@@ -9,6 +9,7 @@ pub mod golden;
 pub mod headless;
 pub mod heightmaps;
 pub mod hostile;
+pub mod lakes_reference;
 pub mod pe;
 #[cfg(target_os = "linux")]
 pub mod power;

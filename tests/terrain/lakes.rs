@@ -216,3 +216,120 @@ fn lakes_are_asked_for_and_the_same_on_any_thread_count() {
     assert!(dry.lakes().is_none());
     assert_eq!(dry.heights(), one.heights(), "lakes change no height");
 }
+
+use crate::common::lakes_reference::{self, Reference};
+
+/// The lakes of `heights` equal the first flood's, lake by lake and run by
+/// run, at the least area `Lakes::of` keeps and at a few points.
+fn same_as_reference(heights: &[f32], n: usize, what: &str) -> usize {
+    let same = |lakes: &Lakes| Reference::from_lakes(lakes).numbered_by_first_point();
+    let ours = same(&Lakes::of(heights, n));
+    let theirs = lakes_reference::lakes(heights, n, lakes_reference::least(heights.len()))
+        .numbered_by_first_point();
+    assert_eq!(ours, theirs, "{what}: not the first flood's lakes");
+    for least in [1, 3] {
+        let ours = same(&Lakes::at_least(heights, n, least));
+        let theirs = lakes_reference::lakes(heights, n, least).numbered_by_first_point();
+        assert_eq!(
+            ours, theirs,
+            "{what}, least {least}: not the first flood's lakes"
+        );
+    }
+    ours.levels.len()
+}
+
+#[test]
+fn generated_lakes_are_the_first_floods() {
+    let mut total = 0;
+    for generator in [
+        Generator::Diamond,
+        Generator::Square,
+        Generator::Triangle,
+        Generator::Brownian,
+    ] {
+        for (detail, seeds) in [(6, 1..=8), (8, 1..=4), (10, 1..=1)] {
+            for seed in seeds {
+                for sea_level in [None, Some(0.1), Some(0.6)] {
+                    let mut s = Settings {
+                        generator,
+                        detail: mountains::settings::Detail::Level(detail),
+                        ..Settings::default()
+                    };
+                    if let Some(sea) = sea_level {
+                        s.sea_level = sea;
+                    }
+                    let field = generate(&s, seed);
+                    let what = format!("{generator:?} {detail} seed {seed} sea {sea_level:?}");
+                    total += same_as_reference(field.heights(), field.size(), &what);
+                }
+            }
+        }
+    }
+    assert!(total >= 20, "only {total} lakes to compare");
+}
+
+/// Hand-made fields where the order of equal heights decides: flats,
+/// terraces, nested basins, plateaus with pits, the sea inside, lips on
+/// the border.
+#[test]
+fn hand_made_lakes_are_the_first_floods() {
+    let n = 65;
+    let at = |f: &dyn Fn(usize, usize) -> f32| -> Vec<f32> {
+        (0..n * n).map(|i| f(i % n, i / n)).collect()
+    };
+    let r = |x: usize, y: usize| {
+        let (dx, dy) = (x as f32 - 32.0, y as f32 - 32.0);
+        (dx * dx + dy * dy).sqrt()
+    };
+    let hash = |x: usize, y: usize| (((x * 73_856_093) ^ (y * 19_349_663)) % 1000) as f32 / 1000.0;
+    let fields: Vec<(&str, Vec<f32>)> = vec![
+        ("flat", at(&|_, _| 3.0)),
+        (
+            "flat with a sea",
+            at(&|x, y| if r(x, y) < 5.0 { -1.0 } else { 3.0 }),
+        ),
+        (
+            "nested basins",
+            at(&|x, y| {
+                10.0 - (r(x, y) / 4.0).floor().min(6.0)
+                    * ((r(x, y) as usize % 8) as f32 / 4.0 + 0.5)
+            }),
+        ),
+        (
+            "terraces",
+            at(&|x, y| 1.0 + ((r(x, y) + hash(x, y) * 6.0) / 3.0).floor()),
+        ),
+        (
+            "plateau with pits",
+            at(&|x, y| if (x / 7 + y / 5) % 3 == 0 { 2.0 } else { 4.0 }),
+        ),
+        ("rough", at(&|x, y| 1.0 + hash(x, y) * 5.0)),
+        (
+            "quantised rough",
+            at(&|x, y| 1.0 + (hash(x, y) * 4.0).floor()),
+        ),
+        (
+            "rings",
+            at(&|x, y| 2.0 + ((r(x, y) / 2.0) as usize % 2) as f32 * 3.0),
+        ),
+        (
+            "low border",
+            at(&|x, y| {
+                if x == 0 || y == n - 1 {
+                    0.5
+                } else {
+                    1.0 + hash(y, x)
+                }
+            }),
+        ),
+        ("sea and land", at(&|x, y| hash(x, y) * 4.0 - 1.0)),
+    ];
+    let mut total = 0;
+    for (what, heights) in &fields {
+        total += same_as_reference(heights, n, what);
+        let mut field = Heightfield::from_heights(n, 100.0, heights.clone()).unwrap();
+        field.set_lakes(Some(Lakes::at_least(heights, n, 1).into()));
+        check_lakes(&field, what);
+    }
+    assert!(total >= 10, "only {total} lakes to compare");
+}
