@@ -22,7 +22,7 @@ use super::shade::shadow::{self, ShadowMap};
 use super::shade::sky::Sky;
 use super::shade::skylight::SkyLight;
 use super::shade::weather::Weather;
-use crate::settings::{ColorMode, Look, Settings, Shading, ViewKind};
+use crate::settings::{ColorMode, Look, Settings, Shading, ViewKind, worlds};
 use crate::terrain::Heightfield;
 use crate::threads::{both, both_if};
 
@@ -194,6 +194,8 @@ pub(crate) struct Scene<'a> {
 impl<'a> Scene<'a> {
     /// Prepares `field` seen as `settings` ask, in a `width` x `height` frame.
     pub(crate) fn new(field: FieldRef<'a>, settings: &Settings, width: u32, height: u32) -> Self {
+        // The world the mountain was made in: its keys and its colours.
+        let settings = &worlds::drawn(settings, field.seed());
         let style = Style::of(settings.color);
         let (field, square, outline) = laid_out(field, settings, width, height);
         let lighting = Palette::lighting_for(settings, &field);

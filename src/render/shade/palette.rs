@@ -19,6 +19,7 @@
 //! lowland turns black under the red filter; the tint keeps every face's
 //! brightness, stays in the filter's hue family, and snow turns a pale tint.
 
+use super::cover;
 use super::dither;
 use super::essay;
 use super::facings;
@@ -28,7 +29,7 @@ use super::listing;
 use crate::render::base::colour::{
     Rgb, mix, mix_packed, pack, scale_packed, scale_packed3, to_u32, unpack,
 };
-use crate::settings::{ColorMode, Look, Settings, Sun};
+use crate::settings::{ColorMode, Look, Settings, Sun, World};
 use crate::terrain::Heightfield;
 use glam::Vec3;
 
@@ -109,6 +110,8 @@ pub struct Palette {
     /// The background of a seed program's look: black windows, the
     /// essay's white page.
     backdrop: Option<u32>,
+    /// The world whose cover, water and air these are (`cover.rs`).
+    world: World,
 }
 
 impl Palette {
@@ -135,7 +138,7 @@ impl Palette {
         let (lowest, highest) = field.min_max();
         let top = positive_or(highest, 1.0);
         let (gain, offset) = tone(mode);
-        let zones = Zones::new(settings.height, lowest < 0.0);
+        let zones = Zones::new(settings.height, lowest < 0.0, settings.world);
         let steep_ref = steepness_reference(field);
         let land = land_table(mode, &zones);
         let deepest = positive_or(-lowest, 1.0);
@@ -143,6 +146,7 @@ impl Palette {
             relative: settings.relative_depth,
             deepest,
             reflected: (!lighting.classic).then_some(lighting.horizon),
+            world: settings.world,
         };
         let listing = (settings.look == Look::FractalMountainClimbing
             && matches!(mode, ColorMode::Natural | ColorMode::Mono))
@@ -182,6 +186,7 @@ impl Palette {
                 Look::Essay => Some(essay::BACKGROUND),
                 _ => None,
             },
+            world: settings.world,
         }
     }
 
@@ -316,7 +321,11 @@ impl Palette {
             ColorMode::Mono | ColorMode::Sonar | ColorMode::Filled | ColorMode::Outline => (0, 0),
             mode => {
                 let l = &self.lighting;
-                let [top, bottom] = [l.zenith, l.horizon].map(|c| to_u32(filter(mode, c)));
+                let horizon = match self.world {
+                    World::Temperate | World::Varied => l.horizon,
+                    world => cover::air(world, l.horizon),
+                };
+                let [top, bottom] = [l.zenith, horizon].map(|c| to_u32(filter(mode, c)));
                 (top, bottom)
             }
         }
@@ -461,16 +470,18 @@ struct Zones {
     treeline: f32,
     band: f32,
     beach: bool,
+    world: World,
 }
 
 impl Zones {
     /// Seed 000's treeline for a height setting of `height` (1..=10).
-    fn new(height: u32, has_water: bool) -> Self {
+    fn new(height: u32, has_water: bool, world: World) -> Self {
         let h = crate::settings::handles::HEIGHT.clamp(height) as f32;
         Zones {
             treeline: 0.4 + 1.0 / h,
             band: 0.9 / h,
             beach: has_water,
+            world,
         }
     }
 
@@ -478,6 +489,9 @@ impl Zones {
     /// a face of relative steepness `steep` (0 flat, 1 the field's steep faces).
     fn colour(&self, u: f32, steep: f32) -> Rgb {
         use natural::*;
+        if !matches!(self.world, World::Temperate | World::Varied) {
+            return cover::land(self.world, u, steep, self.beach);
+        }
         let low = u / self.treeline;
         let lowland = if self.beach {
             ramp(
@@ -526,6 +540,8 @@ struct Waters {
     deepest: f32,
     /// The sky colour the surface reflects, if any.
     reflected: Option<Rgb>,
+    /// The world whose water it is (`cover.rs`; the temperate's is ours).
+    world: World,
 }
 
 /// Water colours by depth and the depth-to-bin scale.
@@ -533,12 +549,15 @@ fn water_table(mode: ColorMode, w: &Waters, gain: f32, offset: f32) -> (Box<[u32
     let (relative, deepest) = (w.relative, w.deepest);
     let table = (0..DEPTH_BINS)
         .map(|i| {
-            let c = if relative {
-                let t = i as f32 / (DEPTH_BINS - 1) as f32;
+            let t = i as f32 / (DEPTH_BINS - 1) as f32;
+            let c = match (relative, w.world) {
                 // Most of the darkening near the shore, where it shows.
-                mix(natural::SHALLOW, natural::DEEP, t.sqrt())
-            } else {
-                natural::SEA
+                (true, World::Temperate | World::Varied) => {
+                    mix(natural::SHALLOW, natural::DEEP, t.sqrt())
+                }
+                (false, World::Temperate | World::Varied) => natural::SEA,
+                (true, world) => cover::water(world, t),
+                (false, world) => cover::water(world, 0.35),
             };
             let c = w.reflected.map_or(c, |sky| mix(c, sky, WATER_REFLECTS));
             match mode {

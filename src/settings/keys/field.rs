@@ -7,7 +7,7 @@ use serde::de::IntoDeserializer;
 use super::kind::{Key, Kind, Value};
 use crate::settings::{
     Clouds, ColorMode, Detail, Generator, Look, Monitors, Profile, Shading, Sun, ViewKind,
-    WaterLine,
+    WaterLine, World,
 };
 
 /// How a `Settings` field's type is written as a [`Value`] and read back
@@ -130,7 +130,7 @@ macro_rules! choice_fields {
 }
 
 choice_fields!(
-    Look, Generator, Profile, WaterLine, ColorMode, Sun, Shading, ViewKind, Monitors
+    Look, World, Generator, Profile, WaterLine, ColorMode, Sun, Shading, ViewKind, Monitors
 );
 
 fn int(key: &Key, value: &Value) -> Option<i64> {
