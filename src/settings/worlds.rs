@@ -14,11 +14,10 @@
 
 use super::keys::table::{
     CLIFFS, CLOUDS, CRAGGINESS, EROSION, GENERATOR, HEIGHT, HURST, LAKES, REFLECTIONS, SEA_LEVEL,
-    SUN,
 };
 use super::keys::{self, Value};
 use super::looks::Preset;
-use super::{ColorMode, Generator, Look, Settings, Sun, World};
+use super::{ColorMode, Generator, Look, Settings, World};
 
 use Preset::{Bool, Float, Int, Str};
 
@@ -42,18 +41,18 @@ const WORLD_KEY: u64 = 0x776f_726c_6420_6b79;
 /// valleys' basins holding more.
 const ALPINE: &[(&str, Preset)] = &[
     (CRAGGINESS.name, Int(128)),
-    (HEIGHT.name, Int(7)),
+    (HEIGHT.name, Int(6)),
     (EROSION.name, Float(0.8)),
     (SEA_LEVEL.name, Float(-0.3)),
     (LAKES.name, Bool(true)),
 ];
 
-/// Rolling hills to a frozen shore, under a low, cold light.
+/// Rolling hills to a frozen shore (the palette's ice and cold air; the
+/// time of day stays the slide's own).
 const WINTER: &[(&str, Preset)] = &[
     (HEIGHT.name, Int(6)),
     (EROSION.name, Float(0.6)),
     (SEA_LEVEL.name, Float(-0.2)),
-    (SUN.name, Str(Sun::Morning.name())),
 ];
 
 /// Softer, lower hills for the forests.
@@ -84,7 +83,7 @@ const TROPICAL: &[(&str, Preset)] = &[
     (HURST.name, Float(0.6)),
     (HEIGHT.name, Int(8)),
     (EROSION.name, Float(0.5)),
-    (SEA_LEVEL.name, Float(0.3)),
+    (SEA_LEVEL.name, Float(0.15)),
 ];
 
 /// The keys `world` sets and their values (none for the temperate coast,

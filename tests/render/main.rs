@@ -21,3 +21,4 @@ mod view;
 mod vista;
 mod water;
 mod wire_density;
+mod worlds;

@@ -169,8 +169,9 @@ pub fn water(world: World, t: f32) -> Rgb {
     match world {
         World::Alpine => mix([0.22, 0.55, 0.58], [0.05, 0.24, 0.32], s),
         World::Winter => {
-            // Ice along the shore and on shallow water, dark water beyond.
-            let ice = 1.0 - smoothstep(0.08, 0.16, t);
+            // Ice out from the shore over the shallows, dark open water
+            // beyond.
+            let ice = 1.0 - smoothstep(0.22, 0.3, t);
             mix(
                 mix([0.10, 0.22, 0.34], [0.02, 0.07, 0.16], s),
                 [0.82, 0.88, 0.94],
