@@ -43,14 +43,25 @@ mod ground {
     pub const BASALT: Rgb = [0.24, 0.22, 0.21];
 }
 
+/// Mixed into a mountain's identity for its draw within its world.
+const DRAW_KEY: u64 = 0x636f_7665_7220_6472;
+
+/// A number from 0 to 1 drawn from the mountain's `identity`: where in
+/// its world's range this mountain's cover lies (a snow line, a season's
+/// progress, a rock's colour), so two slides of one world differ.
+pub fn draw(identity: u64) -> f32 {
+    (crate::terrain::splitmix::mix(identity ^ DRAW_KEY) >> 40) as f32 / (1u64 << 24) as f32
+}
+
 /// The ground's colour in `world` at height fraction `u` on a face of
-/// relative steepness `steep`; `beach` when the land meets a sea.
-pub fn land(world: World, u: f32, steep: f32, beach: bool) -> Rgb {
+/// relative steepness `steep`; `beach` when the land meets a sea; `v` the
+/// mountain's draw ([`draw`]).
+pub fn land(world: World, u: f32, steep: f32, beach: bool, v: f32) -> Rgb {
     match world {
-        World::Alpine => alpine(u, steep),
-        World::Winter => winter(u, steep),
-        World::Autumn => autumn(u, steep, beach),
-        World::Desert => desert(u, steep),
+        World::Alpine => alpine(u, steep, v),
+        World::Winter => winter(u, steep, v),
+        World::Autumn => autumn(u, steep, beach, v),
+        World::Desert => desert(u, steep, v),
         World::Tropical => tropical(u, steep, beach),
         World::Varied | World::Temperate => ground::VALLEY,
     }
@@ -59,7 +70,7 @@ pub fn land(world: World, u: f32, steep: f32, beach: bool) -> Rgb {
 /// Green valley floors, dark forest on the lower slopes, scree, then
 /// snowfields and glaciers far down: dark rock where the faces are too
 /// steep to hold snow.
-fn alpine(u: f32, steep: f32) -> Rgb {
+fn alpine(u: f32, steep: f32, v: f32) -> Rgb {
     use ground::*;
     let low = ramp(
         &[
@@ -74,7 +85,9 @@ fn alpine(u: f32, steep: f32) -> Rgb {
     let rock = mix(GREY_ROCK, DARK_ROCK, smoothstep(0.5, 1.0, steep));
     let low = mix(low, rock, smoothstep(0.45, 0.85, steep));
     // Snow from a third of the way up on flat ground, higher on steep.
-    let line = 0.16 + 0.4 * smoothstep(0.3, 0.95, steep);
+    // Snow from low on the flats (lower in a snowier year), higher on
+    // steep ground.
+    let line = 0.08 + 0.16 * v + 0.4 * smoothstep(0.3, 0.95, steep);
     let snow = smoothstep(line, line + 0.08, u) * (1.0 - smoothstep(0.8, 1.0, steep));
     let white = ramp(&[(0.0, GLACIER), (0.5, FIRN), (0.8, SNOW)], u);
     mix(low, white, snow)
@@ -82,11 +95,12 @@ fn alpine(u: f32, steep: f32) -> Rgb {
 
 /// Snow down to the shore wherever a slope holds it; dark forest in
 /// patches on the lower slopes; dark rock on the steep faces.
-fn winter(u: f32, steep: f32) -> Rgb {
+fn winter(u: f32, steep: f32, v: f32) -> Rgb {
     use ground::*;
     let snow = ramp(&[(0.0, FIRN), (0.3, SNOW)], u);
     // Forest on the middle slopes of the lower land, the snow in its gaps.
-    let forest = smoothstep(0.25, 0.45, steep) * (1.0 - smoothstep(0.35, 0.55, u)) * 0.75;
+    let forest =
+        smoothstep(0.25, 0.45, steep) * (1.0 - smoothstep(0.35, 0.55, u)) * (0.3 + 0.6 * v);
     let ground = mix(snow, DARK_CONIFER, forest * bands(u, 9.0));
     let bare = smoothstep(0.62, 0.92, steep);
     mix(ground, DARK_ROCK, bare)
@@ -94,9 +108,9 @@ fn winter(u: f32, steep: f32) -> Rgb {
 
 /// Forests in gold, orange, red and brown by height, evergreens dark on
 /// the steeper slopes, larches yellow and heath brown above them.
-fn autumn(u: f32, steep: f32, beach: bool) -> Rgb {
+fn autumn(u: f32, steep: f32, beach: bool, v: f32) -> Rgb {
     use ground::*;
-    let b = bands(u, 7.0);
+    let b = bands(u, 5.0 + 4.0 * v);
     let broadleaf = ramp(
         &[
             (0.0, GOLD),
@@ -107,7 +121,9 @@ fn autumn(u: f32, steep: f32, beach: bool) -> Rgb {
             (0.78, HEATH),
             (1.0, GREY_ROCK),
         ],
-        u + 0.08 * (b - 0.5),
+        // Early in the season the lower woods are gold, late red and
+        // brown.
+        u + 0.08 * (b - 0.5) + 0.3 * (v - 0.4),
     );
     let evergreen =
         smoothstep(0.35, 0.6, steep) * (1.0 - smoothstep(0.6, 0.75, u)) * (0.3 + 0.6 * b);
@@ -121,10 +137,11 @@ fn autumn(u: f32, steep: f32, beach: bool) -> Rgb {
 
 /// Strata in red, ochre and cream, darker and redder on the cliffs, pale
 /// sand on the flats below and white playa where the lowest flats lie.
-fn desert(u: f32, steep: f32) -> Rgb {
+fn desert(u: f32, steep: f32, v: f32) -> Rgb {
     use ground::*;
-    // Layers of rock of uneven thickness: a few repeats over the relief.
-    let t = (u * 5.3).fract();
+    // Layers of rock of uneven thickness: a few repeats over the relief,
+    // more or fewer, and redder or paler, by the mountain.
+    let t = (u * (3.5 + 3.0 * v) + v).fract();
     let layer = ramp(
         &[
             (0.0, BRICK),
@@ -143,7 +160,8 @@ fn desert(u: f32, steep: f32) -> Rgb {
     let sand = ramp(&[(0.0, DUNE), (0.1, DUNE), (1.0, OCHRE)], u);
     let cover = flat * (1.0 - smoothstep(0.1, 0.35, u)) + flat * 0.35;
     let ground = mix(layer, sand, cover.min(1.0));
-    mix(ground, mix(ground, RUST, 0.5), smoothstep(0.7, 1.0, steep))
+    let ground = mix(ground, mix(ground, RUST, 0.5), smoothstep(0.7, 1.0, steep));
+    mix(ground, CREAM, 0.45 * smoothstep(0.55, 1.0, v))
 }
 
 /// White beaches, palms then jungle up the slopes, dark basalt on the
@@ -163,15 +181,16 @@ fn tropical(u: f32, steep: f32, beach: bool) -> Rgb {
 }
 
 /// The water's colour over ground a share `t` (0 at the shore, 1 the
-/// deepest) of the deepest depth down, in `world`.
-pub fn water(world: World, t: f32) -> Rgb {
+/// deepest) of the deepest depth down, in `world`; `v` the mountain's draw.
+pub fn water(world: World, t: f32, v: f32) -> Rgb {
     let s = t.sqrt();
     match world {
         World::Alpine => mix([0.22, 0.55, 0.58], [0.05, 0.24, 0.32], s),
         World::Winter => {
             // Ice out from the shore over the shallows, dark open water
             // beyond.
-            let ice = 1.0 - smoothstep(0.22, 0.3, t);
+            let edge = 0.12 + 0.3 * v;
+            let ice = 1.0 - smoothstep(edge, edge + 0.08, t);
             mix(
                 mix([0.10, 0.22, 0.34], [0.02, 0.07, 0.16], s),
                 [0.82, 0.88, 0.94],
@@ -203,12 +222,15 @@ pub fn water(world: World, t: f32) -> Rgb {
 }
 
 /// The horizon's colour in `world`, from the light's `horizon`: a dusty
-/// desert air, a cold winter one.
+/// desert air, a cold winter one, a clear mountain one, an autumn's
+/// golden haze.
 pub fn air(world: World, horizon: Rgb) -> Rgb {
     match world {
         World::Desert => mix(horizon, [0.86, 0.74, 0.58], 0.45),
         World::Winter => mix(horizon, [0.80, 0.86, 0.94], 0.35),
         World::Tropical => mix(horizon, [0.70, 0.88, 0.95], 0.2),
+        World::Autumn => mix(horizon, [0.88, 0.76, 0.58], 0.25),
+        World::Alpine => mix(horizon, [0.78, 0.88, 0.98], 0.25),
         _ => horizon,
     }
 }

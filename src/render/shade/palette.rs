@@ -139,6 +139,10 @@ impl Palette {
         let top = positive_or(highest, 1.0);
         let (gain, offset) = tone(mode);
         let zones = Zones::new(settings.height, lowest < 0.0, settings.world);
+        let zones = Zones {
+            draw: cover::draw(field.identity()),
+            ..zones
+        };
         let steep_ref = steepness_reference(field);
         let land = land_table(mode, &zones);
         let deepest = positive_or(-lowest, 1.0);
@@ -147,6 +151,7 @@ impl Palette {
             deepest,
             reflected: (!lighting.classic).then_some(lighting.horizon),
             world: settings.world,
+            draw: zones.draw,
         };
         let listing = (settings.look == Look::FractalMountainClimbing
             && matches!(mode, ColorMode::Natural | ColorMode::Mono))
@@ -471,6 +476,9 @@ struct Zones {
     band: f32,
     beach: bool,
     world: World,
+    /// A number from 0 to 1 drawn per mountain: where in its range the
+    /// world's cover lies on this one (`cover::draw`).
+    draw: f32,
 }
 
 impl Zones {
@@ -482,6 +490,7 @@ impl Zones {
             band: 0.9 / h,
             beach: has_water,
             world,
+            draw: 0.5,
         }
     }
 
@@ -490,7 +499,7 @@ impl Zones {
     fn colour(&self, u: f32, steep: f32) -> Rgb {
         use natural::*;
         if !matches!(self.world, World::Temperate | World::Varied) {
-            return cover::land(self.world, u, steep, self.beach);
+            return cover::land(self.world, u, steep, self.beach, self.draw);
         }
         let low = u / self.treeline;
         let lowland = if self.beach {
@@ -542,6 +551,8 @@ struct Waters {
     reflected: Option<Rgb>,
     /// The world whose water it is (`cover.rs`; the temperate's is ours).
     world: World,
+    /// The mountain's draw within its world (`cover::draw`).
+    draw: f32,
 }
 
 /// Water colours by depth and the depth-to-bin scale.
@@ -556,8 +567,8 @@ fn water_table(mode: ColorMode, w: &Waters, gain: f32, offset: f32) -> (Box<[u32
                     mix(natural::SHALLOW, natural::DEEP, t.sqrt())
                 }
                 (false, World::Temperate | World::Varied) => natural::SEA,
-                (true, world) => cover::water(world, t),
-                (false, world) => cover::water(world, 0.35),
+                (true, world) => cover::water(world, t, w.draw),
+                (false, world) => cover::water(world, 0.35, w.draw),
             };
             let c = w.reflected.map_or(c, |sky| mix(c, sky, WATER_REFLECTS));
             match mode {
