@@ -5,7 +5,6 @@ use crate::common::heightmaps;
 use std::path::Path;
 
 use heightmaps::{encode, gray_png, hand_png, ihdr};
-use mountains::settings::Settings;
 use mountains::terrain::heightmap::{ErrorKind, HeightmapError, decode, load, meta};
 use proptest::prelude::*;
 

@@ -3,7 +3,6 @@
 use crate::common::heightmaps;
 
 use heightmaps::{field, temp_dir};
-use mountains::settings::Settings;
 use mountains::terrain::heightmap::{ErrorKind, load, save};
 
 fn entries(dir: &std::path::Path) -> Vec<String> {
