@@ -488,7 +488,13 @@ mod tests {
             .collect();
         let meta = parse(&written, Path::new("x.png")).unwrap();
         assert_eq!(meta.seed, Some(42));
-        assert_eq!(meta.params, Some(GeneratorParams::from_settings(&s)));
+        // The world recorded is the one drawn for the seed, not "varied".
+        let made = Settings {
+            world: worlds::chosen(&s, Some(42)),
+            ..s.clone()
+        };
+        assert_ne!(made.world, World::Varied);
+        assert_eq!(meta.params, Some(GeneratorParams::from_settings(&made)));
         assert_eq!(meta.offset, Some(-3.0));
         assert!(meta.notes.is_empty(), "{:?}", meta.notes);
     }
