@@ -6,7 +6,7 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use mountains::render::{Frame, detail, render_full};
-use mountains::settings::{Clouds, ColorMode, Settings, Shading, Sun};
+use mountains::settings::{Clouds, ColorMode, Settings, Shading, Sun, World};
 use mountains::terrain::{Heightfield, generate};
 
 /// The real generator's mountain (seed 42), so triangle sizes, water and
@@ -15,7 +15,7 @@ fn mountain(detail: u32) -> Heightfield {
     generate(
         &Settings {
             detail: mountains::settings::Detail::Level(detail),
-            ..Settings::default()
+            ..temperate()
         },
         42,
     )
@@ -37,7 +37,7 @@ fn bench(c: &mut Criterion) {
         let settings = Settings {
             color,
             shadows: true,
-            ..Settings::default()
+            ..temperate()
         };
         let mut frame = Frame::new(w, h).unwrap();
         c.bench_function(name, |b| {
@@ -61,7 +61,7 @@ fn bench_default(c: &mut Criterion) {
         ("plain_auto_1080p", 1920, 1080, Shading::Smooth, false),
         ("plain_auto_2160p", 3840, 2160, Shading::Smooth, false),
     ] {
-        let defaults = Settings::default();
+        let defaults = temperate();
         let chosen = Settings {
             shading,
             clouds: if weather {
@@ -97,7 +97,7 @@ fn bench_night(c: &mut Criterion) {
         for (time, sun) in [("day", Sun::Midday), ("night", Sun::Night)] {
             let chosen = Settings {
                 sun,
-                ..Settings::default()
+                ..temperate()
             };
             let settings = detail::for_frame(&chosen, w, h);
             let field = generate(&settings, 42);
@@ -109,9 +109,45 @@ fn bench_night(c: &mut Criterion) {
     }
 }
 
+/// Each world's frame at 1080p and 4K (seed 42, the detail `auto` picks),
+/// against the temperate world's: a world costs at most 1.1 times as much.
+fn bench_worlds(c: &mut Criterion) {
+    for world in [
+        World::Temperate,
+        World::Alpine,
+        World::Winter,
+        World::Autumn,
+        World::Desert,
+        World::Tropical,
+    ] {
+        for (w, h) in [(1920, 1080), (3840, 2160)] {
+            let chosen = Settings {
+                world,
+                ..Settings::default()
+            };
+            let settings = detail::for_frame(&chosen, w, h);
+            let field = generate(&settings, 42);
+            let mut frame = Frame::new(w, h).unwrap();
+            c.bench_function(&format!("world_{}_{h}p", world.name()), |b| {
+                b.iter(|| render_full(&field, &settings, &mut frame))
+            });
+        }
+    }
+}
+
+/// The default settings in the temperate world: the figures before the
+/// worlds measured this mountain (the seed's varied world is another; the
+/// worlds are timed on their own).
+fn temperate() -> Settings {
+    Settings {
+        world: World::Temperate,
+        ..Settings::default()
+    }
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(10);
-    targets = bench, bench_default, bench_night
+    targets = bench, bench_default, bench_night, bench_worlds
 }
 criterion_main!(benches);

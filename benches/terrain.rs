@@ -5,7 +5,7 @@
 mod lakes_reference;
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
-use mountains::settings::{Generator, Settings};
+use mountains::settings::{Generator, Settings, World};
 use mountains::terrain::{generate, generate_into, generate_with_threads};
 
 /// The subdivision alone (the targets above are the generators'); erosion
@@ -15,7 +15,7 @@ fn settings(generator: Generator, detail: u32) -> Settings {
         generator,
         detail: mountains::settings::Detail::Level(detail),
         erosion: 0.0,
-        ..Settings::default()
+        ..temperate()
     }
 }
 
@@ -28,7 +28,7 @@ fn with_erosion(c: &mut Criterion) {
         let s = Settings {
             erosion,
             detail: mountains::settings::Detail::Level(10),
-            ..Settings::default()
+            ..temperate()
         };
         let id = BenchmarkId::new("erosion", erosion);
         group.bench_with_input(id, &s, |b, s| b.iter(|| generate(s, 7)));
@@ -95,7 +95,7 @@ fn brownian(c: &mut Criterion) {
                 generator: Generator::Brownian,
                 detail: mountains::settings::Detail::Level(detail),
                 erosion,
-                ..Settings::default()
+                ..temperate()
             };
             let id = BenchmarkId::new(format!("erosion_{erosion}"), (1 << detail) + 1);
             group.bench_with_input(id, &s, |b, s| b.iter(|| generate(s, 7)));
@@ -113,7 +113,7 @@ fn lakes(c: &mut Criterion) {
     for detail in [10, 11] {
         let s = Settings {
             detail: mountains::settings::Detail::Level(detail),
-            ..Settings::default()
+            ..temperate()
         };
         let field = generate(&s, 7);
         let (heights, n) = (field.heights(), field.size());
@@ -128,8 +128,43 @@ fn lakes(c: &mut Criterion) {
     group.finish();
 }
 
+/// Each world's mountain made at 1025 points a side (generation, erosion,
+/// cliffs, the water line, lakes): at most 150 ms.
+fn worlds(c: &mut Criterion) {
+    let mut group = c.benchmark_group("generate_world");
+    group.sample_size(10);
+    for world in [
+        World::Temperate,
+        World::Alpine,
+        World::Winter,
+        World::Autumn,
+        World::Desert,
+        World::Tropical,
+    ] {
+        let s = Settings {
+            world,
+            detail: mountains::settings::Detail::Level(10),
+            ..Settings::default()
+        };
+        let id = BenchmarkId::new(world.name(), 1025);
+        group.bench_with_input(id, &s, |b, s| b.iter(|| generate(s, 7)));
+    }
+    group.finish();
+}
+
+/// The default settings in the temperate world: the figures before the
+/// worlds measured this mountain (the seed's varied world is another; the
+/// worlds are timed on their own).
+fn temperate() -> Settings {
+    Settings {
+        world: World::Temperate,
+        ..Settings::default()
+    }
+}
+
 criterion_group!(
     benches,
+    worlds,
     lakes,
     brownian,
     generators,

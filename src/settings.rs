@@ -9,6 +9,7 @@ pub mod load;
 pub mod looks;
 pub mod paths;
 pub mod save;
+pub mod worlds;
 
 use serde::{Deserialize, Serialize};
 
@@ -61,6 +62,29 @@ choice! {
         /// Seed 002, the essay on recursive subdivision: its view turned in
         /// steps of 11.25 degrees, the square's outer edges undisplaced.
         Essay = "essay",
+    }
+}
+
+choice! {
+    /// Where the mountain stands: the terrain, the ground's cover, the
+    /// water and the air of a kind of place (`settings/worlds.rs` holds the
+    /// keys each world sets; the palette reads the colours no key says).
+    pub enum World {
+        /// One of the others per mountain, drawn from its identity as the
+        /// varied sun is.
+        Varied = "varied",
+        /// Green islands in blue water: the picture before worlds.
+        Temperate = "temperate",
+        /// High, jagged ranges, snow and glaciers down to the valleys, lakes.
+        Alpine = "alpine",
+        /// Snow down to the shore, dark rock on steep faces, ice, low light.
+        Winter = "winter",
+        /// Forests in gold, red and brown.
+        Autumn = "autumn",
+        /// Mesas and canyons in red and ochre strata, sand, dry lake beds.
+        Desert = "desert",
+        /// Steep green volcanic islands, turquoise shallows, white beaches.
+        Tropical = "tropical",
     }
 }
 
@@ -258,6 +282,8 @@ pub struct Settings {
     /// Whose picture: ours, or a seed program's (its keys' defaults and
     /// the parts no key says).
     pub look: Look,
+    /// Where the mountain stands, or "varied" (one drawn per mountain).
+    pub world: World,
     /// Which generator builds the heights.
     pub generator: Generator,
     /// Square generators: initial random range, halved per level (1-128).

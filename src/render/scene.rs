@@ -24,7 +24,7 @@ use super::shade::sky::Sky;
 use super::shade::skylight::SkyLight;
 use super::shade::stars::Stars;
 use super::shade::weather::Weather;
-use crate::settings::{ColorMode, Look, Settings, Shading, ViewKind};
+use crate::settings::{ColorMode, Look, Settings, Shading, ViewKind, worlds};
 use crate::terrain::Heightfield;
 use crate::threads::{both, both_if};
 
@@ -206,6 +206,8 @@ impl<'a> Scene<'a> {
         (width, height): (u32, u32),
         hour: Option<SunAt>,
     ) -> Self {
+        // The world the mountain was made in: its keys and its colours.
+        let settings = &worlds::drawn(settings, field.seed());
         let style = Style::of(settings.color);
         let (field, square, outline) = laid_out(field, settings, width, height);
         let lighting = Palette::lighting_at(settings, &field, hour);
@@ -728,7 +730,7 @@ fn turned(field: FieldRef<'_>, rotation: u32) -> FieldRef<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::settings::{Clouds, Detail};
+    use crate::settings::{Clouds, Detail, World};
 
     /// Point (`x`, `y`) of `scene`, projected and then shaded with `land`.
     fn shaded(scene: &Scene, x: usize, y: usize, land: bool) -> Vert {
@@ -744,6 +746,9 @@ mod tests {
             detail: Detail::Level(6),
             clouds: Clouds::Amount(0.0),
             reflections,
+            // Seed 42's coast, its point (40, 50) as chosen (its varied
+            // world is another).
+            world: World::Temperate,
             ..Settings::default()
         };
         let field = crate::terrain::generate(&settings(false), 42);

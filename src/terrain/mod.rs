@@ -23,7 +23,7 @@ pub use lakes::Lakes;
 use params::Params;
 use subdivide::{Audited, Extremes, Job, Plain, Put};
 
-use crate::settings::{Generator, Settings};
+use crate::settings::{Generator, Settings, worlds};
 
 /// Builds the mountain the settings describe from one seed, bit for bit the
 /// same on every platform, build and thread count.
@@ -74,6 +74,7 @@ pub fn generate(settings: &Settings, seed: u64) -> Heightfield {
 /// [`generate`] on at most `threads` threads (0 counts as 1). The result
 /// is the same for every thread count.
 pub fn generate_with_threads(settings: &Settings, seed: u64, threads: usize) -> Heightfield {
+    let settings = &worlds::drawn(settings, Some(seed));
     let params = Params::from_settings(settings);
     let mut field = Heightfield::flat(params.exponent, params.extent());
     fill(&mut field, &params, seed, threads);
@@ -87,6 +88,7 @@ pub fn generate_with_threads(settings: &Settings, seed: u64, threads: usize) -> 
 /// them). Every point is overwritten; the result is the
 /// same bits as `generate`.
 pub fn generate_into(settings: &Settings, seed: u64, field: &mut Heightfield) {
+    let settings = &worlds::drawn(settings, Some(seed));
     let params = Params::from_settings(settings);
     if field.exponent() == params.exponent {
         field.set_extent(params.extent());
@@ -147,6 +149,7 @@ pub struct Audit {
 /// rewrite, and points still NaN after the subdivision count as unset.
 /// Slower than `generate`; the generator code it runs is the same.
 pub fn generate_audited(settings: &Settings, seed: u64, threads: usize) -> Audit {
+    let settings = &worlds::drawn(settings, Some(seed));
     let params = Params::from_settings(settings);
     let threads = threads.max(1);
     let mut field = Heightfield::flat(params.exponent, params.extent());

@@ -1,7 +1,7 @@
 //! Helpers shared by the terrain tests.
 #![allow(dead_code)]
 
-use mountains::settings::{Detail, Generator, Profile, Settings, WaterLine};
+use mountains::settings::{Detail, Generator, Profile, Settings, WaterLine, World};
 
 /// Every generator.
 pub const GENERATORS: [Generator; 3] = [Generator::Square, Generator::Diamond, Generator::Triangle];
@@ -22,6 +22,17 @@ pub fn settings(generator: Generator, detail: u32) -> Settings {
         // The laws are written for heights as subdivided (seed 000's
         // menu, hence the default, starts at 1.5).
         contour: 1.0,
+        ..temperate()
+    }
+}
+
+/// The default settings in the temperate world: the generators' laws, the
+/// coast, the lakes and what a data set records are measured on the keys'
+/// own values, not on those a world lays under them (the worlds have their
+/// tests in tests/render/worlds.rs).
+pub fn temperate() -> Settings {
+    Settings {
+        world: World::Temperate,
         ..Settings::default()
     }
 }

@@ -24,3 +24,4 @@ mod view;
 mod vista;
 mod water;
 mod wire_density;
+mod worlds;

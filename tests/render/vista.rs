@@ -8,7 +8,7 @@ use mountains::render::detail::{auto_level, for_frame};
 use mountains::render::light::Lighting;
 use mountains::render::view::View;
 use mountains::render::{Frame, render_full};
-use mountains::settings::{ColorMode, Detail, Settings, Sun, ViewKind};
+use mountains::settings::{ColorMode, Detail, Settings, Sun, ViewKind, World};
 use mountains::terrain::{self, Heightfield};
 
 /// 16:9, 21:9, 4:3, portrait and the Control Panel preview.
@@ -91,9 +91,16 @@ fn the_back_edge_spans_the_width_and_no_side_edge_shows() {
     }
 }
 
-/// Default settings for a frame, with the auto detail resolved.
+/// Default settings for a frame, with the auto detail resolved, in the
+/// temperate world: the vista's fit and sky are measured on the coast it
+/// was made for (the other worlds raise or drop the water on purpose:
+/// tests/render/worlds.rs).
 fn slide(w: u32, h: u32) -> Settings {
-    for_frame(&Settings::default(), w, h)
+    let temperate = Settings {
+        world: World::Temperate,
+        ..Settings::default()
+    };
+    for_frame(&temperate, w, h)
 }
 
 /// Share of land among the land and water a vista shows, estimated on the

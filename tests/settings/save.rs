@@ -81,10 +81,12 @@ fn a_value_written_differently_but_equal_is_kept_as_written() {
 fn every_key_round_trips_through_the_shipped_file() {
     use mountains::settings::{
         Clouds, Generator, Look, Monitors, OnBattery, Profile, Shading, Sun, ViewKind, WaterLine,
+        World,
     };
     let s = Settings {
         seed: Some(u64::MAX),
         look: Look::Essay,
+        world: World::Desert,
         generator: Generator::Triangle,
         cragginess: 128,
         elevation: 999.5,

@@ -10,7 +10,7 @@ fn settings(generator: Generator, cliffs: f32) -> Settings {
         generator,
         cliffs,
         detail: Detail::Level(8),
-        ..Settings::default()
+        ..crate::common::terrain_setup::temperate()
     }
 }
 

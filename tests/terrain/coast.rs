@@ -9,7 +9,7 @@ fn settings(water_line: WaterLine, sea_level: f32) -> Settings {
         detail: Detail::Level(7),
         water_line,
         sea_level,
-        ..Settings::default()
+        ..crate::common::terrain_setup::temperate()
     }
 }
 

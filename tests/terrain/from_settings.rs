@@ -55,7 +55,7 @@ proptest! {
             detail: Detail::Level(detail),
             low_detail,
             sea_level,
-            ..Settings::default()
+            ..crate::common::terrain_setup::temperate()
         };
         let f = generate(&s, seed);
         // 9x9: seed 000's fewest Iterations (3), the smallest grid.
@@ -70,7 +70,7 @@ fn an_out_of_range_detail_is_clamped() {
     let small = generate(
         &Settings {
             detail: Detail::Level(0),
-            ..Settings::default()
+            ..crate::common::terrain_setup::temperate()
         },
         1,
     );
@@ -80,7 +80,7 @@ fn an_out_of_range_detail_is_clamped() {
         &Settings {
             detail: Detail::Level(u32::MAX),
             generator: Generator::Square,
-            ..Settings::default()
+            ..crate::common::terrain_setup::temperate()
         },
         1,
     );

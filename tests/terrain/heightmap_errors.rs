@@ -5,7 +5,6 @@ use crate::common::heightmaps;
 use std::path::Path;
 
 use heightmaps::{encode, gray_png, hand_png, ihdr};
-use mountains::settings::Settings;
 use mountains::terrain::heightmap::{ErrorKind, HeightmapError, decode, load, meta};
 use proptest::prelude::*;
 
@@ -326,9 +325,13 @@ fn a_directory_is_an_io_error() {
 #[test]
 fn our_own_file_passes_these_checks() {
     let f = heightmaps::field(5, 400.0);
-    let bytes =
-        mountains::terrain::heightmap::encode(&f, Some(1), &Settings::default(), Path::new(P))
-            .unwrap();
+    let bytes = mountains::terrain::heightmap::encode(
+        &f,
+        Some(1),
+        &crate::common::terrain_setup::temperate(),
+        Path::new(P),
+    )
+    .unwrap();
     decode(&bytes, Path::new(P)).unwrap();
     decode(&good_png(), Path::new(P)).unwrap();
 }

@@ -195,11 +195,26 @@ fn foreign_load_then_save_then_load_is_exact() {
         .map(|i| ((i % w) * (i / w) % 256) as u16)
         .collect();
     let first = load(&gray_png(w, h, 8, &samples, &[]));
-    let bytes = encode(&first.field, None, &Settings::default(), Path::new(P)).unwrap();
+    let bytes = encode(
+        &first.field,
+        None,
+        &crate::common::terrain_setup::temperate(),
+        Path::new(P),
+    )
+    .unwrap();
     let second = load(&bytes);
     assert_eq!(second.field, first.field);
     assert!(second.notes.is_empty(), "{:?}", second.notes);
-    assert!(encode(&second.field, None, &Settings::default(), Path::new(P)).unwrap() == bytes);
+    assert!(
+        encode(
+            &second.field,
+            None,
+            &crate::common::terrain_setup::temperate(),
+            Path::new(P)
+        )
+        .unwrap()
+            == bytes
+    );
 }
 
 #[test]
@@ -291,7 +306,7 @@ mod random_images {
             prop_assert!(d.field.heights().iter().all(|h| h.is_finite()));
             let relief = d.field.max() - d.field.min();
             prop_assert!(relief <= DEFAULT_RELIEF * DEFAULT_EXTENT * 1.0001);
-            let bytes = encode(&d.field, None, &Settings::default(), Path::new(P)).unwrap();
+            let bytes = encode(&d.field, None, &crate::common::terrain_setup::temperate(), Path::new(P)).unwrap();
             prop_assert_eq!(load(&bytes).field, d.field);
         }
     }
@@ -301,7 +316,7 @@ mod random_images {
 fn colours_drawn(d: &DataSet, view: mountains::settings::ViewKind) -> usize {
     let settings = Settings {
         view,
-        ..Settings::default()
+        ..crate::common::terrain_setup::temperate()
     };
     let mut frame = mountains::render::Frame::new(320, 200).unwrap();
     mountains::render::render_full(&d.field, &settings, &mut frame);

@@ -27,7 +27,7 @@ fn golden_settings() -> Settings {
         erosion: 0.0,
         // Written when the contour default was 1.0 (now seed 000's 1.5).
         contour: 1.0,
-        ..Settings::default()
+        ..crate::common::terrain_setup::temperate()
     }
 }
 

@@ -16,7 +16,7 @@ const SIZE: (u32, u32) = (96, 64);
 
 /// Default settings with `sets` applied as `--set` would.
 fn with(sets: &[(&str, &str)]) -> Settings {
-    let mut s = Settings::default();
+    let mut s = crate::common::terrain_setup::temperate();
     for (k, v) in sets {
         apply_set(&mut s, k, v).unwrap_or_else(|p| panic!("{p}"));
     }
@@ -56,7 +56,7 @@ fn comes_back_as_saved(made: &Settings, name: &str) {
     let opened = saved_and_opened(made, &dir.join("set.png"));
     let recorded = opened.recorded.clone().expect("our file records its keys");
     assert_eq!(recorded, heightmap::GeneratorParams::from_settings(made));
-    let drawn = opened.drawn_with(&Settings::default());
+    let drawn = opened.drawn_with(&crate::common::terrain_setup::temperate());
     assert_eq!(drawn, *made, "{name}");
     // The picture of the mountain as it was made, before saving: saving
     // rounds its heights to 16 bits, which may move an edge across a pixel
@@ -73,7 +73,7 @@ fn comes_back_as_saved(made: &Settings, name: &str) {
     );
     // Ignoring what the file says would show another picture: the test
     // can fail.
-    let ours = picture(&opened.field, &Settings::default());
+    let ours = picture(&opened.field, &crate::common::terrain_setup::temperate());
     assert_ne!(again.pixels(), ours.pixels(), "{name}");
     let _ = std::fs::remove_dir_all(&dir);
 }
@@ -98,7 +98,7 @@ fn a_set_saved_under_the_essay_comes_back_with_its_look_and_height() {
 #[test]
 fn a_key_at_its_default_under_a_look_comes_back_exact() {
     let mut made = with(&[("look", "essay"), ("detail", "5")]);
-    made.height = Settings::default().height;
+    made.height = crate::common::terrain_setup::temperate().height;
     assert_ne!(with(&[("look", "essay")]).height, made.height);
     comes_back_as_saved(&made, "essay-default-height");
 }
@@ -139,9 +139,9 @@ fn an_old_file_without_a_look_loads_as_ours() {
     );
     let (opened, notes) = Mountain::open(&golden).unwrap();
     assert!(notes.is_empty(), "{notes:?}");
-    let drawn = opened.drawn_with(&Settings::default());
+    let drawn = opened.drawn_with(&crate::common::terrain_setup::temperate());
     assert_eq!(drawn.look, Look::Ours);
-    assert_eq!(drawn.view, Settings::default().view);
+    assert_eq!(drawn.view, crate::common::terrain_setup::temperate().view);
 }
 
 /// A look this version does not know (a newer version's) drops the

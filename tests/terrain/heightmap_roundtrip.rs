@@ -27,7 +27,7 @@ fn odd_settings() -> Settings {
         detail: Detail::Level(6),
         low_detail: true,
         sea_level: -0.125,
-        ..Settings::default()
+        ..crate::common::terrain_setup::temperate()
     }
 }
 
@@ -46,13 +46,23 @@ fn roundtrip_is_exact(f: &Heightfield, seed: Option<u64>, s: &Settings) {
 #[test]
 fn save_load_save_is_byte_identical() {
     roundtrip_is_exact(&field(6, 400.0), Some(12345), &odd_settings());
-    roundtrip_is_exact(&field(4, 1.5), None, &Settings::default());
+    roundtrip_is_exact(
+        &field(4, 1.5),
+        None,
+        &crate::common::terrain_setup::temperate(),
+    );
 }
 
 #[test]
 fn first_quantisation_is_within_half_a_step() {
     let f = field(7, 400.0);
-    let bytes = encode(&f, Some(1), &Settings::default(), Path::new(P)).unwrap();
+    let bytes = encode(
+        &f,
+        Some(1),
+        &crate::common::terrain_setup::temperate(),
+        Path::new(P),
+    )
+    .unwrap();
     let d = decode(&bytes, Path::new(P)).unwrap();
     let step = (f.max() - f.min()) / 65535.0;
     for (a, b) in f.heights().iter().zip(d.field.heights()) {
@@ -78,7 +88,7 @@ fn seed_and_parameters_come_back() {
     assert_eq!(d.seed, Some(u64::MAX));
     assert_eq!(d.params, Some(GeneratorParams::from_settings(&s)));
     assert_eq!(d.field.extent(), 333.25);
-    let mut back = Settings::default();
+    let mut back = crate::common::terrain_setup::temperate();
     d.params.unwrap().apply_to(&mut back);
     assert_eq!(
         GeneratorParams::from_settings(&back),
@@ -98,9 +108,15 @@ fn no_seed_means_no_parameters() {
 fn flat_field_round_trips() {
     let mut f = Heightfield::flat(4, 400.0);
     f.heights_mut().iter_mut().for_each(|h| *h = -3.5);
-    roundtrip_is_exact(&f, Some(3), &Settings::default());
+    roundtrip_is_exact(&f, Some(3), &crate::common::terrain_setup::temperate());
     let d = decode(
-        &encode(&f, Some(3), &Settings::default(), Path::new(P)).unwrap(),
+        &encode(
+            &f,
+            Some(3),
+            &crate::common::terrain_setup::temperate(),
+            Path::new(P),
+        )
+        .unwrap(),
         Path::new(P),
     )
     .unwrap();
@@ -110,7 +126,13 @@ fn flat_field_round_trips() {
 #[test]
 fn file_is_a_plain_16_bit_heightmap_for_other_tools() {
     let f = field(5, 400.0);
-    let bytes = encode(&f, Some(9), &Settings::default(), Path::new(P)).unwrap();
+    let bytes = encode(
+        &f,
+        Some(9),
+        &crate::common::terrain_setup::temperate(),
+        Path::new(P),
+    )
+    .unwrap();
     let mut reader = png::Decoder::new(std::io::Cursor::new(&bytes))
         .read_info()
         .unwrap();
@@ -151,12 +173,24 @@ fn save_and_load_through_files() {
     let dir = heightmaps::temp_dir("roundtrip-files");
     let path = dir.join("mountain 42.png");
     let f = field(6, 400.0);
-    heightmap::save(&path, &f, Some(42), &Settings::default()).unwrap();
+    heightmap::save(
+        &path,
+        &f,
+        Some(42),
+        &crate::common::terrain_setup::temperate(),
+    )
+    .unwrap();
     let d = heightmap::load(&path).unwrap();
     assert_eq!(d.seed, Some(42));
     let bytes = std::fs::read(&path).unwrap();
     assert_eq!(d.field, decode(&bytes, &path).unwrap().field);
-    heightmap::save(&path, &d.field, d.seed, &Settings::default()).unwrap();
+    heightmap::save(
+        &path,
+        &d.field,
+        d.seed,
+        &crate::common::terrain_setup::temperate(),
+    )
+    .unwrap();
     assert!(
         std::fs::read(&path).unwrap() == bytes,
         "re-save changed the file"
@@ -167,12 +201,24 @@ fn save_and_load_through_files() {
 fn unstorable_fields_are_refused() {
     let mut f = field(4, 400.0);
     f.set(3, 4, f32::NAN);
-    let e = encode(&f, None, &Settings::default(), Path::new("nan.png")).unwrap_err();
+    let e = encode(
+        &f,
+        None,
+        &crate::common::terrain_setup::temperate(),
+        Path::new("nan.png"),
+    )
+    .unwrap_err();
     assert_eq!(e.kind, ErrorKind::BadField);
     assert!(e.to_string().starts_with("nan.png: "), "{e}");
     for extent in [0.0, -1.0, f32::INFINITY] {
         let f = field(4, extent);
-        let e = encode(&f, None, &Settings::default(), Path::new("x.png")).unwrap_err();
+        let e = encode(
+            &f,
+            None,
+            &crate::common::terrain_setup::temperate(),
+            Path::new("x.png"),
+        )
+        .unwrap_err();
         assert_eq!(e.kind, ErrorKind::BadField, "extent {extent}");
     }
 }
@@ -197,7 +243,13 @@ fn fields_outside_the_files_ranges_are_refused_on_saving() {
         for (j, h) in f.heights_mut().iter_mut().enumerate() {
             *h = base + relief * (j % 7) as f32 / 6.0;
         }
-        let e = encode(&f, Some(1), &Settings::default(), Path::new(P)).unwrap_err();
+        let e = encode(
+            &f,
+            Some(1),
+            &crate::common::terrain_setup::temperate(),
+            Path::new(P),
+        )
+        .unwrap_err();
         assert_eq!(e.kind, ErrorKind::BadField, "case {i}: {e}");
         assert!(e.problem.contains(key), "case {i}: {e}");
         assert!(e.problem.contains("loads again"), "case {i}: {e}");
@@ -252,7 +304,7 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(200))]
     #[test]
     fn roundtrip_exact_for_random_fields(f in arb_field(), seed in proptest::option::of(any::<u64>())) {
-        let s = Settings::default();
+        let s = crate::common::terrain_setup::temperate();
         let first = match encode(&f, seed, &s, Path::new(P)) {
             Ok(bytes) => bytes,
             Err(e) => {

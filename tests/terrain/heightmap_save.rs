@@ -3,7 +3,6 @@
 use crate::common::heightmaps;
 
 use heightmaps::{field, temp_dir};
-use mountains::settings::Settings;
 use mountains::terrain::heightmap::{ErrorKind, load, save};
 
 fn entries(dir: &std::path::Path) -> Vec<String> {
@@ -21,7 +20,13 @@ fn target_that_is_a_directory_is_left_alone() {
     let target = dir.join("taken.png");
     std::fs::create_dir(&target).unwrap();
     std::fs::write(target.join("keep.txt"), b"precious").unwrap();
-    let e = save(&target, &field(4, 400.0), Some(1), &Settings::default()).unwrap_err();
+    let e = save(
+        &target,
+        &field(4, 400.0),
+        Some(1),
+        &crate::common::terrain_setup::temperate(),
+    )
+    .unwrap_err();
     assert_eq!(e.kind, ErrorKind::Io);
     assert!(
         e.to_string().starts_with(&target.display().to_string()),
@@ -42,7 +47,13 @@ fn failed_encode_keeps_the_existing_file() {
     std::fs::write(&target, b"the user's old file").unwrap();
     let mut bad = field(4, 400.0);
     bad.set(0, 0, f32::INFINITY);
-    let e = save(&target, &bad, None, &Settings::default()).unwrap_err();
+    let e = save(
+        &target,
+        &bad,
+        None,
+        &crate::common::terrain_setup::temperate(),
+    )
+    .unwrap_err();
     assert_eq!(e.kind, ErrorKind::BadField);
     assert_eq!(std::fs::read(&target).unwrap(), b"the user's old file");
     assert_eq!(entries(&dir), ["old.png"]);
@@ -52,7 +63,13 @@ fn failed_encode_keeps_the_existing_file() {
 fn missing_folder_is_an_error_naming_the_file() {
     let dir = temp_dir("save-missing-folder");
     let target = dir.join("no/such/folder/m.png");
-    let e = save(&target, &field(4, 400.0), None, &Settings::default()).unwrap_err();
+    let e = save(
+        &target,
+        &field(4, 400.0),
+        None,
+        &crate::common::terrain_setup::temperate(),
+    )
+    .unwrap_err();
     assert_eq!(e.kind, ErrorKind::Io);
     assert!(e.problem.contains("cannot be written"), "{e}");
     assert!(e.to_string().contains("m.png"), "{e}");
@@ -63,7 +80,13 @@ fn success_replaces_the_file_whole() {
     let dir = temp_dir("save-replaces");
     let target = dir.join("m.png");
     std::fs::write(&target, vec![b'x'; 1 << 20]).unwrap();
-    save(&target, &field(5, 400.0), Some(8), &Settings::default()).unwrap();
+    save(
+        &target,
+        &field(5, 400.0),
+        Some(8),
+        &crate::common::terrain_setup::temperate(),
+    )
+    .unwrap();
     let d = load(&target).unwrap();
     assert_eq!(d.seed, Some(8));
     assert_eq!(entries(&dir), ["m.png"]);

@@ -179,7 +179,7 @@ fn every_loaded_data_set_draws_more_than_one_colour_in_every_view() {
         .map(|&view| {
             let settings = Settings {
                 view,
-                ..Settings::default()
+                ..crate::common::terrain_setup::temperate()
             };
             (settings, format!("{view:?}"))
         })
@@ -204,7 +204,7 @@ fn every_loaded_data_set_shows_land_on_a_black_window() {
             let settings = Settings {
                 view,
                 color,
-                ..Settings::default()
+                ..crate::common::terrain_setup::temperate()
             };
             (settings, format!("{view:?} {color:?}"))
         })

@@ -186,7 +186,7 @@ fn generated_lakes_never_spill_and_fill_their_basins() {
             let s = Settings {
                 generator,
                 detail: mountains::settings::Detail::Level(8),
-                ..Settings::default()
+                ..crate::common::terrain_setup::temperate()
             };
             let field = generate(&s, seed);
             total += check_lakes(&field, &format!("{generator:?} seed {seed}"));
@@ -200,7 +200,7 @@ fn generated_lakes_never_spill_and_fill_their_basins() {
 fn lakes_are_asked_for_and_the_same_on_any_thread_count() {
     let s = Settings {
         detail: mountains::settings::Detail::Level(10),
-        ..Settings::default()
+        ..crate::common::terrain_setup::temperate()
     };
     assert!(s.lakes, "lakes are on by default");
     let one = generate_with_threads(&s, 3, 1);

@@ -4,6 +4,7 @@
 //! colour arithmetic is the ground floor's: `base/colour.rs`).
 
 pub(super) mod clouds;
+pub(super) mod cover;
 pub mod dither;
 pub mod essay;
 pub mod facings;

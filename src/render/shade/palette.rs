@@ -19,6 +19,7 @@
 //! lowland turns black under the red filter; the tint keeps every face's
 //! brightness, stays in the filter's hue family, and snow turns a pale tint.
 
+use super::cover;
 use super::dither;
 use super::essay;
 use super::facings;
@@ -30,7 +31,7 @@ use super::night;
 use crate::render::base::colour::{
     Rgb, mix, mix_packed, pack, scale_packed, scale_packed3, to_u32, unpack,
 };
-use crate::settings::{ColorMode, Look, Settings, Sun};
+use crate::settings::{ColorMode, Look, Settings, Sun, World};
 use crate::terrain::Heightfield;
 use glam::Vec3;
 
@@ -111,6 +112,8 @@ pub struct Palette {
     /// The background of a seed program's look: black windows, the
     /// essay's white page.
     backdrop: Option<u32>,
+    /// The world whose cover, water and air these are (`cover.rs`).
+    world: World,
 }
 
 impl Palette {
@@ -149,7 +152,11 @@ impl Palette {
         let (lowest, highest) = field.min_max();
         let top = positive_or(highest, 1.0);
         let (gain, offset) = tone(mode);
-        let zones = Zones::new(settings.height, lowest < 0.0);
+        let zones = Zones::new(settings.height, lowest < 0.0, settings.world);
+        let zones = Zones {
+            draw: cover::draw(field.identity()),
+            ..zones
+        };
         let steep_ref = steepness_reference(field);
         let land = land_table(mode, &zones);
         let land = match mode {
@@ -162,6 +169,8 @@ impl Palette {
             deepest,
             reflected: (!lighting.classic).then_some(lighting.horizon),
             night: lighting.night,
+            world: settings.world,
+            draw: zones.draw,
         };
         let listing = (settings.look == Look::FractalMountainClimbing
             && matches!(mode, ColorMode::Natural | ColorMode::Mono))
@@ -201,6 +210,7 @@ impl Palette {
                 Look::Essay => Some(essay::BACKGROUND),
                 _ => None,
             },
+            world: settings.world,
         }
     }
 
@@ -335,7 +345,11 @@ impl Palette {
             ColorMode::Mono | ColorMode::Sonar | ColorMode::Filled | ColorMode::Outline => (0, 0),
             mode => {
                 let l = &self.lighting;
-                let [top, bottom] = [l.zenith, l.horizon].map(|c| to_u32(filter(mode, c)));
+                let horizon = match self.world {
+                    World::Temperate | World::Varied => l.horizon,
+                    world => cover::air(world, l.horizon),
+                };
+                let [top, bottom] = [l.zenith, horizon].map(|c| to_u32(filter(mode, c)));
                 (top, bottom)
             }
         }
@@ -480,16 +494,22 @@ struct Zones {
     treeline: f32,
     band: f32,
     beach: bool,
+    world: World,
+    /// A number from 0 to 1 drawn per mountain: where in its range the
+    /// world's cover lies on this one (`cover::draw`).
+    draw: f32,
 }
 
 impl Zones {
     /// Seed 000's treeline for a height setting of `height` (1..=10).
-    fn new(height: u32, has_water: bool) -> Self {
+    fn new(height: u32, has_water: bool, world: World) -> Self {
         let h = crate::settings::handles::HEIGHT.clamp(height) as f32;
         Zones {
             treeline: 0.4 + 1.0 / h,
             band: 0.9 / h,
             beach: has_water,
+            world,
+            draw: 0.5,
         }
     }
 
@@ -497,6 +517,9 @@ impl Zones {
     /// a face of relative steepness `steep` (0 flat, 1 the field's steep faces).
     fn colour(&self, u: f32, steep: f32) -> Rgb {
         use natural::*;
+        if !matches!(self.world, World::Temperate | World::Varied) {
+            return cover::land(self.world, u, steep, self.beach, self.draw);
+        }
         let low = u / self.treeline;
         let lowland = if self.beach {
             ramp(
@@ -547,6 +570,10 @@ struct Waters {
     reflected: Option<Rgb>,
     /// How much of the night's look (0 by day).
     night: f32,
+    /// The world whose water it is (`cover.rs`; the temperate's is ours).
+    world: World,
+    /// The mountain's draw within its world (`cover::draw`).
+    draw: f32,
 }
 
 /// Water colours by depth and the depth-to-bin scale.
@@ -554,12 +581,15 @@ fn water_table(mode: ColorMode, w: &Waters, gain: f32, offset: f32) -> (Box<[u32
     let (relative, deepest) = (w.relative, w.deepest);
     let table = (0..DEPTH_BINS)
         .map(|i| {
-            let c = if relative {
-                let t = i as f32 / (DEPTH_BINS - 1) as f32;
+            let t = i as f32 / (DEPTH_BINS - 1) as f32;
+            let c = match (relative, w.world) {
                 // Most of the darkening near the shore, where it shows.
-                mix(natural::SHALLOW, natural::DEEP, t.sqrt())
-            } else {
-                natural::SEA
+                (true, World::Temperate | World::Varied) => {
+                    mix(natural::SHALLOW, natural::DEEP, t.sqrt())
+                }
+                (false, World::Temperate | World::Varied) => natural::SEA,
+                (true, world) => cover::water(world, t, w.draw),
+                (false, world) => cover::water(world, 0.35, w.draw),
             };
             let c = w.reflected.map_or(c, |sky| mix(c, sky, WATER_REFLECTS));
             let c = night::water(c, w.night);

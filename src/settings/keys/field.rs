@@ -7,7 +7,7 @@ use serde::de::IntoDeserializer;
 use super::kind::{Key, Kind, Value};
 use crate::settings::{
     Clouds, ColorMode, Detail, Generator, Look, Monitors, OnBattery, Profile, Shading, Sun,
-    ViewKind, WaterLine,
+    ViewKind, WaterLine, World,
 };
 
 /// How a `Settings` field's type is written as a [`Value`] and read back
@@ -130,7 +130,8 @@ macro_rules! choice_fields {
 }
 
 choice_fields!(
-    Look, Generator, Profile, WaterLine, ColorMode, Sun, Shading, ViewKind, Monitors, OnBattery
+    Look, World, Generator, Profile, WaterLine, ColorMode, Sun, Shading, ViewKind, Monitors,
+    OnBattery
 );
 
 fn int(key: &Key, value: &Value) -> Option<i64> {

@@ -7,7 +7,7 @@ use super::field::Field;
 use super::kind::{Change, Key, Kind, Value};
 use crate::settings::{
     ColorMode, Generator, Look, MAX_GRID_EXPONENT, MIN_GRID_EXPONENT, Monitors, OnBattery, Profile,
-    Settings, Shading, Sun, ViewKind, WaterLine,
+    Settings, Shading, Sun, ViewKind, WaterLine, World,
 };
 
 /// The table: for each row `CONST = (field, kind, change, default, doc)`,
@@ -205,6 +205,15 @@ rows! {
         Value::Str(Look::Ours.name().into()),
         "whose picture: ours, or a seed program's generator, view, light and colours \
               (a key set to anything but its default overrides the look)"
+    ),
+    // A world is a layer of defaults drawn per mountain: `settings/worlds.rs`.
+    WORLD = (
+        world,
+        Kind::Choice(World::NAMES),
+        Remake,
+        Value::Str(World::Varied.name().into()),
+        "where the mountain stands: its terrain, ground, water and air; \"varied\" draws one \
+              per mountain (a key set to anything but its default overrides the world)"
     ),
     COLOR = (
         color,

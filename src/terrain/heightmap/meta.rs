@@ -18,7 +18,7 @@ use std::path::Path;
 use super::error::HeightmapError;
 use super::quantise::{MAX_SAMPLE, Quantisation};
 use crate::settings::keys::{self, Value};
-use crate::settings::{AUTO_DETAIL_FALLBACK, Detail, Settings, load};
+use crate::settings::{AUTO_DETAIL_FALLBACK, Detail, Settings, World, load, worlds};
 
 /// Version of this key set; bumped only if a key changes meaning.
 pub const FORMAT_VERSION: u32 = 1;
@@ -63,13 +63,17 @@ pub const KEY_CLIFFS: &str = "mountains:cliffs";
 /// `Settings::look`, as in the config file; absent in files made before
 /// the looks, whose mountains were ours.
 pub const KEY_LOOK: &str = "mountains:look";
+/// `Settings::world`, the world the mountain was made in (never
+/// "varied": the one drawn); absent in files made before the worlds,
+/// whose mountains were temperate.
+pub const KEY_WORLD: &str = "mountains:world";
 
 /// Parameters files from before they existed lack: their default is taken
 /// without a note (an older file's mountain did not use them, or, for
 /// erosion, had none: see `read_params`).
-const LATER_KEYS: &[&str] = &[KEY_EROSION, KEY_HURST, KEY_CLIFFS, KEY_LOOK];
+const LATER_KEYS: &[&str] = &[KEY_EROSION, KEY_HURST, KEY_CLIFFS, KEY_LOOK, KEY_WORLD];
 
-const KNOWN_KEYS: [&str; 20] = [
+const KNOWN_KEYS: [&str; 21] = [
     KEY_FORMAT,
     KEY_SCALE,
     KEY_OFFSET,
@@ -90,6 +94,7 @@ const KNOWN_KEYS: [&str; 20] = [
     KEY_HURST,
     KEY_CLIFFS,
     KEY_LOOK,
+    KEY_WORLD,
 ];
 
 /// The generator settings that made a mountain, read back from its file:
@@ -191,7 +196,12 @@ pub fn to_pairs(
     // with no seed did not come from these settings, so they go together.
     if let Some(seed) = seed {
         pairs.push((KEY_SEED, seed.to_string()));
-        pairs.extend(GeneratorParams::from_settings(settings).to_pairs());
+        // The world drawn for the seed, so the set comes back in it.
+        let made = Settings {
+            world: worlds::chosen(settings, Some(seed)),
+            ..settings.clone()
+        };
+        pairs.extend(GeneratorParams::from_settings(&made).to_pairs());
     }
     pairs
 }
@@ -388,8 +398,10 @@ fn read_params<'a>(
     // Each value is checked by the settings key table, so the ranges a file
     // may hold are exactly the ranges a user may set.
     let mut settings = Settings {
-        // A file from before erosion existed holds an uneroded mountain.
+        // A file from before erosion existed holds an uneroded mountain,
+        // one from before the worlds a temperate one.
         erosion: 0.0,
+        world: World::Temperate,
         ..Settings::default()
     };
     let mut look = settings.look;
@@ -433,6 +445,7 @@ const PARAM_KEYS: &[(&str, &str)] = &[
     (KEY_HURST, keys::HURST.name),
     (KEY_CLIFFS, keys::CLIFFS.name),
     (KEY_LOOK, LOOK),
+    (KEY_WORLD, keys::WORLD.name),
 ];
 
 /// The settings key of the look: held apart from the others, because
@@ -475,7 +488,13 @@ mod tests {
             .collect();
         let meta = parse(&written, Path::new("x.png")).unwrap();
         assert_eq!(meta.seed, Some(42));
-        assert_eq!(meta.params, Some(GeneratorParams::from_settings(&s)));
+        // The world recorded is the one drawn for the seed, not "varied".
+        let made = Settings {
+            world: worlds::chosen(&s, Some(42)),
+            ..s.clone()
+        };
+        assert_ne!(made.world, World::Varied);
+        assert_eq!(meta.params, Some(GeneratorParams::from_settings(&made)));
         assert_eq!(meta.offset, Some(-3.0));
         assert!(meta.notes.is_empty(), "{:?}", meta.notes);
     }

@@ -1,0 +1,266 @@
+//! Each world's ground cover, water and air (`world = ...`; the keys a
+//! world sets are `settings/worlds.rs`'s): the colour of the ground by its
+//! height and steepness, the water's colour by its depth, and the tint of
+//! the air at the horizon. The temperate world is the palette's own
+//! natural colours and is never asked here.
+//!
+//! Heights are fractions of the highest peak (0 the water line, 1 the
+//! top), steepness is relative to the mountain's own steep faces (0 flat,
+//! 1 its steep faces): as the palette's zones have them.
+
+use crate::render::base::colour::{Rgb, mix};
+use crate::settings::World;
+
+/// Colours of the ground, full sun.
+mod ground {
+    use super::Rgb;
+    pub const SNOW: Rgb = [0.95, 0.96, 1.00];
+    pub const FIRN: Rgb = [0.84, 0.88, 0.95];
+    pub const GLACIER: Rgb = [0.74, 0.84, 0.92];
+    pub const DARK_ROCK: Rgb = [0.27, 0.26, 0.27];
+    pub const GREY_ROCK: Rgb = [0.50, 0.48, 0.47];
+    pub const VALLEY: Rgb = [0.34, 0.52, 0.22];
+    pub const CONIFER: Rgb = [0.13, 0.27, 0.15];
+    pub const LARCH_GREEN: Rgb = [0.22, 0.36, 0.19];
+    pub const DARK_CONIFER: Rgb = [0.10, 0.15, 0.13];
+    pub const SCREE: Rgb = [0.55, 0.52, 0.46];
+    pub const GOLD: Rgb = [0.86, 0.62, 0.14];
+    pub const ORANGE: Rgb = [0.82, 0.38, 0.10];
+    pub const RED: Rgb = [0.64, 0.18, 0.10];
+    pub const OAK: Rgb = [0.48, 0.32, 0.16];
+    pub const LARCH: Rgb = [0.88, 0.72, 0.26];
+    pub const HEATH: Rgb = [0.50, 0.36, 0.28];
+    pub const PLAYA: Rgb = [0.93, 0.91, 0.86];
+    pub const DUNE: Rgb = [0.88, 0.76, 0.55];
+    pub const RUST: Rgb = [0.60, 0.26, 0.14];
+    pub const BRICK: Rgb = [0.72, 0.36, 0.20];
+    pub const OCHRE: Rgb = [0.82, 0.56, 0.28];
+    pub const CREAM: Rgb = [0.88, 0.78, 0.60];
+    pub const CHOCOLATE: Rgb = [0.42, 0.24, 0.16];
+    pub const CORAL_SAND: Rgb = [0.97, 0.95, 0.86];
+    pub const JUNGLE: Rgb = [0.09, 0.42, 0.13];
+    pub const PALM: Rgb = [0.22, 0.58, 0.16];
+    pub const BASALT: Rgb = [0.24, 0.22, 0.21];
+}
+
+/// Mixed into a mountain's identity for its draw within its world.
+const DRAW_KEY: u64 = 0x636f_7665_7220_6472;
+
+/// A number from 0 to 1 drawn from the mountain's `identity`: where in
+/// its world's range this mountain's cover lies (a snow line, a season's
+/// progress, a rock's colour), so two slides of one world differ.
+pub fn draw(identity: u64) -> f32 {
+    (crate::terrain::splitmix::mix(identity ^ DRAW_KEY) >> 40) as f32 / (1u64 << 24) as f32
+}
+
+/// The ground's colour in `world` at height fraction `u` on a face of
+/// relative steepness `steep`; `beach` when the land meets a sea; `v` the
+/// mountain's draw ([`draw`]).
+pub fn land(world: World, u: f32, steep: f32, beach: bool, v: f32) -> Rgb {
+    match world {
+        World::Alpine => alpine(u, steep, v),
+        World::Winter => winter(u, steep, v),
+        World::Autumn => autumn(u, steep, beach, v),
+        World::Desert => desert(u, steep, v),
+        World::Tropical => tropical(u, steep, beach),
+        World::Varied | World::Temperate => ground::VALLEY,
+    }
+}
+
+/// Green valley floors, dark forest on the lower slopes, scree, then
+/// snowfields and glaciers far down: dark rock where the faces are too
+/// steep to hold snow.
+fn alpine(u: f32, steep: f32, v: f32) -> Rgb {
+    use ground::*;
+    let low = ramp(
+        &[
+            (0.0, VALLEY),
+            (0.07, VALLEY),
+            (0.12, LARCH_GREEN),
+            (0.2, LARCH_GREEN),
+            (0.28, SCREE),
+        ],
+        u,
+    );
+    let rock = mix(GREY_ROCK, DARK_ROCK, smoothstep(0.5, 1.0, steep));
+    let low = mix(low, rock, smoothstep(0.45, 0.85, steep));
+    // Snow from a third of the way up on flat ground, higher on steep.
+    // Snow from low on the flats (lower in a snowier year), higher on
+    // steep ground.
+    let line = 0.08 + 0.16 * v + 0.4 * smoothstep(0.3, 0.95, steep);
+    let snow = smoothstep(line, line + 0.08, u) * (1.0 - smoothstep(0.8, 1.0, steep));
+    let white = ramp(&[(0.0, GLACIER), (0.5, FIRN), (0.8, SNOW)], u);
+    mix(low, white, snow)
+}
+
+/// Snow down to the shore wherever a slope holds it; dark forest in
+/// patches on the lower slopes; dark rock on the steep faces.
+fn winter(u: f32, steep: f32, v: f32) -> Rgb {
+    use ground::*;
+    let snow = ramp(&[(0.0, FIRN), (0.3, SNOW)], u);
+    // Forest on the middle slopes of the lower land, the snow in its gaps.
+    let forest =
+        smoothstep(0.25, 0.45, steep) * (1.0 - smoothstep(0.35, 0.55, u)) * (0.3 + 0.6 * v);
+    let ground = mix(snow, DARK_CONIFER, forest * bands(u, 9.0));
+    let bare = smoothstep(0.62, 0.92, steep);
+    mix(ground, DARK_ROCK, bare)
+}
+
+/// Forests in gold, orange, red and brown by height, evergreens dark on
+/// the steeper slopes, larches yellow and heath brown above them.
+fn autumn(u: f32, steep: f32, beach: bool, v: f32) -> Rgb {
+    use ground::*;
+    let b = bands(u, 5.0 + 4.0 * v);
+    let broadleaf = ramp(
+        &[
+            (0.0, GOLD),
+            (0.2, ORANGE),
+            (0.35, RED),
+            (0.5, OAK),
+            (0.62, LARCH),
+            (0.78, HEATH),
+            (1.0, GREY_ROCK),
+        ],
+        // Early in the season the lower woods are gold, late red and
+        // brown.
+        u + 0.08 * (b - 0.5) + 0.3 * (v - 0.4),
+    );
+    let evergreen =
+        smoothstep(0.35, 0.6, steep) * (1.0 - smoothstep(0.6, 0.75, u)) * (0.3 + 0.6 * b);
+    let ground = mix(broadleaf, CONIFER, evergreen);
+    let ground = mix(ground, GREY_ROCK, smoothstep(0.75, 1.0, steep) * 0.6);
+    if beach && u < 0.03 {
+        return mix(CREAM, ground, smoothstep(0.0, 0.03, u));
+    }
+    ground
+}
+
+/// Strata in red, ochre and cream, darker and redder on the cliffs, pale
+/// sand on the flats below and white playa where the lowest flats lie.
+fn desert(u: f32, steep: f32, v: f32) -> Rgb {
+    use ground::*;
+    // Layers of rock of uneven thickness: a few repeats over the relief,
+    // more or fewer, and redder or paler, by the mountain.
+    let t = (u * (3.5 + 3.0 * v) + v).fract();
+    let layer = ramp(
+        &[
+            (0.0, BRICK),
+            (0.22, OCHRE),
+            (0.36, CREAM),
+            (0.46, OCHRE),
+            (0.62, RUST),
+            (0.8, BRICK),
+            (0.9, CHOCOLATE),
+            (1.0, BRICK),
+        ],
+        t,
+    );
+    // Flats take sand; faces show their layers.
+    let flat = 1.0 - smoothstep(0.15, 0.45, steep);
+    let sand = ramp(&[(0.0, DUNE), (0.1, DUNE), (1.0, OCHRE)], u);
+    let cover = flat * (1.0 - smoothstep(0.1, 0.35, u)) + flat * 0.35;
+    let ground = mix(layer, sand, cover.min(1.0));
+    let ground = mix(ground, mix(ground, RUST, 0.5), smoothstep(0.7, 1.0, steep));
+    mix(ground, CREAM, 0.45 * smoothstep(0.55, 1.0, v))
+}
+
+/// White beaches, palms then jungle up the slopes, dark basalt on the
+/// steepest faces and the volcanic tops.
+fn tropical(u: f32, steep: f32, beach: bool) -> Rgb {
+    use ground::*;
+    let green = ramp(
+        &[(0.0, PALM), (0.12, PALM), (0.3, JUNGLE), (1.0, JUNGLE)],
+        u,
+    );
+    let green = match beach {
+        true => ramp(&[(0.0, CORAL_SAND), (0.03, CORAL_SAND), (0.06, green)], u),
+        false => green,
+    };
+    let rock = smoothstep(0.6, 0.95, steep) + smoothstep(0.82, 1.0, u) * 0.6;
+    mix(green, BASALT, rock.min(0.85))
+}
+
+/// The water's colour over ground a share `t` (0 at the shore, 1 the
+/// deepest) of the deepest depth down, in `world`; `v` the mountain's draw.
+pub fn water(world: World, t: f32, v: f32) -> Rgb {
+    let s = t.sqrt();
+    match world {
+        World::Alpine => mix([0.22, 0.55, 0.58], [0.05, 0.24, 0.32], s),
+        World::Winter => {
+            // Ice out from the shore over the shallows, dark open water
+            // beyond.
+            let edge = 0.12 + 0.3 * v;
+            let ice = 1.0 - smoothstep(edge, edge + 0.08, t);
+            mix(
+                mix([0.10, 0.22, 0.34], [0.02, 0.07, 0.16], s),
+                [0.82, 0.88, 0.94],
+                ice,
+            )
+        }
+        World::Autumn => mix([0.18, 0.40, 0.52], [0.03, 0.10, 0.22], s),
+        // The basin lies dry: sand at its edge, salt on its floor.
+        World::Desert => ramp(
+            &[
+                (0.0, ground::DUNE),
+                (0.15, [0.90, 0.84, 0.70]),
+                (0.5, ground::PLAYA),
+                (1.0, ground::PLAYA),
+            ],
+            t,
+        ),
+        World::Tropical => ramp(
+            &[
+                (0.0, [0.55, 0.92, 0.84]),
+                (0.1, [0.12, 0.78, 0.78]),
+                (0.3, [0.04, 0.45, 0.66]),
+                (1.0, [0.02, 0.12, 0.38]),
+            ],
+            t,
+        ),
+        World::Varied | World::Temperate => [0.10, 0.34, 0.66],
+    }
+}
+
+/// The horizon's colour in `world`, from the light's `horizon`: a dusty
+/// desert air, a cold winter one, a clear mountain one, an autumn's
+/// golden haze.
+pub fn air(world: World, horizon: Rgb) -> Rgb {
+    match world {
+        World::Desert => mix(horizon, [0.86, 0.74, 0.58], 0.45),
+        World::Winter => mix(horizon, [0.80, 0.86, 0.94], 0.35),
+        World::Tropical => mix(horizon, [0.70, 0.88, 0.95], 0.2),
+        World::Autumn => mix(horizon, [0.88, 0.76, 0.58], 0.25),
+        World::Alpine => mix(horizon, [0.78, 0.88, 0.98], 0.25),
+        _ => horizon,
+    }
+}
+
+/// A pattern of patches across the heights: 0 to 1, `n` ups and downs
+/// over the relief (stands of one tree and another, bands of snow).
+fn bands(u: f32, n: f32) -> f32 {
+    let x = u * n;
+    let a = (x * std::f32::consts::TAU).sin();
+    let b = (x * 2.37 * std::f32::consts::TAU + 1.3).sin();
+    (0.5 + 0.3 * a + 0.2 * b).clamp(0.0, 1.0)
+}
+
+/// Piecewise-linear colour ramp through `(position, colour)` stops.
+fn ramp(stops: &[(f32, Rgb)], t: f32) -> Rgb {
+    let (mut prev_t, mut prev_c) = stops[0];
+    if t.is_nan() || t <= prev_t {
+        return prev_c;
+    }
+    for &(st, sc) in &stops[1..] {
+        if t <= st {
+            return mix(prev_c, sc, (t - prev_t) / (st - prev_t));
+        }
+        (prev_t, prev_c) = (st, sc);
+    }
+    prev_c
+}
+
+/// Hermite step from 0 at `e0` to 1 at `e1`.
+fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
+    let t = ((x - e0) / (e1 - e0)).clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
+}

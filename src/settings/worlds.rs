@@ -1,0 +1,186 @@
+//! What each world (`world = ...`) sets: the keys of its terrain, sky and
+//! light, in place of their defaults, and which world a mountain stands in
+//! under "varied". A world lies under the keys as a look does: a key a
+//! person sets to anything but its default keeps that value. Unlike a
+//! look's, a world's keys are laid per mountain (a varied world is drawn
+//! from the mountain's seed), so they are laid where a mountain is made
+//! and drawn ([`drawn`]), never into the preferences themselves. The
+//! colours no key says (the ground's cover, the water, the air) are read
+//! from `Settings::world` by the palette.
+//!
+//! Only data and the draw here, each key named by its row's constant: the
+//! key table checks every value against its key's range, and a test
+//! applies every preset.
+
+use super::keys::table::{
+    CLIFFS, CLOUDS, CRAGGINESS, EROSION, HEIGHT, LAKES, REFLECTIONS, SEA_LEVEL,
+};
+use super::keys::{self, Value};
+use super::looks::Preset;
+use super::{ColorMode, Look, Settings, World};
+
+use Preset::{Bool, Float, Int, Str};
+
+/// The worlds "varied" draws from, each with its weight: each as often
+/// as the others (a commoner one makes more slides alike).
+const DRAWN: &[(World, u64)] = &[
+    (World::Temperate, 2),
+    (World::Alpine, 2),
+    (World::Winter, 2),
+    (World::Autumn, 2),
+    (World::Desert, 2),
+    (World::Tropical, 2),
+];
+
+/// Mixed into a mountain's identity for its world, so the world is not
+/// the time of day's draw again.
+const WORLD_KEY: u64 = 0x776f_726c_6420_6b79;
+
+/// High, jagged ranges, deep valleys worn by rain; the water low, a lake
+/// at the foot of the range (the palette's glacial water) and the
+/// valleys' basins holding more.
+const ALPINE: &[(&str, Preset)] = &[
+    (CRAGGINESS.name, Int(128)),
+    (HEIGHT.name, Int(6)),
+    (EROSION.name, Float(0.8)),
+    (SEA_LEVEL.name, Float(-0.3)),
+    (LAKES.name, Bool(true)),
+];
+
+/// Rolling hills to a frozen shore (the palette's ice and cold air; the
+/// time of day stays the slide's own).
+const WINTER: &[(&str, Preset)] = &[
+    (HEIGHT.name, Int(6)),
+    (EROSION.name, Float(0.6)),
+    (SEA_LEVEL.name, Float(-0.2)),
+];
+
+/// Softer, lower hills for the forests. (The worlds keep the diamond
+/// generator: the Brownian surface is not framed quite alike at every grid
+/// size, and a varied slide must be one scene at every size.)
+const AUTUMN: &[(&str, Preset)] = &[
+    (CRAGGINESS.name, Int(80)),
+    (HEIGHT.name, Int(5)),
+    (EROSION.name, Float(0.6)),
+    (SEA_LEVEL.name, Float(-0.35)),
+];
+
+/// Terraces, mesas and canyons; the low ground a dry basin (the palette
+/// draws its "water" as sand and salt flats, which mirror nothing); no
+/// lakes; a clear sky.
+const DESERT: &[(&str, Preset)] = &[
+    (HEIGHT.name, Int(6)),
+    (CLIFFS.name, Float(0.8)),
+    (EROSION.name, Float(0.9)),
+    (SEA_LEVEL.name, Float(-0.4)),
+    (LAKES.name, Bool(false)),
+    (REFLECTIONS.name, Bool(false)),
+    (CLOUDS.name, Float(0.1)),
+];
+
+/// Steep islands standing out of a wider sea.
+const TROPICAL: &[(&str, Preset)] = &[
+    (CRAGGINESS.name, Int(128)),
+    (HEIGHT.name, Int(8)),
+    (EROSION.name, Float(0.5)),
+    (SEA_LEVEL.name, Float(0.15)),
+];
+
+/// The keys `world` sets and their values (none for the temperate coast,
+/// which is the keys' own defaults, nor for "varied", which is one of the
+/// others).
+pub fn presets(world: World) -> &'static [(&'static str, Preset)] {
+    match world {
+        World::Varied | World::Temperate => &[],
+        World::Alpine => ALPINE,
+        World::Winter => WINTER,
+        World::Autumn => AUTUMN,
+        World::Desert => DESERT,
+        World::Tropical => TROPICAL,
+    }
+}
+
+/// The world the mountain of `seed` stands in under `settings`: the one
+/// named, or under "varied" one drawn from the seed (the same at every
+/// size, grid and `low_detail`). The seed programs' looks and the colour
+/// modes other than the natural colours keep their own pictures: the
+/// temperate world's. So does a mountain without a seed (a foreign data
+/// set: its heights were not made in any world).
+pub fn chosen(settings: &Settings, seed: Option<u64>) -> World {
+    if settings.look != Look::Ours || settings.color != ColorMode::Natural {
+        return World::Temperate;
+    }
+    match (settings.world, seed) {
+        (World::Varied, Some(seed)) => drawn_for(seed),
+        (World::Varied, None) => World::Temperate,
+        (world, _) => world,
+    }
+}
+
+/// The world "varied" draws for the mountain of `seed`.
+pub fn drawn_for(seed: u64) -> World {
+    let draw = crate::terrain::splitmix::mix(seed ^ WORLD_KEY);
+    let total: u64 = DRAWN.iter().map(|&(_, w)| w).sum();
+    let mut pick = draw % total;
+    for &(world, weight) in DRAWN {
+        if pick < weight {
+            return world;
+        }
+        pick -= weight;
+    }
+    World::Temperate
+}
+
+/// `settings` as the mountain of `seed` is made and drawn with: its world
+/// chosen ([`chosen`]) and held in `world`, and each key the world sets
+/// that `settings` leave at their default given the world's value.
+pub fn drawn(settings: &Settings, seed: Option<u64>) -> Settings {
+    let world = chosen(settings, seed);
+    let mut out = settings.clone();
+    out.world = world;
+    for &(name, preset) in presets(world) {
+        let Some(key) = keys::find(name) else {
+            continue;
+        };
+        if keys::get(settings, key) == (key.default)() {
+            let value = match preset {
+                Int(i) => Value::Int(i),
+                Float(x) => Value::Float(x),
+                Bool(b) => Value::Bool(b),
+                Str(s) => Value::Str(s.into()),
+            };
+            let set = keys::apply(&mut out, key, &value);
+            debug_assert!(set.is_ok(), "{name}: a world's value is one its key allows");
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_preset_is_allowed_by_its_key() {
+        for &world in DRAWN {
+            for &(name, _) in presets(world.0) {
+                assert!(keys::find(name).is_some(), "{name}");
+            }
+            let s = drawn(
+                &Settings {
+                    world: world.0,
+                    ..Settings::default()
+                },
+                Some(1),
+            );
+            assert_eq!(s.world, world.0);
+        }
+    }
+
+    #[test]
+    fn varied_draws_every_world() {
+        let seen: std::collections::HashSet<_> =
+            (0..200).map(|s| format!("{:?}", drawn_for(s))).collect();
+        assert_eq!(seen.len(), DRAWN.len(), "{seen:?}");
+    }
+}

@@ -1,0 +1,211 @@
+//! The worlds (`world = ...`): each is accepted and draws a picture of its
+//! own; a varied world is the world drawn for the seed, the same at every
+//! size and at `low_detail`; the temperate world is the picture from
+//! before the worlds, pixel for pixel.
+
+use crate::common::golden;
+use mountains::quality::facets::{delta_e, lab};
+use mountains::quality::image::channels;
+use mountains::render::{Frame, detail, render_full};
+use mountains::settings::{Settings, World, keys, load, worlds};
+use mountains::terrain;
+
+/// Every world a person can name.
+const NAMED: [World; 6] = [
+    World::Temperate,
+    World::Alpine,
+    World::Winter,
+    World::Autumn,
+    World::Desert,
+    World::Tropical,
+];
+
+/// The picture `render` draws of `seed` under `prefs` in a `w` x `h` frame.
+fn picture(prefs: &Settings, seed: u64, (w, h): (u32, u32)) -> Frame {
+    let chosen = Settings {
+        seed: Some(seed),
+        ..prefs.clone()
+    };
+    let settings = detail::for_frame(&chosen, w, h);
+    let field = terrain::generate(&settings, seed);
+    let mut frame = Frame::new(w, h).expect("a frame");
+    render_full(&field, &settings, &mut frame);
+    frame
+}
+
+fn in_world(world: World) -> Settings {
+    Settings {
+        world,
+        ..Settings::default()
+    }
+}
+
+/// Mean CIE76 dE between two frames of one size.
+fn apart(a: &Frame, b: &Frame) -> f32 {
+    let n = a.pixels().len() as f32;
+    (a.pixels().iter().zip(b.pixels()))
+        .map(|(&p, &q)| delta_e(lab(channels(p)), lab(channels(q))))
+        .sum::<f32>()
+        / n
+}
+
+#[test]
+fn every_world_is_accepted_by_name_and_varied_is_the_default() {
+    assert_eq!(Settings::default().world, World::Varied);
+    for name in World::NAMES {
+        let mut s = Settings::default();
+        load::apply_set(&mut s, keys::WORLD.name, name).expect(name);
+        assert_eq!(s.world.name(), *name);
+    }
+    let mut s = Settings::default();
+    let refused = load::apply_set(&mut s, keys::WORLD.name, "moon").unwrap_err();
+    assert!(refused.message.contains("alpine"), "{}", refused.message);
+}
+
+#[test]
+fn each_world_draws_a_picture_of_its_own() {
+    for seed in [3, 8] {
+        let drawn: Vec<Frame> = NAMED
+            .iter()
+            .map(|&w| picture(&in_world(w), seed, (192, 108)))
+            .collect();
+        for (i, a) in drawn.iter().enumerate() {
+            for (j, b) in drawn.iter().enumerate().skip(i + 1) {
+                let d = apart(a, b);
+                assert!(
+                    d > 6.0,
+                    "seed {seed}: {:?} and {:?} only {d:.1} dE apart",
+                    NAMED[i],
+                    NAMED[j]
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn a_key_a_person_sets_wins_over_the_world() {
+    let set = Settings {
+        height: 3,
+        ..in_world(World::Alpine)
+    };
+    assert_eq!(worlds::drawn(&set, Some(1)).height, 3);
+    assert_ne!(worlds::drawn(&in_world(World::Alpine), Some(1)).height, 3);
+}
+
+#[test]
+fn a_varied_world_is_the_same_at_every_size_and_at_low_detail() {
+    let mut seen = std::collections::HashSet::new();
+    for seed in 1..=12 {
+        let world = worlds::chosen(&Settings::default(), Some(seed));
+        assert_ne!(world, World::Varied);
+        seen.insert(world.name());
+        let named = in_world(world);
+        for size in [(96, 54), (192, 108), (384, 216)] {
+            for low_detail in [false, true] {
+                let varied = Settings {
+                    low_detail,
+                    ..Settings::default()
+                };
+                let named = Settings {
+                    low_detail,
+                    ..named.clone()
+                };
+                assert!(
+                    picture(&varied, seed, size) == picture(&named, seed, size),
+                    "seed {seed} ({world:?}) at {size:?}, low_detail {low_detail}"
+                );
+            }
+        }
+    }
+    assert!(seen.len() >= 4, "12 seeds drew only {seen:?}");
+}
+
+/// The pictures pinned by the build before the worlds (`mountains render
+/// --size 160x90 --seed N`): `world = "temperate"` draws them unchanged.
+/// Seeds whose varied sun is now night (7, for one) are left out: their
+/// sky changed with the night, not with the world.
+#[test]
+fn the_temperate_world_is_the_picture_from_before_the_worlds() {
+    for seed in [3, 8, 21] {
+        let file = golden::dir().join(format!("world-temperate-seed{seed}.png"));
+        let pinned = golden::read_png(&file).expect("a pinned picture");
+        let drawn = picture(&in_world(World::Temperate), seed, (160, 90));
+        assert!(
+            drawn == pinned,
+            "seed {seed} differs from {}",
+            file.display()
+        );
+    }
+}
+
+/// The seed programs' looks and the other colour modes keep their own
+/// pictures: under them "varied" is the temperate world.
+#[test]
+fn the_looks_and_the_colour_modes_keep_their_pictures() {
+    for seed in 1..=6 {
+        for extra in ["look=fl3", "color=gray", "color=sonar"] {
+            let (k, v) = extra.split_once('=').unwrap();
+            let mut varied = Settings::default();
+            load::apply_set(&mut varied, k, v).unwrap();
+            let temperate = Settings {
+                world: World::Temperate,
+                ..varied.clone()
+            };
+            assert!(
+                picture(&varied, seed, (96, 54)) == picture(&temperate, seed, (96, 54)),
+                "seed {seed}, {extra}"
+            );
+        }
+    }
+}
+
+/// A data set records the world its mountain was made in, and is drawn in
+/// it again under preferences that leave the world at "varied".
+#[test]
+fn a_saved_data_set_records_its_world() {
+    use mountains::mountain::Mountain;
+    use mountains::settings::Detail;
+    use mountains::terrain::heightmap;
+    let dir = std::env::temp_dir().join(format!("mountains-worlds-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let s = Settings {
+        detail: Detail::Level(6),
+        ..Settings::default()
+    };
+    let mut seen = std::collections::HashSet::new();
+    for seed in 1..=8 {
+        let field = terrain::generate(&s, seed);
+        let path = dir.join(format!("{seed}.png"));
+        heightmap::save(&path, &field, Some(seed), &s).unwrap();
+        let (opened, _) = Mountain::open(&path).unwrap();
+        let world = opened.drawn_with(&Settings::default()).world;
+        assert_eq!(world, worlds::chosen(&s, Some(seed)), "seed {seed}");
+        seen.insert(world.name());
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(seen.len() >= 3, "{seen:?}");
+}
+
+/// Whatever the world, a slide shows land: the tropical sea and the
+/// desert's basin never take the whole view.
+#[test]
+fn every_varied_slide_shows_land() {
+    use mountains::render::classes::{Class, render_classes};
+    let (w, h) = (240, 135);
+    for seed in 1..=60 {
+        let chosen = Settings {
+            seed: Some(seed),
+            ..Settings::default()
+        };
+        let s = detail::for_frame(&chosen, w, h);
+        let field = terrain::generate(&s, seed);
+        let mut frame = Frame::new(w, h).unwrap();
+        render_classes(&field, &s, &mut frame).unwrap();
+        let land = (frame.pixels().iter())
+            .filter(|&&p| Class::of(p) == Class::Land)
+            .count();
+        let share = land as f32 / (w * h) as f32;
+        assert!(share >= 0.1, "seed {seed}: land is {share:.3} of the frame");
+    }
+}
