@@ -95,10 +95,7 @@ fn bench_default(c: &mut Criterion) {
 fn bench_night(c: &mut Criterion) {
     for (w, h, size) in [(1920, 1080, "1080p"), (3840, 2160, "2160p")] {
         for (time, sun) in [("day", Sun::Midday), ("night", Sun::Night)] {
-            let chosen = Settings {
-                sun,
-                ..temperate()
-            };
+            let chosen = Settings { sun, ..temperate() };
             let settings = detail::for_frame(&chosen, w, h);
             let field = generate(&settings, 42);
             let mut frame = Frame::new(w, h).unwrap();

@@ -30,9 +30,9 @@ pub mod modes;
 pub mod os;
 pub mod power;
 pub mod signals;
-mod watch;
 #[cfg(target_os = "linux")]
 pub mod single;
+mod watch;
 #[cfg(layer_shell_platform)]
 pub mod wayland;
 pub mod win32;

@@ -102,9 +102,10 @@ fn follow_power(event_loop: &EventLoop<LayerApp>, app: &mut LayerApp) -> Result<
             }
         })
         .map_err(|e| other("cannot watch the power", e.error))?;
-    let watcher = crate::platform::watch_power_and_display(crate::platform::Backend::Wayland, move |seen| {
-        let _ = tx.send(seen);
-    });
+    let watcher =
+        crate::platform::watch_power_and_display(crate::platform::Backend::Wayland, move |seen| {
+            let _ = tx.send(seen);
+        });
     app.seen = watcher.seen();
     Ok(())
 }

@@ -101,9 +101,10 @@ pub fn run(
     let (tx, rx) = mpsc::channel();
     spawn_event_thread(conn.clone(), xid, tx.clone())?;
     let seen_tx = tx.clone();
-    let watcher = crate::platform::watch_power_and_display(crate::platform::Backend::X11, move |seen| {
-        let _ = seen_tx.send(Notice::Seen(seen));
-    });
+    let watcher =
+        crate::platform::watch_power_and_display(crate::platform::Backend::X11, move |seen| {
+            let _ = seen_tx.send(Notice::Seen(seen));
+        });
     crate::platform::signals::on_terminate(move || {
         let _ = tx.send(Notice::Terminate);
     })

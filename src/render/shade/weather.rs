@@ -218,7 +218,12 @@ impl WeatherRow<'_> {
             let g = w.glow_at(away);
             c = [0, 1, 2].map(|i| c[i] + w.light[i] * g);
             if away < DISC {
+                // The disc is never darker than the glow around it: where a
+                // world's haze brightens the glow past the disc's colour, the
+                // sun reads as a blown-out white, not as a grey coin.
+                let glow = c;
                 c = mix(c, mix(w.light, [1.0; 3], 0.6), 0.9);
+                c = [0, 1, 2].map(|i| c[i].max(glow[i]));
             }
         }
         let Some(sheet) = &self.sheet else {
@@ -269,6 +274,42 @@ mod tests {
         assert!(
             right[0] - right[2] > left[0] - left[2],
             "warmer: {left:?} {right:?}"
+        );
+    }
+
+    /// The sun's disc against its own glow over a bright sky (a world's
+    /// hazy air): the disc must not read as a darker coin.
+    #[test]
+    fn the_sun_is_never_darker_than_its_glow() {
+        let w = weather(Sun::Sunset, 0.0);
+        let bright = [0.9, 0.8, 0.85];
+        let luma = |c: Rgb| 0.3 * c[0] + 0.59 * c[1] + 0.11 * c[2];
+        let (mut disc, mut ring) = (Vec::new(), Vec::new());
+        for y in -600..300 {
+            for x in 0..960 {
+                let (x, y) = (x as f32, y as f32);
+                let Some(dir) = w.view.sight(x, y) else {
+                    continue;
+                };
+                let away = 1.0 - dir.dot(w.sun);
+                let c = luma(w.over(bright, x, y));
+                if away < DISC {
+                    disc.push(c);
+                } else if away < 3.0 * DISC {
+                    ring.push(c);
+                }
+            }
+        }
+        assert!(
+            !disc.is_empty() && !ring.is_empty(),
+            "the sun is not in sight"
+        );
+        let mean = |v: &[f32]| v.iter().sum::<f32>() / v.len() as f32;
+        assert!(
+            mean(&disc) >= mean(&ring),
+            "disc {} under its glow {}",
+            mean(&disc),
+            mean(&ring)
         );
     }
 
