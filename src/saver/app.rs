@@ -396,7 +396,21 @@ impl App {
                 }
             }
         }
-        self.lay_span(event_loop);
+        if self.span.is_none() {
+            self.lay_span(event_loop);
+            return;
+        }
+        // The slide on screen stays where it is, each window showing what
+        // it can of it; the span is laid again when the next slide begins
+        // (`tick_span`), not in the middle of one.
+        for i in 0..self.screens.len() {
+            self.paint_span(event_loop, i, None);
+        }
+    }
+
+    /// The monitors the windows cover now.
+    fn span_heads(&self) -> Vec<Head> {
+        self.screens.iter().filter_map(|s| s.head).collect()
     }
 
     /// `monitors = "span"`: one show over the bounding rectangle of the
@@ -406,7 +420,7 @@ impl App {
         if self.settings.monitors != Monitors::Span || self.mode != AppMode::Fullscreen {
             return;
         }
-        let heads: Vec<Head> = self.screens.iter().filter_map(|s| s.head).collect();
+        let heads = self.span_heads();
         if self.span.as_ref().is_some_and(|s| s.laid_for(&heads)) {
             return;
         }
@@ -437,9 +451,18 @@ impl App {
     }
 
     fn tick_span(&mut self, event_loop: &ActiveEventLoop, now: Instant) {
-        let Some(damage) = self.span.as_mut().map(|s| s.tick(now)) else {
+        let heads = self.span_heads();
+        let Some(span) = self.span.as_mut() else {
             return;
         };
+        let slide = span.slide();
+        let damage = span.tick(now);
+        if span.slide() != slide && !span.laid_for(&heads) {
+            // A new slide begins and the monitors changed during the last:
+            // it begins over the monitors there are now.
+            self.lay_span(event_loop);
+            return;
+        }
         for i in 0..self.screens.len() {
             self.paint_span(event_loop, i, Some(&damage));
         }

@@ -367,6 +367,11 @@ impl Show {
         self.advance(now)
     }
 
+    /// Number of the slide on screen, counted from 0.
+    pub(super) fn slide(&self) -> u64 {
+        self.slide
+    }
+
     /// True while the display is off for this show.
     pub fn is_asleep(&self) -> bool {
         self.asleep

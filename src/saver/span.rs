@@ -107,6 +107,11 @@ impl Span {
         self.heads == heads
     }
 
+    /// Number of the slide the span shows.
+    pub(super) fn slide(&self) -> u64 {
+        self.show.slide()
+    }
+
     /// Moves the show on: what changed in the span's frame.
     pub(super) fn tick(&mut self, now: Instant) -> Damage {
         self.show.tick(now)

@@ -84,12 +84,31 @@ fn display_span_a_monitor_removed_re_lays_the_span() {
     };
     randr::set_monitors(&x.conn, x.root, &[LEFT, RIGHT], None);
     let (both, one) = (headless_render(1280, 480), headless_render(640, 480));
-    let mut saver = spanning(&x, "span-unplug");
+    // Drawn at once and held 8 s: the next slide comes within the patience.
+    let args = [
+        "/s",
+        "--set",
+        "monitors=span",
+        "--set",
+        "seed=5",
+        "--set",
+        "draw_seconds=0",
+        "--set",
+        "pause_seconds=8",
+    ];
+    let mut saver = Saver::start(&x, "span-unplug", &args, &[]);
     expect_parts(&x, &mut saver, &[LEFT, RIGHT], &both, 1280);
     randr::delete_monitors(&x.conn, x.root, 1, 1);
     randr::announce_change(&x.conn, x.root);
-    // The span is laid again over the one monitor left: the whole picture
-    // of seed 5 at its size, not the left half of the wide one.
+    // The slide on screen is not cut short: the monitor left keeps its half
+    // of the wide picture while the slide is held...
+    std::thread::sleep(std::time::Duration::from_millis(1500));
+    assert!(
+        x.grab_rect(LEFT) == part(&both, 1280, LEFT),
+        "the span was laid again in the middle of a slide"
+    );
+    // ...and the next slide is laid over the one monitor left: the whole
+    // picture of seed 5 at its size, not the left half of the wide one.
     expect_parts(&x, &mut saver, &[LEFT], &one, 640);
     x.key(38);
     xvfb::expect_exit(&mut saver, "a key after the span was laid again");
