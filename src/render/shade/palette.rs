@@ -19,7 +19,6 @@
 //! lowland turns black under the red filter; the tint keeps every face's
 //! brightness, stays in the filter's hue family, and snow turns a pale tint.
 
-use super::clouds::smoothstep;
 use super::cover;
 use super::dither;
 use super::essay;
@@ -639,7 +638,7 @@ fn steepness_reference(field: &Heightfield) -> f32 {
 }
 
 /// Piecewise-linear colour ramp through `(position, colour)` stops.
-pub(super) fn ramp(stops: &[(f32, Rgb)], t: f32) -> Rgb {
+fn ramp(stops: &[(f32, Rgb)], t: f32) -> Rgb {
     let (mut prev_t, mut prev_c) = stops[0];
     if t.is_nan() || t <= prev_t {
         return prev_c;
@@ -651,4 +650,10 @@ pub(super) fn ramp(stops: &[(f32, Rgb)], t: f32) -> Rgb {
         (prev_t, prev_c) = (st, sc);
     }
     prev_c
+}
+
+/// Hermite step from 0 at `e0` to 1 at `e1`.
+fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
+    let t = ((x - e0) / (e1 - e0)).clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
 }
