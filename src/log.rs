@@ -94,7 +94,29 @@ fn append(path: &Path, message: &str) -> std::io::Result<()> {
         .create(true)
         .append(true)
         .open(path)?;
-    f.write_all(line.as_bytes())
+    f.write_all(line.as_bytes())?;
+    // Another instance may have taken this file aside between our open and
+    // our write, read it and given its lines to a log started since: our
+    // line would go with the file taken. Written again, a line may show
+    // twice, but is never lost.
+    if !still_kept(f, path) {
+        let mut again = std::fs::OpenOptions::new()
+            .create(true)
+            .append(true)
+            .open(path)?;
+        again.write_all(line.as_bytes())?;
+    }
+    Ok(())
+}
+
+/// Whether the file open as `f` is the log at `path` or its `.old`.
+fn still_kept(f: std::fs::File, path: &Path) -> bool {
+    let Ok(written) = same_file::Handle::from_file(f) else {
+        return true;
+    };
+    [path.to_path_buf(), path.with_extension("log.old")]
+        .iter()
+        .any(|p| same_file::Handle::from_path(p).is_ok_and(|h| h == written))
 }
 
 /// Keeps the full log at `path` as `.old`. Instances that find it full at
