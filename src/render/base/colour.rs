@@ -11,6 +11,28 @@ pub fn mix(a: Rgb, b: Rgb, t: f32) -> Rgb {
     [0, 1, 2].map(|i| a[i] + (b[i] - a[i]) * t)
 }
 
+/// Piecewise-linear colour ramp through `(position, colour)` stops.
+pub fn ramp(stops: &[(f32, Rgb)], t: f32) -> Rgb {
+    let (mut prev_t, mut prev_c) = stops[0];
+    if t.is_nan() || t <= prev_t {
+        return prev_c;
+    }
+    for &(st, sc) in &stops[1..] {
+        if t <= st {
+            return mix(prev_c, sc, (t - prev_t) / (st - prev_t));
+        }
+        (prev_t, prev_c) = (st, sc);
+    }
+    prev_c
+}
+
+/// Hermite step from 0 at `e0` to 1 at `e1` (0 below, 1 above).
+#[inline]
+pub fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
+    let t = ((x - e0) / (e1 - e0)).clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
+}
+
 /// A 0..=1 colour as `0x00RRGGBB`.
 pub fn to_u32(c: Rgb) -> u32 {
     pack(c, 255.0, 0.0)

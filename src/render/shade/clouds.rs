@@ -13,6 +13,7 @@
 //! so a seed has the same sky at every size, detail and `low_detail`; and
 //! the water mirrors it through the same function.
 
+use crate::render::base::colour::smoothstep;
 use crate::settings::Clouds;
 use crate::terrain::splitmix;
 
@@ -241,12 +242,6 @@ fn floor(x: f32) -> i32 {
 #[inline]
 fn fade_curve(t: f32) -> f32 {
     t * t * (3.0 - 2.0 * t)
-}
-
-/// 0 below `e0`, 1 above `e1`, smooth between.
-#[inline]
-pub(crate) fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
-    fade_curve(((x - e0) / (e1 - e0)).clamp(0.0, 1.0))
 }
 
 #[cfg(test)]

@@ -8,7 +8,7 @@
 //! top), steepness is relative to the mountain's own steep faces (0 flat,
 //! 1 its steep faces): as the palette's zones have them.
 
-use crate::render::base::colour::{Rgb, mix};
+use crate::render::base::colour::{Rgb, mix, ramp, smoothstep};
 use crate::settings::World;
 
 /// Colours of the ground, full sun.
@@ -242,25 +242,4 @@ fn bands(u: f32, n: f32) -> f32 {
     let a = (x * std::f32::consts::TAU).sin();
     let b = (x * 2.37 * std::f32::consts::TAU + 1.3).sin();
     (0.5 + 0.3 * a + 0.2 * b).clamp(0.0, 1.0)
-}
-
-/// Piecewise-linear colour ramp through `(position, colour)` stops.
-fn ramp(stops: &[(f32, Rgb)], t: f32) -> Rgb {
-    let (mut prev_t, mut prev_c) = stops[0];
-    if t.is_nan() || t <= prev_t {
-        return prev_c;
-    }
-    for &(st, sc) in &stops[1..] {
-        if t <= st {
-            return mix(prev_c, sc, (t - prev_t) / (st - prev_t));
-        }
-        (prev_t, prev_c) = (st, sc);
-    }
-    prev_c
-}
-
-/// Hermite step from 0 at `e0` to 1 at `e1`.
-fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
-    let t = ((x - e0) / (e1 - e0)).clamp(0.0, 1.0);
-    t * t * (3.0 - 2.0 * t)
 }

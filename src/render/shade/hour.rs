@@ -9,9 +9,8 @@
 //! ephemeris: the land needs a light, and ahead of the viewer it glitters
 //! on the water).
 
-use super::clouds::smoothstep;
 use super::light::{EVENING, Lighting, MIDDAY, MORNING, NIGHT, NIGHT_TURN, SUNSET, Time};
-use crate::render::base::colour::mix;
+use crate::render::base::colour::{mix, smoothstep};
 
 /// Degrees below the horizon where twilight ends and the night's look is whole.
 const DARK: f32 = -12.0;

@@ -29,7 +29,7 @@ use super::light::Lighting;
 use super::listing;
 use super::night;
 use crate::render::base::colour::{
-    Rgb, mix, mix_packed, pack, scale_packed, scale_packed3, to_u32, unpack,
+    Rgb, mix, mix_packed, pack, ramp, scale_packed, scale_packed3, smoothstep, to_u32, unpack,
 };
 use crate::settings::{ColorMode, Look, Settings, Sun, World};
 use crate::terrain::Heightfield;
@@ -635,25 +635,4 @@ fn steepness_reference(field: &Heightfield) -> f32 {
     let k = samples.len() * 9 / 10;
     let (_, &mut p90, _) = samples.select_nth_unstable_by(k, f32::total_cmp);
     positive_or(p90, 0.05).clamp(0.005, 1.0)
-}
-
-/// Piecewise-linear colour ramp through `(position, colour)` stops.
-fn ramp(stops: &[(f32, Rgb)], t: f32) -> Rgb {
-    let (mut prev_t, mut prev_c) = stops[0];
-    if t.is_nan() || t <= prev_t {
-        return prev_c;
-    }
-    for &(st, sc) in &stops[1..] {
-        if t <= st {
-            return mix(prev_c, sc, (t - prev_t) / (st - prev_t));
-        }
-        (prev_t, prev_c) = (st, sc);
-    }
-    prev_c
-}
-
-/// Hermite step from 0 at `e0` to 1 at `e1`.
-fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
-    let t = ((x - e0) / (e1 - e0)).clamp(0.0, 1.0);
-    t * t * (3.0 - 2.0 * t)
 }

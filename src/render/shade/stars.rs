@@ -10,8 +10,7 @@
 //! screen's tone curve compresses starlight's range of 2.5 a magnitude).
 //! Near the horizon the air dims and hides them (extinction).
 
-use super::clouds::smoothstep;
-use crate::render::base::colour::{Rgb, mix};
+use crate::render::base::colour::{Rgb, mix, smoothstep};
 use crate::terrain::splitmix;
 
 /// Star pixels a cell's side.

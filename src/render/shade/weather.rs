@@ -10,9 +10,9 @@
 
 use glam::{Vec2, Vec3};
 
-use super::clouds::{CloudSheet, Cover, SheetRow, smoothstep};
+use super::clouds::{CloudSheet, Cover, SheetRow};
 use super::light::Lighting;
-use crate::render::base::colour::{Rgb, mix};
+use crate::render::base::colour::{Rgb, mix, smoothstep};
 use crate::render::framing::view::View;
 
 /// Sight lines farther from the sun than this (1 - cos of the angle
