@@ -13,6 +13,8 @@ use std::process::{Command, Stdio};
 use std::sync::{Mutex, MutexGuard, OnceLock};
 use std::time::{Instant, SystemTime};
 
+use super::xvfb::{Saver, Xvfb};
+
 /// The command that makes the exe these tests run.
 pub const CROSS_BUILD: &str = "cargo build --release --target x86_64-pc-windows-gnu";
 
@@ -59,6 +61,20 @@ impl Wine {
         self.server("-w");
     }
 
+    /// Runs Wine's `reg ARGS` in the prefix, which must succeed.
+    fn reg(&self, args: &[&str]) {
+        let status = Command::new(&self.loader)
+            .arg("reg")
+            .args(args)
+            .envs(self.env())
+            .env_remove("DISPLAY")
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .status()
+            .expect("run Wine's reg");
+        assert!(status.success(), "wine reg {args:?} failed: {status}");
+    }
+
     /// Runs `wineserver FLAG` for the prefix (`-w` waits until it ends).
     fn server(&self, flag: &str) {
         let _ = Command::new(&self.server)
@@ -88,6 +104,43 @@ impl Session {
         let wine = READY.get_or_init(set_up).as_ref()?;
         wine.stop_all();
         Some(Session { wine, _turn: turn })
+    }
+}
+
+impl Session {
+    /// Runs `PROGRAM ARGS` (a program in `bin`) under Wine on `x`.
+    pub fn start(&self, x: &Xvfb, name: &str, program: &str, args: &[&str]) -> Saver {
+        let exe = self.wine.program(program);
+        let mut all = vec![exe.as_str()];
+        all.extend_from_slice(args);
+        let env = self.wine.env();
+        let env: Vec<(&str, &str)> = env.iter().map(|(k, v)| (*k, v.as_str())).collect();
+        Saver::start_program(x, name, &self.wine.loader, &all, &env)
+    }
+
+    /// Until the guard is dropped, Wine takes the monitors from Xinerama,
+    /// not RandR (its X11 driver's `UseXRandR`): the heads of
+    /// `Xvfb::start_xinerama` are Xinerama's alone.
+    pub fn monitors_from_xinerama(&self) -> XineramaMonitors<'_> {
+        self.wine
+            .reg(&["add", X11_DRIVER, "/v", "UseXRandR", "/d", "N", "/f"]);
+        // The monitors are read when Wine's desktop starts: the next
+        // program must find none running.
+        self.wine.server("-w");
+        XineramaMonitors(self.wine)
+    }
+}
+
+/// The Wine registry key of the X11 driver's options.
+const X11_DRIVER: &str = r"HKCU\Software\Wine\X11 Driver";
+
+/// Wine's monitors come from Xinerama while this lives; the prefix is
+/// given back to RandR when it is dropped (see `monitors_from_xinerama`).
+pub struct XineramaMonitors<'a>(&'a Wine);
+
+impl Drop for XineramaMonitors<'_> {
+    fn drop(&mut self) {
+        self.0.reg(&["delete", X11_DRIVER, "/v", "UseXRandR", "/f"]);
     }
 }
 

@@ -28,6 +28,8 @@ pub const PATIENCE: Duration = Duration::from_secs(10);
 /// A private X server; killed on drop.
 pub struct Xvfb {
     child: Child,
+    /// The Xvfb a nested server (Xephyr) draws into, killed after it.
+    host: Option<Box<Xvfb>>,
     display: String,
     /// The connection the test uses to look and to type.
     pub conn: RustConnection,
@@ -47,43 +49,64 @@ impl Xvfb {
     pub fn start(width: u16, height: u16, extra: &[&str]) -> Option<Xvfb> {
         let depth = extra_depth(extra).unwrap_or(24);
         let screen = format!("{width}x{height}x{depth}");
-        let spawned = Command::new("Xvfb")
-            .args([
-                "-noreset",
-                "-nolisten",
-                "tcp",
-                "-displayfd",
-                "1",
-                "-screen",
-                "0",
-                &screen,
-            ])
-            .args(extra.iter().filter(|a| !a.starts_with("depth=")))
+        let mut args = vec!["-screen", "0", &screen];
+        args.extend(extra.iter().filter(|a| !a.starts_with("depth=")));
+        Xvfb::serve("Xvfb", &args, None, "apt-get install xvfb")
+    }
+
+    /// An X server whose monitors are Xinerama heads, one per `(w, h)` of
+    /// `heads`, side by side from the left; its one RandR output covers the
+    /// first only. A nested Xephyr in an Xvfb of its own: Xvfb cannot
+    /// place Xinerama heads side by side, and Wine takes its monitors from
+    /// RandR outputs or from Xinerama, never from RandR's monitors.
+    pub fn start_xinerama(heads: &[(u16, u16)]) -> Option<Xvfb> {
+        let width: u16 = heads.iter().map(|h| h.0).sum();
+        let height = heads.iter().map(|h| h.1).max().unwrap_or(1);
+        let host = Xvfb::start(width, height, &[])?;
+        let screens: Vec<String> = heads.iter().map(|(w, h)| format!("{w}x{h}")).collect();
+        let mut args = vec!["+xinerama"];
+        for screen in &screens {
+            args.extend(["-screen", screen.as_str()]);
+        }
+        let install = "apt-get install xserver-xephyr";
+        Xvfb::serve("Xephyr", &args, Some(host), install)
+    }
+
+    /// Starts the X server `program -noreset -nolisten tcp -displayfd 1
+    /// ARGS` (on `host`'s display, if any) and connects to it. Without the
+    /// program the test fails, or skips if asked to (see common/tools.rs).
+    fn serve(program: &str, args: &[&str], host: Option<Xvfb>, install: &str) -> Option<Xvfb> {
+        let mut command = Command::new(program);
+        command
+            .args(["-noreset", "-nolisten", "tcp", "-displayfd", "1"])
+            .args(args)
             .stdout(Stdio::piped())
-            .stderr(Stdio::null())
-            .spawn();
-        let mut child = match spawned {
+            .stderr(Stdio::null());
+        if let Some(host) = &host {
+            command.env("DISPLAY", host.display());
+        }
+        let mut child = match command.spawn() {
             Ok(c) => c,
             Err(e) => {
-                let what = format!("Xvfb cannot start ({e})");
-                super::tools::missing(&what, "apt-get install xvfb", "MOUNTAINS_REQUIRE_DISPLAY");
+                let what = format!("{program} cannot start ({e})");
+                super::tools::missing(&what, install, "MOUNTAINS_REQUIRE_DISPLAY");
                 return None;
             }
         };
         let mut line = String::new();
-        let stdout = child.stdout.take().expect("Xvfb stdout");
+        let stdout = child.stdout.take().expect("X server stdout");
         BufReader::new(stdout)
             .read_line(&mut line)
-            .expect("Xvfb display number");
+            .expect("X server display number");
         let number: u32 = match line.trim().parse() {
             Ok(n) => n,
             Err(_) => {
                 let _ = child.kill();
-                panic!("Xvfb did not report a display number: {line:?}");
+                panic!("{program} did not report a display number: {line:?}");
             }
         };
         let display = format!(":{number}");
-        let (conn, screen_num) = RustConnection::connect(Some(&display)).expect("connect to Xvfb");
+        let (conn, screen_num) = RustConnection::connect(Some(&display)).expect("connect to X");
         let screen = &conn.setup().roots[screen_num];
         let (root, size) = (
             screen.root,
@@ -91,6 +114,7 @@ impl Xvfb {
         );
         Some(Xvfb {
             child,
+            host: host.map(Box::new),
             display,
             conn,
             root,

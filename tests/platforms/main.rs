@@ -8,3 +8,4 @@ mod packages;
 mod windows_resources;
 mod wine;
 mod wine_power;
+mod wine_span;

@@ -16,17 +16,6 @@ use std::time::Duration;
 use wine::Session;
 use xvfb::{PATIENCE, Saver, Xvfb, looks_drawn, poll};
 
-/// Runs `PROGRAM.exe ARGS` from the test bin folder under Wine on `x`.
-fn start(session: &Session, x: &Xvfb, name: &str, program: &str, args: &[&str]) -> Saver {
-    let wine = session.wine;
-    let exe = wine.program(program);
-    let mut all = vec![exe.as_str()];
-    all.extend_from_slice(args);
-    let env = wine.env();
-    let env: Vec<(&str, &str)> = env.iter().map(|(k, v)| (*k, v.as_str())).collect();
-    Saver::start_program(x, name, &wine.loader, &all, &env)
-}
-
 /// Starts `/s` on a fresh 640x480 screen and waits until the mountain shows.
 fn fullscreen(name: &str) -> Option<(Session, Xvfb, Saver)> {
     fullscreen_at(name, 640, 480)
@@ -47,7 +36,7 @@ fn fullscreen_at(name: &str, w: u16, h: u16) -> Option<(Session, Xvfb, Saver)> {
         "--set",
         "pause_seconds=1",
     ];
-    let mut saver = start(&session, &x, name, "mountains.exe", &args);
+    let mut saver = session.start(&x, name, "mountains.exe", &args);
     let took = poll(&mut saver, "a mountain on the screen", || {
         looks_drawn(&x.grab_screen())
     });
@@ -199,7 +188,7 @@ fn preview(name: &str, awareness: &str, expected: i32) {
     let saver_path = session.wine.windows_path("mountains.exe");
     let seconds = HOST_SECONDS.to_string();
     let args = [saver_path.as_str(), seconds.as_str(), awareness];
-    let mut host = start(&session, &x, name, "preview_host.exe", &args);
+    let mut host = session.start(&x, name, "preview_host.exe", &args);
     let took = poll(&mut host, "the preview-host window", || {
         x.mapped_windows()
             .into_iter()

@@ -9,7 +9,7 @@
 use std::path::{Path, PathBuf};
 
 use crate::common::wine::Session;
-use crate::common::xvfb::{Saver, Xvfb, looks_drawn, poll};
+use crate::common::xvfb::{Xvfb, looks_drawn, poll};
 
 /// Every `mountains.log` under the Wine prefix's user folders.
 fn logs(prefix: &Path) -> Vec<PathBuf> {
@@ -42,10 +42,8 @@ fn display_wine_fullscreen_logs_the_power_windows_reports() {
     let Some(x) = Xvfb::start(320, 240, &[]) else {
         return;
     };
-    let exe = wine.program("mountains.exe");
-    let args = [exe.as_str(), "/s", "--set", "draw_seconds=0.5"];
-    let env: Vec<(&str, &str)> = env.iter().map(|(k, v)| (*k, v.as_str())).collect();
-    let mut saver = Saver::start_program(&x, "wine-power", &wine.loader, &args, &env);
+    let args = ["/s", "--set", "draw_seconds=0.5"];
+    let mut saver = session.start(&x, "wine-power", "mountains.exe", &args);
     poll(&mut saver, "a mountain on the screen", || {
         looks_drawn(&x.grab_screen())
     });
