@@ -6,7 +6,7 @@ use std::process::ExitCode;
 use crate::cli::output::{self, Format};
 use crate::console;
 use crate::mountain::Mountain;
-use crate::render::{Frame, render_full_at};
+use crate::render::{Frame, Size, render_full_at};
 use crate::settings::{Settings, load, paths};
 use crate::terrain::heightmap;
 
@@ -49,7 +49,7 @@ pub fn render(
             (pixels * 4) >> 20
         ));
     };
-    let settings = &crate::render::detail::for_frame(settings, width, height);
+    let settings = &crate::render::detail::for_frame(settings, Size::new(width, height));
     if let Err(mib) = crate::memory::room_to_work(work_exponent(settings, open)) {
         return fail(&format!(
             "--size {width}x{height}: not enough memory to draw it: about {mib} MiB more \

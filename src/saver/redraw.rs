@@ -11,7 +11,7 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::thread::JoinHandle;
 
-use crate::render::{Frame, Painter};
+use crate::render::{Frame, Painter, Size};
 use crate::settings::Settings;
 use crate::terrain::Heightfield;
 
@@ -124,7 +124,7 @@ fn draw(
         return None;
     }
     let hour = crate::solar::now_for(settings);
-    let mut painter = Painter::at_hour(field.clone(), settings, size, hour);
+    let mut painter = Painter::at_hour(field.clone(), settings, Size::new(size.0, size.1), hour);
     if off.load(Ordering::Relaxed) {
         return None;
     }

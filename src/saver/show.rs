@@ -10,7 +10,7 @@ use super::redraw::{Drawn, Redraw};
 use super::slideshow::{Due, Economy, Pacing, Slideshow};
 use super::source;
 use crate::mountain::Mountain;
-use crate::render::{Damage, Frame, Painter, Rect, detail};
+use crate::render::{Damage, Frame, Painter, Rect, Size, detail};
 use crate::settings::Settings;
 use crate::settings::keys::{self, Change};
 
@@ -77,7 +77,7 @@ impl Show {
         let first = match &opened {
             Some(m) => OnScreen::new(m.clone(), None),
             None => {
-                let made = detail::for_frame(&settings, size.0, size.1);
+                let made = detail::for_frame(&settings, Size::new(size.0, size.1));
                 OnScreen::new(Mountain::generate(&made), Some(made))
             }
         };
@@ -504,7 +504,7 @@ impl Show {
         let drawn = mountain.drawn_with(&self.settings);
         // The clock's sun where it stands as this slide begins.
         let hour = crate::solar::now_for(&drawn);
-        let painter = Painter::at_hour(mountain.field(), &drawn, size, hour);
+        let painter = Painter::at_hour(mountain.field(), &drawn, Size::new(size.0, size.1), hour);
         self.slideshow.restart(painter.strips_total(), now);
         self.painter = Some(painter);
         frame.bounds()
@@ -556,7 +556,7 @@ impl Show {
 
     /// `settings` with `detail = "auto"` fitted to this window's size.
     fn generator_settings_for(&self, settings: &Settings) -> Settings {
-        detail::for_frame(settings, self.size.0, self.size.1)
+        detail::for_frame(settings, Size::new(self.size.0, self.size.1))
     }
 }
 

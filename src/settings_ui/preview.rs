@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use crate::mountain::Mountain;
-use crate::render::{Frame, Painter};
+use crate::render::{Frame, Painter, Size};
 use crate::settings::{Detail, Settings};
 use crate::terrain::Heightfield;
 use crate::terrain::heightmap::GeneratorParams;
@@ -53,7 +53,7 @@ impl Preview {
     /// The settings the preview generates with: the screen's, with the
     /// detail fitted to the preview's size and capped.
     fn preview_settings(settings: &Settings, size: (u32, u32)) -> Settings {
-        let mut s = crate::render::detail::for_frame(settings, size.0, size.1);
+        let mut s = crate::render::detail::for_frame(settings, Size::new(size.0, size.1));
         if let Detail::Level(n) = s.detail {
             s.detail = Detail::Level(n.min(MAX_PREVIEW_DETAIL));
         }
@@ -99,10 +99,14 @@ impl Preview {
     pub fn repaint(&mut self, settings: &Settings, size: (u32, u32)) {
         let (w, h) = size;
         let drawn = self.drawn_with(settings);
-        self.painter = self
-            .field
-            .as_ref()
-            .map(|f| Painter::at_hour(f.clone(), &drawn, (w, h), crate::solar::now_for(&drawn)));
+        self.painter = self.field.as_ref().map(|f| {
+            Painter::at_hour(
+                f.clone(),
+                &drawn,
+                Size::new(w, h),
+                crate::solar::now_for(&drawn),
+            )
+        });
         self.picture = Frame::new(w, h);
     }
 
