@@ -6,6 +6,7 @@ use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use glam::Vec3;
+use mountains::render::Size;
 use mountains::render::palette::Palette;
 use mountains::render::ridges::Ridges;
 use mountains::render::{Frame, dither, shadow};
@@ -95,7 +96,7 @@ fn ridges(c: &mut Criterion) {
     let mut frame = Frame::new(1920, 1080).unwrap();
     c.bench_function("Ridges 1920x1080 all strips", |b| {
         b.iter(|| {
-            let r = Ridges::new(&f, &s, 1920, 1080);
+            let r = Ridges::new(&f, &s, Size::new(1920, 1080));
             for i in 0..r.strips_total() {
                 r.draw_strip(&mut frame, i);
             }

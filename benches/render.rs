@@ -5,6 +5,7 @@
 //! `cargo bench --bench render -- --warm-up-time 1 --measurement-time 4`
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use mountains::render::Size;
 use mountains::render::{Frame, detail, render_full};
 use mountains::settings::{Clouds, ColorMode, Settings, Shading, Sun, World};
 use mountains::terrain::{Heightfield, generate};
@@ -72,7 +73,7 @@ fn bench_default(c: &mut Criterion) {
             reflections: weather && defaults.reflections,
             ..defaults
         };
-        let settings = detail::for_frame(&chosen, w, h);
+        let settings = detail::for_frame(&chosen, Size::new(w, h));
         let field = generate(&settings, 42);
         let mut frame = Frame::new(w, h).unwrap();
         c.bench_function(name, |b| {
@@ -96,7 +97,7 @@ fn bench_night(c: &mut Criterion) {
     for (w, h, size) in [(1920, 1080, "1080p"), (3840, 2160, "2160p")] {
         for (time, sun) in [("day", Sun::Midday), ("night", Sun::Night)] {
             let chosen = Settings { sun, ..temperate() };
-            let settings = detail::for_frame(&chosen, w, h);
+            let settings = detail::for_frame(&chosen, Size::new(w, h));
             let field = generate(&settings, 42);
             let mut frame = Frame::new(w, h).unwrap();
             c.bench_function(&format!("{time}_auto_{size}"), |b| {
@@ -122,7 +123,7 @@ fn bench_worlds(c: &mut Criterion) {
                 world,
                 ..Settings::default()
             };
-            let settings = detail::for_frame(&chosen, w, h);
+            let settings = detail::for_frame(&chosen, Size::new(w, h));
             let field = generate(&settings, 42);
             let mut frame = Frame::new(w, h).unwrap();
             c.bench_function(&format!("world_{}_{h}p", world.name()), |b| {

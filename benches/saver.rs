@@ -6,6 +6,7 @@ use std::hint::black_box;
 use std::time::{Duration, Instant};
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use mountains::render::Size;
 use mountains::saver::show::Show;
 use mountains::saver::slideshow::Pacing;
 use mountains::settings::Settings;
@@ -23,7 +24,10 @@ fn paced_mountain(c: &mut Criterion) {
         b.iter_batched(
             || {
                 let t0 = Instant::now();
-                (Show::new(settings(), None, pacing, (1920, 1080), t0), t0)
+                (
+                    Show::new(settings(), None, pacing, Size::new(1920, 1080), t0),
+                    t0,
+                )
             },
             |(mut show, t0)| {
                 for frame in 0..240u32 {
@@ -40,7 +44,7 @@ fn paced_mountain(c: &mut Criterion) {
 fn hold_tick(c: &mut Criterion) {
     let pacing = Pacing::from_seconds(0.0, 1000.0, true);
     let t0 = Instant::now();
-    let mut show = Show::new(settings(), None, pacing, (1920, 1080), t0);
+    let mut show = Show::new(settings(), None, pacing, Size::new(1920, 1080), t0);
     show.tick(t0);
     let later = t0 + Duration::from_secs(5);
     c.bench_function("saver/hold_tick", |b| {

@@ -1,6 +1,7 @@
 //! The settings screen: one full redraw at 100% and 200%, and saving.
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use mountains::render::Size;
 use mountains::settings::Settings;
 use mountains::settings::load::DEFAULT_TOML;
 use mountains::settings::save::merge;
@@ -10,7 +11,7 @@ use mountains::settings_ui::screen::Screen;
 
 fn redraw(c: &mut Criterion) {
     for scale in [1, 2] {
-        let size = (WINDOW_W * scale, WINDOW_H * scale);
+        let size = Size::new(WINDOW_W * scale, WINDOW_H * scale);
         let file = std::env::temp_dir().join("mountains-bench-none.toml");
         let mut screen = Screen::new(Settings::default(), &[], file, size, scale);
         while screen.step_preview() {}

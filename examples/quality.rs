@@ -26,6 +26,7 @@ use mountains::quality::facets::{self, Facets};
 use mountains::quality::image::Image;
 use mountains::quality::metrics::{psnr, psnr_of_mse, share_off_by, squared_error, ssim};
 use mountains::quality::registration::best_shift;
+use mountains::render::Size;
 use mountains::render::classes::{Class, render_classes};
 use mountains::render::view::{self, View};
 use mountains::render::{Frame, detail, render_full};
@@ -276,8 +277,7 @@ fn fair_reference(
             field.size(),
             field.extent(),
             (&tops, floor),
-            w,
-            h,
+            Size::new(w, h),
         )
     };
     let steps = (field.size() - 1) as f32;
@@ -382,7 +382,7 @@ fn parse(argv: Vec<String>) -> Result<Args, String> {
         }
     }
     if settings.detail == Detail::Auto {
-        settings.detail = Detail::Level(detail::auto_level(&settings, size.0, size.1));
+        settings.detail = Detail::Level(detail::auto_level(&settings, Size::new(size.0, size.1)));
     }
     Ok(Args {
         width: size.0,

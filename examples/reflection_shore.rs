@@ -46,6 +46,7 @@
 
 use glam::{Vec2, Vec3};
 use mountains::quality::image;
+use mountains::render::Size;
 use mountains::render::classes::{Class, render_classes};
 use mountains::render::facts::{SceneFacts, drawn_field};
 use mountains::render::{Frame, detail, render_full};
@@ -101,7 +102,7 @@ fn main() {
     let mut traced = Vec::new();
     let mut parts = Vec::new();
     for seed in seeds {
-        let s = detail::for_frame(&settings, w, h);
+        let s = detail::for_frame(&settings, Size::new(w, h));
         let field = terrain::generate(&s, seed);
         let mut frame = Frame::new(w, h).expect("room for the frame");
         render_full(&field, &s, &mut frame);
@@ -118,8 +119,8 @@ fn main() {
         figures.push((raw, detrended));
         // The ground as drawn (turned by `rotation`, ...), which the
         // facts' sight lines go with.
-        let drawn = drawn_field(&field, &s, w, h);
-        let tracer = Tracer::new(&drawn, SceneFacts::of(&field, &s, w, h), w, h);
+        let drawn = drawn_field(&field, &s, Size::new(w, h));
+        let tracer = Tracer::new(&drawn, SceneFacts::of(&field, &s, Size::new(w, h)), w, h);
         let unmirrored = Settings {
             reflections: false,
             ..s.clone()

@@ -11,6 +11,7 @@
 
 use mountains::quality::facets::delta_e;
 use mountains::quality::image::channels;
+use mountains::render::Size;
 use mountains::render::classes::{Class, render_classes};
 use mountains::render::{Frame, detail, render_full};
 use mountains::settings::{Clouds, Settings};
@@ -62,7 +63,7 @@ fn changed_sky(seed: u64, (w, h): (u32, u32)) -> f64 {
         seed: Some(seed),
         ..Settings::default()
     };
-    let settings = detail::for_frame(&chosen, w, h);
+    let settings = detail::for_frame(&chosen, Size::new(w, h));
     let field = terrain::generate(&settings, seed);
     let draw = |clouds| {
         let mut frame = Frame::new(w, h).expect("frame");

@@ -9,6 +9,7 @@
 
 use std::time::{Duration, Instant};
 
+use mountains::render::Size;
 use mountains::render::{Frame, detail, render_full};
 use mountains::settings::{Detail, Settings, World};
 use mountains::terrain::{Heightfield, generate};
@@ -37,7 +38,7 @@ fn main() {
                         world,
                         ..Settings::default()
                     };
-                    let s = detail::for_frame(&chosen, w, h);
+                    let s = detail::for_frame(&chosen, Size::new(w, h));
                     let field = generate(&s, 42);
                     (s, field)
                 })

@@ -26,6 +26,7 @@
 
 use mountains::quality::facets::{delta_e, lab};
 use mountains::quality::image::channels;
+use mountains::render::Size;
 use mountains::render::classes::{Class, render_classes};
 use mountains::render::{Frame, detail, render_full};
 use mountains::settings::{Settings, load, worlds};
@@ -139,7 +140,7 @@ fn slide(prefs: &Settings, seed: u64, (w, h): (u32, u32)) -> Slide {
         seed: Some(seed),
         ..prefs.clone()
     };
-    let settings = detail::for_frame(&chosen, w, h);
+    let settings = detail::for_frame(&chosen, Size::new(w, h));
     let world = worlds::chosen(&settings, Some(seed)).name().to_string();
     let field = terrain::generate(&settings, seed);
     let mut frame = Frame::new(w, h).expect("frame");

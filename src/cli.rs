@@ -7,6 +7,8 @@
 use std::ffi::OsString;
 use std::path::PathBuf;
 
+use crate::render::Size;
+
 pub mod key_flags;
 pub mod output;
 
@@ -39,9 +41,7 @@ pub enum Mode {
     /// `render -o FILE`: one complete mountain to a PNG.
     Render {
         /// Frame size in pixels.
-        width: u32,
-        /// Frame height in pixels.
-        height: u32,
+        size: Size,
         /// Where the PNG goes.
         output: PathBuf,
     },
@@ -154,7 +154,7 @@ pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
     };
     let mut mode: Option<(Mode, String)> = None;
     let mut output: Option<PathBuf> = None;
-    let mut size: Option<(u32, u32)> = None;
+    let mut size: Option<Size> = None;
     while let Some(arg) = p.next_str()? {
         let new_mode = match p.option(&arg, &mut output, &mut size)? {
             Some(m) => m,
@@ -184,18 +184,14 @@ pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
 fn finish_mode(
     mode: Mode,
     output: Option<PathBuf>,
-    size: Option<(u32, u32)>,
+    size: Option<Size>,
 ) -> Result<Mode, UsageError> {
     match mode {
         Mode::Render { .. } => {
             let output = output.ok_or_else(|| UsageError("render needs -o FILE.png".into()))?;
             output::format_of(&output, output::PICTURES, "a picture")?;
-            let (width, height) = size.unwrap_or((1920, 1080));
-            Ok(Mode::Render {
-                width,
-                height,
-                output,
-            })
+            let size = size.unwrap_or(Size::new(1920, 1080));
+            Ok(Mode::Render { size, output })
         }
         Mode::Heightmap { .. } => {
             let output = output.ok_or_else(|| UsageError("heightmap needs -o FILE.png".into()))?;
@@ -266,7 +262,7 @@ impl Parser<'_> {
         &mut self,
         arg: &str,
         output: &mut Option<PathBuf>,
-        size: &mut Option<(u32, u32)>,
+        size: &mut Option<Size>,
     ) -> Result<Option<Mode>, UsageError> {
         if let Some(mode) = self.windows_flag(arg)? {
             return Ok(Some(mode));
@@ -358,8 +354,7 @@ impl Parser<'_> {
             }
             "render" => {
                 return Ok(Some(Mode::Render {
-                    width: 0,
-                    height: 0,
+                    size: Size::default(),
                     output: PathBuf::new(),
                 }));
             }
@@ -541,23 +536,23 @@ pub fn parse_handle(text: &str) -> Result<u64, UsageError> {
 pub const MAX_SIDE: u32 = 32768;
 
 /// `--size WIDTHxHEIGHT`: both sides from 1 to [`MAX_SIDE`].
-fn parse_size(text: &str) -> Result<(u32, u32), UsageError> {
+fn parse_size(text: &str) -> Result<Size, UsageError> {
     let bad = || {
         UsageError(format!(
             "--size {text}: expected WIDTHxHEIGHT, e.g. 1920x1080"
         ))
     };
     let (w, h) = text.split_once(['x', 'X']).ok_or_else(bad)?;
-    let (w, h): (u32, u32) = (w.parse().map_err(|_| bad())?, h.parse().map_err(|_| bad())?);
-    if w == 0 || h == 0 {
+    let size = Size::new(w.parse().map_err(|_| bad())?, h.parse().map_err(|_| bad())?);
+    if size.is_empty() {
         return Err(bad());
     }
-    if w.max(h) > MAX_SIDE {
+    if size.width.max(size.height) > MAX_SIDE {
         return Err(UsageError(format!(
             "--size {text}: too large (each side at most {MAX_SIDE} pixels)"
         )));
     }
-    Ok((w, h))
+    Ok(size)
 }
 
 #[cfg(test)]

@@ -6,7 +6,7 @@ use std::process::ExitCode;
 use crate::cli::output::{self, Format};
 use crate::console;
 use crate::mountain::Mountain;
-use crate::render::{Frame, render_full_at};
+use crate::render::{Frame, Size, render_full_at};
 use crate::settings::{Settings, load, paths};
 use crate::terrain::heightmap;
 
@@ -28,31 +28,25 @@ pub fn mountain(settings: &Settings, open: Option<&Path>) -> Result<Mountain, St
 }
 
 /// `mountains render`: one complete mountain to a PNG.
-pub fn render(
-    settings: &Settings,
-    open: Option<&Path>,
-    width: u32,
-    height: u32,
-    output: &Path,
-) -> ExitCode {
-    let Some(mut frame) = Frame::new(width, height) else {
-        let pixels = u64::from(width) * u64::from(height);
+pub fn render(settings: &Settings, open: Option<&Path>, size: Size, output: &Path) -> ExitCode {
+    let Some(mut frame) = Frame::new(size.width, size.height) else {
+        let pixels = size.pixels();
         if pixels > crate::render::frame::MAX_PIXELS {
             console::error(&format!(
-                "--size {width}x{height}: too large (at most {} pixels)",
+                "--size {size}: too large (at most {} pixels)",
                 crate::render::frame::MAX_PIXELS
             ));
             return ExitCode::from(EXIT_USAGE);
         }
         return fail(&format!(
-            "--size {width}x{height}: not enough memory for the frame ({} MiB)",
+            "--size {size}: not enough memory for the frame ({} MiB)",
             (pixels * 4) >> 20
         ));
     };
-    let settings = &crate::render::detail::for_frame(settings, width, height);
+    let settings = &crate::render::detail::for_frame(settings, size);
     if let Err(mib) = crate::memory::room_to_work(work_exponent(settings, open)) {
         return fail(&format!(
-            "--size {width}x{height}: not enough memory to draw it: about {mib} MiB more \
+            "--size {size}: not enough memory to draw it: about {mib} MiB more \
              than the frame's {} MiB is needed",
             frame.pixels().len() >> 18
         ));

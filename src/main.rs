@@ -84,13 +84,9 @@ fn main() -> ExitCode {
     };
     let open = inv.open.as_deref();
     match &inv.mode {
-        Mode::Render {
-            width,
-            height,
-            output,
-        } => {
+        Mode::Render { size, output } => {
             warn_problems(&loaded);
-            commands::render(&loaded.settings, open, *width, *height, output)
+            commands::render(&loaded.settings, open, *size, output)
         }
         Mode::Heightmap { output } => {
             warn_problems(&loaded);

@@ -129,9 +129,17 @@ fn interior_mse(a: &[f32], b: &[f32], w: usize, h: usize) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::render::Size;
 
     /// A smooth, structured picture `w` x `h`, sampled at (x + ox, y + oy) / k.
-    fn drawn(w: u32, h: u32, k: f32, (ox, oy): (f32, f32)) -> Frame {
+    fn drawn(
+        Size {
+            width: w,
+            height: h,
+        }: Size,
+        k: f32,
+        (ox, oy): (f32, f32),
+    ) -> Frame {
         let mut f = Frame::new(w, h).unwrap();
         for (i, p) in f.pixels_mut().iter_mut().enumerate() {
             let (x, y) = (
@@ -149,17 +157,29 @@ mod tests {
     #[test]
     fn a_reference_drawn_shifted_is_found_shifted() {
         let k = 4;
-        let picture = Image::box_down(&drawn(256, 192, 4.0, (0.0, 0.0)), k, (0, 0), 64, 48);
+        let picture = Image::box_down(
+            &drawn(Size::new(256, 192), 4.0, (0.0, 0.0)),
+            k,
+            (0, 0),
+            64,
+            48,
+        );
         // The reference drawn half a picture pixel further right and a
         // quarter further down: its content matches from boxes 2 and 1
         // reference pixels back.
-        let shifted = drawn(256, 192, 4.0, (2.0, 1.0));
+        let shifted = drawn(Size::new(256, 192), 4.0, (2.0, 1.0));
         let s = best_shift(&picture, &shifted, k, (0, 0), 4);
         assert!(
             (s.dx + 0.5).abs() < 0.06 && (s.dy + 0.25).abs() < 0.06,
             "{s:?}"
         );
-        let same = best_shift(&picture, &drawn(256, 192, 4.0, (0.0, 0.0)), k, (0, 0), 4);
+        let same = best_shift(
+            &picture,
+            &drawn(Size::new(256, 192), 4.0, (0.0, 0.0)),
+            k,
+            (0, 0),
+            4,
+        );
         assert!(same.dx.abs() < 0.02 && same.dy.abs() < 0.02, "{same:?}");
         assert_eq!(same.mse_at_zero, same.mse_best);
         assert!(s.mse_at_zero > s.mse_best);

@@ -51,8 +51,7 @@ pub fn render_classes(field: &Heightfield, settings: &Settings, frame: &mut Fram
     if settings.color == crate::settings::ColorMode::Ridges {
         return None;
     }
-    let (w, h) = (frame.width(), frame.height());
-    let mut scene = Scene::new(FieldRef::Borrowed(field), settings, w, h);
+    let mut scene = Scene::new(FieldRef::Borrowed(field), settings, frame.size());
     if scene.style != Style::Shaded {
         return None;
     }

@@ -6,6 +6,7 @@
 
 use glam::{Vec2, Vec3};
 
+use super::base::size::Size;
 use super::scene::{FieldRef, Scene};
 use super::shade::light::Lighting;
 use crate::settings::Settings;
@@ -39,10 +40,10 @@ pub struct RippleFacts {
 }
 
 impl SceneFacts {
-    /// Prepares `field` as `settings` ask in a `width` x `height` frame,
+    /// Prepares `field` as `settings` ask in a frame of `size`,
     /// exactly as drawing it would, and reports the scene.
-    pub fn of(field: &Heightfield, settings: &Settings, width: u32, height: u32) -> Self {
-        let scene = Scene::new(FieldRef::Borrowed(field), settings, width, height);
+    pub fn of(field: &Heightfield, settings: &Settings, size: Size) -> Self {
+        let scene = Scene::new(FieldRef::Borrowed(field), settings, size);
         let cells = scene.cells().max(1) as f32;
         SceneFacts {
             lighting: scene.palette.lighting().clone(),
@@ -55,8 +56,8 @@ impl SceneFacts {
             view: scene.view.clone(),
             backdrop: scene.sky.clone(),
             cells,
-            width: width.max(1) as f32,
-            height: height.max(1) as f32,
+            width: size.width.max(1) as f32,
+            height: size.height.max(1) as f32,
         }
     }
 
@@ -91,18 +92,13 @@ impl SceneFacts {
     }
 }
 
-/// The field as drawing `field` with `settings` in a `width` x `height`
-/// frame lays it out, which [`SceneFacts::sight_line`] and
-/// [`SceneFacts::cell`] go with: turned by `rotation` (and the essay's
-/// turn), a data set at its drawn scale, Sonar's and Outline's coarser
-/// grid; `field` itself otherwise.
-pub fn drawn_field(
-    field: &Heightfield,
-    settings: &Settings,
-    width: u32,
-    height: u32,
-) -> Heightfield {
-    let (drawn, _, _) = super::scene::laid_out(FieldRef::Borrowed(field), settings, width, height);
+/// The field as drawing `field` with `settings` in a frame of `size` lays
+/// it out, which [`SceneFacts::sight_line`] and [`SceneFacts::cell`] go
+/// with: turned by `rotation` (and the essay's turn), a data set at its
+/// drawn scale, Sonar's and Outline's coarser grid; `field` itself
+/// otherwise.
+pub fn drawn_field(field: &Heightfield, settings: &Settings, size: Size) -> Heightfield {
+    let (drawn, _, _) = super::scene::laid_out(FieldRef::Borrowed(field), settings, size);
     (*drawn).clone()
 }
 

@@ -5,7 +5,7 @@
 //! from the bottom:
 //!
 //! - `base/`, the ground floor: the frame and its damage, the canvas,
-//!   colour arithmetic, fixed-point screen positions;
+//!   colour arithmetic, fixed-point screen positions, the frame's `Size`;
 //! - `framing/`: camera, view, which rows;
 //! - `shade/`: light and colour;
 //! - `scene.rs`: everything fixed for one frame, made from the two above;
@@ -33,7 +33,7 @@ mod scene;
 mod shade;
 
 // The public paths from before the rooms (`render::palette`, ...) stay.
-pub use base::{colour, damage, frame};
+pub use base::{colour, damage, frame, size};
 pub use framing::{detail, turn, view};
 pub use scan::raster;
 pub use shade::{dither, essay, facings, hour, light, listing, palette, shadow};
@@ -41,3 +41,4 @@ pub use shade::{dither, essay, facings, hour, light, listing, palette, shadow};
 pub use damage::Damage;
 pub use frame::{Frame, Rect};
 pub use painter::{Painter, render_full, render_full_at};
+pub use size::Size;

@@ -5,6 +5,7 @@ use std::sync::Arc;
 use super::base::canvas::Canvas;
 use super::base::damage::Damage;
 use super::base::frame::{Frame, Rect};
+use super::base::size::Size;
 use super::edges::clean::clean_edges;
 use super::edges::horizon::{Horizon, HorizonSweep};
 use super::order::bands;
@@ -20,8 +21,7 @@ use crate::terrain::Heightfield;
 /// A strip is one row of grid cells (the last one also carries the front
 /// skirt); the first step also paints the background.
 pub struct Painter {
-    width: u32,
-    height: u32,
+    size: Size,
     next: usize,
     how: How,
 }
@@ -38,9 +38,9 @@ enum How {
 }
 
 impl Painter {
-    /// Plans drawing `field` under `settings` into a `width` x `height` frame.
-    pub fn new(field: Arc<Heightfield>, settings: &Settings, width: u32, height: u32) -> Self {
-        Self::at_hour(field, settings, (width, height), None)
+    /// Plans drawing `field` under `settings` into a frame of `size`.
+    pub fn new(field: Arc<Heightfield>, settings: &Settings, size: Size) -> Self {
+        Self::at_hour(field, settings, size, None)
     }
 
     /// [`Painter::new`] with the sun of `sun = "clock"` where `hour` puts
@@ -48,24 +48,19 @@ impl Painter {
     pub fn at_hour(
         field: Arc<Heightfield>,
         settings: &Settings,
-        (width, height): (u32, u32),
+        size: Size,
         hour: Option<SunAt>,
     ) -> Self {
         let how = if settings.color == ColorMode::Ridges {
-            How::Ridges(Ridges::new(&field, settings, width, height))
+            How::Ridges(Ridges::new(&field, settings, size))
         } else {
-            let scene = Scene::at_hour(FieldRef::Shared(field), settings, (width, height), hour);
+            let scene = Scene::at_hour(FieldRef::Shared(field), settings, size, hour);
             let sweep = scene
                 .clean_edges
-                .then(|| Box::new(HorizonSweep::new(width)));
+                .then(|| Box::new(HorizonSweep::new(size.width)));
             How::Mesh(Box::new(scene), Rows::new(), sweep)
         };
-        Painter {
-            width,
-            height,
-            next: 0,
-            how,
-        }
+        Painter { size, next: 0, how }
     }
 
     /// How many strips the whole mountain takes.
@@ -91,7 +86,7 @@ impl Painter {
     /// pixels it changed (empty when nothing was left, or when `frame` is
     /// not the size this painter was made for).
     pub fn step(&mut self, frame: &mut Frame, budget: usize) -> Damage {
-        if frame.width() != self.width || frame.height() != self.height {
+        if frame.size() != self.size {
             return Damage::default();
         }
         let start = self.next;
@@ -109,11 +104,11 @@ impl Painter {
     fn draw(&mut self, frame: &mut Frame, start: usize, end: usize) -> Damage {
         match &mut self.how {
             How::Mesh(scene, rows, sweep) => {
-                let mut canvas = Canvas::new(frame.pixels_mut(), self.width, 0);
+                let mut canvas = Canvas::new(frame.pixels_mut(), self.size.width, 0);
                 if start == 0 {
                     scene.sky.paint(&mut canvas);
                 }
-                draw_strips(scene, &mut canvas, rows, start..end, self.width);
+                draw_strips(scene, &mut canvas, rows, start..end, self.size.width);
                 let mut damage = canvas.damage();
                 if let Some(sweep) = sweep {
                     // Front to back while the strips go back to front: the
@@ -160,7 +155,7 @@ impl Painter {
     /// (the same pixels as stepping to the end): a redraw after a resize
     /// or a colour change takes half the time on two cores.
     pub fn finish(&mut self, frame: &mut Frame) -> Rect {
-        let size_fits = frame.width() == self.width && frame.height() == self.height;
+        let size_fits = frame.size() == self.size;
         match &self.how {
             How::Mesh(scene, ..) if self.next == 0 && size_fits => {
                 draw_full(scene, frame);
@@ -186,13 +181,13 @@ pub fn render_full_at(
     frame: &mut Frame,
     hour: Option<SunAt>,
 ) {
-    let (w, h) = (frame.width(), frame.height());
+    let size = frame.size();
     if settings.color == ColorMode::Ridges {
-        let mut p = Painter::new(Arc::new(field.clone()), settings, w, h);
+        let mut p = Painter::new(Arc::new(field.clone()), settings, size);
         p.step(frame, usize::MAX);
         return;
     }
-    let scene = Scene::at_hour(FieldRef::Borrowed(field), settings, (w, h), hour);
+    let scene = Scene::at_hour(FieldRef::Borrowed(field), settings, size, hour);
     draw_full(&scene, frame);
 }
 

@@ -10,6 +10,7 @@
 
 use super::base::colour::{Rgb, mix, to_u32};
 use super::base::frame::{Frame, Rect};
+use super::base::size::Size;
 use crate::settings::Settings;
 use crate::terrain::{Heightfield, splitmix};
 
@@ -47,26 +48,21 @@ struct Layer {
 /// The Ridges picture for one field at one frame size, drawn strip by strip.
 #[derive(Debug, Clone)]
 pub struct Ridges {
-    width: u32,
-    height: u32,
+    size: Size,
     layers: Vec<Layer>,
 }
 
 impl Ridges {
-    /// Plans the ranges of `field` for a `width` x `height` frame.
+    /// Plans the ranges of `field` for a frame of `size`.
     /// The height setting (1..=10) makes the ranges lower or taller.
-    pub fn new(field: &Heightfield, settings: &Settings, width: u32, height: u32) -> Self {
+    pub fn new(field: &Heightfield, settings: &Settings, size: Size) -> Self {
         let seed = field.fingerprint();
-        let points = profile_points(width);
+        let points = profile_points(size.width);
         let tallness = 0.6 + 0.08 * crate::settings::handles::HEIGHT.clamp(settings.height) as f32;
         let layers = (0..LAYERS)
             .map(|i| make_layer(field, seed, i, points, tallness))
             .collect();
-        Ridges {
-            width,
-            height,
-            layers,
-        }
+        Ridges { size, layers }
     }
 
     /// How many strips the picture takes (one per range).
@@ -77,7 +73,7 @@ impl Ridges {
     /// Draws strip `i` (strip 0 paints the sky too) and returns the pixels it
     /// changed; nothing when `i` is past the end or `frame` is another size.
     pub fn draw_strip(&self, frame: &mut Frame, i: usize) -> Rect {
-        if frame.width() != self.width || frame.height() != self.height {
+        if frame.size() != self.size {
             return Rect::default();
         }
         let Some(layer) = self.layers.get(i) else {
@@ -207,7 +203,7 @@ fn paint_sky(frame: &mut Frame) {
 /// returns the rectangle it covered.
 fn paint_layer(frame: &mut Frame, layer: &Layer) -> Rect {
     let (w, h) = (frame.width(), frame.height());
-    let crests = crest_rows(layer, w, h);
+    let crests = crest_rows(layer, frame.size());
     let top = crests.iter().copied().fold(h as f32, f32::min).max(0.0) as u32;
     if top >= h {
         return Rect::default();
@@ -243,7 +239,13 @@ fn paint_layer(frame: &mut Frame, layer: &Layer) -> Rect {
 }
 
 /// The screen row of the crest above each column (fractional, may be < 0).
-fn crest_rows(layer: &Layer, w: u32, h: u32) -> Vec<f32> {
+fn crest_rows(
+    layer: &Layer,
+    Size {
+        width: w,
+        height: h,
+    }: Size,
+) -> Vec<f32> {
     let last = (layer.profile.len() - 1) as f32;
     let across = if w > 1 { last / (w - 1) as f32 } else { 0.0 };
     (0..w)

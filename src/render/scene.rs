@@ -7,6 +7,7 @@ use glam::Vec2;
 
 use super::base::colour::blend_packed;
 use super::base::fixed::{Fixed2, to_fixed};
+use super::base::size::Size;
 use super::framing::easel;
 use super::framing::tops::{RowTops, finite};
 use super::framing::turn;
@@ -194,22 +195,22 @@ pub(crate) struct Scene<'a> {
 }
 
 impl<'a> Scene<'a> {
-    /// Prepares `field` seen as `settings` ask, in a `width` x `height` frame.
-    pub(crate) fn new(field: FieldRef<'a>, settings: &Settings, width: u32, height: u32) -> Self {
-        Self::at_hour(field, settings, (width, height), None)
+    /// Prepares `field` seen as `settings` ask, in a frame of `frame` size.
+    pub(crate) fn new(field: FieldRef<'a>, settings: &Settings, frame: Size) -> Self {
+        Self::at_hour(field, settings, frame, None)
     }
 
     /// [`Scene::new`] with the sun of `sun = "clock"` where `hour` puts it.
     pub(crate) fn at_hour(
         field: FieldRef<'a>,
         settings: &Settings,
-        (width, height): (u32, u32),
+        frame: Size,
         hour: Option<SunAt>,
     ) -> Self {
         // The world the mountain was made in: its keys and its colours.
         let settings = &worlds::drawn(settings, field.seed());
         let style = Style::of(settings.color);
-        let (field, square, outline) = laid_out(field, settings, width, height);
+        let (field, square, outline) = laid_out(field, settings, frame);
         let lighting = Palette::lighting_at(settings, &field, hour);
         let shaded = style.is_filled();
         let wants_sky = style == Style::Shaded && !lighting.classic;
@@ -224,7 +225,7 @@ impl<'a> Scene<'a> {
             || {
                 both_if(
                     wide,
-                    || framed(&field, settings, (shaded, square), width, height),
+                    || framed(&field, settings, (shaded, square), frame),
                     || wants_sky.then(|| SkyLight::new(&field)),
                 )
             },
@@ -237,7 +238,7 @@ impl<'a> Scene<'a> {
             },
         );
         let size = field.size();
-        let sky = backdrop(&palette, &view, style, height);
+        let sky = backdrop(&palette, &view, style, frame.height);
         // The seed programs' looks have no air.
         let haze = (style == Style::Shaded
             && settings.view != ViewKind::Oblique
@@ -259,9 +260,9 @@ impl<'a> Scene<'a> {
         // The weather is the ripples' kind of look: the shaded views with depth.
         let sky = match ripples.is_some() {
             true => {
-                let w = weather(&palette, &view, settings, &field, &sky, [width, height]);
+                let w = weather(&palette, &view, settings, &field, &sky, frame);
                 let night = palette.lighting().night;
-                let stars = Stars::new(height, sky.horizon_row(), night, field.identity());
+                let stars = Stars::new(frame.height, sky.horizon_row(), night, field.identity());
                 sky.with_weather(w).with_stars(stars)
             }
             false => sky,
@@ -547,7 +548,7 @@ impl<'a> Scene<'a> {
 }
 
 /// The highest point of each row (at least sea level), the view fitted to
-/// `field` in a `width` x `height` frame, and the grid rows its mesh is
+/// `field` in a frame of `frame` size, and the grid rows its mesh is
 /// drawn with.
 /// The essay's square (`square`, under `look = "essay"`) is seen in the
 /// perspective view from the essay's own camera.
@@ -555,8 +556,7 @@ fn framed(
     field: &Heightfield,
     settings: &Settings,
     (shaded, square): (bool, Option<easel::Square>),
-    width: u32,
-    height: u32,
+    frame: Size,
 ) -> (RowTops, View, Vec<usize>) {
     let size = field.size();
     let row_top = RowTops::of(field);
@@ -581,15 +581,14 @@ fn framed(
     };
     let floor = super::framing::view::near_floor(field);
     let view = match square.filter(|_| settings.view == ViewKind::Perspective) {
-        Some(square) => easel::view(square, size, field.extent(), width, height),
+        Some(square) => easel::view(square, size, field.extent(), frame),
         None => View::fitted_oblique(
             settings.view,
             oblique,
             size,
             field.extent(),
             (tops, floor),
-            width,
-            height,
+            frame,
         ),
     };
     // Sonar and Outline draw every line of their (already thinned) grid.
@@ -621,7 +620,7 @@ fn weather(
     settings: &Settings,
     field: &Heightfield,
     sky: &Sky,
-    [width, height]: [u32; 2],
+    Size { width, height }: Size,
 ) -> Option<Weather> {
     let amount = clouds::amount(settings.clouds, field.identity());
     Weather::new(
@@ -643,7 +642,7 @@ const MIN_WIRE_CELL_PX: f32 = 8.0;
 
 /// The field on the coarsest nested grid whose cells, seen in this frame,
 /// are at least `MIN_WIRE_CELL_PX` wide (the field itself if they already are).
-fn legible<'a>(field: FieldRef<'a>, settings: &Settings, width: u32, height: u32) -> FieldRef<'a> {
+fn legible<'a>(field: FieldRef<'a>, settings: &Settings, frame: Size) -> FieldRef<'a> {
     let cells = (field.size() - 1) as f32;
     let zmax = field.max().max(0.0);
     let view = View::new(
@@ -651,8 +650,7 @@ fn legible<'a>(field: FieldRef<'a>, settings: &Settings, width: u32, height: u32
         field.size(),
         field.extent(),
         finite(zmax),
-        width,
-        height,
+        frame,
     );
     let mid = cells / 2.0;
     let span = (view.project(cells, mid, 0.0) - view.project(0.0, mid, 0.0)).length();
@@ -667,7 +665,7 @@ fn legible<'a>(field: FieldRef<'a>, settings: &Settings, width: u32, height: u32
     FieldRef::Shared(Arc::new(field.coarsened(levels)))
 }
 
-/// `field` as `settings` lay it out in a `width` x `height` frame: turned
+/// `field` as `settings` lay it out in a frame of `frame` size: turned
 /// by `rotation` and the essay's turn, a data set at its drawn scale,
 /// Sonar's and Outline's grid coarsened to stay legible; with the essay's
 /// square (before its turn, for its camera) and the outline its cells are
@@ -675,8 +673,7 @@ fn legible<'a>(field: FieldRef<'a>, settings: &Settings, width: u32, height: u32
 pub(crate) fn laid_out<'a>(
     field: FieldRef<'a>,
     settings: &Settings,
-    width: u32,
-    height: u32,
+    frame: Size,
 ) -> (FieldRef<'a>, Option<easel::Square>, Option<Outline<'a>>) {
     let mut field = turned(field, settings.rotation);
     let mut square = None;
@@ -698,7 +695,7 @@ pub(crate) fn laid_out<'a>(
         field = FieldRef::Shared(Arc::new(drawn));
     }
     if matches!(Style::of(settings.color), Style::Sonar | Style::Outline) {
-        field = legible(field, settings, width, height);
+        field = legible(field, settings, frame);
     }
     (field, square, outline)
 }
@@ -753,7 +750,11 @@ mod tests {
         };
         let field = crate::terrain::generate(&settings(false), 42);
         let (x, y) = (40, 50);
-        let plain = Scene::new(FieldRef::Borrowed(&field), &settings(false), 320, 180);
+        let plain = Scene::new(
+            FieldRef::Borrowed(&field),
+            &settings(false),
+            Size::new(320, 180),
+        );
         assert!(plain.mirror.is_none() && plain.smooth);
         let water = shaded(&plain, x, y, false);
         assert!(water.hazed && !water.lit_known && !water.coloured);
@@ -762,7 +763,11 @@ mod tests {
         assert_eq!((land.lit, land.sky), plain.light_at(x, y));
         assert_eq!(land.haze, water.haze);
         // Water that mirrors takes its points' light.
-        let mirroring = Scene::new(FieldRef::Borrowed(&field), &settings(true), 320, 180);
+        let mirroring = Scene::new(
+            FieldRef::Borrowed(&field),
+            &settings(true),
+            Size::new(320, 180),
+        );
         assert!(mirroring.mirror.is_some());
         let water = shaded(&mirroring, x, y, false);
         assert!(water.lit_known && !water.coloured);

@@ -26,7 +26,7 @@ use super::trace::Trace;
 use crate::mountain::Mountain;
 use crate::platform::events::{Motion, Notice, Notify};
 use crate::platform::{self, Host};
-use crate::render::Damage;
+use crate::render::{Damage, Size};
 use crate::settings::{Monitors, Settings};
 
 /// Which kind of winit window to run.
@@ -528,7 +528,7 @@ impl App {
             platform::keep_covering(&window);
         }
         let size = window.inner_size();
-        let size = (size.width, size.height);
+        let size = Size::new(size.width, size.height);
         let presenter = Presenter::new(window.clone())
             .map_err(|e| SaverError::Other(format!("cannot draw in the window: {e}")))?;
         let now = Instant::now();
@@ -555,12 +555,11 @@ impl App {
 
     fn resize(&mut self, event_loop: &ActiveEventLoop, i: usize, size: PhysicalSize<u32>) {
         let screen = &mut self.screens[i];
-        if screen.show.size() == (size.width, size.height) {
+        let size = Size::new(size.width, size.height);
+        if screen.show.size() == size {
             return;
         }
-        let damage = screen
-            .show
-            .resize((size.width, size.height), Instant::now());
+        let damage = screen.show.resize(size, Instant::now());
         self.present(event_loop, i, damage.into());
         self.paint_span(event_loop, i, None);
     }

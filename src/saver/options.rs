@@ -7,6 +7,7 @@ use super::show::Show;
 use super::slideshow;
 use crate::cli::XssOptions;
 use crate::mountain::Mountain;
+use crate::render::Size;
 use crate::settings::Settings;
 
 /// Remembers this run's xscreensaver options for every window's show.
@@ -27,7 +28,7 @@ pub(crate) fn new_show(
     settings: Settings,
     opened: Option<Mountain>,
     pacing: slideshow::Pacing,
-    size: (u32, u32),
+    size: Size,
     now: Instant,
 ) -> Show {
     let xss = XSS.get().cloned().unwrap_or_default();

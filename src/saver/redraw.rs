@@ -11,7 +11,7 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::thread::JoinHandle;
 
-use crate::render::{Frame, Painter};
+use crate::render::{Frame, Painter, Size};
 use crate::settings::Settings;
 use crate::terrain::Heightfield;
 
@@ -43,7 +43,7 @@ impl Redraw {
     pub fn start(
         field: Arc<Heightfield>,
         settings: &Settings,
-        size: (u32, u32),
+        size: Size,
     ) -> Result<Self, Box<Drawn>> {
         let settings = settings.clone();
         Redraw::run("redraw", move |off: &AtomicBool| {
@@ -58,7 +58,7 @@ impl Redraw {
         seed: u64,
         made: Settings,
         settings: &Settings,
-        size: (u32, u32),
+        size: Size,
     ) -> Result<Self, Box<Drawn>> {
         let settings = settings.clone();
         Redraw::run("remake", move |off: &AtomicBool| {
@@ -116,7 +116,7 @@ impl Drop for Redraw {
 fn draw(
     field: Arc<Heightfield>,
     settings: &Settings,
-    size: (u32, u32),
+    size: Size,
     made: Option<Settings>,
     off: &AtomicBool,
 ) -> Option<Drawn> {
@@ -128,7 +128,7 @@ fn draw(
     if off.load(Ordering::Relaxed) {
         return None;
     }
-    let mut frame = Frame::new(size.0, size.1);
+    let mut frame = Frame::new(size.width, size.height);
     if let Some(frame) = frame.as_mut() {
         painter.finish(frame);
     }

@@ -10,7 +10,7 @@ use super::redraw::{Drawn, Redraw};
 use super::slideshow::{Due, Economy, Pacing, Slideshow};
 use super::source;
 use crate::mountain::Mountain;
-use crate::render::{Damage, Frame, Painter, Rect, detail};
+use crate::render::{Damage, Frame, Painter, Rect, Size, detail};
 use crate::settings::Settings;
 use crate::settings::keys::{self, Change};
 
@@ -48,7 +48,7 @@ pub struct Show {
     next: Next,
     frame: Option<Frame>,
     /// The window's size: the frame's, or the one a redraw is drawing for.
-    size: (u32, u32),
+    size: Size,
     painter: Option<Painter>,
     /// A complete redraw under way; the old frame stays up until it is done.
     redraw: Option<Redraw>,
@@ -65,19 +65,19 @@ pub struct Show {
 }
 
 impl Show {
-    /// A show of `width` x `height` pixels that starts drawing its first
+    /// A show of `size` pixels that starts drawing its first
     /// mountain (`opened`, or a generated one) at `now`.
     pub fn new(
         settings: Settings,
         opened: Option<Mountain>,
         pacing: Pacing,
-        size: (u32, u32),
+        size: Size,
         now: Instant,
     ) -> Self {
         let first = match &opened {
             Some(m) => OnScreen::new(m.clone(), None),
             None => {
-                let made = detail::for_frame(&settings, size.0, size.1);
+                let made = detail::for_frame(&settings, size);
                 OnScreen::new(Mountain::generate(&made), Some(made))
             }
         };
@@ -89,15 +89,15 @@ impl Show {
     }
 
     /// A black show that never draws a mountain (a monitor left blank).
-    pub fn blank(size: (u32, u32), now: Instant) -> Self {
+    pub fn blank(size: Size, now: Instant) -> Self {
         let pacing = Pacing::from_seconds(0.0, 0.0, false);
         let mut show = Show::empty(Settings::default(), pacing, size, now);
-        show.frame = Frame::new(size.0, size.1);
+        show.frame = Frame::new(size.width, size.height);
         show
     }
 
     /// A show with no mountain and no frame yet.
-    fn empty(settings: Settings, pacing: Pacing, size: (u32, u32), now: Instant) -> Self {
+    fn empty(settings: Settings, pacing: Pacing, size: Size, now: Instant) -> Self {
         Show {
             made_with: settings.clone(),
             settings,
@@ -294,14 +294,14 @@ impl Show {
 
     /// Fits the show to a new window size: the mountain is redrawn whole on
     /// other threads, and shown by the `tick` after it is done.
-    pub fn resize(&mut self, size: (u32, u32), now: Instant) -> Rect {
+    pub fn resize(&mut self, size: Size, now: Instant) -> Rect {
         self.size = size;
         // The slide the display shows when it comes back is drawn at this size.
         if self.asleep {
             return Rect::default();
         }
         if self.current.is_none() {
-            self.frame = Frame::new(size.0, size.1);
+            self.frame = Frame::new(size.width, size.height);
             return self.frame.as_ref().map(Frame::bounds).unwrap_or_default();
         }
         self.begin_redraw(now)
@@ -436,7 +436,7 @@ impl Show {
 
     /// The size this show draws for (the window's); the frame on screen
     /// keeps the old size until a redraw for a new one is done.
-    pub fn size(&self) -> (u32, u32) {
+    pub fn size(&self) -> Size {
         self.size
     }
 
@@ -481,15 +481,15 @@ impl Show {
     }
 
     /// Clears the frame (made at `size`) and plans drawing the current mountain into it.
-    fn start_drawing(&mut self, size: (u32, u32), now: Instant) -> Rect {
+    fn start_drawing(&mut self, size: Size, now: Instant) -> Rect {
         let Some(mountain) = self.current.as_ref() else {
             return Rect::default();
         };
-        let reused = self.frame.as_ref().map(|f| (f.width(), f.height())) == Some(size);
+        let reused = self.frame.as_ref().map(Frame::size) == Some(size);
         if !reused {
             // Free the old pixels before allocating the new ones: peak memory.
             self.frame = None;
-            self.frame = Frame::new(size.0, size.1);
+            self.frame = Frame::new(size.width, size.height);
         }
         self.overlay.forget();
         let Some(frame) = self.frame.as_mut() else {
@@ -556,7 +556,7 @@ impl Show {
 
     /// `settings` with `detail = "auto"` fitted to this window's size.
     fn generator_settings_for(&self, settings: &Settings) -> Settings {
-        detail::for_frame(settings, self.size.0, self.size.1)
+        detail::for_frame(settings, self.size)
     }
 }
 
@@ -618,7 +618,7 @@ mod tests {
     #[test]
     fn draws_over_time_then_holds_then_advances() {
         let t0 = Instant::now();
-        let mut show = Show::new(small_settings(), None, pacing(), (64, 48), t0);
+        let mut show = Show::new(small_settings(), None, pacing(), Size::new(64, 48), t0);
         assert!(!show.tick(t0).is_empty());
         let half = show.tick(t0 + Duration::from_millis(500));
         assert!(!half.is_empty());
@@ -651,7 +651,7 @@ mod tests {
             seed: None,
             ..small_settings()
         };
-        let mut show = Show::new(first.clone(), None, pacing(), (64, 48), t0);
+        let mut show = Show::new(first.clone(), None, pacing(), Size::new(64, 48), t0);
         let seed = |show: &Show| show.current().and_then(|m| m.seed).unwrap();
         let one = seed(&show);
         assert!(
@@ -679,9 +679,12 @@ mod tests {
     #[test]
     fn resize_redraws_fully_at_the_new_size() {
         let t0 = Instant::now();
-        let mut show = Show::new(small_settings(), None, pacing(), (64, 48), t0);
-        assert!(show.resize((100, 30), t0).is_empty(), "drawn before done");
-        assert_eq!(show.size(), (100, 30));
+        let mut show = Show::new(small_settings(), None, pacing(), Size::new(64, 48), t0);
+        assert!(
+            show.resize(Size::new(100, 30), t0).is_empty(),
+            "drawn before done"
+        );
+        assert_eq!(show.size(), Size::new(100, 30));
         let damage = show.settle(t0);
         assert_eq!(
             damage,
@@ -706,8 +709,8 @@ mod tests {
     #[test]
     fn resizes_during_a_redraw_make_one_more_at_the_last_size() {
         let t0 = Instant::now();
-        let mut show = Show::new(small_settings(), None, pacing(), (64, 48), t0);
-        for size in [(100, 30), (80, 60), (70, 50)] {
+        let mut show = Show::new(small_settings(), None, pacing(), Size::new(64, 48), t0);
+        for size in [Size::new(100, 30), Size::new(80, 60), Size::new(70, 50)] {
             show.resize(size, t0);
         }
         assert!(
@@ -731,10 +734,10 @@ mod tests {
     #[test]
     fn after_a_resize_the_redrawn_mountain_is_held() {
         let t0 = Instant::now();
-        let mut show = Show::new(small_settings(), None, pacing(), (64, 48), t0);
+        let mut show = Show::new(small_settings(), None, pacing(), Size::new(64, 48), t0);
         show.tick(t0 + Duration::from_millis(1000));
         let t1 = t0 + Duration::from_millis(1200);
-        show.resize((80, 60), t1);
+        show.resize(Size::new(80, 60), t1);
         show.settle(t1);
         assert!(
             show.tick(t1).is_empty(),
@@ -749,10 +752,10 @@ mod tests {
     #[test]
     fn a_redraw_runs_beside_the_event_loop_and_a_tick_shows_it() {
         let t0 = Instant::now();
-        let mut show = Show::new(small_settings(), None, pacing(), (64, 48), t0);
+        let mut show = Show::new(small_settings(), None, pacing(), Size::new(64, 48), t0);
         show.tick(t0 + Duration::from_millis(1000));
         let t1 = t0 + Duration::from_millis(1200);
-        assert!(show.resize((90, 40), t1).is_empty());
+        assert!(show.resize(Size::new(90, 40), t1).is_empty());
         let old = show.frame().map(|f| (f.width(), f.height()));
         assert_eq!(
             old,
@@ -786,7 +789,7 @@ mod tests {
     #[test]
     fn a_held_slide_lets_its_heights_go_until_they_are_wanted() {
         let t0 = Instant::now();
-        let mut show = Show::new(small_settings(), None, pacing(), (64, 48), t0);
+        let mut show = Show::new(small_settings(), None, pacing(), Size::new(64, 48), t0);
         let made = Heightfield::clone(&show.current().unwrap().field);
         let shown = Arc::downgrade(&show.current().unwrap().field);
         show.tick(t0 + Duration::from_millis(500));
@@ -803,7 +806,7 @@ mod tests {
             "made again differently"
         );
         let t1 = t0 + Duration::from_millis(1500);
-        show.resize((70, 50), t1);
+        show.resize(Size::new(70, 50), t1);
         show.settle(t1);
         let mut full = Frame::new(70, 50).unwrap();
         crate::render::render_full(&made, show.settings(), &mut full);
@@ -814,10 +817,10 @@ mod tests {
     #[test]
     fn zero_size_has_no_frame_and_does_not_panic() {
         let t0 = Instant::now();
-        let mut show = Show::new(small_settings(), None, pacing(), (0, 0), t0);
+        let mut show = Show::new(small_settings(), None, pacing(), Size::new(0, 0), t0);
         assert!(show.frame().is_none());
         assert!(show.tick(t0 + Duration::from_secs(5)).is_empty());
-        show.resize((10, 10), t0);
+        show.resize(Size::new(10, 10), t0);
         assert!(!show.settle(t0).is_empty());
     }
 
@@ -832,7 +835,13 @@ mod tests {
             generated: false,
             recorded: None,
         };
-        let mut show = Show::new(small_settings(), Some(opened), pacing(), (32, 32), t0);
+        let mut show = Show::new(
+            small_settings(),
+            Some(opened),
+            pacing(),
+            Size::new(32, 32),
+            t0,
+        );
         show.advance(t0);
         let shown = show.current().unwrap();
         assert_eq!(shown.seed, None);
@@ -856,18 +865,24 @@ mod tests {
         };
         let drawn = opened.drawn_with(&small_settings());
         assert_eq!(drawn, made);
-        let full = |s: &Settings, (w, h): (u32, u32)| {
-            let mut frame = Frame::new(w, h).unwrap();
+        let full = |s: &Settings, size: Size| {
+            let mut frame = Frame::new(size.width, size.height).unwrap();
             crate::render::render_full(&field, s, &mut frame);
             frame
         };
-        let mut show = Show::new(small_settings(), Some(opened), pacing(), (64, 48), t0);
+        let mut show = Show::new(
+            small_settings(),
+            Some(opened),
+            pacing(),
+            Size::new(64, 48),
+            t0,
+        );
         show.tick(t0 + Duration::from_millis(1000));
-        assert!(show.frame() == Some(&full(&made, (64, 48))));
-        assert!(show.frame() != Some(&full(show.settings(), (64, 48))));
-        show.resize((50, 40), t0);
+        assert!(show.frame() == Some(&full(&made, Size::new(64, 48))));
+        assert!(show.frame() != Some(&full(show.settings(), Size::new(64, 48))));
+        show.resize(Size::new(50, 40), t0);
         show.settle(t0);
-        assert!(show.frame() == Some(&full(&made, (50, 40))));
+        assert!(show.frame() == Some(&full(&made, Size::new(50, 40))));
     }
 
     #[test]
@@ -879,7 +894,13 @@ mod tests {
             generated: false,
             recorded: None,
         };
-        let mut show = Show::new(small_settings(), Some(opened), pacing(), (32, 32), t0);
+        let mut show = Show::new(
+            small_settings(),
+            Some(opened),
+            pacing(),
+            Size::new(32, 32),
+            t0,
+        );
         show.new_mountain(t0);
         let shown = show.current().unwrap();
         assert_eq!((shown.seed, shown.field.exponent()), (Some(7), 5));
@@ -888,7 +909,7 @@ mod tests {
     #[test]
     fn an_opened_data_set_stays_on_screen_until_n() {
         let t0 = Instant::now();
-        let mut show = Show::new(small_settings(), None, pacing(), (32, 32), t0);
+        let mut show = Show::new(small_settings(), None, pacing(), Size::new(32, 32), t0);
         let mut field = Heightfield::flat(4, 100.0);
         field.set(3, 3, 9.0);
         let opened = Mountain {
@@ -912,7 +933,7 @@ mod tests {
     #[test]
     fn terrain_changes_apply_to_the_next_mountain() {
         let t0 = Instant::now();
-        let mut show = Show::new(small_settings(), None, pacing(), (32, 32), t0);
+        let mut show = Show::new(small_settings(), None, pacing(), Size::new(32, 32), t0);
         let mut s = small_settings();
         s.detail = Detail::Level(6);
         assert!(show.change_settings(s, Change::Next, t0).is_empty());
@@ -929,7 +950,7 @@ mod tests {
     #[test]
     fn low_detail_remakes_the_mountain_on_screen() {
         let t0 = Instant::now();
-        let mut show = Show::new(small_settings(), None, pacing(), (32, 32), t0);
+        let mut show = Show::new(small_settings(), None, pacing(), Size::new(32, 32), t0);
         let before = show.current().unwrap().field.clone();
         let mut s = small_settings();
         s.cragginess = 128;
@@ -956,7 +977,7 @@ mod tests {
     #[test]
     fn display_off_stops_all_work_and_a_fresh_slide_follows() {
         let t0 = Instant::now();
-        let mut show = Show::new(small_settings(), None, pacing(), (64, 48), t0);
+        let mut show = Show::new(small_settings(), None, pacing(), Size::new(64, 48), t0);
         show.tick(t0 + Duration::from_millis(300));
         let drawn = show.slideshow.strips_done();
         assert!(show.set_display(false, t0).is_empty());
@@ -964,7 +985,10 @@ mod tests {
         assert_eq!(show.wake_at(t0), None);
         assert!(show.tick(t0 + Duration::from_secs(60)).is_empty());
         assert_eq!(show.slideshow.strips_done(), drawn, "drew while off");
-        assert!(show.resize((80, 60), t0).is_empty(), "redrew while off");
+        assert!(
+            show.resize(Size::new(80, 60), t0).is_empty(),
+            "redrew while off"
+        );
         assert!(show.redraw.is_none());
         let t1 = t0 + Duration::from_secs(61);
         let fresh = show.set_display(true, t1);
@@ -979,7 +1003,7 @@ mod tests {
     #[test]
     fn a_power_hold_makes_nothing_until_the_power_returns() {
         let t0 = Instant::now();
-        let mut show = Show::new(small_settings(), None, pacing(), (64, 48), t0);
+        let mut show = Show::new(small_settings(), None, pacing(), Size::new(64, 48), t0);
         show.set_economy(Economy::Hold);
         show.tick(t0 + Duration::from_millis(1000));
         assert!(show.slideshow.is_holding());
@@ -998,7 +1022,7 @@ mod tests {
     #[test]
     fn a_blank_show_stays_black_and_asleep() {
         let t0 = Instant::now();
-        let mut show = Show::blank((8, 8), t0);
+        let mut show = Show::blank(Size::new(8, 8), t0);
         assert_eq!(show.wake_at(t0), None);
         assert!(show.tick(t0 + Duration::from_secs(60)).is_empty());
         assert!(show.frame().unwrap().pixels().iter().all(|&p| p == 0));

@@ -9,7 +9,7 @@ use std::time::Instant;
 use super::heads::Head;
 use super::screen::Screen;
 use super::show::Show;
-use crate::render::{Damage, Frame, Rect};
+use crate::render::{Damage, Frame, Rect, Size};
 
 /// The smallest rectangle of the desktop holding every head: where the
 /// span's frame lies. `None` without heads.
@@ -95,9 +95,9 @@ pub(super) struct Span {
 
 impl Span {
     /// A span over `heads` drawing `show`, made for their bounding rectangle.
-    pub(super) fn new(heads: &[Head], make: impl FnOnce((u32, u32)) -> Show) -> Option<Span> {
+    pub(super) fn new(heads: &[Head], make: impl FnOnce(Size) -> Show) -> Option<Span> {
         let whole = bounds(heads)?;
-        let show = make((whole.width, whole.height));
+        let show = make(Size::new(whole.width, whole.height));
         let heads = heads.to_vec();
         Some(Span { show, whole, heads })
     }

@@ -14,7 +14,7 @@ use super::widgets::{
     dotted, etched, fill, outline, scroll_bar, text, tick, typed_text,
 };
 use super::wrap::{fit, fit_middle, help_then_message, wrap};
-use crate::render::{Frame, Rect};
+use crate::render::{Frame, Rect, Size};
 use crate::settings::keys::{self, KEYS, Value};
 
 /// Everything the screen shows besides the model.
@@ -118,12 +118,12 @@ fn draw_preview(frame: &mut Frame, layout: &Layout, extras: &Extras<'_>) {
 }
 
 /// The preview picture's size for a layout.
-pub fn preview_size(layout: &Layout) -> (u32, u32) {
+pub fn preview_size(layout: &Layout) -> Size {
     let p = layout.preview;
     let b = layout.px(2);
     let w = (p.x1 - p.x0).saturating_sub(2 * b);
     let h = (p.y1 - p.y0).saturating_sub(2 * b + layout.px(ROW_H));
-    (w.max(1), h.max(1))
+    Size::new(w.max(1), h.max(1))
 }
 
 fn draw_row(frame: &mut Frame, layout: &Layout, model: &Model, i: usize) {

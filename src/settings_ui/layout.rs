@@ -8,7 +8,7 @@ use super::font::ADVANCE;
 use super::help;
 use super::list_view::{BarPart, Line, ListView};
 use super::values::{self, Widget};
-use crate::render::Rect;
+use crate::render::{Rect, Size};
 use crate::settings::keys::{self, KEYS, Key};
 
 /// Logical size the window asks for.
@@ -147,10 +147,8 @@ pub enum Hit {
 pub struct Layout {
     /// Whole pixels per logical pixel (1 or more).
     pub scale: u32,
-    /// Frame width in pixels.
-    pub width: u32,
-    /// Frame height in pixels.
-    pub height: u32,
+    /// Frame size in pixels.
+    pub size: Size,
     /// Left edge of the settings panel, pixels.
     pub panel_x: u32,
     /// The settings list (headings and rows) and the window it is seen
@@ -170,15 +168,19 @@ pub struct Layout {
 }
 
 /// The whole scale for a window's scale factor (1.25 -> 1, 1.5 and 2 -> 2),
-/// lowered until the window fits on a monitor of `monitor` pixels (a
+/// lowered until the window fits on a monitor of `monitor` size (a
 /// 1920x1080 screen at 150% gets 1, not a window taller than the screen).
-pub fn whole_scale(scale_factor: f64, monitor: Option<(u32, u32)>) -> u32 {
+pub fn whole_scale(scale_factor: f64, monitor: Option<Size>) -> u32 {
     let mut s = if scale_factor.is_finite() {
         scale_factor.round().clamp(1.0, 8.0) as u32
     } else {
         1
     };
-    if let Some((mw, mh)) = monitor {
+    if let Some(Size {
+        width: mw,
+        height: mh,
+    }) = monitor
+    {
         // Leave room for a title bar and a task bar.
         while s > 1 && (WINDOW_W * s > mw || (WINDOW_H + 60) * s > mh) {
             s -= 1;
@@ -201,21 +203,21 @@ fn lines_of(keys: &[Key]) -> Vec<Line> {
 }
 
 impl Layout {
-    /// Plans a `width` x `height` frame at whole `scale`, scrolled to the
+    /// Plans a frame of `size` at whole `scale`, scrolled to the
     /// top. A frame smaller than the window may be made keeps the smallest
     /// layout, clipped.
-    pub fn new(width: u32, height: u32, scale: u32) -> Layout {
-        Layout::with_keys(width, height, scale, KEYS)
+    pub fn new(size: Size, scale: u32) -> Layout {
+        Layout::with_keys(size, scale, KEYS)
     }
 
     /// `new` for a list of `keys` other than the key table's (tests plan
     /// the keys still to come). The list shows as many whole lines as fit
     /// above the longest help, and scrolls when they are not all shown;
     /// extra height goes to the preview, extra width too.
-    pub fn with_keys(width: u32, height: u32, scale: u32, keys: &[Key]) -> Layout {
+    pub fn with_keys(size: Size, scale: u32, keys: &[Key]) -> Layout {
         let s = scale.max(1);
-        let w_log = (width / s).max(MIN_W);
-        let h_log = (height / s).max(MIN_H);
+        let w_log = (size.width / s).max(MIN_W);
+        let h_log = (size.height / s).max(MIN_H);
         let panel = w_log - MARGIN - PANEL_W;
         let by = h_log - MARGIN - BUTTON_H;
         let file_y = by - FILE_H;
@@ -253,8 +255,7 @@ impl Layout {
         let area = Rect::sized(panel, MARGIN, PANEL_W, shown * ROW_H);
         Layout {
             scale: s,
-            width,
-            height,
+            size,
             panel_x: panel * s,
             list: ListView::new(lines, area, ROW_H, SCROLL_W, s),
             help_y: help_y * s,

@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use crate::mountain::Mountain;
-use crate::render::{Frame, Painter};
+use crate::render::{Frame, Painter, Size};
 use crate::settings::{Detail, Settings};
 use crate::terrain::Heightfield;
 use crate::terrain::heightmap::GeneratorParams;
@@ -52,8 +52,8 @@ impl Preview {
 
     /// The settings the preview generates with: the screen's, with the
     /// detail fitted to the preview's size and capped.
-    fn preview_settings(settings: &Settings, size: (u32, u32)) -> Settings {
-        let mut s = crate::render::detail::for_frame(settings, size.0, size.1);
+    fn preview_settings(settings: &Settings, size: Size) -> Settings {
+        let mut s = crate::render::detail::for_frame(settings, size);
         if let Detail::Level(n) = s.detail {
             s.detail = Detail::Level(n.min(MAX_PREVIEW_DETAIL));
         }
@@ -61,7 +61,7 @@ impl Preview {
     }
 
     /// A new mountain from `seed` under `settings`.
-    pub fn generate(&mut self, settings: &Settings, seed: u64, size: (u32, u32)) {
+    pub fn generate(&mut self, settings: &Settings, seed: u64, size: Size) {
         let made = Mountain::from_seed(&Self::preview_settings(settings, size), seed);
         self.field = Some(made.field);
         self.seed = made.seed;
@@ -72,7 +72,7 @@ impl Preview {
 
     /// The same mountain made again (same seed) under new settings; a data
     /// set from a file is only repainted.
-    pub fn regenerate(&mut self, settings: &Settings, size: (u32, u32)) {
+    pub fn regenerate(&mut self, settings: &Settings, size: Size) {
         match (self.seed, &self.file) {
             (Some(seed), None) => self.generate(settings, seed, size),
             _ => self.repaint(settings, size),
@@ -80,12 +80,7 @@ impl Preview {
     }
 
     /// Shows a data set from disk.
-    pub fn open(
-        &mut self,
-        path: &Path,
-        settings: &Settings,
-        size: (u32, u32),
-    ) -> Result<(), String> {
+    pub fn open(&mut self, path: &Path, settings: &Settings, size: Size) -> Result<(), String> {
         let (opened, _notes) = Mountain::open(path)?;
         self.field = Some(opened.field);
         self.seed = opened.seed;
@@ -96,14 +91,13 @@ impl Preview {
     }
 
     /// Starts drawing the current mountain again, from the back.
-    pub fn repaint(&mut self, settings: &Settings, size: (u32, u32)) {
-        let (w, h) = size;
+    pub fn repaint(&mut self, settings: &Settings, size: Size) {
         let drawn = self.drawn_with(settings);
         self.painter = self
             .field
             .as_ref()
-            .map(|f| Painter::at_hour(f.clone(), &drawn, (w, h), crate::solar::now_for(&drawn)));
-        self.picture = Frame::new(w, h);
+            .map(|f| Painter::at_hour(f.clone(), &drawn, size, crate::solar::now_for(&drawn)));
+        self.picture = Frame::new(size.width, size.height);
     }
 
     /// The settings the mountain shown is drawn with under the screen's

@@ -8,7 +8,7 @@ use super::draw::{self, Extras};
 use super::layout::Layout;
 use super::model::{Effect, Input, Model};
 use super::preview::Preview;
-use crate::render::Frame;
+use crate::render::{Frame, Size};
 use crate::settings::{Settings, load, paths, save};
 
 /// What the window should do after an input.
@@ -42,16 +42,16 @@ fn contents(path: &Path) -> Option<Vec<u8>> {
 
 impl Screen {
     /// A screen for `settings` read from `config` (with its `problems`),
-    /// drawn into `width` x `height` pixels at whole `scale`.
+    /// drawn into a frame of `size` at whole `scale`.
     pub fn new(
         settings: Settings,
         problems: &[load::Problem],
         config: PathBuf,
-        size: (u32, u32),
+        size: Size,
         scale: u32,
     ) -> Screen {
-        let layout = Layout::new(size.0, size.1, scale);
-        let frame = Frame::new(size.0.max(1), size.1.max(1)).unwrap_or_else(tiny_frame);
+        let layout = Layout::new(size, scale);
+        let frame = Frame::new(size.width.max(1), size.height.max(1)).unwrap_or_else(tiny_frame);
         let mut screen = Screen {
             model: Model::new(settings, problems),
             layout,
@@ -78,13 +78,13 @@ impl Screen {
 
     /// Follows a new window size or scale: the list keeps its place as far
     /// as it can, and the focused row stays in sight.
-    pub fn resize(&mut self, width: u32, height: u32, scale: u32) {
-        let Some(frame) = Frame::new(width, height) else {
+    pub fn resize(&mut self, size: Size, scale: u32) {
+        let Some(frame) = Frame::new(size.width, size.height) else {
             return;
         };
         self.frame = frame;
         let first = self.layout.list.first();
-        self.layout = Layout::new(width, height, scale);
+        self.layout = Layout::new(size, scale);
         self.layout.list.scroll_to(first);
         if let Some(i) = self.model.focused_row() {
             self.layout.reveal_row(i);
@@ -93,7 +93,7 @@ impl Screen {
             .repaint(&self.model.settings, self.preview_size());
     }
 
-    fn preview_size(&self) -> (u32, u32) {
+    fn preview_size(&self) -> Size {
         draw::preview_size(&self.layout)
     }
 

@@ -12,6 +12,7 @@ use winit::keyboard::{Key, ModifiersState, NamedKey};
 use winit::window::{Window, WindowId};
 
 use crate::platform::{self, Backend};
+use crate::render::Size;
 
 use super::layout::{MIN_H, MIN_W, WINDOW_H, WINDOW_W, whole_scale};
 use super::model::Input;
@@ -21,7 +22,7 @@ use super::screen::{Next, Screen};
 const FILE_POLL: Duration = Duration::from_millis(700);
 
 /// Builds the `Screen` once the window's size and scale are known.
-pub type MakeScreen = Box<dyn FnOnce((u32, u32), u32) -> Screen>;
+pub type MakeScreen = Box<dyn FnOnce(Size, u32) -> Screen>;
 
 struct App {
     make: Option<MakeScreen>,
@@ -109,7 +110,10 @@ impl App {
             .unwrap_or(window.inner_size());
         let scale = self.scale;
         if let Some(make) = self.make.take() {
-            self.screen = Some(make((size.width.max(1), size.height.max(1)), scale));
+            self.screen = Some(make(
+                Size::new(size.width.max(1), size.height.max(1)),
+                scale,
+            ));
         }
         self.surface = Some(surface);
         window.request_redraw();
@@ -188,7 +192,7 @@ impl App {
             return;
         };
         let size = w.inner_size();
-        screen.resize(size.width, size.height, self.scale);
+        screen.resize(Size::new(size.width, size.height), self.scale);
         w.request_redraw();
     }
 }
@@ -203,7 +207,7 @@ fn keep_min_size(window: &Window, scale: u32) {
 fn pick_scale(window: &Window) -> u32 {
     let monitor = window
         .current_monitor()
-        .map(|m| (m.size().width, m.size().height));
+        .map(|m| Size::new(m.size().width, m.size().height));
     whole_scale(window.scale_factor(), monitor)
 }
 

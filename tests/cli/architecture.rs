@@ -5,7 +5,8 @@
 //! should be one, or hides a piece both need; an arrow back up ties a
 //! stage to one that comes later; a platform's `cfg` in a neutral file
 //! spreads one platform's knowledge over the house. This finds each as
-//! soon as it is written.
+//! soon as it is written; a frame size written as two numbers again, not
+//! `render::Size`, is found the same way.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
@@ -412,4 +413,164 @@ fn only_the_platform_rooms_use_platform_crates() {
         inside > 10,
         "only {inside} uses in src/platform: the scan is broken"
     );
+}
+
+/// The code of a file with comments and strings gone and every run of
+/// white space one space, so a signature rustfmt broke over lines reads
+/// as one.
+fn one_line(text: &str) -> String {
+    code(text).split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// The name a type at the end of `before` belongs to: the field, binding
+/// or variant before `: `, or the function before `(...) -> `; wrappers
+/// (`Option<`, `Result<`, `&`) and tuple patterns (`(w, h)`) kept whole.
+fn name_before(before: &str) -> &str {
+    let mut s = before.trim_end();
+    loop {
+        let t = s.trim_end();
+        let t = ["Option<", "Result<", "&", "->", ":"]
+            .iter()
+            .find_map(|w| t.strip_suffix(w))
+            .unwrap_or(t);
+        if t.len() == s.len() {
+            break;
+        }
+        s = t.trim_end();
+    }
+    // A function's result: the name before its parameters; a pattern
+    // (`(width, height)`): the pattern.
+    if s.ends_with(')') || s.ends_with(']') {
+        let (open, close) = if s.ends_with(')') {
+            ('(', ')')
+        } else {
+            ('[', ']')
+        };
+        let mut depth = 0;
+        for (i, c) in s.char_indices().rev() {
+            depth += i32::from(c == close) - i32::from(c == open);
+            if depth == 0 {
+                let pattern = &s[i..];
+                let head = s[..i].trim_end();
+                let name_start = head
+                    .rfind(|c: char| !(c.is_alphanumeric() || c == '_'))
+                    .map_or(0, |j| j + 1);
+                let name = &head[name_start..];
+                let is_fn = head[..name_start].trim_end().ends_with("fn");
+                return if is_fn { name } else { pattern };
+            }
+        }
+    }
+    let start = s
+        .rfind(|c: char| !(c.is_alphanumeric() || c == '_'))
+        .map_or(0, |j| j + 1);
+    &s[start..]
+}
+
+/// Each place in `text` that spells a size the old ways: `width: u32,
+/// height: u32` (or `w: u32, h: u32`), or a `(u32, u32)` or `[u32; 2]`
+/// belonging to a name that says size, width or height (`size:
+/// (u32, u32)`, `fn preview_size() -> (u32, u32)`, `(width, height):
+/// (u32, u32)`, `Resized(u32, u32)`).
+fn old_size_spellings(text: &str) -> Vec<String> {
+    let code = one_line(text);
+    let mut found = Vec::new();
+    for pair in ["width: u32, height: u32", "w: u32, h: u32"] {
+        for (at, _) in code.match_indices(pair) {
+            let word_start =
+                at == 0 || !code[..at].ends_with(|c: char| c.is_alphanumeric() || c == '_');
+            if word_start {
+                found.push(pair.to_string());
+            }
+        }
+    }
+    for ty in ["(u32, u32)", "[u32; 2]"] {
+        for (at, _) in code.match_indices(ty) {
+            let name = name_before(&code[..at]).to_lowercase();
+            let sized = ["size", "width", "height"].iter().any(|w| name.contains(w))
+                || name.replace(' ', "") == "(w,h)";
+            if sized {
+                found.push(format!("{name}: {ty}"));
+            }
+        }
+    }
+    found
+}
+
+/// Where a frame's size may still be two numbers, and why: none of them
+/// is a frame's, window's or monitor's size.
+const NOT_FRAME_SIZES: &[(&str, &str, usize)] = &[
+    (
+        "terrain/heightmap/fit.rs",
+        "a heightmap image's sides, cropped to the grid (terrain stands below render)",
+        1,
+    ),
+    (
+        "terrain/heightmap/decode.rs",
+        "a heightmap image's sides, checked against its bytes",
+        2,
+    ),
+    (
+        "saver/heads.rs",
+        "a test's monitor rectangle on the desktop (x, y, width, height)",
+        1,
+    ),
+    (
+        "saver/span.rs",
+        "a test's monitor rectangle on the desktop (x, y, width, height)",
+        1,
+    ),
+];
+
+#[test]
+fn a_frame_size_is_a_size() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let base = src.join("render").join("base");
+    let mut files = Vec::new();
+    sources(&src, &mut files);
+    files.sort();
+    let mut wrong = Vec::new();
+    let mut seen = 0;
+    for file in files.iter().filter(|f| !f.starts_with(&base)) {
+        let name = file.strip_prefix(&src).unwrap().display().to_string();
+        let name = name.replace('\\', "/");
+        let text = std::fs::read_to_string(file).unwrap();
+        seen += code(&text).matches("u32").count();
+        let spelt = old_size_spellings(&text);
+        let allowed = NOT_FRAME_SIZES
+            .iter()
+            .find(|(f, ..)| *f == name)
+            .map_or(0, |(.., n)| *n);
+        if spelt.len() > allowed {
+            wrong.push(format!(
+                "src/{name} ({allowed} allowed): {}",
+                spelt.join("; ")
+            ));
+        }
+    }
+    assert!(
+        wrong.is_empty(),
+        "a frame's size written as two numbers, not render::Size (src/render/base/size.rs):\n{}",
+        wrong.join("\n")
+    );
+    // The scan reads the tree: one that saw no u32 is broken.
+    assert!(seen > 100, "only {seen} u32s in src: the scan is broken");
+}
+
+#[test]
+fn the_size_scan_knows_each_old_spelling() {
+    let old = "fn f(a: u8, width: u32,\n    height: u32) {}\n\
+               struct S { size: (u32, u32), monitor_size: Option<[u32; 2]> }\n\
+               fn preview_size(l: &L) -> (u32, u32) { let (w, h): (u32, u32) = g(); }\n\
+               enum E { Resized(u32, u32) }";
+    assert_eq!(
+        old_size_spellings(old).len(),
+        6,
+        "{:?}",
+        old_size_spellings(old)
+    );
+    let not_sizes = "fn f(span: (u32, u32), x: u32, y: u32) -> Option<(u32, u32)> {}\n\
+                     fn columns(&self, span: (u32, u32)) -> (u32, u32) {}\n\
+                     let plot = |x, y| (); fn g(p: impl FnMut(u32, u32)) {} // size: (u32, u32)";
+    assert_eq!(old_size_spellings(not_sizes), Vec::<String>::new());
 }

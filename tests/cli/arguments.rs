@@ -4,6 +4,7 @@ use std::ffi::OsString;
 use std::path::PathBuf;
 
 use mountains::cli::{self, Mode};
+use mountains::render::Size;
 
 fn parse(args: &[&str]) -> Result<cli::Invocation, cli::UsageError> {
     let args: Vec<OsString> = args.iter().map(OsString::from).collect();
@@ -82,16 +83,14 @@ fn subcommands_take_output_and_size() {
     assert_eq!(
         m,
         Mode::Render {
-            width: 640,
-            height: 480,
+            size: Size::new(640, 480),
             output: "x.png".into()
         }
     );
     assert_eq!(
         mode(&["render", "-o", "x.png"]),
         Mode::Render {
-            width: 1920,
-            height: 1080,
+            size: Size::new(1920, 1080),
             output: "x.png".into()
         }
     );

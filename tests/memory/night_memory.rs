@@ -2,6 +2,7 @@
 //! out where they are drawn, the moon is the sun's light in other
 //! colours, and the night's land and water tables replace the day's.
 
+use mountains::render::Size;
 use mountains::render::{Frame, detail, render_full};
 use mountains::settings::{Settings, Sun};
 use mountains::terrain;
@@ -15,7 +16,7 @@ fn peak_of_drawing(sun: Sun) -> usize {
         sun,
         ..Settings::default()
     };
-    let s = detail::for_frame(&s, 3840, 2160);
+    let s = detail::for_frame(&s, Size::new(3840, 2160));
     let field = terrain::generate(&s, 42);
     let mut frame = Frame::new(3840, 2160).unwrap();
     counting::peak_of(|| render_full(&field, &s, &mut frame)).1

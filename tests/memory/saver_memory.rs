@@ -6,6 +6,7 @@
 
 use std::time::{Duration, Instant};
 
+use mountains::render::Size;
 use mountains::saver::show::Show;
 use mountains::saver::slideshow::Pacing;
 use mountains::settings::Settings;
@@ -27,7 +28,7 @@ fn a_4k_slide_show_holds_one_field_beside_its_frame() {
     let at = |ms: u64| t0 + Duration::from_millis(ms);
     let pacing = Pacing::from_seconds(1.0, 2.0, true);
     let before = counting::reset_peak();
-    let mut show = Show::new(settings, None, pacing, (3840, 2160), t0);
+    let mut show = Show::new(settings, None, pacing, Size::new(3840, 2160), t0);
     assert_eq!(
         show.current().map(|m| m.field.size()),
         Some(2049),

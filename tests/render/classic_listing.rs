@@ -6,6 +6,7 @@
 //! oblique view. docs/classics.md works the light through by hand.
 
 use glam::{DVec3, Vec3};
+use mountains::render::Size;
 use mountains::render::facts::SceneFacts;
 use mountains::render::palette::Palette;
 use mountains::render::{Frame, render_full};
@@ -187,7 +188,7 @@ fn the_listings_light_on_a_flat_face_is_0_734_from_the_back_right() {
     assert!((i - 0.7341).abs() < 1e-3, "flat face: {i}");
     // Our light is the direction the listing's brightness grows towards.
     let f = field();
-    let lighting = SceneFacts::of(&f, &settings(), 64, 48).lighting;
+    let lighting = SceneFacts::of(&f, &settings(), Size::new(64, 48)).lighting;
     assert!(lighting.classic);
     assert!(
         lighting.sun.x > 0.5 && lighting.sun.y > 0.5,
@@ -224,7 +225,7 @@ fn a_rendered_face_has_the_listings_brightness_and_split() {
     let (w, h) = (1280, 960);
     let mut frame = Frame::new(w, h).unwrap();
     render_full(&f, &s, &mut frame);
-    let facts = SceneFacts::of(&f, &s, w, h);
+    let facts = SceneFacts::of(&f, &s, Size::new(w, h));
     let palette = Palette::new(&s, &f);
     let listing = Listing::new(w as f64);
     let mut checked = 0;
@@ -401,7 +402,7 @@ fn a_rendered_face_has_the_listings_colour() {
     let (w, h) = (1280, 960);
     let mut frame = Frame::new(w, h).unwrap();
     render_full(&f, &s, &mut frame);
-    let facts = SceneFacts::of(&f, &s, w, h);
+    let facts = SceneFacts::of(&f, &s, Size::new(w, h));
     assert_eq!(facts.sky, (0, 0));
     assert_eq!(frame.get(2, 2), 0, "the window behind the land is black");
     let listing = Listing::new(w as f64);
@@ -467,7 +468,7 @@ fn the_listings_water_is_one_light_blue() {
 fn the_looks_tilt_and_relief_are_the_listings() {
     let f = field();
     let rise = |s: &Settings| {
-        let facts = SceneFacts::of(&f, s, 1280, 960);
+        let facts = SceneFacts::of(&f, s, Size::new(1280, 960));
         let cell = f.extent() / (f.size() - 1) as f32;
         let o = facts.place(0.5, 0.5, 0.0);
         // One grid step back, one grid step's length up.
@@ -549,7 +550,7 @@ fn a_face_crossing_the_water_line_is_coloured_part_by_part_as_the_listing() {
     let (w, h) = (1280, 960);
     let mut frame = Frame::new(w, h).unwrap();
     render_full(&f, &s, &mut frame);
-    let facts = SceneFacts::of(&f, &s, w, h);
+    let facts = SceneFacts::of(&f, &s, Size::new(w, h));
     let listing = Listing::new(w as f64);
     let normal_height = 10000.0 * s.height as f64;
     let highest = f.min_max().1 as f64;
@@ -626,7 +627,7 @@ fn a_rendered_mono_face_has_the_listings_pattern() {
     let (w, h) = (1280, 960);
     let mut frame = Frame::new(w, h).unwrap();
     render_full(&f, &s, &mut frame);
-    let facts = SceneFacts::of(&f, &s, w, h);
+    let facts = SceneFacts::of(&f, &s, Size::new(w, h));
     assert_eq!(frame.get(2, 2), 0, "the window behind the land is black");
     let listing = Listing::new(w as f64);
     let normal_height = 10000.0 * s.height as f64;

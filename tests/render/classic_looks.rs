@@ -5,6 +5,7 @@
 
 use std::collections::{BTreeMap, BTreeSet};
 
+use mountains::render::Size;
 use mountains::render::facings;
 use mountains::render::palette::Palette;
 use mountains::render::{Frame, render_full};
@@ -545,7 +546,7 @@ fn the_essays_camera_sees_the_square_as_its_projection_does() {
         .into_iter()
         .chain((1..8).map(|q| (q * n / 8, (8 - q) * n / 9)));
         for (w, h, shift) in [(1000, 600, 0.0), (1280, 600, 140.0)] {
-            let facts = SceneFacts::of(&field, &s, w, h);
+            let facts = SceneFacts::of(&field, &s, Size::new(w, h));
             for (i, j) in points.clone() {
                 let z = field.get(i, j);
                 let rise = (z as f64 - base) * k;
@@ -619,7 +620,7 @@ fn every_look_steps_to_the_same_pixels_as_the_full_frame() {
         for budget in [1, 5, usize::MAX] {
             let mut frame = Frame::new(w, h).unwrap();
             frame.clear(0x00ab_cdef);
-            let mut p = Painter::new(Arc::new(field.clone()), &s, w, h);
+            let mut p = Painter::new(Arc::new(field.clone()), &s, Size::new(w, h));
             while !p.is_done() {
                 p.step(&mut frame, budget);
             }
@@ -669,7 +670,7 @@ fn fl3s_filled_mode_hangs_green_sides_from_the_front_edge() {
     let (w, h) = (640, 360);
     let mut frame = Frame::new(w, h).unwrap();
     render_full(&field, &s, &mut frame);
-    let facts = SceneFacts::of(&field, &s, w, h);
+    let facts = SceneFacts::of(&field, &s, Size::new(w, h));
     let n = field.size() - 1;
     let mut sides = 0;
     for k in 1..8 {

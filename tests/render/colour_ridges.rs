@@ -1,5 +1,6 @@
 //! Ridges mode: deterministic, strip by strip, any frame size.
 
+use mountains::render::Size;
 use mountains::render::ridges::Ridges;
 use mountains::render::{Frame, Rect};
 use mountains::settings::{ColorMode, Settings};
@@ -32,7 +33,10 @@ fn draw_all(r: &Ridges, frame: &mut Frame) -> Vec<Rect> {
 
 fn render(field: &Heightfield, w: u32, h: u32) -> Frame {
     let mut frame = Frame::new(w, h).unwrap();
-    draw_all(&Ridges::new(field, &settings(), w, h), &mut frame);
+    draw_all(
+        &Ridges::new(field, &settings(), Size::new(w, h)),
+        &mut frame,
+    );
     frame
 }
 
@@ -46,7 +50,7 @@ fn same_field_same_picture_other_field_other_picture() {
 #[test]
 fn strips_in_order_give_the_whole_picture_over_anything() {
     let f = field(0.5);
-    let r = Ridges::new(&f, &settings(), 300, 180);
+    let r = Ridges::new(&f, &settings(), Size::new(300, 180));
     assert!(r.strips_total() >= 4);
     let whole = render(&f, 300, 180);
     let mut frame = Frame::new(300, 180).unwrap();
@@ -60,7 +64,7 @@ fn strips_in_order_give_the_whole_picture_over_anything() {
 #[test]
 fn each_strip_reports_every_pixel_it_changed() {
     let f = field(0.2);
-    let r = Ridges::new(&f, &settings(), 257, 143);
+    let r = Ridges::new(&f, &settings(), Size::new(257, 143));
     let mut frame = Frame::new(257, 143).unwrap();
     for i in 0..r.strips_total() {
         let before = frame.clone();
@@ -90,7 +94,7 @@ fn luminance(c: u32) -> f32 {
 #[test]
 fn far_ranges_are_paler_and_bluer_than_near_ones() {
     let f = field(0.3);
-    let r = Ridges::new(&f, &settings(), 400, 300);
+    let r = Ridges::new(&f, &settings(), Size::new(400, 300));
     let mut frame = Frame::new(400, 300).unwrap();
     let mut crest = Vec::new();
     for i in 0..r.strips_total() {
@@ -124,7 +128,7 @@ fn far_ranges_are_paler_and_bluer_than_near_ones() {
 
 #[test]
 fn wrong_size_or_index_draws_nothing() {
-    let r = Ridges::new(&field(0.0), &settings(), 64, 48);
+    let r = Ridges::new(&field(0.0), &settings(), Size::new(64, 48));
     let mut other = Frame::new(65, 48).unwrap();
     assert!(r.draw_strip(&mut other, 0).is_empty());
     assert!(other.pixels().iter().all(|&p| p == 0));
@@ -142,10 +146,10 @@ fn tiny_and_huge_frames_and_flat_fields() {
         render(&flat, w, h);
     }
     // No frame can be this size, so nothing may be allocated for it either.
-    let absurd = Ridges::new(&flat, &settings(), u32::MAX, u32::MAX);
+    let absurd = Ridges::new(&flat, &settings(), Size::new(u32::MAX, u32::MAX));
     assert_eq!(
         absurd.strips_total(),
-        Ridges::new(&flat, &settings(), 8, 8).strips_total()
+        Ridges::new(&flat, &settings(), Size::new(8, 8)).strips_total()
     );
     let big = render(&field(0.0), 7680, 2160);
     assert!(big.pixels().iter().any(|&p| p != big.pixels()[0]));
@@ -159,7 +163,7 @@ fn a_higher_height_setting_raises_the_ranges() {
             height,
             ..settings()
         };
-        let r = Ridges::new(&f, &s, 320, 240);
+        let r = Ridges::new(&f, &s, Size::new(320, 240));
         let mut frame = Frame::new(320, 240).unwrap();
         draw_all(&r, &mut frame).last().unwrap().y0
     };

@@ -2,6 +2,7 @@
 
 use std::collections::HashSet;
 
+use mountains::render::Size;
 use mountains::render::raster::{Clip, draw_line, to_fixed};
 use mountains::render::view::{self, View};
 use mountains::render::{Frame, render_full};
@@ -24,8 +25,7 @@ fn edge_pixels(field: &Heightfield, w: u32, h: u32) -> HashSet<(u32, u32)> {
         n,
         field.extent(),
         (&row_top, floor),
-        w,
-        h,
+        Size::new(w, h),
     );
     let at = |x: usize, y: usize| {
         let p = view.project(x as f32, y as f32, field.get(x, y).max(0.0));

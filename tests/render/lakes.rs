@@ -4,6 +4,7 @@
 
 use std::sync::Arc;
 
+use mountains::render::Size;
 use mountains::render::classes::{Class, render_classes};
 use mountains::render::{Frame, Painter, render_full};
 use mountains::settings::{ColorMode, Settings, ViewKind};
@@ -78,7 +79,7 @@ fn stepping_equals_the_full_frame_with_a_lake_from_every_side() {
             render_full(&f, &s, &mut all);
             let mut stepped = Frame::new(160, 120).unwrap();
             stepped.clear(0x00ab_cdef);
-            let mut p = Painter::new(Arc::new(f.clone()), &s, 160, 120);
+            let mut p = Painter::new(Arc::new(f.clone()), &s, Size::new(160, 120));
             while !p.is_done() {
                 p.step(&mut stepped, 3);
             }

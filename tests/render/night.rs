@@ -3,6 +3,7 @@
 //! sky, stars show where the sky is clear and the moon glitters on the
 //! water. The clock's light darkens from day through twilight into night.
 
+use mountains::render::Size;
 use mountains::render::classes::{Class, render_classes};
 use mountains::render::detail::for_frame;
 use mountains::render::hour::SunAt;
@@ -23,7 +24,7 @@ fn night(w: u32, h: u32, clouds: f32) -> Settings {
         clouds: Clouds::Amount(clouds),
         ..Settings::default()
     };
-    for_frame(&s, w, h)
+    for_frame(&s, Size::new(w, h))
 }
 
 fn drawn(field: &Heightfield, s: &Settings, w: u32, h: u32) -> (Frame, Frame) {

@@ -2,6 +2,7 @@
 
 use std::sync::Arc;
 
+use mountains::render::Size;
 use mountains::render::{Frame, Painter, Rect, render_full};
 use mountains::settings::{ColorMode, Settings, ViewKind};
 use mountains::terrain::Heightfield;
@@ -32,7 +33,7 @@ fn stepped(field: &Heightfield, s: &Settings, w: u32, h: u32, budget: usize) -> 
     let mut frame = Frame::new(w, h).unwrap();
     // Start from garbage: the first step must paint every pixel itself.
     frame.clear(0x00ab_cdef);
-    let mut p = Painter::new(Arc::new(field.clone()), s, w, h);
+    let mut p = Painter::new(Arc::new(field.clone()), s, Size::new(w, h));
     let mut steps = 0;
     while !p.is_done() {
         let before = p.strips_done();
@@ -86,7 +87,7 @@ fn finish_equals_the_full_frame_fresh_or_part_way() {
         for begun in [0, 5] {
             let mut frame = Frame::new(160, 120).unwrap();
             frame.clear(0x00ab_cdef);
-            let mut p = Painter::new(Arc::new(f.clone()), &s, 160, 120);
+            let mut p = Painter::new(Arc::new(f.clone()), &s, Size::new(160, 120));
             p.step(&mut frame, begun);
             let damage = p.finish(&mut frame);
             assert!(p.is_done(), "{color:?}: not done after finish");
@@ -115,7 +116,7 @@ fn damage_covers_every_changed_pixel() {
         let s = settings(color, view, 0);
         let (w, h) = (640u32, 240u32);
         let mut frame = Frame::new(w, h).unwrap();
-        let mut p = Painter::new(Arc::new(f.clone()), &s, w, h);
+        let mut p = Painter::new(Arc::new(f.clone()), &s, Size::new(w, h));
         let first = p.step(&mut frame, 1);
         assert_eq!(
             first.bounds(),
@@ -181,7 +182,7 @@ fn frames_of_any_shape_never_panic_and_show_the_mountain() {
 /// The frame with only the sky painted (a painter's first step, no strips).
 fn sky_only(field: &Heightfield, s: &Settings, w: u32, h: u32) -> Frame {
     let mut frame = Frame::new(w, h).unwrap();
-    Painter::new(Arc::new(field.clone()), s, w, h).step(&mut frame, 0);
+    Painter::new(Arc::new(field.clone()), s, Size::new(w, h)).step(&mut frame, 0);
     frame
 }
 
@@ -232,7 +233,7 @@ fn the_mountain_fills_frames_of_every_aspect() {
 fn a_resized_painter_refuses_the_old_frame() {
     let f = Arc::new(field(4));
     let s = Settings::default();
-    let mut p = Painter::new(f.clone(), &s, 200, 100);
+    let mut p = Painter::new(f.clone(), &s, Size::new(200, 100));
     let mut small = Frame::new(100, 50).unwrap();
     assert!(
         p.step(&mut small, 10).is_empty(),
@@ -244,7 +245,7 @@ fn a_resized_painter_refuses_the_old_frame() {
     );
     // A huge frame size plans without per-pixel allocation (the frame
     // itself is what `Frame::new` refuses).
-    let huge = Painter::new(f, &s, 1 << 20, 1 << 20);
+    let huge = Painter::new(f, &s, Size::new(1 << 20, 1 << 20));
     assert!(huge.strips_total() > 0);
     assert!(Frame::new(1 << 20, 1 << 20).is_none());
 }
@@ -257,12 +258,12 @@ fn a_done_painter_holds_no_field() {
     let f = Arc::new(field(5));
     for mode in MODES {
         let s = settings(mode, ViewKind::Vista, 0);
-        let mut stepped = Painter::new(f.clone(), &s, 120, 80);
+        let mut stepped = Painter::new(f.clone(), &s, Size::new(120, 80));
         let mut frame = Frame::new(120, 80).unwrap();
         while !stepped.is_done() {
             stepped.step(&mut frame, 7);
         }
-        let mut finished = Painter::new(f.clone(), &s, 120, 80);
+        let mut finished = Painter::new(f.clone(), &s, Size::new(120, 80));
         finished.finish(&mut Frame::new(120, 80).unwrap());
         assert_eq!(
             Arc::strong_count(&f),
@@ -387,7 +388,7 @@ fn front_to_back_equals_back_to_front_on_generated_mountains() {
         (7, ViewKind::Oblique, 270, ColorMode::Mono),
         (108, ViewKind::Vista, 270, ColorMode::Gray),
     ] {
-        let s = detail::for_frame(&settings(color, view, rotation), w, h);
+        let s = detail::for_frame(&settings(color, view, rotation), Size::new(w, h));
         let f = generate(&s, seed);
         let a = full(&f, &s, w, h);
         let b = stepped(&f, &s, w, h, usize::MAX);

@@ -4,6 +4,7 @@
 
 use std::sync::Arc;
 
+use mountains::render::Size;
 use mountains::render::classes::{Class, render_classes};
 use mountains::render::view::{self, View};
 use mountains::render::{Frame, Painter, render_full};
@@ -92,8 +93,7 @@ fn seen(height: f32, reflections: bool) -> Seen {
         field.size(),
         field.extent(),
         (&row_top, view::near_floor(&field)),
-        w,
-        h,
+        Size::new(w, h),
     );
     let top = view.project(cx, cy, height);
     // The foot on the near side, where the cone meets the water.
@@ -222,7 +222,7 @@ fn strips_give_the_full_frames_mirrored_water() {
             for budget in [1, 5, usize::MAX] {
                 let mut frame = Frame::new(w, h).unwrap();
                 frame.clear(0x00ab_cdef);
-                let mut p = Painter::new(Arc::new(f.clone()), &s, w, h);
+                let mut p = Painter::new(Arc::new(f.clone()), &s, Size::new(w, h));
                 while !p.is_done() {
                     p.step(&mut frame, budget);
                 }

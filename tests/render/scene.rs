@@ -2,6 +2,7 @@
 //! mountain are the same at every frame size and with `low_detail`; only
 //! the grid (picked per frame by `detail = "auto"`) changes.
 
+use mountains::render::Size;
 use mountains::render::detail::for_frame;
 use mountains::render::facts::SceneFacts;
 use mountains::render::palette::Palette;
@@ -22,14 +23,14 @@ fn fitted(settings: &Settings, (w, h, low_detail): (u32, u32, bool)) -> Settings
         low_detail,
         ..settings.clone()
     };
-    for_frame(&s, w, h)
+    for_frame(&s, Size::new(w, h))
 }
 
 /// The mountain of `seed` drawn for a frame, and its scene.
 fn scene(settings: &Settings, seed: u64, frame: (u32, u32, bool)) -> (Heightfield, SceneFacts) {
     let s = fitted(settings, frame);
     let field = terrain::generate(&s, seed);
-    let facts = SceneFacts::of(&field, &s, frame.0, frame.1);
+    let facts = SceneFacts::of(&field, &s, Size::new(frame.0, frame.1));
     (field, facts)
 }
 
@@ -151,7 +152,7 @@ fn turning_the_mountain_keeps_its_time_of_day() {
             rotation,
             ..s.clone()
         };
-        SceneFacts::of(&field, &turned, 480, 270).lighting
+        SceneFacts::of(&field, &turned, Size::new(480, 270)).lighting
     };
     let (a, b) = (light(0), light(90));
     assert_eq!((a.sun, a.horizon), (b.sun, b.horizon));
@@ -176,7 +177,7 @@ fn forty_seeds_keep_their_time_of_day_and_sea_at_every_size() {
                 let fs = fitted(&s, frame);
                 let field = terrain::generate(&fs, seed);
                 let light = Palette::lighting_for(&fs, &field);
-                let sea = SceneFacts::of(&field, &fs, frame.0, frame.1)
+                let sea = SceneFacts::of(&field, &fs, Size::new(frame.0, frame.1))
                     .ripples
                     .map(|r| r.seed);
                 (light.sun, light.horizon, sea)
@@ -291,7 +292,7 @@ fn the_drawn_field_is_the_field_as_the_frame_lays_it_out() {
     };
     let field = terrain::generate(&settings, 3);
     let n = field.size();
-    let same = drawn_field(&field, &settings, 640, 360);
+    let same = drawn_field(&field, &settings, Size::new(640, 360));
     assert_eq!(same.size(), n);
     assert_eq!(same.row(17), field.row(17));
     // A quarter turn brings the old right edge to the back.
@@ -299,7 +300,7 @@ fn the_drawn_field_is_the_field_as_the_frame_lays_it_out() {
         rotation: 90,
         ..settings.clone()
     };
-    let drawn = drawn_field(&field, &turned, 640, 360);
+    let drawn = drawn_field(&field, &turned, Size::new(640, 360));
     for (x, y) in [(0, 0), (5, 40), (63, 2), (30, 64)] {
         assert_eq!(drawn.get(x, y), field.get(n - 1 - y, x), "({x}, {y})");
     }
@@ -308,5 +309,5 @@ fn the_drawn_field_is_the_field_as_the_frame_lays_it_out() {
         color: ColorMode::Sonar,
         ..settings
     };
-    assert!(drawn_field(&field, &sonar, 152, 112).size() < n);
+    assert!(drawn_field(&field, &sonar, Size::new(152, 112)).size() < n);
 }

@@ -1,6 +1,7 @@
 //! Skirts: the cut faces along the right and front edges, down to sea level.
 
 use glam::{Vec2, Vec3};
+use mountains::render::Size;
 use mountains::render::palette::Palette;
 use mountains::render::view::View;
 use mountains::render::{Frame, Painter, render_full};
@@ -35,7 +36,7 @@ fn render(field: &Heightfield, view: ViewKind, w: u32, h: u32) -> (Frame, View, 
     let mut frame = Frame::new(w, h).unwrap();
     render_full(field, &s, &mut frame);
     let zmax = field.max().max(0.0);
-    let v = View::new(view, field.size(), field.extent(), zmax, w, h);
+    let v = View::new(view, field.size(), field.extent(), zmax, Size::new(w, h));
     (frame, v, Palette::new(&s, field))
 }
 
@@ -129,7 +130,7 @@ fn no_cut_face_below_the_sea() {
         ..Settings::default()
     };
     let mut sky = Frame::new(320, 240).unwrap();
-    Painter::new(Arc::new(f.clone()), &s, 320, 240).step(&mut sky, 0);
+    Painter::new(Arc::new(f.clone()), &s, Size::new(320, 240)).step(&mut sky, 0);
     let last = (f.size() - 1) as f32;
     let below = v.project(last * 0.5, last, 0.0).y.ceil() as u32 + 2;
     let w = frame.width();

@@ -3,6 +3,7 @@
 //! three monitors (a portrait one, different sizes and heights, a gap).
 //! Where two monitors touch, the skyline goes on across the seam.
 
+use mountains::render::Size;
 use mountains::render::detail::for_frame;
 use mountains::render::facts::SceneFacts;
 use mountains::render::{Frame, render_full};
@@ -56,11 +57,11 @@ fn layouts() -> Vec<(&'static str, Vec<Head>)> {
 fn span_picture(heads: &[Head], seed: u64) -> (Frame, SceneFacts) {
     let whole = span::bounds(heads).unwrap();
     let (w, h) = (whole.width, whole.height);
-    let settings = for_frame(&Settings::default(), w, h);
+    let settings = for_frame(&Settings::default(), Size::new(w, h));
     let field = terrain::generate(&settings, seed);
     let mut frame = Frame::new(w, h).unwrap();
     render_full(&field, &settings, &mut frame);
-    (frame, SceneFacts::of(&field, &settings, w, h))
+    (frame, SceneFacts::of(&field, &settings, Size::new(w, h)))
 }
 
 /// True when `pixel` is far from the sky's own colour: land (or sea).

@@ -2,6 +2,7 @@
 
 use std::sync::Arc;
 
+use mountains::render::Size;
 use mountains::render::{Frame, Painter, render_full};
 use mountains::settings::{ColorMode, Settings, ViewKind};
 use mountains::terrain::Heightfield;
@@ -121,7 +122,7 @@ fn strips_run_back_to_front() {
     for view in [ViewKind::Oblique, ViewKind::Perspective] {
         let s = with(ColorMode::Natural, view, 0);
         let mut frame = Frame::new(200, 150).unwrap();
-        let mut p = Painter::new(Arc::new(f.clone()), &s, 200, 150);
+        let mut p = Painter::new(Arc::new(f.clone()), &s, Size::new(200, 150));
         p.step(&mut frame, 1);
         let mut last = 0;
         while !p.is_done() {

@@ -4,6 +4,7 @@
 
 use std::collections::HashMap;
 
+use mountains::render::Size;
 use mountains::render::detail::{auto_level, for_frame};
 use mountains::render::light::Lighting;
 use mountains::render::view::View;
@@ -23,7 +24,7 @@ const ASPECTS: [(u32, u32); 6] = [
 
 /// A vista of a 1025 grid 250 wide whose land rises at most `zmax`.
 fn vista_over(zmax: f32, w: u32, h: u32) -> View {
-    View::new(ViewKind::Vista, 1025, 250.0, zmax, w, h)
+    View::new(ViewKind::Vista, 1025, 250.0, zmax, Size::new(w, h))
 }
 
 /// A vista of low land: the framing rules without the room for tall peaks.
@@ -100,14 +101,14 @@ fn slide(w: u32, h: u32) -> Settings {
         world: World::Temperate,
         ..Settings::default()
     };
-    for_frame(&temperate, w, h)
+    for_frame(&temperate, Size::new(w, h))
 }
 
 /// Share of land among the land and water a vista shows, estimated on the
 /// grid: each cell counts with its projected area, if its centre is in view.
 fn land_share(field: &Heightfield, w: u32, h: u32) -> f32 {
     let n = field.size();
-    let v = View::new(ViewKind::Vista, n, field.extent(), 0.0, w, h);
+    let v = View::new(ViewKind::Vista, n, field.extent(), 0.0, Size::new(w, h));
     let (mut land, mut water) = (0.0f64, 0.0f64);
     for y in 0..n - 1 {
         for x in 0..n - 1 {
@@ -313,22 +314,25 @@ fn a_varied_sun_never_stands_further_behind_than_its_time() {
 #[test]
 fn auto_detail_follows_the_frame() {
     let s = Settings::default();
-    assert_eq!(auto_level(&s, 1920, 1080), 10, "1080p");
-    assert_eq!(auto_level(&s, 3840, 2160), 11, "4K");
-    let preview = auto_level(&s, 152, 112);
+    assert_eq!(auto_level(&s, Size::new(1920, 1080)), 10, "1080p");
+    assert_eq!(auto_level(&s, Size::new(3840, 2160)), 11, "4K");
+    let preview = auto_level(&s, Size::new(152, 112));
     assert!(preview <= 7, "preview level {preview}");
     let low = Settings {
         low_detail: true,
         ..s.clone()
     };
-    let fitted = for_frame(&low, 1920, 1080);
+    let fitted = for_frame(&low, Size::new(1920, 1080));
     assert_eq!(fitted.detail, Detail::Level(10));
     assert_eq!(fitted.grid_exponent(), 9, "low detail halves the grid");
     let fixed = Settings {
         detail: Detail::Level(7),
         ..s
     };
-    assert_eq!(for_frame(&fixed, 3840, 2160).detail, Detail::Level(7));
+    assert_eq!(
+        for_frame(&fixed, Size::new(3840, 2160)).detail,
+        Detail::Level(7)
+    );
 }
 
 /// White pixels of a Sonar frame: fewer, larger faces have fewer edges.
@@ -341,8 +345,7 @@ fn sonar_white(low_detail: bool) -> usize {
             seed: Some(3),
             ..Settings::default()
         },
-        w,
-        h,
+        Size::new(w, h),
     );
     let field = terrain::generate(&s, 3);
     let frame = draw(&field, &s, w, h);

@@ -1,6 +1,7 @@
 //! Sea level: the water-line split and the depth of water.
 
 use glam::Vec2;
+use mountains::render::Size;
 use mountains::render::palette::Palette;
 use mountains::render::view::View;
 use mountains::render::{Frame, Painter, render_full};
@@ -23,7 +24,7 @@ fn ramp(shore: f32, slope: f32) -> Heightfield {
 /// The frame with only the sky painted (a painter's first step, no strips).
 fn sky_only(field: &Heightfield, s: &Settings, w: u32, h: u32) -> Frame {
     let mut frame = Frame::new(w, h).unwrap();
-    Painter::new(Arc::new(field.clone()), s, w, h).step(&mut frame, 0);
+    Painter::new(Arc::new(field.clone()), s, Size::new(w, h)).step(&mut frame, 0);
     frame
 }
 
@@ -48,7 +49,13 @@ fn no_land_pixel_lies_on_the_sea_side_of_the_shore() {
         let depths = (0..=8000).map(|i| i as f32 * 0.005);
         let water: std::collections::HashSet<u32> = depths.map(|d| palette.water(d)).collect();
         let zmax = field.max().max(0.0);
-        let view = View::new(ViewKind::Oblique, field.size(), field.extent(), zmax, w, h);
+        let view = View::new(
+            ViewKind::Oblique,
+            field.size(),
+            field.extent(),
+            zmax,
+            Size::new(w, h),
+        );
         let a = view.project(shore, 0.0, 0.0);
         let b = view.project(shore, 16.0, 0.0);
         let sea = view.project(0.0, 8.0, 0.0);
@@ -123,7 +130,13 @@ fn deeper_water_is_never_lighter_on_screen() {
     };
     let mut frame = Frame::new(w, h).unwrap();
     render_full(&field, &s, &mut frame);
-    let view = View::new(ViewKind::Oblique, field.size(), field.extent(), 0.0, w, h);
+    let view = View::new(
+        ViewKind::Oblique,
+        field.size(),
+        field.extent(),
+        0.0,
+        Size::new(w, h),
+    );
     let mut last = u32::MAX;
     // Sample the centroid of each row's lower-left triangle: a point on a
     // grid line may belong to either neighbour, and neighbours in x differ

@@ -3,6 +3,7 @@
 
 use std::sync::Arc;
 
+use mountains::render::Size;
 use mountains::render::{Frame, Painter};
 use mountains::settings::{ColorMode, Settings};
 use mountains::terrain::Heightfield;
@@ -25,7 +26,7 @@ fn lit_fraction(field: &Heightfield, color: ColorMode, w: u32, h: u32) -> f64 {
         ..Settings::default()
     };
     let mut frame = Frame::new(w, h).unwrap();
-    Painter::new(Arc::new(field.clone()), &settings, w, h).step(&mut frame, usize::MAX);
+    Painter::new(Arc::new(field.clone()), &settings, Size::new(w, h)).step(&mut frame, usize::MAX);
     let lit = frame.pixels().iter().filter(|&&p| p != 0).count();
     lit as f64 / (w * h) as f64
 }

@@ -6,6 +6,7 @@
 use crate::common::golden;
 use mountains::quality::facets::{delta_e, lab};
 use mountains::quality::image::channels;
+use mountains::render::Size;
 use mountains::render::{Frame, detail, render_full};
 use mountains::settings::{Settings, World, keys, load, worlds};
 use mountains::terrain;
@@ -26,7 +27,7 @@ fn picture(prefs: &Settings, seed: u64, (w, h): (u32, u32)) -> Frame {
         seed: Some(seed),
         ..prefs.clone()
     };
-    let settings = detail::for_frame(&chosen, w, h);
+    let settings = detail::for_frame(&chosen, Size::new(w, h));
     let field = terrain::generate(&settings, seed);
     let mut frame = Frame::new(w, h).expect("a frame");
     render_full(&field, &settings, &mut frame);
@@ -198,7 +199,7 @@ fn every_varied_slide_shows_land() {
             seed: Some(seed),
             ..Settings::default()
         };
-        let s = detail::for_frame(&chosen, w, h);
+        let s = detail::for_frame(&chosen, Size::new(w, h));
         let field = terrain::generate(&s, seed);
         let mut frame = Frame::new(w, h).unwrap();
         render_classes(&field, &s, &mut frame).unwrap();

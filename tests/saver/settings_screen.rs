@@ -14,6 +14,7 @@ use std::process::{Child, Command, Stdio};
 use std::thread::sleep;
 use std::time::Duration;
 
+use mountains::render::Size;
 use x11rb::connection::Connection;
 use x11rb::protocol::xproto::{ConnectionExt, ImageFormat};
 use xvfb::Xvfb;
@@ -304,7 +305,7 @@ fn display_mouse_clicks_plus_then_ok() {
     let mut app = App::start(&x, &config, &home, 1);
     let window = app.window(&x);
     wait_drawn(x.display(), window);
-    let l = Layout::new(960, 620, 1);
+    let l = Layout::new(Size::new(960, 620), 1);
     let crag = mountains::settings::keys::KEYS
         .iter()
         .position(|k| k.name == "cragginess")
@@ -337,7 +338,7 @@ fn screenshot(scale: u32) {
     wait_drawn(x.display(), window);
     press(&x, window, &["Down", "Down", "Right"]);
     // Exactly two rows down: the Cragginess label is highlighted in navy.
-    let l = mountains::settings_ui::layout::Layout::new(960 * scale, 620 * scale, scale);
+    let l = mountains::settings_ui::layout::Layout::new(Size::new(960 * scale, 620 * scale), scale);
     let probe = |row: usize, w: u32| {
         let r = l.row(row);
         ((r.y0 + l.px(2)) * w + r.x0 + l.px(20)) as usize
@@ -408,7 +409,7 @@ fn wait_until(
 /// and so is the file line.
 fn last_row_and_help_drawn(w: u32, h: u32, px: &[u32]) -> bool {
     use mountains::settings_ui::layout::Layout;
-    let mut l = Layout::new(w, h, 1);
+    let mut l = Layout::new(Size::new(w, h), 1);
     let last = mountains::settings::keys::KEYS.len() - 1;
     l.reveal_row(last);
     let r = l.row(last);
@@ -487,7 +488,7 @@ fn display_the_last_row_and_its_help_show_at_the_default_and_the_smallest_size()
 
     // The wheel over a label scrolls the list: the focused row goes out of
     // sight below and comes back.
-    let mut l = Layout::new(MIN_W, MIN_H, 1);
+    let mut l = Layout::new(Size::new(MIN_W, MIN_H), 1);
     l.reveal_row(mountains::settings::keys::KEYS.len() - 1);
     let area = l.list.area();
     let (lx, ly) = (

@@ -7,6 +7,7 @@ use files::replace_keeping_mtime;
 use std::path::{Path, PathBuf};
 
 use mountains::render::Rect;
+use mountains::render::Size;
 use mountains::saved;
 use mountains::settings::Detail;
 use mountains::settings::keys::{self, KEYS, Key, Kind, Value};
@@ -21,7 +22,7 @@ use mountains::settings_ui::screen::{Next, Screen};
 use mountains::settings_ui::values;
 
 fn layout(scale: u32) -> Layout {
-    Layout::new(WINDOW_W * scale, WINDOW_H * scale, scale)
+    Layout::new(Size::new(WINDOW_W * scale, WINDOW_H * scale), scale)
 }
 
 /// The values these tests start from, spelt out so that a change of a
@@ -479,7 +480,7 @@ fn screen(file: &Path, scale: u32) -> Screen {
     } else {
         Vec::new()
     };
-    let size = (WINDOW_W * scale, WINDOW_H * scale);
+    let size = Size::new(WINDOW_W * scale, WINDOW_H * scale);
     let mut sc = Screen::new(s, &problems, file.to_path_buf(), size, scale);
     sc.set_data_dir(Some(file.with_file_name("data")));
     sc
@@ -652,15 +653,15 @@ fn the_scale_is_whole_and_the_window_fits_the_monitor() {
     use mountains::settings_ui::layout::whole_scale;
     assert_eq!(whole_scale(1.0, None), 1);
     assert_eq!(whole_scale(1.25, None), 1);
-    assert_eq!(whole_scale(2.0, Some((3840, 2160))), 2);
-    assert_eq!(whole_scale(1.5, Some((2880, 1800))), 2);
+    assert_eq!(whole_scale(2.0, Some(Size::new(3840, 2160))), 2);
+    assert_eq!(whole_scale(1.5, Some(Size::new(2880, 1800))), 2);
     assert_eq!(
-        whole_scale(1.5, Some((1920, 1080))),
+        whole_scale(1.5, Some(Size::new(1920, 1080))),
         1,
         "1240 rows would not fit"
     );
     assert_eq!(whole_scale(f64::NAN, None), 1);
-    assert_eq!(whole_scale(100.0, Some((1024, 768))), 1);
+    assert_eq!(whole_scale(100.0, Some(Size::new(1024, 768))), 1);
 }
 
 #[test]
@@ -701,7 +702,7 @@ fn any_window_size_lays_out_and_draws_without_panicking() {
         (1400, 900, 1),
         (3000, 2000, 3),
     ] {
-        sc.resize(w, h, s);
+        sc.resize(Size::new(w, h), s);
         sc.input(Input::Tab { back: false });
         while sc.step_preview() {}
         let f = sc.draw();
@@ -709,10 +710,10 @@ fn any_window_size_lays_out_and_draws_without_panicking() {
     }
     // A larger window gives the extra room to the preview; the panel and
     // the buttons stay at the right and the bottom.
-    let l = Layout::new(1400, 900, 1);
+    let l = Layout::new(Size::new(1400, 900), 1);
     assert_eq!(l.panel_x, 1400 - 8 - 372);
     assert_eq!(l.button(Button::Ok).y1, 900 - 8);
-    assert!(l.preview.x1 > Layout::new(960, 620, 1).preview.x1);
+    assert!(l.preview.x1 > Layout::new(Size::new(960, 620), 1).preview.x1);
 }
 
 /// Edit file runs `$EDITOR` as the shell reads it, so an editor with
@@ -864,7 +865,7 @@ fn every_row_and_its_whole_help_fit_at_the_default_and_the_smallest_size() {
     for (w, h) in SIZES {
         for scale in [1, 2] {
             let what = format!("{w}x{h} at {scale}x");
-            let mut l = Layout::new(w * scale, h * scale, scale);
+            let mut l = Layout::new(Size::new(w * scale, h * scale), scale);
             let area = l.list.area();
             assert!(area.y1 < l.help_y && l.help_y < l.file_y, "{what}");
             let ok = l.button(Button::Ok);
@@ -903,7 +904,7 @@ fn every_row_and_its_whole_help_fit_at_the_default_and_the_smallest_size() {
         }
     }
     // A window tall enough shows every row and no scroll bar.
-    let tall = Layout::new(WINDOW_W, 900, 1);
+    let tall = Layout::new(Size::new(WINDOW_W, 900), 1);
     assert!(tall.list.bar().is_none());
     for i in 0..KEYS.len() {
         assert_row_shown_whole(&tall, i, "960x900");
@@ -929,8 +930,8 @@ fn four_more_keys_still_fit_by_scrolling() {
     for (w, h) in SIZES {
         for scale in [1, 2] {
             let what = format!("{w}x{h} at {scale}x with {} keys", keys.len());
-            let base = Layout::new(w * scale, h * scale, scale);
-            let mut l = Layout::with_keys(w * scale, h * scale, scale, &keys);
+            let base = Layout::new(Size::new(w * scale, h * scale), scale);
+            let mut l = Layout::with_keys(Size::new(w * scale, h * scale), scale, &keys);
             assert_eq!(l.list.lines().len(), base.list.lines().len() + 4);
             assert_eq!(l.list.last_first(), base.list.last_first() + 4, "{what}");
             assert_eq!((l.help_y, l.file_y), (base.help_y, base.file_y), "{what}");
@@ -1081,7 +1082,7 @@ fn the_drawn_screen_shows_each_focused_row_and_its_whole_help() {
     for scale in [1, 2] {
         for (w, h) in SIZES {
             let what = format!("{w}x{h} at {scale}x");
-            sc.resize(w * scale, h * scale, scale);
+            sc.resize(Size::new(w * scale, h * scale), scale);
             while sc.step_preview() {}
             while sc.model.focused_row() != Some(0) {
                 sc.input(Input::Tab { back: false });
@@ -1100,11 +1101,11 @@ fn the_drawn_screen_shows_each_focused_row_and_its_whole_help() {
     }
     // The last row focused at the default size stays in sight when the
     // window is made as small as it may be.
-    sc.resize(WINDOW_W, WINDOW_H, 1);
+    sc.resize(Size::new(WINDOW_W, WINDOW_H), 1);
     sc.input(Input::Tab { back: true });
     while sc.model.focused_row().is_none() {
         sc.input(Input::Tab { back: true });
     }
-    sc.resize(MIN_W, MIN_H, 1);
+    sc.resize(Size::new(MIN_W, MIN_H), 1);
     assert_row_shown_whole(sc.layout(), KEYS.len() - 1, "resized");
 }

@@ -3,6 +3,8 @@
 //! buffer scale, or a viewport for fractional scales). Pure arithmetic on
 //! what the compositor said of the surface and the output.
 
+use crate::render::Size;
+
 /// How a surface's buffer covers its output.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Cover {
@@ -10,7 +12,7 @@ pub enum Cover {
     /// that buffer scale.
     Scaled {
         /// The buffer's size in pixels.
-        size: (u32, u32),
+        size: Size,
         /// The buffer scale (1 on an unscaled output).
         scale: i32,
     },
@@ -20,15 +22,15 @@ pub enum Cover {
     /// the compositor would shrink them.
     Viewport {
         /// The buffer's size in pixels: the output's mode.
-        size: (u32, u32),
+        size: Size,
         /// The surface's size in the compositor's units.
-        logical: (u32, u32),
+        logical: Size,
     },
 }
 
 impl Cover {
     /// The buffer's size in pixels.
-    pub fn size(&self) -> (u32, u32) {
+    pub fn size(&self) -> Size {
         match *self {
             Cover::Scaled { size, .. } | Cover::Viewport { size, .. } => size,
         }
@@ -38,10 +40,10 @@ impl Cover {
 /// The cover of a surface of `logical` size on an output of integer
 /// `scale` whose current mode, turned as the output is, is `mode`;
 /// `viewporter`: whether the compositor offers viewports.
-pub fn cover(logical: (u32, u32), scale: i32, mode: Option<(u32, u32)>, viewporter: bool) -> Cover {
+pub fn cover(logical: Size, scale: i32, mode: Option<Size>, viewporter: bool) -> Cover {
     let scale = scale.max(1);
     let size = scaled(logical, scale);
-    let real = |m: (u32, u32)| m.0 > 0 && m.1 > 0 && logical.0 > 0 && logical.1 > 0;
+    let real = |m: Size| !m.is_empty() && !logical.is_empty();
     match mode {
         Some(mode) if viewporter && mode != size && real(mode) => Cover::Viewport {
             size: mode,
@@ -52,30 +54,30 @@ pub fn cover(logical: (u32, u32), scale: i32, mode: Option<(u32, u32)>, viewport
 }
 
 /// `logical` times an integer `scale` (at least 1).
-fn scaled(logical: (u32, u32), scale: i32) -> (u32, u32) {
+fn scaled(logical: Size, scale: i32) -> Size {
     let scale = scale.max(1).unsigned_abs();
-    (
-        logical.0.saturating_mul(scale),
-        logical.1.saturating_mul(scale),
+    Size::new(
+        logical.width.saturating_mul(scale),
+        logical.height.saturating_mul(scale),
     )
 }
 
 /// An output's mode (`width`, `height` in pixels) as it is shown: sides
 /// swapped when the output is turned a quarter (`quarter_turned`).
-pub fn turned(mode: (i32, i32), quarter_turned: bool) -> (u32, u32) {
+pub fn turned(mode: (i32, i32), quarter_turned: bool) -> Size {
     let (w, h) = if quarter_turned {
         (mode.1, mode.0)
     } else {
         mode
     };
-    (w.max(0) as u32, h.max(0) as u32)
+    Size::new(w.max(0) as u32, h.max(0) as u32)
 }
 
 /// The compositor's units an output of `pixels` (turned) spans at an
 /// integer `scale`: for a configure that leaves the size to the client.
-pub fn logical_of(pixels: (u32, u32), scale: i32) -> (u32, u32) {
+pub fn logical_of(pixels: Size, scale: i32) -> Size {
     let scale = scale.max(1).unsigned_abs();
-    (pixels.0 / scale, pixels.1 / scale)
+    Size::new(pixels.width / scale, pixels.height / scale)
 }
 
 #[cfg(test)]
@@ -84,43 +86,49 @@ mod tests {
 
     #[test]
     fn an_integer_scale_multiplies_the_logical_size() {
-        let c = cover((320, 240), 2, Some((640, 480)), true);
+        let c = cover(Size::new(320, 240), 2, Some(Size::new(640, 480)), true);
         assert_eq!(
             c,
             Cover::Scaled {
-                size: (640, 480),
+                size: Size::new(640, 480),
                 scale: 2
             }
         );
-        let c = cover((640, 480), 1, Some((640, 480)), true);
-        assert_eq!(c.size(), (640, 480));
-        assert_eq!(cover((640, 480), 0, None, false).size(), (640, 480));
+        let c = cover(Size::new(640, 480), 1, Some(Size::new(640, 480)), true);
+        assert_eq!(c.size(), Size::new(640, 480));
+        assert_eq!(
+            cover(Size::new(640, 480), 0, None, false).size(),
+            Size::new(640, 480)
+        );
     }
 
     #[test]
     fn a_fractional_scale_draws_the_modes_pixels_through_a_viewport() {
         // 640x480 at 1.5: sway says scale 2 and a 427x320 surface; 854x640
         // would be shrunk, the mode's 640x480 are the output's pixels.
-        let c = cover((427, 320), 2, Some((640, 480)), true);
+        let c = cover(Size::new(427, 320), 2, Some(Size::new(640, 480)), true);
         assert_eq!(
             c,
             Cover::Viewport {
-                size: (640, 480),
-                logical: (427, 320)
+                size: Size::new(640, 480),
+                logical: Size::new(427, 320)
             }
         );
         // Without viewports: the integer scale, shrunk by the compositor.
-        let c = cover((427, 320), 2, Some((640, 480)), false);
-        assert_eq!(c.size(), (854, 640));
+        let c = cover(Size::new(427, 320), 2, Some(Size::new(640, 480)), false);
+        assert_eq!(c.size(), Size::new(854, 640));
         // No mode known: the same.
-        assert_eq!(cover((427, 320), 2, None, true).size(), (854, 640));
+        assert_eq!(
+            cover(Size::new(427, 320), 2, None, true).size(),
+            Size::new(854, 640)
+        );
     }
 
     #[test]
     fn a_turned_output_swaps_its_sides() {
-        assert_eq!(turned((1920, 1080), false), (1920, 1080));
-        assert_eq!(turned((1920, 1080), true), (1080, 1920));
-        assert_eq!(logical_of((1080, 1920), 2), (540, 960));
-        assert_eq!(logical_of((1920, 1080), 0), (1920, 1080));
+        assert_eq!(turned((1920, 1080), false), Size::new(1920, 1080));
+        assert_eq!(turned((1920, 1080), true), Size::new(1080, 1920));
+        assert_eq!(logical_of(Size::new(1080, 1920), 2), Size::new(540, 960));
+        assert_eq!(logical_of(Size::new(1920, 1080), 0), Size::new(1920, 1080));
     }
 }

@@ -37,7 +37,7 @@ use super::cover::{self, Cover};
 use super::target::WaylandTarget;
 use crate::cli::Layer;
 use crate::mountain::Mountain;
-use crate::render::Damage;
+use crate::render::{Damage, Size};
 use crate::saver::error::SaverError;
 use crate::saver::present::Presenter;
 use crate::saver::show::Show;
@@ -160,7 +160,7 @@ struct Covered {
     /// The surface's viewport, where the compositor has viewports.
     viewport: Option<WpViewport>,
     /// The size the compositor gave, in its units (0: not configured yet).
-    logical: (u32, u32),
+    logical: Size,
     /// How the buffer covers the output now.
     cover: Cover,
     /// The cover last told to the compositor (with a frame of its size).
@@ -280,9 +280,9 @@ impl LayerApp {
             surface,
             output,
             viewport,
-            logical: (0, 0),
+            logical: Size::default(),
             cover: Cover::Scaled {
-                size: (0, 0),
+                size: Size::default(),
                 scale: 1,
             },
             applied: None,
@@ -316,15 +316,15 @@ impl LayerApp {
     }
 
     /// The compositor's units the output spans, for a configure of size 0.
-    fn logical_size_of(&self, output: &WlOutput) -> (u32, u32) {
+    fn logical_size_of(&self, output: &WlOutput) -> Size {
         let Some(info) = self.outputs.info(output) else {
-            return (0, 0);
+            return Size::default();
         };
         if let Some((w, h)) = info.logical_size {
-            return (w.max(0) as u32, h.max(0) as u32);
+            return Size::new(w.max(0) as u32, h.max(0) as u32);
         }
         let mode = info.modes.iter().find(|m| m.current);
-        mode.map_or((0, 0), |m| {
+        mode.map_or(Size::default(), |m| {
             let turned = cover::turned(m.dimensions, quarter_turned(info.transform));
             cover::logical_of(turned, info.scale_factor)
         })
@@ -336,7 +336,7 @@ impl LayerApp {
         let cover = self.cover_of(i);
         self.covered[i].cover = cover;
         let size = cover.size();
-        if size.0 == 0 || size.1 == 0 {
+        if size.is_empty() {
             return;
         }
         let now = Instant::now();
@@ -361,12 +361,7 @@ impl LayerApp {
     }
 
     /// Makes surface `i`'s presenter and show; the whole frame to present.
-    fn start_drawing(
-        &mut self,
-        i: usize,
-        size: (u32, u32),
-        now: Instant,
-    ) -> Result<Damage, SaverError> {
+    fn start_drawing(&mut self, i: usize, size: Size, now: Instant) -> Result<Damage, SaverError> {
         let surface = self.covered[i].surface.wl_surface();
         let target = WaylandTarget::new(self.display, surface.id().as_ptr().cast())
             .ok_or_else(|| SaverError::Other("the Wayland surface has no pointer".into()))?;
@@ -402,7 +397,7 @@ impl LayerApp {
         let Some(frame) = d.show.frame().filter(|_| !damage.is_empty()) else {
             return;
         };
-        let fits = c.cover.size() == (frame.width(), frame.height());
+        let fits = c.cover.size() == frame.size();
         if fits && c.applied != Some(c.cover) {
             apply(&c.surface, c.viewport.as_ref(), c.cover);
             c.applied = Some(c.cover);
@@ -457,7 +452,7 @@ fn apply(surface: &LayerSurface, viewport: Option<&WpViewport>, cover: Cover) {
             wl_surface.set_buffer_scale(1);
             if let Some(v) = viewport {
                 let side = |n: u32| i32::try_from(n).unwrap_or(i32::MAX);
-                v.set_destination(side(logical.0), side(logical.1));
+                v.set_destination(side(logical.width), side(logical.height));
             }
         }
     }
@@ -512,7 +507,7 @@ impl LayerShellHandler for LayerApp {
         let logical = if w == 0 || h == 0 {
             self.logical_size_of(&self.covered[i].output)
         } else {
-            (w, h)
+            Size::new(w, h)
         };
         self.covered[i].logical = logical;
         self.fit(i);

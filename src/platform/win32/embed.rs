@@ -22,6 +22,7 @@ use winit::event_loop::EventLoopBuilder;
 use winit::platform::windows::EventLoopBuilderExtWindows;
 use winit::window::WindowAttributes;
 
+use crate::render::Size;
 use crate::saver::error::SaverError;
 
 /// How often the child checks that its parent still exists and its size.
@@ -43,7 +44,11 @@ pub fn follow_parent(parent: u64, window: &winit::window::Window) -> bool {
     if !parent_alive(parent) {
         return false;
     }
-    if let Some((w, h)) = parent_client_size(parent) {
+    if let Some(Size {
+        width: w,
+        height: h,
+    }) = parent_client_size(parent)
+    {
         let size = window.inner_size();
         if (size.width, size.height) != (w, h) {
             let _ = window.request_inner_size(PhysicalSize::new(w, h));
@@ -53,7 +58,7 @@ pub fn follow_parent(parent: u64, window: &winit::window::Window) -> bool {
 }
 
 /// The parent's client area in pixels, if it can be read.
-pub fn parent_client_size(handle: u64) -> Option<(u32, u32)> {
+pub fn parent_client_size(handle: u64) -> Option<Size> {
     let mut rect = RECT {
         left: 0,
         top: 0,
@@ -64,7 +69,7 @@ pub fn parent_client_size(handle: u64) -> Option<(u32, u32)> {
     let ok = unsafe { GetClientRect(hwnd(handle), &mut rect) } != 0;
     let w = u32::try_from(rect.right - rect.left).ok()?;
     let h = u32::try_from(rect.bottom - rect.top).ok()?;
-    ok.then_some((w, h))
+    ok.then_some(Size::new(w, h))
 }
 
 /// Attributes of a borderless child of `parent` covering its client area.
@@ -80,7 +85,10 @@ pub fn child_attributes(
     if !parent_alive(parent) {
         return Err(missing());
     }
-    let (w, h) = parent_client_size(parent).ok_or_else(missing)?;
+    let Size {
+        width: w,
+        height: h,
+    } = parent_client_size(parent).ok_or_else(missing)?;
     let raw = RawWindowHandle::Win32(Win32WindowHandle::new(handle));
     // SAFETY: the parent was checked to exist; if it goes, the child goes with
     // it and `parent_alive` ends the process.

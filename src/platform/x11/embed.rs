@@ -17,6 +17,7 @@ use x11rb::protocol::xproto::{ChangeWindowAttributesAux, ConnectionExt as _, Eve
 use x11rb::rust_connection::RustConnection;
 
 use crate::mountain::Mountain;
+use crate::render::Size;
 use crate::saver::error::SaverError;
 use crate::saver::present::Presenter;
 use crate::saver::show::Show;
@@ -51,7 +52,7 @@ impl HasDisplayHandle for ForeignWindow {
 /// What the watcher threads tell the drawing loop.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Notice {
-    Resized(u32, u32),
+    Resized(Size),
     Exposed,
     Destroyed,
     /// The connection to the X server broke.
@@ -132,7 +133,7 @@ pub fn run(
 }
 
 /// Reads the window's size and asks for its structure and expose events.
-fn watch_window(conn: &RustConnection, xid: u32) -> Result<(u32, u32), SaverError> {
+fn watch_window(conn: &RustConnection, xid: u32) -> Result<Size, SaverError> {
     let geometry = conn
         .get_geometry(xid)
         .ok()
@@ -143,7 +144,7 @@ fn watch_window(conn: &RustConnection, xid: u32) -> Result<(u32, u32), SaverErro
         .ok()
         .and_then(|c| c.check().ok())
         .ok_or(SaverError::NoSuchWindow(xid))?;
-    Ok((geometry.width.into(), geometry.height.into()))
+    Ok(Size::new(geometry.width.into(), geometry.height.into()))
 }
 
 /// Forwards the window's X events to the drawing loop as they arrive.
@@ -156,7 +157,7 @@ fn spawn_event_thread(
         while let Ok(event) = conn.wait_for_event() {
             let notice = match event {
                 Event::ConfigureNotify(e) if e.window == xid => {
-                    Notice::Resized(e.width.into(), e.height.into())
+                    Notice::Resized(Size::new(e.width.into(), e.height.into()))
                 }
                 Event::Expose(e) if e.window == xid && e.count == 0 => Notice::Exposed,
                 // A server that shuts down (SIGTERM, the session ending)
@@ -236,7 +237,7 @@ impl Embedded {
                 }
                 Notice::Destroyed => return Ok(true),
                 Notice::ServerGone => return Err(SaverError::server_gone()),
-                Notice::Resized(w, h) => size = Some((w, h)),
+                Notice::Resized(s) => size = Some(s),
                 Notice::Exposed => exposed = true,
                 Notice::Seen(seen) => {
                     let fresh = crate::saver::watch::apply(seen, &mut self.show, Instant::now());

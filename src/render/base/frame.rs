@@ -1,5 +1,7 @@
 //! The CPU framebuffer every mode draws into.
 
+use super::size::Size;
+
 /// A rectangle of pixels, `x0..x1` by `y0..y1` (exclusive ends).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Rect {
@@ -111,6 +113,11 @@ impl Frame {
     /// Height in pixels.
     pub fn height(&self) -> u32 {
         self.height
+    }
+
+    /// Width and height.
+    pub fn size(&self) -> Size {
+        Size::new(self.width, self.height)
     }
 
     /// All pixels, row-major.

@@ -15,6 +15,7 @@
 //! `low_detail`, whose big facets are the look Mountain Terrain asks for.
 
 use super::view::View;
+use crate::render::base::size::Size;
 use crate::settings::{Detail, Settings};
 use crate::terrain::heightfield::MAX_EXPONENT;
 
@@ -31,18 +32,18 @@ const AUTO_LEAST_EXPONENT: u32 = 4;
 const REFERENCE_RELIEF: f32 = 0.2;
 
 /// `settings` with `detail = "auto"` replaced by the level for a
-/// `width` x `height` frame (other settings unchanged).
-pub fn for_frame(settings: &Settings, width: u32, height: u32) -> Settings {
+/// frame of `size` (other settings unchanged).
+pub fn for_frame(settings: &Settings, size: Size) -> Settings {
     let mut s = settings.clone();
     if s.detail == Detail::Auto {
-        s.detail = Detail::Level(auto_level(settings, width, height));
+        s.detail = Detail::Level(auto_level(settings, size));
     }
     s
 }
 
 /// The detail level whose nearest cells are about `TARGET_CELL_PX` wide
 /// in this frame, before `low_detail` halves it.
-pub fn auto_level(settings: &Settings, width: u32, height: u32) -> u32 {
+pub fn auto_level(settings: &Settings, size: Size) -> u32 {
     let cells = (1usize << REFERENCE_EXPONENT) as f32;
     let extent = cells;
     let view = View::new(
@@ -50,8 +51,7 @@ pub fn auto_level(settings: &Settings, width: u32, height: u32) -> u32 {
         cells as usize + 1,
         extent,
         REFERENCE_RELIEF * extent,
-        width.max(1),
-        height.max(1),
+        Size::new(size.width.max(1), size.height.max(1)),
     );
     let px = nearest_cell_px(&view, cells);
     let wanted = cells * px / TARGET_CELL_PX;

@@ -11,6 +11,7 @@ use glam::{Vec2, Vec3};
 
 use super::camera::Camera;
 use super::view::View;
+use crate::render::base::size::Size;
 use crate::terrain::Heightfield;
 use crate::terrain::heightmap::quantise::Quantisation;
 
@@ -65,8 +66,8 @@ impl Square {
 
 /// The view the essay's camera has of a `size` x `size` grid `extent`
 /// units wide centred on `square` (the square turned inside it), in a
-/// `width` x `height` frame.
-pub(crate) fn view(square: Square, size: usize, extent: f32, width: u32, height: u32) -> View {
+/// frame of `frame` size.
+pub(crate) fn view(square: Square, size: usize, extent: f32, frame: Size) -> View {
     // The essay's units per field unit.
     let k = SIDE / square.side;
     let centre = 0.5 * extent;
@@ -77,7 +78,7 @@ pub(crate) fn view(square: Square, size: usize, extent: f32, width: u32, height:
     );
     let camera = Camera::looking_back(eye, 0.0, extent);
     // The canvas fitted inside the frame, centred.
-    let frame = Vec2::new(width as f32, height as f32);
+    let frame = Vec2::new(frame.width as f32, frame.height as f32);
     let fit = (frame / CANVAS).min_element();
     let corner = 0.5 * (frame - fit * CANVAS);
     let principal = Vec2::new(EYE.x, EYE.y);

@@ -55,11 +55,12 @@ pub(crate) fn kept_rows(n: usize, view: &View) -> Vec<usize> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::render::base::size::Size;
     use crate::settings::ViewKind;
 
     #[test]
     fn crowded_rows_merge_and_the_ends_stay() {
-        let view = View::new(ViewKind::Vista, 1025, 250.0, 50.0, 1920, 1080);
+        let view = View::new(ViewKind::Vista, 1025, 250.0, 50.0, Size::new(1920, 1080));
         let rows = kept_rows(1025, &view);
         assert_eq!((rows[0], *rows.last().unwrap()), (0, 1024));
         assert!(
@@ -70,7 +71,7 @@ mod tests {
         assert!(rows.len() < 700, "{} rows kept", rows.len());
         assert_eq!(rows[rows.len() - 2], 1023, "the nearest row was merged");
         // A view whose rows stand apart keeps them all.
-        let near = View::new(ViewKind::Oblique, 33, 250.0, 50.0, 1920, 1080);
+        let near = View::new(ViewKind::Oblique, 33, 250.0, 50.0, Size::new(1920, 1080));
         assert_eq!(kept_rows(33, &near), (0..33).collect::<Vec<_>>());
     }
 }

@@ -10,6 +10,7 @@ use glam::{Vec2, Vec3, Vec4};
 use super::camera::{Camera, RowCamera};
 use super::tops::finite;
 use super::vista;
+use crate::render::base::size::Size;
 use crate::settings::ViewKind;
 use crate::terrain::Heightfield;
 
@@ -159,17 +160,10 @@ impl RowView {
 
 impl View {
     /// Fits a `size` x `size` grid `extent` units wide, with heights up to
-    /// `zmax` above sea level, into a `width` x `height` frame.
-    pub fn new(
-        kind: ViewKind,
-        size: usize,
-        extent: f32,
-        zmax: f32,
-        width: u32,
-        height: u32,
-    ) -> Self {
+    /// `zmax` above sea level, into a frame of `frame` size.
+    pub fn new(kind: ViewKind, size: usize, extent: f32, zmax: f32, frame: Size) -> Self {
         let zmax = if zmax.is_finite() { zmax.max(0.0) } else { 0.0 };
-        Self::fitted(kind, size, extent, (&[zmax, zmax], 0.0), width, height)
+        Self::fitted(kind, size, extent, (&[zmax, zmax], 0.0), frame)
     }
 
     /// Like [`View::new`], fitted to the mountain itself: `row_top[y]` is
@@ -182,8 +176,7 @@ impl View {
         size: usize,
         extent: f32,
         (row_top, near_floor): (&[f32], f32),
-        width: u32,
-        height: u32,
+        frame: Size,
     ) -> Self {
         Self::fitted_oblique(
             kind,
@@ -191,8 +184,7 @@ impl View {
             size,
             extent,
             (row_top, near_floor),
-            width,
-            height,
+            frame,
         )
     }
 
@@ -205,8 +197,7 @@ impl View {
         size: usize,
         extent: f32,
         (row_top, near_floor): (&[f32], f32),
-        width: u32,
-        height: u32,
+        Size { width, height }: Size,
     ) -> Self {
         let steps = size.saturating_sub(1).max(1) as f32;
         let zmax = row_top
@@ -447,7 +438,7 @@ mod tests {
     /// field in each kind of view.
     fn each_row(mut check: impl FnMut(ViewKind, &View, f32, &RowView)) {
         for kind in [ViewKind::Vista, ViewKind::Perspective, ViewKind::Oblique] {
-            let view = View::new(kind, 65, 250.0, 60.0, 640, 360);
+            let view = View::new(kind, 65, 250.0, 60.0, Size::new(640, 360));
             for gy in [0.0, 17.0, 64.0] {
                 check(kind, &view, gy, &view.along_row(gy));
             }

@@ -163,6 +163,7 @@ fn partition_near(n: usize, guess: usize, before: impl Fn(usize) -> bool) -> usi
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::render::base::size::Size;
     use crate::render::scene::FieldRef;
     use crate::settings::{Detail, Settings, World};
 
@@ -176,7 +177,7 @@ mod tests {
         };
         let field = crate::terrain::generate(&settings, 42);
         let (w, h) = (320, 180);
-        let scene = Scene::new(FieldRef::Borrowed(&field), &settings, w, h);
+        let scene = Scene::new(FieldRef::Borrowed(&field), &settings, Size::new(w, h));
         let mut pixels = vec![0u32; (w * h) as usize];
         let mut canvas = Canvas::new(&mut pixels, w, 0).keeping_first();
         let clip = *canvas.clip();

@@ -309,6 +309,7 @@ fn dither_row(y: u32) -> [f32; 4] {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::render::base::size::Size;
     use crate::render::framing::tops::RowTops;
     use crate::render::framing::view::View;
     use crate::render::shade::light::Lighting;
@@ -320,7 +321,13 @@ mod tests {
     fn painted_weather_is_what_colour_says() {
         let field = Heightfield::flat(5, 100.0);
         let tops = RowTops::of(&field);
-        let view = View::fitted(ViewKind::Vista, 33, 100.0, (tops.rows(), 0.0), 150, 90);
+        let view = View::fitted(
+            ViewKind::Vista,
+            33,
+            100.0,
+            (tops.rows(), 0.0),
+            Size::new(150, 90),
+        );
         let lighting = Lighting::new(Sun::Evening, &field);
         let w = Weather::new(
             &view,

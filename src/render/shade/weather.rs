@@ -240,6 +240,7 @@ impl WeatherRow<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::render::base::size::Size;
     use crate::render::framing::tops::RowTops;
     use crate::settings::{Sun, ViewKind};
     use crate::terrain::Heightfield;
@@ -247,7 +248,13 @@ mod tests {
     fn view() -> View {
         let field = Heightfield::flat(5, 100.0);
         let tops = RowTops::of(&field);
-        View::fitted(ViewKind::Vista, 33, 100.0, (tops.rows(), 0.0), 960, 540)
+        View::fitted(
+            ViewKind::Vista,
+            33,
+            100.0,
+            (tops.rows(), 0.0),
+            Size::new(960, 540),
+        )
     }
 
     fn weather(sun: Sun, amount: f32) -> Weather {
