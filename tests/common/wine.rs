@@ -13,6 +13,7 @@ use std::process::{Command, Stdio};
 use std::sync::{Mutex, MutexGuard, OnceLock};
 use std::time::{Instant, SystemTime};
 
+#[cfg(unix)]
 use super::xvfb::{Saver, Xvfb};
 
 /// The command that makes the exe these tests run.
@@ -109,6 +110,7 @@ impl Session {
 
 impl Session {
     /// Runs `PROGRAM ARGS` (a program in `bin`) under Wine on `x`.
+    #[cfg(unix)]
     pub fn start(&self, x: &Xvfb, name: &str, program: &str, args: &[&str]) -> Saver {
         let exe = self.wine.program(program);
         let mut all = vec![exe.as_str()];
