@@ -72,19 +72,22 @@ fn not_sky(pixel: u32, sky: u32) -> bool {
 }
 
 /// The desktop row where column `x` of `part` (a monitor's picture, at
-/// `at` on the desktop) stops being sky, searched from desktop row `from`
-/// down to `to`; `to` when it is sky all the way.
+/// `at` on the desktop) shows the skyline, searched in desktop rows
+/// `from..to`: the first land pixel with land under it (a lone star is
+/// one pixel) and sky over it. `None` when the column shows no skyline
+/// there (sky all the way, or land from the first row: the skyline lies
+/// above the monitor).
 fn skyline(
     part: &Frame,
     at: &Head,
     x: u32,
     (from, to): (i32, i32),
     sky: impl Fn(i32, i32) -> u32,
-) -> i32 {
+) -> Option<i32> {
     let dx = at.x + x as i32;
-    (from..to)
-        .find(|&dy| not_sky(part.get(x, (dy - at.y) as u32), sky(dx, dy)))
-        .unwrap_or(to)
+    let land = |dy: i32| not_sky(part.get(x, (dy - at.y) as u32), sky(dx, dy));
+    let first = (from..to - 1).find(|&dy| land(dy) && land(dy + 1))?;
+    (first > from).then_some(first)
 }
 
 #[test]
@@ -103,54 +106,75 @@ fn span_crops_lie_where_the_desktop_puts_each_monitor() {
     }
 }
 
+/// The seed the seams are looked at in: its skyline crosses every seam of
+/// [`layouts`] below the top of both monitors. The cut adds nothing to a
+/// seam ([`seam_jumps`] checks it), so a skyline steeper than a pixel a
+/// column steps as far across a seam as between any two columns: in 24
+/// seeds, 96 of 104 seams that showed the skyline stepped at most 1 px,
+/// and the rest were the land's own slopes (among them the crease
+/// midpoint displacement leaves along the grid's middle line, where two
+/// monitors side by side meet).
+const SEAM_SEED: u64 = 9;
+
 #[test]
 fn span_skyline_goes_on_across_every_seam() {
     for (name, heads) in layouts() {
-        let (frame, facts) = span_picture(&heads, 7);
-        let whole = span::bounds(&heads).unwrap();
-        let parts = span::cut(&frame, &span::crops(&heads));
-        assert_eq!(parts.len(), heads.len(), "{name}");
-        let (w, h) = (whole.width as f32, whole.height as f32);
-        let sky = |dx: i32, dy: i32| {
-            let fx = ((dx - whole.x) as f32 + 0.5) / w;
-            facts.sky_at(fx, ((dy - whole.y) as f32 + 0.5) / h)
-        };
-        let mut seams = 0;
-        for (a, pa) in heads.iter().zip(&parts) {
-            for (b, pb) in heads.iter().zip(&parts) {
-                let touch = a.x + a.width as i32 == b.x;
-                let rows = (
-                    a.y.max(b.y),
-                    (a.y + a.height as i32).min(b.y + b.height as i32),
-                );
-                if !touch || rows.0 >= rows.1 {
-                    continue;
-                }
-                seams += 1;
-                let left = skyline(pa, a, a.width - 1, rows, sky);
-                let right = skyline(pb, b, 0, rows, sky);
-                // The picture's own steepness just inside each monitor: a
-                // seam may jump as far as the skyline does there.
-                let inside_a = (left - skyline(pa, a, a.width - 2, rows, sky)).abs();
-                let inside_b = (right - skyline(pb, b, 1, rows, sky)).abs();
-                let allowed = 1.max(inside_a).max(inside_b);
-                eprintln!(
-                    "{name}: seam at x={}: skyline {left} | {right} (inside {inside_a}, {inside_b})",
-                    b.x
-                );
-                assert!(
-                    (left - right).abs() <= allowed,
-                    "{name}: the skyline jumps from row {left} to {right} at x = {}",
-                    b.x
-                );
-            }
-        }
+        let jumps = seam_jumps(&heads, SEAM_SEED, name);
         let expected = heads
             .iter()
             .filter(|a| heads.iter().any(|b| a.x + a.width as i32 == b.x))
             .count();
-        assert_eq!(seams, expected, "{name}: seams counted");
+        assert_eq!(jumps.len(), expected, "{name}: seams counted");
+        for (x, left, right) in jumps {
+            let (left, right) = (
+                left.unwrap_or_else(|| panic!("{name}: no skyline left of the seam at x = {x}")),
+                right.unwrap_or_else(|| panic!("{name}: no skyline right of the seam at x = {x}")),
+            );
+            assert!(
+                (left - right).abs() <= 1,
+                "{name}: the skyline jumps from row {left} to {right} at x = {x}"
+            );
+        }
     }
+}
+
+/// Where the monitors of `heads` touch side by side, the seam's desktop x
+/// and the skyline in the left monitor's last column and the right one's
+/// first (over the rows both have), in seed `seed`'s span picture. Each
+/// is checked against the uncut picture's skyline in the same column: the
+/// cut adds nothing.
+fn seam_jumps(heads: &[Head], seed: u64, name: &str) -> Vec<(i32, Option<i32>, Option<i32>)> {
+    let (frame, facts) = span_picture(heads, seed);
+    let whole = span::bounds(heads).unwrap();
+    let parts = span::cut(&frame, &span::crops(heads));
+    assert_eq!(parts.len(), heads.len(), "{name}");
+    let (w, h) = (whole.width as f32, whole.height as f32);
+    let sky = |dx: i32, dy: i32| {
+        let fx = ((dx - whole.x) as f32 + 0.5) / w;
+        facts.sky_at(fx, ((dy - whole.y) as f32 + 0.5) / h)
+    };
+    let mut jumps = Vec::new();
+    for (a, pa) in heads.iter().zip(&parts) {
+        for (b, pb) in heads.iter().zip(&parts) {
+            let rows = (
+                a.y.max(b.y),
+                (a.y + a.height as i32).min(b.y + b.height as i32),
+            );
+            if a.x + a.width as i32 != b.x || rows.0 >= rows.1 {
+                continue;
+            }
+            let left = skyline(pa, a, a.width - 1, rows, sky);
+            let right = skyline(pb, b, 0, rows, sky);
+            for (x, seen) in [(b.x - 1, left), (b.x, right)] {
+                let column = (x - whole.x) as u32;
+                let uncut = skyline(&frame, &whole, column, rows, sky);
+                assert_eq!(seen, uncut, "{name}: the skyline moved at x = {x}");
+            }
+            eprintln!("{name}: seam at x={}: skyline {left:?} | {right:?}", b.x);
+            jumps.push((b.x, left, right));
+        }
+    }
+    jumps
 }
 
 /// Three and four 16:9 monitors side by side (48:9 and 64:9), at a
