@@ -123,24 +123,9 @@ fn half(picture: &[u32], from: i16) -> (u32, u32, Vec<u32>) {
 #[cfg(target_os = "linux")]
 #[test]
 fn wayland_span_two_outputs_show_one_picture() {
-    use crate::common::sway::Sway;
-    let Some(sway) = Sway::start("span", 640, 480, 1, false) else {
+    let Some((sway, added)) = sway_two_outputs("span") else {
         return;
     };
-    let added = "HEADLESS-2";
-    let place = [
-        "output",
-        added,
-        "resolution",
-        "640x480",
-        "position",
-        "640",
-        "0",
-    ];
-    sway.run("swaymsg", &place);
-    sway.run("swaymsg", &["create_output"]);
-    // sway lays a new output out again: the first one goes back to 0,0.
-    sway.run("swaymsg", &["output", "HEADLESS-1", "position", "0", "0"]);
     let picture = headless_render(1280, 480);
     let args = [
         "/s",
@@ -158,4 +143,57 @@ fn wayland_span_two_outputs_show_one_picture() {
     });
     eprintln!("span on two outputs after {took:?}");
     saver.assert_running();
+}
+
+/// Two 640x480 sway outputs side by side (`HEADLESS-1` at 0,0 and the one
+/// it returns at 640,0).
+#[cfg(target_os = "linux")]
+fn sway_two_outputs(name: &str) -> Option<(crate::common::sway::Sway, &'static str)> {
+    let sway = crate::common::sway::Sway::start(name, 640, 480, 1, false)?;
+    let added = "HEADLESS-2";
+    let place = [
+        "output",
+        added,
+        "resolution",
+        "640x480",
+        "position",
+        "640",
+        "0",
+    ];
+    sway.run("swaymsg", &place);
+    sway.run("swaymsg", &["create_output"]);
+    // sway lays a new output out again: the first one goes back to 0,0.
+    sway.run("swaymsg", &["output", "HEADLESS-1", "position", "0", "0"]);
+    Some((sway, added))
+}
+
+#[cfg(target_os = "linux")]
+#[test]
+fn wayland_layer_span_two_outputs_show_one_picture() {
+    let Some((sway, added)) = sway_two_outputs("layer-span") else {
+        return;
+    };
+    let picture = headless_render(1280, 480);
+    let args = [
+        "--layer",
+        "background",
+        "--set",
+        "monitors=span",
+        "--set",
+        "seed=5",
+        "--set",
+        "pause_seconds=30",
+    ];
+    let mut saver = sway.mountains(&args);
+    let took = saver.poll(
+        "each output's layer surface showing its half of one picture",
+        || {
+            sway.screenshot_output("HEADLESS-1") == half(&picture, 0)
+                && sway.screenshot_output(added) == half(&picture, 640)
+        },
+    );
+    eprintln!("layer span on two outputs after {took:?}");
+    saver.assert_running();
+    saver.terminate();
+    saver.expect_exit("SIGTERM");
 }
