@@ -45,7 +45,7 @@ pub(crate) const SKYLINE_LOWEST: f32 = 0.72;
 const SKY_ROOM: f32 = 0.12;
 /// The widest aspect framed only as itself (16:9, one monitor); wider
 /// frames are stretched sideways when their land would fill the sky.
-pub(crate) const ORDINARY: f32 = 16.0 / 9.0;
+const ORDINARY: f32 = 16.0 / 9.0;
 /// The tallest land the vista frames when it would rise out of the top of
 /// the frame, in grid widths above sea level. Its camera stands about a
 /// tenth of a width high: from there, land half a width tall is its near
@@ -87,7 +87,9 @@ impl Shot {
 /// over land whose highest points are `tops` (world positions, e.g. each
 /// row's highest point): the back edge at [`SKYLINE`], or, where the land
 /// would rise within [`SKY_ROOM`] of the top, exactly as much lower as
-/// keeps that strip of sky (at most down to [`SKYLINE_LOWEST`]).
+/// keeps that strip of sky (at most down to [`SKYLINE_LOWEST`]); a frame
+/// wider than [`ORDINARY`] whose land needs more is then drawn as a
+/// narrower one stretched sideways ([`Shot::stretch`]).
 ///
 /// `None` for land so tall (over [`VISTA_TALLEST`]) that even then it
 /// rises out of the top of the frame: a camera this low in front of it
