@@ -197,3 +197,56 @@ fn wayland_layer_span_two_outputs_show_one_picture() {
     saver.terminate();
     saver.expect_exit("SIGTERM");
 }
+
+#[cfg(target_os = "linux")]
+#[test]
+fn wayland_layer_span_takes_in_an_output_added_at_the_next_slide() {
+    let Some(sway) = crate::common::sway::Sway::start("layer-span-added", 640, 480, 1, false)
+    else {
+        return;
+    };
+    let (one, both) = (headless_render(640, 480), headless_render(1280, 480));
+    // Drawn at once and held 8 s: the next slide comes within the patience.
+    let args = [
+        "--layer",
+        "background",
+        "--set",
+        "monitors=span",
+        "--set",
+        "seed=5",
+        "--set",
+        "draw_seconds=0",
+        "--set",
+        "pause_seconds=8",
+    ];
+    let mut saver = sway.mountains(&args);
+    saver.poll("the span over the one output", || {
+        sway.screenshot_output("HEADLESS-1") == (640, 480, one.clone())
+    });
+    let added = "HEADLESS-2";
+    let place = [
+        "output",
+        added,
+        "resolution",
+        "640x480",
+        "position",
+        "640",
+        "0",
+    ];
+    sway.run("swaymsg", &place);
+    sway.run("swaymsg", &["create_output"]);
+    sway.run("swaymsg", &["output", "HEADLESS-1", "position", "0", "0"]);
+    // The slide on screen is not cut short: the first output keeps it...
+    std::thread::sleep(std::time::Duration::from_millis(1500));
+    assert!(
+        sway.screenshot_output("HEADLESS-1") == (640, 480, one.clone()),
+        "the span was laid again in the middle of a slide"
+    );
+    // ...and the next slide is laid over both outputs.
+    let took = saver.poll("each output showing its half of the next slide", || {
+        sway.screenshot_output("HEADLESS-1") == half(&both, 0)
+            && sway.screenshot_output(added) == half(&both, 640)
+    });
+    eprintln!("the span over two outputs after {took:?}");
+    saver.assert_running();
+}
