@@ -46,6 +46,9 @@ const SKY_ROOM: f32 = 0.12;
 /// The widest aspect framed only as itself (16:9, one monitor); wider
 /// frames are stretched sideways when their land would fill the sky.
 const ORDINARY: f32 = 16.0 / 9.0;
+/// How much wider than [`ORDINARY`] a frame may be and still count as
+/// 16:9: a 1366x768 laptop's screen is a 16:9 monitor too.
+const ORDINARY_SLACK: f32 = 1.01;
 /// The tallest land the vista frames when it would rise out of the top of
 /// the frame, in grid widths above sea level. Its camera stands about a
 /// tenth of a width high: from there, land half a width tall is its near
@@ -130,7 +133,7 @@ fn fitted_to_tops(extent: f32, width: f32, height: f32, tops: &[Vec3]) -> Option
     let skyline = bisect_steps(SKYLINE, SKYLINE_LOWEST, SKYLINE_STEPS, |s| clear(&shot(s)));
     let mut lowered = shot(skyline);
     let widest = width / (ORDINARY * height.max(1.0));
-    if clear(&lowered) < 0.0 && widest > 1.0 {
+    if clear(&lowered) < 0.0 && widest > ORDINARY_SLACK {
         let narrowed = |k: f32| stretched(extent, width, height, k);
         let k = bisect_steps(1.0, widest, SKYLINE_STEPS, |k| clear(&narrowed(k)));
         lowered = narrowed(k);
