@@ -83,6 +83,8 @@ On Wayland, a wlr\-layer\-shell surface covering every output, drawn at the
 output's real pixels: \fIlayer\fP is background, bottom, top or overlay.
 \fB\-\-layer background\fP is a wallpaper, or the background under
 swaylock\-plugin's lock (\fBswaylock\-plugin \-\-command 'mountains \-\-layer background'\fP).
+With \fBmonitors = "span"\fP one landscape goes across the outputs, each
+showing its part where the compositor's layout puts it.
 Outputs that come and go are followed; it ends on SIGTERM or SIGINT, or
 when the compositor closes its last surface, not on input. A compositor
 without zwlr_layer_shell_v1 (GNOME) is refused with a message.

@@ -85,8 +85,9 @@ pub fn cut(span: &Frame, crops: &[Rect]) -> Vec<Frame> {
 }
 
 /// The span's slide show and where its frame lies on the desktop; the
-/// windows keep black shows of their own that it copies its pixels into.
-pub(super) struct Span {
+/// windows (or `--layer`'s surfaces) keep black shows of their own that it
+/// copies its pixels into.
+pub(crate) struct Span {
     show: Show,
     whole: Head,
     /// The heads it was laid for.
@@ -95,7 +96,7 @@ pub(super) struct Span {
 
 impl Span {
     /// A span over `heads` drawing `show`, made for their bounding rectangle.
-    pub(super) fn new(heads: &[Head], make: impl FnOnce(Size) -> Show) -> Option<Span> {
+    pub(crate) fn new(heads: &[Head], make: impl FnOnce(Size) -> Show) -> Option<Span> {
         let whole = bounds(heads)?;
         let show = make(Size::new(whole.width, whole.height));
         let heads = heads.to_vec();
@@ -103,45 +104,37 @@ impl Span {
     }
 
     /// True when it was laid for exactly `heads`.
-    pub(super) fn laid_for(&self, heads: &[Head]) -> bool {
+    pub(crate) fn laid_for(&self, heads: &[Head]) -> bool {
         self.heads == heads
     }
 
     /// Number of the slide the span shows.
-    pub(super) fn slide(&self) -> u64 {
+    pub(crate) fn slide(&self) -> u64 {
         self.show.slide()
     }
 
     /// Moves the show on: what changed in the span's frame.
-    pub(super) fn tick(&mut self, now: Instant) -> Damage {
+    pub(crate) fn tick(&mut self, now: Instant) -> Damage {
         self.show.tick(now)
     }
 
     /// Makes the span's show follow the power and the display's state:
     /// the pixels that changed in its frame.
-    pub(super) fn follow(&mut self, seen: super::watch::Seen, now: Instant) -> Rect {
+    pub(crate) fn follow(&mut self, seen: super::watch::Seen, now: Instant) -> Rect {
         super::watch::apply(seen, &mut self.show, now)
     }
 
     /// When the show wants to be woken.
-    pub(super) fn wake_at(&self, now: Instant) -> Option<Instant> {
+    pub(crate) fn wake_at(&self, now: Instant) -> Option<Instant> {
         self.show.wake_at(now)
     }
 
     /// Copies `damage`'s pixels into `screen`'s frame: what changed there.
     pub(super) fn paint(&self, screen: &mut Screen, damage: &Damage) -> Damage {
-        let (Some(span), Some(head)) = (self.show.frame(), screen.head) else {
-            return Damage::default();
-        };
-        let Some(window) = screen.show.frame_mut() else {
-            return Damage::default();
-        };
-        let crop = crop(&self.whole, &head);
-        let mut changed = Damage::default();
-        for r in damage.rects() {
-            changed.add(copy(span, crop, r, window));
+        match screen.head {
+            Some(head) => self.paint_to(&head, &mut screen.show, damage),
+            None => Damage::default(),
         }
-        changed
     }
 
     /// Copies the whole of `screen`'s part (a window that is new or was
@@ -149,6 +142,27 @@ impl Span {
     pub(super) fn paint_all(&self, screen: &mut Screen) -> Damage {
         let all = self.show.frame().map(Frame::bounds).unwrap_or_default();
         self.paint(screen, &all.into())
+    }
+
+    /// Copies `damage`'s pixels into the frame of `window`, the black show
+    /// of the monitor at `head`: what changed there.
+    pub(crate) fn paint_to(&self, head: &Head, window: &mut Show, damage: &Damage) -> Damage {
+        let (Some(span), Some(window)) = (self.show.frame(), window.frame_mut()) else {
+            return Damage::default();
+        };
+        let crop = crop(&self.whole, head);
+        let mut changed = Damage::default();
+        for r in damage.rects() {
+            changed.add(copy(span, crop, r, window));
+        }
+        changed
+    }
+
+    /// [`Span::paint_to`] of the whole span: a window that is new or was
+    /// resized.
+    pub(crate) fn paint_all_to(&self, head: &Head, window: &mut Show) -> Damage {
+        let all = self.show.frame().map(Frame::bounds).unwrap_or_default();
+        self.paint_to(head, window, &all.into())
     }
 }
 

@@ -123,24 +123,9 @@ fn half(picture: &[u32], from: i16) -> (u32, u32, Vec<u32>) {
 #[cfg(target_os = "linux")]
 #[test]
 fn wayland_span_two_outputs_show_one_picture() {
-    use crate::common::sway::Sway;
-    let Some(sway) = Sway::start("span", 640, 480, 1, false) else {
+    let Some((sway, added)) = sway_two_outputs("span") else {
         return;
     };
-    let added = "HEADLESS-2";
-    let place = [
-        "output",
-        added,
-        "resolution",
-        "640x480",
-        "position",
-        "640",
-        "0",
-    ];
-    sway.run("swaymsg", &place);
-    sway.run("swaymsg", &["create_output"]);
-    // sway lays a new output out again: the first one goes back to 0,0.
-    sway.run("swaymsg", &["output", "HEADLESS-1", "position", "0", "0"]);
     let picture = headless_render(1280, 480);
     let args = [
         "/s",
@@ -157,5 +142,111 @@ fn wayland_span_two_outputs_show_one_picture() {
             && sway.screenshot_output(added) == half(&picture, 640)
     });
     eprintln!("span on two outputs after {took:?}");
+    saver.assert_running();
+}
+
+/// Two 640x480 sway outputs side by side (`HEADLESS-1` at 0,0 and the one
+/// it returns at 640,0).
+#[cfg(target_os = "linux")]
+fn sway_two_outputs(name: &str) -> Option<(crate::common::sway::Sway, &'static str)> {
+    let sway = crate::common::sway::Sway::start(name, 640, 480, 1, false)?;
+    let added = "HEADLESS-2";
+    let place = [
+        "output",
+        added,
+        "resolution",
+        "640x480",
+        "position",
+        "640",
+        "0",
+    ];
+    sway.run("swaymsg", &place);
+    sway.run("swaymsg", &["create_output"]);
+    // sway lays a new output out again: the first one goes back to 0,0.
+    sway.run("swaymsg", &["output", "HEADLESS-1", "position", "0", "0"]);
+    Some((sway, added))
+}
+
+#[cfg(target_os = "linux")]
+#[test]
+fn wayland_layer_span_two_outputs_show_one_picture() {
+    let Some((sway, added)) = sway_two_outputs("layer-span") else {
+        return;
+    };
+    let picture = headless_render(1280, 480);
+    let args = [
+        "--layer",
+        "background",
+        "--set",
+        "monitors=span",
+        "--set",
+        "seed=5",
+        "--set",
+        "pause_seconds=30",
+    ];
+    let mut saver = sway.mountains(&args);
+    let took = saver.poll(
+        "each output's layer surface showing its half of one picture",
+        || {
+            sway.screenshot_output("HEADLESS-1") == half(&picture, 0)
+                && sway.screenshot_output(added) == half(&picture, 640)
+        },
+    );
+    eprintln!("layer span on two outputs after {took:?}");
+    saver.assert_running();
+    saver.terminate();
+    saver.expect_exit("SIGTERM");
+}
+
+#[cfg(target_os = "linux")]
+#[test]
+fn wayland_layer_span_takes_in_an_output_added_at_the_next_slide() {
+    let Some(sway) = crate::common::sway::Sway::start("layer-span-added", 640, 480, 1, false)
+    else {
+        return;
+    };
+    let (one, both) = (headless_render(640, 480), headless_render(1280, 480));
+    // Drawn at once and held 8 s: the next slide comes within the patience.
+    let args = [
+        "--layer",
+        "background",
+        "--set",
+        "monitors=span",
+        "--set",
+        "seed=5",
+        "--set",
+        "draw_seconds=0",
+        "--set",
+        "pause_seconds=8",
+    ];
+    let mut saver = sway.mountains(&args);
+    saver.poll("the span over the one output", || {
+        sway.screenshot_output("HEADLESS-1") == (640, 480, one.clone())
+    });
+    let added = "HEADLESS-2";
+    let place = [
+        "output",
+        added,
+        "resolution",
+        "640x480",
+        "position",
+        "640",
+        "0",
+    ];
+    sway.run("swaymsg", &place);
+    sway.run("swaymsg", &["create_output"]);
+    sway.run("swaymsg", &["output", "HEADLESS-1", "position", "0", "0"]);
+    // The slide on screen is not cut short: the first output keeps it...
+    std::thread::sleep(std::time::Duration::from_millis(1500));
+    assert!(
+        sway.screenshot_output("HEADLESS-1") == (640, 480, one.clone()),
+        "the span was laid again in the middle of a slide"
+    );
+    // ...and the next slide is laid over both outputs.
+    let took = saver.poll("each output showing its half of the next slide", || {
+        sway.screenshot_output("HEADLESS-1") == half(&both, 0)
+            && sway.screenshot_output(added) == half(&both, 640)
+    });
+    eprintln!("the span over two outputs after {took:?}");
     saver.assert_running();
 }

@@ -9,7 +9,10 @@
 //!
 //! It runs until SIGTERM or SIGINT, or until the compositor has closed every
 //! surface; outputs that come and go while it runs gain and lose a surface.
-//! How a buffer covers its output (buffer scale or viewport): `cover.rs`.
+//! How a buffer covers its output (buffer scale or viewport): `cover.rs`;
+//! one landscape across the outputs (`monitors = "span"`): `layer/span.rs`.
+
+mod span;
 
 use std::time::{Duration, Instant};
 
@@ -194,6 +197,8 @@ struct LayerApp {
     settings: Settings,
     opened: Option<Mountain>,
     covered: Vec<Covered>,
+    /// `monitors = "span"`: the one show the surfaces show their parts of.
+    span: Option<crate::saver::span::Span>,
     /// The power and the outputs' state, as last seen (`watch.rs`).
     seen: crate::saver::watch::Seen,
     ended: bool,
@@ -226,6 +231,7 @@ impl LayerApp {
             settings,
             opened,
             covered: Vec::new(),
+            span: None,
             seen: crate::saver::watch::Seen {
                 power: crate::platform::power::Power::default(),
                 display_on: true,
@@ -302,7 +308,9 @@ impl LayerApp {
     /// says now.
     fn cover_of(&self, i: usize) -> Cover {
         let c = &self.covered[i];
-        let Some(info) = self.outputs.info(&c.output) else {
+        let info = self.outputs.info(&c.output);
+        // A span is drawn in the compositor's units (`layer/span.rs`).
+        let Some(info) = info.filter(|_| !self.spans()) else {
             return cover::cover(c.logical, 1, None, false);
         };
         let mode = info.modes.iter().find(|m| m.current);
@@ -358,6 +366,9 @@ impl LayerApp {
             },
         };
         self.present(i, damage);
+        if self.spans() {
+            self.span_fitted(i, now);
+        }
     }
 
     /// Makes surface `i`'s presenter and show; the whole frame to present.
@@ -372,13 +383,18 @@ impl LayerApp {
             self.settings.pause_seconds,
             true,
         );
-        let mut show = crate::saver::options::new_show(
-            self.settings.clone(),
-            self.opened.clone(),
-            pacing,
-            size,
-            now,
-        );
+        // A span's surface shows its part of the span's show (`layer/span.rs`).
+        let mut show = if self.spans() {
+            Show::blank(size, now)
+        } else {
+            crate::saver::options::new_show(
+                self.settings.clone(),
+                self.opened.clone(),
+                pacing,
+                size,
+                now,
+            )
+        };
         crate::saver::watch::apply(self.seen, &mut show, now);
         let bounds = show.frame().map(|f| f.bounds()).unwrap_or_default();
         self.covered[i].drawing = Some(Drawing { presenter, show });
@@ -419,6 +435,7 @@ impl LayerApp {
             };
             self.present(i, damage.into());
         }
+        self.follow_span(seen, now);
     }
 
     /// Does what each show has due, presents it; how long to wait for the
@@ -431,8 +448,10 @@ impl LayerApp {
             };
             self.present(i, damage);
         }
+        self.tick_span(now);
         let shows = self.covered.iter().filter_map(|c| c.drawing.as_ref());
-        let wake = shows.filter_map(|d| d.show.wake_at(now)).min()?;
+        let wakes = shows.filter_map(|d| d.show.wake_at(now));
+        let wake = wakes.chain(self.span_wake_at(now)).min()?;
         Some(wake.saturating_duration_since(Instant::now()))
     }
 }

@@ -80,7 +80,9 @@ const MARGIN: f32 = 0.02;
 #[derive(Debug, Clone)]
 pub struct View {
     cell: f32,
-    scale: f32,
+    /// Pixels per unscaled unit across and down the frame (the same but
+    /// in a vista stretched sideways).
+    scale: Vec2,
     offset: Vec2,
     camera: Option<Camera>,
     size: usize,
@@ -97,7 +99,7 @@ pub(crate) struct RowView {
     /// The row's world y.
     y: f32,
     cell: f32,
-    scale: f32,
+    scale: Vec2,
     offset: Vec2,
     tilt: (f32, f32),
     relief: f32,
@@ -134,8 +136,8 @@ impl RowView {
             }
         };
         [
-            Vec4::splat(self.offset.x) + self.scale * ux,
-            Vec4::splat(self.offset.y) + self.scale * uy,
+            Vec4::splat(self.offset.x) + self.scale.x * ux,
+            Vec4::splat(self.offset.y) + self.scale.y * uy,
         ]
     }
 
@@ -212,7 +214,7 @@ impl View {
         };
         let mut view = View {
             cell: extent / steps,
-            scale: 1.0,
+            scale: Vec2::ONE,
             offset: Vec2::ZERO,
             camera: None,
             size,
@@ -249,7 +251,7 @@ impl View {
         let steps = size.saturating_sub(1).max(1) as f32;
         View {
             cell: extent / steps,
-            scale,
+            scale: Vec2::splat(scale),
             offset,
             camera: Some(camera),
             size,
@@ -300,7 +302,7 @@ impl View {
             return self.fit(steps, row_top, width, height);
         };
         self.camera = Some(shot.camera);
-        self.scale = shot.focal;
+        self.scale = Vec2::new(shot.focal * shot.stretch, shot.focal);
         self.offset = Vec2::new(width, height) * 0.5;
     }
 
@@ -323,11 +325,11 @@ impl View {
         let span = (hi - lo).max(Vec2::splat(1e-6));
         let room = Vec2::new(width, height) * (1.0 - 2.0 * MARGIN);
         let scale = (room.x / span.x).min(room.y / span.y);
-        self.scale = if scale.is_finite() && scale > 0.0 {
+        self.scale = Vec2::splat(if scale.is_finite() && scale > 0.0 {
             scale
         } else {
             1.0
-        };
+        });
         let centre = (lo + hi) * 0.5 * self.scale;
         self.offset = Vec2::new(width, height) * 0.5 - centre;
     }

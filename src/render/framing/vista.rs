@@ -9,7 +9,15 @@
 //!   height from the top, leaving the sky above for the peaks to rise into
 //!   (lower, down to [`SKYLINE_LOWEST`], when the land is so tall it would
 //!   fill the sky: exactly as low as keeps [`SKY_ROOM`] clear, see [`fitted`]);
-//! - the near edge at sea level falls just below the bottom.
+//! - the near edge at sea level falls just below the bottom;
+//! - a frame wider than [`ORDINARY`] whose land would still fill the sky
+//!   with the back edge at [`SKYLINE_LOWEST`] (the land's height on screen
+//!   grows with the width the back edge spans: three 16:9 monitors side by
+//!   side see it three times as tall as one does) is framed as a narrower
+//!   frame of its height, exactly as narrow as keeps [`SKY_ROOM`] clear
+//!   (at most down to [`ORDINARY`]), and stretched sideways to its width:
+//!   like xmountains, whose land is as tall on a wide screen as on a
+//!   narrow one, it shows the land wider rather than taller.
 //!
 //! The width fixes the focal length for a given pitch and camera height;
 //! the two vertical conditions then fix the pitch and the height, found by
@@ -35,6 +43,12 @@ pub(crate) const SKYLINE: f32 = 0.4;
 pub(crate) const SKYLINE_LOWEST: f32 = 0.72;
 /// Sky kept above the highest land, as a fraction of the height.
 const SKY_ROOM: f32 = 0.12;
+/// The widest aspect framed only as itself (16:9, one monitor); wider
+/// frames are stretched sideways when their land would fill the sky.
+const ORDINARY: f32 = 16.0 / 9.0;
+/// How much wider than [`ORDINARY`] a frame may be and still count as
+/// 16:9: a 1366x768 laptop's screen is a 16:9 monitor too.
+const ORDINARY_SLACK: f32 = 1.01;
 /// The tallest land the vista frames when it would rise out of the top of
 /// the frame, in grid widths above sea level. Its camera stands about a
 /// tenth of a width high: from there, land half a width tall is its near
@@ -57,14 +71,18 @@ const SKYLINE_STEPS: usize = 24;
 pub(crate) struct Shot {
     /// Where the camera stands and looks.
     pub camera: Camera,
-    /// Pixels per unit of `x / depth`.
+    /// Pixels per unit of `x / depth` up the frame.
     pub focal: f32,
+    /// How many times wider than high a unit is drawn across the frame
+    /// (1 but in frames wider than [`ORDINARY`] whose land needs it).
+    pub stretch: f32,
 }
 
 impl Shot {
     /// Frame position of world point `p` in a `width` x `height` frame.
     fn project(&self, p: Vec3, width: f32, height: f32) -> Vec2 {
-        Vec2::new(width, height) * 0.5 + self.focal * self.camera.project(p)
+        let scale = Vec2::new(self.focal * self.stretch, self.focal);
+        Vec2::new(width, height) * 0.5 + scale * self.camera.project(p)
     }
 }
 
@@ -72,7 +90,9 @@ impl Shot {
 /// over land whose highest points are `tops` (world positions, e.g. each
 /// row's highest point): the back edge at [`SKYLINE`], or, where the land
 /// would rise within [`SKY_ROOM`] of the top, exactly as much lower as
-/// keeps that strip of sky (at most down to [`SKYLINE_LOWEST`]).
+/// keeps that strip of sky (at most down to [`SKYLINE_LOWEST`]); a frame
+/// wider than [`ORDINARY`] whose land needs more is then drawn as a
+/// narrower one stretched sideways ([`Shot::stretch`]).
 ///
 /// `None` for land so tall (over [`VISTA_TALLEST`]) that even then it
 /// rises out of the top of the frame: a camera this low in front of it
@@ -111,7 +131,13 @@ fn fitted_to_tops(extent: f32, width: f32, height: f32, tops: &[Vec3]) -> Option
         return Some(first);
     }
     let skyline = bisect_steps(SKYLINE, SKYLINE_LOWEST, SKYLINE_STEPS, |s| clear(&shot(s)));
-    let lowered = shot(skyline);
+    let mut lowered = shot(skyline);
+    let widest = width / (ORDINARY * height.max(1.0));
+    if clear(&lowered) < 0.0 && widest > ORDINARY_SLACK {
+        let narrowed = |k: f32| stretched(extent, width, height, k);
+        let k = bisect_steps(1.0, widest, SKYLINE_STEPS, |k| clear(&narrowed(k)));
+        lowered = narrowed(k);
+    }
     let tallest = tops.iter().map(|p| p.z).fold(0.0, f32::max);
     // Land that still rises out of the top of the frame is cut off, which
     // the vista accepts (its near slope is not yet all there is to see) up
@@ -137,7 +163,16 @@ pub(crate) fn frame(extent: f32, width: f32, height: f32, skyline: f32) -> Shot 
     Shot {
         camera: Camera::looking_back(eye, pitch, extent),
         focal: focal(standoff, eye_h, pitch, w),
+        stretch: 1.0,
     }
+}
+
+/// The vista of a `width` x `height` frame drawn as that of a frame
+/// `stretch` times narrower, widened to it, the back edge at
+/// [`SKYLINE_LOWEST`].
+fn stretched(extent: f32, width: f32, height: f32, stretch: f32) -> Shot {
+    let narrow = frame(extent, width / stretch, height, SKYLINE_LOWEST);
+    Shot { stretch, ..narrow }
 }
 
 /// How far below the wanted row (just below the bottom) the near edge
