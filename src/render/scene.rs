@@ -582,14 +582,13 @@ fn framed(
     let floor = super::framing::view::near_floor(field);
     let view = match square.filter(|_| settings.view == ViewKind::Perspective) {
         Some(square) => easel::view(square, size, field.extent(), width, height),
-        None => View::fitted_oblique(
+        None => View::fitted_in(
             settings.view,
-            oblique,
+            (oblique, (settings.world, field.identity())),
             size,
             field.extent(),
             (tops, floor),
-            width,
-            height,
+            (width, height),
         ),
     };
     // Sonar and Outline draw every line of their (already thinned) grid.
