@@ -221,18 +221,34 @@ pub fn water(world: World, t: f32, v: f32) -> Rgb {
     }
 }
 
-/// The horizon's colour in `world`, from the light's `horizon`: a dusty
-/// desert air, a cold winter one, a clear mountain one, an autumn's
-/// golden haze.
-pub fn air(world: World, horizon: Rgb) -> Rgb {
-    match world {
-        World::Desert => mix(horizon, [0.86, 0.74, 0.58], 0.45),
-        World::Winter => mix(horizon, [0.80, 0.86, 0.94], 0.35),
-        World::Tropical => mix(horizon, [0.70, 0.88, 0.95], 0.2),
-        World::Autumn => mix(horizon, [0.88, 0.76, 0.58], 0.25),
-        World::Alpine => mix(horizon, [0.78, 0.88, 0.98], 0.25),
-        _ => horizon,
-    }
+/// The sky's colours in `world`, top and horizon, from the light's
+/// `zenith` and `horizon`: a dusty desert air, a cold winter one, a clear
+/// mountain one, an autumn's golden haze, each thicker or thinner by the
+/// mountain's draw of its air `v` ([`air_draw`]), so two slides of one
+/// world at one time of day are apart. `night` (0 to 1) of the night's
+/// look keeps the night's dark top.
+pub fn air(world: World, [zenith, horizon]: [Rgb; 2], v: f32, night: f32) -> [Rgb; 2] {
+    // The tint of the horizon and how much of it (least to most), and the
+    // tint of the sky's top and how much of it at most.
+    let (tint, (lo, hi), top, most) = match world {
+        World::Desert => ([0.86, 0.74, 0.58], (0.25, 0.65), [0.52, 0.60, 0.70], 0.45),
+        World::Winter => ([0.80, 0.86, 0.94], (0.2, 0.7), [0.50, 0.56, 0.64], 0.6),
+        World::Tropical => ([0.70, 0.88, 0.95], (0.1, 0.4), [0.04, 0.34, 0.80], 0.5),
+        World::Autumn => ([0.88, 0.76, 0.58], (0.15, 0.5), [0.34, 0.40, 0.60], 0.4),
+        World::Alpine => ([0.78, 0.88, 0.98], (0.1, 0.4), [0.05, 0.16, 0.50], 0.55),
+        World::Varied | World::Temperate => return [zenith, horizon],
+    };
+    let horizon = mix(horizon, tint, lo + (hi - lo) * v);
+    // The top's tint follows a draw of its own (the draw's other end).
+    let w = (v * 7.0).fract();
+    [mix(zenith, top, most * w * (1.0 - night)), horizon]
+}
+
+/// A number from 0 to 1 drawn from the mountain's `identity` for its air
+/// ([`air`]): apart from [`draw`], so a snowier year is not always a
+/// hazier one.
+pub fn air_draw(identity: u64) -> f32 {
+    (crate::terrain::splitmix::mix(identity ^ DRAW_KEY) & 0xff_ffff) as f32 / (1u64 << 24) as f32
 }
 
 /// A pattern of patches across the heights: 0 to 1, `n` ups and downs

@@ -137,8 +137,10 @@ pub(super) const NIGHT_TURN: f32 = -16.0;
 /// it lends the land (the water mirrors the disc itself).
 const MOON_GLINTS: Rgb = [0.80, 0.85, 0.95];
 
-/// How many in 256 slides `sun = "varied"` makes night, where it may.
-pub const NIGHTS_IN_256: u64 = 32;
+/// How many in 256 slides `sun = "varied"` makes night, where it may:
+/// one in sixteen, a night now and then in an evening's slides (dark
+/// slides are alike, and one in eight made them common).
+pub const NIGHTS_IN_256: u64 = 16;
 
 /// Degrees a varied night's moon may stand above [`NIGHT`]'s, and turn
 /// further aside than [`NIGHT_TURN`] (either way): never further behind
