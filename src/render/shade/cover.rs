@@ -8,6 +8,7 @@
 //! top), steepness is relative to the mountain's own steep faces (0 flat,
 //! 1 its steep faces): as the palette's zones have them.
 
+use super::light::Lighting;
 use crate::render::base::colour::{Rgb, mix};
 use crate::settings::World;
 
@@ -231,11 +232,11 @@ pub fn air(world: World, [zenith, horizon]: [Rgb; 2], v: f32, night: f32) -> [Rg
     // The tint of the horizon and how much of it (least to most), and the
     // tint of the sky's top and how much of it at most.
     let (tint, (lo, hi), top, most) = match world {
-        World::Desert => ([0.86, 0.74, 0.58], (0.25, 0.65), [0.52, 0.60, 0.70], 0.45),
-        World::Winter => ([0.80, 0.86, 0.94], (0.2, 0.7), [0.50, 0.56, 0.64], 0.6),
-        World::Tropical => ([0.70, 0.88, 0.95], (0.1, 0.4), [0.04, 0.34, 0.80], 0.5),
-        World::Autumn => ([0.88, 0.76, 0.58], (0.15, 0.5), [0.34, 0.40, 0.60], 0.4),
-        World::Alpine => ([0.78, 0.88, 0.98], (0.1, 0.4), [0.05, 0.16, 0.50], 0.55),
+        World::Desert => ([0.86, 0.74, 0.58], (0.15, 0.75), [0.52, 0.60, 0.70], 0.7),
+        World::Winter => ([0.80, 0.86, 0.94], (0.15, 0.8), [0.50, 0.56, 0.64], 0.8),
+        World::Tropical => ([0.70, 0.88, 0.95], (0.0, 0.5), [0.04, 0.34, 0.80], 0.7),
+        World::Autumn => ([0.88, 0.76, 0.58], (0.1, 0.6), [0.34, 0.40, 0.60], 0.7),
+        World::Alpine => ([0.78, 0.88, 0.98], (0.05, 0.5), [0.05, 0.16, 0.50], 0.7),
         World::Varied | World::Temperate => return [zenith, horizon],
     };
     let horizon = mix(horizon, tint, lo + (hi - lo) * v);
@@ -249,6 +250,42 @@ pub fn air(world: World, [zenith, horizon]: [Rgb; 2], v: f32, night: f32) -> [Rg
 /// hazier one.
 pub fn air_draw(identity: u64) -> f32 {
     (crate::terrain::splitmix::mix(identity ^ DRAW_KEY) & 0xff_ffff) as f32 / (1u64 << 24) as f32
+}
+
+/// A number from 0 to 1 drawn from the mountain's `identity` for its
+/// day's light ([`light`]), apart from [`draw`] and [`air_draw`].
+pub fn light_draw(identity: u64) -> f32 {
+    ((crate::terrain::splitmix::mix(identity ^ DRAW_KEY) >> 24) & 0xffff) as f32 / 65536.0
+}
+
+/// The day's light in `world`, from the time of day's `light`: winter's
+/// low, cold sun (lower, paler and bluer, more of its light from the
+/// sky); in every world but the temperate a brighter or duller, warmer or
+/// colder day by the mountain's draw `v` ([`air_draw`]). Nights and seed
+/// 000's light are left as they are.
+pub fn light(world: World, mut light: Lighting, v: f32) -> Lighting {
+    if light.classic || light.night > 0.0 || matches!(world, World::Temperate | World::Varied) {
+        return light;
+    }
+    if world == World::Winter {
+        let s = light.sun;
+        let el = s.z.clamp(-1.0, 1.0).asin().to_degrees();
+        let low = el.min(8.0 + 0.35 * el).to_radians();
+        let flat = glam::Vec2::new(s.x, s.y).normalize_or_zero() * low.cos();
+        light.sun = glam::Vec3::new(flat.x, flat.y, low.sin()).normalize_or(s);
+        light.direct = mix(light.direct, [0.80, 0.86, 0.98], 0.35).map(|c| 0.85 * c);
+        light.ambient = mix(light.ambient, [0.42, 0.48, 0.62], 0.3);
+    }
+    // Two draws from one: how bright, and how warm.
+    let (bright, warm) = (v, (v * 5.0).fract());
+    let tint = match warm < 0.5 {
+        true => mix([1.0; 3], [1.0, 0.84, 0.66], 0.5 - warm),
+        false => mix([1.0; 3], [0.84, 0.92, 1.0], warm - 0.5),
+    };
+    let k = 0.95 + 0.3 * bright;
+    light.direct = [0, 1, 2].map(|i| light.direct[i] * tint[i] * k);
+    light.glints = light.direct;
+    light
 }
 
 /// A pattern of patches across the heights: 0 to 1, `n` ups and downs

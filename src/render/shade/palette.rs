@@ -144,7 +144,8 @@ impl Palette {
         // The colour filters and the seed programs' looks keep the
         // pictures a varied draw gave them before there were nights.
         let nights = settings.color == ColorMode::Natural && settings.look == Look::Ours;
-        Lighting::drawn(sun, field, nights)
+        let light = Lighting::drawn(sun, field, nights);
+        cover::light(settings.world, light, cover::light_draw(field.identity()))
     }
 
     /// [`Palette::new`] with its light worked out already
