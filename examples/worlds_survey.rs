@@ -71,8 +71,9 @@ fn main() {
         .map(|&seed| {
             let s = slide(&prefs, seed, size);
             println!(
-                "seed {seed:3} {:9} green {} water {} snow {} lakes {:.2}%",
+                "seed {seed:3} {:9} night {} green {} water {} snow {} lakes {:.2}%",
                 s.world,
+                s.night as u8,
                 s.green as u8,
                 s.water as u8,
                 s.snow as u8,
