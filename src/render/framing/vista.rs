@@ -11,6 +11,12 @@
 //!   fill the sky: exactly as low as keeps [`SKY_ROOM`] clear, see [`fitted`]);
 //! - the near edge at sea level falls just below the bottom.
 //!
+//! A world other than the temperate aims its vista otherwise ([`Aim::of`]):
+//! its back edge higher or lower in the frame and a share of the land's
+//! depth below the bottom instead of the near edge, which raises the
+//! camera and pitches it down (the alpine world's looks down into its
+//! valleys).
+//!
 //! The width fixes the focal length for a given pitch and camera height;
 //! the two vertical conditions then fix the pitch and the height, found by
 //! nested bisection (each condition is monotonic in its unknown).
