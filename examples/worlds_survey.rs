@@ -21,6 +21,7 @@
 //!   rows' pixels are;
 //! - *alike*: each slide box-averaged to a 16x9 thumbnail, each cell in
 //!   Lab; two slides are the mean CIE76 dE of their 144 cells apart;
+//! - *night*: the slide's light is the night's;
 //! - *lakes seen*: at least 0.1% of the frame is water with `lakes = true`
 //!   and not with `lakes = false` (the basins' water alone).
 
@@ -28,13 +29,16 @@ use mountains::quality::facets::{delta_e, lab};
 use mountains::quality::image::channels;
 use mountains::render::Size;
 use mountains::render::classes::{Class, render_classes};
+use mountains::render::palette::Palette;
 use mountains::render::{Frame, detail, render_full};
 use mountains::settings::{Settings, load, worlds};
 use mountains::terrain;
 
 /// What one slide is.
 struct Slide {
+    seed: u64,
     world: String,
+    night: bool,
     green: bool,
     water: bool,
     snow: bool,
@@ -68,8 +72,9 @@ fn main() {
         .map(|&seed| {
             let s = slide(&prefs, seed, size);
             println!(
-                "seed {seed:3} {:9} green {} water {} snow {} lakes {:.2}%",
+                "seed {seed:3} {:9} night {} green {} water {} snow {} lakes {:.2}%",
                 s.world,
+                s.night as u8,
                 s.green as u8,
                 s.water as u8,
                 s.snow as u8,
@@ -90,17 +95,24 @@ fn report(slides: &[Slide]) {
     let mut nearest = Vec::with_capacity(n);
     let mut pairs = Vec::new();
     for (i, a) in slides.iter().enumerate() {
-        let mut best = f32::INFINITY;
+        let (mut best, mut whose) = (f32::INFINITY, 0);
         for (j, b) in slides.iter().enumerate() {
             if i == j {
                 continue;
             }
             let d = apart(&a.thumb, &b.thumb);
-            best = best.min(d);
+            if d < best {
+                (best, whose) = (d, j);
+            }
             if j > i {
                 pairs.push(d);
             }
         }
+        let b = &slides[whose];
+        println!(
+            "nearest to seed {:3} ({}): seed {:3} ({}), dE {best:.1}",
+            a.seed, a.world, b.seed, b.world
+        );
         nearest.push(best);
     }
     pairs.sort_by(f32::total_cmp);
@@ -113,6 +125,7 @@ fn report(slides: &[Slide]) {
     );
     println!("water across the bottom third: {:.0}%", share(&|s| s.water));
     println!("snow in the lower two thirds: {:.0}%", share(&|s| s.snow));
+    println!("night slides: {:.1}%", share(&|s| s.night));
     println!("nearest other slide, mean dE: {mean_nearest:.1}");
     println!("all pairs, median dE: {median:.1}");
     let mut worlds: Vec<&str> = slides.iter().map(|s| s.world.as_str()).collect();
@@ -176,7 +189,9 @@ fn slide(prefs: &Settings, seed: u64, (w, h): (u32, u32)) -> Slide {
         lakes += usize::from(c == Class::Water && dry_classes[i] != Class::Water);
     }
     Slide {
+        seed,
         world,
+        night: Palette::lighting_for(&worlds::drawn(&settings, Some(seed)), &field).night > 0.0,
         green: 2 * green > ground,
         water: 2 * water > bottom,
         snow: snow * 50 >= lower,

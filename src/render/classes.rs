@@ -75,8 +75,11 @@ mod tests {
 
     #[test]
     fn the_class_picture_has_the_frames_sky_and_its_land_and_water_apart() {
+        // The temperate coast, whose sea reaches the frame's bottom (seed
+        // 42's varied world is the desert, framed over its dry basin).
         let settings = Settings {
             detail: Detail::Level(7),
+            world: crate::settings::World::Temperate,
             ..Settings::default()
         };
         let field = crate::terrain::generate(&settings, 42);

@@ -582,9 +582,9 @@ fn framed(
     let floor = super::framing::view::near_floor(field);
     let view = match square.filter(|_| settings.view == ViewKind::Perspective) {
         Some(square) => easel::view(square, size, field.extent(), frame),
-        None => View::fitted_oblique(
+        None => View::fitted_in(
             settings.view,
-            oblique,
+            (oblique, (settings.world, field.identity())),
             size,
             field.extent(),
             (tops, floor),

@@ -210,3 +210,41 @@ fn every_varied_slide_shows_land() {
         assert!(share >= 0.1, "seed {seed}: land is {share:.3} of the frame");
     }
 }
+
+/// The alpine world's camera looks down into its valleys: on at least a
+/// third of its slides the lakes in them are seen. A lake is the water
+/// of the frame (the renderer's class picture) that the same land without
+/// its lakes (`lakes = false`) does not have; seen when it is at least
+/// 0.1% of the frame. The vista that looks across the land (the other
+/// worlds' camera) saw them on 1 of seeds 1-30.
+#[test]
+fn the_alpine_camera_sees_the_lakes_in_the_valleys() {
+    use mountains::render::classes::{Class, render_classes};
+    let (w, h) = (320, 180);
+    let water = |s: &Settings, seed: u64| {
+        let field = terrain::generate(s, seed);
+        let mut frame = Frame::new(w, h).unwrap();
+        render_classes(&field, s, &mut frame).unwrap();
+        (frame.pixels().iter())
+            .map(|&p| Class::of(p) == Class::Water)
+            .collect::<Vec<_>>()
+    };
+    let mut seen = Vec::new();
+    for seed in 1..=12 {
+        let chosen = Settings {
+            seed: Some(seed),
+            ..in_world(World::Alpine)
+        };
+        let s = detail::for_frame(&chosen, mountains::render::Size::new(w, h));
+        let dry = Settings {
+            lakes: false,
+            ..worlds::drawn(&s, Some(seed))
+        };
+        let (wet, dry) = (water(&s, seed), water(&dry, seed));
+        let lakes = wet.iter().zip(&dry).filter(|&(&a, &b)| a && !b).count();
+        if lakes * 1000 >= (w * h) as usize {
+            seen.push(seed);
+        }
+    }
+    assert!(seen.len() * 3 >= 12, "lakes seen only on seeds {seen:?}");
+}

@@ -9,9 +9,9 @@ use glam::{Vec2, Vec3, Vec4};
 
 use super::camera::{Camera, RowCamera};
 use super::tops::finite;
-use super::vista;
+use super::vista::{self, Aim};
 use crate::render::base::size::Size;
-use crate::settings::ViewKind;
+use crate::settings::{ViewKind, World};
 use crate::terrain::Heightfield;
 
 /// The lowest point of `field`'s near edge (its last row), at least sea
@@ -199,6 +199,23 @@ impl View {
         size: usize,
         extent: f32,
         (row_top, near_floor): (&[f32], f32),
+        frame: Size,
+    ) -> Self {
+        let tops = (row_top, near_floor);
+        let world = (World::Temperate, 0);
+        Self::fitted_in(kind, (oblique, world), size, extent, tops, frame)
+    }
+
+    /// [`View::fitted_oblique`] for the mountain `identity` in `world`,
+    /// whose vista aims as the world draws it for that mountain (the
+    /// alpine world's looks down into its valleys; the temperate world's
+    /// is [`View::fitted_oblique`]'s).
+    pub fn fitted_in(
+        kind: ViewKind,
+        (oblique, (world, identity)): (Oblique, (World, u64)),
+        size: usize,
+        extent: f32,
+        (row_top, near_floor): (&[f32], f32),
         Size { width, height }: Size,
     ) -> Self {
         let steps = size.saturating_sub(1).max(1) as f32;
@@ -226,9 +243,13 @@ impl View {
             relief: oblique.relief,
         };
         match kind {
-            ViewKind::Vista => {
-                view.frame_vista(steps, (row_top, near_floor), width as f32, height as f32)
-            }
+            ViewKind::Vista => view.frame_vista(
+                Aim::of(world, identity),
+                steps,
+                (row_top, near_floor),
+                width as f32,
+                height as f32,
+            ),
             ViewKind::Perspective => {
                 view.camera = Some(Camera::new(extent, zmax));
                 view.fit(steps, row_top, width as f32, height as f32);
@@ -274,13 +295,14 @@ impl View {
         }
     }
 
-    /// Places the vista camera over the land whose row tops are `row_top`
-    /// (spread evenly from back to front); tall land puts the back edge
+    /// Places the vista camera, aimed as `aim` says, over the land whose
+    /// row tops are `row_top` (spread evenly from back to front); tall land puts the back edge
     /// lower (`vista::fitted`), and land too tall for the vista at all, or
     /// whose near edge stands above its camera (`near_floor`), is framed as
     /// the perspective view frames it.
     fn frame_vista(
         &mut self,
+        aim: Aim,
         steps: f32,
         (row_top, near_floor): (&[f32], f32),
         width: f32,
@@ -294,7 +316,7 @@ impl View {
                 Vec3::new(0.5 * extent, extent * i as f32 / last, z)
             })
             .collect();
-        let Some(shot) = vista::fitted(extent, width, height, &tops, near_floor) else {
+        let Some(shot) = vista::fitted(aim, extent, (width, height), &tops, near_floor) else {
             // Land too tall for a camera low in front of it, or raised above
             // it: the perspective's camera, above it, sees it whole.
             let zmax = tops.iter().map(|p| p.z).fold(0.0, f32::max);

@@ -19,6 +19,12 @@
 //!   like xmountains, whose land is as tall on a wide screen as on a
 //!   narrow one, it shows the land wider rather than taller.
 //!
+//! A world other than the temperate aims its vista otherwise ([`Aim::of`]):
+//! its back edge higher or lower in the frame and a share of the land's
+//! depth below the bottom instead of the near edge, which raises the
+//! camera and pitches it down (the alpine world's looks down into its
+//! valleys).
+//!
 //! The width fixes the focal length for a given pitch and camera height;
 //! the two vertical conditions then fix the pitch and the height, found by
 //! nested bisection (each condition is monotonic in its unknown).
@@ -30,6 +36,7 @@
 use glam::{Vec2, Vec3};
 
 use super::camera::Camera;
+use crate::settings::World;
 
 /// The camera's horizontal distance in front of the near edge, in grid
 /// widths: closer magnifies the foreground more. Tall frames (portrait)
@@ -67,6 +74,61 @@ const STEPS: usize = 48;
 /// Bisection steps for the skyline: its 0.32 range down to f32's precision.
 const SKYLINE_STEPS: usize = 24;
 
+/// Where a vista aims: where the back edge sits and how much of the
+/// grid's depth lies in front of the frame's bottom. Today's vista
+/// ([`Aim::ACROSS`]) sees the whole grid from low in front of it; a higher
+/// camera that looks down into the valleys ([`Aim::DOWN`]) leaves the
+/// nearest land below the frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Aim {
+    /// Where the back edge at sea level sits, as a fraction of the height
+    /// from the top (before tall land lowers it).
+    pub skyline: f32,
+    /// The share of the grid's depth, from its near edge, that falls
+    /// below the bottom of the frame: 0 shows the near edge.
+    pub cropped: f32,
+}
+
+impl Aim {
+    /// Low in front of the land, looking across it: the near edge at the
+    /// bottom, the back edge at [`SKYLINE`] (the temperate world's vista).
+    pub const ACROSS: Aim = Aim {
+        skyline: SKYLINE,
+        cropped: 0.0,
+    };
+
+    /// The aim of the vista of the mountain `identity` in `world`, drawn
+    /// from the identity within the world's ranges (the same at every
+    /// size), so two slides of one world are framed apart. The alpine
+    /// world's camera stands high and looks down into its valleys, where
+    /// its lakes lie: the back edge high in the frame and the near half of
+    /// the land below it. The temperate world keeps today's vista.
+    pub fn of(world: World, identity: u64) -> Aim {
+        let (skyline, cropped) = match world {
+            World::Temperate | World::Varied => return Aim::ACROSS,
+            World::Alpine => ((0.2, 0.3), (0.4, 0.6)),
+            World::Winter => ((0.28, 0.45), (0.0, 0.4)),
+            World::Autumn => ((0.3, 0.45), (0.0, 0.35)),
+            World::Desert => ((0.3, 0.5), (0.0, 0.3)),
+            // Low over the sea, as the temperate coast: from higher, the
+            // water below the sun or the moon mirrors the sky above it and
+            // no longer glitters.
+            World::Tropical => ((0.4, 0.5), (0.0, 0.0)),
+        };
+        let draw = crate::terrain::splitmix::mix(identity ^ AIM_KEY);
+        let unit = |shift: u32| ((draw >> shift) & 0xffff) as f32 / 65535.0;
+        let within = |(lo, hi): (f32, f32), t: f32| lo + (hi - lo) * t;
+        Aim {
+            skyline: within(skyline, unit(16)),
+            cropped: within(cropped, unit(40)),
+        }
+    }
+}
+
+/// Mixed into a mountain's identity for its vista's aim, so the aim is
+/// not another draw's again.
+const AIM_KEY: u64 = 0x6169_6d20_6f66_2076;
+
 /// A camera and its focal length in pixels.
 pub(crate) struct Shot {
     /// Where the camera stands and looks.
@@ -103,19 +165,19 @@ impl Shot {
 /// (a raised plateau, land lifted over a sea far below, a wall along the
 /// near edge).
 pub(crate) fn fitted(
+    aim: Aim,
     extent: f32,
-    width: f32,
-    height: f32,
+    (width, height): (f32, f32),
     tops: &[Vec3],
     near_floor: f32,
 ) -> Option<Shot> {
-    let shot = fitted_to_tops(extent, width, height, tops)?;
+    let shot = fitted_to_tops(aim, extent, width, height, tops)?;
     (near_floor.is_nan() || near_floor < shot.camera.eye_height()).then_some(shot)
 }
 
 /// [`fitted`] without the look at the near edge.
-fn fitted_to_tops(extent: f32, width: f32, height: f32, tops: &[Vec3]) -> Option<Shot> {
-    let shot = |skyline: f32| frame(extent, width, height, skyline);
+fn fitted_to_tops(aim: Aim, extent: f32, width: f32, height: f32, tops: &[Vec3]) -> Option<Shot> {
+    let shot = |skyline: f32| frame(Aim { skyline, ..aim }, extent, width, height);
     // The highest land's distance below the strip of sky, in heights: it
     // grows as the back edge goes down.
     let clear = |s: &Shot| {
@@ -124,17 +186,19 @@ fn fitted_to_tops(extent: f32, width: f32, height: f32, tops: &[Vec3]) -> Option
             .fold(f32::INFINITY, f32::min);
         top / height.max(1.0) - SKY_ROOM
     };
-    let first = shot(SKYLINE);
+    let first = shot(aim.skyline);
     // Not below zero (or not a number: no land to fit): the sky is clear.
     let short = clear(&first);
     if short >= 0.0 || short.is_nan() {
         return Some(first);
     }
-    let skyline = bisect_steps(SKYLINE, SKYLINE_LOWEST, SKYLINE_STEPS, |s| clear(&shot(s)));
+    let skyline = bisect_steps(aim.skyline, SKYLINE_LOWEST, SKYLINE_STEPS, |s| {
+        clear(&shot(s))
+    });
     let mut lowered = shot(skyline);
     let widest = width / (ORDINARY * height.max(1.0));
     if clear(&lowered) < 0.0 && widest > ORDINARY_SLACK {
-        let narrowed = |k: f32| stretched(extent, width, height, k);
+        let narrowed = |k: f32| stretched(aim, extent, width, height, k);
         let k = bisect_steps(1.0, widest, SKYLINE_STEPS, |k| clear(&narrowed(k)));
         lowered = narrowed(k);
     }
@@ -147,16 +211,20 @@ fn fitted_to_tops(extent: f32, width: f32, height: f32, tops: &[Vec3]) -> Option
 }
 
 /// The vista for a grid `extent` units wide in a `width` x `height` frame,
-/// the back edge `skyline` of the height from the top.
-pub(crate) fn frame(extent: f32, width: f32, height: f32, skyline: f32) -> Shot {
+/// aimed as `aim` says.
+fn frame(aim: Aim, extent: f32, width: f32, height: f32) -> Shot {
     let (w, h) = (width.max(1.0), height.max(1.0));
+    let skyline = aim.skyline;
     let last = STANDOFFS[STANDOFFS.len() - 1];
+    // The sea-level point that falls just below the bottom, its distance
+    // in front of the near edge.
+    let near_of = |s: f32| s + aim.cropped;
     let standoff = STANDOFFS
         .into_iter()
-        .find(|&s| near_below_bottom(s, HEIGHTS.1, w, h, skyline) >= 0.0)
+        .find(|&s| near_below_bottom((s, near_of(s)), HEIGHTS.1, w, h, skyline) >= 0.0)
         .unwrap_or(last);
     let eye_h = bisect(HEIGHTS.0, HEIGHTS.1, |e| {
-        near_below_bottom(standoff, e, w, h, skyline)
+        near_below_bottom((standoff, near_of(standoff)), e, w, h, skyline)
     });
     let pitch = pitch_for(standoff, eye_h, w, h, skyline);
     let eye = Vec3::new(0.5, 1.0 + standoff, eye_h) * extent;
@@ -170,21 +238,32 @@ pub(crate) fn frame(extent: f32, width: f32, height: f32, skyline: f32) -> Shot 
 /// The vista of a `width` x `height` frame drawn as that of a frame
 /// `stretch` times narrower, widened to it, the back edge at
 /// [`SKYLINE_LOWEST`].
-fn stretched(extent: f32, width: f32, height: f32, stretch: f32) -> Shot {
-    let narrow = frame(extent, width / stretch, height, SKYLINE_LOWEST);
+fn stretched(aim: Aim, extent: f32, width: f32, height: f32, stretch: f32) -> Shot {
+    let aim = Aim {
+        skyline: SKYLINE_LOWEST,
+        ..aim
+    };
+    let narrow = frame(aim, extent, width / stretch, height);
     Shot { stretch, ..narrow }
 }
 
-/// How far below the wanted row (just below the bottom) the near edge
-/// falls, in pixels, for a camera `standoff` in front and `eye_h` high,
-/// pitched to put the back edge at [`SKYLINE`].
-fn near_below_bottom(standoff: f32, eye_h: f32, w: f32, h: f32, skyline: f32) -> f32 {
+/// How far below the wanted row (just below the bottom) the sea-level
+/// point `near` grid widths ahead of the camera falls, in pixels, for a
+/// camera `standoff` in front of the near edge and `eye_h` high, pitched
+/// to put the back edge `skyline` of the height from the top.
+fn near_below_bottom(
+    (standoff, near): (f32, f32),
+    eye_h: f32,
+    w: f32,
+    h: f32,
+    skyline: f32,
+) -> f32 {
     let pitch = pitch_for(standoff, eye_h, w, h, skyline);
     let f = focal(standoff, eye_h, pitch, w);
-    f * (angle_below(eye_h, standoff) - pitch).tan() - (0.5 + BELOW) * h
+    f * (angle_below(eye_h, near) - pitch).tan() - (0.5 + BELOW) * h
 }
 
-/// The pitch that puts the back edge at [`SKYLINE`] for a camera `eye_h`
+/// The pitch that puts the back edge at `skyline` for a camera `eye_h`
 /// grid widths high and `standoff` in front (`skyline` of the height from the top).
 fn pitch_for(standoff: f32, eye_h: f32, w: f32, h: f32, skyline: f32) -> f32 {
     let back = angle_below(eye_h, 1.0 + standoff);

@@ -8,6 +8,7 @@
 //! top), steepness is relative to the mountain's own steep faces (0 flat,
 //! 1 its steep faces): as the palette's zones have them.
 
+use super::light::Lighting;
 use crate::render::base::colour::{Rgb, mix, ramp, smoothstep};
 use crate::settings::World;
 
@@ -221,18 +222,70 @@ pub fn water(world: World, t: f32, v: f32) -> Rgb {
     }
 }
 
-/// The horizon's colour in `world`, from the light's `horizon`: a dusty
-/// desert air, a cold winter one, a clear mountain one, an autumn's
-/// golden haze.
-pub fn air(world: World, horizon: Rgb) -> Rgb {
-    match world {
-        World::Desert => mix(horizon, [0.86, 0.74, 0.58], 0.45),
-        World::Winter => mix(horizon, [0.80, 0.86, 0.94], 0.35),
-        World::Tropical => mix(horizon, [0.70, 0.88, 0.95], 0.2),
-        World::Autumn => mix(horizon, [0.88, 0.76, 0.58], 0.25),
-        World::Alpine => mix(horizon, [0.78, 0.88, 0.98], 0.25),
-        _ => horizon,
+/// The sky's colours in `world`, top and horizon, from the light's
+/// `zenith` and `horizon`: a dusty desert air, a cold winter one, a clear
+/// mountain one, an autumn's golden haze, each thicker or thinner by the
+/// mountain's draw of its air `v` ([`air_draw`]), so two slides of one
+/// world at one time of day are apart. `night` (0 to 1) of the night's
+/// look keeps the night's dark top.
+pub fn air(world: World, [zenith, horizon]: [Rgb; 2], v: f32, night: f32) -> [Rgb; 2] {
+    // The tint of the horizon and how much of it (least to most), and the
+    // tint of the sky's top and how much of it at most.
+    let (tint, (lo, hi), top, most) = match world {
+        World::Desert => ([0.86, 0.74, 0.58], (0.15, 0.75), [0.52, 0.60, 0.70], 0.7),
+        World::Winter => ([0.80, 0.86, 0.94], (0.15, 0.8), [0.50, 0.56, 0.64], 0.8),
+        World::Tropical => ([0.70, 0.88, 0.95], (0.0, 0.5), [0.04, 0.34, 0.80], 0.7),
+        World::Autumn => ([0.88, 0.76, 0.58], (0.1, 0.6), [0.34, 0.40, 0.60], 0.7),
+        World::Alpine => ([0.78, 0.88, 0.98], (0.05, 0.5), [0.05, 0.16, 0.50], 0.7),
+        World::Varied | World::Temperate => return [zenith, horizon],
+    };
+    let horizon = mix(horizon, tint, lo + (hi - lo) * v);
+    // The top's tint follows a draw of its own (the draw's other end).
+    let w = (v * 7.0).fract();
+    [mix(zenith, top, most * w * (1.0 - night)), horizon]
+}
+
+/// A number from 0 to 1 drawn from the mountain's `identity` for its air
+/// ([`air`]): apart from [`draw`], so a snowier year is not always a
+/// hazier one.
+pub fn air_draw(identity: u64) -> f32 {
+    (crate::terrain::splitmix::mix(identity ^ DRAW_KEY) & 0xff_ffff) as f32 / (1u64 << 24) as f32
+}
+
+/// A number from 0 to 1 drawn from the mountain's `identity` for its
+/// day's light ([`light`]), apart from [`draw`] and [`air_draw`].
+pub fn light_draw(identity: u64) -> f32 {
+    ((crate::terrain::splitmix::mix(identity ^ DRAW_KEY) >> 24) & 0xffff) as f32 / 65536.0
+}
+
+/// The day's light in `world`, from the time of day's `light`: winter's
+/// low, cold sun (lower, paler and bluer, more of its light from the
+/// sky); in every world but the temperate a brighter or duller, warmer or
+/// colder day by the mountain's draw `v` ([`air_draw`]). Nights and seed
+/// 000's light are left as they are.
+pub fn light(world: World, mut light: Lighting, v: f32) -> Lighting {
+    if light.classic || light.night > 0.0 || matches!(world, World::Temperate | World::Varied) {
+        return light;
     }
+    if world == World::Winter {
+        let s = light.sun;
+        let el = s.z.clamp(-1.0, 1.0).asin().to_degrees();
+        let low = el.min(8.0 + 0.35 * el).to_radians();
+        let flat = glam::Vec2::new(s.x, s.y).normalize_or_zero() * low.cos();
+        light.sun = glam::Vec3::new(flat.x, flat.y, low.sin()).normalize_or(s);
+        light.direct = mix(light.direct, [0.80, 0.86, 0.98], 0.35).map(|c| 0.85 * c);
+        light.ambient = mix(light.ambient, [0.42, 0.48, 0.62], 0.3);
+    }
+    // Two draws from one: how bright, and how warm.
+    let (bright, warm) = (v, (v * 5.0).fract());
+    let tint = match warm < 0.5 {
+        true => mix([1.0; 3], [1.0, 0.84, 0.66], 0.5 - warm),
+        false => mix([1.0; 3], [0.84, 0.92, 1.0], warm - 0.5),
+    };
+    let k = 0.95 + 0.3 * bright;
+    light.direct = [0, 1, 2].map(|i| light.direct[i] * tint[i] * k);
+    light.glints = light.direct;
+    light
 }
 
 /// A pattern of patches across the heights: 0 to 1, `n` ups and downs

@@ -137,14 +137,21 @@ pub(super) const NIGHT_TURN: f32 = -16.0;
 /// it lends the land (the water mirrors the disc itself).
 const MOON_GLINTS: Rgb = [0.80, 0.85, 0.95];
 
-/// How many in 256 slides `sun = "varied"` makes night, where it may.
-pub const NIGHTS_IN_256: u64 = 32;
+/// How many in 256 slides `sun = "varied"` makes night, where it may:
+/// one in sixteen, a night now and then in an evening's slides (dark
+/// slides are alike, and one in eight made them common).
+pub const NIGHTS_IN_256: u64 = 16;
 
 /// Degrees a varied night's moon may stand above [`NIGHT`]'s, and turn
 /// further aside than [`NIGHT_TURN`] (either way): never further behind
 /// the range than `sun = "night"`'s.
 const MOON_RISE: f32 = 10.0;
 const MOON_TURN: f32 = 30.0;
+
+/// How bright a varied night's moon is against `sun = "night"`'s, least
+/// and most, on the land: a thinner or a fuller moon, so two nights are
+/// not one.
+const MOON_PHASES: (f32, f32) = (0.8, 1.7);
 
 /// The sky light left on ground that sees none of the sky (light bounced
 /// off the land around it).
@@ -183,7 +190,8 @@ impl Lighting {
                 let unit = |shift: u32| ((draw >> shift) & 0xff) as f32 / 255.0;
                 let side = if (draw >> 63) == 1 { -1.0 } else { 1.0 };
                 let turn = side * (NIGHT_TURN.abs() + unit(56) * MOON_TURN);
-                return Self::moon(unit(48) * MOON_RISE, turn);
+                let phase = MOON_PHASES.0 + unit(32) * (MOON_PHASES.1 - MOON_PHASES.0);
+                return Self::moon(unit(48) * MOON_RISE, turn).phased(phase);
             }
             Sun::Varied => {
                 // Morning, midday or evening; half the evenings look into
@@ -229,6 +237,15 @@ impl Lighting {
             ..NIGHT
         };
         Self::at(&time, turn).under_moon(1.0)
+    }
+
+    /// This light on the land `k` times as bright (a moon's phase; the
+    /// night sky stays the night's).
+    fn phased(mut self, k: f32) -> Self {
+        for c in [&mut self.direct, &mut self.ambient] {
+            *c = c.map(|v| v * k);
+        }
+        self
     }
 
     /// This light with `night` (0..=1) of the night's look, its glitter

@@ -114,6 +114,8 @@ pub struct Palette {
     backdrop: Option<u32>,
     /// The world whose cover, water and air these are (`cover.rs`).
     world: World,
+    /// The mountain's draw of its air within its world (`cover::air_draw`).
+    air: f32,
 }
 
 impl Palette {
@@ -142,7 +144,8 @@ impl Palette {
         // The colour filters and the seed programs' looks keep the
         // pictures a varied draw gave them before there were nights.
         let nights = settings.color == ColorMode::Natural && settings.look == Look::Ours;
-        Lighting::drawn(sun, field, nights)
+        let light = Lighting::drawn(sun, field, nights);
+        cover::light(settings.world, light, cover::light_draw(field.identity()))
     }
 
     /// [`Palette::new`] with its light worked out already
@@ -211,6 +214,7 @@ impl Palette {
                 _ => None,
             },
             world: settings.world,
+            air: cover::air_draw(field.identity()),
         }
     }
 
@@ -345,11 +349,8 @@ impl Palette {
             ColorMode::Mono | ColorMode::Sonar | ColorMode::Filled | ColorMode::Outline => (0, 0),
             mode => {
                 let l = &self.lighting;
-                let horizon = match self.world {
-                    World::Temperate | World::Varied => l.horizon,
-                    world => cover::air(world, l.horizon),
-                };
-                let [top, bottom] = [l.zenith, horizon].map(|c| to_u32(filter(mode, c)));
+                let sky = cover::air(self.world, [l.zenith, l.horizon], self.air, l.night);
+                let [top, bottom] = sky.map(|c| to_u32(filter(mode, c)));
                 (top, bottom)
             }
         }
