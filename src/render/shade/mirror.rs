@@ -624,17 +624,19 @@ mod tests {
     }
 
     /// What the water at (`x`, `y`) on `level` mirrors: the land's grid
-    /// position, or `None` for the sky.
+    /// position, or `None` for the sky (the sea's lines passing over the
+    /// land, by their margin).
     fn seen(m: &Mirror, f: &Heightfield, x: f32, y: f32, level: f32) -> Option<Vec2> {
         let found = std::cell::Cell::new(None);
-        m.look(f, Vec2::new(x, y), level, 0.0, |s| {
-            if let Seen::Land { at, .. } = s {
-                found.set(Some(at));
-            }
-            0
-        })
-        .expect("the eye looks down at the water");
-        found.get()
+        let look = m
+            .look(f, Vec2::new(x, y), level, 0.0, |s| {
+                if let Seen::Land { at, .. } = s {
+                    found.set(Some(at));
+                }
+                0
+            })
+            .expect("the eye looks down at the water");
+        found.get().filter(|_| look.margin <= 0.0)
     }
 
     #[test]
