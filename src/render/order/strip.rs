@@ -6,7 +6,7 @@ use glam::{Vec2, Vec3};
 use crate::render::base::canvas::Canvas;
 use crate::render::base::colour::blend_packed;
 use crate::render::base::colour::mix_packed;
-use crate::render::base::fixed::Fixed2;
+use crate::render::base::fixed::{Fixed2, SUBPIXEL};
 use crate::render::scan::blend::Blend;
 use crate::render::scan::outline::{Crossing, Whole};
 use crate::render::scan::raster::{Triangle, centre_box};
@@ -70,6 +70,20 @@ impl ShorePoint for Corner {
     fn land(&self) -> u32 {
         self.colour
     }
+}
+
+/// The widest and tallest a water cell drawn in one colour under smooth
+/// shading may be on the screen (see `fill_water_cell`): 2 px, fixed point.
+const SMALL: i64 = 2 * SUBPIXEL;
+
+/// Whether a cell of screen corners `p` is at most [`SMALL`] wide and tall.
+fn small(p: [Fixed2; 4]) -> bool {
+    let span = |i: usize| {
+        let lo = p.iter().map(|q| q[i]).min().unwrap_or(0);
+        let hi = p.iter().map(|q| q[i]).max().unwrap_or(0);
+        hi - lo
+    };
+    span(0) <= SMALL && span(1) <= SMALL
 }
 
 /// A grid triangle's corners, in drawing order.
@@ -406,8 +420,11 @@ impl Scene<'_> {
     /// the streaked water that sparkles, not a blur between corners. Flat
     /// shading keeps one colour a cell, its middle's. Plain water (the
     /// classic looks, `reflections = false`) keeps a colour a face.
-    /// `c` are the cell's corners `[tl, tr, bl, br]` at column `x` of
-    /// `rows`, `faces` its faces, the farther first.
+    /// A cell at most [`SMALL`] wide and tall keeps one colour too: its
+    /// steps are that small, and most of the far water's cells cover a
+    /// pixel or none, so that a look a corner would cost up to four times
+    /// the looks a cell. `c` are the cell's corners `[tl, tr, bl, br]` at
+    /// column `x` of `rows`, `faces` its faces, the farther first.
     fn fill_water_cell<'c>(
         &self,
         canvas: &mut Canvas,
@@ -417,7 +434,8 @@ impl Scene<'_> {
         faces: impl DoubleEndedIterator<Item = Face<'c>>,
     ) {
         let level = c[0].w;
-        let (Some(mirror), true) = (&self.mirror, self.smooth()) else {
+        let blended = self.smooth() && !small(c.map(|k| k.p));
+        let (Some(mirror), true) = (&self.mirror, blended) else {
             let mut colour = None;
             let mut once = || *colour.get_or_insert_with(|| self.water_colour(&c, level));
             return painter_order(canvas, faces, |canvas, f| {

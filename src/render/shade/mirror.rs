@@ -58,6 +58,11 @@ const FAN_STEP: f32 = 3.0 / 1024.0;
 /// view (the mirror's part of the reflection figure that
 /// examples/reflection_shore measures).
 const STRIDE: f32 = 3.0 / 1024.0;
+/// How far a line off the sea may pass over the land, in samples' steps,
+/// for the land's side of the outline to be worked out at it: farther,
+/// the outline is not between it and the samples beside it, whose look
+/// is all a point of the water blends.
+const BAND: f32 = 4.0;
 /// Water's reflectance looking straight down (Schlick's `F0`).
 const F0: f32 = 0.02;
 /// The mirror's share is Schlick's term times this, at most [`MOST`]:
@@ -382,11 +387,22 @@ impl Mirror {
                     NONE => None,
                     k => Some((k as usize, profile.heights[k as usize])),
                 };
-                let sky = self.pack(None, profile, j, rise, colour);
-                // Nothing ahead but the sky: both sides are the sky's.
-                let packed = match land {
-                    Some(_) => self.pack(land, profile, j, rise, colour),
-                    None => sky,
+                // Far from the outline (or with nothing ahead but the sky)
+                // both sides are what the line meets.
+                let band = BAND * self.stride as f32;
+                let (packed, sky) = match land {
+                    Some(_) if margin < -band => {
+                        let packed = self.pack(land, profile, j, rise, colour);
+                        (packed, packed)
+                    }
+                    Some(_) if margin <= band => (
+                        self.pack(land, profile, j, rise, colour),
+                        self.pack(None, profile, j, rise, colour),
+                    ),
+                    _ => {
+                        let sky = self.pack(None, profile, j, rise, colour);
+                        (sky, sky)
+                    }
                 };
                 let sky = sky & 0x00ff_ffff;
                 profile.sea_sky[j].store(sky, Ordering::Relaxed);
