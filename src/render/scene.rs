@@ -16,7 +16,7 @@ use super::shade::clouds;
 use super::shade::dither;
 use super::shade::haze::Haze;
 use super::shade::hour::SunAt;
-use super::shade::mirror::Mirror;
+use super::shade::mirror::{Mirror, Mirrored};
 use super::shade::normals::Normals;
 use super::shade::palette::Palette;
 use super::shade::ripples::Ripples;
@@ -89,6 +89,9 @@ pub(crate) struct Vert {
     /// cut along the square's side, and a cell of such points alone is not
     /// drawn.
     pub off: bool,
+    /// Under a mirror and smooth shading, the water at the point, once a
+    /// water cell drawn there needs it (see `fill_water_cell`).
+    pub water: Option<Mirrored>,
 }
 
 /// A field a scene draws: shared with a painter, or borrowed for one frame

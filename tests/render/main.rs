@@ -11,6 +11,7 @@ mod colour_ridges;
 mod colour_shadow;
 mod edges;
 mod lakes;
+mod mirror_outline;
 mod night;
 mod painter;
 mod raster;

@@ -6,12 +6,14 @@ use glam::{Vec2, Vec3};
 use crate::render::base::canvas::Canvas;
 use crate::render::base::colour::blend_packed;
 use crate::render::base::colour::mix_packed;
-use crate::render::base::fixed::Fixed2;
+use crate::render::base::fixed::{Fixed2, SUBPIXEL};
 use crate::render::scan::blend::Blend;
+use crate::render::scan::outline::{Crossing, Whole};
 use crate::render::scan::raster::{Triangle, centre_box};
 use crate::render::scan::shore::{ShoreLine, ShorePoint};
 use crate::render::scene::{Scene, Style, Vert};
 use crate::render::shade::dither;
+use crate::render::shade::mirror::{Mirror, Mirrored};
 
 /// White and black, the only two colours of Mono.
 const WHITE: u32 = 0x00ff_ffff;
@@ -68,6 +70,20 @@ impl ShorePoint for Corner {
     fn land(&self) -> u32 {
         self.colour
     }
+}
+
+/// The widest and tallest a water cell drawn in one colour under smooth
+/// shading may be on the screen (see `fill_water_cell`): 2 px, fixed point.
+const SMALL: i64 = 2 * SUBPIXEL;
+
+/// Whether a cell of screen corners `p` is at most [`SMALL`] wide and tall.
+fn small(p: [Fixed2; 4]) -> bool {
+    let span = |i: usize| {
+        let lo = p.iter().map(|q| q[i]).min().unwrap_or(0);
+        let hi = p.iter().map(|q| q[i]).max().unwrap_or(0);
+        hi - lo
+    };
+    span(0) <= SMALL && span(1) <= SMALL
 }
 
 /// A grid triangle's corners, in drawing order.
@@ -202,7 +218,7 @@ impl Scene<'_> {
             });
         }
         if one_water && self.mirror.is_some() {
-            return self.fill_water_cell(canvas, [&tl, &tr, &bl, &br], faces);
+            return self.fill_water_cell(canvas, rows, x, [&tl, &tr, &bl, &br], faces);
         }
         painter_order(canvas, faces, |canvas, face| {
             if one_water {
@@ -393,35 +409,98 @@ impl Scene<'_> {
         });
     }
 
-    /// A cell all under one water surface, in a scene with a mirror: both
-    /// faces the colour of the cell's middle, worked out once a pixel is
-    /// covered: its depth, streak, glitter and what it mirrors, the last
-    /// sampled about as coarsely anyway (`Mirror`). A look a cell, not a
-    /// face, works that out half as often. Plain water (the classic
-    /// looks, `reflections = false`) keeps a colour a face. `faces` are
-    /// the cell's, the farther first.
+    /// A cell all under one water surface, in a scene with a mirror,
+    /// worked out once a pixel is covered. Under smooth shading its faces
+    /// blend what the water at its corners shows (each its own depth,
+    /// streak and mirror, kept by the corner for the cells around it), and
+    /// the mirrored outline of the land against the sky runs across them
+    /// where the corners' margins say (`scan::outline`): one colour a cell
+    /// drew that outline as a staircase of cells, steps several pixels long
+    /// near the viewer at 4K. The sun's glitter stays a cell's: a facet of
+    /// the streaked water that sparkles, not a blur between corners. Flat
+    /// shading keeps one colour a cell, its middle's. Plain water (the
+    /// classic looks, `reflections = false`) keeps a colour a face.
+    /// A cell at most [`SMALL`] wide and tall keeps one colour too: its
+    /// steps are that small, and most of the far water's cells cover a
+    /// pixel or none, so that a look a corner would cost up to four times
+    /// the looks a cell. `c` are the cell's corners `[tl, tr, bl, br]` at
+    /// column `x` of `rows`, `faces` its faces, the farther first.
     fn fill_water_cell<'c>(
         &self,
         canvas: &mut Canvas,
+        rows: &mut StripRows,
+        x: usize,
         c: [&Corner; 4],
         faces: impl DoubleEndedIterator<Item = Face<'c>>,
     ) {
-        let mut colour = None;
-        let mut once = || *colour.get_or_insert_with(|| self.water_colour(&c, c[0].w));
+        let level = c[0].w;
+        let blended = self.smooth() && !small(c.map(|k| k.p));
+        let (Some(mirror), true) = (&self.mirror, blended) else {
+            let mut colour = None;
+            let mut once = || *colour.get_or_insert_with(|| self.water_colour(&c, level));
+            return painter_order(canvas, faces, |canvas, f| {
+                self.paint(canvas, [f[0].p, f[1].p, f[2].p], &mut once)
+            });
+        };
+        let mut looks = None;
+        let mut look = || {
+            *looks.get_or_insert_with(|| {
+                let kept = |v: &mut Vert, k: &Corner| {
+                    *(v.water).get_or_insert_with(|| self.water_at(mirror, k, level))
+                };
+                let sides = [
+                    kept(&mut rows.top[x], c[0]),
+                    kept(&mut rows.top[x + 1], c[1]),
+                    kept(&mut rows.bottom[x], c[2]),
+                    kept(&mut rows.bottom[x + 1], c[3]),
+                ];
+                let g = c.iter().map(|k| k.g).sum::<Vec2>() / 4.0;
+                let lit = c.iter().map(|k| k.lit).sum::<f32>() / 4.0;
+                let near_sun = sides.iter().find_map(|w| w.near_sun);
+                (sides, self.glitter(mirror, near_sun, g, lit))
+            })
+        };
         painter_order(canvas, faces, |canvas, f| {
-            self.paint(canvas, [f[0].p, f[1].p, f[2].p], &mut once)
+            self.paint_mirrored(canvas, [f[0].p, f[1].p, f[2].p], || {
+                let (sides, glint) = look();
+                let of = |k: &Corner| {
+                    let at = c.iter().position(|&ck| std::ptr::eq(ck, k));
+                    sides[at.expect("a face's corner is one of its cell's")]
+                };
+                ([of(f[0]), of(f[1]), of(f[2])], glint)
+            })
         });
+    }
+
+    /// The water at corner `k`, under a surface at `level`, with what it
+    /// mirrors on each side of the mirrored outline.
+    fn water_at(&self, mirror: &Mirror, k: &Corner, level: f32) -> Mirrored {
+        let (water, ripple) = self.water_own(&[k], level);
+        self.mirrored_sides(mirror, water, (k.g, level), ripple)
     }
 
     /// The colour of the water over corners `c` (a face's, or a cell's)
     /// under a surface at `level`: by their mean depth below it, with the
     /// wind's streak at their middle, and what it mirrors there.
     fn water_colour(&self, c: &[&Corner], level: f32) -> u32 {
+        let (water, ripple) = self.water_own(c, level);
+        let Some(mirror) = &self.mirror else {
+            return water;
+        };
+        let n = c.len() as f32;
+        let g = c.iter().map(|k| k.g).sum::<Vec2>() / n;
+        let lit = c.iter().map(|k| k.lit).sum::<f32>() / n;
+        self.mirrored(mirror, water, (g, level), ripple, lit)
+    }
+
+    /// The water's own colour over corners `c` under a surface at `level`
+    /// (by their mean depth below it, hazed, with the wind's streak at
+    /// their middle), and the streak.
+    fn water_own(&self, c: &[&Corner], level: f32) -> (u32, f32) {
         let n = c.len() as f32;
         let depth = -c.iter().map(|k| (k.h - level).min(0.0)).sum::<f32>() / n;
         let g = c.iter().map(|k| k.g).sum::<Vec2>() / n;
         let haze = c.iter().map(|k| k.haze).sum::<u32>() / c.len() as u32;
-        let lit = c.iter().map(|k| k.lit).sum::<f32>() / n;
         let water = self.palette.water(depth);
         let (water, ripple) = match &self.ripples {
             Some(r) => {
@@ -430,11 +509,7 @@ impl Scene<'_> {
             }
             None => (water, 0.0),
         };
-        let water = self.hazed(water, haze);
-        match &self.mirror {
-            Some(mirror) => self.mirrored(mirror, water, (g, level), ripple, lit),
-            None => water,
-        }
+        (self.hazed(water, haze), ripple)
     }
 
     /// The cut face below the edge from `a` to `b`, down to sea level, facing
@@ -511,6 +586,35 @@ impl Scene<'_> {
         });
     }
 
+    /// Fills one screen triangle of water under a mirror: `make()` gives
+    /// its corners' water (see [`Mirrored`]) and the glitter over all of it
+    /// (its colour and weight of 256), once a pixel is covered. Each side
+    /// of the mirrored outline blends its corners' colours; the outline
+    /// runs where the corners' margins cross 0, a pixel on it shared.
+    fn paint_mirrored(
+        &self,
+        canvas: &mut Canvas,
+        v: [Fixed2; 3],
+        make: impl FnOnce() -> ([Mirrored; 3], Option<(u32, u32)>),
+    ) {
+        let Some(t) = Triangle::new(v, canvas.clip()) else {
+            return;
+        };
+        let [x0, x1, y0, _] = t.bounds();
+        if canvas.hidden(x0, x1, y0) {
+            return;
+        }
+        let mut make = Some(make);
+        let mut face = None;
+        t.spans(|y, x0, x1| {
+            let f = face.get_or_insert_with(|| {
+                let (sides, glint) = make.take().expect("made once")();
+                MirroredFace::new(v, sides, glint)
+            });
+            f.fill(canvas, y, x0, x1);
+        });
+    }
+
     /// Fills one screen triangle pixel by pixel with `make()`'s colour at
     /// each pixel (`make` runs once a first pixel is covered).
     fn paint_pixels<F: Fn(u32, u32) -> u32>(
@@ -546,6 +650,60 @@ impl Scene<'_> {
                     BLACK
                 }
             }),
+        }
+    }
+}
+
+/// A triangle of water under a mirror, ready to fill (see
+/// [`Scene::paint_mirrored`]).
+struct MirroredFace {
+    /// The land's side blended, and the sky's where the outline crosses
+    /// the face.
+    land: Blend,
+    sky: Option<(Blend, Crossing)>,
+    /// The glitter over it all: colour and weight of 256.
+    glint: Option<(u32, u32)>,
+}
+
+impl MirroredFace {
+    fn new(v: [Fixed2; 3], sides: [Mirrored; 3], glint: Option<(u32, u32)>) -> Self {
+        let land = sides.map(|s| s.land);
+        let sky = sides.map(|s| s.sky);
+        if land == sky {
+            return MirroredFace {
+                land: Blend::new(v, land),
+                sky: None,
+                glint,
+            };
+        }
+        let crossing = Crossing::new(v, sides.map(|s| s.margin));
+        let (land, sky) = match crossing.whole(v) {
+            Some(Whole::Above) => (Blend::new(v, sky), None),
+            Some(Whole::Below) => (Blend::new(v, land), None),
+            None => (Blend::new(v, land), Some((Blend::new(v, sky), crossing))),
+        };
+        MirroredFace { land, sky, glint }
+    }
+
+    /// Sets the pixels `x0..x1` of row `y`.
+    #[inline]
+    fn fill(&self, canvas: &mut Canvas, y: u32, x0: u32, x1: u32) {
+        let land = &self.land;
+        let row = land.row(y);
+        let glint = |c: u32| match self.glint {
+            Some((sun, w)) => blend_packed(c, sun, w),
+            None => c,
+        };
+        match &self.sky {
+            None => canvas.fill_with(y, x0, x1, |x| glint(land.at(&row, x))),
+            Some((sky, crossing)) => {
+                let (sky_row, at) = (sky.row(y), crossing.row(y));
+                canvas.fill_with(y, x0, x1, |x| {
+                    let c =
+                        blend_packed(land.at(&row, x), sky.at(&sky_row, x), crossing.above(at, x));
+                    glint(c)
+                })
+            }
         }
     }
 }

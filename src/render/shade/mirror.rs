@@ -16,6 +16,13 @@
 //! point of the water shows the four samples around it blended: the two
 //! profiles either side and, along each, the samples either side.
 //!
+//! A line off the sea also knows how far it passes over the land (its
+//! margin: negative where it meets it), which runs on smoothly from one
+//! sample to the next where what it meets does not: the mirrored outline
+//! of the land against the sky is where the margin is 0, found between the
+//! samples as finely as the drawing asks (`Look::margin`), so the outline
+//! does not step from sample to sample.
+//!
 //! Everything here is a function of the scene (the field, the eye, the
 //! light), never of pixels or of the order faces are drawn in: a cached
 //! sample is the same whoever works it out first.
@@ -51,6 +58,11 @@ const FAN_STEP: f32 = 3.0 / 1024.0;
 /// view (the mirror's part of the reflection figure that
 /// examples/reflection_shore measures).
 const STRIDE: f32 = 3.0 / 1024.0;
+/// How far a line off the sea may pass over the land, in samples' steps,
+/// for the land's side of the outline to be worked out at it: farther,
+/// the outline is not between it and the samples beside it, whose look
+/// is all a point of the water blends.
+const BAND: f32 = 4.0;
 /// Water's reflectance looking straight down (Schlick's `F0`).
 const F0: f32 = 0.02;
 /// The mirror's share is Schlick's term times this, at most [`MOST`]:
@@ -96,6 +108,17 @@ pub(crate) enum Seen {
 pub(crate) struct Look {
     /// The colour mirrored.
     pub colour: u32,
+    /// The two sides of the mirrored outline of the land against the sky:
+    /// the land's colour there (the land a line meets, or the land it
+    /// passes nearest over) and the sky's. On a lake both are `colour`.
+    pub land: u32,
+    pub sky: u32,
+    /// How far a line off the sea here passes over the land (grid steps
+    /// along the view of its point on the water; at most 0 where it meets
+    /// it): `colour` is `land` where this is at most 0, else `sky`, and
+    /// between points of the water the outline is where it crosses 0. 0 on
+    /// a lake.
+    pub margin: f32,
     /// How much of it the water shows, 0..=1 (before the streaks).
     pub share: f32,
     /// The reflected line's direction (unit, up), where it points near
@@ -103,10 +126,30 @@ pub(crate) struct Look {
     pub near_sun: Option<Vec3>,
 }
 
+/// The water at one point under a mirror, its own colour mixed with what
+/// it mirrors on each side of the mirrored outline (see [`Look`]): what a
+/// drawn point of the water keeps, so that a face blends its corners' and
+/// finds the outline between them.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Mirrored {
+    /// The water with the land's side mixed in, and with the sky's.
+    pub land: u32,
+    pub sky: u32,
+    /// [`Look::margin`].
+    pub margin: f32,
+    /// [`Look::near_sun`].
+    pub near_sun: Option<Vec3>,
+}
+
 /// A sample's look unpacked (see [`Sampled::pack`]), or several blended.
 #[derive(Debug, Clone, Copy)]
 struct Sampled {
+    /// What is seen, the land's side and the sky's, and the margin (see
+    /// [`Look`]).
     colour: u32,
+    land: u32,
+    sky: u32,
+    margin: f32,
     /// In 1/[`SHARE_MAX`]ths.
     share: f32,
     /// Whether the line points near the sun (any of those blended).
@@ -122,10 +165,15 @@ impl Sampled {
         (colour & 0x00ff_ffff) | share.min(SHARE_MAX) << 24 | u32::from(sun) << 31
     }
 
-    /// A look [`Sampled::pack`]ed.
-    fn of(packed: u32) -> Self {
+    /// A look whose land's side is [`Sampled::pack`]ed in `packed`, its
+    /// sky's colour `sky`, passing `margin` over the land.
+    fn of(packed: u32, sky: u32, margin: f32) -> Self {
+        let land = packed & 0x00ff_ffff;
         Sampled {
-            colour: packed & 0x00ff_ffff,
+            colour: if margin <= 0.0 { land } else { sky },
+            land,
+            sky,
+            margin,
             share: ((packed >> 24) & 0x7f) as f32,
             sun: packed >> 31 != 0,
         }
@@ -133,8 +181,12 @@ impl Sampled {
 
     /// This look `t` (0..=1) of the way to `other`'s.
     fn towards(self, other: Sampled, t: f32) -> Self {
+        let w = (t * 256.0) as u32;
         Sampled {
-            colour: blend_packed(self.colour, other.colour, (t * 256.0) as u32),
+            colour: blend_packed(self.colour, other.colour, w),
+            land: blend_packed(self.land, other.land, w),
+            sky: blend_packed(self.sky, other.sky, w),
+            margin: self.margin + (other.margin - self.margin) * t,
             share: self.share + (other.share - self.share) * t,
             sun: self.sun || other.sun,
         }
@@ -175,11 +227,13 @@ struct Profile {
     /// The highest of each [`BLOCK`] and each [`SPAN`] samples.
     block_top: Vec<f32>,
     span_top: Vec<f32>,
-    /// For each sample, the first sample a line off the sea there meets
-    /// ([`NONE`]: it leaves the grid).
-    sea_hit: Vec<u32>,
-    /// What the sea at each sample mirrors, packed ([`EMPTY`] until asked).
+    /// For each sample, the land a line off the sea there shows on the
+    /// land's side of the outline, and the line's margin (see [`SeaLines`]).
+    sea: SeaLines,
+    /// What the sea at each sample mirrors, packed: the land's side
+    /// ([`EMPTY`] until asked; stored last) and the sky's colour.
     sea_look: Vec<AtomicU32>,
+    sea_sky: Vec<AtomicU32>,
 }
 
 impl Mirror {
@@ -278,6 +332,9 @@ impl Mirror {
         let spread = self.first + self.apart * i;
         Some(Look {
             colour: seen.colour,
+            land: seen.land,
+            sky: seen.sky,
+            margin: seen.margin,
             share: seen.share * (1.0 / SHARE_MAX as f32),
             near_sun: seen.sun.then(|| self.direction(spread, rise / u)),
         })
@@ -296,9 +353,9 @@ impl Mirror {
     ) -> Sampled {
         let profile = self.profile(field, i);
         let last = profile.heights.len() - 1;
-        let a = Sampled::of(self.sample(profile, j.min(last), level, rise, colour));
+        let a = self.sample(profile, j.min(last), level, rise, colour);
         if t > 0.0 && j < last {
-            let b = Sampled::of(self.sample(profile, j + 1, level, rise, colour));
+            let b = self.sample(profile, j + 1, level, rise, colour);
             a.towards(b, t)
         } else {
             a
@@ -306,8 +363,8 @@ impl Mirror {
     }
 
     /// What a line off the water at sample `j` (at most the last) of
-    /// `profile`, on a surface at `level` `rise` below the eye, shows,
-    /// packed (see [`Mirror::pack`]); lines off the sea cached.
+    /// `profile`, on a surface at `level` `rise` below the eye, shows;
+    /// lines off the sea cached.
     fn sample(
         &self,
         profile: &Profile,
@@ -315,22 +372,44 @@ impl Mirror {
         level: f32,
         rise: f32,
         colour: &impl Fn(Seen) -> u32,
-    ) -> u32 {
+    ) -> Sampled {
         if level != 0.0 {
             let met = profile.lake(self, j, level, rise);
-            return self.pack(met, profile, j, rise, colour);
+            let packed = self.pack(met, profile, j, rise, colour);
+            return Sampled::of(packed, packed & 0x00ff_ffff, 0.0);
         }
-        match profile.sea_look[j].load(Ordering::Relaxed) {
+        let margin = profile.sea.margin[j];
+        // The sky's colour is stored before the land's side, which says
+        // the sample is worked out.
+        match profile.sea_look[j].load(Ordering::Acquire) {
             EMPTY => {
-                let met = match profile.sea_hit[j] {
+                let land = match profile.sea.land[j] {
                     NONE => None,
                     k => Some((k as usize, profile.heights[k as usize])),
                 };
-                let packed = self.pack(met, profile, j, rise, colour);
-                profile.sea_look[j].store(packed, Ordering::Relaxed);
-                packed
+                // Far from the outline (or with nothing ahead but the sky)
+                // both sides are what the line meets.
+                let band = BAND * self.stride as f32;
+                let (packed, sky) = match land {
+                    Some(_) if margin < -band => {
+                        let packed = self.pack(land, profile, j, rise, colour);
+                        (packed, packed)
+                    }
+                    Some(_) if margin <= band => (
+                        self.pack(land, profile, j, rise, colour),
+                        self.pack(None, profile, j, rise, colour),
+                    ),
+                    _ => {
+                        let sky = self.pack(None, profile, j, rise, colour);
+                        (sky, sky)
+                    }
+                };
+                let sky = sky & 0x00ff_ffff;
+                profile.sea_sky[j].store(sky, Ordering::Relaxed);
+                profile.sea_look[j].store(packed, Ordering::Release);
+                Sampled::of(packed, sky, margin)
             }
-            cached => cached,
+            cached => Sampled::of(cached, profile.sea_sky[j].load(Ordering::Relaxed), margin),
         }
     }
 
@@ -439,13 +518,14 @@ impl Profile {
                 .map(|c| c.iter().copied().fold(f32::NEG_INFINITY, f32::max))
                 .collect()
         };
-        let sea_hit = sea_hits(&heights, mirror.near(), mirror.stride as f32, mirror.eye.z);
+        let sea = sea_lines(&heights, mirror.near(), mirror.stride as f32, mirror.eye.z);
         Profile {
             spread,
             block_top: tops(BLOCK),
             span_top: tops(SPAN),
-            sea_hit,
+            sea,
             sea_look: (0..samples).map(|_| AtomicU32::new(EMPTY)).collect(),
+            sea_sky: (0..samples).map(|_| AtomicU32::new(0)).collect(),
             heights,
         }
     }
@@ -474,9 +554,25 @@ impl Profile {
     }
 }
 
+/// What the lines off the sea at the samples of one profile show.
+#[derive(Debug)]
+struct SeaLines {
+    /// The sample whose land shows on the land's side of the outline: the
+    /// first a line meets, or, if it meets none, the one it passes nearest
+    /// over; [`NONE`]: no land ahead.
+    land: Vec<u32>,
+    /// How far the line passes over the land, in grid steps along the
+    /// view of its sample: `min c_k - u_j` (see [`sea_lines`]), at most 0
+    /// where it meets the land. It changes smoothly from sample to sample
+    /// where what a line meets jumps, so the outline can be found between
+    /// them.
+    margin: Vec<f32>,
+}
+
 /// For each sample of a profile of `heights` (sample `k` is `u0 + step k`
 /// steps back from the eye, which stands `eye` above the sea), the first
-/// sample past it that a line off the sea there meets, or [`NONE`].
+/// sample past it that a line off the sea there meets, and the line's
+/// margin (see [`SeaLines`]).
 ///
 /// The line off sample `j` rises `eye / u_j` a step, so it is below the
 /// ground at a farther `k` when `u_k <= u_j (1 + h_k / eye)`: when
@@ -484,10 +580,14 @@ impl Profile {
 /// never meets it). Swept from the back, a sample farther than a nearer
 /// one of no greater `c` is never the first met, so the candidates left
 /// grow in `c` towards the front, and the first met is the nearest whose
-/// `c` is at most `u_j`: found by halving.
-fn sea_hits(heights: &[f32], u0: f32, step: f32, eye: f32) -> Vec<u32> {
+/// `c` is at most `u_j`: found by halving. The bottom candidate has the
+/// least `c` of all: the land the line passes nearest over.
+fn sea_lines(heights: &[f32], u0: f32, step: f32, eye: f32) -> SeaLines {
     let n = heights.len();
     let mut hits = vec![NONE; n];
+    let mut margin = vec![0.0; n];
+    // With no land ahead, the margin over a shore at the back.
+    let back = u0 + step * n.saturating_sub(1) as f32;
     // (c, k), c growing from the bottom of the stack to its top.
     let mut stack: Vec<(f32, u32)> = Vec::new();
     for j in (0..n).rev() {
@@ -509,9 +609,11 @@ fn sea_hits(heights: &[f32], u0: f32, step: f32, eye: f32) -> Vec<u32> {
                 .checked_sub(1)
                 .map(|i| stack[i].1),
         };
-        hits[j] = met.unwrap_or(NONE);
+        let nearest = stack.first().copied();
+        margin[j] = nearest.map_or(back, |(c, _)| c) - uj;
+        hits[j] = met.or(nearest.map(|(_, k)| k)).unwrap_or(NONE);
     }
-    hits
+    SeaLines { land: hits, margin }
 }
 
 #[cfg(test)]
@@ -538,17 +640,19 @@ mod tests {
     }
 
     /// What the water at (`x`, `y`) on `level` mirrors: the land's grid
-    /// position, or `None` for the sky.
+    /// position, or `None` for the sky (the sea's lines passing over the
+    /// land, by their margin).
     fn seen(m: &Mirror, f: &Heightfield, x: f32, y: f32, level: f32) -> Option<Vec2> {
         let found = std::cell::Cell::new(None);
-        m.look(f, Vec2::new(x, y), level, 0.0, |s| {
-            if let Seen::Land { at, .. } = s {
-                found.set(Some(at));
-            }
-            0
-        })
-        .expect("the eye looks down at the water");
-        found.get()
+        let look = m
+            .look(f, Vec2::new(x, y), level, 0.0, |s| {
+                if let Seen::Land { at, .. } = s {
+                    found.set(Some(at));
+                }
+                0
+            })
+            .expect("the eye looks down at the water");
+        found.get().filter(|_| look.margin <= 0.0)
     }
 
     #[test]
@@ -589,12 +693,13 @@ mod tests {
         for _ in 0..50 {
             let heights: Vec<f32> = (0..200).map(|_| 30.0 * next() - 12.0).collect();
             let (u0, eye, step) = (5.0 + 40.0 * next(), 2.0 + 20.0 * next(), 0.5 + 2.0 * next());
-            let hits = sea_hits(&heights, u0, step, eye);
+            let lines = sea_lines(&heights, u0, step, eye);
             let u = |k: usize| u0 + step * k as f32;
-            for (j, &hit) in hits.iter().enumerate() {
+            for (j, &hit) in lines.land.iter().enumerate() {
                 let z = |k: usize| eye * (u(k) / u(j) - 1.0);
                 let want = (j + 1..heights.len()).find(|&k| heights[k] > 0.0 && heights[k] >= z(k));
-                let got = (hit != NONE).then_some(hit as usize);
+                let met = lines.margin[j] <= 0.0;
+                let got = (hit != NONE && met).then_some(hit as usize);
                 // Rounding may decide a graze either way.
                 if want != got {
                     let k = want.or(got).unwrap();
@@ -602,6 +707,43 @@ mod tests {
                         (heights[k] - z(k)).abs() < 1e-3,
                         "sample {j}: {want:?} != {got:?}"
                     );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_margin_is_how_far_a_line_passes_over_the_land() {
+        // Against the least `c` of the land ahead, followed sample by
+        // sample; the land shown beside a line that meets none is the one
+        // it passes nearest over.
+        let mut state = 777u32;
+        let mut next = || {
+            state = state.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            (state >> 8) as f32 / (1 << 24) as f32
+        };
+        for _ in 0..50 {
+            let heights: Vec<f32> = (0..120).map(|_| 20.0 * next() - 12.0).collect();
+            let (u0, eye, step) = (5.0 + 40.0 * next(), 2.0 + 20.0 * next(), 0.5 + 2.0 * next());
+            let lines = sea_lines(&heights, u0, step, eye);
+            let u = |k: usize| u0 + step * k as f32;
+            for j in 0..heights.len() {
+                let c = |k: usize| u(k) * eye / (eye + heights[k]);
+                let nearest = (j + 1..heights.len())
+                    .filter(|&k| heights[k] > 0.0)
+                    .min_by(|&a, &b| c(a).total_cmp(&c(b)));
+                let Some(k) = nearest else {
+                    assert_eq!(lines.land[j], NONE, "sample {j}");
+                    continue;
+                };
+                let margin = c(k) - u(j);
+                assert!(
+                    (lines.margin[j] - margin).abs() < 1e-3,
+                    "sample {j}: margin {} != {margin}",
+                    lines.margin[j]
+                );
+                if margin > 1e-3 {
+                    assert_eq!(lines.land[j] as usize, k, "sample {j}");
                 }
             }
         }
