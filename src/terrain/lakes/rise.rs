@@ -24,7 +24,7 @@ pub(super) fn basins(heights: &[f32], n: usize, least: usize, found: impl FnMut(
     // beside the queue (a copy of each in the queue would only wait).
     let mut next = 0;
     loop {
-        let pit = rise.pits.get(next).map(|&i| entry(heights, i));
+        let pit = rise.pits.get(next).copied();
         let i = match (pit, rise.open.peek(heights)) {
             (None, None) => break,
             (Some(p), q) if q.is_none_or(|q| p < q) => {
@@ -33,6 +33,10 @@ pub(super) fn basins(heights: &[f32], n: usize, least: usize, found: impl FnMut(
             }
             _ => rise.open.pop(heights).expect("a point was waiting"),
         };
+        let soon = rise.open.front();
+        if let Some(j) = soon.or(rise.pits.get(next).map(|&p| p as u32)) {
+            rise.fetch(j as usize);
+        }
         rise.take(i as usize);
     }
     rise.lakes(least, found);
@@ -78,9 +82,9 @@ struct Rise<'a> {
     mark: Bits,
     open: Open,
     labels: Labels,
-    /// The pits, lowest first (ties by index); region `r` starts (if it
-    /// does) at pit `r`.
-    pits: Vec<u32>,
+    /// The pits as the queue orders them ([`entry`]), lowest first (ties
+    /// by index); region `r` starts (if it does) at pit `r`.
+    pits: Vec<u64>,
     /// Per region: the region it joined (itself if none); for a region
     /// marked in `drained`, the bits of the height its water drained at.
     joined: Vec<u32>,
@@ -95,7 +99,7 @@ struct Rise<'a> {
 }
 
 impl<'a> Rise<'a> {
-    fn new(heights: &'a [f32], n: usize, lo: f32, hi: f32, pits: Vec<u32>) -> Self {
+    fn new(heights: &'a [f32], n: usize, lo: f32, hi: f32, pits: Vec<u64>) -> Self {
         let regions = pits.len();
         Rise {
             heights,
@@ -111,6 +115,18 @@ impl<'a> Rise<'a> {
             lazy: Bits::new(regions),
             stack: Vec::new(),
         }
+    }
+
+    /// Asks for the rows around point `j` and its bits, which it will
+    /// soon be taken.
+    #[inline]
+    fn fetch(&self, j: usize) {
+        let n = self.n;
+        for at in [j.wrapping_sub(n + 1), j.wrapping_sub(1), j + n - 1] {
+            super::ahead::fetch(self.heights, at);
+        }
+        super::ahead::fetch(&self.wet.0, j / 64);
+        super::ahead::fetch(&self.mark.0, j / 64);
     }
 
     /// Queues point `i` unless it waits already (or is wet).
@@ -175,9 +191,7 @@ impl<'a> Rise<'a> {
     /// The region starting at point `i`, if it is a pit.
     fn pit(&self, i: usize) -> Option<usize> {
         let at = entry(self.heights, i as u32);
-        self.pits
-            .binary_search_by_key(&at, |&p| entry(self.heights, p))
-            .ok()
+        self.pits.binary_search(&at).ok()
     }
 
     /// The region a point joined, as it stands now.
@@ -262,7 +276,7 @@ impl<'a> Rise<'a> {
                 }
                 root &= hk >= h;
                 let first = self.region(k);
-                if self.lazy.get(first as usize) && self.pits[first as usize] == k as u32 {
+                if self.lazy.get(first as usize) && self.pits[first as usize] as u32 == k as u32 {
                     lazy[lazies] = first;
                     lazies += 1;
                 }
@@ -283,7 +297,7 @@ impl<'a> Rise<'a> {
             self.join(i, &regions[..found], root);
             for &first in &lazy[..lazies] {
                 self.lazy.clear(first as usize);
-                for k in self.around(self.pits[first as usize] as usize) {
+                for k in self.around(self.pits[first as usize] as u32 as usize) {
                     self.queue(k);
                 }
             }
@@ -368,6 +382,7 @@ impl<'a> Rise<'a> {
         } = self;
         let mut basin = Vec::new();
         for (region, &pit) in pits.iter().enumerate() {
+            let pit = pit as u32;
             if !wet.get(pit as usize) {
                 continue;
             }
