@@ -2,21 +2,20 @@
 
 use super::open::entry;
 
-/// The pits of `heights` (`n` a side) as the queue orders them
-/// ([`entry`]), lowest first (ties by index), and the lowest and highest
-/// land: every point off the border with all eight neighbours land and
-/// none of them lower. Every basin holds one (a flat floor may hold
-/// several; they join as they fill). The two halves of the rows are
-/// searched at once.
-pub(super) fn pits(heights: &[f32], n: usize) -> (Vec<u64>, f32, f32) {
+/// The pits of `heights` (`n` a side), lowest first (ties by index), and
+/// the lowest and highest land: every point off the border with all eight
+/// neighbours land and none of them lower. Every basin holds one (a flat
+/// floor may hold several; they join as they fill). The two halves of the
+/// rows are searched at once.
+pub(super) fn pits(heights: &[f32], n: usize) -> (Vec<u32>, f32, f32) {
     let half = n / 2;
     let ((mut found, lo, hi), (theirs, lo2, hi2)) = crate::threads::both(
         || pits_in(heights, n, 0..half),
         || pits_in(heights, n, half..n),
     );
     found.extend(theirs);
-    let mut found: Vec<u64> = found.into_iter().map(|i| entry(heights, i)).collect();
-    found.sort_unstable();
+    found.shrink_to_fit();
+    found.sort_unstable_by_key(|&i| entry(heights, i));
     (found, lo.min(lo2), hi.max(hi2))
 }
 

@@ -24,7 +24,7 @@ pub(super) fn basins(heights: &[f32], n: usize, least: usize, found: impl FnMut(
     // beside the queue (a copy of each in the queue would only wait).
     let mut next = 0;
     loop {
-        let pit = rise.pits.get(next).copied();
+        let pit = rise.pits.get(next).map(|&i| entry(heights, i));
         let i = match (pit, rise.open.peek(heights)) {
             (None, None) => break,
             (Some(p), q) if q.is_none_or(|q| p < q) => {
@@ -34,7 +34,7 @@ pub(super) fn basins(heights: &[f32], n: usize, least: usize, found: impl FnMut(
             _ => rise.open.pop(heights).expect("a point was waiting"),
         };
         let soon = rise.open.front();
-        if let Some(j) = soon.or(rise.pits.get(next).map(|&p| p as u32)) {
+        if let Some(j) = soon.or(rise.pits.get(next).copied()) {
             rise.fetch(j as usize);
         }
         rise.take(i as usize);
@@ -82,9 +82,9 @@ struct Rise<'a> {
     mark: Bits,
     open: Open,
     labels: Labels,
-    /// The pits as the queue orders them ([`entry`]), lowest first (ties
-    /// by index); region `r` starts (if it does) at pit `r`.
-    pits: Vec<u64>,
+    /// The pits, lowest first (ties by index); region `r` starts (if it
+    /// does) at pit `r`.
+    pits: Vec<u32>,
     /// Per region: the region it joined (itself if none); for a region
     /// marked in `drained`, the bits of the height its water drained at.
     joined: Vec<u32>,
@@ -99,7 +99,7 @@ struct Rise<'a> {
 }
 
 impl<'a> Rise<'a> {
-    fn new(heights: &'a [f32], n: usize, lo: f32, hi: f32, pits: Vec<u64>) -> Self {
+    fn new(heights: &'a [f32], n: usize, lo: f32, hi: f32, pits: Vec<u32>) -> Self {
         let regions = pits.len();
         Rise {
             heights,
@@ -191,7 +191,9 @@ impl<'a> Rise<'a> {
     /// The region starting at point `i`, if it is a pit.
     fn pit(&self, i: usize) -> Option<usize> {
         let at = entry(self.heights, i as u32);
-        self.pits.binary_search(&at).ok()
+        self.pits
+            .binary_search_by_key(&at, |&p| entry(self.heights, p))
+            .ok()
     }
 
     /// The region a point joined, as it stands now.
@@ -276,7 +278,7 @@ impl<'a> Rise<'a> {
                 }
                 root &= hk >= h;
                 let first = self.region(k);
-                if self.lazy.get(first as usize) && self.pits[first as usize] as u32 == k as u32 {
+                if self.lazy.get(first as usize) && self.pits[first as usize] == k as u32 {
                     lazy[lazies] = first;
                     lazies += 1;
                 }
@@ -297,7 +299,7 @@ impl<'a> Rise<'a> {
             self.join(i, &regions[..found], root);
             for &first in &lazy[..lazies] {
                 self.lazy.clear(first as usize);
-                for k in self.around(self.pits[first as usize] as u32 as usize) {
+                for k in self.around(self.pits[first as usize] as usize) {
                     self.queue(k);
                 }
             }
@@ -382,7 +384,6 @@ impl<'a> Rise<'a> {
         } = self;
         let mut basin = Vec::new();
         for (region, &pit) in pits.iter().enumerate() {
-            let pit = pit as u32;
             if !wet.get(pit as usize) {
                 continue;
             }
