@@ -14,6 +14,7 @@
 //! the pit itself until it finds a way down, so the slopes that drain
 //! anyway, most of a mountain, are looked at once, by the search for pits.
 
+mod ahead;
 mod labels;
 mod open;
 mod pits;

@@ -62,6 +62,13 @@ impl Open {
         self.heap.pop().map(|Reverse(e)| e as u32)
     }
 
+    /// The point at the front of the current slice, if any: the next one
+    /// taken unless a lower one comes first.
+    #[inline]
+    pub(super) fn front(&self) -> Option<u32> {
+        self.heap.peek().map(|&Reverse(e)| e as u32)
+    }
+
     /// The [`entry`] [`Open::pop`] would take next.
     pub(super) fn peek(&mut self, heights: &[f32]) -> Option<u64> {
         loop {

@@ -33,6 +33,10 @@ pub(super) fn basins(heights: &[f32], n: usize, least: usize, found: impl FnMut(
             }
             _ => rise.open.pop(heights).expect("a point was waiting"),
         };
+        let soon = rise.open.front();
+        if let Some(j) = soon.or(rise.pits.get(next).copied()) {
+            rise.fetch(j as usize);
+        }
         rise.take(i as usize);
     }
     rise.lakes(least, found);
@@ -111,6 +115,18 @@ impl<'a> Rise<'a> {
             lazy: Bits::new(regions),
             stack: Vec::new(),
         }
+    }
+
+    /// Asks for the rows around point `j` and its bits, which it will
+    /// soon be taken.
+    #[inline]
+    fn fetch(&self, j: usize) {
+        let n = self.n;
+        for at in [j.wrapping_sub(n + 1), j.wrapping_sub(1), j + n - 1] {
+            super::ahead::fetch(self.heights, at);
+        }
+        super::ahead::fetch(&self.wet.0, j / 64);
+        super::ahead::fetch(&self.mark.0, j / 64);
     }
 
     /// Queues point `i` unless it waits already (or is wet).
