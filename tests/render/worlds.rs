@@ -248,3 +248,62 @@ fn the_alpine_camera_sees_the_lakes_in_the_valleys() {
     }
     assert!(seen.len() * 3 >= 12, "lakes seen only on seeds {seen:?}");
 }
+
+/// Autumn's woods turn by the way a slope faces: two slopes alike but
+/// mirrored about the sun's vertical plane (so lit alike) take colours
+/// far apart in autumn, and the same colour in the worlds whose ground
+/// does not follow facing.
+#[test]
+fn autumn_colours_its_slopes_by_the_way_they_face() {
+    use glam::Vec3;
+    use mountains::render::palette::Palette;
+    let widest = |world: World, seed: u64| {
+        let s = worlds::drawn(
+            &Settings {
+                seed: Some(seed),
+                ..in_world(world)
+            },
+            Some(seed),
+        );
+        let field = terrain::generate(&s, seed);
+        let palette = Palette::new(&s, &field);
+        let sun = palette.light();
+        let along = Vec3::new(sun.x, sun.y, 0.0).normalize_or(Vec3::Y);
+        let across = Vec3::Z.cross(along);
+        let slope = |turn: f32, side: f32| {
+            let (sin, cos) = turn.sin_cos();
+            (0.4 * (cos * along + side * sin * across) + 0.92 * Vec3::Z).normalize()
+        };
+        let mut widest = 0;
+        for k in 1..=8 {
+            let height = field.max() * k as f32 / 20.0;
+            for turn in [0.6f32, 1.2, 1.57, 2.0, 2.6] {
+                let [a, b] = [1.0, -1.0]
+                    .map(|side| palette.land_at_point(height, slope(turn, side), 1.0, 1.0));
+                let channel = |c: u32, i: u32| (c >> (8 * i) & 0xff) as i32;
+                let apart = (0..3)
+                    .map(|i| (channel(a, i) - channel(b, i)).abs())
+                    .max()
+                    .unwrap();
+                widest = widest.max(apart);
+            }
+        }
+        widest
+    };
+    for seed in [1, 2, 3] {
+        let autumn = widest(World::Autumn, seed);
+        assert!(
+            autumn >= 24,
+            "seed {seed}: autumn's facings only {autumn} apart"
+        );
+        for world in [
+            World::Temperate,
+            World::Alpine,
+            World::Winter,
+            World::Desert,
+        ] {
+            let other = widest(world, seed);
+            assert!(other <= 1, "seed {seed}: {world:?}'s facings {other} apart");
+        }
+    }
+}

@@ -8,6 +8,8 @@
 //! top), steepness is relative to the mountain's own steep faces (0 flat,
 //! 1 its steep faces): as the palette's zones have them.
 
+use glam::{Vec2, Vec3};
+
 use super::light::Lighting;
 use crate::render::base::colour::{Rgb, mix, ramp, smoothstep};
 use crate::settings::World;
@@ -56,12 +58,14 @@ pub fn draw(identity: u64) -> f32 {
 
 /// The ground's colour in `world` at height fraction `u` on a face of
 /// relative steepness `steep`; `beach` when the land meets a sea; `v` the
-/// mountain's draw ([`draw`]).
-pub fn land(world: World, u: f32, steep: f32, beach: bool, v: f32) -> Rgb {
+/// mountain's draw ([`draw`]); `facing` from -1 (a face turned from the
+/// mountain's sunward side, [`sunward`]) to 1 (turned to it), which only
+/// a world that [`faces`] tells apart.
+pub fn land(world: World, u: f32, steep: f32, beach: bool, v: f32, facing: f32) -> Rgb {
     match world {
         World::Alpine => alpine(u, steep, v),
         World::Winter => winter(u, steep, v),
-        World::Autumn => autumn(u, steep, beach, v),
+        World::Autumn => autumn(u, steep, beach, v, facing),
         World::Desert => desert(u, steep, v),
         World::Tropical => tropical(u, steep, beach),
         World::Varied | World::Temperate => ground::VALLEY,
@@ -107,9 +111,42 @@ fn winter(u: f32, steep: f32, v: f32) -> Rgb {
     mix(ground, DARK_ROCK, bare)
 }
 
+/// Whether `world`'s ground differs by the way a slope faces: autumn's
+/// woods turn earlier on the slopes that face the sun, and its shaded
+/// slopes keep more evergreens.
+pub fn faces(world: World) -> bool {
+    world == World::Autumn
+}
+
+/// The mountain's sunward side, a unit vector in the grid's plane, drawn
+/// from its `identity`: where its slopes face the sun over the season,
+/// whatever the hour of the slide (the leaves do not follow the light).
+pub fn sunward(identity: u64) -> Vec2 {
+    let turn = (crate::terrain::splitmix::mix(identity ^ SUNWARD_KEY) >> 40) as f32;
+    Vec2::from_angle(turn / (1u64 << 24) as f32 * std::f32::consts::TAU)
+}
+
+/// Mixed into a mountain's identity for its sunward side.
+const SUNWARD_KEY: u64 = 0x7375_6e77_6172_6473;
+
+/// How far a face of unit normal `normal` (z up) turns to `sunward`, from
+/// 0 (away) to 1 (towards it); 0.5 on the flat. A moderate slope already
+/// counts fully: the facing shows in patches, not only on the cliffs.
+#[inline]
+pub fn facing_weight(normal: Vec3, sunward: Vec2) -> f32 {
+    let toward = normal.x * sunward.x + normal.y * sunward.y;
+    0.5 + 0.5 * (FACING_GAIN * toward).clamp(-1.0, 1.0)
+}
+
+/// The sideways part of a face's normal (the sine of its slope) at which
+/// it counts as facing fully one way: about 17 degrees.
+const FACING_GAIN: f32 = 3.5;
+
 /// Forests in gold, orange, red and brown by height, evergreens dark on
-/// the steeper slopes, larches yellow and heath brown above them.
-fn autumn(u: f32, steep: f32, beach: bool, v: f32) -> Rgb {
+/// the steeper slopes, larches yellow and heath brown above them. The
+/// slopes facing the sun (`facing` 1) are further into the season, redder
+/// and browner; those turned from it keep more gold and more evergreens.
+fn autumn(u: f32, steep: f32, beach: bool, v: f32, facing: f32) -> Rgb {
     use ground::*;
     let b = bands(u, 5.0 + 4.0 * v);
     let broadleaf = ramp(
@@ -124,10 +161,11 @@ fn autumn(u: f32, steep: f32, beach: bool, v: f32) -> Rgb {
         ],
         // Early in the season the lower woods are gold, late red and
         // brown.
-        u + 0.08 * (b - 0.5) + 0.3 * (v - 0.4),
+        u + 0.08 * (b - 0.5) + 0.3 * (v - 0.4) + 0.14 * facing,
     );
-    let evergreen =
-        smoothstep(0.35, 0.6, steep) * (1.0 - smoothstep(0.6, 0.75, u)) * (0.3 + 0.6 * b);
+    let evergreen = smoothstep(0.35, 0.6, steep - 0.2 * facing)
+        * (1.0 - smoothstep(0.6, 0.75, u))
+        * (0.3 + 0.6 * b);
     let ground = mix(broadleaf, CONIFER, evergreen);
     let ground = mix(ground, GREY_ROCK, smoothstep(0.75, 1.0, steep) * 0.6);
     if beach && u < 0.03 {

@@ -33,7 +33,7 @@ use crate::render::base::colour::{
 };
 use crate::settings::{ColorMode, Look, Settings, Sun, World};
 use crate::terrain::Heightfield;
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 
 /// Height classes in the land table, from sea level to the highest peak.
 const HEIGHT_BINS: usize = 512;
@@ -85,6 +85,10 @@ pub struct Palette {
     mode: ColorMode,
     /// `STEEP_BINS` rows of `HEIGHT_BINS` filtered base colours, packed.
     land: Box<[u32]>,
+    /// Where the world's ground differs by the way a slope faces
+    /// (`cover::faces`): the table of the faces turned to the mountain's
+    /// sunward side, and that side; `land` is then the faces turned from it.
+    sunward: Option<(Box<[u32]>, Vec2)>,
     /// Height bins per height unit (heights below 0 clamp to bin 0).
     height_scale: f32,
     /// Steepness bins per unit of `1 - normal.z`.
@@ -161,11 +165,16 @@ impl Palette {
             ..zones
         };
         let steep_ref = steepness_reference(field);
-        let land = land_table(mode, &zones);
-        let land = match mode {
-            ColorMode::Natural => night::land(land, lighting.night),
-            _ => land,
+        let night = lighting.night;
+        let lit = |table| match mode {
+            ColorMode::Natural => night::land(table, night),
+            _ => table,
         };
+        let land = lit(land_table(mode, &zones, -1.0));
+        let sunward = cover::faces(settings.world).then(|| {
+            let toward = lit(land_table(mode, &zones, 1.0));
+            (toward, cover::sunward(field.identity()))
+        });
         let deepest = positive_or(-lowest, 1.0);
         let waters = Waters {
             relative: settings.relative_depth,
@@ -198,6 +207,7 @@ impl Palette {
             lighting,
             mode,
             land,
+            sunward,
             height_scale: HEIGHT_BINS as f32 / top,
             steep_scale: STEEP_BINS as f32 / steep_ref,
             water,
@@ -273,7 +283,7 @@ impl Palette {
                 .clamp(0.0, (HEIGHT_BINS - 1) as f32),
         );
         let s = index(((1.0 - normal.z) * self.steep_scale).clamp(0.0, (STEEP_BINS - 1) as f32));
-        self.lit_base(self.land[s * HEIGHT_BINS + h], normal, lit, sky)
+        self.lit_base(self.base(s * HEIGHT_BINS + h, normal), normal, lit, sky)
     }
 
     /// Colour of the land at one point of the ground (smooth shading, where
@@ -295,11 +305,24 @@ impl Palette {
         let s0 = index(s);
         let s1 = (s0 + 1).min(STEEP_BINS - 1);
         let base = mix_packed(
-            self.land[s0 * HEIGHT_BINS + h],
-            self.land[s1 * HEIGHT_BINS + h],
+            self.base(s0 * HEIGHT_BINS + h, normal),
+            self.base(s1 * HEIGHT_BINS + h, normal),
             s - s0 as f32,
         );
         self.lit_base(base, normal, lit, sky)
+    }
+
+    /// The base colour of the land table's bin `i` on a face of unit
+    /// normal `normal`: between the faces turned from the sunward side
+    /// and those turned to it, where the world tells them apart.
+    #[inline]
+    fn base(&self, i: usize, normal: Vec3) -> u32 {
+        match &self.sunward {
+            None => self.land[i],
+            Some((toward, side)) => {
+                mix_packed(self.land[i], toward[i], cover::facing_weight(normal, *side))
+            }
+        }
     }
 
     /// A land base colour under this light.
@@ -515,11 +538,12 @@ impl Zones {
     }
 
     /// The natural colour at height fraction `u` (0 sea, 1 highest peak) on
-    /// a face of relative steepness `steep` (0 flat, 1 the field's steep faces).
-    fn colour(&self, u: f32, steep: f32) -> Rgb {
+    /// a face of relative steepness `steep` (0 flat, 1 the field's steep
+    /// faces) turned `facing` (`cover::land`'s) to the sunward side.
+    fn colour(&self, u: f32, steep: f32, facing: f32) -> Rgb {
         use natural::*;
         if !matches!(self.world, World::Temperate | World::Varied) {
-            return cover::land(self.world, u, steep, self.beach, self.draw);
+            return cover::land(self.world, u, steep, self.beach, self.draw, facing);
         }
         let low = u / self.treeline;
         let lowland = if self.beach {
@@ -548,14 +572,15 @@ impl Zones {
     }
 }
 
-/// The filtered base colour of every (steepness, height) bin.
-fn land_table(mode: ColorMode, zones: &Zones) -> Box<[u32]> {
+/// The filtered base colour of every (steepness, height) bin, for faces
+/// turned `facing` to the sunward side.
+fn land_table(mode: ColorMode, zones: &Zones, facing: f32) -> Box<[u32]> {
     let mut table = Vec::with_capacity(STEEP_BINS * HEIGHT_BINS);
     for s in 0..STEEP_BINS {
         let steep = (s as f32 + 0.5) / STEEP_BINS as f32;
         for h in 0..HEIGHT_BINS {
             let u = (h as f32 + 0.5) / HEIGHT_BINS as f32;
-            table.push(pack(finish(mode, zones.colour(u, steep)), 1.0, 0.0));
+            table.push(pack(finish(mode, zones.colour(u, steep, facing)), 1.0, 0.0));
         }
     }
     table.into_boxed_slice()
