@@ -140,8 +140,17 @@ impl Span {
     /// Copies the whole of `screen`'s part (a window that is new or was
     /// resized): what changed there.
     pub(super) fn paint_all(&self, screen: &mut Screen) -> Damage {
-        let all = self.show.frame().map(Frame::bounds).unwrap_or_default();
-        self.paint(screen, &all.into())
+        self.paint(screen, &self.everything())
+    }
+
+    /// The whole span, as damage: what a window that is new or was resized
+    /// needs copied.
+    pub(crate) fn everything(&self) -> Damage {
+        self.show
+            .frame()
+            .map(Frame::bounds)
+            .unwrap_or_default()
+            .into()
     }
 
     /// Copies `damage`'s pixels into the frame of `window`, the black show
@@ -156,13 +165,6 @@ impl Span {
             changed.add(copy(span, crop, r, window));
         }
         changed
-    }
-
-    /// [`Span::paint_to`] of the whole span: a window that is new or was
-    /// resized.
-    pub(crate) fn paint_all_to(&self, head: &Head, window: &mut Show) -> Damage {
-        let all = self.show.frame().map(Frame::bounds).unwrap_or_default();
-        self.paint_to(head, window, &all.into())
     }
 }
 

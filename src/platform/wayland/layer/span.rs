@@ -98,7 +98,7 @@ impl LayerApp {
         };
         let changed = match damage {
             Some(d) => span.paint_to(head, &mut drawing.show, d),
-            None => span.paint_all_to(head, &mut drawing.show),
+            None => span.paint_to(head, &mut drawing.show, &span.everything()),
         };
         self.present(i, changed);
     }
