@@ -351,6 +351,12 @@ pub struct Settings {
 }
 
 impl Settings {
+    /// The quarter turns `rotation` turns the field by (other angles are
+    /// rounded to the nearest quarter).
+    pub fn quarter_turns(&self) -> u32 {
+        (self.rotation % 360 + 45) / 90 % 4
+    }
+
     /// The seed for the next mountain: the one set, or a fresh random one
     /// (`seed = "random"`). Fresh seeds fit a TOML integer, so a seed shown
     /// in a title or printed by `render` can be pasted into `seed = ...`.

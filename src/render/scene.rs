@@ -678,7 +678,7 @@ pub(crate) fn laid_out<'a>(
     settings: &Settings,
     frame: Size,
 ) -> (FieldRef<'a>, Option<easel::Square>, Option<Outline<'a>>) {
-    let mut field = turned(field, settings.rotation);
+    let mut field = turned(field, settings.quarter_turns());
     let mut square = None;
     let mut outline = None;
     if settings.look == Look::Essay {
@@ -703,8 +703,7 @@ pub(crate) fn laid_out<'a>(
     (field, square, outline)
 }
 
-fn turned(field: FieldRef<'_>, rotation: u32) -> FieldRef<'_> {
-    let quarters = ((rotation % 360 + 45) / 90) % 4;
+fn turned(field: FieldRef<'_>, quarters: u32) -> FieldRef<'_> {
     if quarters == 0 {
         return field;
     }

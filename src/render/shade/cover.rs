@@ -121,16 +121,23 @@ pub fn faces(world: World) -> bool {
 /// The mountain's sunward side, a unit vector in the grid's plane, drawn
 /// from its `identity`: where its slopes face the sun over the season,
 /// whatever the hour of the slide (the leaves do not follow the light).
-pub fn sunward(identity: u64) -> Vec2 {
+/// `quarters` is the quarter turns the drawn grid is turned by
+/// (`Settings::quarter_turns`): the side belongs to the land, so it turns
+/// with it.
+pub fn sunward(identity: u64, quarters: u32) -> Vec2 {
     let turn = (crate::terrain::splitmix::mix(identity ^ SUNWARD_KEY) >> 40) as f32;
-    Vec2::from_angle(turn / (1u64 << 24) as f32 * std::f32::consts::TAU)
+    let side = Vec2::from_angle(turn / (1u64 << 24) as f32 * std::f32::consts::TAU);
+    // A quarter turn takes the old right edge (+x) to the row y = 0.
+    (0..quarters % 4).fold(side, |d, _| Vec2::new(d.y, -d.x))
 }
 
 /// Mixed into a mountain's identity for its sunward side.
 const SUNWARD_KEY: u64 = 0x7375_6e77_6172_6473;
 
 /// How far a face of unit normal `normal` (z up) turns to `sunward`, from
-/// 0 (away) to 1 (towards it); 0.5 on the flat. A moderate slope already
+/// 0 (away) to 1 (towards it); 0.5 on the flat, whose colour is thus the
+/// mean of the two facings' (not exactly `land`'s at `facing` 0: the
+/// season's ramp is not straight). A moderate slope already
 /// counts fully: the facing shows in patches, not only on the cliffs.
 #[inline]
 pub fn facing_weight(normal: Vec3, sunward: Vec2) -> f32 {
@@ -333,4 +340,34 @@ fn bands(u: f32, n: f32) -> f32 {
     let a = (x * std::f32::consts::TAU).sin();
     let b = (x * 2.37 * std::f32::consts::TAU + 1.3).sin();
     (0.5 + 0.3 * a + 0.2 * b).clamp(0.0, 1.0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A slope keeps its facing whichever side the land is seen from. One
+    /// quarter turn draws the original's point (n-1-y, x) at (x, y)
+    /// (scene.rs's `turned`), so a step (dx, dy) of the turned grid is the
+    /// original's (-dy, dx), and an original direction (x, y) is the
+    /// turned grid's (y, -x).
+    #[test]
+    fn the_sunward_side_turns_with_the_land() {
+        for identity in [1u64, 7, 42, 1997] {
+            let side = sunward(identity, 0);
+            for quarters in 1..4 {
+                let turned_side = sunward(identity, quarters);
+                for k in 0..16 {
+                    let (sin, cos) = (k as f32 * 0.4).sin_cos();
+                    let normal = Vec3::new(0.5 * cos, 0.5 * sin, 0.866);
+                    let turned = (0..quarters).fold(normal, |v, _| Vec3::new(v.y, -v.x, v.z));
+                    let (a, b) = (
+                        facing_weight(normal, side),
+                        facing_weight(turned, turned_side),
+                    );
+                    assert!((a - b).abs() < 1e-5, "{identity} {quarters} {k}: {a} {b}");
+                }
+            }
+        }
+    }
 }

@@ -76,6 +76,10 @@ mod natural {
     pub const SEA: Rgb = [0.10, 0.34, 0.66];
 }
 
+/// The land table of the faces turned to a mountain's sunward side, and
+/// that side (`cover::sunward`).
+type Sunward = (Box<[u32]>, Vec2);
+
 /// Colours for one mountain under one set of settings.
 #[derive(Debug, Clone)]
 pub struct Palette {
@@ -88,7 +92,7 @@ pub struct Palette {
     /// Where the world's ground differs by the way a slope faces
     /// (`cover::faces`): the table of the faces turned to the mountain's
     /// sunward side, and that side; `land` is then the faces turned from it.
-    sunward: Option<(Box<[u32]>, Vec2)>,
+    sunward: Option<Sunward>,
     /// Height bins per height unit (heights below 0 clamp to bin 0).
     height_scale: f32,
     /// Steepness bins per unit of `1 - normal.z`.
@@ -165,15 +169,8 @@ impl Palette {
             ..zones
         };
         let steep_ref = steepness_reference(field);
-        let night = lighting.night;
-        let lit = |table| match mode {
-            ColorMode::Natural => night::land(table, night),
-            _ => table,
-        };
-        let land = lit(land_table(mode, &zones, -1.0));
-        let sunward = cover::faces(settings.world).then(|| {
-            let toward = lit(land_table(mode, &zones, 1.0));
-            (toward, cover::sunward(field.identity()))
+        let (land, sunward) = land_tables(mode, &zones, lighting.night, || {
+            cover::sunward(field.identity(), settings.quarter_turns())
         });
         let deepest = positive_or(-lowest, 1.0);
         let waters = Waters {
@@ -283,7 +280,8 @@ impl Palette {
                 .clamp(0.0, (HEIGHT_BINS - 1) as f32),
         );
         let s = index(((1.0 - normal.z) * self.steep_scale).clamp(0.0, (STEEP_BINS - 1) as f32));
-        self.lit_base(self.base(s * HEIGHT_BINS + h, normal), normal, lit, sky)
+        let base = self.base(s * HEIGHT_BINS + h, self.facing(normal));
+        self.lit_base(base, normal, lit, sky)
     }
 
     /// Colour of the land at one point of the ground (smooth shading, where
@@ -304,24 +302,31 @@ impl Palette {
         let s = ((1.0 - normal.z) * self.steep_scale - 0.5).clamp(0.0, (STEEP_BINS - 1) as f32);
         let s0 = index(s);
         let s1 = (s0 + 1).min(STEEP_BINS - 1);
+        let facing = self.facing(normal);
         let base = mix_packed(
-            self.base(s0 * HEIGHT_BINS + h, normal),
-            self.base(s1 * HEIGHT_BINS + h, normal),
+            self.base(s0 * HEIGHT_BINS + h, facing),
+            self.base(s1 * HEIGHT_BINS + h, facing),
             s - s0 as f32,
         );
         self.lit_base(base, normal, lit, sky)
     }
 
-    /// The base colour of the land table's bin `i` on a face of unit
-    /// normal `normal`: between the faces turned from the sunward side
-    /// and those turned to it, where the world tells them apart.
+    /// How far a face of unit normal `normal` turns to the sunward side
+    /// (`cover::facing_weight`), where the world tells facings apart.
     #[inline]
-    fn base(&self, i: usize, normal: Vec3) -> u32 {
+    fn facing(&self, normal: Vec3) -> f32 {
+        self.sunward
+            .as_ref()
+            .map_or(0.0, |(_, side)| cover::facing_weight(normal, *side))
+    }
+
+    /// The base colour of the land table's bin `i` on a face turned
+    /// `facing` ([`Palette::facing`]) to the sunward side.
+    #[inline]
+    fn base(&self, i: usize, facing: f32) -> u32 {
         match &self.sunward {
             None => self.land[i],
-            Some((toward, side)) => {
-                mix_packed(self.land[i], toward[i], cover::facing_weight(normal, *side))
-            }
+            Some((toward, _)) => mix_packed(self.land[i], toward[i], facing),
         }
     }
 
@@ -570,6 +575,25 @@ impl Zones {
         let alpine = ramp(&[(0.0, ALPINE), (0.4, BROWN), (0.68, ROCK), (1.0, SNOW)], t);
         mix(lowland, alpine, smoothstep(0.0, 0.15, t))
     }
+}
+
+/// The land's tables in `mode` for `zones` under a night of `night` (0
+/// day, 1 full night): the faces turned from the sunward side, or every
+/// face where the world does not tell facings apart; and where it does,
+/// the faces turned to it, with that side (`sunward()`).
+fn land_tables(
+    mode: ColorMode,
+    zones: &Zones,
+    night: f32,
+    sunward: impl FnOnce() -> Vec2,
+) -> (Box<[u32]>, Option<Sunward>) {
+    let lit = |table| match mode {
+        ColorMode::Natural => night::land(table, night),
+        _ => table,
+    };
+    let away = lit(land_table(mode, zones, -1.0));
+    let toward = cover::faces(zones.world).then(|| (lit(land_table(mode, zones, 1.0)), sunward()));
+    (away, toward)
 }
 
 /// The filtered base colour of every (steepness, height) bin, for faces
