@@ -4,8 +4,9 @@
 
 use glam::Vec4;
 
+use super::gradient::Gradient;
 use crate::render::base::colour::{lanes, packed_lanes};
-use crate::render::base::fixed::{Fixed2, SUBPIXEL};
+use crate::render::base::fixed::Fixed2;
 
 /// The colour planes of one triangle, each channel (blue, green, red,
 /// 0..=255: a packed colour's bytes in memory order) a lane of a vector: a
@@ -34,25 +35,14 @@ impl Blend {
     /// Planes through packed `colours` at the corners `v` (24.8 fixed point).
     #[inline]
     pub(crate) fn new(v: [Fixed2; 3], colours: [u32; 3]) -> Self {
-        let to_px = 1.0 / SUBPIXEL as f32;
-        let origin = [v[0][0] as f32 * to_px, v[0][1] as f32 * to_px];
-        let e1 = [
-            (v[1][0] - v[0][0]) as f32 * to_px,
-            (v[1][1] - v[0][1]) as f32 * to_px,
-        ];
-        let e2 = [
-            (v[2][0] - v[0][0]) as f32 * to_px,
-            (v[2][1] - v[0][1]) as f32 * to_px,
-        ];
-        let det = e1[0] * e2[1] - e2[0] * e1[1];
-        let inv = if det != 0.0 { 1.0 / det } else { 0.0 };
+        let gradient = Gradient::new(v);
         let [c0, c1, c2] = colours.map(lanes);
-        let (d1, d2) = (c1 - c0, c2 - c0);
+        let (dx, dy) = gradient.slopes(c1 - c0, c2 - c0);
         Blend {
             at0: c0,
-            origin,
-            dx: (d1 * e2[1] - d2 * e1[1]) * inv,
-            dy: (d2 * e1[0] - d1 * e2[0]) * inv,
+            origin: gradient.origin,
+            dx,
+            dy,
             lo: c0.min(c1).min(c2),
             hi: c0.max(c1).max(c2),
         }

@@ -3,6 +3,7 @@
 //! scene: the painting order hands it fixed-point positions and colours.
 
 pub(super) mod blend;
+pub(super) mod gradient;
 pub(super) mod outline;
 pub mod raster;
 pub(super) mod shore;

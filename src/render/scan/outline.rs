@@ -4,6 +4,7 @@
 //! Between two corners' values the line is found to a fraction of a pixel,
 //! so it runs straight across a face however large the face is.
 
+use super::gradient::Gradient;
 use crate::render::base::fixed::{Fixed2, SUBPIXEL};
 
 /// The signed distance, in pixels, of a pixel centre from the line where a
@@ -30,23 +31,8 @@ pub(crate) enum Whole {
 impl Crossing {
     /// The line through `values` at the corners `v` (24.8 fixed point).
     pub(crate) fn new(v: [Fixed2; 3], values: [f32; 3]) -> Self {
-        let to_px = 1.0 / SUBPIXEL as f32;
-        let origin = [v[0][0] as f32 * to_px, v[0][1] as f32 * to_px];
-        let e1 = [
-            (v[1][0] - v[0][0]) as f32 * to_px,
-            (v[1][1] - v[0][1]) as f32 * to_px,
-        ];
-        let e2 = [
-            (v[2][0] - v[0][0]) as f32 * to_px,
-            (v[2][1] - v[0][1]) as f32 * to_px,
-        ];
-        let det = e1[0] * e2[1] - e2[0] * e1[1];
-        let inv = if det != 0.0 { 1.0 / det } else { 0.0 };
-        let (d1, d2) = (values[1] - values[0], values[2] - values[0]);
-        let (dx, dy) = (
-            (d1 * e2[1] - d2 * e1[1]) * inv,
-            (d2 * e1[0] - d1 * e2[0]) * inv,
-        );
+        let gradient = Gradient::new(v);
+        let (dx, dy) = gradient.slopes(values[1] - values[0], values[2] - values[0]);
         // Values per pixel across the line: dividing by it makes them
         // pixels. A plane of one value has no line in it: its side is its
         // sign's, far from the line.
@@ -58,7 +44,7 @@ impl Crossing {
         };
         Crossing {
             at0: values[0] * scale,
-            origin,
+            origin: gradient.origin,
             dx: dx * scale,
             dy: dy * scale,
         }
