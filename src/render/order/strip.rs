@@ -454,8 +454,7 @@ impl Scene<'_> {
                     kept(&mut rows.bottom[x], c[2]),
                     kept(&mut rows.bottom[x + 1], c[3]),
                 ];
-                let g = c.iter().map(|k| k.g).sum::<Vec2>() / 4.0;
-                let lit = c.iter().map(|k| k.lit).sum::<f32>() / 4.0;
+                let (g, lit) = middle(&c);
                 let near_sun = sides.iter().find_map(|w| w.near_sun);
                 (sides, self.glitter(mirror, near_sun, g, lit))
             })
@@ -487,9 +486,7 @@ impl Scene<'_> {
         let Some(mirror) = &self.mirror else {
             return water;
         };
-        let n = c.len() as f32;
-        let g = c.iter().map(|k| k.g).sum::<Vec2>() / n;
-        let lit = c.iter().map(|k| k.lit).sum::<f32>() / n;
+        let (g, lit) = middle(c);
         self.mirrored(mirror, water, (g, level), ripple, lit)
     }
 
@@ -791,4 +788,12 @@ fn lit_of(c: &Face) -> f32 {
 fn gray(colour: u32) -> u32 {
     let (r, g, b) = ((colour >> 16) & 0xff, (colour >> 8) & 0xff, colour & 0xff);
     (r * 77 + g * 150 + b * 29) >> 8
+}
+
+/// The mean grid position of corners `c` and the mean share of the sun
+/// that reaches them: where a cell's or a face's water looks from.
+fn middle(c: &[&Corner]) -> (Vec2, f32) {
+    let n = c.len() as f32;
+    let g = c.iter().map(|k| k.g).sum::<Vec2>() / n;
+    (g, c.iter().map(|k| k.lit).sum::<f32>() / n)
 }
