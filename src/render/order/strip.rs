@@ -542,42 +542,23 @@ impl Scene<'_> {
     /// Most triangles of a fine grid cover no pixel centre at all, so the
     /// colour is only worked out once a first span turns up.
     fn paint(&self, canvas: &mut Canvas, v: [Fixed2; 3], colour: impl FnOnce() -> u32) {
-        let mut colour = Some(colour);
-        let mut paint = Paint::Solid(0);
-        let Some(t) = Triangle::new(v, canvas.clip()) else {
-            return;
+        let make = || match self.style {
+            Style::Mono => Paint::Dither(dither::lifted(
+                dither::level(gray(colour())),
+                self.mono_floor,
+            )),
+            _ => Paint::Solid(colour()),
         };
-        let [x0, x1, y0, _] = t.bounds();
-        if canvas.hidden(x0, x1, y0) {
-            return;
-        }
-        t.spans(|y, x0, x1| {
-            if let Some(colour) = colour.take() {
-                let c = colour();
-                paint = match self.style {
-                    Style::Mono => {
-                        Paint::Dither(dither::lifted(dither::level(gray(c)), self.mono_floor))
-                    }
-                    _ => Paint::Solid(c),
-                };
-            }
-            Self::put(canvas, paint, y, x0, x1);
+        paint_spans(canvas, v, make, |canvas, &mut paint, y, x0, x1| {
+            Self::put(canvas, paint, y, x0, x1)
         });
     }
 
     /// Fills one screen triangle blending the colours of its corners across
     /// it (smooth shading); `colours` go with `v`'s corners.
     fn paint_blend(&self, canvas: &mut Canvas, v: [Fixed2; 3], colours: [u32; 3]) {
-        let Some(t) = Triangle::new(v, canvas.clip()) else {
-            return;
-        };
-        let [x0, x1, y0, _] = t.bounds();
-        if canvas.hidden(x0, x1, y0) {
-            return;
-        }
-        let mut blend = None;
-        t.spans(|y, x0, x1| {
-            let b = blend.get_or_insert_with(|| Blend::new(v, colours));
+        let make = || Blend::new(v, colours);
+        paint_spans(canvas, v, make, |canvas, b, y, x0, x1| {
             let row = b.row(y);
             canvas.fill_with(y, x0, x1, |x| b.at(&row, x));
         });
@@ -594,21 +575,12 @@ impl Scene<'_> {
         v: [Fixed2; 3],
         make: impl FnOnce() -> ([Mirrored; 3], Option<(u32, u32)>),
     ) {
-        let Some(t) = Triangle::new(v, canvas.clip()) else {
-            return;
+        let make = || {
+            let (sides, glint) = make();
+            MirroredFace::new(v, sides, glint)
         };
-        let [x0, x1, y0, _] = t.bounds();
-        if canvas.hidden(x0, x1, y0) {
-            return;
-        }
-        let mut make = Some(make);
-        let mut face = None;
-        t.spans(|y, x0, x1| {
-            let f = face.get_or_insert_with(|| {
-                let (sides, glint) = make.take().expect("made once")();
-                MirroredFace::new(v, sides, glint)
-            });
-            f.fill(canvas, y, x0, x1);
+        paint_spans(canvas, v, make, |canvas, face, y, x0, x1| {
+            face.fill(canvas, y, x0, x1)
         });
     }
 
@@ -620,18 +592,8 @@ impl Scene<'_> {
         v: [Fixed2; 3],
         make: impl FnOnce() -> F,
     ) {
-        let Some(t) = Triangle::new(v, canvas.clip()) else {
-            return;
-        };
-        let [x0, x1, y0, _] = t.bounds();
-        if canvas.hidden(x0, x1, y0) {
-            return;
-        }
-        let mut make = Some(make);
-        let mut colour = None;
-        t.spans(|y, x0, x1| {
-            let f = colour.get_or_insert_with(|| make.take().map(|m| m()).unwrap());
-            canvas.fill_with(y, x0, x1, |x| f(x, y));
+        paint_spans(canvas, v, make, |canvas, f, y, x0, x1| {
+            canvas.fill_with(y, x0, x1, |x| f(x, y))
         });
     }
 
@@ -796,4 +758,31 @@ fn middle(c: &[&Corner]) -> (Vec2, f32) {
     let n = c.len() as f32;
     let g = c.iter().map(|k| k.g).sum::<Vec2>() / n;
     (g, c.iter().map(|k| k.lit).sum::<f32>() / n)
+}
+
+/// Calls `fill(canvas, state, y, x0, x1)` for each span of the screen
+/// triangle `v` that can show (clipped to the canvas, not wholly behind
+/// what is drawn), `state` made by `make()` once the first span turns up:
+/// most triangles of a fine grid cover no pixel centre, and their colours
+/// are never worked out.
+#[inline(always)]
+fn paint_spans<S>(
+    canvas: &mut Canvas,
+    v: [Fixed2; 3],
+    make: impl FnOnce() -> S,
+    mut fill: impl FnMut(&mut Canvas, &mut S, u32, u32, u32),
+) {
+    let Some(t) = Triangle::new(v, canvas.clip()) else {
+        return;
+    };
+    let [x0, x1, y0, _] = t.bounds();
+    if canvas.hidden(x0, x1, y0) {
+        return;
+    }
+    let mut make = Some(make);
+    let mut state = None;
+    t.spans(|y, x0, x1| {
+        let s = state.get_or_insert_with(|| (make.take().expect("made once"))());
+        fill(canvas, s, y, x0, x1);
+    });
 }
