@@ -2,7 +2,6 @@
 //! one colour a water cell, and the mirror's samples, drew it as a
 //! staircase of cells, treads 4-8 px long at 4K.
 
-use mountains::render::view::{self, View};
 use mountains::render::{Frame, Size, render_full};
 use mountains::settings::{Clouds, ColorMode, Settings, Sun, ViewKind, World};
 use mountains::terrain::Heightfield;
@@ -74,16 +73,7 @@ fn outline(w: u32, h: u32) -> (Vec<f32>, f32) {
     };
     let mut frame = Frame::new(w, h).unwrap();
     render_full(&field, &s, &mut frame);
-    let row_top: Vec<f32> = (0..field.size())
-        .map(|y| field.row(y).iter().copied().fold(0.0, f32::max))
-        .collect();
-    let view = View::fitted(
-        ViewKind::Vista,
-        field.size(),
-        field.extent(),
-        (&row_top, view::near_floor(&field)),
-        Size::new(w, h),
-    );
+    let view = super::reflections::vista_view(&field, Size::new(w, h));
     let crest = |gx: f32| LOW + (HIGH - LOW) * (gx - FROM) / (TO - FROM);
     let px = |x: u32, y: u32| frame.pixels()[(y * w + x) as usize];
     let (a, b) = (FROM + 0.25 * (TO - FROM), FROM + 0.75 * (TO - FROM));

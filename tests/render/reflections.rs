@@ -85,16 +85,7 @@ fn seen(height: f32, reflections: bool) -> Seen {
         ..vista(reflections)
     };
     let frame = full(&field, &s, w, h);
-    let row_top: Vec<f32> = (0..field.size())
-        .map(|y| field.row(y).iter().copied().fold(0.0, f32::max))
-        .collect();
-    let view = View::fitted(
-        ViewKind::Vista,
-        field.size(),
-        field.extent(),
-        (&row_top, view::near_floor(&field)),
-        Size::new(w, h),
-    );
+    let view = vista_view(&field, Size::new(w, h));
     let top = view.project(cx, cy, height);
     // The foot on the near side, where the cone meets the water.
     let foot = view.project(cx, cy + 14.0, 0.0).y;
@@ -279,4 +270,19 @@ fn the_water_below_a_sunset_glitters() {
     assert!(sunset >= 100, "only {sunset} glints under a sunset");
     assert_eq!(evening, 0, "glints with the sun to the side");
     assert_eq!(plain, 0, "glints without reflections");
+}
+
+/// The vista the scene fits to `field` in a frame of `frame`, each row's
+/// highest point its top: where the tests find the pixels of a point.
+pub(crate) fn vista_view(field: &Heightfield, frame: Size) -> View {
+    let row_top: Vec<f32> = (0..field.size())
+        .map(|y| field.row(y).iter().copied().fold(0.0, f32::max))
+        .collect();
+    View::fitted(
+        ViewKind::Vista,
+        field.size(),
+        field.extent(),
+        (&row_top, view::near_floor(field)),
+        frame,
+    )
 }

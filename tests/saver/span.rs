@@ -20,17 +20,21 @@ fn part(picture: &[u32], width: u16, (x, y, w, h): Geometry) -> Vec<u32> {
         .collect()
 }
 
+/// The saver's arguments in `mode` (`/s`, or `--layer background`), spanning the
+/// monitors and drawing seed 5 (as `headless_render`), then `then`.
+fn span_args<'a>(mode: &[&'a str], then: &[&'a str]) -> Vec<&'a str> {
+    let mut args = mode.to_vec();
+    args.extend(["--set", "monitors=span", "--set", "seed=5"]);
+    args.extend_from_slice(then);
+    args
+}
+
+/// Drawn at once and held 8 s: the next slide comes within the patience.
+const NEXT_SLIDE_SOON: [&str; 4] = ["--set", "draw_seconds=0", "--set", "pause_seconds=8"];
+
 /// `/s` spanning the monitors of `x`, drawing seed 5 (as `headless_render`).
 fn spanning(x: &Xvfb, name: &str) -> Saver {
-    let args = [
-        "/s",
-        "--set",
-        "monitors=span",
-        "--set",
-        "seed=5",
-        "--set",
-        "pause_seconds=60",
-    ];
+    let args = span_args(&["/s"], &["--set", "pause_seconds=60"]);
     Saver::start(x, name, &args, &[])
 }
 
@@ -84,18 +88,7 @@ fn display_span_a_monitor_removed_re_lays_the_span() {
     };
     randr::set_monitors(&x.conn, x.root, &[LEFT, RIGHT], None);
     let (both, one) = (headless_render(1280, 480), headless_render(640, 480));
-    // Drawn at once and held 8 s: the next slide comes within the patience.
-    let args = [
-        "/s",
-        "--set",
-        "monitors=span",
-        "--set",
-        "seed=5",
-        "--set",
-        "draw_seconds=0",
-        "--set",
-        "pause_seconds=8",
-    ];
+    let args = span_args(&["/s"], &NEXT_SLIDE_SOON);
     let mut saver = Saver::start(&x, "span-unplug", &args, &[]);
     expect_parts(&x, &mut saver, &[LEFT, RIGHT], &both, 1280);
     randr::delete_monitors(&x.conn, x.root, 1, 1);
@@ -127,15 +120,7 @@ fn wayland_span_two_outputs_show_one_picture() {
         return;
     };
     let picture = headless_render(1280, 480);
-    let args = [
-        "/s",
-        "--set",
-        "monitors=span",
-        "--set",
-        "seed=5",
-        "--set",
-        "pause_seconds=30",
-    ];
+    let args = span_args(&["/s"], &["--set", "pause_seconds=30"]);
     let mut saver = sway.mountains(&args);
     let took = saver.poll("each output showing its half of one picture", || {
         sway.screenshot_output("HEADLESS-1") == half(&picture, 0)
@@ -174,16 +159,7 @@ fn wayland_layer_span_two_outputs_show_one_picture() {
         return;
     };
     let picture = headless_render(1280, 480);
-    let args = [
-        "--layer",
-        "background",
-        "--set",
-        "monitors=span",
-        "--set",
-        "seed=5",
-        "--set",
-        "pause_seconds=30",
-    ];
+    let args = span_args(&["--layer", "background"], &["--set", "pause_seconds=30"]);
     let mut saver = sway.mountains(&args);
     let took = saver.poll(
         "each output's layer surface showing its half of one picture",
@@ -206,19 +182,7 @@ fn wayland_layer_span_takes_in_an_output_added_at_the_next_slide() {
         return;
     };
     let (one, both) = (headless_render(640, 480), headless_render(1280, 480));
-    // Drawn at once and held 8 s: the next slide comes within the patience.
-    let args = [
-        "--layer",
-        "background",
-        "--set",
-        "monitors=span",
-        "--set",
-        "seed=5",
-        "--set",
-        "draw_seconds=0",
-        "--set",
-        "pause_seconds=8",
-    ];
+    let args = span_args(&["--layer", "background"], &NEXT_SLIDE_SOON);
     let mut saver = sway.mountains(&args);
     saver.poll("the span over the one output", || {
         sway.screenshot_output("HEADLESS-1") == (640, 480, one.clone())
