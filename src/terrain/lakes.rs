@@ -13,12 +13,18 @@
 //! Only the basins are flooded (see [`rise`]): each pit's water rises from
 //! the pit itself until it finds a way down, so the slopes that drain
 //! anyway, most of a mountain, are looked at once, by the search for pits.
+//! Most pits' water is settled first near each pit ([`settle`]), where the
+//! memory it touches stays in the cache; the rest rises over the field in
+//! one height order.
 
 mod ahead;
+mod bits;
+mod grid;
 mod labels;
 mod open;
 mod pits;
 mod rise;
+mod settle;
 
 /// Least share of the grid's points a basin covers to be drawn as a lake.
 pub const MIN_AREA_SHARE: f64 = 1e-4;

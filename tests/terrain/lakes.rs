@@ -333,3 +333,43 @@ fn hand_made_lakes_are_the_first_floods() {
     }
     assert!(total >= 10, "only {total} lakes to compare");
 }
+
+/// Many small random fields, where the pits lie close together and spill
+/// into one another: smooth and rough, with heights rounded to a few
+/// values (ties and flats everywhere) or to none, with and without sea.
+/// The lakes are the first flood's at every least area.
+#[test]
+fn random_fields_are_the_first_floods() {
+    let mut total = 0;
+    for case in 0..240u64 {
+        let n = [9, 17, 33, 47][case as usize % 4];
+        let steps = [0.0, 1.0, 4.0, 64.0][(case / 4) as usize % 4];
+        let sea = [0.0, 0.15][(case / 16) as usize % 2];
+        let mut state = case.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 40) as f32 / (1u64 << 24) as f32
+        };
+        let heights: Vec<f32> = (0..n * n)
+            .map(|i| {
+                let (x, y) = ((i % n) as f32 / n as f32, (i / n) as f32 / n as f32);
+                // A bowl or a ridge under the noise, by the case.
+                let shape = if case % 3 == 0 {
+                    (x - 0.5).powi(2) + (y - 0.5).powi(2)
+                } else {
+                    0.3 - (x - 0.5).abs() * 0.4
+                };
+                let h = 1.0 + shape + 0.3 * next() - sea * 8.0 * next();
+                if steps > 0.0 {
+                    (h * steps).round() / steps
+                } else {
+                    h
+                }
+            })
+            .collect();
+        total += same_as_reference(&heights, n, &format!("case {case} ({n} a side)"));
+    }
+    assert!(total >= 100, "only {total} lakes to compare");
+}

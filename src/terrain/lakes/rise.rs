@@ -11,15 +11,36 @@
 //! height, which is their lowest lip. Water only rises where a basin is, so
 //! the slopes that drain anyway are never taken.
 
+use super::bits::Bits;
+use super::grid::Grid;
 use super::labels::Labels;
 use super::open::{Open, entry};
 use super::pits::pits;
+use super::settle::{MOST_POINTS, settle};
 
 /// Calls `found(level, points)` for each lake of `heights` (`n` a side) of
-/// at least `least` points.
-pub(super) fn basins(heights: &[f32], n: usize, least: usize, found: impl FnMut(f32, &mut [u32])) {
-    let (pits, lo, hi) = pits(heights, n);
-    let mut rise = Rise::new(heights, n, lo, hi, pits);
+/// at least `least` points: first those settled near their pits (on fields
+/// of at most [`MOST_POINTS`] points), then those the water rising over
+/// the whole field finds from the pits left.
+pub(super) fn basins(
+    heights: &[f32],
+    n: usize,
+    least: usize,
+    mut found: impl FnMut(f32, &mut [u32]),
+) {
+    let (mut pits, lo, hi) = pits(heights, n);
+    let (mut wet, mut mark) = (Bits::new(heights.len()), Bits::new(heights.len()));
+    if heights.len() <= MOST_POINTS {
+        settle(
+            heights,
+            n,
+            &mut pits,
+            (&mut wet, &mut mark),
+            least,
+            &mut found,
+        );
+    }
+    let mut rise = Rise::new(heights, n, (lo, hi), pits, (wet, mark));
     // The pits are taken in their turn from their own list, lowest first,
     // beside the queue (a copy of each in the queue would only wait).
     let mut next = 0;
@@ -48,33 +69,11 @@ fn land(h: f32) -> bool {
     h > 0.0
 }
 
-/// One bit a point.
-struct Bits(Vec<u64>);
-
-impl Bits {
-    fn new(len: usize) -> Self {
-        Bits(vec![0; len.div_ceil(64)])
-    }
-    #[inline]
-    fn get(&self, i: usize) -> bool {
-        self.0[i / 64] >> (i % 64) & 1 != 0
-    }
-    #[inline]
-    fn set(&mut self, i: usize) {
-        self.0[i / 64] |= 1 << (i % 64);
-    }
-    #[inline]
-    fn clear(&mut self, i: usize) {
-        self.0[i / 64] &= !(1 << (i % 64));
-    }
-}
-
 /// The state of the rising water.
 struct Rise<'a> {
     heights: &'a [f32],
     n: usize,
-    /// `ceil(2^40 / n)`: a point's row by a multiplication.
-    row_of: u64,
+    grid: Grid,
     /// Points under a region's water (or at its surface).
     wet: Bits,
     /// For a point not wet: waiting in `open`. For a wet one: its region
@@ -99,14 +98,20 @@ struct Rise<'a> {
 }
 
 impl<'a> Rise<'a> {
-    fn new(heights: &'a [f32], n: usize, lo: f32, hi: f32, pits: Vec<u32>) -> Self {
+    fn new(
+        heights: &'a [f32],
+        n: usize,
+        (lo, hi): (f32, f32),
+        pits: Vec<u32>,
+        (wet, mark): (Bits, Bits),
+    ) -> Self {
         let regions = pits.len();
         Rise {
             heights,
             n,
-            row_of: (1u64 << 40).div_ceil(n as u64),
-            wet: Bits::new(heights.len()),
-            mark: Bits::new(heights.len()),
+            grid: Grid::new(n),
+            wet,
+            mark,
             open: Open::new(lo, hi, heights.len()),
             labels: Labels::new(),
             pits,
@@ -136,56 +141,6 @@ impl<'a> Rise<'a> {
             self.mark.set(i);
             self.open.push(self.heights[i], i as u32);
         }
-    }
-
-    /// The eight neighbours of a point off the border.
-    #[inline]
-    fn around(&self, i: usize) -> [usize; 8] {
-        let n = self.n;
-        [
-            i - n - 1,
-            i - n,
-            i - n + 1,
-            i - 1,
-            i + 1,
-            i + n - 1,
-            i + n,
-            i + n + 1,
-        ]
-    }
-
-    /// The neighbours of `i` (lakes join across a cell's diagonals, as the
-    /// triangles drawn over the cells do), in the first `count` items.
-    #[inline]
-    fn neighbours(&self, i: usize) -> ([usize; 8], usize) {
-        let n = self.n;
-        // i / n without a division: exact for i < 2^25 (a 4097 grid has
-        // 2^24 points), as i (2^40/n + e) / 2^40 exceeds i / n by less than
-        // 2^-15, and i / n's fraction is at most 1 - 1/n.
-        let y = ((i as u64 * self.row_of) >> 40) as usize;
-        let x = i - y * n;
-        if x > 0 && y > 0 && x + 1 < n && y + 1 < n {
-            return (self.around(i), 8);
-        }
-        let mut out = [0; 8];
-        let mut count = 0;
-        for (dx, dy) in [
-            (-1, -1),
-            (0, -1),
-            (1, -1),
-            (-1, 0),
-            (1, 0),
-            (-1, 1),
-            (0, 1),
-            (1, 1),
-        ] {
-            let (nx, ny) = (x as isize + dx, y as isize + dy);
-            if nx >= 0 && ny >= 0 && (nx as usize) < n && (ny as usize) < n {
-                out[count] = ny as usize * n + nx as usize;
-                count += 1;
-            }
-        }
-        (out, count)
     }
 
     /// The region starting at point `i`, if it is a pit.
@@ -223,7 +178,7 @@ impl<'a> Rise<'a> {
             }
             let h = self.heights[at];
             let (mut lowest, mut below) = (h, usize::MAX);
-            for k in self.around(at) {
+            for k in self.grid.around(at) {
                 let hk = self.heights[k];
                 if hk < lowest && self.wet.get(k) {
                     (lowest, below) = (hk, k);
@@ -250,7 +205,7 @@ impl<'a> Rise<'a> {
         // No longer waiting: a region that reaches it later queues it again
         // (on a flat, the drained water it leads to is then found).
         self.mark.clear(i);
-        let (around, count) = self.neighbours(i);
+        let (around, count) = self.grid.neighbours(i);
         let (mut filling, mut drained) = (false, false);
         for &k in &around[..count] {
             if self.wet.get(k) {
@@ -299,7 +254,7 @@ impl<'a> Rise<'a> {
             self.join(i, &regions[..found], root);
             for &first in &lazy[..lazies] {
                 self.lazy.clear(first as usize);
-                for k in self.around(self.pits[first as usize] as usize) {
+                for k in self.grid.around(self.pits[first as usize] as usize) {
                     self.queue(k);
                 }
             }
@@ -320,6 +275,7 @@ impl<'a> Rise<'a> {
         // A pit's region is found by its place among the pits.
         self.labels.set(i as u32, region as u32, false);
         let lowest = self
+            .grid
             .around(i)
             .into_iter()
             .min_by_key(|&k| (super::open::key(self.heights[k]), k))
@@ -336,7 +292,7 @@ impl<'a> Rise<'a> {
         self.wet.set(i);
         self.mark.clear(i);
         self.labels.set(i as u32, region, root);
-        for k in self.around(i) {
+        for k in self.grid.around(i) {
             self.queue(k);
         }
     }
@@ -358,7 +314,7 @@ impl<'a> Rise<'a> {
         // The wet points still filling that touch each other are one
         // region: all of them drain.
         while let Some(p) = self.stack.pop() {
-            for k in self.around(p as usize) {
+            for k in self.grid.around(p as usize) {
                 if self.wet.get(k) && !self.mark.get(k) {
                     self.mark.set(k);
                     self.stack.push(k as u32);
