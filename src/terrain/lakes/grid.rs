@@ -1,4 +1,12 @@
-//! A point's neighbours on the square grid the lakes are found on.
+//! A point's neighbours on the square grid the lakes are found on, and
+//! which points are land.
+
+/// Whether height `h` is land: above sea level (NaN, no data, is not).
+/// Water leaves the field wherever it reaches a point that is not.
+#[inline]
+pub(super) fn land(h: f32) -> bool {
+    h > 0.0
+}
 
 /// The neighbourhood of the points of a grid `n` a side.
 #[derive(Clone, Copy)]

@@ -12,7 +12,7 @@
 //! the slopes that drain anyway are never taken.
 
 use super::bits::Bits;
-use super::grid::Grid;
+use super::grid::{Grid, land};
 use super::labels::Labels;
 use super::open::{Open, entry};
 use super::pits::pits;
@@ -63,16 +63,9 @@ pub(super) fn basins(
     rise.lakes(least, found);
 }
 
-/// Whether height `h` is land: above sea level (NaN, no data, is not).
-#[inline]
-fn land(h: f32) -> bool {
-    h > 0.0
-}
-
 /// The state of the rising water.
 struct Rise<'a> {
     heights: &'a [f32],
-    n: usize,
     grid: Grid,
     /// Points under a region's water (or at its surface).
     wet: Bits,
@@ -108,7 +101,6 @@ impl<'a> Rise<'a> {
         let regions = pits.len();
         Rise {
             heights,
-            n,
             grid: Grid::new(n),
             wet,
             mark,
@@ -126,7 +118,7 @@ impl<'a> Rise<'a> {
     /// soon be taken.
     #[inline]
     fn fetch(&self, j: usize) {
-        let n = self.n;
+        let n = self.grid.n();
         for at in [j.wrapping_sub(n + 1), j.wrapping_sub(1), j + n - 1] {
             super::ahead::fetch(self.heights, at);
         }
@@ -330,7 +322,7 @@ impl<'a> Rise<'a> {
     fn lakes(self, least: usize, mut found: impl FnMut(f32, &mut [u32])) {
         let Rise {
             heights,
-            n,
+            grid,
             mut wet,
             pits,
             joined,
@@ -359,16 +351,7 @@ impl<'a> Rise<'a> {
             while let Some(p) = stack.pop() {
                 basin.push(p);
                 let p = p as usize;
-                for k in [
-                    p - n - 1,
-                    p - n,
-                    p - n + 1,
-                    p - 1,
-                    p + 1,
-                    p + n - 1,
-                    p + n,
-                    p + n + 1,
-                ] {
+                for k in grid.around(p) {
                     if wet.get(k) && heights[k] < level {
                         wet.clear(k);
                         stack.push(k as u32);

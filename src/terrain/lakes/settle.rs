@@ -30,7 +30,7 @@ use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
 use super::bits::Bits;
-use super::grid::Grid;
+use super::grid::{Grid, land};
 use super::open::entry;
 
 /// Most points a flood here takes, as a share of the field's: a larger
@@ -93,19 +93,13 @@ pub(super) fn settle(
                 }
             }
         }
-        if lake.len() >= least {
-            found(level.expect("a lake has a level"), &mut lake);
+        if let Some(level) = level.filter(|_| lake.len() >= least) {
+            found(level, &mut lake);
         }
         lake.clear();
     }
     let wet = &*s.wet;
     pits.retain(|&p| !wet.get(p as usize));
-}
-
-/// Whether height `h` is land (as the flood has it).
-#[inline]
-fn land(h: f32) -> bool {
-    h > 0.0
 }
 
 /// The state of the settling.
