@@ -88,6 +88,17 @@ pub fn map_blocks_from(bytes: i32) {
     let _ = bytes;
 }
 
+/// glibc: gives the system back every whole free page the allocator's
+/// pools hold (see `memory::give_back_free_pages`). Nothing elsewhere.
+pub fn trim_pools() {
+    #[cfg(all(target_os = "linux", target_env = "gnu"))]
+    // SAFETY: malloc_trim only returns free pages to the system; it takes
+    // the pools' own locks and is safe to call from any thread.
+    unsafe {
+        libc::malloc_trim(0);
+    }
+}
+
 /// Asks Linux to back the untouched allocation of `bytes` at `start` with
 /// huge pages (see `terrain::heightfield`). Nothing elsewhere.
 pub fn advise_huge_pages(start: *mut u8, bytes: usize) {

@@ -521,6 +521,8 @@ impl Show {
             && let Some(current) = self.current.as_mut()
         {
             current.park();
+            // The drawing's working memory is gone too; the hold keeps the frame.
+            crate::memory::give_back_free_pages();
         }
         if !matches!(self.next, Next::None) || self.slideshow.is_held_for_power() {
             return;

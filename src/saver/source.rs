@@ -21,7 +21,10 @@ pub fn next_mountain(settings: &Settings, slide: u64) -> Mountain {
     {
         return mountain;
     }
-    Mountain::generate(settings)
+    let mountain = Mountain::generate(settings);
+    // The making's working copies are gone; the hold keeps only the heights.
+    crate::memory::give_back_free_pages();
+    mountain
 }
 
 /// Distinct warnings remembered at most, so the list stays bounded.

@@ -99,8 +99,22 @@ fn cpu_ticks(pid: u32) -> u64 {
     fields[11].parse::<u64>().unwrap() + fields[12].parse::<u64>().unwrap()
 }
 
+/// Whether any of the saver's threads is running or waiting for a core
+/// (state `R`): a saver starved of CPU by other tests uses no time, yet is
+/// not at rest.
+fn any_thread_runnable(pid: u32) -> bool {
+    let Ok(tasks) = std::fs::read_dir(format!("/proc/{pid}/task")) else {
+        return false;
+    };
+    tasks.flatten().any(|task| {
+        let stat = std::fs::read_to_string(task.path().join("stat")).unwrap_or_default();
+        let state = stat.rfind(')').map(|i| stat[i + 1..].trim_start());
+        state.is_some_and(|s| s.starts_with('R'))
+    })
+}
+
 /// Waits until the whole screen shows a mountain and the saver has been at
-/// rest (no CPU time used) for a quarter of a second: the hold, with no
+/// rest (no CPU time used, no thread runnable) for a quarter of a second: the hold, with no
 /// work left over from windows and sizes that are gone. Fails, telling the
 /// threads and memory of the moment, when that takes longer than `PATIENCE`.
 fn at_rest(x: &Xvfb, saver: &mut Saver) {
@@ -112,7 +126,7 @@ fn at_rest(x: &Xvfb, saver: &mut Saver) {
         saver.assert_running();
         std::thread::sleep(Duration::from_millis(20));
         let ticks = cpu_ticks(pid);
-        if ticks > quiet_since.1 + 1 {
+        if ticks > quiet_since.1 + 1 || any_thread_runnable(pid) {
             quiet_since = (Instant::now(), ticks);
         } else if quiet_since.0.elapsed() >= QUIET && looks_drawn(&x.grab_rect(whole)) {
             return;
