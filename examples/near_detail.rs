@@ -8,6 +8,9 @@
 //! A ratio under 1 means the default grid shows less of the land's fine
 //! structure near the viewer than the finest grid would.
 
+#[path = "shared/flags.rs"]
+mod flags;
+
 use mountains::quality::image::channels;
 use mountains::render::{Frame, Size, detail, render_full};
 use mountains::settings::{Settings, load};
@@ -23,14 +26,8 @@ fn main() {
     for pair in args.chunks(2) {
         match (pair[0].as_str(), pair.get(1)) {
             ("--sizes", Some(v)) => sizes = v.split(',').map(size).collect(),
-            ("--seeds", Some(v)) => {
-                let (a, b) = v.split_once('-').expect("--seeds A-B");
-                seeds = (a.parse().expect("first")..=b.parse().expect("last")).collect();
-            }
-            ("--set", Some(v)) => {
-                let (k, raw) = v.split_once('=').expect("--set KEY=VALUE");
-                load::apply_set(&mut prefs, k, raw).expect("a key and its value");
-            }
+            ("--seeds", Some(v)) => seeds = flags::seeds(v),
+            ("--set", Some(v)) => flags::set(&mut prefs, v),
             _ => panic!("usage: --sizes WxH,... --seeds A-B [--set KEY=VALUE]..."),
         }
     }

@@ -25,13 +25,16 @@
 //! - *lakes seen*: at least 0.1% of the frame is water with `lakes = true`
 //!   and not with `lakes = false` (the basins' water alone).
 
+#[path = "shared/flags.rs"]
+mod flags;
+
 use mountains::quality::facets::{delta_e, lab};
 use mountains::quality::image::channels;
 use mountains::render::Size;
 use mountains::render::classes::{Class, render_classes};
 use mountains::render::palette::Palette;
 use mountains::render::{Frame, detail, render_full};
-use mountains::settings::{Settings, load, worlds};
+use mountains::settings::{Settings, worlds};
 use mountains::terrain;
 
 /// What one slide is.
@@ -56,14 +59,8 @@ fn main() {
                 let (w, h) = v.split_once('x').expect("--size WxH");
                 size = (w.parse().expect("width"), h.parse().expect("height"));
             }
-            ("--seeds", Some(v)) => {
-                let (a, b) = v.split_once('-').expect("--seeds A-B");
-                seeds = (a.parse().expect("first")..=b.parse().expect("last")).collect();
-            }
-            ("--set", Some(v)) => {
-                let (k, raw) = v.split_once('=').expect("--set KEY=VALUE");
-                load::apply_set(&mut prefs, k, raw).expect("a key and its value");
-            }
+            ("--seeds", Some(v)) => seeds = flags::seeds(v),
+            ("--set", Some(v)) => flags::set(&mut prefs, v),
             _ => panic!("usage: --size WxH --seeds A-B [--set KEY=VALUE]..."),
         }
     }
