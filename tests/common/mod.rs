@@ -16,6 +16,8 @@ pub mod power;
 #[cfg(unix)]
 pub mod randr;
 #[cfg(unix)]
+pub mod running;
+#[cfg(unix)]
 pub mod signals;
 #[cfg(target_os = "linux")]
 pub mod sway;

@@ -9,8 +9,10 @@
 #![allow(dead_code)]
 
 use std::path::{Path, PathBuf};
-use std::process::{Child, Command, ExitStatus, Stdio};
+use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
+
+use super::running::Running;
 
 pub use super::signals;
 
@@ -234,10 +236,7 @@ impl Sway {
         let child = signals::as_from_a_terminal(&mut c)
             .spawn()
             .expect("start mountains");
-        Client {
-            child: Some(child),
-            stderr,
-        }
+        Client(Running::new(child, stderr))
     }
 
     /// Runs a sway tool to its end; panics with its stderr if it fails.
@@ -323,47 +322,24 @@ impl Drop for Sway {
     }
 }
 
-/// A `mountains` run on the compositor; killed on drop.
-pub struct Client {
-    child: Option<Child>,
-    stderr: PathBuf,
+/// A `mountains` run on the compositor; killed on drop (see [`Running`]
+/// for its stderr, status and end).
+pub struct Client(Running);
+
+impl std::ops::Deref for Client {
+    type Target = Running;
+    fn deref(&self) -> &Running {
+        &self.0
+    }
+}
+
+impl std::ops::DerefMut for Client {
+    fn deref_mut(&mut self) -> &mut Running {
+        &mut self.0
+    }
 }
 
 impl Client {
-    /// What it wrote on stderr so far.
-    pub fn stderr(&self) -> String {
-        std::fs::read_to_string(&self.stderr).unwrap_or_default()
-    }
-
-    /// Its process id (setpriv execs it: the same process).
-    pub fn pid(&self) -> u32 {
-        self.child.as_ref().unwrap().id()
-    }
-
-    /// Its exit status if it has ended.
-    pub fn exited(&mut self) -> Option<ExitStatus> {
-        self.child.as_mut().unwrap().try_wait().unwrap()
-    }
-
-    /// Waits up to `limit` for it to end.
-    pub fn wait(&mut self, limit: Duration) -> Option<ExitStatus> {
-        let end = Instant::now() + limit;
-        while Instant::now() < end {
-            if let Some(status) = self.exited() {
-                return Some(status);
-            }
-            std::thread::sleep(Duration::from_millis(5));
-        }
-        None
-    }
-
-    /// Fails the test with its stderr if it has ended already.
-    pub fn assert_running(&mut self) {
-        if let Some(status) = self.exited() {
-            panic!("mountains ended early ({status}):\n{}", self.stderr());
-        }
-    }
-
     /// Waits for `what` to end it and checks it ended with status 0.
     pub fn expect_exit(&mut self, what: &str) {
         let status = self.wait(PATIENCE);
@@ -374,21 +350,14 @@ impl Client {
 
     /// Sends it SIGTERM, as an idle daemon or swaylock-plugin ends it.
     pub fn terminate(&self) {
-        let pid = self.child.as_ref().unwrap().id().to_string();
+        let pid = self.pid().to_string();
         let status = Command::new("kill").args(["-TERM", &pid]).status();
         assert!(status.is_ok_and(|s| s.success()), "kill -TERM {pid}");
     }
 
-    /// Kills it with SIGKILL, as a crash would end it.
-    pub fn kill(&mut self) {
-        let mut child = self.child.take().unwrap();
-        let _ = child.kill();
-        let _ = child.wait();
-    }
-
     /// Polls until its stderr says `words` (while it runs, up to `PATIENCE`).
     pub fn poll_said(&mut self, words: &str) -> Duration {
-        let stderr = self.stderr.clone();
+        let stderr = self.stderr_path().clone();
         let what = format!("saying `{words}`");
         self.poll(&what, || {
             std::fs::read_to_string(&stderr).is_ok_and(|t| t.contains(words))
@@ -409,15 +378,6 @@ impl Client {
             "{what} did not happen within {PATIENCE:?}; stderr:\n{}",
             self.stderr()
         );
-    }
-}
-
-impl Drop for Client {
-    fn drop(&mut self) {
-        if let Some(mut child) = self.child.take() {
-            let _ = child.kill();
-            let _ = child.wait();
-        }
     }
 }
 

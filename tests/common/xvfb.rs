@@ -7,8 +7,10 @@
 
 use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
-use std::process::{Child, Command, ExitStatus, Stdio};
+use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
+
+use super::running::Running;
 
 // The program a test signals must not inherit an ignored signal.
 pub use super::signals;
@@ -484,8 +486,8 @@ impl Drop for TempDir {
 
 /// The `mountains` binary running on a test display; killed on drop.
 pub struct Saver {
-    child: Option<Child>,
-    stderr: PathBuf,
+    /// Its stderr, status and end (see [`Running`]).
+    run: Running,
     _home: TempDir,
     /// When it was started.
     pub started: Instant,
@@ -550,8 +552,7 @@ impl Saver {
             .spawn()
             .unwrap_or_else(|e| panic!("start {}: {e}", program.display()));
         Saver {
-            child: Some(child),
-            stderr,
+            run: Running::new(child, stderr),
             _home: home,
             started: Instant::now(),
         }
@@ -567,40 +568,6 @@ impl Saver {
         std::fs::read_to_string(self._home.0.join("stdout.txt")).unwrap_or_default()
     }
 
-    /// What it wrote on stderr so far.
-    pub fn stderr(&self) -> String {
-        std::fs::read_to_string(&self.stderr).unwrap_or_default()
-    }
-
-    /// Its process id.
-    pub fn pid(&self) -> u32 {
-        self.child.as_ref().unwrap().id()
-    }
-
-    /// Its exit status if it has ended.
-    pub fn exited(&mut self) -> Option<ExitStatus> {
-        self.child.as_mut().unwrap().try_wait().unwrap()
-    }
-
-    /// Waits up to `limit` for it to end.
-    pub fn wait(&mut self, limit: Duration) -> Option<ExitStatus> {
-        let end = Instant::now() + limit;
-        while Instant::now() < end {
-            if let Some(status) = self.exited() {
-                return Some(status);
-            }
-            std::thread::sleep(Duration::from_millis(2));
-        }
-        None
-    }
-
-    /// Fails the test with its stderr if it has ended already.
-    pub fn assert_running(&mut self) {
-        if let Some(status) = self.exited() {
-            panic!("mountains ended early ({status}):\n{}", self.stderr());
-        }
-    }
-
     /// Sends a signal with kill(1).
     pub fn signal(&self, name: &str) {
         let status = Command::new("kill")
@@ -611,12 +578,16 @@ impl Saver {
     }
 }
 
-impl Drop for Saver {
-    fn drop(&mut self) {
-        if let Some(mut child) = self.child.take() {
-            let _ = child.kill();
-            let _ = child.wait();
-        }
+impl std::ops::Deref for Saver {
+    type Target = Running;
+    fn deref(&self) -> &Running {
+        &self.run
+    }
+}
+
+impl std::ops::DerefMut for Saver {
+    fn deref_mut(&mut self) -> &mut Running {
+        &mut self.run
     }
 }
 
