@@ -6,23 +6,7 @@
 # Usage: sh scripts/mirror_outline.sh BEFORE_BINARY AFTER_BINARY
 # Needs ImageMagick 6 (convert, montage).
 set -eu
-if [ $# -ne 2 ]; then
-    echo "usage: sh scripts/mirror_outline.sh BEFORE_BINARY AFTER_BINARY" >&2
-    exit 2
-fi
-before=$1
-after=$2
-for b in "$before" "$after"; do
-    [ -f "$b" ] && [ -x "$b" ] || { echo "error: $b is not an executable" >&2; exit 2; }
-done
-before=$(cd "$(dirname "$before")" && pwd)/$(basename "$before")
-after=$(cd "$(dirname "$after")" && pwd)/$(basename "$after")
-command -v montage >/dev/null 2>&1 || { echo "error: montage (ImageMagick) is needed" >&2; exit 2; }
-cd "$(dirname "$0")/.."
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-# The defaults, whatever the preferences file of whoever runs this says.
-: >"$tmp/empty.toml"
+. "$(dirname "$0")/lib/two_builds.sh" "$@"
 
 # seed, extra setting (- for none), an 800x400 box's X+Y at 3840x2160.
 scenes='30 - 900+1700

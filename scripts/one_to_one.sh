@@ -16,24 +16,7 @@
 # another light (the fault "one seed, one scene" mends), which the strip shows. The 4K crops cover the same part of
 # the scene as the 1080p ones: coordinates and sizes doubled.
 set -eu
-if [ $# -ne 2 ]; then
-    echo "usage: sh scripts/one_to_one.sh BEFORE_BINARY AFTER_BINARY" >&2
-    exit 2
-fi
-before=$1
-after=$2
-for b in "$before" "$after"; do
-    [ -f "$b" ] && [ -x "$b" ] || { echo "error: $b is not an executable" >&2; exit 2; }
-done
-# Absolute, since the script works from the repository's top folder.
-before=$(cd "$(dirname "$before")" && pwd)/$(basename "$before")
-after=$(cd "$(dirname "$after")" && pwd)/$(basename "$after")
-command -v montage >/dev/null 2>&1 || { echo "error: montage (ImageMagick) is needed" >&2; exit 2; }
-cd "$(dirname "$0")/.."
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-# The defaults, whatever the preferences file of whoever runs this says.
-: >"$tmp/empty.toml"
+. "$(dirname "$0")/lib/two_builds.sh" "$@"
 
 # seed, extra settings, then four crops as X+Y of a 320x200 box at 1920x1080:
 # foreground slope, far ridge, skyline, coast.
