@@ -17,6 +17,7 @@ mod subdivide;
 mod triangle;
 
 pub use cliffs::STEP_SHARE as CLIFF_STEP_SHARE;
+pub use cliffs::Strata;
 pub use heightfield::Heightfield;
 pub use lakes::Lakes;
 

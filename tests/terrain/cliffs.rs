@@ -3,7 +3,7 @@
 //! tests/terrain/determinism.rs and the golden pictures hold at 0).
 
 use mountains::settings::{Detail, Generator, Settings};
-use mountains::terrain::{CLIFF_STEP_SHARE, Heightfield, generate, generate_with_threads};
+use mountains::terrain::{CLIFF_STEP_SHARE, Heightfield, Strata, generate, generate_with_threads};
 
 fn settings(generator: Generator, cliffs: f32) -> Settings {
     Settings {
@@ -33,12 +33,36 @@ fn slopes(f: &Heightfield) -> (f32, f32) {
 }
 
 /// The share of the land above the first step lying in the lower half of
-/// its step: a terrace is mostly level bench, its rise in a short face.
-fn bench_share(f: &Heightfield) -> f64 {
+/// its bed, as `bed` tells the bed of a height: a terrace is mostly level
+/// bench, its rise in a short face.
+fn bench_share(f: &Heightfield, bed: impl Fn(f32) -> (f32, f32)) -> f64 {
     let step = CLIFF_STEP_SHARE * f.extent();
     let above: Vec<f32> = f.heights().iter().copied().filter(|&h| h > step).collect();
-    let low = above.iter().filter(|&&h| (h / step).fract() < 0.5).count();
+    let low = above
+        .iter()
+        .filter(|&&h| {
+            let (bottom, top) = bed(h);
+            h - bottom < 0.5 * (top - bottom)
+        })
+        .count();
     low as f64 / above.len() as f64
+}
+
+/// [`bench_share`] in the rock beds the cliffs cut into `f` (drawn from
+/// its seed).
+fn share_in_beds(f: &Heightfield) -> f64 {
+    let strata = Strata::of(f.seed().expect("a generated field"), f.extent());
+    bench_share(f, |h| strata.bed(h))
+}
+
+/// [`bench_share`] in even steps of [`CLIFF_STEP_SHARE`]: for the land
+/// without cliffs, which has no beds of its own.
+fn share_in_steps(f: &Heightfield) -> f64 {
+    let step = CLIFF_STEP_SHARE * f.extent();
+    bench_share(f, |h| {
+        let bottom = (h / step).floor() * step;
+        (bottom, bottom + step)
+    })
 }
 
 const GENERATORS: [Generator; 4] = [
@@ -59,7 +83,7 @@ fn cliffs_make_steeper_faces_and_level_benches() {
             let case = format!("{generator:?} seed {seed}");
             assert!(max1 > 1.2 * max0, "{case}: steepest {max0} -> {max1}");
             assert!(p1 > 2.0 * p0, "{case}: 99th percentile {p0} -> {p1}");
-            let (b0, b1) = (bench_share(&plain), bench_share(&sheer));
+            let (b0, b1) = (share_in_steps(&plain), share_in_beds(&sheer));
             assert!(b0 < 0.65 && b1 > 0.9, "{case}: benches {b0:.2} -> {b1:.2}");
         }
     }
@@ -67,7 +91,7 @@ fn cliffs_make_steeper_faces_and_level_benches() {
 
 #[test]
 fn more_cliffs_sharpen_the_faces_step_by_step() {
-    let share = |cliffs| bench_share(&generate(&settings(Generator::Diamond, cliffs), 4));
+    let share = |cliffs| share_in_beds(&generate(&settings(Generator::Diamond, cliffs), 4));
     let (a, b, c) = (share(0.25), share(0.5), share(1.0));
     assert!(a < b && b < c, "{a} {b} {c}");
 }
