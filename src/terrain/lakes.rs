@@ -10,12 +10,12 @@
 //! [`MIN_AREA_SHARE`] of the points are left dry (a pit a few points wide
 //! does not read as water).
 //!
-//! Only the basins are flooded (see [`rise`]): each pit's water rises from
-//! the pit itself until it finds a way down, so the slopes that drain
-//! anyway, most of a mountain, are looked at once, by the search for pits.
-//! Most pits' water is settled first near each pit ([`settle`]), where the
-//! memory it touches stays in the cache; the rest rises over the field in
-//! one height order.
+//! They are found from the basins and the lips between them ([`spill`]):
+//! a few passes over the field in place order, on both cores, and a
+//! joining of the basins over their lips, lowest first. A field too large
+//! for a basin number a point (over [`spill::MOST_POINTS`]: a 4097 grid)
+//! is flooded from its pits instead ([`rise`]), with two bits a point; the
+//! two ways find the same lakes.
 
 mod ahead;
 mod bits;
@@ -24,7 +24,16 @@ mod labels;
 mod open;
 mod pits;
 mod rise;
-mod settle;
+mod spill;
+
+/// The two ways the lakes are found: from the basins' lips (fast, with a
+/// basin number a point), or by the water rising from the pits (with two
+/// bits a point, for the largest fields).
+#[derive(Clone, Copy)]
+enum Way {
+    Spill,
+    Rise,
+}
 
 /// Least share of the grid's points a basin covers to be drawn as a lake.
 pub const MIN_AREA_SHARE: f64 = 1e-4;
@@ -61,6 +70,16 @@ impl Lakes {
 
     /// [`Lakes::of`] keeping basins of at least `least` points.
     pub fn at_least(heights: &[f32], size: usize, least: usize) -> Self {
+        let way = if heights.len() <= spill::MOST_POINTS {
+            Way::Spill
+        } else {
+            Way::Rise
+        };
+        Lakes::found(heights, size, least, way)
+    }
+
+    /// [`Lakes::at_least`], found `way`.
+    fn found(heights: &[f32], size: usize, least: usize, way: Way) -> Self {
         assert_eq!(heights.len(), size * size, "a square field");
         assert!(
             heights.len() <= 1 << 25,
@@ -70,9 +89,11 @@ impl Lakes {
             size,
             ..Lakes::default()
         };
-        rise::basins(heights, size, least.max(1), |level, points| {
-            lakes.add(points, level)
-        });
+        let mut found = |level, points: &mut [u32]| lakes.add(points, level);
+        match way {
+            Way::Spill => spill::lakes(heights, size, least.max(1), &mut found),
+            Way::Rise => rise::basins(heights, size, least.max(1), found),
+        }
         lakes.in_order_of_level();
         lakes
     }
@@ -213,6 +234,49 @@ impl Lakes {
                     lake,
                 },
             );
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Both ways on `heights`, at several least areas.
+    fn both_ways_agree(heights: &[f32], n: usize, what: &str) {
+        for least in [1, 4, 30] {
+            let spill = Lakes::found(heights, n, least, Way::Spill);
+            let rise = Lakes::found(heights, n, least, Way::Rise);
+            assert_eq!(spill, rise, "{what}, least {least}");
+        }
+    }
+
+    /// A field of `n` a side with heights in `levels` steps (many equal
+    /// neighbours, flat floors and lips) from `seed`, some of it sea.
+    fn stepped(n: usize, levels: u64, seed: u64) -> Vec<f32> {
+        (0..(n * n) as u64)
+            .map(|i| {
+                let h = crate::terrain::splitmix::mix(seed ^ i.wrapping_mul(0x9E37_79B9));
+                (h % levels) as f32 - 1.0
+            })
+            .collect()
+    }
+
+    #[test]
+    fn the_lips_find_the_lakes_the_rising_water_finds() {
+        for seed in 0..6 {
+            for levels in [3, 6, 50, 1000] {
+                both_ways_agree(&stepped(40, levels, seed), 40, "stepped");
+            }
+        }
+        for seed in 1..=4 {
+            let s = crate::settings::Settings {
+                detail: crate::settings::Detail::Level(7),
+                lakes: true,
+                ..Default::default()
+            };
+            let field = crate::terrain::generate(&s, seed);
+            both_ways_agree(field.heights(), field.size(), "generated");
         }
     }
 }

@@ -10,37 +10,21 @@
 //! drained region. Then the regions touching it have drained, at its
 //! height, which is their lowest lip. Water only rises where a basin is, so
 //! the slopes that drain anyway are never taken.
+//!
+//! Slower than [`super::spill`], it needs less memory: the lakes of the
+//! largest fields are found this way.
 
 use super::bits::Bits;
 use super::grid::{Grid, land};
 use super::labels::Labels;
 use super::open::{Open, entry};
 use super::pits::pits;
-use super::settle::{MOST_POINTS, settle};
 
 /// Calls `found(level, points)` for each lake of `heights` (`n` a side) of
-/// at least `least` points: first those settled near their pits (on fields
-/// of at most [`MOST_POINTS`] points), then those the water rising over
-/// the whole field finds from the pits left.
-pub(super) fn basins(
-    heights: &[f32],
-    n: usize,
-    least: usize,
-    mut found: impl FnMut(f32, &mut [u32]),
-) {
-    let (mut pits, lo, hi) = pits(heights, n);
-    let (mut wet, mut mark) = (Bits::new(heights.len()), Bits::new(heights.len()));
-    if heights.len() <= MOST_POINTS {
-        settle(
-            heights,
-            n,
-            &mut pits,
-            (&mut wet, &mut mark),
-            least,
-            &mut found,
-        );
-    }
-    let mut rise = Rise::new(heights, n, (lo, hi), pits, (wet, mark));
+/// at least `least` points.
+pub(super) fn basins(heights: &[f32], n: usize, least: usize, found: impl FnMut(f32, &mut [u32])) {
+    let (pits, lo, hi) = pits(heights, n);
+    let mut rise = Rise::new(heights, n, (lo, hi), pits);
     // The pits are taken in their turn from their own list, lowest first,
     // beside the queue (a copy of each in the queue would only wait).
     let mut next = 0;
@@ -91,19 +75,13 @@ struct Rise<'a> {
 }
 
 impl<'a> Rise<'a> {
-    fn new(
-        heights: &'a [f32],
-        n: usize,
-        (lo, hi): (f32, f32),
-        pits: Vec<u32>,
-        (wet, mark): (Bits, Bits),
-    ) -> Self {
+    fn new(heights: &'a [f32], n: usize, (lo, hi): (f32, f32), pits: Vec<u32>) -> Self {
         let regions = pits.len();
         Rise {
             heights,
             grid: Grid::new(n),
-            wet,
-            mark,
+            wet: Bits::new(heights.len()),
+            mark: Bits::new(heights.len()),
             open: Open::new(lo, hi, heights.len()),
             labels: Labels::new(),
             pits,
