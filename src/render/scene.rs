@@ -625,7 +625,7 @@ fn weather(
     sky: &Sky,
     Size { width, height }: Size,
 ) -> Option<Weather> {
-    let amount = clouds::amount(settings.clouds, field.identity());
+    let amount = clouds::amount_in(settings.clouds, settings.world, field.identity());
     Weather::new(
         view,
         palette.lighting(),

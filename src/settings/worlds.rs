@@ -12,9 +12,7 @@
 //! key table checks every value against its key's range, and a test
 //! applies every preset.
 
-use super::keys::table::{
-    CLIFFS, CLOUDS, CRAGGINESS, EROSION, HEIGHT, LAKES, REFLECTIONS, SEA_LEVEL,
-};
+use super::keys::table::{CLIFFS, CRAGGINESS, EROSION, HEIGHT, LAKES, REFLECTIONS, SEA_LEVEL};
 use super::keys::{self, Value};
 use super::looks::Preset;
 use super::{ColorMode, Look, Settings, World};
@@ -67,7 +65,7 @@ const AUTUMN: &[(&str, Preset)] = &[
 
 /// Terraces, mesas and canyons; the low ground a dry basin (the palette
 /// draws its "water" as sand and salt flats, which mirror nothing); no
-/// lakes; a clear sky.
+/// lakes; a sky mostly clear (the palette's `clouds::skies`).
 const DESERT: &[(&str, Preset)] = &[
     (HEIGHT.name, Int(6)),
     (CLIFFS.name, Float(0.8)),
@@ -75,7 +73,6 @@ const DESERT: &[(&str, Preset)] = &[
     (SEA_LEVEL.name, Float(-0.4)),
     (LAKES.name, Bool(false)),
     (REFLECTIONS.name, Bool(false)),
-    (CLOUDS.name, Float(0.1)),
 ];
 
 /// Steep islands standing out of a wider sea.

@@ -104,16 +104,8 @@ impl Aim {
     /// its lakes lie: the back edge high in the frame and the near half of
     /// the land below it. The temperate world keeps today's vista.
     pub fn of(world: World, identity: u64) -> Aim {
-        let (skyline, cropped) = match world {
-            World::Temperate | World::Varied => return Aim::ACROSS,
-            World::Alpine => ((0.2, 0.3), (0.4, 0.6)),
-            World::Winter => ((0.28, 0.45), (0.0, 0.4)),
-            World::Autumn => ((0.3, 0.45), (0.0, 0.35)),
-            World::Desert => ((0.3, 0.5), (0.0, 0.3)),
-            // Low over the sea, as the temperate coast: from higher, the
-            // water below the sun or the moon mirrors the sky above it and
-            // no longer glitters.
-            World::Tropical => ((0.4, 0.5), (0.0, 0.0)),
+        let Some((skyline, cropped)) = aims(world) else {
+            return Aim::ACROSS;
         };
         let draw = crate::terrain::splitmix::mix(identity ^ AIM_KEY);
         let unit = |shift: u32| ((draw >> shift) & 0xffff) as f32 / 65535.0;
@@ -122,6 +114,25 @@ impl Aim {
             skyline: within(skyline, unit(16)),
             cropped: within(cropped, unit(40)),
         }
+    }
+}
+
+/// The ranges [`Aim::of`] draws a world's aim from: where its back edge
+/// sits (least, most) and how much of the land's depth falls below the
+/// frame (least, most); each wide, so the slides of one world are framed
+/// from looking across the land with much sky to looking down with
+/// little. None for the temperate world ([`Aim::ACROSS`]).
+fn aims(world: World) -> Option<((f32, f32), (f32, f32))> {
+    match world {
+        World::Temperate | World::Varied => None,
+        World::Alpine => Some(((0.16, 0.34), (0.35, 0.65))),
+        World::Winter => Some(((0.22, 0.5), (0.0, 0.5))),
+        World::Autumn => Some(((0.25, 0.5), (0.0, 0.45))),
+        World::Desert => Some(((0.25, 0.55), (0.0, 0.4))),
+        // Low over the sea, as the temperate coast: from higher, the
+        // water below the sun or the moon mirrors the sky above it and
+        // no longer glitters.
+        World::Tropical => Some(((0.34, 0.55), (0.0, 0.0))),
     }
 }
 
@@ -316,4 +327,43 @@ fn bisect_steps(mut lo: f32, mut hi: f32, steps: usize, f: impl Fn(f32) -> f32) 
         }
     }
     0.5 * (lo + hi)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each world's aims lie within its ranges and reach across most of
+    /// them; the temperate world keeps today's vista.
+    #[test]
+    fn each_world_aims_within_its_ranges() {
+        for world in [
+            World::Alpine,
+            World::Winter,
+            World::Autumn,
+            World::Desert,
+            World::Tropical,
+        ] {
+            let (skyline, cropped) = aims(world).expect("a world's ranges");
+            let drawn: Vec<Aim> = (0..500).map(|i| Aim::of(world, i)).collect();
+            for (range, get) in [
+                (skyline, (|a: &Aim| a.skyline) as fn(&Aim) -> f32),
+                (cropped, |a: &Aim| a.cropped),
+            ] {
+                let values: Vec<f32> = drawn.iter().map(get).collect();
+                let (lo, hi) = values
+                    .iter()
+                    .fold((f32::MAX, f32::MIN), |(lo, hi), &v| (lo.min(v), hi.max(v)));
+                assert!(
+                    lo >= range.0 && hi <= range.1,
+                    "{world:?}: {lo}..{hi} in {range:?}"
+                );
+                assert!(
+                    hi - lo >= 0.9 * (range.1 - range.0),
+                    "{world:?}: {lo}..{hi}"
+                );
+            }
+        }
+        assert_eq!(Aim::of(World::Temperate, 7), Aim::ACROSS);
+    }
 }

@@ -14,7 +14,7 @@
 //! the water mirrors it through the same function.
 
 use crate::render::base::colour::smoothstep;
-use crate::settings::Clouds;
+use crate::settings::{Clouds, World};
 use crate::terrain::splitmix;
 
 /// How far the sheet lies for a point one frame height above the horizon
@@ -57,6 +57,38 @@ pub(crate) fn amount(choice: Clouds, draw: u64) -> f32 {
                 0.2 + 0.8 * (u - CLEAR_SHARE) / (1.0 - CLEAR_SHARE)
             }
         }
+    }
+}
+
+/// The amount of cloud `choice` means for a mountain of identity `draw`
+/// in `world`: under "varied", each world draws from its own sky ([`skies`]);
+/// the temperate world's is [`amount`]'s.
+pub(crate) fn amount_in(choice: Clouds, world: World, draw: u64) -> f32 {
+    match (choice, skies(world)) {
+        (Clouds::Varied, Some((clear, least, most))) => {
+            let u = (splitmix::mix(draw ^ 0xC10D_5EED) >> 40) as f32 / (1u64 << 24) as f32;
+            if u < clear {
+                0.0
+            } else {
+                least + (most - least) * (u - clear) / (1.0 - clear)
+            }
+        }
+        _ => amount(choice, draw),
+    }
+}
+
+/// A world's varied sky: the share of its slides left clear, and the
+/// least and the most cloud over the others. The desert is mostly clear,
+/// its cloud thin; winter's and autumn's often grey over; the tropics'
+/// seldom clear, seldom overcast. None for the temperate world.
+fn skies(world: World) -> Option<(f32, f32, f32)> {
+    match world {
+        World::Desert => Some((0.55, 0.1, 0.45)),
+        World::Winter => Some((0.3, 0.3, 1.0)),
+        World::Autumn => Some((0.3, 0.25, 1.0)),
+        World::Tropical => Some((0.2, 0.2, 0.75)),
+        World::Alpine => Some((0.45, 0.2, 0.85)),
+        World::Varied | World::Temperate => None,
     }
 }
 
@@ -247,6 +279,37 @@ fn fade_curve(t: f32) -> f32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Each world's varied sky keeps its share clear and its cloud within
+    /// its least and most; the temperate world's is the plain draw's.
+    #[test]
+    fn each_world_draws_its_own_sky() {
+        for world in [
+            World::Alpine,
+            World::Winter,
+            World::Autumn,
+            World::Desert,
+            World::Tropical,
+        ] {
+            let (clear, least, most) = skies(world).expect("a world's sky");
+            let amounts: Vec<f32> = (0..3000u64)
+                .map(|d| amount_in(Clouds::Varied, world, splitmix::mix(d)))
+                .collect();
+            let cleared = amounts.iter().filter(|&&a| a == 0.0).count() as f32 / 3000.0;
+            assert!((cleared - clear).abs() < 0.04, "{world:?}: clear {cleared}");
+            for &a in amounts.iter().filter(|&&a| a > 0.0) {
+                assert!((least..=most).contains(&a), "{world:?}: {a}");
+            }
+            assert_eq!(amount_in(Clouds::Amount(0.3), world, 7), 0.3);
+        }
+        for d in 0..100 {
+            let (a, b) = (
+                amount(Clouds::Varied, d),
+                amount_in(Clouds::Varied, World::Temperate, d),
+            );
+            assert_eq!(a.to_bits(), b.to_bits());
+        }
+    }
 
     #[test]
     fn varied_leaves_about_a_third_clear_and_a_third_cloudy() {

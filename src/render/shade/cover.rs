@@ -10,6 +10,7 @@
 
 use glam::{Vec2, Vec3};
 
+use super::hour::SunAt;
 use super::light::Lighting;
 use crate::render::base::colour::{Rgb, mix, ramp, smoothstep};
 use crate::settings::World;
@@ -44,6 +45,8 @@ mod ground {
     pub const JUNGLE: Rgb = [0.09, 0.42, 0.13];
     pub const PALM: Rgb = [0.22, 0.58, 0.16];
     pub const BASALT: Rgb = [0.24, 0.22, 0.21];
+    pub const DRY_GRASS: Rgb = [0.66, 0.58, 0.30];
+    pub const SCRUB: Rgb = [0.34, 0.36, 0.17];
 }
 
 /// Mixed into a mountain's identity for its draw within its world.
@@ -67,7 +70,7 @@ pub fn land(world: World, u: f32, steep: f32, beach: bool, v: f32, facing: f32) 
         World::Winter => winter(u, steep, v),
         World::Autumn => autumn(u, steep, beach, v, facing),
         World::Desert => desert(u, steep, v),
-        World::Tropical => tropical(u, steep, beach),
+        World::Tropical => tropical(u, steep, beach, v),
         World::Varied | World::Temperate => ground::VALLEY,
     }
 }
@@ -89,10 +92,9 @@ fn alpine(u: f32, steep: f32, v: f32) -> Rgb {
     );
     let rock = mix(GREY_ROCK, DARK_ROCK, smoothstep(0.5, 1.0, steep));
     let low = mix(low, rock, smoothstep(0.45, 0.85, steep));
-    // Snow from a third of the way up on flat ground, higher on steep.
-    // Snow from low on the flats (lower in a snowier year), higher on
-    // steep ground.
-    let line = 0.08 + 0.16 * v + 0.4 * smoothstep(0.3, 0.95, steep);
+    // Snow from low on the flats (from the valleys after a fresh fall,
+    // only on the high ground late in a summer), higher on steep ground.
+    let line = 0.04 + 0.46 * v + 0.4 * smoothstep(0.3, 0.95, steep);
     let snow = smoothstep(line, line + 0.08, u) * (1.0 - smoothstep(0.8, 1.0, steep));
     let white = ramp(&[(0.0, GLACIER), (0.5, FIRN), (0.8, SNOW)], u);
     mix(low, white, snow)
@@ -104,8 +106,11 @@ fn winter(u: f32, steep: f32, v: f32) -> Rgb {
     use ground::*;
     let snow = ramp(&[(0.0, FIRN), (0.3, SNOW)], u);
     // Forest on the middle slopes of the lower land, the snow in its gaps.
-    let forest =
-        smoothstep(0.25, 0.45, steep) * (1.0 - smoothstep(0.35, 0.55, u)) * (0.3 + 0.6 * v);
+    // A wooded country or an open one, by the mountain.
+    let treeline = 0.3 + 0.35 * v;
+    let forest = smoothstep(0.2, 0.45, steep)
+        * (1.0 - smoothstep(treeline, treeline + 0.2, u))
+        * (0.15 + 0.85 * v);
     let ground = mix(snow, DARK_CONIFER, forest * bands(u, 9.0));
     let bare = smoothstep(0.62, 0.92, steep);
     mix(ground, DARK_ROCK, bare)
@@ -175,6 +180,13 @@ fn autumn(u: f32, steep: f32, beach: bool, v: f32, facing: f32) -> Rgb {
         * (0.3 + 0.6 * b);
     let ground = mix(broadleaf, CONIFER, evergreen);
     let ground = mix(ground, GREY_ROCK, smoothstep(0.75, 1.0, steep) * 0.6);
+    // Late in a season the first snow has fallen on the tops.
+    let snow_line = 1.3 - 0.7 * smoothstep(0.6, 1.0, v);
+    let ground = mix(
+        ground,
+        FIRN,
+        smoothstep(snow_line, snow_line + 0.1, u) * (1.0 - smoothstep(0.55, 0.85, steep)),
+    );
     if beach && u < 0.03 {
         return mix(CREAM, ground, smoothstep(0.0, 0.03, u));
     }
@@ -188,16 +200,17 @@ fn desert(u: f32, steep: f32, v: f32) -> Rgb {
     // Layers of rock of uneven thickness: a few repeats over the relief,
     // more or fewer, and redder or paler, by the mountain.
     let t = (u * (3.5 + 3.0 * v) + v).fract();
+    let [brick, ochre, cream, rust, chocolate] = strata(v);
     let layer = ramp(
         &[
-            (0.0, BRICK),
-            (0.22, OCHRE),
-            (0.36, CREAM),
-            (0.46, OCHRE),
-            (0.62, RUST),
-            (0.8, BRICK),
-            (0.9, CHOCOLATE),
-            (1.0, BRICK),
+            (0.0, brick),
+            (0.22, ochre),
+            (0.36, cream),
+            (0.46, ochre),
+            (0.62, rust),
+            (0.8, brick),
+            (0.9, chocolate),
+            (1.0, brick),
         ],
         t,
     );
@@ -210,12 +223,49 @@ fn desert(u: f32, steep: f32, v: f32) -> Rgb {
     mix(ground, CREAM, 0.45 * smoothstep(0.55, 1.0, v))
 }
 
-/// White beaches, palms then jungle up the slopes, dark basalt on the
-/// steepest faces and the volcanic tops.
-fn tropical(u: f32, steep: f32, beach: bool) -> Rgb {
+/// The desert's rock, by the mountain's draw `v`: its strata's five
+/// colours (brick, ochre, cream, rust, chocolate in the red rock's
+/// country). Deserts differ most in their stone: red rock, pale
+/// sandstone, grey and maroon badlands, dark lava.
+fn strata(v: f32) -> [Rgb; 5] {
     use ground::*;
+    match (v * 11.0).fract() {
+        k if k < 0.4 => [BRICK, OCHRE, CREAM, RUST, CHOCOLATE],
+        k if k < 0.6 => [
+            [0.86, 0.66, 0.56],
+            [0.90, 0.82, 0.68],
+            [0.96, 0.93, 0.86],
+            [0.80, 0.62, 0.50],
+            [0.66, 0.52, 0.44],
+        ],
+        k if k < 0.8 => [
+            [0.56, 0.30, 0.28],
+            [0.66, 0.62, 0.64],
+            [0.80, 0.74, 0.66],
+            [0.52, 0.46, 0.56],
+            [0.36, 0.30, 0.36],
+        ],
+        _ => [
+            [0.30, 0.26, 0.25],
+            [0.62, 0.50, 0.34],
+            [0.80, 0.70, 0.52],
+            [0.22, 0.20, 0.20],
+            [0.15, 0.14, 0.14],
+        ],
+    }
+}
+
+/// White beaches, palms then jungle up the slopes (dry grass and scrub
+/// on a dry island), dark basalt on the steepest faces and the volcanic
+/// tops.
+fn tropical(u: f32, steep: f32, beach: bool, v: f32) -> Rgb {
+    use ground::*;
+    // The lee of some islands lies in a dry season: golden grass and
+    // olive scrub for the palms and the jungle.
+    let dry = smoothstep(0.55, 0.9, v);
+    let (palm, jungle) = (mix(PALM, DRY_GRASS, dry), mix(JUNGLE, SCRUB, dry));
     let green = ramp(
-        &[(0.0, PALM), (0.12, PALM), (0.3, JUNGLE), (1.0, JUNGLE)],
+        &[(0.0, palm), (0.12, palm), (0.3, jungle), (1.0, jungle)],
         u,
     );
     let green = match beach {
@@ -270,24 +320,96 @@ pub fn water(world: World, t: f32, v: f32) -> Rgb {
 /// The sky's colours in `world`, top and horizon, from the light's
 /// `zenith` and `horizon`: a dusty desert air, a cold winter one, a clear
 /// mountain one, an autumn's golden haze, each thicker or thinner by the
-/// mountain's draw of its air `v` ([`air_draw`]), so two slides of one
-/// world at one time of day are apart. `night` (0 to 1) of the night's
-/// look keeps the night's dark top.
+/// mountain's draw of its air `v` ([`air_draw`]), its top somewhere
+/// between the world's two skies, so two slides of one world at one time
+/// of day are apart. `night` (0 to 1) of the night's look turns both
+/// towards the world's own night ([`night_air`]).
 pub fn air(world: World, [zenith, horizon]: [Rgb; 2], v: f32, night: f32) -> [Rgb; 2] {
     // The tint of the horizon and how much of it (least to most), and the
-    // tint of the sky's top and how much of it at most.
-    let (tint, (lo, hi), top, most) = match world {
-        World::Desert => ([0.86, 0.74, 0.58], (0.15, 0.75), [0.52, 0.60, 0.70], 0.7),
-        World::Winter => ([0.80, 0.86, 0.94], (0.15, 0.8), [0.50, 0.56, 0.64], 0.8),
-        World::Tropical => ([0.70, 0.88, 0.95], (0.0, 0.5), [0.04, 0.34, 0.80], 0.7),
-        World::Autumn => ([0.88, 0.76, 0.58], (0.1, 0.6), [0.34, 0.40, 0.60], 0.7),
-        World::Alpine => ([0.78, 0.88, 0.98], (0.05, 0.5), [0.05, 0.16, 0.50], 0.7),
+    // two tints of the sky's top (a paler, hazier one and a deeper one)
+    // and how much of them at most.
+    let (tint, (lo, hi), tops, most) = match world {
+        World::Desert => (
+            [0.86, 0.74, 0.58],
+            (0.15, 0.75),
+            [[0.72, 0.70, 0.64], [0.10, 0.24, 0.62]],
+            0.75,
+        ),
+        World::Winter => (
+            [0.80, 0.86, 0.94],
+            (0.15, 0.8),
+            [[0.56, 0.62, 0.72], [0.22, 0.44, 0.74]],
+            0.8,
+        ),
+        World::Tropical => (
+            [0.70, 0.88, 0.95],
+            (0.0, 0.5),
+            [[0.04, 0.34, 0.80], [0.16, 0.58, 0.86]],
+            0.75,
+        ),
+        World::Autumn => (
+            [0.88, 0.76, 0.58],
+            (0.1, 0.6),
+            [[0.40, 0.44, 0.58], [0.14, 0.26, 0.60]],
+            0.7,
+        ),
+        World::Alpine => (
+            [0.78, 0.88, 0.98],
+            (0.05, 0.5),
+            [[0.04, 0.12, 0.42], [0.12, 0.34, 0.78]],
+            0.75,
+        ),
         World::Varied | World::Temperate => return [zenith, horizon],
     };
-    let horizon = mix(horizon, tint, lo + (hi - lo) * v);
-    // The top's tint follows a draw of its own (the draw's other end).
-    let w = (v * 7.0).fract();
-    [mix(zenith, top, most * w * (1.0 - night)), horizon]
+    let day = 1.0 - night;
+    let horizon = mix(horizon, tint, (lo + (hi - lo) * v) * day);
+    // The top's tint follows draws of its own (the draw's other digits).
+    let (w, which) = ((v * 7.0).fract(), (v * 13.0).fract());
+    let top = mix(tops[0], tops[1], which);
+    let day_sky = [mix(zenith, top, most * (0.3 + 0.7 * w) * day), horizon];
+    let dark = night_air(world, v);
+    [0, 1].map(|i| mix(day_sky[i], dark[i], night * NIGHT_AIR))
+}
+
+/// How far a full night turns the sky to its world's own ([`night_air`]):
+/// most of the way, the night's deep blue still under it.
+const NIGHT_AIR: f32 = 0.8;
+
+/// The night sky of `world`, top and horizon, with the mountain's draw of
+/// its air `v`: somewhere between the world's clearest, darkest night and
+/// its hazier, moonlit one (the desert's violet dusk, the glow of moonlit
+/// snow under winter's, the tropics' deep teal, autumn's warm haze, the
+/// mountains' near-black or their moonlit blue). Each stays dark: no
+/// night a black frame, none a bright one.
+fn night_air(world: World, v: f32) -> [Rgb; 2] {
+    let [dark, moonlit]: [[Rgb; 2]; 2] = match world {
+        World::Desert => [
+            [[0.025, 0.015, 0.070], [0.15, 0.08, 0.16]],
+            [[0.060, 0.040, 0.120], [0.26, 0.15, 0.24]],
+        ],
+        World::Winter => [
+            [[0.030, 0.045, 0.090], [0.16, 0.20, 0.26]],
+            [[0.070, 0.100, 0.170], [0.30, 0.35, 0.42]],
+        ],
+        World::Tropical => [
+            [[0.000, 0.030, 0.080], [0.02, 0.13, 0.18]],
+            [[0.010, 0.070, 0.140], [0.06, 0.24, 0.30]],
+        ],
+        World::Autumn => [
+            [[0.030, 0.025, 0.045], [0.15, 0.10, 0.08]],
+            [[0.060, 0.050, 0.080], [0.26, 0.19, 0.15]],
+        ],
+        World::Alpine => [
+            [[0.004, 0.008, 0.035], [0.04, 0.06, 0.13]],
+            [[0.030, 0.070, 0.180], [0.14, 0.22, 0.36]],
+        ],
+        World::Varied | World::Temperate => [
+            [[0.015, 0.030, 0.085], [0.08, 0.11, 0.20]],
+            [[0.015, 0.030, 0.085], [0.08, 0.11, 0.20]],
+        ],
+    };
+    let t = (v * 3.0).fract();
+    [0, 1].map(|i| mix(dark[i], moonlit[i], t))
 }
 
 /// A number from 0 to 1 drawn from the mountain's `identity` for its air
@@ -301,6 +423,67 @@ pub fn air_draw(identity: u64) -> f32 {
 /// day's light ([`light`]), apart from [`draw`] and [`air_draw`].
 pub fn light_draw(identity: u64) -> f32 {
     ((crate::terrain::splitmix::mix(identity ^ DRAW_KEY) >> 24) & 0xffff) as f32 / 65536.0
+}
+
+/// Mixed into a mountain's identity for its day's sun ([`sun`]), so the
+/// hour is not another draw's again.
+const SUN_KEY: u64 = 0x7375_6e20_6f66_2064;
+
+/// The share of a world's varied days whose sun stands low (below
+/// [`LOW_SUN`]): the hours that colour a sky, commoner than an even draw
+/// over the day's heights would make them.
+const LOW_SHARE: f32 = 0.45;
+/// Degrees up below which a sun counts as low.
+const LOW_SUN: f32 = 10.0;
+
+/// How low and how high a varied day's sun stands in `world`, in degrees:
+/// the alpine and the winter worlds reach into the first minutes of
+/// twilight (the peaks' last light), winter's sun never stands high, the
+/// desert's and the tropics' noon stand highest. None for the temperate
+/// world (its four times are the slide show from before the worlds).
+fn sun_heights(world: World) -> Option<(f32, f32)> {
+    match world {
+        World::Alpine => Some((-3.0, 50.0)),
+        World::Winter => Some((-2.0, 18.0)),
+        World::Autumn => Some((1.0, 35.0)),
+        World::Desert => Some((1.0, 65.0)),
+        World::Tropical => Some((2.0, 70.0)),
+        World::Varied | World::Temperate => None,
+    }
+}
+
+/// Where the sun of a varied day over the mountain `identity` stands in
+/// `world`: any height in the world's range ([`sun_heights`]), morning or
+/// afternoon, from the viewer's side, and half the low suns ahead (the
+/// land against a glowing sky), so two slides of one world are seldom lit
+/// by one hour (the temperate world's four times light many alike). None
+/// for the temperate world.
+pub fn sun(world: World, identity: u64) -> Option<SunAt> {
+    let (lo, hi) = sun_heights(world)?;
+    let draw = crate::terrain::splitmix::mix(identity ^ SUN_KEY);
+    let unit = |shift: u32| ((draw >> shift) & 0xffff) as f32 / 65535.0;
+    let (pick, height, side) = (unit(0), unit(16), unit(32));
+    let low = LOW_SUN.min(hi);
+    let elevation = match pick < LOW_SHARE {
+        true => lo + (low - lo) * height,
+        false => low + (hi - low) * height,
+    };
+    let afternoon = (draw >> 63) == 1;
+    let ahead = elevation < LOW_SUN && (draw >> 62) & 1 == 1;
+    // Degrees round from the viewer's left: ahead within the view's
+    // width, else from the side, anywhere round to over the viewer's
+    // shoulder (the land lit full face), never from behind the range (a
+    // low sun there leaves the near land in one shadow).
+    let azimuth = match (ahead, afternoon) {
+        (true, _) => 75.0 + 30.0 * side,
+        (false, false) => 35.0 - 95.0 * side,
+        (false, true) => 145.0 + 95.0 * side,
+    };
+    Some(SunAt {
+        elevation,
+        azimuth,
+        afternoon,
+    })
 }
 
 /// The day's light in `world`, from the time of day's `light`: winter's
@@ -345,6 +528,63 @@ fn bands(u: f32, n: f32) -> f32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The worlds other than the temperate, each drawn per mountain.
+    const DRAWN: [World; 5] = [
+        World::Alpine,
+        World::Winter,
+        World::Autumn,
+        World::Desert,
+        World::Tropical,
+    ];
+
+    /// A varied day's sun stands within its world's heights, over most of
+    /// them, and shines from the side, over the viewer's shoulder or,
+    /// low, from ahead: never from high behind the range.
+    #[test]
+    fn a_worlds_sun_stands_within_its_heights_and_never_behind_the_range() {
+        for world in DRAWN {
+            let (lo, hi) = sun_heights(world).expect("a world's heights");
+            let suns: Vec<SunAt> = (0..2000).filter_map(|i| sun(world, i)).collect();
+            assert_eq!(suns.len(), 2000, "{world:?}");
+            let (least, most) = suns.iter().fold((f32::MAX, f32::MIN), |(a, b), s| {
+                (a.min(s.elevation), b.max(s.elevation))
+            });
+            assert!(least >= lo && most <= hi, "{world:?}: {least}..{most}");
+            assert!(
+                most - least >= 0.9 * (hi - lo),
+                "{world:?}: {least}..{most}"
+            );
+            let low = suns.iter().filter(|s| s.elevation < LOW_SUN).count();
+            assert!(low * 3 >= suns.len(), "{world:?}: {low} low suns");
+            for s in &suns {
+                let behind = (35.5..144.5).contains(&s.azimuth);
+                let ahead = (75.0..=105.0).contains(&s.azimuth) && s.elevation < LOW_SUN;
+                assert!(!behind || ahead, "{world:?}: {s:?}");
+            }
+        }
+        assert_eq!(sun(World::Temperate, 1), None);
+    }
+
+    /// Every world's night sky is dark but not black, top and horizon,
+    /// at either end of its draw; the horizon lighter than the top.
+    #[test]
+    fn a_worlds_night_sky_is_dark_but_never_black() {
+        let luma = |c: Rgb| 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+        for world in DRAWN {
+            for v in [0.0, 0.33, 0.66, 0.99] {
+                let night = [
+                    super::super::light::NIGHT.zenith,
+                    super::super::light::NIGHT.horizon,
+                ];
+                let [top, horizon] = air(world, night, v, 1.0);
+                let (t, h) = (luma(top), luma(horizon));
+                assert!((0.005..0.12).contains(&t), "{world:?} {v}: top {t}");
+                assert!((0.04..0.36).contains(&h), "{world:?} {v}: horizon {h}");
+                assert!(h > t, "{world:?} {v}");
+            }
+        }
+    }
 
     /// A slope keeps its facing whichever side the land is seen from. One
     /// quarter turn draws the original's point (n-1-y, x) at (x, y)

@@ -152,7 +152,15 @@ impl Palette {
         // The colour filters and the seed programs' looks keep the
         // pictures a varied draw gave them before there were nights.
         let nights = settings.color == ColorMode::Natural && settings.look == Look::Ours;
-        let light = Lighting::drawn(sun, field, nights);
+        let mut light = Lighting::drawn(sun, field, nights);
+        // A world's varied day is lit by an hour of its own drawing.
+        if let (Sun::Varied, true, Some(at)) = (
+            sun,
+            light.night == 0.0,
+            cover::sun(settings.world, field.identity()),
+        ) {
+            light = Lighting::at_hour(at);
+        }
         cover::light(settings.world, light, cover::light_draw(field.identity()))
     }
 
