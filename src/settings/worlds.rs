@@ -30,6 +30,16 @@ const DRAWN: &[(World, u64)] = &[
     (World::Tropical, 2),
 ];
 
+/// The worlds other than the temperate (today's picture): each draws its
+/// own terrain, cover, water, sky and light per mountain.
+pub const OWN_LOOKS: [World; 5] = [
+    World::Alpine,
+    World::Winter,
+    World::Autumn,
+    World::Desert,
+    World::Tropical,
+];
+
 /// Mixed into a mountain's identity for its world, so the world is not
 /// the time of day's draw again.
 const WORLD_KEY: u64 = 0x776f_726c_6420_6b79;

@@ -337,13 +337,7 @@ mod tests {
     /// them; the temperate world keeps today's vista.
     #[test]
     fn each_world_aims_within_its_ranges() {
-        for world in [
-            World::Alpine,
-            World::Winter,
-            World::Autumn,
-            World::Desert,
-            World::Tropical,
-        ] {
+        for world in crate::settings::worlds::OWN_LOOKS {
             let (skyline, cropped) = aims(world).expect("a world's ranges");
             let drawn: Vec<Aim> = (0..500).map(|i| Aim::of(world, i)).collect();
             for (range, get) in [

@@ -284,13 +284,7 @@ mod tests {
     /// its least and most; the temperate world's is the plain draw's.
     #[test]
     fn each_world_draws_its_own_sky() {
-        for world in [
-            World::Alpine,
-            World::Winter,
-            World::Autumn,
-            World::Desert,
-            World::Tropical,
-        ] {
+        for world in crate::settings::worlds::OWN_LOOKS {
             let (clear, least, most) = skies(world).expect("a world's sky");
             let amounts: Vec<f32> = (0..3000u64)
                 .map(|d| amount_in(Clouds::Varied, world, splitmix::mix(d)))

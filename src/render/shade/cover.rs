@@ -529,14 +529,7 @@ fn bands(u: f32, n: f32) -> f32 {
 mod tests {
     use super::*;
 
-    /// The worlds other than the temperate, each drawn per mountain.
-    const DRAWN: [World; 5] = [
-        World::Alpine,
-        World::Winter,
-        World::Autumn,
-        World::Desert,
-        World::Tropical,
-    ];
+    use crate::settings::worlds::OWN_LOOKS as DRAWN;
 
     /// A varied day's sun stands within its world's heights, over most of
     /// them, and shines from the side, over the viewer's shoulder or,
