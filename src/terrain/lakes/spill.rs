@@ -12,17 +12,20 @@
 //! the pit only falls; see [`super`] for why this is the lowest height it
 //! must rise to), and every lake is a set of such points joined together.
 //!
-//! Each pass reads the field in place order, so the memory it touches is
-//! in the cache: the basins in one pass (a walk down from each point not
-//! yet in one), the lips in one more; the levels then come from the few
-//! lips, lowest first, without the points (Kruskal's joining of the
-//! basins, until each joins the outlets).
+//! Each pass reads the field in order, so the memory it touches is in the
+//! cache: the basins in a few (each point's way down is followed a pass at
+//! a time, with and against place order, a way at least halving in each:
+//! no pass waits on a walk down), the lips in one more, counting each
+//! basin's points as it goes; the levels then come from the few lips,
+//! lowest first, without the points (Kruskal's joining of the basins,
+//! until each joins the outlets), and the lakes are filled a row's run at
+//! a time, only from basins with room for one.
 
 use std::sync::atomic::AtomicU32;
 use std::sync::atomic::Ordering::Relaxed;
 
 use super::bits::Bits;
-use super::grid::{Grid, land};
+use super::grid::land;
 
 /// Most points of a field whose lakes are found here: a 4097 grid's memory
 /// has room for the rising water's bits (see [`super::rise`]) but not for
@@ -31,8 +34,6 @@ pub(super) const MOST_POINTS: usize = 1 << 23;
 
 /// The basin of the outlets: the border and the sea.
 const OUTLET: u32 = 0;
-/// A point not yet in a basin.
-const UNSET: u32 = u32::MAX;
 
 /// Calls `found(level, points)` for each lake of `heights` (`n` a side) of
 /// at least `least` points.
@@ -43,18 +44,17 @@ pub(super) fn lakes(
     found: &mut impl FnMut(f32, &mut [u32]),
 ) {
     let (basin, pits) = basins(heights, n);
-    let lips = lips(heights, n, &basin);
+    let (lips, sizes) = lips(heights, n, &basin, pits.len() + 1);
     drop(basin);
-    let levels = levels(lips, pits.len() + 1);
-    let grid = Grid::new(n);
+    let levels = levels(lips, &sizes);
     let mut seen = Bits::new(heights.len());
     let mut lake = Vec::new();
-    for (&pit, &level) in pits.iter().zip(&levels[1..]) {
+    for (&pit, &(level, room)) in pits.iter().zip(&levels[1..]) {
         let pit = pit as usize;
-        if level <= heights[pit] || seen.get(pit) {
+        if room < least || level <= heights[pit] || seen.get(pit) {
             continue;
         }
-        fill(heights, grid, pit, level, &mut seen, &mut lake);
+        fill(heights, n, pit, level, &mut seen, &mut lake);
         if lake.len() >= least {
             found(level, &mut lake);
         }
@@ -63,20 +63,21 @@ pub(super) fn lakes(
 
 /// Every point's basin (the outlets' is [`OUTLET`], pit `k`'s `k + 1`),
 /// and the pits, in place order (as their basins are numbered). The two
-/// halves of the rows at once, each row by row: the rows above are in
-/// their basins by then, so a point whose water goes up a row takes its
-/// basin from there at once, and the others are walked down to a point in
-/// one. A walk may cross into the other half: both halves then write the
-/// same basins there.
+/// halves of the rows at once, each settling its points' ways (see
+/// [`settle`]); a way may lead into the other half, whose points then
+/// hold a point further down it or their basin: either leads on to the
+/// same basin, whenever it is read.
 fn basins(heights: &[f32], n: usize) -> (Vec<u32>, Vec<u32>) {
-    let (steps, pits) = first_steps(heights, n);
-    let mut basin = vec![UNSET; heights.len()];
+    let (mut basin, pits) = first_steps(heights, n);
     for (k, &pit) in pits.iter().enumerate() {
         basin[pit as usize] = k as u32 + 1;
     }
     let shared = shared(&mut basin);
-    let walk = |rows| walk_rows(shared, &steps, n, rows);
-    crate::threads::both(|| walk(0..n / 2), || walk(n / 2..n));
+    let half = n / 2 * n;
+    crate::threads::both(
+        || settle(shared, 0..half),
+        || settle(shared, half..shared.len()),
+    );
     (basin, pits)
 }
 
@@ -87,76 +88,105 @@ fn shared(basin: &mut [u32]) -> &[AtomicU32] {
     unsafe { &*(std::ptr::from_mut(basin) as *const [AtomicU32]) }
 }
 
-/// Puts every point of rows `rows` in its basin (see [`basins`]).
-fn walk_rows(basin: &[AtomicU32], steps: &[u8], n: usize, rows: std::ops::Range<usize>) {
-    let n = n as isize;
-    let offsets = [-n - 1, -n, -n + 1, -1, 1, n - 1, n, n + 1];
-    // Where a point's basin is first looked for: the neighbour its water
-    // goes to where that was put in its basin before it (up a row, or to
-    // the left), else itself (a pit is in its own already).
-    let earlier = [-n - 1, -n, -n + 1, -1, 0, 0, 0, 0, 0, 0];
+/// Marks a value of `basin` as the place of a point further down the
+/// water's way (in the other bits), its basin not yet known.
+const ON_THE_WAY: u32 = 1 << 31;
+
+/// Follows the ways of points `range` until each holds its basin. Each
+/// pass replaces a point's way by what the point it leads to holds: that
+/// point's basin, or a point further down. The passes go against place
+/// order and in it in turn (the first in place order is taken in
+/// [`first_steps`]), so a way that runs with the pass is followed to
+/// its end at once; and any way at least halves in a pass.
+fn settle(basin: &[AtomicU32], range: std::ops::Range<usize>) {
     let get = |i: usize| basin[i].load(Relaxed);
-    let mut path = Vec::new();
-    for start in rows.start * n as usize..rows.end * n as usize {
-        let step = steps[start];
-        let b = get(start.wrapping_add_signed(earlier[step as usize]));
-        let mut b = if step == OUT { OUTLET } else { b };
-        if b == UNSET {
-            let mut at = start;
-            b = loop {
-                let b = get(at);
-                if b != UNSET {
-                    break b;
-                }
-                path.push(at as u32);
-                match steps[at] {
-                    OUT => break OUTLET,
-                    d => at = at.wrapping_add_signed(offsets[d as usize]),
-                }
-            };
-            for &p in &path {
-                basin[p as usize].store(b, Relaxed);
+    let mut forward = false;
+    loop {
+        let mut left = false;
+        let mut pass = |i: usize| {
+            let v = get(i);
+            if v & ON_THE_WAY != 0 {
+                let w = get((v & !ON_THE_WAY) as usize);
+                basin[i].store(w, Relaxed);
+                left |= w & ON_THE_WAY != 0;
             }
-            path.clear();
+        };
+        if forward {
+            range.clone().for_each(&mut pass);
+        } else {
+            range.clone().rev().for_each(&mut pass);
         }
-        basin[start].store(b, Relaxed);
+        if !left {
+            return;
+        }
+        forward = !forward;
     }
 }
 
-/// The first step of a point's water: out of the field.
-const OUT: u8 = 8;
-/// The first step of a point's water: nowhere (it is a pit).
-const PIT: u8 = 9;
-
-/// Per point, where its water goes first: to its lowest lower neighbour
-/// (its place 0-7 in [`Grid::around`]'s order; the first of equals), [`OUT`]
-/// (on the border, in the sea, or beside the sea or a point without data)
-/// or [`PIT`] (no neighbour lower); and the pits, in place order. The two
-/// halves of the rows at once.
-fn first_steps(heights: &[f32], n: usize) -> (Vec<u8>, Vec<u32>) {
-    let mut steps = vec![OUT; heights.len()];
-    let (top, bottom) = steps.split_at_mut(n / 2 * n);
-    let rows = |out: &mut [u8], first: usize| {
+/// Per point, where its water goes first: [`ON_THE_WAY`] to its lowest
+/// lower neighbour (the first of equals in [`Grid::around`]'s order), to
+/// itself if it has none (a pit), or straight into the outlets' basin
+/// [`OUTLET`] (on the border, in the sea, or beside the sea or a point
+/// without data); and the pits, in place order. The two halves of the
+/// rows at once. Each row once the next is known is taken one pass of
+/// [`settle`] further while it is in the cache: the passes then start
+/// against place order.
+fn first_steps(heights: &[f32], n: usize) -> (Vec<u32>, Vec<u32>) {
+    let mut ways = vec![OUTLET; heights.len()];
+    let (top, bottom) = ways.split_at_mut(n / 2 * n);
+    let rows = |out: &mut [u32], first: usize| {
         let mut pits = Vec::new();
-        for (r, row_out) in out.chunks_mut(n).enumerate() {
+        for r in 0..out.len() / n {
             let y = first + r;
             if y > 0 && y + 1 < n {
                 let at = |y: usize| &heights[y * n..(y + 1) * n];
-                steps_of_row([at(y - 1), at(y), at(y + 1)], row_out);
-                let pit = |(x, &step)| (step == PIT).then_some((y * n + x) as u32);
-                pits.extend(row_out.iter().enumerate().filter_map(pit));
+                let row_out = &mut out[r * n..(r + 1) * n];
+                ways_of_row([at(y - 1), at(y), at(y + 1)], row_out, y * n);
+                pits_of_row(row_out, y * n, &mut pits);
+            }
+            if r >= 2 {
+                follow_row(out, first * n, (r - 1) * n..r * n);
             }
         }
         pits
     };
     let (mut pits, theirs) = crate::threads::both(|| rows(top, 0), || rows(bottom, n / 2));
     pits.extend(theirs);
-    (steps, pits)
+    (ways, pits)
 }
 
-/// [`first_steps`] of the points of `row` off the border, branch-free
-/// (the compiler keeps it in vector registers).
-fn steps_of_row([above, row, below]: [&[f32]; 3], out: &mut [u8]) {
+/// Adds to `pits` the points of `ways` (a row from point `first` on)
+/// whose way leads to themselves. Eight at a time first: pits are few.
+fn pits_of_row(ways: &[u32], first: usize, pits: &mut Vec<u32>) {
+    for (k, eight) in ways.chunks(8).enumerate() {
+        let me = |x: usize| ON_THE_WAY | (first + k * 8 + x) as u32;
+        let any = eight
+            .iter()
+            .enumerate()
+            .fold(false, |a, (x, &w)| a | (w == me(x)));
+        if any {
+            let pit = |(x, &w)| (w == me(x)).then_some(me(x) & !ON_THE_WAY);
+            pits.extend(eight.iter().enumerate().filter_map(pit));
+        }
+    }
+}
+
+/// One pass of [`settle`] in place order over points `row` of `ways`, the
+/// part of the field from point `first` on, whose rows beside `row` are
+/// known.
+fn follow_row(ways: &mut [u32], first: usize, row: std::ops::Range<usize>) {
+    for i in row {
+        let v = ways[i];
+        if v & ON_THE_WAY != 0 {
+            ways[i] = ways[(v & !ON_THE_WAY) as usize - first];
+        }
+    }
+}
+
+/// [`first_steps`] of the points of `row` off the border, the row's first
+/// point being point `first` of the field; branch-free (the compiler keeps
+/// it in vector registers).
+fn ways_of_row([above, row, below]: [&[f32]; 3], out: &mut [u32], first: usize) {
     let n = row.len();
     let around = [
         &above[..n - 2],
@@ -168,17 +198,20 @@ fn steps_of_row([above, row, below]: [&[f32]; 3], out: &mut [u8]) {
         &below[1..n - 1],
         &below[2..],
     ];
+    let w = n as i32;
+    let offsets = [-w - 1, -w, -w + 1, -1, 1, w - 1, w, w + 1];
     for x in 0..n - 2 {
         let h = row[x + 1];
-        let (mut low, mut step, mut out_of) = (h, i32::from(PIT), !land(h));
-        for (d, side) in around.iter().enumerate() {
+        let (mut low, mut to, mut out_of) = (h, 0, !land(h));
+        for (side, offset) in around.iter().zip(offsets) {
             let hk = side[x];
             out_of |= !land(hk);
             let lower = hk < low;
             low = if lower { hk } else { low };
-            step = if lower { d as i32 } else { step };
+            to = if lower { offset } else { to };
         }
-        out[x + 1] = if out_of { OUT } else { step as u8 };
+        let way = ON_THE_WAY | ((first + x + 1) as u32).wrapping_add_signed(to);
+        out[x + 1] = if out_of { OUTLET } else { way };
     }
 }
 
@@ -188,33 +221,48 @@ type Lip = (u32, u32, u32);
 
 /// The lips between the basins: for each pair of basins that touch, at
 /// least their lowest (a few more where the pairs alternate; the extra
-/// ones are higher and change no level), in two lists, each lowest first.
-/// The two halves of the rows at once.
-fn lips(heights: &[f32], n: usize, basin: &[u32]) -> [Vec<Lip>; 2] {
+/// ones are higher and change no level), in two lists, each lowest first;
+/// and the number of points in each of the `count` basins. The two halves
+/// of the rows at once.
+fn lips(heights: &[f32], n: usize, basin: &[u32], count: usize) -> ([Vec<Lip>; 2], Vec<u32>) {
     let half = |rows| {
-        let mut lips = lips_in(heights, n, basin, rows);
+        let (mut lips, sizes) = lips_in(heights, n, basin, rows, count);
         lips.sort_unstable_by_key(|l| l.0);
-        lips
+        (lips, sizes)
     };
-    let (top, bottom) = crate::threads::both(|| half(0..n / 2), || half(n / 2..n - 1));
-    [top, bottom]
+    let ((top, mut sizes), (bottom, theirs)) =
+        crate::threads::both(|| half(0..n / 2), || half(n / 2..n - 1));
+    for (size, their) in sizes.iter_mut().zip(theirs) {
+        *size += their;
+    }
+    ([top, bottom], sizes)
 }
 
 /// [`lips`] between the points of rows `rows` and their neighbours to the
-/// right and below, unsorted. Each row's points are compared with those
-/// neighbours branch-free first, and only the few on a basin's edge are
-/// looked at again.
-fn lips_in(heights: &[f32], n: usize, basin: &[u32], rows: std::ops::Range<usize>) -> Vec<Lip> {
+/// right and below, unsorted, and the rows' points in each basin. Each
+/// row's points are compared with those neighbours branch-free first, and
+/// only the few on a basin's edge are looked at again; where a basin's run
+/// along the row ends, its points are counted.
+fn lips_in(
+    heights: &[f32],
+    n: usize,
+    basin: &[u32],
+    rows: std::ops::Range<usize>,
+    count: usize,
+) -> (Vec<Lip>, Vec<u32>) {
     let mut lips = Lips::new();
+    let mut sizes = vec![0; count];
     let mut edges = vec![0u8; n];
     let offsets = [1, n - 1, n, n + 1];
     for y in rows {
         let at = |y: usize| &basin[y * n..(y + 1) * n];
         edges_of_row(at(y), at(y + 1), &mut edges);
+        let mut run = y * n;
         for (x0, chunk) in edges.chunks(8).enumerate() {
             let mut word = [0u8; 8];
             word[..chunk.len()].copy_from_slice(chunk);
-            let mut bits = u64::from_le_bytes(word);
+            let word = u64::from_le_bytes(word);
+            let mut bits = word;
             while bits != 0 {
                 let bit = bits.trailing_zeros() as usize;
                 let i = y * n + x0 * 8 + bit / 8;
@@ -222,9 +270,19 @@ fn lips_in(heights: &[f32], n: usize, basin: &[u32], rows: std::ops::Range<usize
                 lips.add(basin[i], basin[j], heights[i].max(heights[j]));
                 bits &= bits - 1;
             }
+            // The runs' ends: bit 0 of each byte (the basin to the right
+            // is another).
+            let mut ends = word & 0x0101_0101_0101_0101;
+            while ends != 0 {
+                let end = y * n + x0 * 8 + ends.trailing_zeros() as usize / 8 + 1;
+                sizes[basin[run] as usize] += (end - run) as u32;
+                run = end;
+                ends &= ends - 1;
+            }
         }
+        sizes[basin[run] as usize] += ((y + 1) * n - run) as u32;
     }
-    lips.all()
+    (lips.all(), sizes)
 }
 
 /// Per point of row `row` (not the last), bit `d` set where its basin is
@@ -297,13 +355,16 @@ impl Lips {
     }
 }
 
-/// Each of `count` basins' level: the height at which its water first
-/// reaches the outlets' basin ([`OUTLET`], whose own level is -inf),
-/// joining the basins over their lips, lowest first, until every basin
-/// has.
-fn levels([top, bottom]: [Vec<Lip>; 2], count: usize) -> Vec<f32> {
-    let mut levels = vec![f32::NAN; count];
-    levels[OUTLET as usize] = f32::NEG_INFINITY;
+/// Each basin's level: the height at which its water first reaches the
+/// outlets' basin ([`OUTLET`], whose own level is -inf), joining the
+/// basins over their lips, lowest first, until every basin has; and the
+/// room its lake has: the points of the basins joined to it then (`sizes`
+/// gives each basin's). Its lake lies in them, so one with less room than
+/// the least lake need not be looked for.
+fn levels([top, bottom]: [Vec<Lip>; 2], sizes: &[u32]) -> Vec<(f32, usize)> {
+    let count = sizes.len();
+    let mut levels = vec![(f32::NAN, 0); count];
+    levels[OUTLET as usize].0 = f32::NEG_INFINITY;
     let mut left = count - 1;
     let mut sets = Sets::new(count);
     for (bits, a, b) in lowest_first(top, bottom) {
@@ -316,8 +377,11 @@ fn levels([top, bottom]: [Vec<Lip>; 2], count: usize) -> Vec<f32> {
         }
         let out = sets.find(OUTLET);
         if ra == out || rb == out {
-            for m in sets.members(if ra == out { rb } else { ra }) {
-                levels[m as usize] = f32::from_bits(bits);
+            let joined = if ra == out { rb } else { ra };
+            let room = sets.members(joined).map(|m| sizes[m as usize] as usize);
+            let room = room.sum();
+            for m in sets.members(joined) {
+                levels[m as usize] = (f32::from_bits(bits), room);
                 left -= 1;
             }
         }
@@ -384,21 +448,44 @@ impl Sets {
     }
 }
 
-/// Lists in `lake` the points joined to `pit` below `level`, and marks
-/// them in `seen`.
-fn fill(heights: &[f32], grid: Grid, pit: usize, level: f32, seen: &mut Bits, lake: &mut Vec<u32>) {
-    lake.clear();
-    seen.set(pit);
-    lake.push(pit as u32);
-    let mut at = 0;
-    while let Some(&p) = lake.get(at) {
-        at += 1;
-        let (around, count) = grid.neighbours(p as usize);
-        for &k in &around[..count] {
-            if !seen.get(k) && heights[k] < level {
-                seen.set(k);
-                lake.push(k as u32);
+/// Lists in `lake` the points joined to `pit` below `level`, in place
+/// order, and marks them in `seen`. A run of a row at a time: the whole
+/// run of such points a point lies in, then the runs beside it in the rows
+/// above and below, from one point left of it to one right of it (lakes
+/// join across a cell's diagonals, as the triangles drawn over the cells
+/// do); a row is read in order, where a point at a time would read its
+/// eight neighbours.
+fn fill(heights: &[f32], n: usize, pit: usize, level: f32, seen: &mut Bits, lake: &mut Vec<u32>) {
+    let wet = |seen: &Bits, i: usize| !seen.get(i) && heights[i] < level;
+    let mut runs = Vec::new();
+    let mut todo = vec![pit];
+    while let Some(p) = todo.pop() {
+        if !wet(seen, p) {
+            continue;
+        }
+        let (y, row) = (p / n, p / n * n);
+        let (mut start, mut end) = (p, p + 1);
+        while start > row && wet(seen, start - 1) {
+            start -= 1;
+        }
+        while end < row + n && wet(seen, end) {
+            end += 1;
+        }
+        (start..end).for_each(|i| seen.set(i));
+        runs.push(start as u32..end as u32);
+        let beside = (start - row).saturating_sub(1)..(end - row + 1).min(n);
+        for side in [y.wrapping_sub(1), y + 1].into_iter().filter(|&s| s < n) {
+            let mut was_wet = false;
+            for i in beside.clone().map(|x| side * n + x) {
+                let is_wet = wet(seen, i);
+                if is_wet && !was_wet {
+                    todo.push(i);
+                }
+                was_wet = is_wet;
             }
         }
     }
+    runs.sort_unstable_by_key(|r| r.start);
+    lake.clear();
+    lake.extend(runs.into_iter().flatten());
 }
