@@ -7,7 +7,7 @@ use crate::render::base::canvas::Canvas;
 use crate::render::base::colour::blend_packed;
 use crate::render::base::colour::mix_packed;
 use crate::render::base::fixed::{Fixed2, SUBPIXEL};
-use crate::render::scan::banded::Banded;
+use crate::render::scan::banded::{Banded, Fill};
 use crate::render::scan::blend::Blend;
 use crate::render::scan::outline::{Crossing, Whole};
 use crate::render::scan::raster::{Triangle, centre_box};
@@ -386,9 +386,8 @@ impl Scene<'_> {
         match self.rock(&c) {
             Some(strata) => {
                 let make = || banded(strata, &c);
-                paint_spans(canvas, v, make, |canvas, b, y, x0, x1| {
-                    let row = b.row(y);
-                    canvas.fill_with(y, x0, x1, |x| b.at(&row, x));
+                paint_spans(canvas, v, make, |canvas, f, y, x0, x1| {
+                    f.fill(canvas, y, x0, x1)
                 });
             }
             None => self.paint_blend(canvas, v, colours),
@@ -421,7 +420,10 @@ impl Scene<'_> {
     /// colour.
     fn land_side(&self, c: &Face, normal: Vec3, lit: f32) -> Side<'_> {
         if let Some(strata) = self.rock(c).filter(|_| self.smooth()) {
-            Side::Rock(banded(strata, c))
+            match banded(strata, c) {
+                Fill::Banded(b) => Side::Rock(b),
+                Fill::Plain(b) => Side::Plane(b),
+            }
         } else if self.smooth() {
             Side::Plane(Blend::new(c.map(|k| k.p), c.map(|k| k.colour)))
         } else {
@@ -766,16 +768,20 @@ fn faces_away(p: [Fixed2; 3]) -> bool {
     d(1, 0) * d(2, 1) - d(1, 1) * d(2, 0) < 0.0
 }
 
-/// The land face `c` blended, with `strata` across it (smooth shading on
-/// steep rock).
+/// The land face `c` blended, with `strata` across it where they show
+/// (smooth shading on steep rock): bands under half a level of colour at
+/// their strongest are left out, as on far faces most of the rock's are.
 #[inline]
-fn banded<'s>(strata: &'s RockStrata, c: &Face) -> Banded<Sampler<'s>> {
-    Banded::new(
+fn banded<'s>(strata: &'s RockStrata, c: &Face) -> Fill<Sampler<'s>> {
+    Banded::or_plain(
         c.map(|k| k.p),
         c.map(|k| k.colour),
         c.map(|k| strata.bed_height(k.h, k.g)),
         c.map(|k| k.rock),
-        |per_pixel| strata.sampler(per_pixel),
+        |per_pixel, strongest| {
+            let sampler = strata.sampler(per_pixel);
+            (strongest * sampler.peak * 255.0 >= 0.5).then_some(sampler)
+        },
     )
 }
 

@@ -23,6 +23,7 @@ use std::f32::consts::TAU;
 
 use glam::Vec2;
 
+use super::index;
 use crate::render::base::colour::{lanes, smoothstep};
 use crate::terrain::Strata;
 use crate::terrain::splitmix;
@@ -83,6 +84,8 @@ pub(crate) struct RockStrata {
     /// Level `l` holds the tone (-1..=1, about 0 on average) of heights
     /// `i * step * 2^l`, each entry the mean of two of the level below.
     levels: Vec<Box<[f32]>>,
+    /// Each level's largest tone either way.
+    peaks: Vec<f32>,
     /// Height between entries of level 0.
     step: f32,
     /// How the beds rise per grid step across and towards the back (0
@@ -97,12 +100,11 @@ pub(crate) struct RockStrata {
 /// [`RockStrata`] read at one level of detail (between two levels): the
 /// tone of one face's pixels.
 pub(crate) struct Sampler<'s> {
-    fine: &'s [f32],
-    coarse: &'s [f32],
-    /// Entries per height unit in `fine` (`coarse` has half as many).
+    table: &'s [f32],
+    /// Entries per height unit.
     scale: f32,
-    /// How much of `coarse` (0..=1).
-    blend: f32,
+    /// The largest tone in the table, either way.
+    pub(crate) peak: f32,
 }
 
 impl RockStrata {
@@ -148,8 +150,13 @@ impl RockStrata {
             let k = turn(TAU * draw(3 + i)) * FOLD_WAVES[i as usize];
             (k * TAU / size.max(2) as f32, TAU * draw(5 + i))
         });
+        let peaks = levels
+            .iter()
+            .map(|l| l.iter().fold(0.0f32, |m, t| m.max(t.abs())))
+            .collect();
         RockStrata {
             levels,
+            peaks,
             step,
             dip,
             fold,
@@ -170,39 +177,30 @@ impl RockStrata {
     }
 
     /// The tone of a face over which one pixel spans `per_pixel` height
-    /// units: the level whose entries are about that thick.
+    /// units: the level whose entries are nearest that thick (one level a
+    /// face: a pixel reads one table, the cost that matters here).
     #[inline]
     pub(crate) fn sampler(&self, per_pixel: f32) -> Sampler<'_> {
-        let lod = (per_pixel / self.step).max(1.0).log2();
-        let last = self.levels.len() - 1;
-        let at = (lod.floor() as usize).min(last);
-        let blend = if at == last { 0.0 } else { lod - at as f32 };
+        let lod = (per_pixel / self.step).max(1.0).log2() + 0.5;
+        let at = index(lod).min(self.levels.len() - 1);
         Sampler {
-            fine: &self.levels[at],
-            coarse: &self.levels[(at + 1).min(last)],
+            table: &self.levels[at],
             scale: 1.0 / (self.step * (1u32 << at.min(31)) as f32),
-            blend,
+            peak: self.peaks[at],
         }
     }
 }
 
 impl Sampler<'_> {
     /// The tone (-1..=1) at height `h`, blended between entries.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn tone(&self, h: f32) -> f32 {
-        let at = |table: &[f32], u: f32| {
-            let u = (u - 0.5).max(0.0);
-            let i = (u as usize).min(table.len() - 1);
-            let j = (i + 1).min(table.len() - 1);
-            let f = (u - i as f32).min(1.0);
-            table[i] + (table[j] - table[i]) * f
-        };
-        let u = h * self.scale;
-        let fine = at(self.fine, u);
-        if self.blend == 0.0 {
-            return fine;
-        }
-        fine + (at(self.coarse, u * 0.5) - fine) * self.blend
+        let last = self.table.len() - 1;
+        let u = (h * self.scale - 0.5).max(0.0);
+        let i = index(u).min(last);
+        let f = (u - i as f32).min(1.0);
+        let (a, b) = (self.table[i], self.table[(i + 1).min(last)]);
+        a + (b - a) * f
     }
 }
 
