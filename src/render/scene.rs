@@ -24,6 +24,7 @@ use super::shade::shadow::{self, ShadowMap};
 use super::shade::sky::Sky;
 use super::shade::skylight::SkyLight;
 use super::shade::stars::Stars;
+use super::shade::strata::{self, RockStrata};
 use super::shade::weather::Weather;
 use crate::settings::{ColorMode, Look, Settings, Shading, ViewKind, worlds};
 use crate::terrain::Heightfield;
@@ -79,6 +80,9 @@ pub(crate) struct Vert {
     pub haze: u32,
     /// Under smooth shading, the land's colour at the point (hazed).
     pub colour: u32,
+    /// Under smooth shading, how strongly the rock's strata show at the
+    /// point (0..=1 of `strata::DEPTH`: steep rock, less through haze).
+    pub rock: f32,
     /// Whether `haze` is worked out (see [`Scene::shade`]).
     pub hazed: bool,
     /// Whether `lit` and `sky` are worked out (see [`Scene::shade`]).
@@ -149,6 +153,9 @@ pub(crate) struct Scene<'a> {
     normals: Option<Normals>,
     /// Whether land faces blend their points' colours (else one colour a face).
     smooth: bool,
+    /// Under smooth shading, the mountain's rock strata, drawn across its
+    /// steep faces.
+    pub(crate) strata: Option<RockStrata>,
     /// What the water mirrors: `None` without reflections (the key off,
     /// a look without ripples, a view without an eye).
     pub(crate) mirror: Option<Mirror>,
@@ -257,7 +264,14 @@ impl<'a> Scene<'a> {
             && settings.look == Look::Ours;
         let smooth = clean_edges && settings.shading == Shading::Smooth;
         let reflections = settings.reflections && ripples.is_some();
-        let normals = (smooth || reflections).then(|| Normals::new(size, &rows, view.cell()));
+        let steep_ref = palette.steep_reference();
+        let normals =
+            (smooth || reflections).then(|| Normals::new(size, &rows, view.cell(), steep_ref));
+        // The terraces' beds are level; others dip and fold.
+        let strata = smooth.then(|| {
+            let level = settings.cliffs > 0.0;
+            RockStrata::new(field.seed().unwrap_or(0), field.extent(), size, level)
+        });
         let eye = view.camera_ground().filter(|_| smooth);
         let cells = size - 1;
         // The weather is the ripples' kind of look: the shaded views with depth.
@@ -310,6 +324,7 @@ impl<'a> Scene<'a> {
             skylight,
             normals,
             smooth,
+            strata,
             mirror,
             eye,
             style,
@@ -452,7 +467,18 @@ impl<'a> Scene<'a> {
     #[inline(never)]
     fn colour_now(&self, v: &mut Vert, x: usize, y: usize) {
         let ground = v.h.max(v.w);
-        v.colour = self.hazed(self.land_at(x, y, ground, v.lit, v.sky), v.haze);
+        let Some(normals) = &self.normals else {
+            v.coloured = true;
+            return;
+        };
+        let n = normals.at(&self.field, x, y);
+        let (land, rock) = self.palette.land_and_rock_at_point(ground, n, v.lit, v.sky);
+        v.colour = self.hazed(land, v.haze);
+        if self.strata.is_some() && rock > 0.0 {
+            // The haze veils the bands as it does the rock.
+            let clear = 1.0 - v.haze.min(256) as f32 / 256.0;
+            v.rock = rock * strata::DEPTH * clear;
+        }
         v.coloured = true;
     }
 

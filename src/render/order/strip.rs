@@ -7,6 +7,7 @@ use crate::render::base::canvas::Canvas;
 use crate::render::base::colour::blend_packed;
 use crate::render::base::colour::mix_packed;
 use crate::render::base::fixed::{Fixed2, SUBPIXEL};
+use crate::render::scan::banded::{Banded, Fill};
 use crate::render::scan::blend::Blend;
 use crate::render::scan::outline::{Crossing, Whole};
 use crate::render::scan::raster::{Triangle, centre_box};
@@ -14,6 +15,7 @@ use crate::render::scan::shore::{ShoreLine, ShorePoint};
 use crate::render::scene::{Scene, Style, Vert};
 use crate::render::shade::dither;
 use crate::render::shade::mirror::{Mirror, Mirrored};
+use crate::render::shade::strata::{RockStrata, Sampler};
 
 /// White and black, the only two colours of Mono.
 const WHITE: u32 = 0x00ff_ffff;
@@ -39,6 +41,8 @@ pub(super) struct Corner {
     pub(super) haze: u32,
     /// Under smooth shading, the land's colour here.
     pub(super) colour: u32,
+    /// Under smooth shading, how strongly the rock's strata show here.
+    pub(super) rock: f32,
     /// Outside the land (see `Vert::off`).
     pub(super) off: bool,
     /// Whether `lit` and `sky` are worked out (see `Vert::lit_known`): a
@@ -57,6 +61,7 @@ impl Corner {
             sky: v.sky,
             haze: v.haze,
             colour: v.colour,
+            rock: v.rock,
             off: v.off,
             lit_known: v.lit_known,
         }
@@ -330,6 +335,7 @@ impl Scene<'_> {
             sky: a.sky + (b.sky - a.sky) * f,
             haze: (a.haze as f32 + (b.haze as f32 - a.haze as f32) * f) as u32,
             colour: mix_packed(a.colour, b.colour, f),
+            rock: a.rock + (b.rock - a.rock) * f,
             off: false,
             lit_known: a.lit_known && b.lit_known,
         }
@@ -376,7 +382,24 @@ impl Scene<'_> {
             return;
         }
         let colours = [c[0].colour, c[1].colour, c[2].colour];
-        self.paint_blend(canvas, [c[0].p, c[1].p, c[2].p], colours);
+        let v = [c[0].p, c[1].p, c[2].p];
+        match self.rock(&c) {
+            Some(strata) => {
+                let make = || banded(strata, &c);
+                paint_spans(canvas, v, make, |canvas, f, y, x0, x1| {
+                    f.fill(canvas, y, x0, x1)
+                });
+            }
+            None => self.paint_blend(canvas, v, colours),
+        }
+    }
+
+    /// The strata, if the land face `c` shows them (a corner on steep rock).
+    #[inline]
+    fn rock(&self, c: &Face) -> Option<&RockStrata> {
+        self.strata
+            .as_ref()
+            .filter(|_| c.iter().any(|k| k.rock > 0.0))
     }
 
     /// The one colour of a land face (flat shading).
@@ -395,8 +418,13 @@ impl Scene<'_> {
     /// to the shore line: its corners blended (smooth shading, where the
     /// land beside a water pixel is the shore line's own colour), or one
     /// colour.
-    fn land_side(&self, c: &Face, normal: Vec3, lit: f32) -> Side {
-        if self.smooth() {
+    fn land_side(&self, c: &Face, normal: Vec3, lit: f32) -> Side<'_> {
+        if let Some(strata) = self.rock(c).filter(|_| self.smooth()) {
+            match banded(strata, c) {
+                Fill::Banded(b) => Side::Rock(b),
+                Fill::Plain(b) => Side::Plane(b),
+            }
+        } else if self.smooth() {
             Side::Plane(Blend::new(c.map(|k| k.p), c.map(|k| k.colour)))
         } else {
             Side::One(self.land_colour(c, normal, lit))
@@ -668,23 +696,26 @@ impl MirroredFace {
 }
 
 /// How one side of a shore line is coloured at a pixel.
-enum Side {
+enum Side<'s> {
     /// One colour (water; land under flat shading).
     One(u32),
     /// The side's own corners blended (land under smooth shading); for a
     /// pixel across the line, the land's colour on the line itself.
     Plane(Blend),
+    /// As `Plane`, on steep rock: its strata across the blend.
+    Rock(Banded<Sampler<'s>>),
 }
 
-impl Side {
+impl Side<'_> {
     /// The colour at pixel (`x`, `y`), which lies on this side of `coast`
     /// or `across` it.
     #[inline]
     fn at(&self, x: u32, y: u32, coast: &ShoreLine, across: bool) -> u32 {
         match self {
             Side::One(c) => *c,
-            Side::Plane(_) if across => coast.land_at(x, y),
+            Side::Plane(_) | Side::Rock(_) if across => coast.land_at(x, y),
             Side::Plane(b) => b.at(&b.row(y), x),
+            Side::Rock(b) => b.at(&b.row(y), x),
         }
     }
 }
@@ -735,6 +766,23 @@ fn faces_away(p: [Fixed2; 3]) -> bool {
     // f64: the corners are not yet clamped, and only the sign matters.
     let d = |i: usize, k: usize| (p[i][k] - p[0][k]) as f64;
     d(1, 0) * d(2, 1) - d(1, 1) * d(2, 0) < 0.0
+}
+
+/// The land face `c` blended, with `strata` across it where they show
+/// (smooth shading on steep rock): bands under half a level of colour at
+/// their strongest are left out, as on far faces most of the rock's are.
+#[inline]
+fn banded<'s>(strata: &'s RockStrata, c: &Face) -> Fill<Sampler<'s>> {
+    Banded::or_plain(
+        c.map(|k| k.p),
+        c.map(|k| k.colour),
+        c.map(|k| strata.bed_height(k.h, k.g)),
+        c.map(|k| k.rock),
+        |per_pixel, strongest| {
+            let sampler = strata.sampler(per_pixel);
+            (strongest * sampler.peak * 255.0 >= 0.5).then_some(sampler)
+        },
+    )
 }
 
 /// Light on a face: the mean of its corners'.

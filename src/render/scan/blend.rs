@@ -35,7 +35,13 @@ impl Blend {
     /// Planes through packed `colours` at the corners `v` (24.8 fixed point).
     #[inline]
     pub(crate) fn new(v: [Fixed2; 3], colours: [u32; 3]) -> Self {
-        let gradient = Gradient::new(v);
+        Self::over(&Gradient::new(v), colours)
+    }
+
+    /// Planes through packed `colours` at the corners of the triangle of
+    /// `gradient`.
+    #[inline]
+    pub(crate) fn over(gradient: &Gradient, colours: [u32; 3]) -> Self {
         let [c0, c1, c2] = colours.map(lanes);
         let (dx, dy) = gradient.slopes(c1 - c0, c2 - c0);
         Blend {
@@ -58,9 +64,16 @@ impl Blend {
     /// The packed colour at the centre of pixel `x` of a row.
     #[inline(always)]
     pub(crate) fn at(&self, row: &RowStart, x: u32) -> u32 {
-        let ox = x as f32 + 0.5 - self.origin[0];
         // +0.5 rounds.
-        packed_lanes((*row + self.dx * ox).max(self.lo).min(self.hi) + 0.5)
+        packed_lanes(self.lanes_at(row, x) + 0.5)
+    }
+
+    /// The channels (0.0..=255.0, unrounded) at the centre of pixel `x`
+    /// of a row.
+    #[inline(always)]
+    pub(crate) fn lanes_at(&self, row: &RowStart, x: u32) -> Vec4 {
+        let ox = x as f32 + 0.5 - self.origin[0];
+        (*row + self.dx * ox).max(self.lo).min(self.hi)
     }
 }
 

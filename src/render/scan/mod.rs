@@ -2,6 +2,7 @@
 //! blended across a face, and the coast's coverage. It knows nothing of the
 //! scene: the painting order hands it fixed-point positions and colours.
 
+pub(super) mod banded;
 pub(super) mod blend;
 pub(super) mod gradient;
 pub(super) mod outline;

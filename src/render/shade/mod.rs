@@ -21,6 +21,7 @@ pub mod shadow;
 pub(super) mod sky;
 pub(super) mod skylight;
 pub(super) mod stars;
+pub(super) mod strata;
 pub(super) mod weather;
 
 /// `v` truncated to an index into a grid or a table: NaN and negatives

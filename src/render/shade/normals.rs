@@ -11,8 +11,16 @@
 //! span, the mean slope over what one face covers. A one-row difference
 //! there would light a drawn face by one crease of the fine grid and make
 //! far ridges sparkle.
+//!
+//! On steep rock the slope is also taken across the columns beside the
+//! point (`strata::weight`): a cliff is a cell or two tall and hundreds of
+//! pixels high, each column's light blended down all of it, and on a
+//! rough face the slope of one column alone differs from its neighbours'
+//! enough to draw curtains one column wide.
 
-use glam::Vec3;
+use glam::{Vec2, Vec3};
+
+use super::strata;
 
 use crate::render::framing::tops::finite;
 use crate::terrain::Heightfield;
@@ -23,25 +31,57 @@ pub(crate) struct Normals {
     reach: Vec<[u16; 2]>,
     /// Width of one cell in height units.
     cell: f32,
+    /// The palette's steepness reference (`1 - normal.z` at the field's
+    /// 90th percentile), which says where rock is steep.
+    steep_ref: f32,
 }
 
 impl Normals {
     /// Normals for a field of `size` points a side drawn with grid rows
-    /// `rows` (ascending, first and last included), cells `cell` units wide.
-    pub(crate) fn new(size: usize, rows: &[usize], cell: f32) -> Self {
+    /// `rows` (ascending, first and last included), cells `cell` units wide,
+    /// steep where `1 - normal.z` reaches about `steep_ref` (the palette's).
+    pub(crate) fn new(size: usize, rows: &[usize], cell: f32, steep_ref: f32) -> Self {
         let mut reach = vec![[1u16, 1u16]; size];
         for (i, &y) in rows.iter().enumerate() {
             let back = if i > 0 { y - rows[i - 1] } else { 1 };
             let front = rows.get(i + 1).map_or(1, |&next| next - y);
             reach[y] = [back.max(1) as u16, front.max(1) as u16];
         }
-        Normals { reach, cell }
+        Normals {
+            reach,
+            cell,
+            steep_ref,
+        }
     }
 
     /// Upward unit normal at grid point (`x`, `y`) in the palette's frame
     /// (z up, y towards the back).
     #[inline]
     pub(crate) fn at(&self, field: &Heightfield, x: usize, y: usize) -> Vec3 {
+        let own = self.slope(field, x, y);
+        let n = normal_of(own);
+        let rock = strata::weight((1.0 - n.z) / self.steep_ref);
+        if rock == 0.0 {
+            return n;
+        }
+        // The slopes of the two columns on each side too, 1:2:3:2:1 (its
+        // own again past the field's edges).
+        let last = field.size() - 1;
+        let beside = |d: usize| {
+            let at = |x: Option<usize>| {
+                x.filter(|&x| x <= last)
+                    .map_or(own, |x| self.slope(field, x, y))
+            };
+            at(x.checked_sub(d)) + at(Some(x + d))
+        };
+        let wide = (own * 3.0 + beside(1) * 2.0 + beside(2)) / 9.0;
+        normal_of(own + (wide - own) * rock)
+    }
+
+    /// The ground's rise per unit to the right and towards the back at
+    /// grid point (`x`, `y`), over the span of its drawn neighbours.
+    #[inline]
+    fn slope(&self, field: &Heightfield, x: usize, y: usize) -> Vec2 {
         let last = field.size() - 1;
         let h = |x: usize, y: usize| finite(field.get(x, y));
         let (xl, xr) = (x.saturating_sub(1), (x + 1).min(last));
@@ -51,8 +91,15 @@ impl Normals {
         let dx = (h(xr, y) - h(xl, y)) / ((xr - xl).max(1) as f32 * self.cell);
         // Grid rows run towards the viewer, the palette's y away from it.
         let dy = (h(x, yb) - h(x, yf)) / ((yf - yb).max(1) as f32 * self.cell);
-        Vec3::new(-dx, -dy, 1.0).normalize_or(Vec3::Z)
+        Vec2::new(dx, dy)
     }
+}
+
+/// The upward unit normal of ground rising `slope` (per unit to the right
+/// and towards the back).
+#[inline]
+fn normal_of(slope: Vec2) -> Vec3 {
+    Vec3::new(-slope.x, -slope.y, 1.0).normalize_or(Vec3::Z)
 }
 
 #[cfg(test)]
@@ -79,7 +126,7 @@ mod tests {
         let size = f.size();
         let sparse: Vec<usize> = (0..size).step_by(4).chain([size - 1]).collect();
         for rows in [(0..size).collect::<Vec<_>>(), sparse] {
-            let n = Normals::new(size, &rows, f.extent() / (size - 1) as f32);
+            let n = Normals::new(size, &rows, f.extent() / (size - 1) as f32, 1.0);
             for &y in &rows {
                 for x in [0, 3, size - 1] {
                     let got = n.at(&f, x, y);
@@ -101,8 +148,8 @@ mod tests {
             }
         }
         let size = f.size();
-        let fine = Normals::new(size, &(0..size).collect::<Vec<_>>(), 1.0);
-        let merged = Normals::new(size, &[0, 4, 8, 12, 16], 1.0);
+        let fine = Normals::new(size, &(0..size).collect::<Vec<_>>(), 1.0, 1.0);
+        let merged = Normals::new(size, &[0, 4, 8, 12, 16], 1.0, 1.0);
         let (nf, nm) = (fine.at(&f, 5, 8), merged.at(&f, 5, 8));
         assert!(
             (nf.y / nf.z + 2.0).abs() < 1e-4,
@@ -114,5 +161,41 @@ mod tests {
             "merged slope {}",
             nm.y / nm.z
         );
+    }
+
+    #[test]
+    fn a_steep_rough_face_takes_its_slope_across_its_neighbouring_columns() {
+        // A wall rising to the back, each column a little higher than the
+        // last or lower: across a column the slope flips from side to side.
+        let mut f = Heightfield::flat(4, 16.0);
+        let wobble = |x: usize| [0.0, 1.0, 0.0, -1.0][x % 4];
+        for y in 0..f.size() {
+            for x in 0..f.size() {
+                let wall = if y < 8 { 12.0 } else { 0.0 };
+                f.set(
+                    x,
+                    y,
+                    wall + wobble(x) * 0.5 * (y as f32 - 8.0).abs().min(1.0),
+                );
+            }
+        }
+        let size = f.size();
+        let rows: Vec<usize> = (0..size).collect();
+        let (own, smoothed) = (
+            Normals::new(size, &rows, 1.0, f32::INFINITY),
+            Normals::new(size, &rows, 1.0, 0.05),
+        );
+        let across = |n: &Normals| (4..12).map(|x| n.at(&f, x, 7).x.abs()).sum::<f32>();
+        assert!(
+            across(&smoothed) < across(&own) * 0.5,
+            "sideways lean: smoothed {}, own {}",
+            across(&smoothed),
+            across(&own)
+        );
+        // Gentle ground is not steep rock, and keeps its own slope.
+        let plane = plane(0.1, 0.05, 1.0);
+        let n = Normals::new(plane.size(), &rows, 1.0, 0.05);
+        let want = Vec3::new(-0.1, -0.05, 1.0).normalize();
+        assert!((n.at(&plane, 5, 5) - want).length() < 1e-4);
     }
 }

@@ -28,6 +28,7 @@ use super::index;
 use super::light::Lighting;
 use super::listing;
 use super::night;
+use super::strata;
 use crate::render::base::colour::{
     Rgb, mix, mix_packed, pack, ramp, scale_packed, scale_packed3, smoothstep, to_u32, unpack,
 };
@@ -299,11 +300,25 @@ impl Palette {
     /// random or stepped colour would draw streaks along the grid.
     #[inline]
     pub fn land_at_point(&self, height: f32, normal: Vec3, lit: f32, sky: f32) -> u32 {
+        self.land_and_rock_at_point(height, normal, lit, sky).0
+    }
+
+    /// [`Palette::land_at_point`]'s colour and how strongly the rock's
+    /// strata show there (0..=1): on steep ground whose colour is rock's,
+    /// not snow's or ice's (a pale base colour), in the looks of our own.
+    #[inline]
+    pub(crate) fn land_and_rock_at_point(
+        &self,
+        height: f32,
+        normal: Vec3,
+        lit: f32,
+        sky: f32,
+    ) -> (u32, f32) {
         if let Some(preference) = self.preference {
-            return facings::brush(preference, normal);
+            return (facings::brush(preference, normal), 0.0);
         }
         if self.essay {
-            return essay::colour(normal);
+            return (essay::colour(normal), 0.0);
         }
         let h = index((height * self.height_scale).clamp(0.0, (HEIGHT_BINS - 1) as f32));
         // Between the middles of the two nearest steepness classes.
@@ -316,7 +331,25 @@ impl Palette {
             self.base(s1 * HEIGHT_BINS + h, facing),
             s - s0 as f32,
         );
-        self.lit_base(base, normal, lit, sky)
+        let rock = strata::weight(self.steepness(normal));
+        let rock = if rock > 0.0 {
+            rock * strata::bare(base)
+        } else {
+            0.0
+        };
+        (self.lit_base(base, normal, lit, sky), rock)
+    }
+
+    /// How steep ground of unit normal `normal` is for the palette: 1 at
+    /// the field's 90th percentile of steepness (`steepness_reference`).
+    #[inline]
+    pub(crate) fn steepness(&self, normal: Vec3) -> f32 {
+        (1.0 - normal.z) * self.steep_scale / STEEP_BINS as f32
+    }
+
+    /// `1 - normal.z` at steepness 1 ([`Palette::steepness`]).
+    pub(crate) fn steep_reference(&self) -> f32 {
+        STEEP_BINS as f32 / self.steep_scale
     }
 
     /// How far a face of unit normal `normal` turns to the sunward side

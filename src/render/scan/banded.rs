@@ -1,0 +1,181 @@
+//! Colours blended across a screen triangle (as `blend`), each pixel made
+//! lighter or darker by a tone of the ground's height there: the rock's
+//! strata on a steep face, bands finer than the grid's cells that follow
+//! the contours across it.
+
+use glam::{Vec2, Vec4};
+
+use super::blend::{Blend, RowStart};
+use super::gradient::Gradient;
+use crate::render::base::canvas::Canvas;
+use crate::render::base::colour::packed_lanes;
+use crate::render::base::fixed::Fixed2;
+use crate::render::shade::strata::Sampler;
+
+/// What lightens or darkens each height: its tone, -1..=1.
+pub(crate) trait Tone {
+    /// The tone at height `h`.
+    fn tone(&self, h: f32) -> f32;
+}
+
+impl<F: Fn(f32) -> f32> Tone for F {
+    #[inline(always)]
+    fn tone(&self, h: f32) -> f32 {
+        self(h)
+    }
+}
+
+/// The rock's strata at one level of detail.
+impl Tone for Sampler<'_> {
+    #[inline(always)]
+    fn tone(&self, h: f32) -> f32 {
+        Sampler::tone(self, h)
+    }
+}
+
+/// A blended triangle with a plane of (height, band strength) beside its
+/// colours.
+pub(crate) struct Banded<T> {
+    blend: Blend,
+    /// Height and strength at the first corner, their change per pixel to
+    /// the right and per row down, and their least and greatest corner
+    /// values (a sliver's planes may overshoot its corners).
+    at0: Vec2,
+    dx: Vec2,
+    dy: Vec2,
+    lo: Vec2,
+    hi: Vec2,
+    origin: [f32; 2],
+    /// The tone (-1..=1) at a height.
+    tone: T,
+}
+
+/// A face blended plain, or with bands across it.
+pub(crate) enum Fill<T> {
+    Plain(Blend),
+    Banded(Banded<T>),
+}
+
+impl<T: Tone> Fill<T> {
+    /// Sets the pixels `x0..x1` of row `y`.
+    #[inline]
+    pub(crate) fn fill(&self, canvas: &mut Canvas, y: u32, x0: u32, x1: u32) {
+        match self {
+            Fill::Plain(b) => {
+                let row = b.row(y);
+                canvas.fill_with(y, x0, x1, |x| b.at(&row, x));
+            }
+            Fill::Banded(b) => {
+                let row = b.row(y);
+                canvas.fill_with(y, x0, x1, |x| b.at(&row, x));
+            }
+        }
+    }
+}
+
+/// One row's colour and (height, strength) where it crosses the first
+/// corner's column.
+pub(crate) type BandedRow = (RowStart, Vec2);
+
+impl<T: Tone> Banded<T> {
+    /// The triangle of corners `v` (24.8 fixed point), their packed
+    /// `colours`, ground `heights` and band `strengths` (0..=1: how much
+    /// of the tone shows), toned by `tone(per_pixel, strongest)`, given the
+    /// height one pixel spans (the larger of its steps across and down) and
+    /// the largest strength: `None` where the bands would not show (too
+    /// faint, or blurred away), and the face is blended plain.
+    #[inline]
+    pub(crate) fn or_plain(
+        v: [Fixed2; 3],
+        colours: [u32; 3],
+        heights: [f32; 3],
+        strengths: [f32; 3],
+        tone: impl FnOnce(f32, f32) -> Option<T>,
+    ) -> Fill<T> {
+        let gradient = Gradient::new(v);
+        let blend = Blend::over(&gradient, colours);
+        let q = [0, 1, 2].map(|i| Vec2::new(heights[i], strengths[i]));
+        let (dx, dy) = gradient.slopes(q[1] - q[0], q[2] - q[0]);
+        let per_pixel = dx.x.abs().max(dy.x.abs());
+        let hi = q[0].max(q[1]).max(q[2]);
+        let Some(tone) = tone(per_pixel, hi.y) else {
+            return Fill::Plain(blend);
+        };
+        Fill::Banded(Banded {
+            blend,
+            at0: q[0],
+            dx,
+            dy,
+            lo: q[0].min(q[1]).min(q[2]),
+            hi,
+            origin: gradient.origin,
+            tone,
+        })
+    }
+
+    /// Row `y`'s start, for [`Banded::at`].
+    #[inline]
+    pub(crate) fn row(&self, y: u32) -> BandedRow {
+        let oy = y as f32 + 0.5 - self.origin[1];
+        (self.blend.row(y), self.at0 + self.dy * oy)
+    }
+
+    /// The packed colour at the centre of pixel `x` of a row.
+    #[inline(always)]
+    pub(crate) fn at(&self, row: &BandedRow, x: u32) -> u32 {
+        let colour = self.blend.lanes_at(&row.0, x);
+        let ox = x as f32 + 0.5 - self.origin[0];
+        let q = (row.1 + self.dx * ox).max(self.lo).min(self.hi);
+        let gain = 1.0 + q.y * self.tone.tone(q.x);
+        // +0.5 rounds.
+        packed_lanes((colour * gain).min(Vec4::splat(255.0)) + 0.5)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::base::fixed::to_fixed;
+
+    #[test]
+    fn no_strength_is_the_plain_blend_and_full_strength_the_tone() {
+        let v = [to_fixed(0.5, 0.5), to_fixed(20.5, 0.5), to_fixed(0.5, 20.5)];
+        let colours = [0x404040, 0x606060, 0x505050];
+        let plain = Blend::new(v, colours);
+        let banded = |strength: f32, tone: fn(f32) -> f32| match Banded::or_plain(
+            v,
+            colours,
+            [0.0, 0.0, 20.0],
+            [strength; 3],
+            |_, _| Some(tone),
+        ) {
+            Fill::Banded(b) => b,
+            Fill::Plain(_) => panic!("plain"),
+        };
+        let none = banded(0.0, |_| 1.0);
+        let full = banded(0.5, |h| if h < 10.0 { 0.5 } else { -0.5 });
+        for y in 0..20 {
+            for x in 0..20 - y {
+                let c = plain.at(&plain.row(y), x);
+                assert_eq!(none.at(&none.row(y), x), c);
+                let g = (c & 0xff) as f32;
+                let want = if (y as f32 + 0.5) < 10.0 { 1.25 } else { 0.75 };
+                let got = (full.at(&full.row(y), x) & 0xff) as f32;
+                assert!((got - (g * want).round()).abs() <= 1.0, "({x}, {y}): {got}");
+            }
+        }
+    }
+
+    #[test]
+    fn the_tone_is_told_the_height_a_pixel_spans_and_the_strongest_band() {
+        let v = [to_fixed(0.0, 0.0), to_fixed(10.0, 0.0), to_fixed(0.0, 10.0)];
+        let mut told = (0.0, 0.0);
+        let fill = Banded::or_plain(v, [0; 3], [0.0, 5.0, 20.0], [0.5, 0.25, 0.0], |p, s| {
+            told = (p, s);
+            None::<fn(f32) -> f32>
+        });
+        assert!(matches!(fill, Fill::Plain(_)), "no tone: blended plain");
+        assert!((told.0 - 2.0).abs() < 1e-5, "{told:?}");
+        assert_eq!(told.1, 0.5);
+    }
+}
