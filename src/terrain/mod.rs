@@ -16,11 +16,13 @@ pub(crate) mod splitmix;
 mod square;
 mod subdivide;
 mod triangle;
+pub mod wetness;
 
 pub use cliffs::STEP_SHARE as CLIFF_STEP_SHARE;
 pub use cliffs::Strata;
 pub use heightfield::Heightfield;
 pub use lakes::Lakes;
+pub use wetness::Wetness;
 
 use params::Params;
 use subdivide::{Audited, Extremes, Job, Plain, Put};

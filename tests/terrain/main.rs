@@ -21,3 +21,4 @@ mod lakes;
 mod laws;
 mod reefs;
 mod structure;
+mod wetness;
