@@ -270,18 +270,31 @@ impl Ring {
         }
         let (dx, dy) = (p.0 - self.centre.0, p.1 - self.centre.1);
         let d = (dx * dx + dy * dy).sqrt();
+        // Off the ring, the waves round it need not be worked out: far
+        // outside it the ground is as it was, well inside it the lagoon's
+        // floor (the same heights as below, sooner).
+        if d > self.radius * (1.0 + WANDER) + FADE.1 * self.half_width {
+            return h;
+        }
+        if d < self.radius * (1.0 - WANDER) - self.half_width {
+            return h.max(self.lagoon_floor(p));
+        }
         let u = match d > 1e-6 {
             true => (dx / d, dy / d),
             false => (1.0, 0.0),
         };
-        let turns = Turns::of(u);
-        let wander = 0.6 * turns.along(2, self.phases[0]) + 0.4 * turns.along(3, self.phases[1]);
+        let few = Turns::of(u, 4);
+        let wander = 0.6 * few.along(2, self.phases[0]) + 0.4 * few.along(3, self.phases[1]);
         let s = (d - self.radius * (1.0 + WANDER * wander)) / self.half_width;
         if s > FADE.1 {
             return h;
         }
-        let crest = self.crest(&turns);
         let bell = 1.0 - smoothstep(0.15, 1.0, s.abs());
+        // The islets' waves only on the ring itself.
+        let crest = match bell > 0.0 {
+            true => self.crest(&Turns::of(u, 14)),
+            false => 0.0,
+        };
         if s <= 0.0 {
             let floor = self.lagoon_floor(p);
             return h.max(floor + (crest - floor) * bell);
@@ -316,9 +329,10 @@ impl Ring {
 struct Turns([(f32, f32); 14]);
 
 impl Turns {
-    fn of(u: (f32, f32)) -> Self {
+    /// The first `count` powers of `u` (the rest left at 1).
+    fn of(u: (f32, f32), count: usize) -> Self {
         let mut p = [(1.0, 0.0); 14];
-        for k in 1..14 {
+        for k in 1..count.min(14) {
             let (a, b) = p[k - 1];
             p[k] = (a * u.0 - b * u.1, a * u.1 + b * u.0);
         }
