@@ -122,7 +122,9 @@ fn watered(
     } else {
         1.0
     };
-    let soil = low * shore * (1.0 - smoothstep(0.55, 0.9, steep));
+    // Not the snow (nor the ice): nothing grows through it.
+    let white = smoothstep(0.6, 0.8, ground[0].min(ground[1]).min(ground[2]));
+    let soil = low * shore * (1.0 - smoothstep(0.55, 0.9, steep)) * (1.0 - white);
     let ground = mix(ground, lush, more * wet * soil);
     mix(ground, parched, less * (1.0 - wet) * soil)
 }
