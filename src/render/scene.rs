@@ -27,7 +27,7 @@ use super::shade::stars::Stars;
 use super::shade::strata::{self, RockStrata};
 use super::shade::weather::Weather;
 use crate::settings::{ColorMode, Look, Settings, Shading, ViewKind, worlds};
-use crate::terrain::Heightfield;
+use crate::terrain::{Heightfield, Wetness};
 use crate::threads::{both, both_if};
 
 /// How faces are put on screen.
@@ -76,6 +76,9 @@ pub(crate) struct Vert {
     pub lit: f32,
     /// Share of the sky the point sees (0 until `lit_known`).
     pub sky: f32,
+    /// Where water runs at the point (`terrain::Wetness`; set with `sky`,
+    /// where the palette follows it).
+    pub wet: f32,
     /// How far the air has faded the point towards the horizon colour, in 1/256ths.
     pub haze: u32,
     /// Under smooth shading, the land's colour at the point (hazed).
@@ -148,6 +151,8 @@ pub(crate) struct Scene<'a> {
     shadow: Option<ShadowMap>,
     /// How much of the sky each point sees, if the look has sky light.
     skylight: Option<SkyLight>,
+    /// Where water runs, if the world's cover follows it.
+    wetness: Option<Wetness>,
     /// Each point's normal, when land is shaded smoothly (each point lit,
     /// the light blended across faces) or the water mirrors it.
     normals: Option<Normals>,
@@ -248,6 +253,7 @@ impl<'a> Scene<'a> {
             },
         );
         let size = field.size();
+        let wetness = palette.follows_water().then(|| Wetness::of(&field));
         let sky = backdrop(&palette, &view, style, frame.height);
         // The seed programs' looks have no air.
         let haze = (style == Style::Shaded
@@ -322,6 +328,7 @@ impl<'a> Scene<'a> {
             ripples,
             shadow,
             skylight,
+            wetness,
             normals,
             smooth,
             strata,
@@ -460,7 +467,15 @@ impl<'a> Scene<'a> {
     #[inline(never)]
     fn light_now(&self, v: &mut Vert, x: usize, y: usize) {
         (v.lit, v.sky) = self.light_at(x, y);
+        v.wet = self.wet_at(x, y);
         v.lit_known = true;
+    }
+
+    /// Where water runs at grid point (`x`, `y`), where the palette
+    /// follows it.
+    #[inline]
+    fn wet_at(&self, x: usize, y: usize) -> f32 {
+        (self.wetness.as_ref()).map_or(crate::terrain::wetness::ORDINARY, |w| w.at(x, y))
     }
 
     /// [`Scene::shade`]'s colour, once the point's light is worked out.
@@ -472,7 +487,9 @@ impl<'a> Scene<'a> {
             return;
         };
         let n = normals.at(&self.field, x, y);
-        let (land, rock) = self.palette.land_and_rock_at_point(ground, n, v.lit, v.sky);
+        let (land, rock) = self
+            .palette
+            .land_and_rock_at_point(ground, n, v.lit, v.sky, v.wet);
         v.colour = self.hazed(land, v.haze);
         if self.strata.is_some() && rock > 0.0 {
             // The haze veils the bands as it does the rock.
@@ -498,13 +515,13 @@ impl<'a> Scene<'a> {
     }
 
     /// The land's colour at grid point (`x`, `y`) whose surface stands at
-    /// `ground`, lit `lit` and seeing `sky` of the sky, before haze (the
+    /// `ground`, lit `lit`, seeing `sky` of the sky and wet `wet`, before haze (the
     /// points of smooth shading; black where the scene has no normals).
     #[inline]
-    fn land_at(&self, x: usize, y: usize, ground: f32, lit: f32, sky: f32) -> u32 {
+    fn land_at(&self, x: usize, y: usize, ground: f32, lit: f32, sky: f32, wet: f32) -> u32 {
         self.normals.as_ref().map_or(0, |normals| {
             let n = normals.at(&self.field, x, y);
-            self.palette.land_at_point(ground, n, lit, sky)
+            self.palette.land_at_wet_point(ground, n, lit, sky, wet)
         })
     }
 
@@ -513,7 +530,7 @@ impl<'a> Scene<'a> {
     pub(crate) fn land_point(&self, x: usize, y: usize) -> u32 {
         let ground = finite(self.field.get(x, y)).max(0.0);
         let (lit, sky) = self.light_at(x, y);
-        self.land_at(x, y, ground, lit, sky)
+        self.land_at(x, y, ground, lit, sky, self.wet_at(x, y))
     }
 
     /// Whether land faces are shaded smoothly (each point's colour blended

@@ -307,3 +307,48 @@ fn autumn_colours_its_slopes_by_the_way_they_face() {
         }
     }
 }
+
+/// Each world's own cover follows the water: at the same height and on
+/// the same slope, the ground where water runs (a stream, wetness 1) is
+/// greener than on a dry ridge (0) over the lower land; the temperate
+/// world's ground is the same wet or dry (its picture from before).
+#[test]
+fn wet_ground_is_greener_than_dry_at_the_same_height_and_slope() {
+    use glam::Vec3;
+    use mountains::render::palette::Palette;
+    let greenness = |c: u32| {
+        let [r, g, b] = [16, 8, 0].map(|s| (c >> s & 0xff) as f32);
+        g - 0.5 * (r + b)
+    };
+    for world in [World::Alpine, World::Autumn, World::Desert, World::Tropical] {
+        for seed in [1, 2, 3] {
+            let s = worlds::drawn(&in_world(world), Some(seed));
+            let field = terrain::generate(&s, seed);
+            let palette = Palette::new(&s, &field);
+            let slope = Vec3::new(0.2, 0.1, 0.97).normalize();
+            let (mut greener, mut tried) = (0, 0);
+            for k in 2..=6 {
+                let h = field.max() * k as f32 / 30.0;
+                let [dry, wet] =
+                    [0.0, 1.0].map(|w| greenness(palette.land_at_wet_point(h, slope, 1.0, 1.0, w)));
+                tried += 1;
+                greener += usize::from(wet > dry + 4.0);
+            }
+            assert!(
+                greener * 5 >= tried * 4,
+                "{world:?} seed {seed}: wet greener at only {greener} of {tried} heights"
+            );
+        }
+    }
+    let s = in_world(World::Temperate);
+    let field = terrain::generate(&s, 1);
+    let palette = Palette::new(&s, &field);
+    for k in 1..=10 {
+        let h = field.max() * k as f32 / 10.0;
+        let n = Vec3::new(0.3, 0.1, 0.95).normalize();
+        assert_eq!(
+            palette.land_at_wet_point(h, n, 1.0, 1.0, 0.0),
+            palette.land_at_wet_point(h, n, 1.0, 1.0, 1.0)
+        );
+    }
+}

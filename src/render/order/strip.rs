@@ -38,6 +38,8 @@ pub(super) struct Corner {
     pub(super) p: Fixed2,
     pub(super) lit: f32,
     pub(super) sky: f32,
+    /// Where water runs here (see `Vert::wet`).
+    pub(super) wet: f32,
     pub(super) haze: u32,
     /// Under smooth shading, the land's colour here.
     pub(super) colour: u32,
@@ -59,6 +61,7 @@ impl Corner {
             p: v.p,
             lit: v.lit,
             sky: v.sky,
+            wet: v.wet,
             haze: v.haze,
             colour: v.colour,
             rock: v.rock,
@@ -333,6 +336,7 @@ impl Scene<'_> {
             p: self.project_water(g, level),
             lit: a.lit + (b.lit - a.lit) * f,
             sky: a.sky + (b.sky - a.sky) * f,
+            wet: a.wet + (b.wet - a.wet) * f,
             haze: (a.haze as f32 + (b.haze as f32 - a.haze as f32) * f) as u32,
             colour: mix_packed(a.colour, b.colour, f),
             rock: a.rock + (b.rock - a.rock) * f,
@@ -410,7 +414,8 @@ impl Scene<'_> {
         );
         let mean = (c[0].h + c[1].h + c[2].h) / 3.0;
         let sky = (c[0].sky + c[1].sky + c[2].sky) / 3.0;
-        let land = self.palette.land_in(mean.max(0.0), normal, lit, sky);
+        let wet = (c[0].wet + c[1].wet + c[2].wet) / 3.0;
+        let land = self.palette.land_in(mean.max(0.0), normal, lit, sky, wet);
         self.hazed_face(land, c)
     }
 

@@ -60,18 +60,84 @@ pub fn draw(identity: u64) -> f32 {
 }
 
 /// The ground's colour in `world` at height fraction `u` on a face of
-/// relative steepness `steep`; `beach` when the land meets a sea; `v` the
-/// mountain's draw ([`draw`]); `facing` from -1 (a face turned from the
+/// relative steepness `steep`, `facing` from -1 (a face turned from the
 /// mountain's sunward side, [`sunward`]) to 1 (turned to it), which only
-/// a world that [`faces`] tells apart.
-pub fn land(world: World, u: f32, steep: f32, beach: bool, v: f32, facing: f32) -> Rgb {
-    match world {
+/// a world that [`faces`] tells apart, where water runs `wet` (0 a dry
+/// ridge, 1 a stream: `terrain::Wetness`); `beach` when the land meets a
+/// sea; `v` the mountain's draw ([`draw`]).
+pub fn land(
+    world: World,
+    (u, steep, facing, wet): (f32, f32, f32, f32),
+    beach: bool,
+    v: f32,
+) -> Rgb {
+    let ground = match world {
         World::Alpine => alpine(u, steep, v),
         World::Winter => winter(u, steep, v),
         World::Autumn => autumn(u, steep, beach, v, facing),
         World::Desert => desert(u, steep, v),
         World::Tropical => tropical(u, steep, beach, v),
-        World::Varied | World::Temperate => ground::VALLEY,
+        World::Varied | World::Temperate => return ground::VALLEY,
+    };
+    watered(world, ground, (u, steep), beach, v, wet)
+}
+
+/// Whether `world`'s ground follows where water runs (every world's own
+/// cover; the temperate world keeps its picture).
+pub fn wets(world: World) -> bool {
+    !matches!(world, World::Temperate | World::Varied)
+}
+
+/// Greener where the ground drains much (`wet` near 1: the valley
+/// floors, the gullies), barer and drier where it drains only itself
+/// (`wet` 0: the ridges), each world in its own way: the alpine meadows
+/// lush along the streams and scree on the ridges, winter's forest
+/// thicker along its valleys, autumn's streams lined with alders still
+/// green and its ridges brown with heath, the desert green only along
+/// its wettest gullies and oases, the tropics' jungle deep in the gullies
+/// and grass on the ridges. Never the snow, the bare rock of the steepest
+/// faces or the beaches.
+fn watered(
+    world: World,
+    ground: Rgb,
+    (u, steep): (f32, f32),
+    beach: bool,
+    v: f32,
+    wet: f32,
+) -> Rgb {
+    use ground::*;
+    // The lush and the parched colours, how far towards each, and up to
+    // which height.
+    let (lush, parched, (more, less), top) = match world {
+        World::Alpine => (VALLEY, SCREE, (0.45, 0.3), 0.3 + 0.4 * v),
+        World::Winter => (DARK_CONIFER, ground, (0.35, 0.0), 0.35 + 0.35 * v),
+        World::Autumn => ([0.26, 0.38, 0.14], HEATH, (0.22, 0.08), 0.7),
+        World::Desert => ([0.30, 0.40, 0.16], ground, (0.75, 0.0), 0.35),
+        World::Tropical => (JUNGLE, DRY_GRASS, (0.4, 0.35), 0.8),
+        World::Varied | World::Temperate => return ground,
+    };
+    let low = 1.0 - smoothstep(top, top + 0.15, u);
+    let shore = if beach {
+        smoothstep(0.04, 0.09, u)
+    } else {
+        1.0
+    };
+    // Not the snow (nor the ice): nothing grows through it.
+    let white = smoothstep(0.6, 0.8, ground[0].min(ground[1]).min(ground[2]));
+    let soil = low * shore * (1.0 - smoothstep(0.55, 0.9, steep)) * (1.0 - white);
+    let ground = mix(ground, lush, more * wet * soil);
+    mix(ground, parched, less * (1.0 - wet) * soil)
+}
+
+/// How far along from the driest ground's colour to the streams' a point
+/// where water runs `wet` (`terrain::Wetness`) lies in `world`: as wet
+/// as it is, but in the desert only where the water gathers most (its
+/// oases and wettest gullies; the rest of it is dry alike).
+#[inline]
+pub fn streams(world: World, wet: f32) -> f32 {
+    match world {
+        World::Desert => smoothstep(0.55, 1.0, wet),
+        _ => wet,
     }
 }
 

@@ -34,6 +34,7 @@ use crate::render::base::colour::{
 };
 use crate::settings::{ColorMode, Look, Settings, Sun, World};
 use crate::terrain::Heightfield;
+use crate::terrain::wetness::ORDINARY;
 use glam::{Vec2, Vec3};
 
 /// Height classes in the land table, from sea level to the highest peak.
@@ -81,6 +82,11 @@ mod natural {
 /// that side (`cover::sunward`).
 type Sunward = (Box<[u32]>, Vec2);
 
+/// The land tables of the ground where water runs (`terrain::wetness`:
+/// its `land` and, where the world tells facings apart, its sunward
+/// table); the palette's own tables are then the driest ground's.
+type Wet = (Box<[u32]>, Option<Box<[u32]>>);
+
 /// Colours for one mountain under one set of settings.
 #[derive(Debug, Clone)]
 pub struct Palette {
@@ -94,6 +100,10 @@ pub struct Palette {
     /// (`cover::faces`): the table of the faces turned to the mountain's
     /// sunward side, and that side; `land` is then the faces turned from it.
     sunward: Option<Sunward>,
+    /// Where the world's ground follows the water (`cover::wets`): its
+    /// tables along the streams, `land` (and `sunward`) being the driest
+    /// ridges'.
+    wet: Option<Wet>,
     /// Height bins per height unit (heights below 0 clamp to bin 0).
     height_scale: f32,
     /// Steepness bins per unit of `1 - normal.z`.
@@ -178,7 +188,7 @@ impl Palette {
             ..zones
         };
         let steep_ref = steepness_reference(field);
-        let (land, sunward) = land_tables(mode, &zones, lighting.night, || {
+        let (land, sunward, wet) = land_tables(mode, &zones, lighting.night, || {
             cover::sunward(field.identity(), settings.quarter_turns())
         });
         let deepest = positive_or(-lowest, 1.0);
@@ -214,6 +224,7 @@ impl Palette {
             mode,
             land,
             sunward,
+            wet,
             height_scale: HEIGHT_BINS as f32 / top,
             steep_scale: STEEP_BINS as f32 / steep_ref,
             water,
@@ -262,13 +273,21 @@ impl Palette {
     /// otherwise faces away from the sun or in shadow get only the sky's light.
     #[inline]
     pub fn land(&self, mean_height: f32, normal: Vec3, lit: f32) -> u32 {
-        self.land_in(mean_height, normal, lit, 1.0)
+        self.land_in(mean_height, normal, lit, 1.0, ORDINARY)
+    }
+
+    /// Whether the ground's colour follows where water runs (`wet` of
+    /// [`Palette::land_in`]; a world's own cover, never the temperate's).
+    pub fn follows_water(&self) -> bool {
+        self.wet.is_some()
     }
 
     /// [`Palette::land`] for a face that sees `sky` (0..=1) of the sky: the
-    /// sky's light on it scales with that share (the classic light ignores it).
+    /// sky's light on it scales with that share (the classic light ignores
+    /// it); `wet` where water runs there (`terrain::Wetness`, 0 a dry
+    /// ridge, 1 a stream), which only a world's own cover follows.
     #[inline]
-    pub fn land_in(&self, mean_height: f32, normal: Vec3, lit: f32, sky: f32) -> u32 {
+    pub fn land_in(&self, mean_height: f32, normal: Vec3, lit: f32, sky: f32, wet: f32) -> u32 {
         if let Some(ramp) = &self.listing {
             let i = f64::from(luminance(self.lighting.on(normal, lit)));
             return match self.mode {
@@ -289,7 +308,7 @@ impl Palette {
                 .clamp(0.0, (HEIGHT_BINS - 1) as f32),
         );
         let s = index(((1.0 - normal.z) * self.steep_scale).clamp(0.0, (STEEP_BINS - 1) as f32));
-        let base = self.base(s * HEIGHT_BINS + h, self.facing(normal));
+        let base = self.base(s * HEIGHT_BINS + h, self.facing(normal), wet);
         self.lit_base(base, normal, lit, sky)
     }
 
@@ -300,10 +319,24 @@ impl Palette {
     /// random or stepped colour would draw streaks along the grid.
     #[inline]
     pub fn land_at_point(&self, height: f32, normal: Vec3, lit: f32, sky: f32) -> u32 {
-        self.land_and_rock_at_point(height, normal, lit, sky).0
+        self.land_at_wet_point(height, normal, lit, sky, ORDINARY)
     }
 
-    /// [`Palette::land_at_point`]'s colour and how strongly the rock's
+    /// [`Palette::land_at_point`] where water runs `wet` (as
+    /// [`Palette::land_in`]'s).
+    #[inline]
+    pub fn land_at_wet_point(
+        &self,
+        height: f32,
+        normal: Vec3,
+        lit: f32,
+        sky: f32,
+        wet: f32,
+    ) -> u32 {
+        self.land_and_rock_at_point(height, normal, lit, sky, wet).0
+    }
+
+    /// [`Palette::land_at_wet_point`]'s colour and how strongly the rock's
     /// strata show there (0..=1): on steep ground whose colour is rock's,
     /// not snow's or ice's (a pale base colour), in the looks of our own.
     #[inline]
@@ -313,6 +346,7 @@ impl Palette {
         normal: Vec3,
         lit: f32,
         sky: f32,
+        wet: f32,
     ) -> (u32, f32) {
         if let Some(preference) = self.preference {
             return (facings::brush(preference, normal), 0.0);
@@ -327,8 +361,8 @@ impl Palette {
         let s1 = (s0 + 1).min(STEEP_BINS - 1);
         let facing = self.facing(normal);
         let base = mix_packed(
-            self.base(s0 * HEIGHT_BINS + h, facing),
-            self.base(s1 * HEIGHT_BINS + h, facing),
+            self.base(s0 * HEIGHT_BINS + h, facing, wet),
+            self.base(s1 * HEIGHT_BINS + h, facing, wet),
             s - s0 as f32,
         );
         let rock = strata::weight(self.steepness(normal));
@@ -362,13 +396,22 @@ impl Palette {
     }
 
     /// The base colour of the land table's bin `i` on a face turned
-    /// `facing` ([`Palette::facing`]) to the sunward side.
+    /// `facing` ([`Palette::facing`]) to the sunward side, where water
+    /// runs `wet`.
     #[inline]
-    fn base(&self, i: usize, facing: f32) -> u32 {
-        match &self.sunward {
+    fn base(&self, i: usize, facing: f32, wet: f32) -> u32 {
+        let dry = match &self.sunward {
             None => self.land[i],
             Some((toward, _)) => mix_packed(self.land[i], toward[i], facing),
-        }
+        };
+        let Some((wet_land, wet_toward)) = &self.wet else {
+            return dry;
+        };
+        let streams = match wet_toward {
+            None => wet_land[i],
+            Some(toward) => mix_packed(wet_land[i], toward[i], facing),
+        };
+        mix_packed(dry, streams, cover::streams(self.world, wet))
     }
 
     /// A land base colour under this light.
@@ -585,11 +628,12 @@ impl Zones {
 
     /// The natural colour at height fraction `u` (0 sea, 1 highest peak) on
     /// a face of relative steepness `steep` (0 flat, 1 the field's steep
-    /// faces) turned `facing` (`cover::land`'s) to the sunward side.
-    fn colour(&self, u: f32, steep: f32, facing: f32) -> Rgb {
+    /// faces) turned `facing` (`cover::land`'s) to the sunward side, where
+    /// water runs `wet` (which the temperate world's cover ignores).
+    fn colour(&self, u: f32, steep: f32, facing: f32, wet: f32) -> Rgb {
         use natural::*;
         if !matches!(self.world, World::Temperate | World::Varied) {
-            return cover::land(self.world, u, steep, self.beach, self.draw, facing);
+            return cover::land(self.world, (u, steep, facing, wet), self.beach, self.draw);
         }
         let low = u / self.treeline;
         let lowland = if self.beach {
@@ -621,31 +665,44 @@ impl Zones {
 /// The land's tables in `mode` for `zones` under a night of `night` (0
 /// day, 1 full night): the faces turned from the sunward side, or every
 /// face where the world does not tell facings apart; and where it does,
-/// the faces turned to it, with that side (`sunward()`).
+/// the faces turned to it, with that side (`sunward()`); where the
+/// world's cover follows the water, those two along the streams (the
+/// first two being then the driest ridges').
 fn land_tables(
     mode: ColorMode,
     zones: &Zones,
     night: f32,
     sunward: impl FnOnce() -> Vec2,
-) -> (Box<[u32]>, Option<Sunward>) {
+) -> (Box<[u32]>, Option<Sunward>, Option<Wet>) {
     let lit = |table| match mode {
         ColorMode::Natural => night::land(table, night),
         _ => table,
     };
-    let away = lit(land_table(mode, zones, -1.0));
-    let toward = cover::faces(zones.world).then(|| (lit(land_table(mode, zones, 1.0)), sunward()));
-    (away, toward)
+    let faces = cover::faces(zones.world);
+    let wets = cover::wets(zones.world) && mode == ColorMode::Natural;
+    let dry = if wets { 0.0 } else { ORDINARY };
+    let away = lit(land_table(mode, zones, -1.0, dry));
+    let toward = faces.then(|| (lit(land_table(mode, zones, 1.0, dry)), sunward()));
+    let wet = wets.then(|| {
+        let toward = faces.then(|| lit(land_table(mode, zones, 1.0, 1.0)));
+        (lit(land_table(mode, zones, -1.0, 1.0)), toward)
+    });
+    (away, toward, wet)
 }
 
 /// The filtered base colour of every (steepness, height) bin, for faces
-/// turned `facing` to the sunward side.
-fn land_table(mode: ColorMode, zones: &Zones, facing: f32) -> Box<[u32]> {
+/// turned `facing` to the sunward side where water runs `wet`.
+fn land_table(mode: ColorMode, zones: &Zones, facing: f32, wet: f32) -> Box<[u32]> {
     let mut table = Vec::with_capacity(STEEP_BINS * HEIGHT_BINS);
     for s in 0..STEEP_BINS {
         let steep = (s as f32 + 0.5) / STEEP_BINS as f32;
         for h in 0..HEIGHT_BINS {
             let u = (h as f32 + 0.5) / HEIGHT_BINS as f32;
-            table.push(pack(finish(mode, zones.colour(u, steep, facing)), 1.0, 0.0));
+            table.push(pack(
+                finish(mode, zones.colour(u, steep, facing, wet)),
+                1.0,
+                0.0,
+            ));
         }
     }
     table.into_boxed_slice()
