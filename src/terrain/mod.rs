@@ -11,7 +11,6 @@ pub mod lakes;
 pub(crate) mod noise;
 mod normalize;
 mod params;
-pub mod reef;
 pub(crate) mod splitmix;
 mod square;
 mod subdivide;
@@ -109,16 +108,8 @@ fn fill(field: &mut Heightfield, params: &Params, seed: u64, threads: usize) {
     let extremes = subdivide_all(field, params, seed, threads, &Plain);
     let extremes = weather(field, params, seed, threads, extremes);
     finish(field, params, threads, extremes);
-    lay_reef(field, params, threads);
     cliffs::terrace(field, params.cliffs, threads);
     find_lakes(field, params);
-}
-
-/// The tropical world's reef, if its mountain has one (`reef.rs`).
-fn lay_reef(field: &mut Heightfield, p: &Params, threads: usize) {
-    if p.world == crate::settings::World::Tropical {
-        reef::lay(field, threads);
-    }
 }
 
 /// The lakes of the finished field, if asked for (`lakes = true`).
@@ -172,7 +163,6 @@ pub fn generate_audited(settings: &Settings, seed: u64, threads: usize) -> Audit
     let unset = field.heights().iter().filter(|h| h.is_nan()).count();
     let extremes = weather(&mut field, &params, seed, threads, extremes);
     finish(&mut field, &params, threads, extremes);
-    lay_reef(&mut field, &params, threads);
     cliffs::terrace(&mut field, params.cliffs, threads);
     find_lakes(&mut field, &params);
     Audit {

@@ -7,7 +7,7 @@ use super::{SQUARE_EXTENT, TRIANGLE_EXTENT};
 use crate::settings::handles::{
     CLIFFS, CONTOUR, CRAGGINESS, ELEVATION, EROSION, HEIGHT, HURST, ROUGHNESS, SEA_LEVEL,
 };
-use crate::settings::{Generator, Look, Profile, Settings, WaterLine, World};
+use crate::settings::{Generator, Look, Profile, Settings, WaterLine};
 
 /// Validated generator parameters.
 #[derive(Debug, Clone, Copy)]
@@ -37,9 +37,6 @@ pub(crate) struct Params {
     /// centre's (the square generators), where it is not the same: the
     /// essay's `side_roughness = 0.15` against `center_roughness = 0.2`.
     pub(crate) edge_share: Option<f32>,
-    /// The world the mountain is made in (never "varied": the one drawn):
-    /// the tropical world's reefs are laid on its land (`reef.rs`).
-    pub(crate) world: World,
 }
 
 /// The essay's edge midpoints' roughness against its centres'.
@@ -71,7 +68,6 @@ impl Params {
             },
             still_edges: s.look == Look::Essay,
             edge_share: (s.look == Look::Essay).then_some(ESSAY_EDGE_SHARE),
-            world: s.world,
         }
     }
 

@@ -80,9 +80,7 @@ fn night_is_part_of_the_varied_draw_in_our_look_only() {
 #[test]
 fn a_night_frame_is_dark_not_black_and_its_land_stands_out_from_its_sky() {
     let (w, h) = (480, 270);
-    // Seed 2 became a tropical island ringed by a barrier reef (worlds-5):
-    // one island in the sea, its skyline too short to measure here.
-    for seed in [1u64, 5, 3, 4] {
+    for seed in [1u64, 2, 3, 4] {
         let s = night(w, h, 0.3);
         let field = terrain::generate(&s, seed);
         let (frame, classes) = drawn(&field, &s, w, h);

@@ -19,6 +19,5 @@ mod heightmap_save;
 mod heightmap_views;
 mod lakes;
 mod laws;
-mod reefs;
 mod structure;
 mod wetness;

@@ -23,7 +23,7 @@
 //! its back edge higher or lower in the frame and a share of the land's
 //! depth below the bottom instead of the near edge, which raises the
 //! camera and pitches it down (the alpine world's looks down into its
-//! valleys, the tropical world's onto its reefs' lagoons).
+//! valleys).
 //!
 //! The width fixes the focal length for a given pitch and camera height;
 //! the two vertical conditions then fix the pitch and the height, found by
@@ -104,7 +104,7 @@ impl Aim {
     /// its lakes lie: the back edge high in the frame and the near half of
     /// the land below it. The temperate world keeps today's vista.
     pub fn of(world: World, identity: u64) -> Aim {
-        let Some((skyline, cropped)) = aims(world, reefed(world, identity)) else {
+        let Some((skyline, cropped)) = aims(world) else {
             return Aim::ACROSS;
         };
         let draw = crate::terrain::splitmix::mix(identity ^ AIM_KEY);
@@ -122,11 +122,8 @@ impl Aim {
 /// frame (least, most); each wide, so the slides of one world are framed
 /// from looking across the land with much sky to looking down with
 /// little. None for the temperate world ([`Aim::ACROSS`]).
-fn aims(world: World, reefed: bool) -> Option<((f32, f32), (f32, f32))> {
+fn aims(world: World) -> Option<((f32, f32), (f32, f32))> {
     match world {
-        // Higher over a reef, looking down on its lagoon: from low over
-        // the sea a lagoon is a line.
-        World::Tropical if reefed => Some(((0.2, 0.34), (0.1, 0.35))),
         World::Temperate | World::Varied => None,
         World::Alpine => Some(((0.16, 0.34), (0.35, 0.65))),
         World::Winter => Some(((0.22, 0.5), (0.0, 0.5))),
@@ -137,13 +134,6 @@ fn aims(world: World, reefed: bool) -> Option<((f32, f32), (f32, f32))> {
         // no longer glitters.
         World::Tropical => Some(((0.34, 0.55), (0.0, 0.0))),
     }
-}
-
-/// Whether the mountain `identity` in `world` has a reef round a lagoon
-/// (the tropical world's, `terrain::reef`).
-fn reefed(world: World, identity: u64) -> bool {
-    use crate::terrain::reef::{self, Reef};
-    world == World::Tropical && reef::of(identity) != Reef::None
 }
 
 /// Mixed into a mountain's identity for its vista's aim, so the aim is
@@ -347,14 +337,9 @@ mod tests {
     /// them; the temperate world keeps today's vista.
     #[test]
     fn each_world_aims_within_its_ranges() {
-        for (world, reefed) in crate::settings::worlds::OWN_LOOKS
-            .into_iter()
-            .map(|w| (w, false))
-            .chain([(World::Tropical, true)])
-        {
-            let (skyline, cropped) = aims(world, reefed).expect("a world's ranges");
-            let ids = (0..1000).filter(|&i| super::reefed(world, i) == reefed);
-            let drawn: Vec<Aim> = ids.take(500).map(|i| Aim::of(world, i)).collect();
+        for world in crate::settings::worlds::OWN_LOOKS {
+            let (skyline, cropped) = aims(world).expect("a world's ranges");
+            let drawn: Vec<Aim> = (0..500).map(|i| Aim::of(world, i)).collect();
             for (range, get) in [
                 (skyline, (|a: &Aim| a.skyline) as fn(&Aim) -> f32),
                 (cropped, |a: &Aim| a.cropped),
