@@ -16,6 +16,7 @@
 use super::Heightfield;
 use super::SHARED_EXPONENT;
 use super::coast::smoothstep;
+use super::heightfield::NEIGHBOURS;
 
 /// The wetness of most of a mountain's slopes: neither a ridge (0) nor a
 /// stream (1). What the cover is drawn with where no map is at hand.
@@ -81,18 +82,6 @@ impl Wetness {
         top + (bottom - top) * ty
     }
 }
-
-/// The eight neighbours of a lattice point.
-const NEIGHBOURS: [(isize, isize); 8] = [
-    (-1, -1),
-    (0, -1),
-    (1, -1),
-    (-1, 0),
-    (1, 0),
-    (-1, 1),
-    (0, 1),
-    (1, 1),
-];
 
 /// The lattice points each point of `heights` (`side` a side) drains,
 /// itself included: each point's own rain and all that reached it, shared

@@ -1,6 +1,8 @@
 //! A point's neighbours on the square grid the lakes are found on, and
 //! which points are land.
 
+use crate::terrain::heightfield::NEIGHBOURS;
+
 /// Whether height `h` is land: above sea level (NaN, no data, is not).
 /// Water leaves the field wherever it reaches a point that is not.
 #[inline]
@@ -63,16 +65,7 @@ impl Grid {
         }
         let mut out = [0; 8];
         let mut count = 0;
-        for (dx, dy) in [
-            (-1, -1),
-            (0, -1),
-            (1, -1),
-            (-1, 0),
-            (1, 0),
-            (-1, 1),
-            (0, 1),
-            (1, 1),
-        ] {
+        for (dx, dy) in NEIGHBOURS {
             let (nx, ny) = (x as isize + dx, y as isize + dy);
             if nx >= 0 && ny >= 0 && (nx as usize) < n && (ny as usize) < n {
                 out[count] = ny as usize * n + nx as usize;
