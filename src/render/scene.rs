@@ -482,14 +482,7 @@ impl<'a> Scene<'a> {
     #[inline(never)]
     fn colour_now(&self, v: &mut Vert, x: usize, y: usize) {
         let ground = v.h.max(v.w);
-        let Some(normals) = &self.normals else {
-            v.coloured = true;
-            return;
-        };
-        let n = normals.at(&self.field, x, y);
-        let (land, rock) = self
-            .palette
-            .land_and_rock_at_point(ground, n, v.lit, v.sky, v.wet);
+        let (land, rock) = self.land_at(x, y, ground, v.lit, v.sky, v.wet);
         v.colour = self.hazed(land, v.haze);
         if self.strata.is_some() && rock > 0.0 {
             // The haze veils the bands as it does the rock.
@@ -515,13 +508,15 @@ impl<'a> Scene<'a> {
     }
 
     /// The land's colour at grid point (`x`, `y`) whose surface stands at
-    /// `ground`, lit `lit`, seeing `sky` of the sky and wet `wet`, before haze (the
-    /// points of smooth shading; black where the scene has no normals).
+    /// `ground`, lit `lit`, seeing `sky` of the sky and wet `wet`, before
+    /// haze, and how strongly its rock's strata show (the points of smooth
+    /// shading; black and no strata where the scene has no normals).
     #[inline]
-    fn land_at(&self, x: usize, y: usize, ground: f32, lit: f32, sky: f32, wet: f32) -> u32 {
-        self.normals.as_ref().map_or(0, |normals| {
+    fn land_at(&self, x: usize, y: usize, ground: f32, lit: f32, sky: f32, wet: f32) -> (u32, f32) {
+        self.normals.as_ref().map_or((0, 0.0), |normals| {
             let n = normals.at(&self.field, x, y);
-            self.palette.land_at_wet_point(ground, n, lit, sky, wet)
+            self.palette
+                .land_and_rock_at_point(ground, n, lit, sky, wet)
         })
     }
 
@@ -530,7 +525,7 @@ impl<'a> Scene<'a> {
     pub(crate) fn land_point(&self, x: usize, y: usize) -> u32 {
         let ground = finite(self.field.get(x, y)).max(0.0);
         let (lit, sky) = self.light_at(x, y);
-        self.land_at(x, y, ground, lit, sky, self.wet_at(x, y))
+        self.land_at(x, y, ground, lit, sky, self.wet_at(x, y)).0
     }
 
     /// Whether land faces are shaded smoothly (each point's colour blended
