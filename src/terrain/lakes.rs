@@ -11,27 +11,32 @@
 //! does not read as water).
 //!
 //! They are found from the basins and the lips between them ([`spill`]):
-//! a few passes over the field in place order, on both cores, and a
-//! joining of the basins over their lips, lowest first. A field too large
-//! for a basin number a point (over [`spill::MOST_POINTS`]: a 4097 grid)
-//! is flooded from its pits instead ([`rise`]), with two bits a point; the
-//! two ways find the same lakes.
+//! a few passes over each band of rows while it is in the cache
+//! ([`band`]), on both cores, the bands joined where ways cross them
+//! ([`bands`]), and a joining of the basins over their lips, lowest first.
+//! Nothing is kept a point but a bit. A field over [`spill::MOST_POINTS`]
+//! (a 4097 grid), whose bands' kept rows and lips would outgrow a tenth of
+//! it, is flooded from its pits instead ([`rise`]), with two bits a point;
+//! the two ways find the same lakes.
 
 mod ahead;
+mod band;
+mod bands;
 mod bits;
 mod grid;
 mod labels;
+mod lips;
 mod open;
 mod pits;
 mod rise;
 mod spill;
 
-/// The two ways the lakes are found: from the basins' lips (fast, with a
-/// basin number a point), or by the water rising from the pits (with two
+/// The two ways the lakes are found: from the basins' lips (fast, found in
+/// bands of `rows` rows), or by the water rising from the pits (with two
 /// bits a point, for the largest fields).
 #[derive(Clone, Copy)]
 enum Way {
-    Spill,
+    Spill { rows: usize },
     Rise,
 }
 
@@ -71,7 +76,9 @@ impl Lakes {
     /// [`Lakes::of`] keeping basins of at least `least` points.
     pub fn at_least(heights: &[f32], size: usize, least: usize) -> Self {
         let way = if heights.len() <= spill::MOST_POINTS {
-            Way::Spill
+            Way::Spill {
+                rows: bands::band_rows(size),
+            }
         } else {
             Way::Rise
         };
@@ -91,7 +98,7 @@ impl Lakes {
         };
         let mut found = |level, points: &mut [u32]| lakes.add(points, level);
         match way {
-            Way::Spill => spill::lakes(heights, size, least.max(1), &mut found),
+            Way::Spill { rows } => spill::lakes(heights, size, least.max(1), rows, &mut found),
             Way::Rise => rise::basins(heights, size, least.max(1), found),
         }
         lakes.in_order_of_level();
@@ -242,12 +249,16 @@ impl Lakes {
 mod tests {
     use super::*;
 
-    /// Both ways on `heights`, at several least areas.
+    /// Both ways on `heights`, at several least areas, the lips' with
+    /// bands of several heights (down to two rows, where most ways leave
+    /// their band, and up to the whole field).
     fn both_ways_agree(heights: &[f32], n: usize, what: &str) {
         for least in [1, 4, 30] {
-            let spill = Lakes::found(heights, n, least, Way::Spill);
             let rise = Lakes::found(heights, n, least, Way::Rise);
-            assert_eq!(spill, rise, "{what}, least {least}");
+            for rows in [2, 3, 5, 16, bands::band_rows(n), n] {
+                let spill = Lakes::found(heights, n, least, Way::Spill { rows });
+                assert_eq!(spill, rise, "{what}, least {least}, bands of {rows} rows");
+            }
         }
     }
 
