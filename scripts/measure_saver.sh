@@ -3,10 +3,12 @@
 # while drawing and while holding, peak memory (VmHWM) at 1080p and 4K.
 # Usage: scripts/measure_saver.sh [path/to/mountains]   (default: release build)
 #        MODE=--root scripts/measure_saver.sh              (the xscreensaver way; default /s)
+#        SEED=5 scripts/measure_saver.sh                   (one seed's slides; default random)
 # Needs Xvfb. Quiet machine recommended; numbers are per-core percentages.
 set -eu
 BIN=${1:-target/release/mountains}
 MODE=${MODE:-/s}
+SEED_SET=${SEED:+--set seed=$SEED}
 [ -x "$BIN" ] || { echo "build first: cargo build --release" >&2; exit 1; }
 HZ=$(getconf CLK_TCK)
 TMP=$(mktemp -d)
@@ -30,7 +32,7 @@ run_at() { # width height draw pause
     while [ ! -s "$TMP/display" ]; do sleep 0.05; done
     export DISPLAY=":$(cat "$TMP/display")"
     HOME=$TMP XDG_CONFIG_HOME=$TMP/c XDG_DATA_HOME=$TMP/d MOUNTAINS_TRACE=1 \
-        "$BIN" "$MODE" --set "draw_seconds=$3" --set "pause_seconds=$4" 2>"$TMP/err" &
+        "$BIN" "$MODE" $SEED_SET --set "draw_seconds=$3" --set "pause_seconds=$4" 2>"$TMP/err" &
     SPID=$!
 }
 

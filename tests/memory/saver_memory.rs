@@ -54,3 +54,42 @@ fn a_4k_slide_show_holds_one_field_beside_its_frame() {
         bound as f64 / 1e6
     );
 }
+
+/// The hold of a 4K slide of a lakes world, while the next mountain (seed
+/// 5's world again: alpine, with the most lakes of seeds 1-12) is made
+/// and its first strips drawn: the frame, the new field and half a field
+/// more, which the lakes' finding fits in (a basin number a point did
+/// not: 16.8 MB). The drawing before it is left out: its silhouettes'
+/// crests take 4 MB for such a world (see BENCHMARKS.md).
+#[test]
+fn a_4k_lakes_world_is_made_beside_the_frame_on_screen() {
+    let _alone = counting::alone();
+    let frame_bytes = 3840 * 2160 * 4;
+    let field_bytes = 2049 * 2049 * 4;
+    let settings = Settings {
+        seed: Some(5),
+        ..Settings::default()
+    };
+    let t0 = Instant::now();
+    let at = |ms: u64| t0 + Duration::from_millis(ms);
+    let pacing = Pacing::from_seconds(1.0, 2.0, true);
+    let mut show = Show::new(settings, None, pacing, Size::new(3840, 2160), t0);
+    assert!(
+        show.current().is_some_and(|m| m.field.lakes().is_some_and(|l| l.count() > 0)),
+        "seed 5's world has no lakes: the bound below is for finding them"
+    );
+    show.tick(at(1000));
+    let before = counting::reset_peak();
+    assert!(show.tick(at(2000)).is_empty(), "not held");
+    assert!(!show.tick(at(3100)).is_empty(), "the show did not move on");
+    let peak = counting::peak() - before;
+    let bound = field_bytes + field_bytes / 2;
+    eprintln!("the hold: {:.1} MB beyond the frame", peak as f64 / 1e6);
+    assert!(
+        peak <= bound,
+        "the hold took {:.1} MB beyond the frame ({:.1} MB), more than a field and a half ({:.1} MB)",
+        peak as f64 / 1e6,
+        frame_bytes as f64 / 1e6,
+        bound as f64 / 1e6
+    );
+}
