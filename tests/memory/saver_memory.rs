@@ -13,22 +13,31 @@ use mountains::settings::Settings;
 
 use crate::common::counting;
 
-/// The one test of this file: the counters are the whole process's.
+/// The frame of a 4K slide show.
+const FRAME_BYTES: usize = 3840 * 2160 * 4;
+/// The field `detail = "auto"` makes for it.
+const FIELD_BYTES: usize = 2049 * 2049 * 4;
+
+/// A 4K slide show of `seed`'s mountains, started at `t0` (no clock: the
+/// times the tests give are only what the show is told), and the time
+/// `ms` after `t0`.
+fn show_4k(seed: u64, t0: Instant) -> (Show, impl Fn(u64) -> Instant) {
+    let settings = Settings {
+        seed: Some(seed),
+        ..Settings::default()
+    };
+    let pacing = Pacing::from_seconds(1.0, 2.0, true);
+    let show = Show::new(settings, None, pacing, Size::new(3840, 2160), t0);
+    (show, move |ms| t0 + Duration::from_millis(ms))
+}
+
+/// The counters are the whole process's: each test takes its turn.
 #[test]
 fn a_4k_slide_show_holds_one_field_beside_its_frame() {
     let _alone = counting::alone();
-    let frame_bytes = 3840 * 2160 * 4;
-    let field_bytes = 2049 * 2049 * 4;
-    let settings = Settings {
-        seed: Some(42),
-        ..Settings::default()
-    };
-    // No clock: the times below are only what the show is told.
-    let t0 = Instant::now();
-    let at = |ms: u64| t0 + Duration::from_millis(ms);
-    let pacing = Pacing::from_seconds(1.0, 2.0, true);
+    let (frame_bytes, field_bytes) = (FRAME_BYTES, FIELD_BYTES);
     let before = counting::reset_peak();
-    let mut show = Show::new(settings, None, pacing, Size::new(3840, 2160), t0);
+    let (mut show, at) = show_4k(42, Instant::now());
     assert_eq!(
         show.current().map(|m| m.field.size()),
         Some(2049),
@@ -64,18 +73,11 @@ fn a_4k_slide_show_holds_one_field_beside_its_frame() {
 #[test]
 fn a_4k_lakes_world_is_made_beside_the_frame_on_screen() {
     let _alone = counting::alone();
-    let frame_bytes = 3840 * 2160 * 4;
-    let field_bytes = 2049 * 2049 * 4;
-    let settings = Settings {
-        seed: Some(5),
-        ..Settings::default()
-    };
-    let t0 = Instant::now();
-    let at = |ms: u64| t0 + Duration::from_millis(ms);
-    let pacing = Pacing::from_seconds(1.0, 2.0, true);
-    let mut show = Show::new(settings, None, pacing, Size::new(3840, 2160), t0);
+    let (frame_bytes, field_bytes) = (FRAME_BYTES, FIELD_BYTES);
+    let (mut show, at) = show_4k(5, Instant::now());
     assert!(
-        show.current().is_some_and(|m| m.field.lakes().is_some_and(|l| l.count() > 0)),
+        show.current()
+            .is_some_and(|m| m.field.lakes().is_some_and(|l| l.count() > 0)),
         "seed 5's world has no lakes: the bound below is for finding them"
     );
     show.tick(at(1000));
