@@ -246,29 +246,32 @@ fn pits_of_row(ways: &mut [u32], first: usize, ends: &mut Vec<u32>) {
 /// leads to holds: that point's end, or a point further down. The passes
 /// go against place order and in it in turn (the first in place order is
 /// taken in [`first_steps`]), so a way that runs with the pass is followed
-/// to its end at once; and any way at least halves in a pass.
+/// to its end at once; and any way at least halves in a pass. After the
+/// first, a pass looks only at the points not settled yet: a point once
+/// settled never changes, so the passes do the same as over the whole band.
 fn settle(ways: &mut [u32], first: usize) {
-    let mut forward = false;
-    loop {
-        let mut left = false;
-        let mut pass = |ways: &mut [u32], i: usize| {
-            let v = ways[i];
-            if v & ON_THE_WAY != 0 {
-                let w = ways[(v & !ON_THE_WAY) as usize - first];
-                ways[i] = w;
-                left |= w & ON_THE_WAY != 0;
-            }
-        };
-        if forward {
-            (0..ways.len()).for_each(|i| pass(ways, i));
-        } else {
-            (0..ways.len()).rev().for_each(|i| pass(ways, i));
-        }
-        if !left {
-            return;
-        }
-        forward = !forward;
+    let mut left: Vec<u32> = (0..ways.len() as u32)
+        .rev()
+        .filter(|&i| step(ways, i as usize, first))
+        .collect();
+    // `left` is against place order; each pass goes the other way.
+    while !left.is_empty() {
+        left.reverse();
+        left.retain(|&i| step(ways, i as usize, first));
     }
+}
+
+/// Takes point `i`'s way one step on (see [`settle`]); whether it is still
+/// on its way.
+#[inline]
+fn step(ways: &mut [u32], i: usize, first: usize) -> bool {
+    let v = ways[i];
+    if v & ON_THE_WAY == 0 {
+        return false;
+    }
+    let w = ways[(v & !ON_THE_WAY) as usize - first];
+    ways[i] = w;
+    w & ON_THE_WAY != 0
 }
 
 /// One pass of [`settle`] in place order over points `row` of `ways`, the
