@@ -10,8 +10,9 @@
 //!
 //! The reference (LOOKS.md, "At 1:1"): the grid is fixed to what
 //! `detail = "auto"` picks at the base size, unless `--set` says otherwise;
-//! everything else is the seed's own scene (its light and sea are the same
-//! at every size). The vista puts its near edge a fixed number of pixels below the
+//! and the relief below the grid (`fine_relief`) stops at the base frame's
+//! pixel (`render_full_finer`); everything else is the seed's own scene
+//! (its light and sea are the same at every size). The vista puts its near edge a fixed number of pixels below the
 //! bottom at every size, so the reference is drawn kW x Hk and its rows from
 //! `crop` on are used, Hk and crop chosen so that the back and near edges
 //! land where a k-times-finer sampling of the base camera puts them (worked
@@ -29,7 +30,7 @@ use mountains::quality::registration::best_shift;
 use mountains::render::Size;
 use mountains::render::classes::{Class, render_classes};
 use mountains::render::view::{self, View};
-use mountains::render::{Frame, detail, render_full};
+use mountains::render::{Frame, detail, render_full, render_full_finer};
 use mountains::settings::{Detail, Settings, load};
 use mountains::terrain::{self, Heightfield};
 
@@ -181,7 +182,7 @@ fn measure(args: &Args, seed: u64) -> Figures {
         k * w
     );
     let mut big = Frame::new(k * w, hk).expect("room for the reference");
-    render_full(&field, settings, &mut big);
+    render_full_finer(&field, settings, &mut big, k);
     let t2 = Instant::now();
     let (wu, hu, ku) = (w as usize, h as usize, k as usize);
     let reference = Image::box_down(&big, ku, (0, i64::from(crop)), wu, hu);

@@ -330,6 +330,8 @@ pub struct Settings {
     pub shading: Shading,
     /// Cloud in the sky: drawn per mountain, or an amount from 0 to 1.
     pub clouds: Clouds,
+    /// Near land lit from a finer terrain than the grid it is drawn with.
+    pub fine_relief: bool,
     /// The land and the sky mirrored in the water.
     pub reflections: bool,
     /// Oblique or perspective projection.

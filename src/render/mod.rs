@@ -40,5 +40,5 @@ pub use shade::{dither, essay, facings, hour, light, listing, palette, shadow};
 
 pub use damage::Damage;
 pub use frame::{Frame, Rect};
-pub use painter::{Painter, render_full, render_full_at};
+pub use painter::{Painter, render_full, render_full_at, render_full_finer};
 pub use size::Size;

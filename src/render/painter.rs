@@ -191,6 +191,16 @@ pub fn render_full_at(
     draw_full(&scene, frame);
 }
 
+/// [`render_full`] of the scene of a frame `k` times smaller than `frame`
+/// (a 1:1 picture's reference, to be averaged down k times): the relief
+/// below the grid stops at the smaller frame's pixel, as `settings` fix
+/// the grid to the smaller frame's.
+pub fn render_full_finer(field: &Heightfield, settings: &Settings, frame: &mut Frame, k: u32) {
+    let mut scene = Scene::new(FieldRef::Borrowed(field), settings, frame.size());
+    scene.relief = scene.relief.map(|r| r.for_finer(k as f32));
+    draw_full(&scene, frame);
+}
+
 /// Draws the sky and every strip of `scene` into `frame` in bands on all
 /// cores, then its edges clean, from the horizon one thread sweeps beside
 /// the bands.

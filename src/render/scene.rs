@@ -3,7 +3,7 @@
 
 use std::sync::Arc;
 
-use glam::Vec2;
+use glam::{Vec2, Vec3};
 
 use super::base::colour::blend_packed;
 use super::base::fixed::{Fixed2, to_fixed};
@@ -19,6 +19,7 @@ use super::shade::hour::SunAt;
 use super::shade::mirror::{Mirror, Mirrored};
 use super::shade::normals::Normals;
 use super::shade::palette::Palette;
+use super::shade::relief::{self, FinePoint, Relief};
 use super::shade::ripples::Ripples;
 use super::shade::shadow::{self, ShadowMap};
 use super::shade::sky::Sky;
@@ -86,6 +87,9 @@ pub(crate) struct Vert {
     /// Under smooth shading, how strongly the rock's strata show at the
     /// point (0..=1 of `strata::DEPTH`: steep rock, less through haze).
     pub rock: f32,
+    /// Under smooth shading with the finer relief, what the faces around
+    /// the point need to light it (see [`Relief`]).
+    pub fine: FinePoint,
     /// Whether `haze` is worked out (see [`Scene::shade`]).
     pub hazed: bool,
     /// Whether `lit` and `sky` are worked out (see [`Scene::shade`]).
@@ -161,6 +165,9 @@ pub(crate) struct Scene<'a> {
     /// Under smooth shading, the mountain's rock strata, drawn across its
     /// steep faces.
     pub(crate) strata: Option<RockStrata>,
+    /// Under smooth shading in natural colours with a camera, the land's
+    /// relief below the grid, lighting the pixels of near faces.
+    pub(crate) relief: Option<Relief>,
     /// What the water mirrors: `None` without reflections (the key off,
     /// a look without ripples, a view without an eye).
     pub(crate) mirror: Option<Mirror>,
@@ -278,6 +285,8 @@ impl<'a> Scene<'a> {
             let level = settings.cliffs > 0.0;
             RockStrata::new(field.seed().unwrap_or(0), field.extent(), size, level)
         });
+        let relief = (smooth && settings.fine_relief && palette.coloured() && view.eye().is_some())
+            .then(|| Relief::new(&field, field.identity(), palette.light(), view.cell()));
         let eye = view.camera_ground().filter(|_| smooth);
         let cells = size - 1;
         // The weather is the ripples' kind of look: the shaded views with depth.
@@ -332,6 +341,7 @@ impl<'a> Scene<'a> {
             normals,
             smooth,
             strata,
+            relief,
             mirror,
             eye,
             style,
@@ -482,14 +492,49 @@ impl<'a> Scene<'a> {
     #[inline(never)]
     fn colour_now(&self, v: &mut Vert, x: usize, y: usize) {
         let ground = v.h.max(v.w);
-        let (land, rock) = self.land_at(x, y, ground, v.lit, v.sky, v.wet);
+        // Smooth shading always has its normals.
+        let Some(normals) = &self.normals else {
+            v.colour = self.hazed(0, v.haze);
+            v.coloured = true;
+            return;
+        };
+        let n = normals.at(&self.field, x, y);
+        let (land, rock) = (self.palette).land_and_rock_at_point(ground, n, v.lit, v.sky, v.wet);
         v.colour = self.hazed(land, v.haze);
+        if let Some(relief) = &self.relief {
+            v.fine = self.fine_point(relief, v, n, x, y);
+        }
         if self.strata.is_some() && rock > 0.0 {
             // The haze veils the bands as it does the rock.
             let clear = 1.0 - v.haze.min(256) as f32 / 256.0;
             v.rock = rock * strata::DEPTH * clear;
         }
         v.coloured = true;
+    }
+
+    /// What the faces around grid point (`x`, `y`) need to light its
+    /// finer relief: its light and haze are `v`'s, its normal `n`. A point
+    /// whose cells span well under what the relief needs has none (the
+    /// faces around it are drawn plain, or fade their relief out towards
+    /// it).
+    fn fine_point(&self, relief: &Relief, v: &Vert, n: Vec3, x: usize, y: usize) -> FinePoint {
+        let (gx, gy) = (x as f32, y as f32);
+        let cell_px = relief.cell_px(self.view.cell_pixels(gx, gy, v.h.max(v.w)));
+        if cell_px < 0.5 * relief::MIN_CELL_PX {
+            return FinePoint {
+                cell_px,
+                ..FinePoint::default()
+            };
+        }
+        let clear = 1.0 - v.haze.min(256) as f32 / 256.0;
+        FinePoint {
+            slope: glam::Vec2::new(n.x, n.y) / n.z.max(0.05),
+            shares: self.palette.lighting().shares(n, v.lit, v.sky) * clear,
+            cell_px,
+            // Steep faces keep the grid's light: there the bumps, laid
+            // over the ground's plan, would run down them as streaks.
+            rough: relief.rough_at(x, y) * n.z * n.z,
+        }
     }
 
     /// The direct light and the share of the sky reaching grid point (`x`, `y`).

@@ -16,6 +16,7 @@ mod night;
 mod painter;
 mod raster;
 mod reflections;
+mod relief;
 mod rock;
 mod scene;
 mod skirts;

@@ -83,9 +83,11 @@ fn neighbouring_faces_with_nearly_equal_normals_get_nearly_equal_colours() {
         12.0 - 15.0 * (du * du + dv * dv)
     });
     // No treeline on the dome (height 1): the colours change with the
-    // light, not across the palette's zones.
+    // light, not across the palette's zones. The grid's own light blended
+    // across the faces, without the finer relief's texture (relief.rs).
     let lowland = |shading| Settings {
         height: 1,
+        fine_relief: false,
         ..settings(shading)
     };
     let (smooth, classes) = drawn(&dome, &lowland(Shading::Smooth));

@@ -110,6 +110,7 @@ fn every_key_round_trips_through_the_shipped_file() {
         longitude: 151.21,
         shading: Shading::Flat,
         clouds: Clouds::Amount(0.35),
+        fine_relief: false,
         reflections: false,
         view: ViewKind::Perspective,
         rotation: 270,

@@ -448,6 +448,19 @@ impl View {
         }
     }
 
+    /// How many pixels one grid step spans, seen square on, at grid
+    /// position (`gx`, `gy`) and height `z`; 0 for the oblique view
+    /// (which draws no relief below its grid).
+    pub(crate) fn cell_pixels(&self, gx: f32, gy: f32, z: f32) -> f32 {
+        match &self.camera {
+            Some(cam) => {
+                let p = Vec3::new(gx * self.cell, gy * self.cell, z);
+                self.cell * self.scale.y / cam.depth(p)
+            }
+            None => 0.0,
+        }
+    }
+
     /// Width of one grid step in height units.
     pub fn cell(&self) -> f32 {
         self.cell

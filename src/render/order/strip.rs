@@ -9,12 +9,15 @@ use crate::render::base::colour::mix_packed;
 use crate::render::base::fixed::{Fixed2, SUBPIXEL};
 use crate::render::scan::banded::{Banded, Fill};
 use crate::render::scan::blend::Blend;
+use crate::render::scan::fine::Fine;
+use crate::render::scan::gradient::Gradient;
 use crate::render::scan::outline::{Crossing, Whole};
 use crate::render::scan::raster::{Triangle, centre_box};
 use crate::render::scan::shore::{ShoreLine, ShorePoint};
 use crate::render::scene::{Scene, Style, Vert};
 use crate::render::shade::dither;
 use crate::render::shade::mirror::{Mirror, Mirrored};
+use crate::render::shade::relief::{self, FinePoint, Relief};
 use crate::render::shade::strata::{RockStrata, Sampler};
 
 /// White and black, the only two colours of Mono.
@@ -45,6 +48,8 @@ pub(super) struct Corner {
     pub(super) colour: u32,
     /// Under smooth shading, how strongly the rock's strata show here.
     pub(super) rock: f32,
+    /// Under smooth shading, what the relief below the grid needs here.
+    pub(super) fine: FinePoint,
     /// Outside the land (see `Vert::off`).
     pub(super) off: bool,
     /// Whether `lit` and `sky` are worked out (see `Vert::lit_known`): a
@@ -65,6 +70,7 @@ impl Corner {
             haze: v.haze,
             colour: v.colour,
             rock: v.rock,
+            fine: v.fine,
             off: v.off,
             lit_known: v.lit_known,
         }
@@ -340,6 +346,7 @@ impl Scene<'_> {
             haze: (a.haze as f32 + (b.haze as f32 - a.haze as f32) * f) as u32,
             colour: mix_packed(a.colour, b.colour, f),
             rock: a.rock + (b.rock - a.rock) * f,
+            fine: a.fine.lerp(&b.fine, f),
             off: false,
             lit_known: a.lit_known && b.lit_known,
         }
@@ -387,15 +394,37 @@ impl Scene<'_> {
         }
         let colours = [c[0].colour, c[1].colour, c[2].colour];
         let v = [c[0].p, c[1].p, c[2].p];
-        match self.rock(&c) {
-            Some(strata) => {
-                let make = || banded(strata, &c);
+        let relief = self.fine_relief(&c);
+        match (self.rock(&c), relief) {
+            (Some(strata), _) => {
+                let make = || banded(strata, &c, relief);
                 paint_spans(canvas, v, make, |canvas, f, y, x0, x1| {
                     f.fill(canvas, y, x0, x1)
                 });
             }
-            None => self.paint_blend(canvas, v, colours),
+            (None, Some(relief)) => {
+                let make = || {
+                    let gradient = Gradient::new(v);
+                    let blend = Blend::over(&gradient, colours);
+                    Fill::<Sampler, _>::Fine(blend, fine(&gradient, &c, relief))
+                };
+                paint_spans(canvas, v, make, |canvas, f, y, x0, x1| {
+                    f.fill(canvas, y, x0, x1)
+                });
+            }
+            (None, None) => self.paint_blend(canvas, v, colours),
         }
+    }
+
+    /// The relief below the grid, if it shows on the land face `c` (one
+    /// of its corners' cells spans enough pixels for its first level, and
+    /// is light enough to show it).
+    #[inline]
+    fn fine_relief(&self, c: &Face) -> Option<&Relief> {
+        let near = c.iter().any(|k| k.fine.cell_px >= relief::MIN_CELL_PX);
+        self.relief
+            .as_ref()
+            .filter(|r| near && r.shows(c.map(|k| &k.fine), c.map(|k| k.colour)))
     }
 
     /// The strata, if the land face `c` shows them (a corner on steep rock).
@@ -425,9 +454,9 @@ impl Scene<'_> {
     /// colour.
     fn land_side(&self, c: &Face, normal: Vec3, lit: f32) -> Side<'_> {
         if let Some(strata) = self.rock(c).filter(|_| self.smooth()) {
-            match banded(strata, c) {
-                Fill::Banded(b) => Side::Rock(b),
-                Fill::Plain(b) => Side::Plane(b),
+            match banded(strata, c, None) {
+                Fill::Banded(b) => Side::Rock(Box::new(b)),
+                Fill::Plain(b) | Fill::Fine(b, _) => Side::Plane(b),
             }
         } else if self.smooth() {
             Side::Plane(Blend::new(c.map(|k| k.p), c.map(|k| k.colour)))
@@ -708,7 +737,9 @@ enum Side<'s> {
     /// pixel across the line, the land's colour on the line itself.
     Plane(Blend),
     /// As `Plane`, on steep rock: its strata across the blend.
-    Rock(Banded<Sampler<'s>>),
+    /// Boxed: its planes are many times the others' size, and shore
+    /// faces on steep rock are few.
+    Rock(Box<Banded<Sampler<'s>, &'s Relief>>),
 }
 
 impl Side<'_> {
@@ -776,8 +807,13 @@ fn faces_away(p: [Fixed2; 3]) -> bool {
 /// The land face `c` blended, with `strata` across it where they show
 /// (smooth shading on steep rock): bands under half a level of colour at
 /// their strongest are left out, as on far faces most of the rock's are.
+/// With `relief`, the relief below the grid lights its pixels too.
 #[inline]
-fn banded<'s>(strata: &'s RockStrata, c: &Face) -> Fill<Sampler<'s>> {
+fn banded<'s>(
+    strata: &'s RockStrata,
+    c: &Face,
+    relief: Option<&'s Relief>,
+) -> Fill<Sampler<'s>, &'s Relief> {
     Banded::or_plain(
         c.map(|k| k.p),
         c.map(|k| k.colour),
@@ -787,7 +823,14 @@ fn banded<'s>(strata: &'s RockStrata, c: &Face) -> Fill<Sampler<'s>> {
             let sampler = strata.sampler(per_pixel);
             (strongest * sampler.peak * 255.0 >= 0.5).then_some(sampler)
         },
+        |gradient| relief.map(|r| fine(gradient, c, r)),
     )
+}
+
+/// The relief below the grid across the land face `c` of `gradient`.
+#[inline]
+fn fine<'r>(gradient: &Gradient, c: &Face, relief: &'r Relief) -> Fine<&'r Relief> {
+    Fine::new(gradient, c.map(|k| k.fine.lanes(k.g)), relief)
 }
 
 /// Light on a face: the mean of its corners'.

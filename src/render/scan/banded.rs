@@ -6,6 +6,7 @@
 use glam::{Vec2, Vec4};
 
 use super::blend::{Blend, RowStart};
+use super::fine::{Fine, FineRow, Gain};
 use super::gradient::Gradient;
 use crate::render::base::canvas::Canvas;
 use crate::render::base::colour::packed_lanes;
@@ -34,8 +35,8 @@ impl Tone for Sampler<'_> {
 }
 
 /// A blended triangle with a plane of (height, band strength) beside its
-/// colours.
-pub(crate) struct Banded<T> {
+/// colours, and the relief below the grid where it shows.
+pub(crate) struct Banded<T, G> {
     blend: Blend,
     /// Height and strength at the first corner, their change per pixel to
     /// the right and per row down, and their least and greatest corner
@@ -48,15 +49,18 @@ pub(crate) struct Banded<T> {
     origin: [f32; 2],
     /// The tone (-1..=1) at a height.
     tone: T,
+    fine: Option<Fine<G>>,
 }
 
-/// A face blended plain, or with bands across it.
-pub(crate) enum Fill<T> {
+/// A face blended plain, lit by the relief below the grid, or with bands
+/// across it (and that relief, where it shows).
+pub(crate) enum Fill<T, G> {
     Plain(Blend),
-    Banded(Banded<T>),
+    Fine(Blend, Fine<G>),
+    Banded(Banded<T, G>),
 }
 
-impl<T: Tone> Fill<T> {
+impl<T: Tone, G: Gain> Fill<T, G> {
     /// Sets the pixels `x0..x1` of row `y`.
     #[inline]
     pub(crate) fn fill(&self, canvas: &mut Canvas, y: u32, x0: u32, x1: u32) {
@@ -64,6 +68,13 @@ impl<T: Tone> Fill<T> {
             Fill::Plain(b) => {
                 let row = b.row(y);
                 canvas.fill_with(y, x0, x1, |x| b.at(&row, x));
+            }
+            Fill::Fine(b, fine) => {
+                let (row, fine_row) = (b.row(y), fine.row(y));
+                canvas.fill_with(y, x0, x1, |x| {
+                    let gain = fine.gain_at(&fine_row, x);
+                    packed_lanes(lighter(b.lanes_at(&row, x), gain))
+                });
             }
             Fill::Banded(b) => {
                 let row = b.row(y);
@@ -73,17 +84,25 @@ impl<T: Tone> Fill<T> {
     }
 }
 
-/// One row's colour and (height, strength) where it crosses the first
-/// corner's column.
-pub(crate) type BandedRow = (RowStart, Vec2);
+/// A pixel's channels `gain` times as bright, held to 255 and rounded.
+#[inline(always)]
+fn lighter(colour: Vec4, gain: f32) -> Vec4 {
+    // +0.5 rounds.
+    (colour * gain).min(Vec4::splat(255.0)) + 0.5
+}
 
-impl<T: Tone> Banded<T> {
+/// One row's colour, (height, strength) and relief where it crosses the
+/// first corner's column.
+pub(crate) type BandedRow = (RowStart, Vec2, Option<FineRow>);
+
+impl<T: Tone, G: Gain> Banded<T, G> {
     /// The triangle of corners `v` (24.8 fixed point), their packed
     /// `colours`, ground `heights` and band `strengths` (0..=1: how much
     /// of the tone shows), toned by `tone(per_pixel, strongest)`, given the
     /// height one pixel spans (the larger of its steps across and down) and
     /// the largest strength: `None` where the bands would not show (too
-    /// faint, or blurred away), and the face is blended plain.
+    /// faint, or blurred away), and the face is blended plain. `fine`
+    /// gives the relief below the grid over the triangle, if it shows.
     #[inline]
     pub(crate) fn or_plain(
         v: [Fixed2; 3],
@@ -91,15 +110,20 @@ impl<T: Tone> Banded<T> {
         heights: [f32; 3],
         strengths: [f32; 3],
         tone: impl FnOnce(f32, f32) -> Option<T>,
-    ) -> Fill<T> {
+        fine: impl FnOnce(&Gradient) -> Option<Fine<G>>,
+    ) -> Fill<T, G> {
         let gradient = Gradient::new(v);
         let blend = Blend::over(&gradient, colours);
+        let fine = fine(&gradient);
         let q = [0, 1, 2].map(|i| Vec2::new(heights[i], strengths[i]));
         let (dx, dy) = gradient.slopes(q[1] - q[0], q[2] - q[0]);
         let per_pixel = dx.x.abs().max(dy.x.abs());
         let hi = q[0].max(q[1]).max(q[2]);
         let Some(tone) = tone(per_pixel, hi.y) else {
-            return Fill::Plain(blend);
+            return match fine {
+                Some(fine) => Fill::Fine(blend, fine),
+                None => Fill::Plain(blend),
+            };
         };
         Fill::Banded(Banded {
             blend,
@@ -110,6 +134,7 @@ impl<T: Tone> Banded<T> {
             hi,
             origin: gradient.origin,
             tone,
+            fine,
         })
     }
 
@@ -117,7 +142,8 @@ impl<T: Tone> Banded<T> {
     #[inline]
     pub(crate) fn row(&self, y: u32) -> BandedRow {
         let oy = y as f32 + 0.5 - self.origin[1];
-        (self.blend.row(y), self.at0 + self.dy * oy)
+        let fine = self.fine.as_ref().map(|f| f.row(y));
+        (self.blend.row(y), self.at0 + self.dy * oy, fine)
     }
 
     /// The packed colour at the centre of pixel `x` of a row.
@@ -127,8 +153,11 @@ impl<T: Tone> Banded<T> {
         let ox = x as f32 + 0.5 - self.origin[0];
         let q = (row.1 + self.dx * ox).max(self.lo).min(self.hi);
         let gain = 1.0 + q.y * self.tone.tone(q.x);
-        // +0.5 rounds.
-        packed_lanes((colour * gain).min(Vec4::splat(255.0)) + 0.5)
+        let gain = match (&self.fine, &row.2) {
+            (Some(fine), Some(fine_row)) => gain * fine.gain_at(fine_row, x),
+            _ => gain,
+        };
+        packed_lanes(lighter(colour, gain))
     }
 }
 
@@ -148,9 +177,10 @@ mod tests {
             [0.0, 0.0, 20.0],
             [strength; 3],
             |_, _| Some(tone),
+            |_| None::<Fine<fn([Vec4; 2]) -> f32>>,
         ) {
             Fill::Banded(b) => b,
-            Fill::Plain(_) => panic!("plain"),
+            _ => panic!("not banded"),
         };
         let none = banded(0.0, |_| 1.0);
         let full = banded(0.5, |h| if h < 10.0 { 0.5 } else { -0.5 });
@@ -170,10 +200,17 @@ mod tests {
     fn the_tone_is_told_the_height_a_pixel_spans_and_the_strongest_band() {
         let v = [to_fixed(0.0, 0.0), to_fixed(10.0, 0.0), to_fixed(0.0, 10.0)];
         let mut told = (0.0, 0.0);
-        let fill = Banded::or_plain(v, [0; 3], [0.0, 5.0, 20.0], [0.5, 0.25, 0.0], |p, s| {
-            told = (p, s);
-            None::<fn(f32) -> f32>
-        });
+        let fill = Banded::or_plain(
+            v,
+            [0; 3],
+            [0.0, 5.0, 20.0],
+            [0.5, 0.25, 0.0],
+            |p, s| {
+                told = (p, s);
+                None::<fn(f32) -> f32>
+            },
+            |_| None::<Fine<fn([Vec4; 2]) -> f32>>,
+        );
         assert!(matches!(fill, Fill::Plain(_)), "no tone: blended plain");
         assert!((told.0 - 2.0).abs() < 1e-5, "{told:?}");
         assert_eq!(told.1, 0.5);

@@ -4,6 +4,7 @@
 
 pub(super) mod banded;
 pub(super) mod blend;
+pub(super) mod fine;
 pub(super) mod gradient;
 pub(super) mod outline;
 pub mod raster;

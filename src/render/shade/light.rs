@@ -307,6 +307,22 @@ impl Lighting {
         };
         [0, 1, 2].map(|i| self.direct[i] * direct + self.ambient[i] * sky)
     }
+
+    /// Of the light [`Lighting::on_under`] gives a face along unit
+    /// `normal` (its brightness), the share the direct light brings per
+    /// unit of its cosine, and the share the sky brings per unit of the
+    /// normal's upward part: how much a slightly turned normal changes
+    /// it (the finer relief's light).
+    pub(crate) fn shares(&self, normal: Vec3, lit: f32, seen: f32) -> glam::Vec2 {
+        let luma = |c: Rgb| 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+        let direct = luma(self.direct) * unit(lit);
+        let sky = luma(self.ambient) * (SKY_FLOOR + (1.0 - SKY_FLOOR) * unit(seen));
+        let total = direct * unit(normal.dot(self.sun)) + sky * (0.6 + 0.4 * unit(normal.z));
+        if total <= 0.0 || self.classic {
+            return glam::Vec2::ZERO;
+        }
+        glam::Vec2::new(direct, 0.4 * sky) / total
+    }
 }
 
 /// `v` limited to 0..=1, with NaN as 0.

@@ -16,6 +16,7 @@ pub(super) mod mirror;
 pub(super) mod night;
 pub(super) mod normals;
 pub mod palette;
+pub(super) mod relief;
 pub(super) mod ripples;
 pub mod shadow;
 pub(super) mod sky;

@@ -250,6 +250,13 @@ impl Palette {
         self.lighting.sun
     }
 
+    /// Whether the land's colours are its ground's lit by the sun's and
+    /// the sky's colours (the natural colours of our light), rather than
+    /// a brightness, a filter's or a look's own.
+    pub(crate) fn coloured(&self) -> bool {
+        self.coloured && self.preference.is_none() && !self.essay && self.listing.is_none()
+    }
+
     /// The sun, sky and ambient light these colours were made with.
     pub fn lighting(&self) -> &Lighting {
         &self.lighting

@@ -278,6 +278,13 @@ rows! {
         Value::Str("varied".into()),
         "cloud in the sky, 0 clear to 1 overcast; \"varied\" draws an amount per mountain"
     ),
+    FINE_RELIEF = (
+        fine_relief,
+        Kind::Bool,
+        Repaint,
+        Value::Bool(true),
+        "near land lit from a finer terrain than its grid, down to the pixel (false: the grid's own light)"
+    ),
     REFLECTIONS = (
         reflections,
         Kind::Bool,
