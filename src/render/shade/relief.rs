@@ -291,22 +291,25 @@ const TABLE: usize = 1024;
 /// cost a pixel tens of multiplications).
 #[derive(Clone, Debug)]
 struct Lattice {
-    perm: Vec<u16>,
-    values: Vec<f32>,
+    // Arrays of the table's size: an index masked to it needs no check.
+    perm: Box<[u16; TABLE]>,
+    values: Box<[f32; TABLE]>,
 }
 
 impl Lattice {
     /// The lattice of the mountain `seed`.
     fn new(seed: u64) -> Self {
-        let mut perm: Vec<u16> = (0..TABLE as u16).collect();
+        let mut perm = Box::new([0u16; TABLE]);
+        perm.iter_mut().zip(0..).for_each(|(p, i)| *p = i);
         let mut state = mix(seed ^ 0x7265_6c69_6566);
         for i in (1..TABLE).rev() {
             state = mix(state);
             perm.swap(i, (state % (i as u64 + 1)) as usize);
         }
-        let values = (0..TABLE as u64)
-            .map(|i| (mix(seed ^ mix(i)) >> 40) as f32 * (2.0 / (1u64 << 24) as f32) - 1.0)
-            .collect();
+        let mut values = Box::new([0.0f32; TABLE]);
+        for (v, i) in values.iter_mut().zip(0u64..) {
+            *v = (mix(seed ^ mix(i)) >> 40) as f32 * (2.0 / (1u64 << 24) as f32) - 1.0;
+        }
         Lattice { perm, values }
     }
 
