@@ -281,44 +281,39 @@ fn fade(px: f32) -> f32 {
     t * t * (3.0 - 2.0 * t)
 }
 
-/// Lattice points a table holds: a level repeats after this many of its
-/// steps, hundreds of cells even for the first level below the grid.
-const TABLE: usize = 1024;
+/// Lattice points a side of the table of values: a level repeats after
+/// this many of its steps, over a hundred cells even for the first level
+/// below the grid, and turned unlike any other level.
+const SIDE: usize = 256;
 
 /// The values (-1..=1) at the lattice points of every level of one
-/// mountain's finer terrain: a shuffle of the lattice's columns and a value
-/// for each, as Perlin's noise looks its gradients up (a hash a point would
-/// cost a pixel tens of multiplications).
+/// mountain's finer terrain: a table of [`SIDE`] points a side that each
+/// level reads from a place of its own (a hash a point would cost a pixel
+/// tens of multiplications; a table a side, one read a point).
 #[derive(Clone, Debug)]
 struct Lattice {
-    // Arrays of the table's size: an index masked to it needs no check.
-    perm: Box<[u16; TABLE]>,
-    values: Box<[f32; TABLE]>,
+    // An array of the table's size: an index masked to it needs no check.
+    values: Box<[i8; SIDE * SIDE]>,
 }
 
 impl Lattice {
     /// The lattice of the mountain `seed`.
     fn new(seed: u64) -> Self {
-        let mut perm = Box::new([0u16; TABLE]);
-        perm.iter_mut().zip(0..).for_each(|(p, i)| *p = i);
-        let mut state = mix(seed ^ 0x7265_6c69_6566);
-        for i in (1..TABLE).rev() {
-            state = mix(state);
-            perm.swap(i, (state % (i as u64 + 1)) as usize);
-        }
-        let mut values = Box::new([0.0f32; TABLE]);
+        let mut values = Box::new([0i8; SIDE * SIDE]);
         for (v, i) in values.iter_mut().zip(0u64..) {
-            *v = (mix(seed ^ mix(i)) >> 40) as f32 * (2.0 / (1u64 << 24) as f32) - 1.0;
+            *v = ((mix(seed ^ mix(i)) >> 56) as u8 as i8).max(-127);
         }
-        Lattice { perm, values }
+        Lattice { values }
     }
 
     /// The value at lattice point (`x`, `y`) of level `level`.
     #[inline(always)]
     fn at(&self, level: u32, x: i32, y: i32) -> f32 {
-        let m = TABLE - 1;
-        let column = self.perm[(x as usize).wrapping_add(level as usize * 331) & m] as usize;
-        self.values[self.perm[column.wrapping_add(y as usize) & m] as usize]
+        let m = SIDE - 1;
+        let (x, y) = (x as usize, y as usize);
+        let (lx, ly) = (level as usize * 97, level as usize * 59);
+        let i = (y.wrapping_add(ly) & m) * SIDE + (x.wrapping_add(lx) & m);
+        f32::from(self.values[i]) * (1.0 / 127.0)
     }
 
     /// The slope of level `level`'s value noise at lattice position `u`,
