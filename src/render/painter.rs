@@ -196,6 +196,10 @@ pub fn render_full_at(
 /// below the grid stops at the smaller frame's pixel, as `settings` fix
 /// the grid to the smaller frame's.
 pub fn render_full_finer(field: &Heightfield, settings: &Settings, frame: &mut Frame, k: u32) {
+    if settings.color == ColorMode::Ridges {
+        // Ridges draw no land faces, so no relief either.
+        return render_full(field, settings, frame);
+    }
     let mut scene = Scene::new(FieldRef::Borrowed(field), settings, frame.size());
     scene.relief = scene.relief.map(|r| r.for_finer(k as f32));
     draw_full(&scene, frame);

@@ -19,7 +19,7 @@ use super::shade::hour::SunAt;
 use super::shade::mirror::{Mirror, Mirrored};
 use super::shade::normals::Normals;
 use super::shade::palette::Palette;
-use super::shade::relief::{self, FinePoint, Relief};
+use super::shade::relief::{FinePoint, Relief};
 use super::shade::ripples::Ripples;
 use super::shade::shadow::{self, ShadowMap};
 use super::shade::sky::Sky;
@@ -103,6 +103,13 @@ pub(crate) struct Vert {
     /// Under a mirror and smooth shading, the water at the point, once a
     /// water cell drawn there needs it (see `fill_water_cell`).
     pub water: Option<Mirrored>,
+}
+
+/// How much of a colour faded `haze` (1/256ths) towards the horizon is
+/// still its own.
+#[inline]
+fn clear(haze: u32) -> f32 {
+    1.0 - haze.min(256) as f32 / 256.0
 }
 
 /// A field a scene draws: shared with a painter, or borrowed for one frame
@@ -492,7 +499,7 @@ impl<'a> Scene<'a> {
     #[inline(never)]
     fn colour_now(&self, v: &mut Vert, x: usize, y: usize) {
         let ground = v.h.max(v.w);
-        // Smooth shading always has its normals.
+        // Smooth shading has its normals; without, a point is the air's colour.
         let Some(normals) = &self.normals else {
             v.colour = self.hazed(0, v.haze);
             v.coloured = true;
@@ -506,30 +513,30 @@ impl<'a> Scene<'a> {
         }
         if self.strata.is_some() && rock > 0.0 {
             // The haze veils the bands as it does the rock.
-            let clear = 1.0 - v.haze.min(256) as f32 / 256.0;
-            v.rock = rock * strata::DEPTH * clear;
+            v.rock = rock * strata::DEPTH * clear(v.haze);
         }
         v.coloured = true;
     }
 
     /// What the faces around grid point (`x`, `y`) need to light its
     /// finer relief: its light and haze are `v`'s, its normal `n`. A point
-    /// whose cells span well under what the relief needs has none (the
-    /// faces around it are drawn plain, or fade their relief out towards
-    /// it).
+    /// whose cells span well under what the relief needs has no light for
+    /// it (the faces around it are drawn plain, or fade their relief out
+    /// towards it).
     fn fine_point(&self, relief: &Relief, v: &Vert, n: Vec3, x: usize, y: usize) -> FinePoint {
         let (gx, gy) = (x as f32, y as f32);
         let cell_px = relief.cell_px(self.view.cell_pixels(gx, gy, v.h.max(v.w)));
-        if cell_px < 0.5 * relief::MIN_CELL_PX {
+        let slope = Vec2::new(n.x, n.y) / n.z.max(0.05);
+        if !relief.needs(cell_px) {
             return FinePoint {
+                slope,
                 cell_px,
                 ..FinePoint::default()
             };
         }
-        let clear = 1.0 - v.haze.min(256) as f32 / 256.0;
         FinePoint {
-            slope: glam::Vec2::new(n.x, n.y) / n.z.max(0.05),
-            shares: self.palette.lighting().shares(n, v.lit, v.sky) * clear,
+            slope,
+            shares: self.palette.lighting().shares(n, v.lit, v.sky) * clear(v.haze),
             cell_px,
             // Steep faces keep the grid's light: there the bumps, laid
             // over the ground's plan, would run down them as streaks.

@@ -17,7 +17,7 @@ use crate::render::scan::shore::{ShoreLine, ShorePoint};
 use crate::render::scene::{Scene, Style, Vert};
 use crate::render::shade::dither;
 use crate::render::shade::mirror::{Mirror, Mirrored};
-use crate::render::shade::relief::{self, FinePoint, Relief};
+use crate::render::shade::relief::{FinePoint, Relief};
 use crate::render::shade::strata::{RockStrata, Sampler};
 
 /// White and black, the only two colours of Mono.
@@ -392,27 +392,31 @@ impl Scene<'_> {
         if faces_away([c[0].p, c[1].p, c[2].p]) {
             return;
         }
-        let colours = [c[0].colour, c[1].colour, c[2].colour];
         let v = [c[0].p, c[1].p, c[2].p];
-        let relief = self.fine_relief(&c);
-        match (self.rock(&c), relief) {
-            (Some(strata), _) => {
-                let make = || banded(strata, &c, relief);
-                paint_spans(canvas, v, make, |canvas, f, y, x0, x1| {
-                    f.fill(canvas, y, x0, x1)
-                });
-            }
-            (None, Some(relief)) => {
-                let make = || {
-                    let gradient = Gradient::new(v);
-                    let blend = Blend::over(&gradient, colours);
-                    Fill::<Sampler, _>::Fine(blend, fine(&gradient, &c, relief))
-                };
-                paint_spans(canvas, v, make, |canvas, f, y, x0, x1| {
-                    f.fill(canvas, y, x0, x1)
-                });
-            }
-            (None, None) => self.paint_blend(canvas, v, colours),
+        if self.rock(&c).is_none() && self.fine_relief(&c).is_none() {
+            return self.paint_blend(canvas, v, [c[0].colour, c[1].colour, c[2].colour]);
+        }
+        paint_spans(
+            canvas,
+            v,
+            || self.land_fill(&c),
+            |canvas, f, y, x0, x1| f.fill(canvas, y, x0, x1),
+        );
+    }
+
+    /// The land face `c` under smooth shading: its corners blended, with
+    /// the rock's strata across it where they show and the relief below
+    /// the grid where it shows.
+    fn land_fill(&self, c: &Face) -> LandFill<'_> {
+        let relief = self.fine_relief(c);
+        if let Some(strata) = self.rock(c) {
+            return banded(strata, c, relief);
+        }
+        let gradient = Gradient::new(c.map(|k| k.p));
+        let blend = Blend::over(&gradient, c.map(|k| k.colour));
+        match relief {
+            Some(r) => Fill::Fine(blend, fine(&gradient, c, r)),
+            None => Fill::Plain(blend),
         }
     }
 
@@ -421,10 +425,9 @@ impl Scene<'_> {
     /// is light enough to show it).
     #[inline]
     fn fine_relief(&self, c: &Face) -> Option<&Relief> {
-        let near = c.iter().any(|k| k.fine.cell_px >= relief::MIN_CELL_PX);
         self.relief
             .as_ref()
-            .filter(|r| near && r.shows(c.map(|k| &k.fine), c.map(|k| k.colour)))
+            .filter(|r| r.shows(c.map(|k| &k.fine), c.map(|k| k.colour)))
     }
 
     /// The strata, if the land face `c` shows them (a corner on steep rock).
@@ -453,13 +456,8 @@ impl Scene<'_> {
     /// land beside a water pixel is the shore line's own colour), or one
     /// colour.
     fn land_side(&self, c: &Face, normal: Vec3, lit: f32) -> Side<'_> {
-        if let Some(strata) = self.rock(c).filter(|_| self.smooth()) {
-            match banded(strata, c, None) {
-                Fill::Banded(b) => Side::Rock(Box::new(b)),
-                Fill::Plain(b) | Fill::Fine(b, _) => Side::Plane(b),
-            }
-        } else if self.smooth() {
-            Side::Plane(Blend::new(c.map(|k| k.p), c.map(|k| k.colour)))
+        if self.smooth() {
+            Side::Land(Box::new(self.land_fill(c)))
         } else {
             Side::One(self.land_colour(c, normal, lit))
         }
@@ -733,13 +731,11 @@ impl MirroredFace {
 enum Side<'s> {
     /// One colour (water; land under flat shading).
     One(u32),
-    /// The side's own corners blended (land under smooth shading); for a
-    /// pixel across the line, the land's colour on the line itself.
-    Plane(Blend),
-    /// As `Plane`, on steep rock: its strata across the blend.
-    /// Boxed: its planes are many times the others' size, and shore
-    /// faces on steep rock are few.
-    Rock(Box<Banded<Sampler<'s>, &'s Relief>>),
+    /// The side's land under smooth shading (see [`Scene::land_fill`]);
+    /// for a pixel across the line, the land's colour on the line itself.
+    /// Boxed: its planes are many times a colour's size, and the faces
+    /// crossing the shore are few.
+    Land(Box<LandFill<'s>>),
 }
 
 impl Side<'_> {
@@ -749,12 +745,14 @@ impl Side<'_> {
     fn at(&self, x: u32, y: u32, coast: &ShoreLine, across: bool) -> u32 {
         match self {
             Side::One(c) => *c,
-            Side::Plane(_) | Side::Rock(_) if across => coast.land_at(x, y),
-            Side::Plane(b) => b.at(&b.row(y), x),
-            Side::Rock(b) => b.at(&b.row(y), x),
+            Side::Land(_) if across => coast.land_at(x, y),
+            Side::Land(f) => f.pixel(x, y),
         }
     }
 }
+
+/// How a land face is filled under smooth shading.
+type LandFill<'s> = Fill<Sampler<'s>, &'s Relief>;
 
 /// Calls `f` on each of `items` in the painter's order: as given, back to
 /// front, on a canvas that keeps the last write; reversed on one that keeps

@@ -6,7 +6,7 @@
 use glam::{Vec2, Vec4};
 
 use super::blend::{Blend, RowStart};
-use super::fine::{Fine, FineRow, Gain};
+use super::fine::{Fine, FineRow, Gain, PIECE};
 use super::gradient::Gradient;
 use crate::render::base::canvas::Canvas;
 use crate::render::base::colour::packed_lanes;
@@ -71,15 +71,61 @@ impl<T: Tone, G: Gain> Fill<T, G> {
             }
             Fill::Fine(b, fine) => {
                 let (row, fine_row) = (b.row(y), fine.row(y));
-                canvas.fill_with(y, x0, x1, |x| {
-                    let gain = fine.gain_at(&fine_row, x);
-                    packed_lanes(lighter(b.lanes_at(&row, x), gain))
+                in_pieces(fine, &fine_row, x0, x1, |x0, x1, gains| {
+                    canvas.fill_with(y, x0, x1, |x| {
+                        let gain = gains[(x - x0) as usize];
+                        packed_lanes(lighter(b.lanes_at(&row, x), gain))
+                    })
                 });
             }
             Fill::Banded(b) => {
                 let row = b.row(y);
-                canvas.fill_with(y, x0, x1, |x| b.at(&row, x));
+                match &b.fine {
+                    None => canvas.fill_with(y, x0, x1, |x| b.at(&row, x, 1.0)),
+                    Some(fine) => in_pieces(fine, &fine.row(y), x0, x1, |x0, x1, gains| {
+                        canvas.fill_with(y, x0, x1, |x| b.at(&row, x, gains[(x - x0) as usize]))
+                    }),
+                }
             }
+        }
+    }
+}
+
+/// Calls `fill(x0, x1, gains)` for each piece of at most [`PIECE`] pixels
+/// of the span `x0..x1` of a row (whose start is `row`), with the pieces' factors of `fine`
+/// (`gains[i]` pixel `x0 + i`'s).
+#[inline(always)]
+fn in_pieces<G: Gain>(
+    fine: &Fine<G>,
+    row: &FineRow,
+    x0: u32,
+    x1: u32,
+    mut fill: impl FnMut(u32, u32, &[f32]),
+) {
+    let mut gains = [0.0f32; PIECE];
+    let mut start = x0;
+    while start < x1 {
+        let end = x1.min(start + PIECE as u32);
+        let gains = &mut gains[..(end - start) as usize];
+        fine.gains(row, start, gains);
+        fill(start, end, gains);
+        start = end;
+    }
+}
+
+impl<T: Tone, G: Gain> Fill<T, G> {
+    /// The colour of pixel (`x`, `y`) alone (a span's pixels are set by
+    /// [`Fill::fill`]).
+    pub(crate) fn pixel(&self, x: u32, y: u32) -> u32 {
+        let gain = |fine: &Fine<G>| {
+            let mut g = [1.0];
+            fine.gains(&fine.row(y), x, &mut g);
+            g[0]
+        };
+        match self {
+            Fill::Plain(b) => b.at(&b.row(y), x),
+            Fill::Fine(b, fine) => packed_lanes(lighter(b.lanes_at(&b.row(y), x), gain(fine))),
+            Fill::Banded(b) => b.at(&b.row(y), x, b.fine.as_ref().map_or(1.0, gain)),
         }
     }
 }
@@ -91,9 +137,9 @@ fn lighter(colour: Vec4, gain: f32) -> Vec4 {
     (colour * gain).min(Vec4::splat(255.0)) + 0.5
 }
 
-/// One row's colour, (height, strength) and relief where it crosses the
-/// first corner's column.
-pub(crate) type BandedRow = (RowStart, Vec2, Option<FineRow>);
+/// One row's colour and (height, strength) where it crosses the first
+/// corner's column.
+pub(crate) type BandedRow = (RowStart, Vec2);
 
 impl<T: Tone, G: Gain> Banded<T, G> {
     /// The triangle of corners `v` (24.8 fixed point), their packed
@@ -142,21 +188,20 @@ impl<T: Tone, G: Gain> Banded<T, G> {
     #[inline]
     pub(crate) fn row(&self, y: u32) -> BandedRow {
         let oy = y as f32 + 0.5 - self.origin[1];
-        let fine = self.fine.as_ref().map(|f| f.row(y));
-        (self.blend.row(y), self.at0 + self.dy * oy, fine)
+        (self.blend.row(y), self.at0 + self.dy * oy)
     }
 
-    /// The packed colour at the centre of pixel `x` of a row.
+    /// The packed colour at the centre of pixel `x` of a row, `fine`
+    /// times as bright (the relief below the grid's factor there, 1
+    /// without it).
     #[inline(always)]
-    pub(crate) fn at(&self, row: &BandedRow, x: u32) -> u32 {
+    pub(crate) fn at(&self, row: &BandedRow, x: u32, fine: f32) -> u32 {
         let colour = self.blend.lanes_at(&row.0, x);
         let ox = x as f32 + 0.5 - self.origin[0];
         let q = (row.1 + self.dx * ox).max(self.lo).min(self.hi);
         let gain = 1.0 + q.y * self.tone.tone(q.x);
-        let gain = match (&self.fine, &row.2) {
-            (Some(fine), Some(fine_row)) => gain * fine.gain_at(fine_row, x),
-            _ => gain,
-        };
+        // Without the relief the factor is the strata's alone, as before it.
+        let gain = if fine == 1.0 { gain } else { gain * fine };
         packed_lanes(lighter(colour, gain))
     }
 }
@@ -177,7 +222,7 @@ mod tests {
             [0.0, 0.0, 20.0],
             [strength; 3],
             |_, _| Some(tone),
-            |_| None::<Fine<fn([Vec4; 2]) -> f32>>,
+            |_| None::<Fine<fn([Vec4; 8]) -> Vec4>>,
         ) {
             Fill::Banded(b) => b,
             _ => panic!("not banded"),
@@ -187,10 +232,10 @@ mod tests {
         for y in 0..20 {
             for x in 0..20 - y {
                 let c = plain.at(&plain.row(y), x);
-                assert_eq!(none.at(&none.row(y), x), c);
+                assert_eq!(none.at(&none.row(y), x, 1.0), c);
                 let g = (c & 0xff) as f32;
                 let want = if (y as f32 + 0.5) < 10.0 { 1.25 } else { 0.75 };
-                let got = (full.at(&full.row(y), x) & 0xff) as f32;
+                let got = (full.at(&full.row(y), x, 1.0) & 0xff) as f32;
                 assert!((got - (g * want).round()).abs() <= 1.0, "({x}, {y}): {got}");
             }
         }
@@ -209,7 +254,7 @@ mod tests {
                 told = (p, s);
                 None::<fn(f32) -> f32>
             },
-            |_| None::<Fine<fn([Vec4; 2]) -> f32>>,
+            |_| None::<Fine<fn([Vec4; 8]) -> Vec4>>,
         );
         assert!(matches!(fill, Fill::Plain(_)), "no tone: blended plain");
         assert!((told.0 - 2.0).abs() < 1e-5, "{told:?}");

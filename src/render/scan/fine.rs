@@ -1,22 +1,30 @@
 //! A screen triangle's planes through what its corners say of the relief
 //! below the grid (see `shade::relief`), read at pixel centres: each pixel
-//! is made lighter or darker by the finer terrain's light there.
+//! is made lighter or darker by the finer terrain's light there, four
+//! pixels at a time.
 
 use glam::Vec4;
 
 use super::gradient::Gradient;
 use crate::render::shade::relief::Relief;
 
-/// How much lighter or darker a pixel is (a factor near 1), given its
-/// blended corner values.
+/// Values blended across a triangle, a pixel's eight.
+pub(crate) const LANES: usize = 8;
+
+/// Pixels whose factors are worked out before they are set: a span is
+/// done in pieces of this many.
+pub(crate) const PIECE: usize = 64;
+
+/// How much lighter or darker four pixels are (factors near 1), given
+/// their blended corner values (each value's four pixels in a vector).
 pub(crate) trait Gain {
-    /// The factor at a pixel whose blended values are `q`.
-    fn gain(&self, q: [Vec4; 2]) -> f32;
+    /// The factors of four pixels whose blended values are `q`.
+    fn gains(&self, q: [Vec4; LANES]) -> Vec4;
 }
 
-impl<F: Fn([Vec4; 2]) -> f32> Gain for F {
+impl<F: Fn([Vec4; LANES]) -> Vec4> Gain for F {
     #[inline(always)]
-    fn gain(&self, q: [Vec4; 2]) -> f32 {
+    fn gains(&self, q: [Vec4; LANES]) -> Vec4 {
         self(q)
     }
 }
@@ -24,25 +32,25 @@ impl<F: Fn([Vec4; 2]) -> f32> Gain for F {
 /// The mountain's finer terrain lights each pixel.
 impl Gain for &Relief {
     #[inline(always)]
-    fn gain(&self, q: [Vec4; 2]) -> f32 {
-        Relief::gain(self, q)
+    fn gains(&self, q: [Vec4; LANES]) -> Vec4 {
+        Relief::gains(self, q)
     }
 }
 
 /// One row's values where it crosses the first corner's column.
-pub(crate) type FineRow = [Vec4; 2];
+pub(crate) type FineRow = [f32; LANES];
 
-/// Eight values blended across a triangle, and what they make of a
+/// [`LANES`] values blended across a triangle, and what they make of a
 /// pixel's light.
 pub(crate) struct Fine<G> {
     /// The values at the first corner, their change per pixel to the
     /// right and per row down, and their least and greatest corner values
     /// (a sliver's planes may overshoot its corners).
-    at0: [Vec4; 2],
-    dx: [Vec4; 2],
-    dy: [Vec4; 2],
-    lo: [Vec4; 2],
-    hi: [Vec4; 2],
+    at0: [f32; LANES],
+    dx: [f32; LANES],
+    dy: [f32; LANES],
+    lo: [f32; LANES],
+    hi: [f32; LANES],
     origin: [f32; 2],
     gain: G,
 }
@@ -51,38 +59,41 @@ impl<G: Gain> Fine<G> {
     /// Planes through the corner values `q` over the triangle of
     /// `gradient`, read by `gain`.
     #[inline]
-    pub(crate) fn new(gradient: &Gradient, q: [[Vec4; 2]; 3], gain: G) -> Self {
-        let lanes = |i: usize| {
-            let (dx, dy) = gradient.slopes(q[1][i] - q[0][i], q[2][i] - q[0][i]);
-            let lo = q[0][i].min(q[1][i]).min(q[2][i]);
-            let hi = q[0][i].max(q[1][i]).max(q[2][i]);
-            (dx, dy, lo, hi)
-        };
-        let (l0, l1) = (lanes(0), lanes(1));
+    pub(crate) fn new(gradient: &Gradient, q: [[f32; LANES]; 3], gain: G) -> Self {
+        let slopes: [(f32, f32); LANES] =
+            std::array::from_fn(|i| gradient.slopes(q[1][i] - q[0][i], q[2][i] - q[0][i]));
         Fine {
             at0: q[0],
-            dx: [l0.0, l1.0],
-            dy: [l0.1, l1.1],
-            lo: [l0.2, l1.2],
-            hi: [l0.3, l1.3],
+            dx: slopes.map(|s| s.0),
+            dy: slopes.map(|s| s.1),
+            lo: std::array::from_fn(|i| q[0][i].min(q[1][i]).min(q[2][i])),
+            hi: std::array::from_fn(|i| q[0][i].max(q[1][i]).max(q[2][i])),
             origin: gradient.origin,
             gain,
         }
     }
 
-    /// Row `y`'s start, for [`Fine::gain_at`].
+    /// Row `y`'s start, for [`Fine::gains`].
     #[inline]
     pub(crate) fn row(&self, y: u32) -> FineRow {
         let oy = y as f32 + 0.5 - self.origin[1];
-        [0, 1].map(|i| self.at0[i] + self.dy[i] * oy)
+        std::array::from_fn(|i| self.at0[i] + self.dy[i] * oy)
     }
 
-    /// The factor at the centre of pixel `x` of a row.
-    #[inline(always)]
-    pub(crate) fn gain_at(&self, row: &FineRow, x: u32) -> f32 {
-        let ox = x as f32 + 0.5 - self.origin[0];
-        let q = [0, 1].map(|i| (row[i] + self.dx[i] * ox).max(self.lo[i]).min(self.hi[i]));
-        self.gain.gain(q)
+    /// The factors of pixels `x0..x0 + out.len()` of a row, each pixel's
+    /// from its own column alone (a span cut anywhere gets the same).
+    #[inline]
+    pub(crate) fn gains(&self, row: &FineRow, x0: u32, out: &mut [f32]) {
+        let first = x0 as f32 + 0.5 - self.origin[0];
+        for (k, four) in out.chunks_mut(4).enumerate() {
+            let ox = Vec4::splat(first + (4 * k) as f32) + Vec4::new(0.0, 1.0, 2.0, 3.0);
+            let q = std::array::from_fn(|i| {
+                (Vec4::splat(row[i]) + ox * self.dx[i])
+                    .clamp(Vec4::splat(self.lo[i]), Vec4::splat(self.hi[i]))
+            });
+            let g = self.gain.gains(q).to_array();
+            four.copy_from_slice(&g[..four.len()]);
+        }
     }
 }
 
@@ -94,19 +105,32 @@ mod tests {
     #[test]
     fn the_planes_read_each_corner_back_and_stay_within_them() {
         let v = [to_fixed(0.5, 0.5), to_fixed(40.5, 0.5), to_fixed(0.5, 20.5)];
-        let q = [
-            [Vec4::splat(0.0), Vec4::splat(1.0)],
-            [Vec4::splat(40.0), Vec4::splat(3.0)],
-            [Vec4::splat(0.0), Vec4::splat(-1.0)],
-        ];
-        let fine = Fine::new(&Gradient::new(v), q, |q: [Vec4; 2]| q[0].x + 100.0 * q[1].x);
+        let corner = |a: f32, b: f32| {
+            let mut q = [0.0; LANES];
+            (q[0], q[7]) = (a, b);
+            q
+        };
+        let q = [corner(0.0, 1.0), corner(40.0, 3.0), corner(0.0, -1.0)];
+        let fine = Fine::new(&Gradient::new(v), q, |q: [Vec4; LANES]| q[0] + q[7] * 100.0);
+        let at = |x: u32, y: u32| {
+            let mut out = [0.0; 1];
+            fine.gains(&fine.row(y), x, &mut out);
+            out[0]
+        };
         // The first corner's pixel centre is the corner itself.
-        assert!((fine.gain_at(&fine.row(0), 0) - 100.0).abs() < 1e-3);
-        // Along the top edge the first lane runs 0..40 and the second 1..3.
-        let at = fine.gain_at(&fine.row(0), 20);
-        assert!((at - (20.0 + 200.0)).abs() < 1e-2, "{at}");
+        assert!((at(0, 0) - 100.0).abs() < 1e-3);
+        // Along the top edge the first lane runs 0..40 and the last 1..3.
+        assert!((at(20, 0) - (20.0 + 200.0)).abs() < 1e-2, "{}", at(20, 0));
         // Past the triangle the planes are held to the corners' range.
-        let far = fine.gain_at(&fine.row(30), 80);
-        assert!((-100.0..=340.0).contains(&far), "{far}");
+        // (At (80, 30) the first lane's 80 is held to 40; the last's 2 is
+        // within -1..=3.)
+        let far = at(80, 30);
+        assert!((far - 240.0).abs() < 1e-2, "{far}");
+        // A pixel's factor is its own, wherever its piece of a span starts.
+        let mut span = [0.0; 11];
+        fine.gains(&fine.row(5), 3, &mut span);
+        for (i, g) in span.iter().enumerate() {
+            assert_eq!(*g, at(3 + i as u32, 5), "pixel {}", 3 + i);
+        }
     }
 }

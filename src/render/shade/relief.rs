@@ -20,6 +20,7 @@
 use glam::{Vec2, Vec3, Vec4};
 
 use crate::terrain::Heightfield;
+use crate::terrain::splitmix::mix;
 
 /// Levels below the grid at most: at 4K the nearest cells are about 40
 /// pixels across, and the fifth level's bumps there are a pixel or so.
@@ -32,7 +33,9 @@ const FULL_PX: f32 = 2.0;
 const NONE_PX: f32 = 0.8;
 
 /// A face is drawn with its relief when one of its corners' cells is at
-/// least this many pixels across: the first level then shows.
+/// least this many pixels across: the first level fades in above it (its
+/// lattice has at least two steps a cell), so a face drawn plain and a
+/// refined neighbour agree where they meet.
 pub(crate) const MIN_CELL_PX: f32 = 2.0 * NONE_PX;
 
 /// How tall the first level's bumps are against the grid's own last
@@ -57,13 +60,19 @@ pub(crate) struct FinePoint {
 }
 
 impl FinePoint {
-    /// The point's values in two lanes of four: grid x and y, the slopes;
-    /// the shares, the cell's pixels and the roughness.
+    /// The point's values as a face blends them: grid x and y, the
+    /// slopes, the shares, the cell's pixels and the roughness.
     #[inline]
-    pub(crate) fn lanes(&self, g: Vec2) -> [Vec4; 2] {
+    pub(crate) fn lanes(&self, g: Vec2) -> [f32; 8] {
         [
-            Vec4::new(g.x, g.y, self.slope.x, self.slope.y),
-            Vec4::new(self.shares.x, self.shares.y, self.cell_px, self.rough),
+            g.x,
+            g.y,
+            self.slope.x,
+            self.slope.y,
+            self.shares.x,
+            self.shares.y,
+            self.cell_px,
+            self.rough,
         ]
     }
 
@@ -113,11 +122,12 @@ impl Relief {
     /// The relief below the grid of `field` (`seed` its mountain's), lit
     /// from `sun`, with cells `cell` height units wide.
     pub(crate) fn new(field: &Heightfield, seed: u64, sun: Vec3, cell: f32) -> Self {
-        let cells = (field.size().max(2) - 1) as f32;
+        let cells = field.size().max(2) - 1;
         // The land's side is one step of level 0; the grid's own last
-        // level has steps of one cell.
-        let first_level = cells.log2().ceil() as u32 + 1;
-        let first_step = 2f32.powi(first_level as i32) / cells;
+        // level has steps of one cell. In integers: a library's log2 may
+        // round 1024's to just over 10.
+        let first_level = cells.next_power_of_two().trailing_zeros() + 1;
+        let first_step = 2f32.powi(first_level as i32) / cells as f32;
         let (rough, blocks) = roughness(field);
         let mut turns = [Vec2::X; LEVELS];
         let mut offsets = [Vec2::ZERO; LEVELS];
@@ -158,8 +168,10 @@ impl Relief {
     #[inline]
     pub(crate) fn shows(&self, points: [&FinePoint; 3], colours: [u32; 3]) -> bool {
         // The most a pixel's light changes per unit of a point's shares
-        // and roughness: a level's slope at its steepest, over the cell.
-        let per = 1.5 * FIRST * self.first_step * LEVELS as f32 / self.cell;
+        // and roughness: a level's slope at its steepest (3 along each of
+        // the lattice's axes), over the cell, and a little more for the
+        // cosine's own change.
+        let per = STEEPEST * FIRST * self.first_step * LEVELS as f32 / self.cell;
         points.iter().zip(colours).any(|(p, c)| {
             let bright = [16, 8, 0]
                 .map(|s| (c >> s) & 0xff)
@@ -169,6 +181,14 @@ impl Relief {
             let change = (p.shares.x + p.shares.y * (1.0 + HOLLOW)) * p.rough * per;
             p.cell_px >= MIN_CELL_PX && change * bright as f32 >= 1.0
         })
+    }
+
+    /// Whether a point whose cells span `cell_px` of the relief's pixels
+    /// needs what the relief asks of it: a face around it may be refined
+    /// (the cells of neighbouring points span under twice as many).
+    #[inline]
+    pub(crate) fn needs(&self, cell_px: f32) -> bool {
+        cell_px >= 0.5 * MIN_CELL_PX
     }
 
     /// How many of the relief's pixels a cell spans where it spans
@@ -200,40 +220,60 @@ impl Relief {
     /// the levels that show where a cell spans `cell_px` pixels; and (z)
     /// each level's height over its width, summed: how far the point lies
     /// in a hollow (below 0) or on a knoll.
+    #[cfg(test)]
+    fn slope(&self, g: Vec2, cell_px: f32, rough: f32) -> Vec3 {
+        let [x, y, z] = self.slopes(
+            [Vec4::splat(g.x), Vec4::splat(g.y)],
+            Vec4::splat(cell_px),
+            Vec4::splat(rough),
+        );
+        Vec3::new(x.x, y.x, z.x)
+    }
+
+    /// [`Relief::slope`] of four pixels at once, a pixel a lane: grid x
+    /// and y `g`, the cells' pixels and the roughness.
     #[inline]
-    pub(crate) fn slope(&self, g: Vec2, cell_px: f32, rough: f32) -> Vec3 {
-        let mut slope = Vec3::ZERO;
+    fn slopes(&self, g: [Vec4; 2], cell_px: Vec4, rough: Vec4) -> [Vec4; 3] {
+        let mut slope = [Vec4::ZERO; 3];
         let mut step = self.first_step;
         let mut px = cell_px / self.first_step;
         // Each level's bumps are half as tall and half as wide: the same
         // slope, faded by how many pixels they span.
         for k in 0..LEVELS {
             let w = fade(px);
-            if w == 0.0 {
+            if w.cmpeq(Vec4::ZERO).all() {
                 break;
             }
-            slope += self.level(k, g * step) * w;
+            let level = self.level(k, [g[0] * step, g[1] * step]);
+            for (s, l) in slope.iter_mut().zip(level) {
+                *s += l * w;
+            }
             step *= 2.0;
             px *= 0.5;
         }
         // A level's slope in grid steps: its bumps' height over its step.
-        slope * (FIRST * rough * self.first_step)
+        slope.map(|s| s * (rough * (FIRST * self.first_step)))
     }
 
     /// The slope of level `k` below the grid at `p` (in its lattice
-    /// steps, before its turn), in its bumps' height per lattice step, and
-    /// the height there in the same unit.
+    /// steps, before its turn; four pixels, a pixel a lane), in its bumps'
+    /// height per lattice step, and the height there in the same unit.
     #[inline]
-    fn level(&self, k: usize, p: Vec2) -> Vec3 {
-        let t = self.turns[k];
-        let u = Vec2::new(p.x * t.x - p.y * t.y, p.x * t.y + p.y * t.x) + self.offsets[k];
-        let d = self.lattice.value_slope(self.first_level + k as u32, u);
+    fn level(&self, k: usize, p: [Vec4; 2]) -> [Vec4; 3] {
+        let (t, o) = (self.turns[k], self.offsets[k]);
+        let u = [
+            p[0] * t.x - p[1] * t.y + Vec4::splat(o.x),
+            p[0] * t.y + p[1] * t.x + Vec4::splat(o.y),
+        ];
+        let [dx, dy, v] = self.lattice.value_slope(self.first_level + k as u32, u);
         // Back from the turned lattice to the grid's directions.
-        Vec3::new(d.x * t.x + d.y * t.y, -d.x * t.y + d.y * t.x, d.z)
+        [dx * t.x + dy * t.y, dy * t.x - dx * t.y, v]
     }
 
-    /// How much brighter (over 1) or darker the finer terrain makes a
-    /// pixel whose blended [`FinePoint::lanes`] are `q`.
+    /// How much brighter (over 1) or darker the finer terrain makes four
+    /// pixels, a pixel a lane, whose blended [`FinePoint::lanes`] are `q`
+    /// (grid x and y, the slopes, the shares, the cells' pixels and the
+    /// roughness).
     ///
     /// The change of the light is taken to first order in the finer
     /// slopes: bumps as often up as down then lighten and darken about
@@ -241,28 +281,37 @@ impl Relief {
     /// (the whole change would darken ground square to the sun, where any
     /// turn lowers the cosine, and lighten faces turned away).
     #[inline]
-    pub(crate) fn gain(&self, q: [Vec4; 2]) -> f32 {
-        let [a, b] = q;
-        let fine = self.slope(Vec2::new(a.x, a.y), b.z, b.w) / self.cell;
-        let d = Vec2::new(fine.x, fine.y);
+    pub(crate) fn gains(&self, q: [Vec4; 8]) -> Vec4 {
+        let [gx, gy, nx, ny, direct, sky, cell_px, rough] = q;
+        let [sx, sy, depth] = self.slopes([gx, gy], cell_px, rough).map(|s| s / self.cell);
         // The palette's y runs to the back, the grid's to the front: the
-        // normal (x, y, 1) turns to (x - dx, y + dy, 1).
-        let turn = Vec2::new(-d.x, d.y);
-        let n = Vec3::new(a.z, a.w, 1.0);
-        let inv = n.length_recip();
-        let cos = n.dot(self.sun) * inv;
+        // normal (x, y, 1) turns by (-sx, sy, 0).
+        let (tx, ty) = (-sx, sy);
+        let len = Vec4::from_array((nx * nx + ny * ny + Vec4::ONE).to_array().map(f32::sqrt));
+        let inv = Vec4::ONE / len;
+        let l = self.sun;
+        let cos = (nx * l.x + ny * l.y + Vec4::splat(l.z)) * inv;
         // d/dturn of n.sun / |n| and of 1 / |n| (the normal's upward part).
-        let along = turn.dot(Vec2::new(n.x, n.y)) * inv * inv;
-        let d_cos = (turn.dot(Vec2::new(self.sun.x, self.sun.y)) - cos * along * (1.0 / inv)) * inv;
+        let along = (tx * nx + ty * ny) * inv * inv;
+        let d_cos = (tx * l.x + ty * l.y) * inv - cos * along;
         let d_up = -along * inv;
         // Faces turned from the light get none of it; the change fades in
         // past the terminator, so no line is drawn there.
-        let lit = (cos * TERMINATOR).clamp(0.0, 1.0);
+        let lit = (cos * TERMINATOR).clamp(Vec4::ZERO, Vec4::ONE);
         // A hollow sees less of the sky than a knoll.
-        let sky = b.y * (d_up + HOLLOW * fine.z);
-        (1.0 + b.x * lit * d_cos + sky).clamp(GAIN.0, GAIN.1)
+        let sky = sky * (d_up + depth * HOLLOW);
+        let gain = (Vec4::ONE + direct * lit * d_cos + sky)
+            .clamp(Vec4::splat(GAIN.0), Vec4::splat(GAIN.1));
+        // A clamp keeps NaN (a point's normal gone wrong), and a pixel
+        // would turn white: such a pixel keeps the grid's light.
+        Vec4::select(gain.is_finite_mask(), gain, Vec4::ONE)
     }
 }
+
+/// The steepest slope of a level's bumps, in their height per lattice
+/// step (3 along each axis of the lattice, and the cosine's change per
+/// unit of turn a little over 1).
+const STEEPEST: f32 = 5.0;
 
 /// Over how much of the cosine past the terminator the direct light's
 /// change fades in (its inverse).
@@ -274,16 +323,19 @@ const HOLLOW: f32 = 1.0;
 /// The darkest and the lightest the finer terrain makes a pixel.
 const GAIN: (f32, f32) = (0.3, 1.7);
 
-/// How much of a level shows whose bumps span `px` pixels.
+/// How much of a level shows whose bumps span `px` pixels (a pixel a
+/// lane).
 #[inline]
-fn fade(px: f32) -> f32 {
-    let t = ((px - NONE_PX) / (FULL_PX - NONE_PX)).clamp(0.0, 1.0);
-    t * t * (3.0 - 2.0 * t)
+fn fade(px: Vec4) -> Vec4 {
+    let t =
+        ((px - Vec4::splat(NONE_PX)) * (1.0 / (FULL_PX - NONE_PX))).clamp(Vec4::ZERO, Vec4::ONE);
+    t * t * (Vec4::splat(3.0) - t * 2.0)
 }
 
 /// Lattice points a side of the table of values: a level repeats after
-/// this many of its steps, over a hundred cells even for the first level
-/// below the grid, and turned unlike any other level.
+/// this many of its steps (the first below the grid every 128 cells, the
+/// fifth every 8, where a cell spans tens of pixels and the five are
+/// summed, each turned unlike the others).
 const SIDE: usize = 256;
 
 /// The values (-1..=1) at the lattice points of every level of one
@@ -316,43 +368,37 @@ impl Lattice {
         f32::from(self.values[i]) * (1.0 / 127.0)
     }
 
-    /// The slope of level `level`'s value noise at lattice position `u`,
-    /// in units of its bumps' height per lattice step, and (z) its value:
-    /// each lattice point a value in -1..=1, blended between them along a
-    /// smooth step.
+    /// The slope of level `level`'s value noise at lattice position `u`
+    /// (four pixels, a pixel a lane), in units of its bumps' height per
+    /// lattice step, and its value: each lattice point a value in -1..=1,
+    /// blended between them along a smooth step.
     #[inline]
-    fn value_slope(&self, level: u32, u: Vec2) -> Vec3 {
-        let (ix, iy) = (floor(u.x), floor(u.y));
-        let (tx, ty) = (u.x - ix as f32, u.y - iy as f32);
-        let corner = |dx: i32, dy: i32| self.at(level, ix.wrapping_add(dx), iy.wrapping_add(dy));
-        let v = Vec4::new(corner(0, 0), corner(1, 0), corner(0, 1), corner(1, 1));
-        let (sx, sy) = (tx * tx * (3.0 - 2.0 * tx), ty * ty * (3.0 - 2.0 * ty));
-        let (dsx, dsy) = (6.0 * tx * (1.0 - tx), 6.0 * ty * (1.0 - ty));
-        let k = v.x - v.y - v.z + v.w;
-        let value = v.x + (v.y - v.x) * sx + (v.z - v.x) * sy + k * sx * sy;
-        Vec3::new(
-            dsx * (v.y - v.x + k * sy),
-            dsy * (v.z - v.x + k * sx),
+    fn value_slope(&self, level: u32, u: [Vec4; 2]) -> [Vec4; 3] {
+        let (fx, fy) = (u[0].floor(), u[1].floor());
+        let (tx, ty) = (u[0] - fx, u[1] - fy);
+        let (ix, iy) = (fx.to_array(), fy.to_array());
+        // The four corners of each pixel's lattice cell, a pixel a lane.
+        let corner = |dx: i32, dy: i32| {
+            Vec4::from_array(std::array::from_fn(|i| {
+                self.at(
+                    level,
+                    (ix[i] as i32).wrapping_add(dx),
+                    (iy[i] as i32).wrapping_add(dy),
+                )
+            }))
+        };
+        let (v00, v10, v01, v11) = (corner(0, 0), corner(1, 0), corner(0, 1), corner(1, 1));
+        let three = Vec4::splat(3.0);
+        let (sx, sy) = (tx * tx * (three - tx * 2.0), ty * ty * (three - ty * 2.0));
+        let (dsx, dsy) = (tx * (Vec4::ONE - tx) * 6.0, ty * (Vec4::ONE - ty) * 6.0);
+        let k = v00 - v10 - v01 + v11;
+        let value = v00 + (v10 - v00) * sx + (v01 - v00) * sy + k * sx * sy;
+        [
+            dsx * (v10 - v00 + k * sy),
+            dsy * (v01 - v00 + k * sx),
             value,
-        )
+        ]
     }
-}
-
-/// The greatest integer at most `v` (`f32::floor` is a call into the C
-/// library on the baseline x86-64 target, and this runs a few times a
-/// pixel).
-#[inline(always)]
-fn floor(v: f32) -> i32 {
-    let i = v as i32;
-    i - i32::from(v < i as f32)
-}
-
-/// A 64-bit mix (splitmix64's finaliser).
-#[inline]
-fn mix(mut z: u64) -> u64 {
-    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-    z ^ (z >> 31)
 }
 
 /// How far grid point (`x`, `y`) stands from the mean of its four
@@ -383,9 +429,11 @@ fn roughness(field: &Heightfield) -> (Vec<f32>, usize) {
         for bx in 0..blocks {
             let (cx, cy) = (bx * BLOCK, by * BLOCK);
             sample.clear();
-            let ys = cy.saturating_sub(half)..(cy + half).min(n);
-            for y in ys.step_by(2) {
-                for x in (cx.saturating_sub(half)..(cx + half).min(n)).step_by(2) {
+            // At least the field's last point: past the field's end a
+            // block's window would be empty.
+            let window = |c: usize| c.saturating_sub(half).min(n - 1)..(c + half).clamp(1, n);
+            for y in window(cy).step_by(2) {
+                for x in window(cx).step_by(2) {
                     sample.push(laplacian(field, x, y));
                 }
             }
@@ -428,11 +476,9 @@ mod tests {
 
     #[test]
     fn a_level_fades_in_between_its_two_sizes() {
-        assert_eq!(fade(NONE_PX), 0.0);
-        assert_eq!(fade(0.5 * NONE_PX), 0.0);
-        assert_eq!(fade(FULL_PX), 1.0);
-        assert_eq!(fade(40.0), 1.0);
-        let mid = fade(0.5 * (NONE_PX + FULL_PX));
+        let px = Vec4::new(NONE_PX, 0.5 * NONE_PX, FULL_PX, 40.0);
+        assert_eq!(fade(px), Vec4::new(0.0, 0.0, 1.0, 1.0));
+        let mid = fade(Vec4::splat(0.5 * (NONE_PX + FULL_PX))).x;
         assert!((mid - 0.5).abs() < 1e-6, "{mid}");
     }
 
@@ -451,6 +497,30 @@ mod tests {
     }
 
     #[test]
+    fn the_gain_is_the_first_order_change_of_the_light_on_the_finer_slope() {
+        let sun = Vec3::new(-0.4, 0.5, 0.6).normalize();
+        let cell = 0.25;
+        let relief = Relief::new(&Heightfield::flat(10, 250.0), 3, sun, cell);
+        let cos = |n: Vec3| n.normalize().dot(sun);
+        for i in 0..40 {
+            let g = Vec2::new(0.37 * i as f32 + 0.11, 3.0 - 0.23 * i as f32);
+            let (nx, ny) = (0.3 - 0.02 * i as f32, 0.1 + 0.01 * i as f32);
+            // Direct light alone, bumps small enough for the first order.
+            let q = |rough: f32| [g.x, g.y, nx, ny, 1.0, 0.0, 24.0, rough].map(Vec4::splat);
+            assert_eq!(relief.gains(q(0.0)), Vec4::ONE, "no bumps, no change");
+            let rough = 1e-5;
+            let s = relief.slope(g, 24.0, rough) / cell;
+            // The palette's y runs to the back, the grid's to the front.
+            let exact = cos(Vec3::new(nx - s.x, ny + s.y, 1.0)) - cos(Vec3::new(nx, ny, 1.0));
+            let got = relief.gains(q(rough)).x - 1.0;
+            assert!(
+                (got - exact).abs() <= 0.05 * exact.abs() + 2e-7,
+                "{i}: gain - 1 = {got}, the light's change {exact}"
+            );
+        }
+    }
+
+    #[test]
     fn the_relief_is_the_same_land_at_every_grid_size() {
         // A level's lattice is laid over the land, not the grid: the
         // second level below a grid of 513 points is the first below one
@@ -464,8 +534,9 @@ mod tests {
             let (a, b) = (land * 512.0, land * 1024.0);
             let (pa, pb) = (a * coarse.first_step * 2.0, b * fine.first_step);
             assert_eq!(pa, pb);
-            assert_eq!(coarse.level(1, pa), fine.level(0, pb));
-            assert_ne!(coarse.level(0, pa), fine.level(0, pb));
+            let lanes = |p: Vec2| [Vec4::splat(p.x), Vec4::splat(p.y)];
+            assert_eq!(coarse.level(1, lanes(pa)), fine.level(0, lanes(pb)));
+            assert_ne!(coarse.level(0, lanes(pa)), fine.level(0, lanes(pb)));
         }
     }
 
@@ -487,7 +558,10 @@ mod tests {
             let e = 1e-3;
             let dx = (value(u + Vec2::X * e) - value(u - Vec2::X * e)) / (2.0 * e);
             let dy = (value(u + Vec2::Y * e) - value(u - Vec2::Y * e)) / (2.0 * e);
-            let d = lattice.value_slope(3, u);
+            // Each lane a pixel of its own: the same point in lane 2.
+            let lanes = [Vec4::new(0.0, 1.5, x, -7.25), Vec4::new(0.0, 2.5, y, 3.75)];
+            let [sx, sy, v] = lattice.value_slope(3, lanes);
+            let d = Vec3::new(sx.z, sy.z, v.z);
             assert!(
                 (d.x - dx).abs() < 2e-2 && (d.y - dy).abs() < 2e-2,
                 "{d} against ({dx}, {dy})"
