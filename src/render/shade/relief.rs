@@ -359,13 +359,24 @@ impl Lattice {
     }
 
     /// The value at lattice point (`x`, `y`) of level `level`.
-    #[inline(always)]
+    #[cfg(test)]
     fn at(&self, level: u32, x: i32, y: i32) -> f32 {
+        let [v, ..] = self.cell(level, x, y);
+        v
+    }
+
+    /// The values at the corners of the lattice cell whose first corner
+    /// is (`x`, `y`), of level `level`: that corner, the next across, the
+    /// next down and the one across and down.
+    #[inline(always)]
+    fn cell(&self, level: u32, x: i32, y: i32) -> [f32; 4] {
         let m = SIDE - 1;
-        let (x, y) = (x as usize, y as usize);
-        let (lx, ly) = (level as usize * 97, level as usize * 59);
-        let i = (y.wrapping_add(ly) & m) * SIDE + (x.wrapping_add(lx) & m);
-        f32::from(self.values[i]) * (1.0 / 127.0)
+        // Each level reads the table from a place of its own.
+        let x = (x as usize).wrapping_add(level as usize * 97);
+        let y = (y as usize).wrapping_add(level as usize * 59);
+        let (x0, x1) = (x & m, x.wrapping_add(1) & m);
+        let (y0, y1) = ((y & m) * SIDE, (y.wrapping_add(1) & m) * SIDE);
+        [y0 + x0, y0 + x1, y1 + x0, y1 + x1].map(|i| f32::from(self.values[i]) * (1.0 / 127.0))
     }
 
     /// The slope of level `level`'s value noise at lattice position `u`
@@ -378,16 +389,10 @@ impl Lattice {
         let (tx, ty) = (u[0] - fx, u[1] - fy);
         let (ix, iy) = (fx.to_array(), fy.to_array());
         // The four corners of each pixel's lattice cell, a pixel a lane.
-        let corner = |dx: i32, dy: i32| {
-            Vec4::from_array(std::array::from_fn(|i| {
-                self.at(
-                    level,
-                    (ix[i] as i32).wrapping_add(dx),
-                    (iy[i] as i32).wrapping_add(dy),
-                )
-            }))
-        };
-        let (v00, v10, v01, v11) = (corner(0, 0), corner(1, 0), corner(0, 1), corner(1, 1));
+        let cells: [[f32; 4]; 4] =
+            std::array::from_fn(|i| self.cell(level, ix[i] as i32, iy[i] as i32));
+        let corner = |c: usize| Vec4::from_array(cells.map(|v| v[c]));
+        let (v00, v10, v01, v11) = (corner(0), corner(1), corner(2), corner(3));
         let three = Vec4::splat(3.0);
         let (sx, sy) = (tx * tx * (three - tx * 2.0), ty * ty * (three - ty * 2.0));
         let (dsx, dsy) = (tx * (Vec4::ONE - tx) * 6.0, ty * (Vec4::ONE - ty) * 6.0);
