@@ -18,23 +18,6 @@ crops='30 foreground-slope 200+1500
 30 mirrored-shore 2900+1450
 1 valley-forest 1300+1500'
 
-echo "$crops" | while read -r seed what at; do
-    for who in before after; do
-        if [ "$who" = before ]; then bin=$before; else bin=$after; fi
-        frame="$tmp/$who-$seed.png"
-        [ -f "$frame" ] ||
-            "$bin" render --config "$tmp/empty.toml" --size 3840x2160 --set "seed=$seed" -o "$frame" >/dev/null
-        convert "$frame" -crop "800x500+${at}" +repage -set label "seed $seed, $what at $at: $who" \
-            "$tmp/tile-$what-$who.png"
-    done
-    echo "$tmp/tile-$what-before.png $tmp/tile-$what-after.png" >>"$tmp/tiles"
-done
-# Before on the left, after on the right, one crop a row. JPEG with full
-# resolution colour (4:4:4), as one_to_one.sh: the detail is a pixel or two.
-# shellcheck disable=SC2046 # one argument per tile file
-montage $(cat "$tmp/tiles") -tile 2x -geometry +3+3 -pointsize 20 -background white \
-    -title "1:1 crops of 3840x2160 frames, defaults\nbefore (left): the grid's light blended; after (right): the relief below the grid" \
-    "$tmp/sheet.png"
-out=docs/fine-relief-2160p.jpg
-convert "$tmp/sheet.png" -strip -sampling-factor 4:4:4 -quality 88 "$out"
-echo "$out: $(wc -c <"$out") bytes"
+echo "$crops" | crop_sheet docs/fine-relief-2160p.jpg \
+    "1:1 crops of 3840x2160 frames, defaults
+before (left): the grid's light blended; after (right): the relief below the grid"

@@ -12,28 +12,11 @@
 set -eu
 . "$(dirname "$0")/lib/two_builds.sh" "$@"
 
-# seed, then one 800x500 crop as X+Y of the 3840x2160 frame.
-crops='28 1500+1450
-15 2600+600
-8 1600+600'
+# seed, what the crop shows, then one 800x500 crop as X+Y of the 3840x2160 frame.
+crops='28 face 1500+1450
+15 face 2600+600
+8 face 1600+600'
 
-echo "$crops" | while read -r seed at; do
-    for who in before after; do
-        if [ "$who" = before ]; then bin=$before; else bin=$after; fi
-        frame="$tmp/$who-$seed.png"
-        "$bin" render --config "$tmp/empty.toml" --size 3840x2160 --set "seed=$seed" -o "$frame" >/dev/null
-        convert "$frame" -crop "800x500+${at}" +repage -set label "seed $seed at $at: $who" \
-            "$tmp/tile-$seed-$who.png"
-    done
-    echo "$tmp/tile-$seed-before.png $tmp/tile-$seed-after.png" >>"$tmp/tiles"
-done
-# Before on the left, after on the right, one seed a row. JPEG with full
-# resolution colour (4:4:4), as one_to_one.sh: the streaks are a pixel or
-# two of colour.
-# shellcheck disable=SC2046 # one argument per tile file
-montage $(cat "$tmp/tiles") -tile 2x -geometry +3+3 -pointsize 20 -background white \
-    -title "1:1 crops of 3840x2160 frames, defaults\nbefore (left): curtains; after (right): strata" \
-    "$tmp/sheet.png"
-out=docs/steep-faces-2160p.jpg
-convert "$tmp/sheet.png" -strip -sampling-factor 4:4:4 -quality 88 "$out"
-echo "$out: $(wc -c <"$out") bytes"
+echo "$crops" | crop_sheet docs/steep-faces-2160p.jpg \
+    "1:1 crops of 3840x2160 frames, defaults
+before (left): curtains; after (right): strata"

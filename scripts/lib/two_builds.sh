@@ -1,5 +1,5 @@
 # Sourced by the scripts that draw crops with two builds (one_to_one.sh,
-# mirror_outline.sh): checks their two arguments, sets $before and $after
+# mirror_outline.sh, steep_faces.sh, fine_relief.sh): checks their two arguments, sets $before and $after
 # to the builds' absolute paths (the scripts work from the repository's
 # top folder), checks for ImageMagick's montage, moves to the top folder,
 # and makes $tmp (removed on exit) with an empty preferences file in it,
@@ -22,3 +22,30 @@ cd "$(dirname "$0")/.."
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 : >"$tmp/empty.toml"
+
+# crop_sheet OUT TITLE: reads lines "SEED WHAT X+Y" on its input; draws each
+# seed at 3840x2160 at the defaults with both builds (once a seed), crops
+# 800x500 at X+Y from each, and writes OUT: before on the left, after on the
+# right, a crop a row, titled TITLE. JPEG with full-resolution colour (4:4:4),
+# as one_to_one.sh: what the crops show is a pixel or two of colour.
+crop_sheet() {
+    out=$1
+    title=$2
+    : >"$tmp/tiles"
+    while read -r seed what at; do
+        for who in before after; do
+            if [ "$who" = before ]; then bin=$before; else bin=$after; fi
+            frame="$tmp/$who-$seed.png"
+            [ -f "$frame" ] ||
+                "$bin" render --config "$tmp/empty.toml" --size 3840x2160 --set "seed=$seed" -o "$frame" >/dev/null
+            convert "$frame" -crop "800x500+${at}" +repage -set label "seed $seed, $what at $at: $who" \
+                "$tmp/tile-$seed-$what-$who.png"
+        done
+        echo "$tmp/tile-$seed-$what-before.png $tmp/tile-$seed-$what-after.png" >>"$tmp/tiles"
+    done
+    # shellcheck disable=SC2046 # one argument per tile file
+    montage $(cat "$tmp/tiles") -tile 2x -geometry +3+3 -pointsize 20 -background white \
+        -title "$title" "$tmp/sheet.png"
+    convert "$tmp/sheet.png" -strip -sampling-factor 4:4:4 -quality 88 "$out"
+    echo "$out: $(wc -c <"$out") bytes"
+}
