@@ -534,7 +534,7 @@ fn jitter(mean_height: f32) -> f32 {
 }
 
 /// Rec. 709 luminance.
-pub(crate) fn luminance(c: Rgb) -> f32 {
+fn luminance(c: Rgb) -> f32 {
     0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]
 }
 
