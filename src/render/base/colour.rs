@@ -26,6 +26,12 @@ pub fn ramp(stops: &[(f32, Rgb)], t: f32) -> Rgb {
     prev_c
 }
 
+/// Rec. 709 luminance.
+#[inline]
+pub fn luminance(c: Rgb) -> f32 {
+    0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]
+}
+
 /// Hermite step from 0 at `e0` to 1 at `e1` (0 below, 1 above).
 #[inline]
 pub fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {

@@ -393,22 +393,23 @@ impl Scene<'_> {
             return;
         }
         let v = [c[0].p, c[1].p, c[2].p];
-        if self.rock(&c).is_none() && self.fine_relief(&c).is_none() {
+        // Whether the relief shows is decided once a face.
+        let relief = self.fine_relief(&c);
+        if self.rock(&c).is_none() && relief.is_none() {
             return self.paint_blend(canvas, v, [c[0].colour, c[1].colour, c[2].colour]);
         }
         paint_spans(
             canvas,
             v,
-            || self.land_fill(&c),
+            || self.land_fill(&c, relief),
             |canvas, f, y, x0, x1| f.fill(canvas, y, x0, x1),
         );
     }
 
     /// The land face `c` under smooth shading: its corners blended, with
-    /// the rock's strata across it where they show and the relief below
-    /// the grid where it shows.
-    fn land_fill(&self, c: &Face) -> LandFill<'_> {
-        let relief = self.fine_relief(c);
+    /// the rock's strata across it where they show and `relief` (the
+    /// relief below the grid, where [`Scene::fine_relief`] says it shows).
+    fn land_fill<'s>(&'s self, c: &Face, relief: Option<&'s Relief>) -> LandFill<'s> {
         if let Some(strata) = self.rock(c) {
             return banded(strata, c, relief);
         }
@@ -457,7 +458,7 @@ impl Scene<'_> {
     /// colour.
     fn land_side(&self, c: &Face, normal: Vec3, lit: f32) -> Side<'_> {
         if self.smooth() {
-            Side::Land(Box::new(self.land_fill(c)))
+            Side::Land(Box::new(self.land_fill(c, self.fine_relief(c))))
         } else {
             Side::One(self.land_colour(c, normal, lit))
         }

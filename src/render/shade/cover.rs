@@ -629,7 +629,7 @@ mod tests {
     /// at either end of its draw; the horizon lighter than the top.
     #[test]
     fn a_worlds_night_sky_is_dark_but_never_black() {
-        let luma = |c: Rgb| 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+        let luma = crate::render::base::colour::luminance;
         for world in DRAWN {
             for v in [0.0, 0.33, 0.66, 0.99] {
                 let night = [

@@ -14,7 +14,7 @@
 
 use glam::Vec3;
 
-use crate::render::base::colour::Rgb;
+use crate::render::base::colour::{Rgb, luminance};
 use crate::settings::Sun;
 use crate::terrain::Heightfield;
 
@@ -303,7 +303,7 @@ impl Lighting {
         let sky = if self.classic {
             1.0
         } else {
-            (0.6 + 0.4 * unit(normal.z)) * (SKY_FLOOR + (1.0 - SKY_FLOOR) * unit(seen))
+            facing_sky(normal.z) * open_sky(seen)
         };
         [0, 1, 2].map(|i| self.direct[i] * direct + self.ambient[i] * sky)
     }
@@ -314,15 +314,32 @@ impl Lighting {
     /// normal's upward part: how much a slightly turned normal changes
     /// it (the finer relief's light).
     pub(crate) fn shares(&self, normal: Vec3, lit: f32, seen: f32) -> glam::Vec2 {
-        let luma = |c: Rgb| 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
-        let direct = luma(self.direct) * unit(lit);
-        let sky = luma(self.ambient) * (SKY_FLOOR + (1.0 - SKY_FLOOR) * unit(seen));
-        let total = direct * unit(normal.dot(self.sun)) + sky * (0.6 + 0.4 * unit(normal.z));
+        let direct = luminance(self.direct) * unit(lit);
+        let sky = luminance(self.ambient) * open_sky(seen);
+        let total = direct * unit(normal.dot(self.sun)) + sky * facing_sky(normal.z);
         if total <= 0.0 || self.classic {
             return glam::Vec2::ZERO;
         }
-        glam::Vec2::new(direct, 0.4 * sky) / total
+        glam::Vec2::new(direct, SKY_TILT * sky) / total
     }
+}
+
+/// The share of the sky a wall sees, and how much more a flat face does.
+const SKY_WALL: f32 = 0.6;
+const SKY_TILT: f32 = 0.4;
+
+/// The share of the sky a face whose unit normal rises `z` sees (a flat
+/// face all of it, a wall [`SKY_WALL`]).
+#[inline]
+fn facing_sky(z: f32) -> f32 {
+    SKY_WALL + SKY_TILT * unit(z)
+}
+
+/// How much of the sky's light reaches a point that sees `seen` of the
+/// sky: even a valley floor gets [`SKY_FLOOR`].
+#[inline]
+fn open_sky(seen: f32) -> f32 {
+    SKY_FLOOR + (1.0 - SKY_FLOOR) * unit(seen)
 }
 
 /// `v` limited to 0..=1, with NaN as 0.

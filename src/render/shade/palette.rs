@@ -30,7 +30,8 @@ use super::listing;
 use super::night;
 use super::strata;
 use crate::render::base::colour::{
-    Rgb, mix, mix_packed, pack, ramp, scale_packed, scale_packed3, smoothstep, to_u32, unpack,
+    Rgb, luminance, mix, mix_packed, pack, ramp, scale_packed, scale_packed3, smoothstep, to_u32,
+    unpack,
 };
 use crate::settings::{ColorMode, Look, Settings, Sun, World};
 use crate::terrain::Heightfield;
@@ -531,11 +532,6 @@ fn jitter(mean_height: f32) -> f32 {
     let mixed = mean_height.to_bits().wrapping_mul(0x9e37_79b1) >> 16;
     // Multiply-shift maps 16 random bits onto 0..=2J without a division.
     (((mixed * (2 * JITTER_BINS as u32 + 1)) >> 16) as i32 - JITTER_BINS) as f32
-}
-
-/// Rec. 709 luminance.
-fn luminance(c: Rgb) -> f32 {
-    0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]
 }
 
 /// The tint each colour filter multiplies luminance by; `None` for modes
