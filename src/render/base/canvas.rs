@@ -160,6 +160,21 @@ impl<'a> Canvas<'a> {
         runs
     }
 
+    /// The first run `a..b` of the pixels `x0..x1` of row `y` (already
+    /// clipped) a write would change: on a first-write canvas unwritten
+    /// ones, on one that keeps the last write all of them. A pixel whose
+    /// colour costs much need not be worked out where it would not show.
+    #[inline]
+    pub(crate) fn next_open(&self, y: u32, x0: u32, x1: u32) -> Option<(u32, u32)> {
+        if self.solid.is_none() {
+            return (x0 < x1).then_some((x0, x1));
+        }
+        let row = &self.rows[(y - self.y0) as usize];
+        let open = |x: u32| row[(x - self.x0) as usize] == UNSET;
+        let a = (x0..x1).find(|&x| open(x))?;
+        Some((a, (a..x1).find(|&x| !open(x)).unwrap_or(x1)))
+    }
+
     /// Sets row `y`, columns `x0..x1` to one colour, as [`Canvas::fill_with`].
     #[inline(always)]
     pub(crate) fn fill(&mut self, y: u32, x0: u32, x1: u32, colour: u32) {

@@ -7,7 +7,7 @@ use crate::render::base::canvas::Canvas;
 use crate::render::base::colour::blend_packed;
 use crate::render::base::colour::mix_packed;
 use crate::render::base::fixed::{Fixed2, SUBPIXEL};
-use crate::render::scan::banded::{Banded, Fill};
+use crate::render::scan::banded::{Banded, FaceFill, Fill};
 use crate::render::scan::blend::Blend;
 use crate::render::scan::fine::Fine;
 use crate::render::scan::gradient::Gradient;
@@ -398,11 +398,12 @@ impl Scene<'_> {
         if self.rock(&c).is_none() && relief.is_none() {
             return self.paint_blend(canvas, v, [c[0].colour, c[1].colour, c[2].colour]);
         }
-        paint_spans(
+        paint_spans_then(
             canvas,
             v,
-            || self.land_fill(&c, relief),
+            || FaceFill::new(self.land_fill(&c, relief)),
             |canvas, f, y, x0, x1| f.fill(canvas, y, x0, x1),
+            |canvas, f| f.finish(canvas),
         );
     }
 
@@ -865,7 +866,20 @@ fn paint_spans<S>(
     canvas: &mut Canvas,
     v: [Fixed2; 3],
     make: impl FnOnce() -> S,
+    fill: impl FnMut(&mut Canvas, &mut S, u32, u32, u32),
+) {
+    paint_spans_then(canvas, v, make, fill, |_, _| {});
+}
+
+/// [`paint_spans`], then `finish(canvas, state)` if the state was made
+/// (to set what `fill` held back).
+#[inline(always)]
+fn paint_spans_then<S>(
+    canvas: &mut Canvas,
+    v: [Fixed2; 3],
+    make: impl FnOnce() -> S,
     mut fill: impl FnMut(&mut Canvas, &mut S, u32, u32, u32),
+    finish: impl FnOnce(&mut Canvas, &mut S),
 ) {
     let Some(t) = Triangle::new(v, canvas.clip()) else {
         return;
@@ -880,4 +894,7 @@ fn paint_spans<S>(
         let s = state.get_or_insert_with(|| (make.take().expect("made once"))());
         fill(canvas, s, y, x0, x1);
     });
+    if let Some(s) = &mut state {
+        finish(canvas, s);
+    }
 }

@@ -64,30 +64,131 @@ impl<T: Tone, G: Gain> Fill<T, G> {
     /// Sets the pixels `x0..x1` of row `y`.
     #[inline]
     pub(crate) fn fill(&self, canvas: &mut Canvas, y: u32, x0: u32, x1: u32) {
-        match self {
-            Fill::Plain(b) => {
+        match (self, self.fine()) {
+            (_, Some(fine)) => in_pieces(fine, &fine.row(y), x0, x1, |x0, x1, gains| {
+                self.fill_lit(canvas, y, x0, x1, gains)
+            }),
+            (Fill::Banded(b), None) => {
+                let row = b.row(y);
+                canvas.fill_with(y, x0, x1, |x| b.at(&row, x, 1.0))
+            }
+            (Fill::Plain(b) | Fill::Fine(b, _), None) => {
                 let row = b.row(y);
                 canvas.fill_with(y, x0, x1, |x| b.at(&row, x));
             }
-            Fill::Fine(b, fine) => {
-                let (row, fine_row) = (b.row(y), fine.row(y));
-                in_pieces(fine, &fine_row, x0, x1, |x0, x1, gains| {
-                    canvas.fill_with(y, x0, x1, |x| {
-                        let gain = gains[(x - x0) as usize];
-                        packed_lanes(lighter(b.lanes_at(&row, x), gain))
-                    })
+        }
+    }
+
+    /// The relief below the grid over the face, where it shows.
+    #[inline(always)]
+    fn fine(&self) -> Option<&Fine<G>> {
+        match self {
+            Fill::Plain(_) => None,
+            Fill::Fine(_, fine) => Some(fine),
+            Fill::Banded(b) => b.fine.as_ref(),
+        }
+    }
+
+    /// Sets the pixels `x0..x1` of row `y`, each `gains[x - x0]` times as
+    /// bright as the face makes it.
+    #[inline(always)]
+    fn fill_lit(&self, canvas: &mut Canvas, y: u32, x0: u32, x1: u32, gains: &[f32]) {
+        let gain = |x: u32| gains[(x - x0) as usize];
+        match self {
+            Fill::Plain(b) | Fill::Fine(b, _) => {
+                let row = b.row(y);
+                canvas.fill_with(y, x0, x1, |x| {
+                    packed_lanes(lighter(b.lanes_at(&row, x), gain(x)))
                 });
             }
             Fill::Banded(b) => {
                 let row = b.row(y);
-                match &b.fine {
-                    None => canvas.fill_with(y, x0, x1, |x| b.at(&row, x, 1.0)),
-                    Some(fine) => in_pieces(fine, &fine.row(y), x0, x1, |x0, x1, gains| {
-                        canvas.fill_with(y, x0, x1, |x| b.at(&row, x, gains[(x - x0) as usize]))
-                    }),
-                }
+                canvas.fill_with(y, x0, x1, |x| b.at(&row, x, gain(x)));
             }
         }
+    }
+}
+
+/// Spans of one face held back at most.
+const HELD: usize = 8;
+
+/// A face's fill whose short spans are held back, so that the relief's
+/// factors of their pixels are worked out four at a time across rows: a
+/// refined face is often a few pixels across, and a span alone would leave
+/// most of its four lanes idle.
+pub(crate) struct FaceFill<T, G> {
+    fill: Fill<T, G>,
+    /// Row, first and one past the last pixel of each span held.
+    spans: [(u32, u32, u32); HELD],
+    count: usize,
+    pixels: usize,
+}
+
+impl<T: Tone, G: Gain> FaceFill<T, G> {
+    /// `fill`, its spans not yet held.
+    #[inline]
+    pub(crate) fn new(fill: Fill<T, G>) -> Self {
+        FaceFill {
+            fill,
+            spans: [(0, 0, 0); HELD],
+            count: 0,
+            pixels: 0,
+        }
+    }
+
+    /// Sets the pixels `x0..x1` of row `y`, now or by [`FaceFill::finish`]:
+    /// under the relief, only those a write would change (on a canvas
+    /// drawn front to back, most of a far face's are nearer land's).
+    #[inline]
+    pub(crate) fn fill(&mut self, canvas: &mut Canvas, y: u32, x0: u32, x1: u32) {
+        if self.fill.fine().is_none() {
+            return self.fill.fill(canvas, y, x0, x1);
+        }
+        let mut from = x0;
+        while let Some((a, b)) = canvas.next_open(y, from, x1) {
+            self.hold(canvas, y, a, b);
+            from = b;
+        }
+    }
+
+    /// Sets the pixels `x0..x1` of row `y`, held if few.
+    #[inline]
+    fn hold(&mut self, canvas: &mut Canvas, y: u32, x0: u32, x1: u32) {
+        let len = (x1 - x0) as usize;
+        if len >= PIECE {
+            return self.fill.fill(canvas, y, x0, x1);
+        }
+        if self.count == HELD || self.pixels + len > PIECE {
+            self.finish(canvas);
+        }
+        self.spans[self.count] = (y, x0, x1);
+        self.count += 1;
+        self.pixels += len;
+    }
+
+    /// Sets the pixels of the spans held.
+    #[inline]
+    pub(crate) fn finish(&mut self, canvas: &mut Canvas) {
+        let Some(fine) = self.fill.fine() else {
+            return;
+        };
+        let (mut xs, mut ys) = ([0u32; PIECE], [0u32; PIECE]);
+        let mut n = 0;
+        for &(y, x0, x1) in &self.spans[..self.count] {
+            for x in x0..x1 {
+                (xs[n], ys[n]) = (x, y);
+                n += 1;
+            }
+        }
+        let mut gains = [0.0f32; PIECE];
+        fine.gains_at(&xs[..n], &ys[..n], &mut gains[..n]);
+        let mut at = 0;
+        for &(y, x0, x1) in &self.spans[..self.count] {
+            let next = at + (x1 - x0) as usize;
+            self.fill.fill_lit(canvas, y, x0, x1, &gains[at..next]);
+            at = next;
+        }
+        (self.count, self.pixels) = (0, 0);
     }
 }
 
@@ -237,6 +338,67 @@ mod tests {
                 let want = if (y as f32 + 0.5) < 10.0 { 1.25 } else { 0.75 };
                 let got = (full.at(&full.row(y), x, 1.0) & 0xff) as f32;
                 assert!((got - (g * want).round()).abs() <= 1.0, "({x}, {y}): {got}");
+            }
+        }
+    }
+
+    #[test]
+    fn a_faces_held_spans_set_what_its_spans_would_and_keep_what_is_written() {
+        let v = [to_fixed(0.5, 0.5), to_fixed(90.5, 0.5), to_fixed(0.5, 30.5)];
+        let colours = [0x806040, 0x406080, 0x608040];
+        let fill = || {
+            let gradient = Gradient::new(v);
+            let mut q = [[0.0; super::super::fine::LANES]; 3];
+            (q[1][0], q[2][1]) = (90.0, 30.0);
+            // A factor of each pixel's own position.
+            let gain = |q: [Vec4; 8]| {
+                Vec4::from_array((q[0] * 0.37 + q[1] * 1.3).to_array().map(f32::sin)) * 0.3 + 1.0
+            };
+            let fine = Fine::new(&gradient, q, gain);
+            Fill::<fn(f32) -> f32, _>::Fine(Blend::over(&gradient, colours), fine)
+        };
+        // Short spans and long ones, as a face's rows come.
+        let spans: Vec<(u32, u32, u32)> = (0..30)
+            .map(|y| {
+                (
+                    y,
+                    (y * 7) % 5,
+                    (y * 7) % 5 + [1, 3, 2, 70, 5][y as usize % 5],
+                )
+            })
+            .collect();
+        let (w, h) = (96, 32);
+        let mut direct = vec![0u32; w * h];
+        let mut canvas = Canvas::new(&mut direct, w as u32, 0);
+        let plain = fill();
+        for &(y, x0, x1) in &spans {
+            plain.fill(&mut canvas, y, x0, x1);
+        }
+        let mut held = vec![0u32; w * h];
+        let mut canvas = Canvas::new(&mut held, w as u32, 0);
+        let mut face = FaceFill::new(fill());
+        for &(y, x0, x1) in &spans {
+            face.fill(&mut canvas, y, x0, x1);
+        }
+        face.finish(&mut canvas);
+        assert_eq!(held, direct);
+        // Front to back: what nearer land wrote stays.
+        let mut first = vec![0u32; w * h];
+        let mut canvas = Canvas::new(&mut first, w as u32, 0).keeping_first();
+        for y in (0..30).step_by(3) {
+            canvas.fill(y, 2, 4 + y % 7, 0x123456);
+        }
+        let mut face = FaceFill::new(fill());
+        for &(y, x0, x1) in &spans {
+            face.fill(&mut canvas, y, x0, x1);
+        }
+        face.finish(&mut canvas);
+        for &(y, x0, x1) in &spans {
+            for x in x0..x1 {
+                let i = y as usize * w + x as usize;
+                let nearer = y % 3 == 0 && (2..4 + y % 7).contains(&x);
+                let want = if nearer { 0x123456 } else { direct[i] };
+                assert_eq!(first[i] & 0xffffff, want & 0xffffff, "({x}, {y})");
             }
         }
     }

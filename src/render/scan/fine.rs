@@ -84,16 +84,48 @@ impl<G: Gain> Fine<G> {
     /// from its own column alone (a span cut anywhere gets the same).
     #[inline]
     pub(crate) fn gains(&self, row: &FineRow, x0: u32, out: &mut [f32]) {
-        let first = x0 as f32 + 0.5 - self.origin[0];
         for (k, four) in out.chunks_mut(4).enumerate() {
-            let ox = Vec4::splat(first + (4 * k) as f32) + Vec4::new(0.0, 1.0, 2.0, 3.0);
+            let x = x0 + 4 * k as u32;
+            let ox = self.across([x, x + 1, x + 2, x + 3]);
+            let q = std::array::from_fn(|i| self.held(Vec4::splat(row[i]) + ox * self.dx[i], i));
+            let g = self.gain.gains(q).to_array();
+            four.copy_from_slice(&g[..four.len()]);
+        }
+    }
+
+    /// The factors of the pixels (`xs[i]`, `ys[i]`), four at a time
+    /// whatever their rows (a small face's rows are a pixel or two long):
+    /// each pixel's the same as [`Fine::gains`] gives it.
+    #[inline]
+    pub(crate) fn gains_at(&self, xs: &[u32], ys: &[u32], out: &mut [f32]) {
+        let chunks = xs.chunks(4).zip(ys.chunks(4));
+        for ((x, y), four) in chunks.zip(out.chunks_mut(4)) {
+            // A short last four repeats its last pixel.
+            let lane = |v: &[u32], j: usize| v[j.min(v.len() - 1)];
+            let ox = self.across(std::array::from_fn(|j| lane(x, j)));
+            let rows: [u32; 4] = std::array::from_fn(|j| lane(y, j));
+            let oy = Vec4::from_array(rows.map(|y| y as f32)) + 0.5 - self.origin[1];
             let q = std::array::from_fn(|i| {
-                (Vec4::splat(row[i]) + ox * self.dx[i])
-                    .clamp(Vec4::splat(self.lo[i]), Vec4::splat(self.hi[i]))
+                self.held(
+                    Vec4::splat(self.at0[i]) + self.dy[i] * oy + ox * self.dx[i],
+                    i,
+                )
             });
             let g = self.gain.gains(q).to_array();
             four.copy_from_slice(&g[..four.len()]);
         }
+    }
+
+    /// How far the centres of columns `x` lie right of the first corner.
+    #[inline(always)]
+    fn across(&self, x: [u32; 4]) -> Vec4 {
+        Vec4::from_array(x.map(|x| x as f32)) + 0.5 - self.origin[0]
+    }
+
+    /// Value `i` of four pixels held to the corners' range.
+    #[inline(always)]
+    fn held(&self, v: Vec4, i: usize) -> Vec4 {
+        v.clamp(Vec4::splat(self.lo[i]), Vec4::splat(self.hi[i]))
     }
 }
 

@@ -161,26 +161,39 @@ impl Relief {
     }
 
     /// Whether the relief can show on a face whose corners are `points`
-    /// with colours `colours`: it changes some channel of some corner by
-    /// a level or more at its strongest (a dark, hazed or smooth face is
-    /// drawn plain). Along an edge of such a face a refined neighbour's
-    /// light differs from its own by under that level.
+    /// with colours `colours`: at its strongest it changes a channel of
+    /// some pixel by a level or more (a dark, hazed, smooth or far face is
+    /// drawn plain). A pixel's values are blended from its corners', so
+    /// each factor is bounded by its greatest at a corner; along an edge of
+    /// a face drawn plain, a refined neighbour's light differs from its own
+    /// by under a level.
     #[inline]
     pub(crate) fn shows(&self, points: [&FinePoint; 3], colours: [u32; 3]) -> bool {
-        // The most a pixel's light changes per unit of a point's shares
-        // and roughness: a level's slope at its steepest (3 along each of
-        // the lattice's axes), over the cell, and a little more for the
-        // cosine's own change.
-        let per = STEEPEST * FIRST * self.first_step * LEVELS as f32 / self.cell;
-        points.iter().zip(colours).any(|(p, c)| {
-            let bright = [16, 8, 0]
-                .map(|s| (c >> s) & 0xff)
-                .into_iter()
-                .max()
-                .unwrap_or(0);
-            let change = (p.shares.x + p.shares.y * (1.0 + HOLLOW)) * p.rough * per;
-            p.cell_px >= MIN_CELL_PX && change * bright as f32 >= 1.0
-        })
+        let most = |f: &dyn Fn(&FinePoint) -> f32| points.iter().map(|p| f(p)).fold(0.0, f32::max);
+        let cell_px = most(&|p| p.cell_px);
+        if cell_px < MIN_CELL_PX {
+            return false;
+        }
+        // The most a pixel's light changes per unit of its shares and
+        // roughness: a level's slope at its steepest, over the cell, for
+        // as much of each level as shows at the face's largest cells.
+        let per = STEEPEST * FIRST * self.first_step * self.levels_shown(cell_px) / self.cell;
+        let shares = most(&|p| p.shares.x + p.shares.y * (1.0 + HOLLOW));
+        let bright = colours
+            .iter()
+            .flat_map(|c| [16, 8, 0].map(|s| (c >> s) & 0xff))
+            .max()
+            .unwrap_or(0);
+        shares * most(&|p| p.rough) * per * bright as f32 >= 1.0
+    }
+
+    /// How many levels show where a cell spans `cell_px` pixels, each
+    /// counted by how much of it shows (as [`Relief::slopes`] fades them).
+    fn levels_shown(&self, cell_px: f32) -> f32 {
+        let px = cell_px / self.first_step;
+        (0..LEVELS)
+            .map(|k| fade(Vec4::splat(px / (1 << k) as f32)).x)
+            .sum()
     }
 
     /// Whether a point whose cells span `cell_px` of the relief's pixels
@@ -332,6 +345,10 @@ fn fade(px: Vec4) -> Vec4 {
     t * t * (Vec4::splat(3.0) - t * 2.0)
 }
 
+/// 1.5 x 2^23: a float from 2^23 on has no fraction, and one of magnitude
+/// under 2^22 added to this keeps its whole part in its low bits.
+const ROUND: f32 = 12_582_912.0;
+
 /// Lattice points a side of the table of values: a level repeats after
 /// this many of its steps (the first below the grid every 128 cells, the
 /// fifth every 8, where a cell spans tens of pixels and the five are
@@ -341,42 +358,61 @@ const SIDE: usize = 256;
 /// The values (-1..=1) at the lattice points of every level of one
 /// mountain's finer terrain: a table of [`SIDE`] points a side that each
 /// level reads from a place of its own (a hash a point would cost a pixel
-/// tens of multiplications; a table a side, one read a point).
+/// tens of multiplications; a table a side, one read a point). Each entry
+/// holds the four corners of the cell whose first corner it is, so a
+/// pixel's cell is one read.
 #[derive(Clone, Debug)]
 struct Lattice {
     // An array of the table's size: an index masked to it needs no check.
-    values: Box<[i8; SIDE * SIDE]>,
+    cells: Box<[[i8; 4]; SIDE * SIDE]>,
 }
 
 impl Lattice {
     /// The lattice of the mountain `seed`.
     fn new(seed: u64) -> Self {
-        let mut values = Box::new([0i8; SIDE * SIDE]);
-        for (v, i) in values.iter_mut().zip(0u64..) {
-            *v = ((mix(seed ^ mix(i)) >> 56) as u8 as i8).max(-127);
+        let m = SIDE - 1;
+        let values: Vec<i8> = (0..(SIDE * SIDE) as u64)
+            .map(|i| ((mix(seed ^ mix(i)) >> 56) as u8 as i8).max(-127))
+            .collect();
+        let value = |x: usize, y: usize| values[(y & m) * SIDE + (x & m)];
+        let mut cells = vec![[0; 4]; SIDE * SIDE].into_boxed_slice();
+        for (i, c) in cells.iter_mut().enumerate() {
+            let (x, y) = (i % SIDE, i / SIDE);
+            *c = [
+                value(x, y),
+                value(x + 1, y),
+                value(x, y + 1),
+                value(x + 1, y + 1),
+            ];
         }
-        Lattice { values }
+        Lattice {
+            cells: cells.try_into().expect("the table's size"),
+        }
     }
 
     /// The value at lattice point (`x`, `y`) of level `level`.
     #[cfg(test)]
     fn at(&self, level: u32, x: i32, y: i32) -> f32 {
-        let [v, ..] = self.cell(level, x, y);
-        v
+        self.cell(level, x, y).x
     }
 
     /// The values at the corners of the lattice cell whose first corner
     /// is (`x`, `y`), of level `level`: that corner, the next across, the
     /// next down and the one across and down.
+    #[cfg(test)]
+    fn cell(&self, level: u32, x: i32, y: i32) -> Vec4 {
+        self.cell_at(level, x as usize, y as usize)
+    }
+
+    /// [`Lattice::cell`] of a lattice point whose coordinates are `x` and
+    /// `y` modulo the table's side.
     #[inline(always)]
-    fn cell(&self, level: u32, x: i32, y: i32) -> [f32; 4] {
+    fn cell_at(&self, level: u32, x: usize, y: usize) -> Vec4 {
         let m = SIDE - 1;
         // Each level reads the table from a place of its own.
-        let x = (x as usize).wrapping_add(level as usize * 97);
-        let y = (y as usize).wrapping_add(level as usize * 59);
-        let (x0, x1) = (x & m, x.wrapping_add(1) & m);
-        let (y0, y1) = ((y & m) * SIDE, (y.wrapping_add(1) & m) * SIDE);
-        [y0 + x0, y0 + x1, y1 + x0, y1 + x1].map(|i| f32::from(self.values[i]) * (1.0 / 127.0))
+        let x = x.wrapping_add(level as usize * 97) & m;
+        let y = y.wrapping_add(level as usize * 59) & m;
+        Vec4::from_array(self.cells[y * SIDE + x].map(f32::from)) * (1.0 / 127.0)
     }
 
     /// The slope of level `level`'s value noise at lattice position `u`
@@ -385,14 +421,20 @@ impl Lattice {
     /// blended between them along a smooth step.
     #[inline]
     fn value_slope(&self, level: u32, u: [Vec4; 2]) -> [Vec4; 3] {
-        let (fx, fy) = (u[0].floor(), u[1].floor());
-        let (tx, ty) = (u[0] - fx, u[1] - fy);
-        let (ix, iy) = (fx.to_array(), fy.to_array());
+        // Rounded half a step down by the float adder: a number past
+        // [`ROUND`] keeps no fraction, and its low bits are its whole part
+        // (the cell, of any sign, modulo the table; a NaN reads some cell).
+        let half = Vec4::splat(0.5);
+        let (rx, ry) = ((u[0] - half) + ROUND, (u[1] - half) + ROUND);
+        let (tx, ty) = (u[0] - (rx - ROUND), u[1] - (ry - ROUND));
+        let (ix, iy) = (
+            rx.to_array().map(f32::to_bits),
+            ry.to_array().map(f32::to_bits),
+        );
         // The four corners of each pixel's lattice cell, a pixel a lane.
-        let cells: [[f32; 4]; 4] =
-            std::array::from_fn(|i| self.cell(level, ix[i] as i32, iy[i] as i32));
-        let corner = |c: usize| Vec4::from_array(cells.map(|v| v[c]));
-        let (v00, v10, v01, v11) = (corner(0), corner(1), corner(2), corner(3));
+        let cell = |i: usize| self.cell_at(level, ix[i] as usize, iy[i] as usize);
+        let cells = glam::Mat4::from_cols(cell(0), cell(1), cell(2), cell(3)).transpose();
+        let (v00, v10, v01, v11) = (cells.x_axis, cells.y_axis, cells.z_axis, cells.w_axis);
         let three = Vec4::splat(3.0);
         let (sx, sy) = (tx * tx * (three - tx * 2.0), ty * ty * (three - ty * 2.0));
         let (dsx, dsy) = (tx * (Vec4::ONE - tx) * 6.0, ty * (Vec4::ONE - ty) * 6.0);
@@ -558,11 +600,19 @@ mod tests {
             let bottom = c(0, 1) + (c(1, 1) - c(0, 1)) * sx;
             top + (bottom - top) * sy
         };
-        for &(x, y) in &[(0.3, 0.7), (5.5, -2.25), (-3.9, 8.1)] {
+        // Whole lattice positions (where the float adder's rounding lands
+        // on the cell before, at its far edge), either sign, and far out.
+        let points = [(0.3, 0.7), (5.5, -2.25), (-3.9, 8.1), (4.0, -3.0)];
+        for &(x, y) in points
+            .iter()
+            .chain(&[(-1000.5, 2047.25), (-3000.25, 1500.75)])
+        {
             let u = Vec2::new(x, y);
             let e = 1e-3;
-            let dx = (value(u + Vec2::X * e) - value(u - Vec2::X * e)) / (2.0 * e);
-            let dy = (value(u + Vec2::Y * e) - value(u - Vec2::Y * e)) / (2.0 * e);
+            // Far out, the steps are rounded to the floats there.
+            let (ex, ey) = ((x + e) - (x - e), (y + e) - (y - e));
+            let dx = (value(u + Vec2::X * e) - value(u - Vec2::X * e)) / ex;
+            let dy = (value(u + Vec2::Y * e) - value(u - Vec2::Y * e)) / ey;
             // Each lane a pixel of its own: the same point in lane 2.
             let lanes = [Vec4::new(0.0, 1.5, x, -7.25), Vec4::new(0.0, 2.5, y, 3.75)];
             let [sx, sy, v] = lattice.value_slope(3, lanes);
@@ -573,6 +623,59 @@ mod tests {
             );
             assert!((d.z - value(u)).abs() < 1e-5, "{d} against {}", value(u));
         }
+        // A NaN (a point gone wrong) reads some cell and gives NaN, which
+        // the gain turns back to 1.
+        let [_, _, v] = lattice.value_slope(3, [Vec4::splat(f32::NAN), Vec4::ZERO]);
+        assert!(v.x.is_nan());
+    }
+
+    #[test]
+    fn a_face_the_relief_is_said_not_to_show_on_changes_no_pixel_by_a_level() {
+        let sun = Vec3::new(0.3, -0.4, 0.8).normalize();
+        let relief = Relief::new(&Heightfield::flat(10, 250.0), 5, sun, 0.25);
+        let mut state = 1u64;
+        let mut next = || {
+            state = mix(state);
+            (state >> 40) as f32 / (1u64 << 24) as f32
+        };
+        let (mut plain, mut refined) = (0, 0);
+        for _ in 0..2000 {
+            let corners: [(FinePoint, Vec2, u32); 3] = std::array::from_fn(|_| {
+                let point = FinePoint {
+                    slope: Vec2::new(next() * 2.0 - 1.0, next() * 2.0 - 1.0),
+                    shares: Vec2::new(next(), next() * 0.6),
+                    cell_px: 1.0 + next() * 30.0,
+                    rough: 10f32.powf(-6.0 * next()) * 0.02,
+                };
+                let grey = (next() * 255.0) as u32;
+                (point, Vec2::new(next(), next()) * 1024.0, grey * 0x10101)
+            });
+            let shows = relief.shows(corners.each_ref().map(|c| &c.0), corners.map(|c| c.2));
+            if shows {
+                refined += 1;
+                continue;
+            }
+            plain += 1;
+            let bright = corners.iter().map(|c| c.2 & 0xff).max().unwrap() as f32;
+            for _ in 0..20 {
+                // A pixel's values, blended from its corners'.
+                let (a, b) = (next(), next());
+                let w = [a * b, a * (1.0 - b), 1.0 - a];
+                let lanes = corners.map(|c| c.0.lanes(c.1));
+                let q = std::array::from_fn(|i| {
+                    Vec4::splat((0..3).map(|k| w[k] * lanes[k][i]).sum::<f32>())
+                });
+                let change = (relief.gains(q).x - 1.0).abs() * bright;
+                assert!(
+                    change < 1.0,
+                    "a plain face's pixel would change by {change}"
+                );
+            }
+        }
+        assert!(
+            plain > 200 && refined > 200,
+            "{plain} plain, {refined} refined"
+        );
     }
 
     #[test]
