@@ -55,9 +55,7 @@ impl Painter {
             How::Ridges(Ridges::new(&field, settings, size))
         } else {
             let scene = Scene::at_hour(FieldRef::Shared(field), settings, size, hour);
-            let sweep = scene
-                .clean_edges
-                .then(|| Box::new(HorizonSweep::new(size.width)));
+            let sweep = scene.clean_edges.then(|| Box::new(HorizonSweep::new(size)));
             How::Mesh(Box::new(scene), Rows::new(), sweep)
         };
         Painter { size, next: 0, how }
@@ -118,7 +116,12 @@ impl Painter {
                 if end == scene.strips()
                     && let Some(sweep) = sweep.take()
                 {
-                    // The full frame's last touch, once every strip is in.
+                    // The full frame's last touch, once every strip is in;
+                    // what only the strips read goes first, so that the
+                    // edges' own work is not held beside it (the peak of a
+                    // 4K slide show is reached here).
+                    scene.let_go_of_faces();
+                    *rows = Rows::new();
                     let horizon = sweep.finish(scene);
                     for r in clean_edges(scene, &horizon, frame).rects() {
                         damage.add(r);
@@ -209,8 +212,8 @@ pub fn render_full_finer(field: &Heightfield, settings: &Settings, frame: &mut F
 /// cores, then its edges clean, from the horizon one thread sweeps beside
 /// the bands.
 pub(crate) fn draw_full(scene: &Scene, frame: &mut Frame) {
-    let width = frame.width();
-    let sweep = scene.clean_edges.then_some(|| Horizon::sweep(scene, width));
+    let size = frame.size();
+    let sweep = scene.clean_edges.then_some(|| Horizon::sweep(scene, size));
     if let Some(horizon) = bands::draw_bands(scene, frame, sweep) {
         clean_edges(scene, &horizon, frame);
     }

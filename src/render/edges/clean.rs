@@ -67,7 +67,7 @@ pub(crate) fn clean_edges(scene: &Scene, horizon: &Horizon, frame: &mut Frame) -
 fn crests_middle(horizon: &Horizon, width: u32) -> u32 {
     let mut counts = vec![0usize; width.div_ceil(BLOCK) as usize];
     for crest in horizon.crests() {
-        if let Some(n) = counts.get_mut((crest.x / BLOCK) as usize) {
+        if let Some(n) = counts.get_mut((crest.x() / BLOCK) as usize) {
             *n += 1;
         }
     }

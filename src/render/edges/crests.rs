@@ -8,7 +8,7 @@
 //! floating horizon's crests); the two colours are the frame's own, read
 //! just above and just below the edge, so light and haze stay as drawn.
 
-use super::horizon::{Crest, Edge, Horizon};
+use super::horizon::{Crest, Horizon, SAMPLES};
 use crate::render::base::canvas::Canvas;
 use crate::render::base::colour::blend_packed;
 use crate::render::scene::Scene;
@@ -26,27 +26,27 @@ const ALIKE: u32 = 2;
 pub(crate) fn smooth(canvas: &mut Canvas, scene: &Scene, horizon: &Horizon, sky_tops: &[u32]) {
     let clip = *canvas.clip();
     for crest in horizon.crests() {
-        if !(clip.x0..clip.x1).contains(&i64::from(crest.x)) {
+        let x = crest.x();
+        if !(clip.x0..clip.x1).contains(&i64::from(x)) {
             continue;
         }
-        let Some(&sky_top) = sky_tops.get(crest.x as usize) else {
+        let Some(&sky_top) = sky_tops.get(x as usize) else {
             continue;
         };
         if let Some((y0, y1)) = mix_crest(canvas, scene, crest, sky_top) {
-            canvas.touch(crest.x, y0, crest.x + 1, y1);
+            canvas.touch(x, y0, x + 1, y1);
         }
     }
 }
 
 /// Mixes one crest's column; returns the rows changed, if any.
 fn mix_crest(frame: &mut Canvas, scene: &Scene, crest: &Crest, sky_top: u32) -> Option<(u32, u32)> {
-    let top = (crest_centre(crest)? - 0.5).ceil();
+    let (x, top) = (crest.x(), crest.top());
     // Rows clear of the skyline, with a pixel of far land above the edge
     // and one of near land below it inside the frame.
-    if !(top > sky_top as f32 + 1.0 && top < frame.clip().y1 as f32) {
+    if !(top > sky_top + 1 && i64::from(top) < frame.clip().y1) {
         return None;
     }
-    let (x, top) = (crest.x, top as u32);
     let (far, near) = (frame.get(x, top - 1), frame.get(x, top));
     if alike(far, near) {
         return None;
@@ -55,29 +55,20 @@ fn mix_crest(frame: &mut Canvas, scene: &Scene, crest: &Crest, sky_top: u32) -> 
     mix_rows(frame, x, top, &edge, [far, near], sky_top + 2)
 }
 
-/// The crest's height at its column's centre, if on screen.
-fn crest_centre(crest: &Crest) -> Option<f32> {
-    let e = crest.centre();
-    e.is_finite().then_some(e)
-}
-
-/// Mixes the rows of column `x` that `edge` cuts, from row `first_allowed`
-/// down; `top` is the first row the near land covers at the centre, and
-/// `[far, near]` the colours above and below it there.
+/// Mixes the rows of column `x` that the edge at heights `edge` cuts,
+/// from row `first_allowed` down; `top` is the first row the near land
+/// covers at the centre, and `[far, near]` the colours above and below it
+/// there.
 fn mix_rows(
     frame: &mut Canvas,
     x: u32,
     top: u32,
-    edge: &Edge,
+    edge: &[f32; SAMPLES],
     [far, near]: [u32; 2],
     first_allowed: u32,
 ) -> Option<(u32, u32)> {
-    let lo = edge.samples.iter().copied().fold(f32::INFINITY, f32::min);
-    let hi = edge
-        .samples
-        .iter()
-        .copied()
-        .fold(f32::NEG_INFINITY, f32::max);
+    let lo = edge.iter().copied().fold(f32::INFINITY, f32::min);
+    let hi = edge.iter().copied().fold(f32::NEG_INFINITY, f32::max);
     let first = (lo.floor().max(first_allowed as f32) as u32).min(top);
     let end = ((hi.min(lo + MAX_ROWS).ceil().max(0.0)) as u32)
         .max(top)
@@ -85,11 +76,10 @@ fn mix_rows(
     let mut changed: Option<(u32, u32)> = None;
     for y in first..end {
         let cover: f32 = edge
-            .samples
             .iter()
             .map(|&e| (y as f32 + 1.0 - e).clamp(0.0, 1.0))
             .sum::<f32>()
-            / edge.samples.len() as f32;
+            / edge.len() as f32;
         let own = frame.get(x, y);
         let (above, below) = if y < top { (own, near) } else { (far, own) };
         let mixed = blend_packed(above, below, (cover * 256.0 + 0.5) as u32);
@@ -130,12 +120,8 @@ mod tests {
     #[test]
     fn a_pixel_half_under_the_edge_is_half_near_half_far() {
         let mut f = column(10, 20);
-        let edge = Edge {
-            samples: [9.5; 4],
-            centre: 9.5,
-        };
         let mut cols = Canvas::new(f.pixels_mut(), 1, 0);
-        let rows = mix_rows(&mut cols, 0, 10, &edge, [FAR, NEAR], 0);
+        let rows = mix_rows(&mut cols, 0, 10, &[9.5; 4], [FAR, NEAR], 0);
         assert_eq!(rows, Some((9, 10)));
         assert_eq!(f.get(0, 9), blend_packed(FAR, NEAR, 128));
         assert_eq!((f.get(0, 8), f.get(0, 10)), (FAR, NEAR));
@@ -145,10 +131,7 @@ mod tests {
     fn a_spike_a_quarter_pixel_wide_is_a_quarter_strong() {
         // Near land up to row 14, with a spike to row 6 at one sample only.
         let mut f = column(6, 20);
-        let edge = Edge {
-            samples: [14.0, 14.0, 6.0, 14.0],
-            centre: 6.0,
-        };
+        let edge = [14.0, 14.0, 6.0, 14.0];
         let mut cols = Canvas::new(f.pixels_mut(), 1, 0);
         mix_rows(&mut cols, 0, 6, &edge, [FAR, NEAR], 0);
         for y in 6..14 {

@@ -14,8 +14,10 @@
 
 use std::ops::RangeInclusive;
 
+use crate::render::base::size::Size;
 use crate::render::framing::tops::finite;
 use crate::render::scene::Scene;
+use crate::settings::MAX_GRID_EXPONENT;
 
 /// Places across a pixel's width where an edge's height is read.
 pub(crate) const SAMPLES: usize = 4;
@@ -49,13 +51,28 @@ struct Top {
     point: u32,
 }
 
-/// A silhouette of nearer land against farther land in column `x`.
+/// A silhouette of nearer land against farther land in one column, in 8
+/// bytes: an alpine mountain at 4K has a quarter of a million of them,
+/// all kept until the frame is complete (at 16 bytes they took 4 MB, the
+/// largest part of a 4K slide show's peak beside the frames and the field).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Crest {
-    pub x: u32,
-    /// The near land's top at the column's centre.
-    top: Top,
+    x: u16,
+    /// The first pixel row the near land covers at the column's centre
+    /// (its top there rounded to pixel centres: all the mixing needs of it).
+    top: u16,
+    /// The near land's kept row (an index into the scene's rows) and the
+    /// grid point starting its segment across the column's centre.
+    row: u16,
+    point: u16,
 }
+
+// A grid's rows and points fit a crest's `u16`s.
+const _: () = assert!(MAX_GRID_EXPONENT < 16);
+
+/// Columns and rows a crest can name: past them (no window, and no
+/// `--size`, is that large) the pixels stay as the strips drew them.
+const CREST_SIDE: usize = 1 << 16;
 
 /// Where the land's top is in each column, and where it hides farther land.
 pub(crate) struct Horizon {
@@ -63,13 +80,13 @@ pub(crate) struct Horizon {
 }
 
 impl Horizon {
-    /// Sweeps `scene`'s rows front to back across a frame `width` pixels wide.
-    pub(crate) fn sweep(scene: &Scene, width: u32) -> Self {
-        HorizonSweep::new(width).finish(scene)
+    /// Sweeps `scene`'s rows front to back across a frame of `size`.
+    pub(crate) fn sweep(scene: &Scene, size: Size) -> Self {
+        HorizonSweep::new(size).finish(scene)
     }
 
-    /// The places where nearer land hides farther land, front to back in
-    /// each column.
+    /// The places where nearer land hides farther land inside the frame,
+    /// front to back in each column.
     pub(crate) fn crests(&self) -> &[Crest] {
         &self.sweep.crests
     }
@@ -88,34 +105,39 @@ impl Horizon {
         let mut rows = vec![(top.row, top.point)];
         rows.extend(beside.iter().flatten().map(|t| (t.row, t.point)));
         rows.dedup_by_key(|r| r.0);
-        edge_of(scene, &rows, 1, top, x)
+        let samples = edge_of(scene, &rows, 1, x)?;
+        Some(Edge {
+            samples,
+            centre: top.y,
+        })
     }
 }
 
 impl Crest {
-    /// The near land's top at the column's centre, in rows.
-    pub(crate) fn centre(&self) -> f32 {
-        self.top.y
+    /// The crest's column.
+    pub(crate) fn x(&self) -> u32 {
+        self.x.into()
     }
 
-    /// The near land's edge across the crest's column.
-    pub(crate) fn edge(&self, scene: &Scene) -> Option<Edge> {
-        edge_of(
-            scene,
-            &[(self.top.row, self.top.point)],
-            0,
-            self.top,
-            self.x,
-        )
+    /// The first pixel row the near land covers at the column's centre.
+    pub(crate) fn top(&self) -> u32 {
+        self.top.into()
+    }
+
+    /// The near land's edge across the crest's column: its height at the
+    /// [`SAMPLES`] places.
+    pub(crate) fn edge(&self, scene: &Scene) -> Option<[f32; SAMPLES]> {
+        let rows = [(u32::from(self.row), u32::from(self.point))];
+        edge_of(scene, &rows, 0, self.x())
     }
 }
 
-/// The edge across column `x` formed by `top`'s row, lowered to the
-/// highest of `rows` (kept rows with a grid point near the column) and
-/// their neighbours in front and behind. `None` where one of the rows
-/// next to `top`'s ends inside the column: there the mesh's side, which
-/// no row's line follows, may be the edge.
-fn edge_of(scene: &Scene, rows: &[(u32, u32)], reach: u32, top: Top, x: u32) -> Option<Edge> {
+/// The edge's heights across column `x` formed by the first of `rows`
+/// (kept rows with a grid point near the column), lowered to the highest
+/// of them and of their neighbours `reach` rows in front and behind.
+/// `None` where one of the rows next to the first ends inside the column:
+/// there the mesh's side, which no row's line follows, may be the edge.
+fn edge_of(scene: &Scene, rows: &[(u32, u32)], reach: u32, x: u32) -> Option<[f32; SAMPLES]> {
     let last = scene.rows.len() as u32 - 1;
     let mut samples = [f32::INFINITY; SAMPLES];
     for (i, &(row, point)) in rows.iter().enumerate() {
@@ -132,10 +154,7 @@ fn edge_of(scene: &Scene, rows: &[(u32, u32)], reach: u32, top: Top, x: u32) -> 
             }
         }
     }
-    Some(Edge {
-        samples,
-        centre: top.y,
-    })
+    Some(samples)
 }
 
 /// A sweep of the horizon under way, so that the painter can spread it
@@ -148,10 +167,10 @@ pub(crate) struct HorizonSweep {
 }
 
 impl HorizonSweep {
-    /// A sweep across a frame `width` pixels wide, no row swept yet.
-    pub(crate) fn new(width: u32) -> Self {
+    /// A sweep across a frame of `size`, no row swept yet.
+    pub(crate) fn new(size: Size) -> Self {
         HorizonSweep {
-            sweep: Sweep::new(width as usize),
+            sweep: Sweep::new(size.width as usize, size.height as usize),
             done: 0,
             points: Vec::with_capacity(POINTS + 1),
         }
@@ -210,7 +229,7 @@ fn project_points(scene: &Scene, gy: usize, gxs: RangeInclusive<usize>, out: &mu
 
 /// The horizon while it is swept: each column's top so far, the lowest
 /// top in each tile of [`TILE`] columns (a block of points wholly below
-/// it is passed over unprojected), and the crests found.
+/// it is passed over unprojected), and the crests found inside the frame.
 struct Sweep {
     /// Each column's top so far: its height, kept row and grid point (the
     /// three apart, so that the inner loop reads and writes little).
@@ -221,12 +240,18 @@ struct Sweep {
     /// Tiles whose lowest top may have risen since it was last worked out.
     stale: Vec<bool>,
     crests: Vec<Crest>,
+    /// The columns and pixel rows whose crests are kept: the frame's
+    /// (a crest off it mixes no pixel), at most [`CREST_SIDE`].
+    crest_columns: usize,
+    crest_rows: f32,
 }
 
 impl Sweep {
-    fn new(width: usize) -> Self {
+    fn new(width: usize, height: usize) -> Self {
         let tiles = width.div_ceil(TILE);
         Sweep {
+            crest_columns: width.min(CREST_SIDE),
+            crest_rows: height.min(CREST_SIDE) as f32,
             ys: vec![f32::INFINITY; width],
             rows: vec![NONE; width],
             points: vec![0; width],
@@ -314,14 +339,15 @@ impl Sweep {
                 // Not the row just in front (a slope going on), nor this
                 // row again, nor nothing yet: farther land coming out.
                 if top_row.wrapping_sub(row) > 1 && *top_row != NONE {
-                    self.crests.push(Crest {
-                        x: (c0 + k) as u32,
-                        top: Top {
-                            y: *top_y,
-                            row: *top_row,
-                            point: self.points[c0 + k],
-                        },
-                    });
+                    let top = (*top_y - 0.5).ceil();
+                    if top >= 0.0 && top < self.crest_rows && c0 + k < self.crest_columns {
+                        self.crests.push(Crest {
+                            x: (c0 + k) as u16,
+                            top: top as u16,
+                            row: *top_row as u16,
+                            point: self.points[c0 + k] as u16,
+                        });
+                    }
                 }
                 (*top_y, *top_row) = (y, row);
                 self.points[c0 + k] = point;
@@ -431,7 +457,7 @@ mod tests {
 
     #[test]
     fn a_row_behind_a_crest_marks_the_crest_and_a_continuing_slope_does_not() {
-        let mut s = Sweep::new(10);
+        let mut s = Sweep::new(10, 20);
         // Front row 3 at height 8, row 2 right behind it higher (a slope
         // going on), row 1 hidden behind it, row 0 far land rising above.
         s.lower(&[[0.0, 8.0], [10.0, 8.0]], 0, 3);
@@ -441,17 +467,37 @@ mod tests {
         assert!(s.crests.is_empty());
         s.lower(&[[0.0, 2.0], [5.0, 2.0], [10.0, 9.0]], 0, 0);
         // Only where the far row passes above the crest (columns 0..8).
-        let xs: Vec<u32> = s.crests.iter().map(|c| c.x).collect();
+        let xs: Vec<u32> = s.crests.iter().map(Crest::x).collect();
         assert_eq!(xs, (0..8).collect::<Vec<u32>>());
-        assert!(s.crests.iter().all(|c| c.top.y == 6.0 && c.top.row == 2));
+        // The crest's top at 6.0: the pixel row whose centre (6.5) is below it.
+        assert!(s.crests.iter().all(|c| c.top() == 6 && c.row == 2));
         assert_eq!(s.top(0).row, 0);
         assert_eq!(s.top(9).row, 2);
         assert_eq!(s.top(6).point, 1, "the far row's second segment");
     }
 
     #[test]
+    fn a_crest_takes_8_bytes() {
+        // A quarter of a million of them for an alpine mountain at 4K.
+        assert_eq!(std::mem::size_of::<Crest>(), 8);
+    }
+
+    #[test]
+    fn crests_below_the_frame_are_not_kept() {
+        let mut s = Sweep::new(10, 7);
+        // Near row 3 ending below the frame's 7 rows on the left, inside
+        // it on the right; far row 0 rises above it everywhere.
+        s.lower(&[[0.0, 9.0], [10.0, 4.0]], 0, 3);
+        s.lower(&[[0.0, 1.0], [10.0, 1.0]], 0, 0);
+        let kept: Vec<(u32, u32)> = s.crests.iter().map(|c| (c.x(), c.top())).collect();
+        // Row 3's top at column x's centre is 9 - (x + 0.5) / 2: in pixel
+        // row 7 or lower (off the frame) left of column 5.
+        assert_eq!(kept, vec![(5, 6), (6, 6), (7, 5), (8, 5), (9, 4)]);
+    }
+
+    #[test]
     fn a_line_falling_right_to_left_lowers_the_same_columns() {
-        let (mut a, mut b) = (Sweep::new(8), Sweep::new(8));
+        let (mut a, mut b) = (Sweep::new(8, 8), Sweep::new(8, 8));
         a.lower(&[[0.0, 1.0], [8.0, 5.0]], 0, 0);
         b.lower(&[[8.0, 5.0], [0.0, 1.0]], 0, 0);
         for (p, q) in a.ys.iter().zip(&b.ys) {
@@ -485,7 +531,7 @@ mod tests {
 
     #[test]
     fn a_tile_keeps_the_lowest_top_of_its_columns() {
-        let mut s = Sweep::new(TILE + 4);
+        let mut s = Sweep::new(TILE + 4, 16);
         s.lower(&[[0.0, 10.0], [TILE as f32, 10.0]], 0, 1);
         s.settle();
         assert_eq!(s.lowest[0], 10.0);
