@@ -398,6 +398,14 @@ impl Scene<'_> {
         if self.rock(&c).is_none() && relief.is_none() {
             return self.paint_blend(canvas, v, [c[0].colour, c[1].colour, c[2].colour]);
         }
+        if relief.is_none() {
+            return paint_spans(
+                canvas,
+                v,
+                || self.land_fill(&c, None),
+                |canvas, f, y, x0, x1| f.fill(canvas, y, x0, x1),
+            );
+        }
         paint_spans_then(
             canvas,
             v,
