@@ -2,6 +2,7 @@
 //! the vista and perspective cameras, `detail = "auto"`), which grid rows are
 //! drawn and how high each row reaches on screen; the essay's own camera.
 
+pub(super) mod aim;
 pub(super) mod camera;
 pub mod detail;
 pub(super) mod easel;

@@ -7,9 +7,10 @@
 
 use glam::{Vec2, Vec3, Vec4};
 
+use super::aim::Aim;
 use super::camera::{Camera, RowCamera};
 use super::tops::finite;
-use super::vista::{self, Aim};
+use super::vista;
 use crate::render::base::size::Size;
 use crate::settings::{ViewKind, World};
 use crate::terrain::Heightfield;

@@ -5,16 +5,16 @@
 //! one of [`STANDOFFS`] grid widths in front of the near edge, level sideways):
 //! - the back edge at sea level spans exactly the frame's width; the grid's
 //!   side edges splay outwards towards the camera, so they never show;
-//! - the middle of the back edge at sea level sits [`SKYLINE`] of the
+//! - the middle of the back edge at sea level sits [`Aim::skyline`] of the
 //!   height from the top, leaving the sky above for the peaks to rise into
 //!   (lower, down to [`SKYLINE_LOWEST`], when the land is so tall it would
-//!   fill the sky: exactly as low as keeps [`SKY_ROOM`] clear, see [`fitted`]);
+//!   fill the sky: exactly as low as keeps [`Aim::room`] clear, see [`fitted`]);
 //! - the near edge at sea level falls just below the bottom;
 //! - a frame wider than [`ORDINARY`] whose land would still fill the sky
 //!   with the back edge at [`SKYLINE_LOWEST`] (the land's height on screen
 //!   grows with the width the back edge spans: three 16:9 monitors side by
 //!   side see it three times as tall as one does) is framed as a narrower
-//!   frame of its height, exactly as narrow as keeps [`SKY_ROOM`] clear
+//!   frame of its height, exactly as narrow as keeps [`Aim::room`] clear
 //!   (at most down to [`ORDINARY`]), and stretched sideways to its width:
 //!   like xmountains, whose land is as tall on a wide screen as on a
 //!   narrow one, it shows the land wider rather than taller.
@@ -23,7 +23,9 @@
 //! its back edge higher or lower in the frame and a share of the land's
 //! depth below the bottom instead of the near edge, which raises the
 //! camera and pitches it down (the alpine world's looks down into its
-//! valleys).
+//! valleys); more or less sky kept above its tallest land than today's
+//! vista keeps; and its camera nearer the land than the first of
+//! [`STANDOFFS`], so near ridges loom against the far range.
 //!
 //! The width fixes the focal length for a given pitch and camera height;
 //! the two vertical conditions then fix the pitch and the height, found by
@@ -35,21 +37,11 @@
 
 use glam::{Vec2, Vec3};
 
+use super::aim::{Aim, STANDOFFS};
 use super::camera::Camera;
-use crate::settings::World;
 
-/// The camera's horizontal distance in front of the near edge, in grid
-/// widths: closer magnifies the foreground more. Tall frames (portrait)
-/// need a closer camera to see from the back edge down to the near edge;
-/// the first distance that can is taken.
-const STANDOFFS: [f32; 6] = [0.6, 0.45, 0.32, 0.22, 0.14, 0.08];
-/// Where the back edge at sea level sits, as a fraction of the height from
-/// the top: peaks behind it rise into the sky above.
-pub(crate) const SKYLINE: f32 = 0.4;
 /// The lowest the back edge goes, for land so tall it would fill the sky.
 pub(crate) const SKYLINE_LOWEST: f32 = 0.72;
-/// Sky kept above the highest land, as a fraction of the height.
-const SKY_ROOM: f32 = 0.12;
 /// The widest aspect framed only as itself (16:9, one monitor); wider
 /// frames are stretched sideways when their land would fill the sky.
 const ORDINARY: f32 = 16.0 / 9.0;
@@ -74,72 +66,6 @@ const STEPS: usize = 48;
 /// Bisection steps for the skyline: its 0.32 range down to f32's precision.
 const SKYLINE_STEPS: usize = 24;
 
-/// Where a vista aims: where the back edge sits and how much of the
-/// grid's depth lies in front of the frame's bottom. Today's vista
-/// ([`Aim::ACROSS`]) sees the whole grid from low in front of it; a higher
-/// camera that looks down into the valleys ([`Aim::DOWN`]) leaves the
-/// nearest land below the frame.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Aim {
-    /// Where the back edge at sea level sits, as a fraction of the height
-    /// from the top (before tall land lowers it).
-    pub skyline: f32,
-    /// The share of the grid's depth, from its near edge, that falls
-    /// below the bottom of the frame: 0 shows the near edge.
-    pub cropped: f32,
-}
-
-impl Aim {
-    /// Low in front of the land, looking across it: the near edge at the
-    /// bottom, the back edge at [`SKYLINE`] (the temperate world's vista).
-    pub const ACROSS: Aim = Aim {
-        skyline: SKYLINE,
-        cropped: 0.0,
-    };
-
-    /// The aim of the vista of the mountain `identity` in `world`, drawn
-    /// from the identity within the world's ranges (the same at every
-    /// size), so two slides of one world are framed apart. The alpine
-    /// world's camera stands high and looks down into its valleys, where
-    /// its lakes lie: the back edge high in the frame and the near half of
-    /// the land below it. The temperate world keeps today's vista.
-    pub fn of(world: World, identity: u64) -> Aim {
-        let Some((skyline, cropped)) = aims(world) else {
-            return Aim::ACROSS;
-        };
-        let draw = crate::terrain::splitmix::mix(identity ^ AIM_KEY);
-        let unit = |shift: u32| ((draw >> shift) & 0xffff) as f32 / 65535.0;
-        let within = |(lo, hi): (f32, f32), t: f32| lo + (hi - lo) * t;
-        Aim {
-            skyline: within(skyline, unit(16)),
-            cropped: within(cropped, unit(40)),
-        }
-    }
-}
-
-/// The ranges [`Aim::of`] draws a world's aim from: where its back edge
-/// sits (least, most) and how much of the land's depth falls below the
-/// frame (least, most); each wide, so the slides of one world are framed
-/// from looking across the land with much sky to looking down with
-/// little. None for the temperate world ([`Aim::ACROSS`]).
-fn aims(world: World) -> Option<((f32, f32), (f32, f32))> {
-    match world {
-        World::Temperate | World::Varied => None,
-        World::Alpine => Some(((0.16, 0.34), (0.35, 0.65))),
-        World::Winter => Some(((0.22, 0.5), (0.0, 0.5))),
-        World::Autumn => Some(((0.25, 0.5), (0.0, 0.45))),
-        World::Desert => Some(((0.25, 0.55), (0.0, 0.4))),
-        // Low over the sea, as the temperate coast: from higher, the
-        // water below the sun or the moon mirrors the sky above it and
-        // no longer glitters.
-        World::Tropical => Some(((0.34, 0.55), (0.0, 0.0))),
-    }
-}
-
-/// Mixed into a mountain's identity for its vista's aim, so the aim is
-/// not another draw's again.
-const AIM_KEY: u64 = 0x6169_6d20_6f66_2076;
-
 /// A camera and its focal length in pixels.
 pub(crate) struct Shot {
     /// Where the camera stands and looks.
@@ -161,8 +87,8 @@ impl Shot {
 
 /// The vista for a grid `extent` units wide in a `width` x `height` frame,
 /// over land whose highest points are `tops` (world positions, e.g. each
-/// row's highest point): the back edge at [`SKYLINE`], or, where the land
-/// would rise within [`SKY_ROOM`] of the top, exactly as much lower as
+/// row's highest point), aimed as `aim` says: the back edge at
+/// [`Aim::skyline`], or, where the land would rise within [`Aim::room`] of the top, exactly as much lower as
 /// keeps that strip of sky (at most down to [`SKYLINE_LOWEST`]); a frame
 /// wider than [`ORDINARY`] whose land needs more is then drawn as a
 /// narrower one stretched sideways ([`Shot::stretch`]).
@@ -195,7 +121,7 @@ fn fitted_to_tops(aim: Aim, extent: f32, width: f32, height: f32, tops: &[Vec3])
         let top = (tops.iter())
             .map(|&p| s.project(p, width, height).y)
             .fold(f32::INFINITY, f32::min);
-        top / height.max(1.0) - SKY_ROOM
+        top / height.max(1.0) - aim.room
     };
     let first = shot(aim.skyline);
     // Not below zero (or not a number: no land to fit): the sky is clear.
@@ -217,7 +143,7 @@ fn fitted_to_tops(aim: Aim, extent: f32, width: f32, height: f32, tops: &[Vec3])
     // Land that still rises out of the top of the frame is cut off, which
     // the vista accepts (its near slope is not yet all there is to see) up
     // to a height of `VISTA_TALLEST`.
-    let fits = clear(&lowered) >= -SKY_ROOM || tallest <= VISTA_TALLEST * extent;
+    let fits = clear(&lowered) >= -aim.room || tallest <= VISTA_TALLEST * extent;
     fits.then_some(lowered)
 }
 
@@ -230,8 +156,8 @@ fn frame(aim: Aim, extent: f32, width: f32, height: f32) -> Shot {
     // The sea-level point that falls just below the bottom, its distance
     // in front of the near edge.
     let near_of = |s: f32| s + aim.cropped;
-    let standoff = STANDOFFS
-        .into_iter()
+    let standoff = std::iter::once(aim.standoff)
+        .chain(STANDOFFS.into_iter().filter(|&s| s < aim.standoff))
         .find(|&s| near_below_bottom((s, near_of(s)), HEIGHTS.1, w, h, skyline) >= 0.0)
         .unwrap_or(last);
     let eye_h = bisect(HEIGHTS.0, HEIGHTS.1, |e| {
@@ -333,31 +259,49 @@ fn bisect_steps(mut lo: f32, mut hi: f32, steps: usize, f: impl Fn(f32) -> f32) 
 mod tests {
     use super::*;
 
-    /// Each world's aims lie within its ranges and reach across most of
-    /// them; the temperate world keeps today's vista.
+    /// A world's slide keeps the sky and the camera distance drawn for its
+    /// mountain, and is framed alike at two sizes: its highest land sits
+    /// the drawn room below the top (where the land is tall enough that
+    /// the fit lowers the back edge), and its camera stands no further off
+    /// than drawn (a nearer one only where the frame needs it).
     #[test]
-    fn each_world_aims_within_its_ranges() {
+    fn a_worlds_slide_keeps_its_drawn_sky_and_distance_at_every_size() {
+        let extent = 256.0;
+        // A ridge a tenth of the width high across the middle of the land.
+        let tops: Vec<Vec3> = (0..=16)
+            .map(|i| {
+                let y = i as f32 / 16.0;
+                let z = 0.1 * (y * std::f32::consts::PI).sin();
+                Vec3::new(0.5, y, z) * extent
+            })
+            .collect();
+        let mut at_room = 0;
         for world in crate::settings::worlds::OWN_LOOKS {
-            let (skyline, cropped) = aims(world).expect("a world's ranges");
-            let drawn: Vec<Aim> = (0..500).map(|i| Aim::of(world, i)).collect();
-            for (range, get) in [
-                (skyline, (|a: &Aim| a.skyline) as fn(&Aim) -> f32),
-                (cropped, |a: &Aim| a.cropped),
-            ] {
-                let values: Vec<f32> = drawn.iter().map(get).collect();
-                let (lo, hi) = values
-                    .iter()
-                    .fold((f32::MAX, f32::MIN), |(lo, hi), &v| (lo.min(v), hi.max(v)));
+            for identity in 0..40 {
+                let aim = Aim::of(world, identity);
+                let framed = [(320.0, 180.0), (1920.0, 1080.0)].map(|(w, h)| {
+                    let shot = fitted(aim, extent, (w, h), &tops, f32::NAN).expect("framed");
+                    let top = (tops.iter())
+                        .map(|&p| shot.project(p, w, h).y / h)
+                        .fold(f32::INFINITY, f32::min);
+                    (top, shot.camera.eye() / extent)
+                });
+                let [(top, eye), (big_top, big_eye)] = framed;
+                let what = format!("{world:?} {identity}: {aim:?}");
                 assert!(
-                    lo >= range.0 && hi <= range.1,
-                    "{world:?}: {lo}..{hi} in {range:?}"
+                    (top - big_top).abs() < 1e-3,
+                    "{what}: {top} against {big_top}"
                 );
                 assert!(
-                    hi - lo >= 0.9 * (range.1 - range.0),
-                    "{world:?}: {lo}..{hi}"
+                    eye.distance(big_eye) < 1e-3,
+                    "{what}: {eye} against {big_eye}"
                 );
+                assert!(top > aim.room - 1e-3, "{what}: the land's top at {top}");
+                assert!(eye.y - 1.0 <= aim.standoff + 1e-4, "{what}: eye {eye}");
+                at_room += usize::from((top - aim.room).abs() < 1e-3);
             }
         }
-        assert_eq!(Aim::of(World::Temperate, 7), Aim::ACROSS);
+        // The drawn room, not a fixed one, is what the fit keeps.
+        assert!(at_room >= 50, "{at_room} of 200 slides at their room");
     }
 }
