@@ -1,8 +1,8 @@
 //! Ridges mode: deterministic, strip by strip, any frame size.
 
-use mountains::render::Size;
 use mountains::render::ridges::Ridges;
 use mountains::render::{Frame, Rect};
+use mountains::render::{Size, colour};
 use mountains::settings::{ColorMode, Settings};
 use mountains::terrain::Heightfield;
 
@@ -87,8 +87,7 @@ fn each_strip_reports_every_pixel_it_changed() {
 }
 
 fn luminance(c: u32) -> f32 {
-    let ch = |s: u32| ((c >> s) & 0xff) as f32;
-    0.2126 * ch(16) + 0.7152 * ch(8) + 0.0722 * ch(0)
+    colour::luminance(colour::unpack(c)) * 255.0
 }
 
 #[test]

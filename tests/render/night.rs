@@ -3,19 +3,18 @@
 //! sky, stars show where the sky is clear and the moon glitters on the
 //! water. The clock's light darkens from day through twilight into night.
 
-use mountains::render::Size;
 use mountains::render::classes::{Class, render_classes};
 use mountains::render::detail::for_frame;
 use mountains::render::hour::SunAt;
 use mountains::render::light::Lighting;
 use mountains::render::palette::Palette;
 use mountains::render::{Frame, render_full};
+use mountains::render::{Size, colour};
 use mountains::settings::{Clouds, ColorMode, Detail, Look, Settings, Sun};
 use mountains::terrain::{self, Heightfield};
 
 fn luma(c: u32) -> f32 {
-    let [r, g, b] = [16, 8, 0].map(|s| ((c >> s) & 0xff) as f32);
-    0.2126 * r + 0.7152 * g + 0.0722 * b
+    colour::luminance(colour::unpack(c)) * 255.0
 }
 
 fn night(w: u32, h: u32, clouds: f32) -> Settings {

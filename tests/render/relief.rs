@@ -7,9 +7,8 @@
 
 use std::sync::Arc;
 
-use mountains::quality::image::channels;
 use mountains::render::classes::{Class, render_classes};
-use mountains::render::{Frame, Painter, Size, render_full};
+use mountains::render::{Frame, Painter, Size, colour, render_full};
 use mountains::settings::{Detail, Settings, Sun, World};
 use mountains::terrain::{self, Heightfield};
 
@@ -53,8 +52,7 @@ fn stepped(field: &Heightfield, settings: &Settings, budget: usize) -> Frame {
 }
 
 fn luma(c: u32) -> f64 {
-    let [r, g, b] = channels(c);
-    0.2126 * r as f64 + 0.7152 * g as f64 + 0.0722 * b as f64
+    f64::from(colour::luminance(colour::unpack(c))) * 255.0
 }
 
 /// The mean |Laplacian| of the luminance over the frame's lower half (the

@@ -2,7 +2,8 @@
 //! the horizon, as xmountains frames its landscapes.
 //!
 //! It is fitted to each frame, in grid widths (the camera stands centred,
-//! one of [`STANDOFFS`] grid widths in front of the near edge, level sideways):
+//! [`Aim::standoff`] grid widths in front of the near edge, or nearer where
+//! that does not fit, level sideways):
 //! - the back edge at sea level spans exactly the frame's width; the grid's
 //!   side edges splay outwards towards the camera, so they never show;
 //! - the middle of the back edge at sea level sits [`Aim::skyline`] of the
@@ -63,7 +64,8 @@ const BELOW: f32 = 2.0 / 1080.0;
 const HEIGHTS: (f32, f32) = (1e-3, 0.97);
 /// Bisection steps for the camera: far below a pixel at any frame size.
 const STEPS: usize = 48;
-/// Bisection steps for the skyline: its 0.32 range down to f32's precision.
+/// Bisection steps for the skyline: its range (at most 0.56 of the frame)
+/// down to f32's precision.
 const SKYLINE_STEPS: usize = 24;
 
 /// A camera and its focal length in pixels.
@@ -88,8 +90,8 @@ impl Shot {
 /// The vista for a grid `extent` units wide in a `width` x `height` frame,
 /// over land whose highest points are `tops` (world positions, e.g. each
 /// row's highest point), aimed as `aim` says: the back edge at
-/// [`Aim::skyline`], or, where the land would rise within [`Aim::room`] of the top, exactly as much lower as
-/// keeps that strip of sky (at most down to [`SKYLINE_LOWEST`]); a frame
+/// [`Aim::skyline`], or, where the land would rise within [`Aim::room`] of
+/// the top, exactly as much lower as keeps that strip of sky (at most down to [`SKYLINE_LOWEST`]); a frame
 /// wider than [`ORDINARY`] whose land needs more is then drawn as a
 /// narrower one stretched sideways ([`Shot::stretch`]).
 ///
@@ -275,7 +277,7 @@ mod tests {
                 Vec3::new(0.5, y, z) * extent
             })
             .collect();
-        let mut at_room = 0;
+        let (mut at_room, mut at_standoff) = (0, 0);
         for world in crate::settings::worlds::OWN_LOOKS {
             for identity in 0..40 {
                 let aim = Aim::of(world, identity);
@@ -299,9 +301,15 @@ mod tests {
                 assert!(top > aim.room - 1e-3, "{what}: the land's top at {top}");
                 assert!(eye.y - 1.0 <= aim.standoff + 1e-4, "{what}: eye {eye}");
                 at_room += usize::from((top - aim.room).abs() < 1e-3);
+                at_standoff += usize::from((eye.y - 1.0 - aim.standoff).abs() < 1e-4);
             }
         }
-        // The drawn room, not a fixed one, is what the fit keeps.
+        // The drawn room and distance, not fixed ones, are what the fit
+        // keeps.
         assert!(at_room >= 50, "{at_room} of 200 slides at their room");
+        assert!(
+            at_standoff >= 150,
+            "{at_standoff} of 200 slides at their distance"
+        );
     }
 }

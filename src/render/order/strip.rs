@@ -430,9 +430,9 @@ impl Scene<'_> {
         }
     }
 
-    /// The relief below the grid, if it shows on the land face `c` (one
-    /// of its corners' cells spans enough pixels for its first level, and
-    /// is light enough to show it).
+    /// The relief below the grid, if it can show on the land face `c`
+    /// ([`Relief::shows`]: its largest cells span enough pixels for the
+    /// first level, and its corners are light and rough enough).
     #[inline]
     fn fine_relief(&self, c: &Face) -> Option<&Relief> {
         self.relief

@@ -324,9 +324,12 @@ impl Lighting {
     }
 }
 
-/// The share of the sky a wall sees, and how much more a flat face does.
+/// The share of the sky a wall sees.
 const SKY_WALL: f32 = 0.6;
+/// How much more of the sky a flat face sees than a wall.
 const SKY_TILT: f32 = 0.4;
+// A flat face sees all of the sky.
+const _: () = assert!(SKY_WALL + SKY_TILT == 1.0);
 
 /// The share of the sky a face whose unit normal rises `z` sees (a flat
 /// face all of it, a wall [`SKY_WALL`]).

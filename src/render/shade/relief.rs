@@ -19,6 +19,7 @@
 
 use glam::{Vec2, Vec3, Vec4};
 
+use super::strata;
 use crate::terrain::Heightfield;
 use crate::terrain::splitmix::mix;
 
@@ -190,10 +191,18 @@ impl Relief {
     /// How many levels show where a cell spans `cell_px` pixels, each
     /// counted by how much of it shows (as [`Relief::slopes`] fades them).
     fn levels_shown(&self, cell_px: f32) -> f32 {
+        self.fades(Vec4::splat(cell_px)).map(|(_, w)| w.x).sum()
+    }
+
+    /// Each level that shows where cells span `cell_px` pixels (a pixel a
+    /// lane), with how much of it shows: finer levels until none shows in
+    /// any lane.
+    #[inline(always)]
+    fn fades(&self, cell_px: Vec4) -> impl Iterator<Item = (usize, Vec4)> {
         let px = cell_px / self.first_step;
         (0..LEVELS)
-            .map(|k| fade(Vec4::splat(px / (1 << k) as f32)).x)
-            .sum()
+            .map(move |k| (k, fade(px / (1 << k) as f32)))
+            .take_while(|(_, w)| w.cmpne(Vec4::ZERO).any())
     }
 
     /// Whether a point whose cells span `cell_px` of the relief's pixels
@@ -248,21 +257,14 @@ impl Relief {
     #[inline]
     fn slopes(&self, g: [Vec4; 2], cell_px: Vec4, rough: Vec4) -> [Vec4; 3] {
         let mut slope = [Vec4::ZERO; 3];
-        let mut step = self.first_step;
-        let mut px = cell_px / self.first_step;
         // Each level's bumps are half as tall and half as wide: the same
         // slope, faded by how many pixels they span.
-        for k in 0..LEVELS {
-            let w = fade(px);
-            if w.cmpeq(Vec4::ZERO).all() {
-                break;
-            }
+        for (k, w) in self.fades(cell_px) {
+            let step = self.first_step * (1 << k) as f32;
             let level = self.level(k, [g[0] * step, g[1] * step]);
             for (s, l) in slope.iter_mut().zip(level) {
                 *s += l * w;
             }
-            step *= 2.0;
-            px *= 0.5;
         }
         // A level's slope in grid steps: its bumps' height over its step.
         slope.map(|s| s * (rough * (FIRST * self.first_step)))
@@ -321,10 +323,16 @@ impl Relief {
     }
 }
 
-/// The steepest slope of a level's bumps, in their height per lattice
-/// step (3 along each axis of the lattice, and the cosine's change per
-/// unit of turn a little over 1).
+/// A bound on how much a level changes a pixel's light, per unit of its
+/// bumps' height over its step and of the pixel's share of the light
+/// ([`Relief::shows`]). A level's value noise is at most 3 steep (its
+/// gradient peaks along an axis); the direct light's cosine changes by at
+/// most the normal's turn, the sky's upward part by under 0.4 of it, and a
+/// hollow's depth is at most 1. The strata can make a pixel up to
+/// 1 + [`strata::DEPTH`] times the corner colours `shows` reads: 3 x 1.2 is
+/// still under this.
 const STEEPEST: f32 = 5.0;
+const _: () = assert!(3.0 * (1.0 + strata::DEPTH) <= STEEPEST);
 
 /// Over how much of the cosine past the terminator the direct light's
 /// change fades in (its inverse).
@@ -345,8 +353,11 @@ fn fade(px: Vec4) -> Vec4 {
     t * t * (Vec4::splat(3.0) - t * 2.0)
 }
 
-/// 1.5 x 2^23: a float from 2^23 on has no fraction, and one of magnitude
-/// under 2^22 added to this keeps its whole part in its low bits.
+/// 1.5 x 2^23: a float from 2^23 on has no fraction, so a number of
+/// magnitude under 2^22 added to this is rounded to the nearest whole
+/// number (ties to even), kept in the sum's low bits; `value_slope` takes
+/// half a step off first, for the floor. Lattice positions stay under
+/// 2^18 (a 4097 grid's fifth level below it, turned and offset).
 const ROUND: f32 = 12_582_912.0;
 
 /// Lattice points a side of the table of values: a level repeats after
@@ -396,16 +407,15 @@ impl Lattice {
         self.cell(level, x, y).x
     }
 
-    /// The values at the corners of the lattice cell whose first corner
-    /// is (`x`, `y`), of level `level`: that corner, the next across, the
-    /// next down and the one across and down.
+    /// [`Lattice::cell_at`] of signed lattice coordinates.
     #[cfg(test)]
     fn cell(&self, level: u32, x: i32, y: i32) -> Vec4 {
         self.cell_at(level, x as usize, y as usize)
     }
 
-    /// [`Lattice::cell`] of a lattice point whose coordinates are `x` and
-    /// `y` modulo the table's side.
+    /// The values at the corners of the lattice cell of level `level`
+    /// whose first corner is (`x`, `y`) (modulo the table's side): that
+    /// corner, the next across, the next down and the one across and down.
     #[inline(always)]
     fn cell_at(&self, level: u32, x: usize, y: usize) -> Vec4 {
         let m = SIDE - 1;

@@ -10,7 +10,9 @@
 //! once: O(points), rows in memory order, one row of state per pass, and the
 //! points of a row are independent (a light closer to the x axis sweeps the
 //! transposed grid). One thread: the output cannot depend on thread count.
-//! A field finer than `MAX_SWEPT` points a side is swept on a coarser copy.
+//! A field finer than `MAX_SWEPT` points a side is swept at every
+//! `2^shift`-th point, read in place (a coarser copy would be another field
+//! held beside the frame while the next mountain is made).
 //!
 //! A point is fully lit when it stands at or above the horizon arriving from
 //! its neighbour, and fully dark once it is as far below it as the light
