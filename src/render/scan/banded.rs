@@ -346,17 +346,41 @@ mod tests {
     fn a_faces_held_spans_set_what_its_spans_would_and_keep_what_is_written() {
         let v = [to_fixed(0.5, 0.5), to_fixed(90.5, 0.5), to_fixed(0.5, 30.5)];
         let colours = [0x806040, 0x406080, 0x608040];
-        let fill = || {
-            let gradient = Gradient::new(v);
+        // A factor of each pixel's own position.
+        let gain = |q: [Vec4; 8]| {
+            Vec4::from_array((q[0] * 0.37 + q[1] * 1.3).to_array().map(f32::sin)) * 0.3 + 1.0
+        };
+        let fine = |gradient: &Gradient| {
             let mut q = [[0.0; super::super::fine::LANES]; 3];
             (q[1][0], q[2][1]) = (90.0, 30.0);
-            // A factor of each pixel's own position.
-            let gain = |q: [Vec4; 8]| {
-                Vec4::from_array((q[0] * 0.37 + q[1] * 1.3).to_array().map(f32::sin)) * 0.3 + 1.0
-            };
-            let fine = Fine::new(&gradient, q, gain);
-            Fill::<fn(f32) -> f32, _>::Fine(Blend::over(&gradient, colours), fine)
+            Fine::new(gradient, q, gain)
         };
+        // The relief alone, and with the strata's bands across the face.
+        let tone: fn(f32) -> f32 = |h| if h < 10.0 { 0.5 } else { -0.5 };
+        let fill = |banded: bool| match banded {
+            false => Fill::Fine(Blend::new(v, colours), fine(&Gradient::new(v))),
+            true => Banded::or_plain(
+                v,
+                colours,
+                [0.0, 0.0, 20.0],
+                [0.3; 3],
+                |_, _| Some(tone),
+                |g| Some(fine(g)),
+            ),
+        };
+        assert!(matches!(
+            fill(true),
+            Fill::Banded(Banded { fine: Some(_), .. })
+        ));
+        for banded in [false, true] {
+            held_spans_match(&fill(banded), || fill(banded));
+        }
+    }
+
+    /// A face filled span by span (`plain`) and by [`FaceFill`] (`fill()`)
+    /// sets the same pixels, and the latter keeps what was written before
+    /// on a first-write canvas.
+    fn held_spans_match<T: Tone, G: Gain>(plain: &Fill<T, G>, fill: impl Fn() -> Fill<T, G>) {
         // Short spans and long ones, as a face's rows come.
         let spans: Vec<(u32, u32, u32)> = (0..30)
             .map(|y| {
@@ -370,7 +394,6 @@ mod tests {
         let (w, h) = (96, 32);
         let mut direct = vec![0u32; w * h];
         let mut canvas = Canvas::new(&mut direct, w as u32, 0);
-        let plain = fill();
         for &(y, x0, x1) in &spans {
             plain.fill(&mut canvas, y, x0, x1);
         }

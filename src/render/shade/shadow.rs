@@ -133,27 +133,11 @@ fn cast_within(field: &Heightfield, light: Vec3, max_swept: usize) -> ShadowMap 
         lit: vec![255; n * n],
     };
     if gy.abs() >= gx.abs() {
-        sweep(
-            heights,
-            n,
-            &mut map.lit,
-            gx / gy.abs(),
-            gy > 0.0,
-            rise,
-            false,
-        );
+        sweep(heights, &mut map.lit, gx / gy.abs(), gy > 0.0, rise, false);
     } else {
         // Sweeping along rows would make every point wait for its left or
         // right neighbour; sweeping columns keeps a line's points independent.
-        sweep(
-            heights,
-            n,
-            &mut map.lit,
-            gy / gx.abs(),
-            gx > 0.0,
-            rise,
-            true,
-        );
+        sweep(heights, &mut map.lit, gy / gx.abs(), gx > 0.0, rise, true);
     }
     map
 }
@@ -197,21 +181,14 @@ impl<'a> Grid<'a> {
     }
 }
 
-/// The horizon sweep over the `n` x `n` grid `heights`, one line at a time:
-/// rows, or columns if `columns`. The light's rays reach each line from the
-/// line before (nearer the light), offset by `dx` points along it (|dx| <= 1).
+/// The horizon sweep over the grid `heights`, one line at a time: rows, or
+/// columns if `columns`. The light's rays reach each line from the line
+/// before (nearer the light), offset by `dx` points along it (|dx| <= 1).
 /// `towards_end` is true when the light lies towards the last line, so the
 /// sweep starts there. `rise` is the light's rise per cell of horizontal
 /// distance.
-fn sweep(
-    heights: Grid,
-    n: usize,
-    lit: &mut [u8],
-    dx: f32,
-    towards_end: bool,
-    rise: f32,
-    columns: bool,
-) {
+fn sweep(heights: Grid, lit: &mut [u8], dx: f32, towards_end: bool, rise: f32, columns: bool) {
+    let n = heights.n;
     let mut sweeper = Sweeper::new(n, dx, rise);
     let order = |k: usize| if towards_end { n - 1 - k } else { k };
     if !columns {
