@@ -311,6 +311,7 @@ impl<T: Tone, G: Gain> Banded<T, G> {
 mod tests {
     use super::*;
     use crate::render::base::fixed::to_fixed;
+    use crate::render::scan::fine::LANES;
 
     #[test]
     fn no_strength_is_the_plain_blend_and_full_strength_the_tone() {
@@ -323,7 +324,7 @@ mod tests {
             [0.0, 0.0, 20.0],
             [strength; 3],
             |_, _| Some(tone),
-            |_| None::<Fine<fn([Vec4; 8]) -> Vec4>>,
+            |_| None::<Fine<fn([Vec4; LANES]) -> Vec4>>,
         ) {
             Fill::Banded(b) => b,
             _ => panic!("not banded"),
@@ -347,11 +348,11 @@ mod tests {
         let v = [to_fixed(0.5, 0.5), to_fixed(90.5, 0.5), to_fixed(0.5, 30.5)];
         let colours = [0x806040, 0x406080, 0x608040];
         // A factor of each pixel's own position.
-        let gain = |q: [Vec4; 8]| {
+        let gain = |q: [Vec4; LANES]| {
             Vec4::from_array((q[0] * 0.37 + q[1] * 1.3).to_array().map(f32::sin)) * 0.3 + 1.0
         };
         let fine = |gradient: &Gradient| {
-            let mut q = [[0.0; super::super::fine::LANES]; 3];
+            let mut q = [[0.0; LANES]; 3];
             (q[1][0], q[2][1]) = (90.0, 30.0);
             Fine::new(gradient, q, gain)
         };
@@ -439,7 +440,7 @@ mod tests {
                 told = (p, s);
                 None::<fn(f32) -> f32>
             },
-            |_| None::<Fine<fn([Vec4; 8]) -> Vec4>>,
+            |_| None::<Fine<fn([Vec4; LANES]) -> Vec4>>,
         );
         assert!(matches!(fill, Fill::Plain(_)), "no tone: blended plain");
         assert!((told.0 - 2.0).abs() < 1e-5, "{told:?}");

@@ -6,10 +6,8 @@
 use glam::Vec4;
 
 use super::gradient::Gradient;
+pub(crate) use crate::render::shade::relief::LANES;
 use crate::render::shade::relief::Relief;
-
-/// Values blended across a triangle, a pixel's eight.
-pub(crate) const LANES: usize = 8;
 
 /// Pixels whose factors are worked out before they are set: a span is
 /// done in pieces of this many.

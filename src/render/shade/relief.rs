@@ -25,7 +25,7 @@ use crate::terrain::splitmix::mix;
 
 /// Levels below the grid at most: at 4K the nearest cells are about 40
 /// pixels across, and the fifth level's bumps there are a pixel or so.
-pub(crate) const LEVELS: usize = 5;
+const LEVELS: usize = 5;
 
 /// A level's bumps at least this many pixels across show in full.
 const FULL_PX: f32 = 2.0;
@@ -37,11 +37,15 @@ const NONE_PX: f32 = 0.8;
 /// least this many pixels across: the first level fades in above it (its
 /// lattice has at least two steps a cell), so a face drawn plain and a
 /// refined neighbour agree where they meet.
-pub(crate) const MIN_CELL_PX: f32 = 2.0 * NONE_PX;
+const MIN_CELL_PX: f32 = 2.0 * NONE_PX;
 
 /// How tall the first level's bumps are against the grid's own last
 /// level's: the generator halves its cragginess at every level.
 const FIRST: f32 = 0.5;
+
+/// Values a grid point hands the pixels of the faces around it
+/// ([`FinePoint::lanes`]), and [`Relief::gains`] reads of each pixel.
+pub(crate) const LANES: usize = 8;
 
 /// What a grid point tells the pixels of the faces around it about its
 /// relief, blended across each face as its colour is.
@@ -64,7 +68,7 @@ impl FinePoint {
     /// The point's values as a face blends them: grid x and y, the
     /// slopes, the shares, the cell's pixels and the roughness.
     #[inline]
-    pub(crate) fn lanes(&self, g: Vec2) -> [f32; 8] {
+    pub(crate) fn lanes(&self, g: Vec2) -> [f32; LANES] {
         [
             g.x,
             g.y,
@@ -296,7 +300,7 @@ impl Relief {
     /// (the whole change would darken ground square to the sun, where any
     /// turn lowers the cosine, and lighten faces turned away).
     #[inline]
-    pub(crate) fn gains(&self, q: [Vec4; 8]) -> Vec4 {
+    pub(crate) fn gains(&self, q: [Vec4; LANES]) -> Vec4 {
         let [gx, gy, nx, ny, direct, sky, cell_px, rough] = q;
         let [sx, sy, depth] = self.slopes([gx, gy], cell_px, rough).map(|s| s / self.cell);
         // The palette's y runs to the back, the grid's to the front: the
