@@ -553,9 +553,7 @@ impl<'a> Scene<'a> {
             slope,
             shares: self.palette.lighting().shares(n, v.lit, v.sky) * clear(v.haze),
             cell_px,
-            // Steep faces keep the grid's light: there the bumps, laid
-            // over the ground's plan, would run down them as streaks.
-            rough: relief.rough_at(x, y) * n.z * n.z,
+            rough: relief.rough_at(x, y),
         }
     }
 

@@ -838,7 +838,7 @@ fn banded<'s>(
 /// The relief below the grid across the land face `c` of `gradient`.
 #[inline]
 fn fine<'r>(gradient: &Gradient, c: &Face, relief: &'r Relief) -> Fine<&'r Relief> {
-    Fine::new(gradient, c.map(|k| k.fine.lanes(k.g)), relief)
+    Fine::new(gradient, c.map(|k| k.fine.lanes(k.g, k.h)), relief)
 }
 
 /// Light on a face: the mean of its corners'.

@@ -137,11 +137,13 @@ mod tests {
         let v = [to_fixed(0.5, 0.5), to_fixed(40.5, 0.5), to_fixed(0.5, 20.5)];
         let corner = |a: f32, b: f32| {
             let mut q = [0.0; LANES];
-            (q[0], q[7]) = (a, b);
+            (q[0], q[LANES - 1]) = (a, b);
             q
         };
         let q = [corner(0.0, 1.0), corner(40.0, 3.0), corner(0.0, -1.0)];
-        let fine = Fine::new(&Gradient::new(v), q, |q: [Vec4; LANES]| q[0] + q[7] * 100.0);
+        let fine = Fine::new(&Gradient::new(v), q, |q: [Vec4; LANES]| {
+            q[0] + q[LANES - 1] * 100.0
+        });
         let at = |x: u32, y: u32| {
             let mut out = [0.0; 1];
             fine.gains(&fine.row(y), x, &mut out);

@@ -45,7 +45,7 @@ const FIRST: f32 = 0.5;
 
 /// Values a grid point hands the pixels of the faces around it
 /// ([`FinePoint::lanes`]), and [`Relief::gains`] reads of each pixel.
-pub(crate) const LANES: usize = 8;
+pub(crate) const LANES: usize = 9;
 
 /// What a grid point tells the pixels of the faces around it about its
 /// relief, blended across each face as its colour is.
@@ -66,9 +66,11 @@ pub(crate) struct FinePoint {
 
 impl FinePoint {
     /// The point's values as a face blends them: grid x and y, the
-    /// slopes, the shares, the cell's pixels and the roughness.
+    /// slopes, the shares, the cell's pixels, the roughness and the
+    /// ground's height `h` (in height units: where the side views read
+    /// their bumps, see [`Relief::gains`]).
     #[inline]
-    pub(crate) fn lanes(&self, g: Vec2) -> [f32; LANES] {
+    pub(crate) fn lanes(&self, g: Vec2, h: f32) -> [f32; LANES] {
         [
             g.x,
             g.y,
@@ -78,6 +80,7 @@ impl FinePoint {
             self.shares.y,
             self.cell_px,
             self.rough,
+            h,
         ]
     }
 
@@ -101,9 +104,10 @@ pub(crate) struct Relief {
     /// Number of the first level below the grid (the land's side is one
     /// step of level 0).
     first_level: u32,
-    /// Each level's turn (cosine, sine) and offset in lattice steps.
-    turns: [Vec2; LEVELS],
-    offsets: [Vec2; LEVELS],
+    /// Each level's turn and offset.
+    turns: [Turn; LEVELS],
+    /// The side views' levels' ([`SIDE_LEVELS`], coarsest first).
+    side_turns: [Turn; SIDE_LEVELS],
     /// Unit vector towards the light, in the palette's frame.
     sun: Vec3,
     /// Height units per grid step.
@@ -134,20 +138,16 @@ impl Relief {
         let first_level = cells.next_power_of_two().trailing_zeros() + 1;
         let first_step = 2f32.powi(first_level as i32) / cells as f32;
         let (rough, blocks) = roughness(field);
-        let mut turns = [Vec2::X; LEVELS];
-        let mut offsets = [Vec2::ZERO; LEVELS];
-        for (k, (t, o)) in turns.iter_mut().zip(&mut offsets).enumerate() {
-            let h = mix(seed ^ mix(first_level as u64 + k as u64));
-            let angle = (h & 0xffff) as f32 / 65536.0 * std::f32::consts::TAU;
-            *t = Vec2::new(angle.cos(), angle.sin());
-            *o = Vec2::new(((h >> 16) & 0xff) as f32, ((h >> 24) & 0xff) as f32);
-        }
+        let turns = std::array::from_fn(|k| Turn::of(seed ^ mix(first_level as u64 + k as u64)));
+        let side_turns = std::array::from_fn(|j| {
+            Turn::of(seed ^ mix(SIDE_KEY ^ (first_level as u64 + j as u64)))
+        });
         Relief {
             lattice: Lattice::new(seed),
             first_step,
             first_level,
             turns,
-            offsets,
+            side_turns,
             sun,
             cell,
             rough,
@@ -193,9 +193,14 @@ impl Relief {
     }
 
     /// How many levels show where a cell spans `cell_px` pixels, each
-    /// counted by how much of it shows (as [`Relief::slopes`] fades them).
+    /// counted by how much of it shows (as [`Relief::slopes`] fades them):
+    /// the plan's or the side views', whichever the more (a pixel's share
+    /// of the plan's bumps and of the side views' make at most one).
     fn levels_shown(&self, cell_px: f32) -> f32 {
-        self.fades(Vec4::splat(cell_px)).map(|(_, w)| w.x).sum()
+        let px = Vec4::splat(cell_px);
+        let plan: f32 = self.fades(px).map(|(_, w)| w.x).sum();
+        let side: f32 = self.side_fades(px).map(|(_, _, w)| w.x).sum();
+        plan.max(side * SIDE_BUMPS)
     }
 
     /// Each level that shows where cells span `cell_px` pixels (a pixel a
@@ -207,6 +212,23 @@ impl Relief {
         (0..LEVELS)
             .map(move |k| (k, fade(px / (1 << k) as f32)))
             .take_while(|(_, w)| w.cmpne(Vec4::ZERO).any())
+    }
+
+    /// [`Relief::fades`] of the side views' levels, coarsest first: each
+    /// level's number among them, its spacing against the first level
+    /// below the grid's, and its weight ([`SIDE_WEIGHTS`]) times how much
+    /// of it shows. The levels coarser than that first one fade in with
+    /// it, so a face drawn plain and a refined neighbour agree where they
+    /// meet.
+    #[inline(always)]
+    fn side_fades(&self, cell_px: Vec4) -> impl Iterator<Item = (usize, f32, Vec4)> {
+        let px = cell_px / self.first_step;
+        (0..SIDE_LEVELS)
+            .map(move |j| {
+                let scale = 2f32.powi(j as i32 - SIDE_COARSER as i32);
+                (j, scale, fade(px / scale.max(1.0)) * SIDE_WEIGHTS[j])
+            })
+            .take_while(|(_, _, w)| w.cmpne(Vec4::ZERO).any())
     }
 
     /// Whether a point whose cells span `cell_px` of the relief's pixels
@@ -265,7 +287,7 @@ impl Relief {
         // slope, faded by how many pixels they span.
         for (k, w) in self.fades(cell_px) {
             let step = self.first_step * (1 << k) as f32;
-            let level = self.level(k, [g[0] * step, g[1] * step]);
+            let level = self.plan_level(k, [g[0] * step, g[1] * step]);
             for (s, l) in slope.iter_mut().zip(level) {
                 *s += l * w;
             }
@@ -274,46 +296,114 @@ impl Relief {
         slope.map(|s| s * (rough * (FIRST * self.first_step)))
     }
 
-    /// The slope of level `k` below the grid at `p` (in its lattice
-    /// steps, before its turn; four pixels, a pixel a lane), in its bumps'
-    /// height per lattice step, and the height there in the same unit.
+    /// [`Relief::slopes`] of a side view: its levels from
+    /// [`SIDE_COARSER`] above the first below the grid, each weighed by
+    /// [`SIDE_WEIGHTS`], on the plane of `g` (a grid direction and the
+    /// height in grid steps).
     #[inline]
-    fn level(&self, k: usize, p: [Vec4; 2]) -> [Vec4; 3] {
-        let (t, o) = (self.turns[k], self.offsets[k]);
+    fn side_slopes(&self, g: [Vec4; 2], cell_px: Vec4, rough: Vec4) -> [Vec4; 3] {
+        let mut slope = [Vec4::ZERO; 3];
+        for (j, scale, w) in self.side_fades(cell_px) {
+            let step = self.first_step * scale;
+            let number = self.first_level + j as u32 - SIDE_COARSER;
+            let level = self.level(self.side_turns[j], number, [g[0] * step, g[1] * step]);
+            for (s, l) in slope.iter_mut().zip(level) {
+                *s += l * w;
+            }
+        }
+        slope.map(|s| s * (rough * (FIRST * self.first_step)))
+    }
+
+    /// [`Relief::level`] of the plan's level `k` below the grid.
+    #[inline(always)]
+    fn plan_level(&self, k: usize, p: [Vec4; 2]) -> [Vec4; 3] {
+        self.level(self.turns[k], self.first_level + k as u32, p)
+    }
+
+    /// The slope of the level numbered `number` (turned by `turn`) at `p`
+    /// (in its lattice steps, before its turn; four pixels, a pixel a
+    /// lane), in its bumps' height per lattice step, and the height there
+    /// in the same unit.
+    #[inline]
+    fn level(&self, turn: Turn, number: u32, p: [Vec4; 2]) -> [Vec4; 3] {
+        let (t, o) = (turn.turn, turn.offset);
         let u = [
             p[0] * t.x - p[1] * t.y + Vec4::splat(o.x),
             p[0] * t.y + p[1] * t.x + Vec4::splat(o.y),
         ];
-        let [dx, dy, v] = self.lattice.value_slope(self.first_level + k as u32, u);
+        let [dx, dy, v] = self.lattice.value_slope(number, u);
         // Back from the turned lattice to the grid's directions.
         [dx * t.x + dy * t.y, dy * t.x - dx * t.y, v]
     }
 
     /// How much brighter (over 1) or darker the finer terrain makes four
     /// pixels, a pixel a lane, whose blended [`FinePoint::lanes`] are `q`
-    /// (grid x and y, the slopes, the shares, the cells' pixels and the
-    /// roughness).
+    /// (grid x and y, the slopes, the shares, the cells' pixels, the
+    /// roughness and the ground's height).
     ///
     /// The change of the light is taken to first order in the finer
     /// slopes: bumps as often up as down then lighten and darken about
     /// the grid's own light, and seen from afar the land keeps its light
     /// (the whole change would darken ground square to the sun, where any
     /// turn lowers the cosine, and lighten faces turned away).
+    ///
+    /// Bumps laid over the ground's plan run down a steep face as
+    /// streaks, and tilt its normal less the steeper it is: the plan's
+    /// bumps fade with the square of the normal's upward part, and a steep
+    /// face takes its bumps from a side view instead ([`Relief::sides`]),
+    /// as a triplanar texture does.
     #[inline]
     pub(crate) fn gains(&self, q: [Vec4; LANES]) -> Vec4 {
-        let [gx, gy, nx, ny, direct, sky, cell_px, rough] = q;
-        let [sx, sy, depth] = self.slopes([gx, gy], cell_px, rough).map(|s| s / self.cell);
-        // The palette's y runs to the back, the grid's to the front: the
-        // normal (x, y, 1) turns by (-sx, sy, 0).
-        let (tx, ty) = (-sx, sy);
+        let [gx, gy, nx, ny, direct, sky, cell_px, rough, height] = q;
         let len = Vec4::from_array((nx * nx + ny * ny + Vec4::ONE).to_array().map(f32::sqrt));
         let inv = Vec4::ONE / len;
+        let upward = inv * inv;
+        let sine = Vec4::from_array(
+            (Vec4::ONE - upward)
+                .max(Vec4::ZERO)
+                .to_array()
+                .map(f32::sqrt),
+        );
+        let side = ramp(sine, SIDE_FROM, SIDE_FULL);
+        // The plan's bumps give way to the side views' (a wall reads none).
+        let plan = upward * (Vec4::ONE - side);
+        let (mut turn, mut depth) = ([Vec4::ZERO; 3], Vec4::ZERO);
+        if plan.cmpgt(Vec4::ZERO).any() {
+            let [sx, sy, d] = self.slopes([gx, gy], cell_px, rough * plan);
+            // The palette's y runs to the back, the grid's to the front:
+            // the normal (x, y, 1) turns by (-sx, sy, 0).
+            (turn, depth) = ([-sx / self.cell, sy / self.cell, Vec4::ZERO], d / self.cell);
+        }
+        if side.cmpgt(Vec4::ZERO).any() {
+            let bumps = rough * side * SIDE_BUMPS;
+            let (side_turn, side_depth) = self.sides([gy, gx, height], [nx, ny], cell_px, bumps);
+            // A side view's slope tilts the unit normal; (x, y, 1) is
+            // `len` long.
+            for (t, s) in turn.iter_mut().zip(side_turn) {
+                *t += s * len;
+            }
+            depth += side_depth;
+        }
+        self.light_change([nx, ny, inv], turn, depth, [direct, sky])
+    }
+
+    /// The factor of four pixels whose normals (`nx`, `ny`, 1) are `1/inv`
+    /// long, turned by `turn` and lying `depth` in a hollow, that take
+    /// `shares` of their light from the direct light and the sky.
+    #[inline(always)]
+    fn light_change(
+        &self,
+        [nx, ny, inv]: [Vec4; 3],
+        [tx, ty, tz]: [Vec4; 3],
+        depth: Vec4,
+        [direct, sky]: [Vec4; 2],
+    ) -> Vec4 {
         let l = self.sun;
         let cos = (nx * l.x + ny * l.y + Vec4::splat(l.z)) * inv;
         // d/dturn of n.sun / |n| and of 1 / |n| (the normal's upward part).
-        let along = (tx * nx + ty * ny) * inv * inv;
-        let d_cos = (tx * l.x + ty * l.y) * inv - cos * along;
-        let d_up = -along * inv;
+        let along = (tx * nx + ty * ny + tz) * inv * inv;
+        let d_cos = (tx * l.x + ty * l.y + tz * l.z) * inv - cos * along;
+        let d_up = (tz - along) * inv;
         // Faces turned from the light get none of it; the change fades in
         // past the terminator, so no line is drawn there.
         let lit = (cos * TERMINATOR).clamp(Vec4::ZERO, Vec4::ONE);
@@ -325,6 +415,77 @@ impl Relief {
         // would turn white: such a pixel keeps the grid's light.
         Vec4::select(gain.is_finite_mask(), gain, Vec4::ONE)
     }
+
+    /// The turn of the unit normal (palette x, y and z) and the hollows'
+    /// depth that the side views give four pixels: grid y, grid x and the
+    /// ground's height `h`, their normals' slopes `n`, with bumps `rough`
+    /// tall at the first level.
+    ///
+    /// A face turned along x is seen from x: its bumps lie on the plane
+    /// of grid y and height; one turned along y, on grid x and height (a
+    /// face turned between the two blends them). Each view's bumps stand
+    /// out from the face, so they tilt its normal across the face and up
+    /// it, whatever its steepness.
+    #[inline]
+    fn sides(
+        &self,
+        [gy, gx, h]: [Vec4; 3],
+        [nx, ny]: [Vec4; 2],
+        cell_px: Vec4,
+        rough: Vec4,
+    ) -> ([Vec4; 3], Vec4) {
+        let z = h / self.cell;
+        let (ax, ay) = (nx.abs(), ny.abs());
+        let lean = (ax - ay) / (ax + ay).max(Vec4::splat(1e-6));
+        let from_x = ramp(lean, -SIDE_BLEND, SIDE_BLEND);
+        let from_y = Vec4::ONE - from_x;
+        let (mut turn, mut depth) = ([Vec4::ZERO; 3], Vec4::ZERO);
+        if from_x.cmpgt(Vec4::ZERO).any() {
+            let [a, b, d] = self.side_slopes([gy, z], cell_px, rough * from_x);
+            // Grid y runs to the palette's front.
+            turn[1] += a / self.cell;
+            turn[2] -= b / self.cell;
+            depth += d / self.cell;
+        }
+        if from_y.cmpgt(Vec4::ZERO).any() {
+            let [a, b, d] = self.side_slopes([gx, z], cell_px, rough * from_y);
+            turn[0] -= a / self.cell;
+            turn[2] -= b / self.cell;
+            depth += d / self.cell;
+        }
+        (turn, depth)
+    }
+}
+
+/// Where the side views take over from the plan's: the sine of the slope
+/// (the unit normal's level part) from which they show, and from which in
+/// full (51 and 59 degrees). Below, the plan's bumps stretch by at most
+/// 1.6 down the slope; the band is narrow, as in it both views are worked
+/// out.
+const SIDE_FROM: f32 = 0.78;
+const SIDE_FULL: f32 = 0.86;
+/// How tall a side view's bumps stand out from a face, against the
+/// plan's over the ground: a rock face is fractured finer than its slope
+/// is rough, and at the plan's height its light would read as sandpaper.
+const SIDE_BUMPS: f32 = 0.4;
+/// A side view's levels: from this many above the first below the grid
+/// (a steep face's cells span few pixels across but many down, and down
+/// it the grid draws nothing finer than the face), each level's slope
+/// weighed, coarsest first (the finest only a grain).
+const SIDE_COARSER: u32 = 2;
+const SIDE_LEVELS: usize = 3;
+const SIDE_WEIGHTS: [f32; SIDE_LEVELS] = [1.0, 0.7, 0.45];
+/// Mixed into the seed for the side views' turns.
+const SIDE_KEY: u64 = 0x7369_6465_7669_6577;
+/// A face turned between x and y (its normal's |x| - |y| over their sum
+/// within this either way) blends the two side views.
+const SIDE_BLEND: f32 = 0.2;
+
+/// 0 up to `from`, 1 from `full` on, smooth between (a pixel a lane).
+#[inline(always)]
+fn ramp(x: Vec4, from: f32, full: f32) -> Vec4 {
+    let t = ((x - Vec4::splat(from)) * (1.0 / (full - from))).clamp(Vec4::ZERO, Vec4::ONE);
+    t * t * (Vec4::splat(3.0) - t * 2.0)
 }
 
 /// A bound on how much a level changes a pixel's light, per unit of its
@@ -352,9 +513,29 @@ const GAIN: (f32, f32) = (0.3, 1.7);
 /// lane).
 #[inline]
 fn fade(px: Vec4) -> Vec4 {
-    let t =
-        ((px - Vec4::splat(NONE_PX)) * (1.0 / (FULL_PX - NONE_PX))).clamp(Vec4::ZERO, Vec4::ONE);
-    t * t * (Vec4::splat(3.0) - t * 2.0)
+    ramp(px, NONE_PX, FULL_PX)
+}
+
+/// How a level's lattice lies over the land: turned, so that no level
+/// lines up with the grid or another, and moved.
+#[derive(Clone, Copy, Debug)]
+struct Turn {
+    /// The turn's cosine and sine.
+    turn: Vec2,
+    /// The offset, in lattice steps.
+    offset: Vec2,
+}
+
+impl Turn {
+    /// The turn drawn from `h`.
+    fn of(h: u64) -> Self {
+        let h = mix(h);
+        let angle = (h & 0xffff) as f32 / 65536.0 * std::f32::consts::TAU;
+        Turn {
+            turn: Vec2::new(angle.cos(), angle.sin()),
+            offset: Vec2::new(((h >> 16) & 0xff) as f32, ((h >> 24) & 0xff) as f32),
+        }
+    }
 }
 
 /// 1.5 x 2^23: a float from 2^23 on has no fraction, so a number of
@@ -567,10 +748,13 @@ mod tests {
             let g = Vec2::new(0.37 * i as f32 + 0.11, 3.0 - 0.23 * i as f32);
             let (nx, ny) = (0.3 - 0.02 * i as f32, 0.1 + 0.01 * i as f32);
             // Direct light alone, bumps small enough for the first order.
-            let q = |rough: f32| [g.x, g.y, nx, ny, 1.0, 0.0, 24.0, rough].map(Vec4::splat);
+            let q = |rough: f32| [g.x, g.y, nx, ny, 1.0, 0.0, 24.0, rough, 3.0].map(Vec4::splat);
             assert_eq!(relief.gains(q(0.0)), Vec4::ONE, "no bumps, no change");
             let rough = 1e-5;
-            let s = relief.slope(g, 24.0, rough) / cell;
+            // The plan's bumps, faded by the normal's upward part squared
+            // (these slopes are gentle: no side view).
+            let upward = 1.0 / (1.0 + nx * nx + ny * ny);
+            let s = relief.slope(g, 24.0, rough * upward) / cell;
             // The palette's y runs to the back, the grid's to the front.
             let exact = cos(Vec3::new(nx - s.x, ny + s.y, 1.0)) - cos(Vec3::new(nx, ny, 1.0));
             let got = relief.gains(q(rough)).x - 1.0;
@@ -579,6 +763,83 @@ mod tests {
                 "{i}: gain - 1 = {got}, the light's change {exact}"
             );
         }
+    }
+
+    /// The factor of one pixel at grid position `g`, height `h`, whose
+    /// normal runs along (`n.x`, `n.y`, 1), with bumps `rough` tall.
+    fn gain_at(relief: &Relief, g: Vec2, h: f32, n: Vec2, rough: f32) -> f32 {
+        let q = [g.x, g.y, n.x, n.y, 0.7, 0.3, 24.0, rough, h];
+        relief.gains(q.map(Vec4::splat)).x
+    }
+
+    /// The standard deviation of `values`.
+    fn spread(values: &[f32]) -> f32 {
+        let mean = values.iter().sum::<f32>() / values.len() as f32;
+        let var = values.iter().map(|v| (v - mean).powi(2)).sum::<f32>() / values.len() as f32;
+        var.sqrt()
+    }
+
+    #[test]
+    fn a_steep_face_has_bumps_down_it_as_across_it() {
+        // Bumps laid over the ground's plan would not change down a wall
+        // (its plan is a line): its light would run down it in streaks.
+        let (sun, cell) = (Vec3::new(-0.3, 0.6, 0.5).normalize(), 0.25);
+        let relief = Relief::new(&Heightfield::flat(10, 250.0), 11, sun, cell);
+        let (g, h) = (Vec2::new(300.0, 400.0), 30.0);
+        // Walls turned towards the front, the back and either side.
+        for n in [
+            Vec2::new(0.0, 8.0),
+            Vec2::new(0.0, -8.0),
+            Vec2::new(8.0, 0.0),
+            Vec2::new(-7.0, 2.0),
+        ] {
+            // Along the wall: across its normal, level.
+            let across = Vec2::new(-n.y, n.x).normalize() * 0.05;
+            let down: Vec<f32> = (0..400)
+                .map(|i| gain_at(&relief, g, h - i as f32 * 0.05 * cell, n, 0.1))
+                .collect();
+            let along: Vec<f32> = (0..400)
+                .map(|i| gain_at(&relief, g + across * i as f32, h, n, 0.1))
+                .collect();
+            let (down, along) = (spread(&down), spread(&along));
+            assert!(
+                down > 0.01 && along > 0.01,
+                "{n}: spread {down} down, {along} across"
+            );
+            assert!(
+                down < 3.0 * along && along < 3.0 * down,
+                "{n}: spread {down} down, {along} across"
+            );
+        }
+    }
+
+    #[test]
+    fn the_light_turns_smoothly_from_the_plan_to_the_side_views() {
+        let (sun, cell) = (Vec3::new(-0.3, 0.6, 0.5).normalize(), 0.25);
+        let relief = Relief::new(&Heightfield::flat(10, 250.0), 11, sun, cell);
+        let (g, h) = (Vec2::new(123.4, 567.8), 20.0);
+        let check = |what: &str, normal: &dyn Fn(f32) -> Vec2| {
+            let gains: Vec<f32> = (0..=4000)
+                .map(|i| gain_at(&relief, g, h, normal(i as f32 / 4000.0), 0.1))
+                .collect();
+            let jump = gains
+                .windows(2)
+                .map(|w| (w[1] - w[0]).abs())
+                .fold(0.0, f32::max);
+            let most = gains.iter().map(|g| (g - 1.0).abs()).fold(0.0, f32::max);
+            assert!(
+                most > 0.05,
+                "{what}: the bumps change the light by {most} at most"
+            );
+            assert!(jump < 0.01, "{what}: the light jumps by {jump}");
+        };
+        // From gentle to a wall (past the side views' start and end),
+        // and round a steep face from turned along x to along y.
+        check("steeper", &|t| Vec2::new(0.3, 0.5 + 7.5 * t));
+        check("turned", &|t| {
+            let a = t * std::f32::consts::FRAC_PI_2;
+            Vec2::new(a.cos(), a.sin()) * 4.0
+        });
     }
 
     #[test]
@@ -596,8 +857,14 @@ mod tests {
             let (pa, pb) = (a * coarse.first_step * 2.0, b * fine.first_step);
             assert_eq!(pa, pb);
             let lanes = |p: Vec2| [Vec4::splat(p.x), Vec4::splat(p.y)];
-            assert_eq!(coarse.level(1, lanes(pa)), fine.level(0, lanes(pb)));
-            assert_ne!(coarse.level(0, lanes(pa)), fine.level(0, lanes(pb)));
+            assert_eq!(
+                coarse.plan_level(1, lanes(pa)),
+                fine.plan_level(0, lanes(pb))
+            );
+            assert_ne!(
+                coarse.plan_level(0, lanes(pa)),
+                fine.plan_level(0, lanes(pb))
+            );
         }
     }
 
@@ -653,16 +920,24 @@ mod tests {
             (state >> 40) as f32 / (1u64 << 24) as f32
         };
         let (mut plain, mut refined) = (0, 0);
-        for _ in 0..2000 {
-            let corners: [(FinePoint, Vec2, u32); 3] = std::array::from_fn(|_| {
+        for face in 0..2000 {
+            // Every other face steep: its pixels take the side views.
+            let steep = if face % 2 == 0 { 1.0 } else { 8.0 };
+            let corners: [(FinePoint, Vec2, u32, f32); 3] = std::array::from_fn(|_| {
                 let point = FinePoint {
-                    slope: Vec2::new(next() * 2.0 - 1.0, next() * 2.0 - 1.0),
+                    slope: Vec2::new(next() * 2.0 - 1.0, next() * 2.0 - 1.0) * steep,
                     shares: Vec2::new(next(), next() * 0.6),
                     cell_px: 1.0 + next() * 30.0,
                     rough: 10f32.powf(-6.0 * next()) * 0.02,
                 };
                 let grey = (next() * 255.0) as u32;
-                (point, Vec2::new(next(), next()) * 1024.0, grey * 0x10101)
+                let height = next() * 75.0;
+                (
+                    point,
+                    Vec2::new(next(), next()) * 1024.0,
+                    grey * 0x10101,
+                    height,
+                )
             });
             let shows = relief.shows(corners.each_ref().map(|c| &c.0), corners.map(|c| c.2));
             if shows {
@@ -675,7 +950,7 @@ mod tests {
                 // A pixel's values, blended from its corners'.
                 let (a, b) = (next(), next());
                 let w = [a * b, a * (1.0 - b), 1.0 - a];
-                let lanes = corners.map(|c| c.0.lanes(c.1));
+                let lanes = corners.map(|c| c.0.lanes(c.1, c.3));
                 let q = std::array::from_fn(|i| {
                     Vec4::splat((0..3).map(|k| w[k] * lanes[k][i]).sum::<f32>())
                 });
