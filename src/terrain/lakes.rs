@@ -28,6 +28,7 @@ mod labels;
 mod lips;
 mod open;
 mod pits;
+mod raised;
 mod rise;
 mod spill;
 

@@ -43,7 +43,8 @@ pub(super) fn lakes(
     rows: usize,
     found: &mut impl FnMut(f32, &mut [u32]),
 ) {
-    let (pits, lips, sizes) = basins(heights, n, rows);
+    // A pit of one point raised loses only a lake of one point.
+    let (pits, lips, sizes) = basins(heights, n, rows, least > 1);
     let levels = levels(lips, &sizes);
     let mut seen = Bits::new(heights.len());
     let mut lake = Vec::new();
