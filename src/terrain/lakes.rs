@@ -31,6 +31,7 @@ mod pits;
 mod raised;
 mod rise;
 mod spill;
+mod wide;
 
 /// The two ways the lakes are found: from the basins' lips (fast, found in
 /// bands of `rows` rows), or by the water rising from the pits (with two

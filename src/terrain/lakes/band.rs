@@ -297,7 +297,21 @@ fn follow_row(ways: &mut [u32], first: usize, row: Range<usize>) {
 /// point being point `first` of the field; branch-free (the compiler keeps
 /// it in vector registers). A point raised above its height in `plain`
 /// (the field's row) goes to its lowest neighbour.
-fn ways_of_row([above, row, below]: [&[f32]; 3], plain: &[f32], out: &mut [u32], first: usize) {
+fn ways_of_row(rows: [&[f32]; 3], plain: &[f32], out: &mut [u32], first: usize) {
+    super::wide::wide(
+        #[inline(always)]
+        || ways_of_row_here(rows, plain, out, first),
+    );
+}
+
+/// [`ways_of_row`], for whichever vector registers it is compiled for.
+#[inline(always)]
+fn ways_of_row_here(
+    [above, row, below]: [&[f32]; 3],
+    plain: &[f32],
+    out: &mut [u32],
+    first: usize,
+) {
     let n = row.len();
     let around = [
         &above[..n - 2],

@@ -66,6 +66,15 @@ pub(super) fn lips_in(
 /// not that of its neighbour right (0), below left (1), below (2) or
 /// below right (3), `below` being the next row's basins.
 fn edges_of_row(row: &[u32], below: &[u32], edges: &mut [u8]) {
+    super::wide::wide(
+        #[inline(always)]
+        || edges_of_row_here(row, below, edges),
+    );
+}
+
+/// [`edges_of_row`], for whichever vector registers it is compiled for.
+#[inline(always)]
+fn edges_of_row_here(row: &[u32], below: &[u32], edges: &mut [u8]) {
     let n = row.len();
     for x in 1..n - 1 {
         let a = row[x];

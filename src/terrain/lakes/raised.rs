@@ -82,7 +82,16 @@ impl<'a> Raised<'a> {
 /// Raises each pit of one point of `row` (off the border) in `out` to its
 /// lowest neighbour; branch-free (the compiler keeps it in vector
 /// registers).
-fn raise_pits([above, row, below]: [&[f32]; 3], out: &mut [f32]) {
+fn raise_pits(rows: [&[f32]; 3], out: &mut [f32]) {
+    super::wide::wide(
+        #[inline(always)]
+        || raise_pits_here(rows, out),
+    );
+}
+
+/// [`raise_pits`], for whichever vector registers it is compiled for.
+#[inline(always)]
+fn raise_pits_here([above, row, below]: [&[f32]; 3], out: &mut [f32]) {
     let n = row.len();
     for x in 0..n - 2 {
         let v = row[x + 1];
