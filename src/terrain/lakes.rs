@@ -23,6 +23,7 @@ mod ahead;
 mod band;
 mod bands;
 mod bits;
+mod fill;
 mod grid;
 mod labels;
 mod lips;
