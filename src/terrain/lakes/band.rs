@@ -368,3 +368,43 @@ fn root(parent: &mut [u32], mut x: u32) -> u32 {
     }
     x
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Three rows of `n` heights in a few steps (ties), with sea, no data
+    /// and a raised point or two.
+    fn rows(n: usize, seed: u64) -> Vec<Vec<f32>> {
+        (0..4)
+            .map(|r| {
+                (0..n as u64)
+                    .map(|x| {
+                        let h = crate::terrain::splitmix::mix(seed ^ (r * 1000 + x));
+                        match h % 23 {
+                            0 => f32::NAN,
+                            1 => 0.0,
+                            k => (k % 7) as f32,
+                        }
+                    })
+                    .collect()
+            })
+            .collect()
+    }
+
+    #[test]
+    fn wide_registers_find_the_same_first_steps() {
+        for seed in 0..20 {
+            let n = 37 + seed as usize;
+            let r = rows(n, seed);
+            // The fourth row stands for the middle one's field heights:
+            // where it is lower, the middle point counts as raised.
+            let plain: Vec<f32> = r[1].iter().zip(&r[3]).map(|(a, b)| a.min(*b)).collect();
+            let (mut wide, mut narrow) = (vec![0; n], vec![0; n]);
+            let three = [r[0].as_slice(), &r[1], &r[2]];
+            ways_of_row(three, &plain, &mut wide, 5 * n);
+            ways_of_row_here(three, &plain, &mut narrow, 5 * n);
+            assert_eq!(wide, narrow, "seed {seed}");
+        }
+    }
+}

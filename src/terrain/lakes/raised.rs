@@ -143,4 +143,32 @@ mod tests {
         let mut plain = Raised::new(&heights, n, false);
         assert_eq!(plain.around(1)[1], &heights[5..10]);
     }
+
+    #[test]
+    fn wide_registers_raise_the_same_pits() {
+        let mut raised = 0;
+        for seed in 0..20u64 {
+            let n = 37 + seed as usize;
+            let row = |r: u64| -> Vec<f32> {
+                (0..n as u64)
+                    .map(|x| {
+                        let h = crate::terrain::splitmix::mix(seed ^ (r * 1000 + x));
+                        match h % 31 {
+                            0 => f32::NAN,
+                            1 => 0.0,
+                            k => (k % 9) as f32 + 0.5,
+                        }
+                    })
+                    .collect()
+            };
+            let (above, mid, below) = (row(0), row(1), row(2));
+            let (mut wide, mut narrow) = (mid.clone(), mid.clone());
+            raise_pits([&above, &mid, &below], &mut wide);
+            raise_pits_here([&above, &mid, &below], &mut narrow);
+            let bits = |v: &[f32]| v.iter().map(|h| h.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(&wide), bits(&narrow), "seed {seed}");
+            raised += wide.iter().zip(&mid).filter(|(w, m)| w > m).count();
+        }
+        assert!(raised > 0, "no pit raised");
+    }
 }
