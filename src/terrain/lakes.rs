@@ -23,13 +23,16 @@ mod ahead;
 mod band;
 mod bands;
 mod bits;
+mod fill;
 mod grid;
 mod labels;
 mod lips;
 mod open;
 mod pits;
+mod raised;
 mod rise;
 mod spill;
+mod wide;
 
 /// The two ways the lakes are found: from the basins' lips (fast, found in
 /// bands of `rows` rows), or by the water rising from the pits (with two

@@ -18,11 +18,13 @@ pub(super) fn band_rows(n: usize) -> usize {
 /// The basins of `heights` (`n` a side) found in bands of `rows` rows:
 /// the pits in place order (pit `k`'s basin is `k + 1`, the outlets' is
 /// 0); the lips between the basins, in two lists, each lowest first; and
-/// each basin's number of points.
+/// each basin's number of points. If `raise`, the basins are those of the
+/// field with its pits of one point raised (see [`super::raised`]).
 pub(super) fn basins(
     heights: &[f32],
     n: usize,
     rows: usize,
+    raise: bool,
 ) -> (Vec<u32>, [Vec<Lip>; 2], Vec<u32>) {
     let starts = starts(n, rows);
     let half = starts.len() / 2;
@@ -32,7 +34,7 @@ pub(super) fn basins(
         for b in from..to {
             let end = starts.get(b + 1).copied().unwrap_or(n);
             let above = bands.last().map(Band::last_row);
-            let band = band(heights, n, starts[b]..end, above, &mut ways);
+            let band = band(heights, n, starts[b]..end, (above, raise), &mut ways);
             bands.push(band);
         }
         bands

@@ -26,7 +26,7 @@
 
 use super::band::OUTLET;
 use super::bands::basins;
-use super::bits::Bits;
+use super::fill::Filler;
 use super::lips::Lip;
 
 /// Most points of a field whose lakes are found here; a 4097 grid's are
@@ -43,17 +43,18 @@ pub(super) fn lakes(
     rows: usize,
     found: &mut impl FnMut(f32, &mut [u32]),
 ) {
-    let (pits, lips, sizes) = basins(heights, n, rows);
+    // A pit of one point raised loses only a lake of one point.
+    let (pits, lips, sizes) = basins(heights, n, rows, least > 1);
     let levels = levels(lips, &sizes);
-    let mut seen = Bits::new(heights.len());
+    let mut filler = Filler::new(heights, n);
     let mut lake = Vec::new();
     for (&pit, &(level, room)) in pits.iter().zip(&levels[1..]) {
         let pit = pit as usize;
-        if room < least || level <= heights[pit] || seen.get(pit) {
+        if room < least || level <= heights[pit] || filler.seen(pit) {
             continue;
         }
-        fill(heights, n, pit, level, &mut seen, &mut lake);
-        if lake.len() >= least {
+        if filler.fill(pit, level) >= least {
+            filler.points(&mut lake);
             found(level, &mut lake);
         }
     }
@@ -150,46 +151,4 @@ impl Sets {
         self.next[tail] = b as u32;
         self.last[a] = self.last[b];
     }
-}
-
-/// Lists in `lake` the points joined to `pit` below `level`, in place
-/// order, and marks them in `seen`. A run of a row at a time: the whole
-/// run of such points a point lies in, then the runs beside it in the rows
-/// above and below, from one point left of it to one right of it (lakes
-/// join across a cell's diagonals, as the triangles drawn over the cells
-/// do); a row is read in order, where a point at a time would read its
-/// eight neighbours.
-fn fill(heights: &[f32], n: usize, pit: usize, level: f32, seen: &mut Bits, lake: &mut Vec<u32>) {
-    let wet = |seen: &Bits, i: usize| !seen.get(i) && heights[i] < level;
-    let mut runs = Vec::new();
-    let mut todo = vec![pit];
-    while let Some(p) = todo.pop() {
-        if !wet(seen, p) {
-            continue;
-        }
-        let (y, row) = (p / n, p / n * n);
-        let (mut start, mut end) = (p, p + 1);
-        while start > row && wet(seen, start - 1) {
-            start -= 1;
-        }
-        while end < row + n && wet(seen, end) {
-            end += 1;
-        }
-        (start..end).for_each(|i| seen.set(i));
-        runs.push(start as u32..end as u32);
-        let beside = (start - row).saturating_sub(1)..(end - row + 1).min(n);
-        for side in [y.wrapping_sub(1), y + 1].into_iter().filter(|&s| s < n) {
-            let mut was_wet = false;
-            for i in beside.clone().map(|x| side * n + x) {
-                let is_wet = wet(seen, i);
-                if is_wet && !was_wet {
-                    todo.push(i);
-                }
-                was_wet = is_wet;
-            }
-        }
-    }
-    runs.sort_unstable_by_key(|r| r.start);
-    lake.clear();
-    lake.extend(runs.into_iter().flatten());
 }
