@@ -182,7 +182,9 @@ impl Relief {
         // The most a pixel's light changes per unit of its shares and
         // roughness: a level's slope at its steepest, over the cell, for
         // as much of each level as shows at the face's largest cells.
-        let per = STEEPEST * FIRST * self.first_step * self.levels_shown(cell_px) / self.cell;
+        let walls = steepest_everywhere(points.map(|p| p.slope));
+        let per =
+            STEEPEST * FIRST * self.first_step * self.levels_shown(cell_px, walls) / self.cell;
         let shares = most(&|p| p.shares.x + p.shares.y * (1.0 + HOLLOW));
         let bright = colours
             .iter()
@@ -195,12 +197,16 @@ impl Relief {
     /// How many levels show where a cell spans `cell_px` pixels, each
     /// counted by how much of it shows (as [`Relief::slopes`] fades them):
     /// the plan's or the side views', whichever the more (a pixel's share
-    /// of the plan's bumps and of the side views' make at most one).
-    fn levels_shown(&self, cell_px: f32) -> f32 {
+    /// of the plan's bumps and of the side views' make at most one); the
+    /// side views' alone on `walls`, faces too steep for the plan's.
+    fn levels_shown(&self, cell_px: f32, walls: bool) -> f32 {
         let px = Vec4::splat(cell_px);
+        let side: f32 = self.side_fades(px).map(|(_, _, w)| w.x).sum::<f32>() * SIDE_BUMPS;
+        if walls {
+            return side;
+        }
         let plan: f32 = self.fades(px).map(|(_, w)| w.x).sum();
-        let side: f32 = self.side_fades(px).map(|(_, _, w)| w.x).sum();
-        plan.max(side * SIDE_BUMPS)
+        plan.max(side)
     }
 
     /// Each level that shows where cells span `cell_px` pixels (a pixel a
@@ -480,6 +486,21 @@ const SIDE_KEY: u64 = 0x7369_6465_7669_6577;
 /// A face turned between x and y (its normal's |x| - |y| over their sum
 /// within this either way) blends the two side views.
 const SIDE_BLEND: f32 = 0.2;
+
+/// Whether every pixel of a face whose corners' normals have the slopes
+/// `slopes` is steep enough to take no bumps from the plan: a pixel's
+/// slopes are blended from its corners' and held within their range, so
+/// they lie in the corners' box, whose nearest point to level is tested.
+fn steepest_everywhere(slopes: [Vec2; 3]) -> bool {
+    let lo = slopes[0].min(slopes[1]).min(slopes[2]);
+    let hi = slopes[0].max(slopes[1]).max(slopes[2]);
+    if !(lo.is_finite() && hi.is_finite()) {
+        return false;
+    }
+    let nearest = Vec2::ZERO.clamp(lo, hi);
+    // The sine of the slope is SIDE_FULL or more where |s|^2 (1 - f^2) >= f^2.
+    nearest.length_squared() * (1.0 - SIDE_FULL * SIDE_FULL) >= SIDE_FULL * SIDE_FULL
+}
 
 /// 0 up to `from`, 1 from `full` on, smooth between (a pixel a lane).
 #[inline(always)]
@@ -811,6 +832,52 @@ mod tests {
                 "{n}: spread {down} down, {along} across"
             );
         }
+    }
+
+    #[test]
+    fn a_face_said_too_steep_for_the_plan_is_so_at_every_pixel() {
+        let sine = |s: Vec2| s.length() / (1.0 + s.length_squared()).sqrt();
+        let mut state = 9u64;
+        let mut next = || {
+            state = mix(state);
+            (state >> 40) as f32 / (1u64 << 24) as f32 * 2.0 - 1.0
+        };
+        let (mut walls, mut not) = (0, 0);
+        for face in 0..4000 {
+            // Corners turned about one way, steeper or gentler.
+            let (base, spread) = (Vec2::new(next(), next()) * 4.0, [0.3, 1.5][face % 2]);
+            let slopes: [Vec2; 3] =
+                std::array::from_fn(|_| base + Vec2::new(next(), next()) * spread);
+            if !steepest_everywhere(slopes) {
+                not += 1;
+                continue;
+            }
+            walls += 1;
+            for _ in 0..20 {
+                // A pixel's slopes: blended, or held to the corners' box.
+                let (a, b) = ((next() + 1.0) / 2.0, (next() + 1.0) / 2.0);
+                let blend = slopes[0] * a * b + slopes[1] * a * (1.0 - b) + slopes[2] * (1.0 - a);
+                let lo = slopes[0].min(slopes[1]).min(slopes[2]);
+                let hi = slopes[0].max(slopes[1]).max(slopes[2]);
+                let held = (blend + Vec2::new(next(), next()) * 2.0).clamp(lo, hi);
+                for s in [blend, held] {
+                    assert!(sine(s) >= SIDE_FULL - 1e-5, "{slopes:?}: {s} is gentler");
+                }
+            }
+        }
+        assert!(walls > 500 && not > 500, "{walls} walls, {not} not");
+        // Corners steep every way round a gentle middle are not walls.
+        let round = [
+            Vec2::new(3.0, 0.0),
+            Vec2::new(-3.0, 0.1),
+            Vec2::new(0.0, 3.0),
+        ];
+        assert!(!steepest_everywhere(round));
+        assert!(!steepest_everywhere([
+            Vec2::NAN,
+            Vec2::X * 3.0,
+            Vec2::Y * 3.0
+        ]));
     }
 
     #[test]
