@@ -559,7 +559,8 @@ pub fn sun(world: World, identity: u64) -> Option<SunAt> {
 /// The day's light in `world`, from the time of day's `light`: winter's
 /// low, cold sun (lower, paler and bluer, more of its light from the
 /// sky); in every world but the temperate a brighter or duller, warmer or
-/// colder day by the mountain's draw `v` ([`air_draw`]); a full night's
+/// colder day, its shade lighter or deeper, by the mountain's draw `v`
+/// ([`air_draw`]); a full night's
 /// land lit [`MOONLIT`] times as bright as the temperate world's.
 /// Twilights and seed 000's light are left as they are.
 pub fn light(world: World, mut light: Lighting, v: f32) -> Lighting {
@@ -594,9 +595,18 @@ pub fn light(world: World, mut light: Lighting, v: f32) -> Lighting {
     };
     let k = 0.95 + 0.3 * bright;
     light.direct = [0, 1, 2].map(|i| light.direct[i] * tint[i] * k);
+    // A hazy day's sky lights the shade more than a clear one's: how
+    // much, a third draw from the one.
+    let sky = SKY_LIGHT.0 + (SKY_LIGHT.1 - SKY_LIGHT.0) * (v * 3.0).fract();
+    light.ambient = light.ambient.map(|c| c * sky);
     light.glints = light.direct;
     light
 }
+
+/// How bright a world's day's sky light is against its time of day's,
+/// least and most ([`light`]): the shade deep under a clear sky, light
+/// under a hazy one.
+const SKY_LIGHT: (f32, f32) = (0.7, 1.6);
 
 /// How much brighter a world's moonlit land is than `sun = "night"`'s
 /// (the temperate world's nights keep their pictures): the land must
@@ -664,6 +674,34 @@ mod tests {
             }
             assert_eq!(lit.zenith, night.zenith, "{world:?}: the sky is the air's");
         }
+    }
+
+    /// A world's day's sky light is its time of day's times a factor
+    /// within [`SKY_LIGHT`], over most of it (winter's own colder sky
+    /// light aside); the temperate world's is its time of day's.
+    #[test]
+    fn a_worlds_sky_light_lies_within_its_range() {
+        use crate::settings::Sun;
+        let field = crate::terrain::Heightfield::flat(5, 100.0);
+        let day = Lighting::new(Sun::Midday, &field);
+        for world in [World::Alpine, World::Autumn, World::Desert, World::Tropical] {
+            let ks: Vec<f32> = (0..500)
+                .map(|i| light(world, day.clone(), i as f32 / 500.0).ambient[2] / day.ambient[2])
+                .collect();
+            let (lo, hi) = ks
+                .iter()
+                .fold((f32::MAX, f32::MIN), |(a, b), &k| (a.min(k), b.max(k)));
+            let (least, most) = SKY_LIGHT;
+            assert!(
+                lo >= least - 1e-4 && hi <= most + 1e-4,
+                "{world:?}: {lo}..{hi}"
+            );
+            assert!(hi - lo >= 0.9 * (most - least), "{world:?}: {lo}..{hi}");
+        }
+        assert_eq!(
+            light(World::Temperate, day.clone(), 0.3).ambient,
+            day.ambient
+        );
     }
 
     /// Every world's night sky is dark but not black, top and horizon,

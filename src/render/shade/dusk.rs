@@ -16,10 +16,10 @@ use crate::settings::World;
 const TWILIGHTS_IN_256: u64 = 192;
 
 /// Degrees below the horizon a twilight's sun stands, least and most:
-/// from half way into `hour.rs`'s twilight (nearer, it lights the land
-/// by its last light from a disc a degree up, the sunset's picture) to
-/// where the afterglow still shows ([`glowing`]).
-pub(super) const DEPTHS: (f32, f32) = (6.0, 9.0);
+/// from the first of it (`hour.rs` still grazes the land with the sun's
+/// last light from a degree up, out of the frame to the side) to where
+/// the afterglow still shows ([`glowing`]).
+pub(super) const DEPTHS: (f32, f32) = (3.0, 9.0);
 
 /// Mixed into a mountain's identity for its twilight, so it is not
 /// another draw's again.
@@ -28,7 +28,8 @@ const DUSK_KEY: u64 = 0x6475_736b_2064_7261;
 /// The sun of the twilight the mountain `identity` in `world` is lit by
 /// where its varied draw made night, or None for a night under the moon
 /// (and always for the temperate world). Evening or morning, the sun
-/// gone down ahead of the viewer or to either side.
+/// gone down to the viewer's right or left: its last light's disc (which
+/// `hour.rs` keeps a degree up) stays out of the frame.
 pub(super) fn twilight(world: World, identity: u64) -> Option<SunAt> {
     if matches!(world, World::Temperate | World::Varied) {
         return None;
@@ -41,7 +42,10 @@ pub(super) fn twilight(world: World, identity: u64) -> Option<SunAt> {
     let afternoon = (draw >> 63) == 1;
     Some(SunAt {
         elevation: -(DEPTHS.0 + (DEPTHS.1 - DEPTHS.0) * unit(8)),
-        azimuth: 30.0 + 120.0 * unit(24),
+        azimuth: match afternoon {
+            true => 135.0 + 40.0 * unit(24),
+            false => 5.0 + 40.0 * unit(24),
+        },
         afternoon,
     })
 }
@@ -80,7 +84,9 @@ mod tests {
     use crate::settings::worlds::OWN_LOOKS;
 
     /// Three in four of a world's nights are twilight, each sun within its
-    /// depths and over most of them; the temperate world has none.
+    /// depths and over most of them, and to the side, never ahead within
+    /// the view (`cover::sun`'s 75-105 degrees); the temperate world has
+    /// none.
     #[test]
     fn a_worlds_twilights_lie_within_their_depths() {
         for world in OWN_LOOKS {
@@ -92,6 +98,9 @@ mod tests {
                 (a.min(-s.elevation), b.max(-s.elevation))
             });
             assert!(least >= DEPTHS.0 && most <= DEPTHS.1, "{least}..{most}");
+            for s in &suns {
+                assert!(!(50.0..=130.0).contains(&s.azimuth), "{world:?}: {s:?}");
+            }
             assert!(
                 most - least >= 0.9 * (DEPTHS.1 - DEPTHS.0),
                 "{least}..{most}"
