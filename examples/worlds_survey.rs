@@ -24,6 +24,9 @@
 //! - *night*: the slide's light is the night's;
 //! - *lakes seen*: at least 0.1% of the frame is water with `lakes = true`
 //!   and not with `lakes = false` (the basins' water alone).
+//!
+//! Each slide's line and each `nearest to` line name the slide's world and
+//! time of day, so the near pairs say which worlds and hours sit close.
 
 #[path = "shared/flags.rs"]
 mod flags;
