@@ -8,9 +8,10 @@
 //! colours no key says (the ground's cover, the water, the air) are read
 //! from `Settings::world` by the palette.
 //!
-//! Only data and the draw here, each key named by its row's constant: the
-//! key table checks every value against its key's range, and a test
-//! applies every preset.
+//! Only data and the draws here, each key named by its row's constant:
+//! the key table checks every value against its key's range, a test
+//! applies every preset, and another draws every spread key
+//! ([`spreads`], the keys a world draws per mountain within a range).
 
 use super::keys::table::{CLIFFS, CRAGGINESS, EROSION, HEIGHT, LAKES, REFLECTIONS, SEA_LEVEL};
 use super::keys::{self, Value};
@@ -85,7 +86,7 @@ const TROPICAL: &[(&str, Preset)] = &[
     (EROSION.name, Float(0.5)),
 ];
 
-/// The keys a world draws per mountain, each within its (least, most):
+/// The number keys a world draws per mountain, each within its (least, most):
 /// where the sea stands, so one world's slides are not all one coast
 /// (the alpine and autumn valleys drowned deeper or left dry, the
 /// tropics' islands larger or fewer, the desert's basin wider or
@@ -106,15 +107,14 @@ fn spreads(world: World) -> &'static [(&'static str, (f64, f64))] {
 const SPREAD_KEY: u64 = 0x7370_7265_6164_206b;
 
 /// The value of the spread key at `place` in [`spreads`] for the mountain
-/// of `seed`, within `(least, most)` (a whole number for a whole-number key).
-fn spread(seed: u64, place: usize, (least, most): (f64, f64), whole: bool) -> Value {
-    let draw = crate::terrain::splitmix::mix(seed ^ SPREAD_KEY ^ place as u64);
-    let unit = (draw >> 11) as f64 / (1u64 << 53) as f64;
-    let x = least + (most - least) * unit;
-    match whole {
-        true => Value::Int(x.round() as i64),
-        false => Value::Float(x),
-    }
+/// of `seed`, within `(least, most)`; a mountain without a seed (a data
+/// set's) takes the middle.
+fn spread(seed: Option<u64>, place: usize, (least, most): (f64, f64)) -> Value {
+    let unit = seed.map_or(0.5, |seed| {
+        let draw = crate::terrain::splitmix::mix(seed ^ SPREAD_KEY ^ place as u64);
+        (draw >> 11) as f64 / (1u64 << 53) as f64
+    });
+    Value::Float(least + (most - least) * unit)
 }
 
 /// The keys `world` sets and their values (none for the temperate coast,
@@ -164,7 +164,8 @@ pub fn drawn_for(seed: u64) -> World {
 
 /// `settings` as the mountain of `seed` is made and drawn with: its world
 /// chosen ([`chosen`]) and held in `world`, and each key the world sets
-/// that `settings` leave at their default given the world's value.
+/// that `settings` leave at their default given the world's value (its
+/// fixed [`presets`], and its [`spreads`] drawn for the mountain).
 pub fn drawn(settings: &Settings, seed: Option<u64>) -> Settings {
     let world = chosen(settings, seed);
     let mut out = settings.clone();
@@ -178,19 +179,9 @@ pub fn drawn(settings: &Settings, seed: Option<u64>) -> Settings {
         };
         (name, value)
     });
-    // A mountain without a seed keeps each spread key's middle.
-    let spread = spreads(world)
-        .iter()
-        .enumerate()
-        .map(|(place, &(name, range))| {
-            let whole = keys::find(name).is_some_and(|k| matches!((k.default)(), Value::Int(_)));
-            let value = match seed {
-                Some(seed) => spread(seed, place, range, whole),
-                None => spread_middle(range, whole),
-            };
-            (name, value)
-        });
-    for (name, value) in fixed.chain(spread) {
+    let ranged = (spreads(world).iter().enumerate())
+        .map(|(place, &(name, range))| (name, spread(seed, place, range)));
+    for (name, value) in fixed.chain(ranged) {
         let Some(key) = keys::find(name) else {
             continue;
         };
@@ -200,15 +191,6 @@ pub fn drawn(settings: &Settings, seed: Option<u64>) -> Settings {
         }
     }
     out
-}
-
-/// The middle of a spread key's range (for a mountain without a seed).
-fn spread_middle((least, most): (f64, f64), whole: bool) -> Value {
-    let x = 0.5 * (least + most);
-    match whole {
-        true => Value::Int(x.round() as i64),
-        false => Value::Float(x),
-    }
 }
 
 #[cfg(test)]
@@ -247,7 +229,6 @@ mod tests {
                 let key = keys::find(name).expect("a key");
                 let value = |s: &Settings| match keys::get(s, key) {
                     Value::Float(x) => x,
-                    Value::Int(i) => i as f64,
                     other => panic!("{name}: {other:?}"),
                 };
                 let values: Vec<f64> = (1..=300)
