@@ -24,6 +24,9 @@
 //! - *night*: the slide's light is the night's;
 //! - *lakes seen*: at least 0.1% of the frame is water with `lakes = true`
 //!   and not with `lakes = false` (the basins' water alone).
+//!
+//! Each slide's line and each `nearest to` line name the slide's world and
+//! time of day, so the near pairs say which worlds and hours sit close.
 
 #[path = "shared/flags.rs"]
 mod flags;
@@ -32,6 +35,7 @@ use mountains::quality::facets::{delta_e, lab};
 use mountains::quality::image::channels;
 use mountains::render::Size;
 use mountains::render::classes::{Class, render_classes};
+use mountains::render::light::Lighting;
 use mountains::render::palette::Palette;
 use mountains::render::{Frame, detail, render_full};
 use mountains::settings::{Settings, worlds};
@@ -41,6 +45,8 @@ use mountains::terrain;
 struct Slide {
     seed: u64,
     world: String,
+    /// The time of day ([`time_of_day`]).
+    time: String,
     night: bool,
     green: bool,
     water: bool,
@@ -69,8 +75,9 @@ fn main() {
         .map(|&seed| {
             let s = slide(&prefs, seed, size);
             println!(
-                "seed {seed:3} {:9} night {} green {} water {} snow {} lakes {:.2}%",
+                "seed {seed:3} {:9} {:14} night {} green {} water {} snow {} lakes {:.2}%",
                 s.world,
+                s.time,
                 s.night as u8,
                 s.green as u8,
                 s.water as u8,
@@ -107,8 +114,8 @@ fn report(slides: &[Slide]) {
         }
         let b = &slides[whose];
         println!(
-            "nearest to seed {:3} ({}): seed {:3} ({}), dE {best:.1}",
-            a.seed, a.world, b.seed, b.world
+            "nearest to seed {:3} ({} {}): seed {:3} ({} {}), dE {best:.1}",
+            a.seed, a.world, a.time, b.seed, b.world, b.time
         );
         nearest.push(best);
     }
@@ -185,15 +192,32 @@ fn slide(prefs: &Settings, seed: u64, (w, h): (u32, u32)) -> Slide {
         }
         lakes += usize::from(c == Class::Water && dry_classes[i] != Class::Water);
     }
+    let light = Palette::lighting_for(&worlds::drawn(&settings, Some(seed)), &field);
     Slide {
         seed,
         world,
-        night: Palette::lighting_for(&worlds::drawn(&settings, Some(seed)), &field).night > 0.0,
+        time: time_of_day(&light),
+        night: light.night > 0.0,
         green: 2 * green > ground,
         water: 2 * water > bottom,
         snow: snow * 50 >= lower,
         lakes: lakes as f64 / (w * h) as f64,
         thumb: thumbnail(&labs, w, h),
+    }
+}
+
+/// The slide's time of day: "night" under a full night's look, "dusk"
+/// and how far into it in twilight, else the sun's height and its
+/// bearing (degrees round from the viewer's left, 90 ahead), each in
+/// degrees.
+fn time_of_day(light: &Lighting) -> String {
+    let sun = light.sun;
+    let up = sun.z.clamp(-1.0, 1.0).asin().to_degrees();
+    let round = sun.y.atan2(-sun.x).to_degrees();
+    match light.night {
+        n if n >= 1.0 => format!("night {round:3.0}"),
+        n if n > 0.0 => format!("dusk {n:.2} {round:3.0}"),
+        _ => format!("sun {up:2.0} {round:3.0}"),
     }
 }
 

@@ -8,9 +8,10 @@
 //! colours no key says (the ground's cover, the water, the air) are read
 //! from `Settings::world` by the palette.
 //!
-//! Only data and the draw here, each key named by its row's constant: the
-//! key table checks every value against its key's range, and a test
-//! applies every preset.
+//! Only data and the draws here, each key named by its row's constant:
+//! the key table checks every value against its key's range, a test
+//! applies every preset, and another draws every spread key
+//! ([`spreads`], the keys a world draws per mountain within a range).
 
 use super::keys::table::{CLIFFS, CRAGGINESS, EROSION, HEIGHT, LAKES, REFLECTIONS, SEA_LEVEL};
 use super::keys::{self, Value};
@@ -51,17 +52,12 @@ const ALPINE: &[(&str, Preset)] = &[
     (CRAGGINESS.name, Int(128)),
     (HEIGHT.name, Int(6)),
     (EROSION.name, Float(0.8)),
-    (SEA_LEVEL.name, Float(-0.3)),
     (LAKES.name, Bool(true)),
 ];
 
 /// Rolling hills to a frozen shore (the palette's ice and cold air; the
 /// time of day stays the slide's own).
-const WINTER: &[(&str, Preset)] = &[
-    (HEIGHT.name, Int(6)),
-    (EROSION.name, Float(0.6)),
-    (SEA_LEVEL.name, Float(-0.2)),
-];
+const WINTER: &[(&str, Preset)] = &[(HEIGHT.name, Int(6)), (EROSION.name, Float(0.6))];
 
 /// Softer, lower hills for the forests. (The worlds keep the diamond
 /// generator: the Brownian surface is not framed quite alike at every grid
@@ -70,7 +66,6 @@ const AUTUMN: &[(&str, Preset)] = &[
     (CRAGGINESS.name, Int(80)),
     (HEIGHT.name, Int(5)),
     (EROSION.name, Float(0.6)),
-    (SEA_LEVEL.name, Float(-0.35)),
 ];
 
 /// Terraces, mesas and canyons; the low ground a dry basin (the palette
@@ -80,7 +75,6 @@ const DESERT: &[(&str, Preset)] = &[
     (HEIGHT.name, Int(6)),
     (CLIFFS.name, Float(0.8)),
     (EROSION.name, Float(0.9)),
-    (SEA_LEVEL.name, Float(-0.4)),
     (LAKES.name, Bool(false)),
     (REFLECTIONS.name, Bool(false)),
 ];
@@ -90,8 +84,38 @@ const TROPICAL: &[(&str, Preset)] = &[
     (CRAGGINESS.name, Int(128)),
     (HEIGHT.name, Int(8)),
     (EROSION.name, Float(0.5)),
-    (SEA_LEVEL.name, Float(0.15)),
 ];
+
+/// The number keys a world draws per mountain, each within its (least, most):
+/// where the sea stands, so one world's slides are not all one coast
+/// (the alpine and autumn valleys drowned deeper or left dry, the
+/// tropics' islands larger or fewer, the desert's basin wider or
+/// narrower). Drawn from the seed alone: the same at every size.
+fn spreads(world: World) -> &'static [(&'static str, (f64, f64))] {
+    match world {
+        World::Varied | World::Temperate => &[],
+        World::Alpine => &[(SEA_LEVEL.name, (-0.45, -0.1))],
+        World::Winter => &[(SEA_LEVEL.name, (-0.35, 0.05))],
+        World::Autumn => &[(SEA_LEVEL.name, (-0.5, -0.1))],
+        World::Desert => &[(SEA_LEVEL.name, (-0.55, -0.2))],
+        World::Tropical => &[(SEA_LEVEL.name, (0.0, 0.3))],
+    }
+}
+
+/// Mixed into a mountain's seed for its world's spread keys ([`spreads`]),
+/// each key's draw its own by its place in the table.
+const SPREAD_KEY: u64 = 0x7370_7265_6164_206b;
+
+/// The value of the spread key at `place` in [`spreads`] for the mountain
+/// of `seed`, within `(least, most)`; a mountain without a seed (a data
+/// set's) takes the middle.
+fn spread(seed: Option<u64>, place: usize, (least, most): (f64, f64)) -> Value {
+    let unit = seed.map_or(0.5, |seed| {
+        let draw = crate::terrain::splitmix::mix(seed ^ SPREAD_KEY ^ place as u64);
+        (draw >> 11) as f64 / (1u64 << 53) as f64
+    });
+    Value::Float(least + (most - least) * unit)
+}
 
 /// The keys `world` sets and their values (none for the temperate coast,
 /// which is the keys' own defaults, nor for "varied", which is one of the
@@ -140,22 +164,28 @@ pub fn drawn_for(seed: u64) -> World {
 
 /// `settings` as the mountain of `seed` is made and drawn with: its world
 /// chosen ([`chosen`]) and held in `world`, and each key the world sets
-/// that `settings` leave at their default given the world's value.
+/// that `settings` leave at their default given the world's value (its
+/// fixed [`presets`], and its [`spreads`] drawn for the mountain).
 pub fn drawn(settings: &Settings, seed: Option<u64>) -> Settings {
     let world = chosen(settings, seed);
     let mut out = settings.clone();
     out.world = world;
-    for &(name, preset) in presets(world) {
+    let fixed = presets(world).iter().map(|&(name, preset)| {
+        let value = match preset {
+            Int(i) => Value::Int(i),
+            Float(x) => Value::Float(x),
+            Bool(b) => Value::Bool(b),
+            Str(s) => Value::Str(s.into()),
+        };
+        (name, value)
+    });
+    let ranged = (spreads(world).iter().enumerate())
+        .map(|(place, &(name, range))| (name, spread(seed, place, range)));
+    for (name, value) in fixed.chain(ranged) {
         let Some(key) = keys::find(name) else {
             continue;
         };
         if keys::get(settings, key) == (key.default)() {
-            let value = match preset {
-                Int(i) => Value::Int(i),
-                Float(x) => Value::Float(x),
-                Bool(b) => Value::Bool(b),
-                Str(s) => Value::Str(s.into()),
-            };
             let set = keys::apply(&mut out, key, &value);
             debug_assert!(set.is_ok(), "{name}: a world's value is one its key allows");
         }
@@ -182,6 +212,57 @@ mod tests {
             );
             assert_eq!(s.world, world.0);
         }
+    }
+
+    /// Each world's spread keys are drawn within their ranges, over most
+    /// of them, the same for one seed; a value a person sets wins; a
+    /// mountain without a seed takes the middle.
+    #[test]
+    fn a_worlds_spread_keys_lie_within_their_ranges() {
+        for world in OWN_LOOKS {
+            let prefs = Settings {
+                world,
+                ..Settings::default()
+            };
+            assert!(!spreads(world).is_empty(), "{world:?}");
+            for (place, &(name, (least, most))) in spreads(world).iter().enumerate() {
+                let key = keys::find(name).expect("a key");
+                let value = |s: &Settings| match keys::get(s, key) {
+                    Value::Float(x) => x,
+                    other => panic!("{name}: {other:?}"),
+                };
+                let values: Vec<f64> = (1..=300)
+                    .map(|seed| value(&drawn(&prefs, Some(seed))))
+                    .collect();
+                let (lo, hi) = values
+                    .iter()
+                    .fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
+                assert!(lo >= least && hi <= most, "{world:?} {name}: {lo}..{hi}");
+                assert!(
+                    hi - lo >= 0.9 * (most - least),
+                    "{world:?} {name}: {lo}..{hi}"
+                );
+                assert_eq!(
+                    value(&drawn(&prefs, Some(7))),
+                    values[6],
+                    "{world:?} {name}"
+                );
+                let middle = value(&drawn(&prefs, None));
+                assert!(
+                    (middle - 0.5 * (least + most)).abs() < 1e-6,
+                    "{name}: {middle}"
+                );
+                let mut set = prefs.clone();
+                let other = Value::Float(if most < 0.5 { 0.9 } else { -0.9 });
+                keys::apply(&mut set, key, &other).expect("a value the key allows");
+                assert_eq!(
+                    keys::get(&drawn(&set, Some(3)), key),
+                    other,
+                    "{name} {place}"
+                );
+            }
+        }
+        assert!(spreads(World::Temperate).is_empty());
     }
 
     #[test]

@@ -352,3 +352,39 @@ fn wet_ground_is_greener_than_dry_at_the_same_height_and_slope() {
         );
     }
 }
+
+/// Nights are not one picture in every world: under `sun = "night"` each
+/// pair of worlds' slides of one seed stand apart (their own night skies
+/// and a world's moonlit land brighter than the temperate night's), and
+/// none is black (its mean lightness L* at least 8).
+#[test]
+fn the_worlds_nights_differ() {
+    for seed in [3, 8] {
+        let night = |w: World| {
+            let mut s = in_world(w);
+            load::apply_set(&mut s, "sun", "night").unwrap();
+            picture(&s, seed, (192, 108))
+        };
+        let drawn: Vec<Frame> = NAMED.iter().map(|&w| night(w)).collect();
+        for (i, a) in drawn.iter().enumerate() {
+            let l = (a.pixels().iter())
+                .map(|&p| lab(channels(p))[0])
+                .sum::<f32>()
+                / a.pixels().len() as f32;
+            assert!(
+                l >= 8.0,
+                "seed {seed}: {:?}'s night is black (L* {l:.1})",
+                NAMED[i]
+            );
+            for (j, b) in drawn.iter().enumerate().skip(i + 1) {
+                let d = apart(a, b);
+                assert!(
+                    d >= 8.0,
+                    "seed {seed}: {:?} and {:?} nights only {d:.1} dE apart",
+                    NAMED[i],
+                    NAMED[j]
+                );
+            }
+        }
+    }
+}

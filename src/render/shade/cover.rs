@@ -389,7 +389,8 @@ pub fn water(world: World, t: f32, v: f32) -> Rgb {
 /// mountain's draw of its air `v` ([`air_draw`]), its top somewhere
 /// between the world's two skies, so two slides of one world at one time
 /// of day are apart. `night` (0 to 1) of the night's look turns both
-/// towards the world's own night ([`night_air`]).
+/// towards the world's own night ([`night_air`]), and a twilight's
+/// horizon to its afterglow (`dusk.rs`).
 pub fn air(world: World, [zenith, horizon]: [Rgb; 2], v: f32, night: f32) -> [Rgb; 2] {
     // The tint of the horizon and how much of it (least to most), and the
     // two tints of the sky's top (a paler, hazier one and a deeper one)
@@ -434,7 +435,9 @@ pub fn air(world: World, [zenith, horizon]: [Rgb; 2], v: f32, night: f32) -> [Rg
     let top = mix(tops[0], tops[1], which);
     let day_sky = [mix(zenith, top, most * (0.3 + 0.7 * w) * day), horizon];
     let dark = night_air(world, v);
-    [0, 1].map(|i| mix(day_sky[i], dark[i], night * NIGHT_AIR))
+    let [top, horizon] = [0, 1].map(|i| mix(day_sky[i], dark[i], night * NIGHT_AIR));
+    let glow = super::dusk::afterglow(world, v);
+    [top, mix(horizon, glow, super::dusk::glowing(night))]
 }
 
 /// How far a full night turns the sky to its world's own ([`night_air`]):
@@ -458,8 +461,8 @@ fn night_air(world: World, v: f32) -> [Rgb; 2] {
             [[0.070, 0.100, 0.170], [0.30, 0.35, 0.42]],
         ],
         World::Tropical => [
-            [[0.000, 0.030, 0.080], [0.02, 0.13, 0.18]],
-            [[0.010, 0.070, 0.140], [0.06, 0.24, 0.30]],
+            [[0.005, 0.040, 0.100], [0.04, 0.17, 0.22]],
+            [[0.020, 0.090, 0.170], [0.10, 0.30, 0.34]],
         ],
         World::Autumn => [
             [[0.030, 0.025, 0.045], [0.15, 0.10, 0.08]],
@@ -503,14 +506,15 @@ const LOW_SHARE: f32 = 0.45;
 const LOW_SUN: f32 = 10.0;
 
 /// How low and how high a varied day's sun stands in `world`, in degrees:
-/// the alpine and the winter worlds reach into the first minutes of
-/// twilight (the peaks' last light), winter's sun never stands high, the
+/// the alpine and the winter worlds reach down to the horizon (the
+/// peaks' last light; a sun below it is a twilight's, `dusk.rs`, so the
+/// survey's nights are the nights drawn), winter's sun never stands high, the
 /// desert's and the tropics' noon stand highest. None for the temperate
 /// world (its four times are the slide show from before the worlds).
 fn sun_heights(world: World) -> Option<(f32, f32)> {
     match world {
-        World::Alpine => Some((-3.0, 50.0)),
-        World::Winter => Some((-2.0, 18.0)),
+        World::Alpine => Some((0.0, 50.0)),
+        World::Winter => Some((0.0, 18.0)),
         World::Autumn => Some((1.0, 35.0)),
         World::Desert => Some((1.0, 65.0)),
         World::Tropical => Some((2.0, 70.0)),
@@ -555,10 +559,23 @@ pub fn sun(world: World, identity: u64) -> Option<SunAt> {
 /// The day's light in `world`, from the time of day's `light`: winter's
 /// low, cold sun (lower, paler and bluer, more of its light from the
 /// sky); in every world but the temperate a brighter or duller, warmer or
-/// colder day by the mountain's draw `v` ([`air_draw`]). Nights and seed
-/// 000's light are left as they are.
+/// colder day, its shade lighter or deeper, by the mountain's draw `v`
+/// ([`air_draw`]); a full night's
+/// land lit [`MOONLIT`] times as bright as the temperate world's.
+/// Twilights and seed 000's light are left as they are.
 pub fn light(world: World, mut light: Lighting, v: f32) -> Lighting {
-    if light.classic || light.night > 0.0 || matches!(world, World::Temperate | World::Varied) {
+    if light.classic || matches!(world, World::Temperate | World::Varied) {
+        return light;
+    }
+    if light.night >= 1.0 {
+        // Its darkest woods (the tropics' jungle, autumn's) otherwise
+        // go black under `sun = "night"`'s moon.
+        for c in [&mut light.direct, &mut light.ambient] {
+            *c = c.map(|x| x * MOONLIT);
+        }
+        return light;
+    }
+    if light.night > 0.0 {
         return light;
     }
     if world == World::Winter {
@@ -578,9 +595,23 @@ pub fn light(world: World, mut light: Lighting, v: f32) -> Lighting {
     };
     let k = 0.95 + 0.3 * bright;
     light.direct = [0, 1, 2].map(|i| light.direct[i] * tint[i] * k);
+    // A hazy day's sky lights the shade more than a clear one's: how
+    // much, a third draw from the one.
+    let sky = SKY_LIGHT.0 + (SKY_LIGHT.1 - SKY_LIGHT.0) * (v * 3.0).fract();
+    light.ambient = light.ambient.map(|c| c * sky);
     light.glints = light.direct;
     light
 }
+
+/// How bright a world's day's sky light is against its time of day's,
+/// least and most ([`light`]): the shade deep under a clear sky, light
+/// under a hazy one.
+const SKY_LIGHT: (f32, f32) = (0.7, 1.6);
+
+/// How much brighter a world's moonlit land is than `sun = "night"`'s
+/// (the temperate world's nights keep their pictures): the land must
+/// read against the night sky.
+const MOONLIT: f32 = 1.7;
 
 /// A pattern of patches across the heights: 0 to 1, `n` ups and downs
 /// over the relief (stands of one tree and another, bands of snow).
@@ -623,6 +654,54 @@ mod tests {
             }
         }
         assert_eq!(sun(World::Temperate, 1), None);
+    }
+
+    /// A world's moonlit land is lit brighter than the temperate world's
+    /// night (which keeps its pictures), its twilights and days as they
+    /// were given.
+    #[test]
+    fn a_worlds_moonlit_land_is_brighter_than_the_temperate_night() {
+        use crate::render::base::colour::luminance;
+        use crate::settings::Sun;
+        let field = crate::terrain::Heightfield::flat(5, 100.0);
+        let night = Lighting::new(Sun::Night, &field);
+        let temperate = light(World::Temperate, night.clone(), 0.5);
+        assert_eq!(temperate.direct, night.direct);
+        for world in DRAWN {
+            let lit = light(world, night.clone(), 0.5);
+            for (a, b) in [(lit.direct, night.direct), (lit.ambient, night.ambient)] {
+                assert!(luminance(a) >= 1.5 * luminance(b), "{world:?}: {a:?} {b:?}");
+            }
+            assert_eq!(lit.zenith, night.zenith, "{world:?}: the sky is the air's");
+        }
+    }
+
+    /// A world's day's sky light is its time of day's times a factor
+    /// within [`SKY_LIGHT`], over most of it (winter's own colder sky
+    /// light aside); the temperate world's is its time of day's.
+    #[test]
+    fn a_worlds_sky_light_lies_within_its_range() {
+        use crate::settings::Sun;
+        let field = crate::terrain::Heightfield::flat(5, 100.0);
+        let day = Lighting::new(Sun::Midday, &field);
+        for world in [World::Alpine, World::Autumn, World::Desert, World::Tropical] {
+            let ks: Vec<f32> = (0..500)
+                .map(|i| light(world, day.clone(), i as f32 / 500.0).ambient[2] / day.ambient[2])
+                .collect();
+            let (lo, hi) = ks
+                .iter()
+                .fold((f32::MAX, f32::MIN), |(a, b), &k| (a.min(k), b.max(k)));
+            let (least, most) = SKY_LIGHT;
+            assert!(
+                lo >= least - 1e-4 && hi <= most + 1e-4,
+                "{world:?}: {lo}..{hi}"
+            );
+            assert!(hi - lo >= 0.9 * (most - least), "{world:?}: {lo}..{hi}");
+        }
+        assert_eq!(
+            light(World::Temperate, day.clone(), 0.3).ambient,
+            day.ambient
+        );
     }
 
     /// Every world's night sky is dark but not black, top and horizon,

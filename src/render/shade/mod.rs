@@ -6,6 +6,7 @@
 pub(super) mod clouds;
 pub(super) mod cover;
 pub mod dither;
+pub(super) mod dusk;
 pub mod essay;
 pub mod facings;
 pub(super) mod haze;

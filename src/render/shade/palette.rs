@@ -21,6 +21,7 @@
 
 use super::cover;
 use super::dither;
+use super::dusk;
 use super::essay;
 use super::facings;
 use super::hour::SunAt;
@@ -165,12 +166,13 @@ impl Palette {
         // pictures a varied draw gave them before there were nights.
         let nights = settings.color == ColorMode::Natural && settings.look == Look::Ours;
         let mut light = Lighting::drawn(sun, field, nights);
-        // A world's varied day is lit by an hour of its own drawing.
-        if let (Sun::Varied, true, Some(at)) = (
-            sun,
-            light.night == 0.0,
-            cover::sun(settings.world, field.identity()),
-        ) {
+        // A world's varied day is lit by an hour of its own drawing, and
+        // some of its nights are twilight.
+        let own = match light.night > 0.0 {
+            false => cover::sun(settings.world, field.identity()),
+            true => dusk::twilight(settings.world, field.identity()),
+        };
+        if let (Sun::Varied, Some(at)) = (sun, own) {
             light = Lighting::at_hour(at);
         }
         cover::light(settings.world, light, cover::light_draw(field.identity()))
