@@ -513,8 +513,10 @@ fn ramp(x: Vec4, from: f32, full: f32) -> Vec4 {
 /// bumps' height over its step and of the pixel's share of the light
 /// ([`Relief::shows`]). A level's value noise is at most 3 steep (its
 /// gradient peaks along an axis); the direct light's cosine changes by at
-/// most the normal's turn, the sky's upward part by under 0.4 of it, and a
-/// hollow's depth is at most 1. The strata can make a pixel up to
+/// most the normal's turn, the sky's upward part by under 0.4 of it under
+/// the plan's bumps and by at most the turn under a side view's (3 against
+/// the bound's 2 x 5 for the sky's share), and a hollow's depth is at
+/// most 1. The strata can make a pixel up to
 /// 1 + [`strata::DEPTH`] times the corner colours `shows` reads: 3 x 1.2 is
 /// still under this.
 const STEEPEST: f32 = 5.0;
