@@ -699,7 +699,7 @@ fn framed(
     };
     // Sonar and Outline draw every line of their (already thinned) grid.
     let rows = if shaded {
-        super::framing::rows::kept_rows(size, &view)
+        super::framing::rows::kept_rows(size, &view, |x, y| finite(field.get(x, y)).max(0.0))
     } else {
         (0..size).collect()
     };

@@ -123,7 +123,9 @@ fn a_varied_world_is_the_same_at_every_size_and_at_low_detail() {
 }
 
 /// The pictures pinned by the build before the worlds (`mountains render
-/// --size 160x90 --seed N`): `world = "temperate"` draws them unchanged.
+/// --size 160x90 --seed N`; pinned again, after looking, whenever the
+/// drawing itself changed: the relief, the steep faces' side views, the
+/// far ground's rows kept): `world = "temperate"` draws them unchanged.
 /// Seeds whose varied sun is now night (7, for one) are left out: their
 /// sky changed with the night, not with the world.
 #[test]
