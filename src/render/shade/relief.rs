@@ -33,6 +33,20 @@ const FULL_PX: f32 = 2.0;
 /// finer, its light would only sparkle.
 const NONE_PX: f32 = 0.8;
 
+/// How much ground seen at a slant (its unit normal's cosine to the line
+/// of sight, `facing`) narrows the levels that show on it: its cells count
+/// `facing` to this power of their face-on size. Bumps on ground seen at a
+/// slant are squeezed on screen across the slant, and there a level's
+/// light would sparkle long before it does face-on; in full (a power of 1)
+/// the near land would lose its finest level where it is seen edge-on.
+/// Measured over the quality seeds at 1080p against the 4x reference and
+/// the near land's detail against a `detail = 12` grid: 0 gave 44.2 dB and
+/// 1.21 of the finer grid's detail, 0.15 45.1 dB and 0.90, 0.5 46.6 dB and
+/// 0.79.
+const FORESHORTENING: f32 = 0.15;
+/// Least `facing` counted: ground seen edge-on keeps some of its size.
+const LEAST_FACING: f32 = 0.05;
+
 /// A face is drawn with its relief when one of its corners' cells is at
 /// least this many pixels across: the first level fades in above it (its
 /// lattice has at least two steps a cell), so a face drawn plain and a
@@ -250,6 +264,15 @@ impl Relief {
     #[inline]
     pub(crate) fn cell_px(&self, frame_px: f32) -> f32 {
         frame_px / self.finer
+    }
+
+    /// [`Relief::cell_px`] of a cell `frame_px` across seen face-on, on
+    /// ground of unit normal `normal` (palette frame) seen along
+    /// `from_eye` (from the eye to it; `None` without an eye): narrowed by
+    /// its foreshortening to the [`FORESHORTENING`] power.
+    pub(crate) fn cell_px_seen(&self, frame_px: f32, normal: Vec3, from_eye: Option<Vec3>) -> f32 {
+        let facing = from_eye.map_or(1.0, |v| normal.dot(v.normalize_or_zero()).abs());
+        self.cell_px(frame_px) * facing.max(LEAST_FACING).powf(FORESHORTENING)
     }
 
     /// How tall the grid's last level's bumps are at grid point (`x`, `y`):
@@ -745,6 +768,28 @@ mod tests {
         assert_eq!(fade(px), Vec4::new(0.0, 0.0, 1.0, 1.0));
         let mid = fade(Vec4::splat(0.5 * (NONE_PX + FULL_PX))).x;
         assert!((mid - 0.5).abs() < 1e-6, "{mid}");
+    }
+
+    #[test]
+    fn ground_seen_at_a_slant_counts_its_cells_narrower() {
+        let field = Heightfield::flat(10, 250.0);
+        let relief = Relief::new(&field, 42, Vec3::Z, 0.25);
+        let face_on = relief.cell_px(12.0);
+        let up = Vec3::Z;
+        // Seen from straight above, or without an eye: its own size.
+        assert_eq!(relief.cell_px_seen(12.0, up, Some(Vec3::NEG_Z * 7.0)), face_on);
+        assert_eq!(relief.cell_px_seen(12.0, up, None), face_on);
+        // Lower and lower lines of sight narrow it, down to the least facing.
+        let seen = |deg: f32| {
+            let a = deg.to_radians();
+            relief.cell_px_seen(12.0, up, Some(Vec3::new(0.0, a.cos(), -a.sin())))
+        };
+        let slants = [90.0, 60.0, 30.0, 10.0, 2.0, 0.0].map(seen);
+        assert!(slants[..5].windows(2).all(|w| w[1] < w[0]), "{slants:?}");
+        let least = face_on * LEAST_FACING.powf(FORESHORTENING);
+        assert!((slants[4] - least).abs() < 1e-4 && slants[5] == slants[4]);
+        // At 30 degrees a cell counts half its size to the power.
+        assert!((slants[2] - face_on * 0.5f32.powf(FORESHORTENING)).abs() < 1e-4);
     }
 
     #[test]
