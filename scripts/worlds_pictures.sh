@@ -10,7 +10,7 @@ set -eu
 cd "$(dirname "$0")/.."
 command -v montage >/dev/null || { echo "needs ImageMagick's montage (apt-get install imagemagick)"; exit 1; }
 cargo build --release -q
-m=target/release/mountains
+m="${CARGO_TARGET_DIR:-target}/release/mountains"
 empty=$(mktemp)
 tmp=$(mktemp -d)
 trap 'rm -rf "$empty" "$tmp"' EXIT

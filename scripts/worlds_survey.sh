@@ -10,7 +10,7 @@
 set -eu
 cd "$(dirname "$0")/.."
 cargo build --release -q --example worlds_survey
-s=target/release/examples/worlds_survey
+s="${CARGO_TARGET_DIR:-target}/release/examples/worlds_survey"
 echo "== the default preferences (world = \"varied\")"
 "$s" --seeds 1-120 --size 320x180 "$@" | sed -n '/^slides:/,$p'
 echo "== world = \"temperate\" (the slides before the worlds)"

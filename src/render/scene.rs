@@ -273,7 +273,7 @@ impl<'a> Scene<'a> {
         let haze = (style == Style::Shaded
             && settings.view != ViewKind::Oblique
             && settings.look == Look::Ours)
-            .then(|| Haze::new(palette.sky().1));
+            .then(|| Haze::new(palette.sky().1, palette.haze()));
         let ripples = (haze.is_some() && !palette.lighting().classic)
             .then(|| Ripples::new(palette.sky().1, &field));
         // The looks with depth in colour; the classic looks and the seed

@@ -45,60 +45,71 @@ pub const OWN_LOOKS: [World; 5] = [
 /// the time of day's draw again.
 const WORLD_KEY: u64 = 0x776f_726c_6420_6b79;
 
-/// High, jagged ranges, deep valleys worn by rain; the water low, a lake
-/// at the foot of the range (the palette's glacial water) and the
-/// valleys' basins holding more.
-const ALPINE: &[(&str, Preset)] = &[
-    (CRAGGINESS.name, Int(128)),
-    (HEIGHT.name, Int(6)),
-    (EROSION.name, Float(0.8)),
-    (LAKES.name, Bool(true)),
-];
+/// High, jagged ranges, deep valleys worn by rain ([`spreads`]); the
+/// water low, a lake at the foot of the range (the palette's glacial
+/// water) and the valleys' basins holding more.
+const ALPINE: &[(&str, Preset)] = &[(CRAGGINESS.name, Int(128)), (LAKES.name, Bool(true))];
 
 /// Rolling hills to a frozen shore (the palette's ice and cold air; the
-/// time of day stays the slide's own).
-const WINTER: &[(&str, Preset)] = &[(HEIGHT.name, Int(6)), (EROSION.name, Float(0.6))];
+/// time of day stays the slide's own); their height and wear are drawn
+/// ([`spreads`]).
+const WINTER: &[(&str, Preset)] = &[];
 
 /// Softer, lower hills for the forests. (The worlds keep the diamond
 /// generator: the Brownian surface is not framed quite alike at every grid
 /// size, and a varied slide must be one scene at every size.)
-const AUTUMN: &[(&str, Preset)] = &[
-    (CRAGGINESS.name, Int(80)),
-    (HEIGHT.name, Int(5)),
-    (EROSION.name, Float(0.6)),
-];
+const AUTUMN: &[(&str, Preset)] = &[(CRAGGINESS.name, Int(80))];
 
-/// Terraces, mesas and canyons; the low ground a dry basin (the palette
-/// draws its "water" as sand and salt flats, which mirror nothing); no
-/// lakes; a sky mostly clear (the palette's `clouds::skies`).
+/// Terraces, mesas and canyons (their cliffs drawn, [`spreads`]); the
+/// low ground a dry basin (the palette draws its "water" as sand and
+/// salt flats, which mirror nothing); no lakes; a sky mostly clear (the
+/// palette's `clouds::skies`).
 const DESERT: &[(&str, Preset)] = &[
-    (HEIGHT.name, Int(6)),
-    (CLIFFS.name, Float(0.8)),
     (EROSION.name, Float(0.9)),
     (LAKES.name, Bool(false)),
     (REFLECTIONS.name, Bool(false)),
 ];
 
 /// Steep islands standing out of a wider sea.
-const TROPICAL: &[(&str, Preset)] = &[
-    (CRAGGINESS.name, Int(128)),
-    (HEIGHT.name, Int(8)),
-    (EROSION.name, Float(0.5)),
-];
+const TROPICAL: &[(&str, Preset)] = &[(CRAGGINESS.name, Int(128))];
 
 /// The number keys a world draws per mountain, each within its (least, most):
 /// where the sea stands, so one world's slides are not all one coast
 /// (the alpine and autumn valleys drowned deeper or left dry, the
 /// tropics' islands larger or fewer, the desert's basin wider or
-/// narrower). Drawn from the seed alone: the same at every size.
+/// narrower); how high the land stands and how deep the rain has worn
+/// it (the desert: how sheer its cliffs), so one world's slides are not
+/// all one range. A key of whole numbers is drawn whole, each of its
+/// values about as often. Drawn from the seed alone: the same at every
+/// size.
 fn spreads(world: World) -> &'static [(&'static str, (f64, f64))] {
     match world {
         World::Varied | World::Temperate => &[],
-        World::Alpine => &[(SEA_LEVEL.name, (-0.45, -0.1))],
-        World::Winter => &[(SEA_LEVEL.name, (-0.35, 0.05))],
-        World::Autumn => &[(SEA_LEVEL.name, (-0.5, -0.1))],
-        World::Desert => &[(SEA_LEVEL.name, (-0.55, -0.2))],
-        World::Tropical => &[(SEA_LEVEL.name, (0.0, 0.3))],
+        World::Alpine => &[
+            (SEA_LEVEL.name, (-0.45, -0.1)),
+            (EROSION.name, (0.4, 1.0)),
+            (HEIGHT.name, (5.0, 8.0)),
+        ],
+        World::Winter => &[
+            (SEA_LEVEL.name, (-0.35, 0.05)),
+            (EROSION.name, (0.2, 0.9)),
+            (HEIGHT.name, (4.0, 8.0)),
+        ],
+        World::Autumn => &[
+            (SEA_LEVEL.name, (-0.5, -0.1)),
+            (EROSION.name, (0.3, 0.9)),
+            (HEIGHT.name, (3.0, 7.0)),
+        ],
+        World::Desert => &[
+            (SEA_LEVEL.name, (-0.55, -0.2)),
+            (CLIFFS.name, (0.4, 1.0)),
+            (HEIGHT.name, (4.0, 8.0)),
+        ],
+        World::Tropical => &[
+            (SEA_LEVEL.name, (0.0, 0.3)),
+            (EROSION.name, (0.2, 0.8)),
+            (HEIGHT.name, (6.0, 9.0)),
+        ],
     }
 }
 
@@ -115,6 +126,16 @@ fn spread(seed: Option<u64>, place: usize, (least, most): (f64, f64)) -> Value {
         (draw >> 11) as f64 / (1u64 << 53) as f64
     });
     Value::Float(least + (most - least) * unit)
+}
+
+/// [`spread`]'s value in the kind `key` holds: for a key of whole
+/// numbers a whole number, each of `least..=most` about as often (the
+/// middle's for a mountain without a seed).
+fn spread_as(key: &keys::Key, seed: Option<u64>, place: usize, (least, most): (f64, f64)) -> Value {
+    match ((key.default)(), spread(seed, place, (least, most + 1.0))) {
+        (Value::Int(_), Value::Float(x)) => Value::Int((x.floor() as i64).min(most as i64)),
+        _ => spread(seed, place, (least, most)),
+    }
 }
 
 /// The keys `world` sets and their values (none for the temperate coast,
@@ -179,8 +200,9 @@ pub fn drawn(settings: &Settings, seed: Option<u64>) -> Settings {
         };
         (name, value)
     });
-    let ranged = (spreads(world).iter().enumerate())
-        .map(|(place, &(name, range))| (name, spread(seed, place, range)));
+    let ranged = (spreads(world).iter().enumerate()).filter_map(|(place, &(name, range))| {
+        Some((name, spread_as(keys::find(name)?, seed, place, range)))
+    });
     for (name, value) in fixed.chain(ranged) {
         let Some(key) = keys::find(name) else {
             continue;
@@ -216,7 +238,8 @@ mod tests {
 
     /// Each world's spread keys are drawn within their ranges, over most
     /// of them, the same for one seed; a value a person sets wins; a
-    /// mountain without a seed takes the middle.
+    /// mountain without a seed takes the middle (a key of whole numbers
+    /// the whole number next to it, and each of its values drawn).
     #[test]
     fn a_worlds_spread_keys_lie_within_their_ranges() {
         for world in OWN_LOOKS {
@@ -227,8 +250,10 @@ mod tests {
             assert!(!spreads(world).is_empty(), "{world:?}");
             for (place, &(name, (least, most))) in spreads(world).iter().enumerate() {
                 let key = keys::find(name).expect("a key");
+                let whole = matches!((key.default)(), Value::Int(_));
                 let value = |s: &Settings| match keys::get(s, key) {
-                    Value::Float(x) => x,
+                    Value::Float(x) if !whole => x,
+                    Value::Int(i) if whole => i as f64,
                     other => panic!("{name}: {other:?}"),
                 };
                 let values: Vec<f64> = (1..=300)
@@ -248,12 +273,31 @@ mod tests {
                     "{world:?} {name}"
                 );
                 let middle = value(&drawn(&prefs, None));
+                let off = if whole { 0.5 } else { 1e-6 };
                 assert!(
-                    (middle - 0.5 * (least + most)).abs() < 1e-6,
+                    (middle - 0.5 * (least + most)).abs() <= off,
                     "{name}: {middle}"
                 );
+                if whole {
+                    for i in least as i64..=most as i64 {
+                        let n = values.iter().filter(|&&x| x == i as f64).count();
+                        assert!(
+                            n * 2 * (1 + (most - least) as usize) >= 300,
+                            "{name} {i}: {n}"
+                        );
+                    }
+                }
                 let mut set = prefs.clone();
-                let other = Value::Float(if most < 0.5 { 0.9 } else { -0.9 });
+                // A value the key allows outside the world's range.
+                let other = match whole {
+                    true => Value::Int(if least > 1.0 { 1 } else { 10 }),
+                    false => [-0.9, 0.9, 0.05, 0.99]
+                        .into_iter()
+                        .filter(|x| !(least..=most).contains(x))
+                        .map(Value::Float)
+                        .find(|x| keys::apply(&mut prefs.clone(), key, x).is_ok())
+                        .expect("a value outside the range"),
+                };
                 keys::apply(&mut set, key, &other).expect("a value the key allows");
                 assert_eq!(
                     keys::get(&drawn(&set, Some(3)), key),

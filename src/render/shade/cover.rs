@@ -43,7 +43,6 @@ mod ground {
     pub const CHOCOLATE: Rgb = [0.42, 0.24, 0.16];
     pub const CORAL_SAND: Rgb = [0.97, 0.95, 0.86];
     pub const JUNGLE: Rgb = [0.09, 0.42, 0.13];
-    pub const PALM: Rgb = [0.22, 0.58, 0.16];
     pub const BASALT: Rgb = [0.24, 0.22, 0.21];
     pub const DRY_GRASS: Rgb = [0.66, 0.58, 0.30];
     pub const SCRUB: Rgb = [0.34, 0.36, 0.17];
@@ -57,6 +56,16 @@ const DRAW_KEY: u64 = 0x636f_7665_7220_6472;
 /// progress, a rock's colour), so two slides of one world differ.
 pub fn draw(identity: u64) -> f32 {
     (crate::terrain::splitmix::mix(identity ^ DRAW_KEY) >> 40) as f32 / (1u64 << 24) as f32
+}
+
+/// Where between its world's palettes the mountain of draw `v` ([`draw`])
+/// lies, 0 to 1 (another of the draw's digits, apart from its snow line
+/// and season): the bare granite or the slate and pastures of a range,
+/// winter's fresh snow or its wind-scoured rock, autumn's gold, red or
+/// brown, the desert's pale or red sand, the tropics' emerald or
+/// yellow-green. A world of one palette made its slides alike.
+pub fn mood(v: f32) -> f32 {
+    (v * 17.0).fract()
 }
 
 /// The ground's colour in `world` at height fraction `u` on a face of
@@ -146,17 +155,28 @@ pub fn streams(world: World, wet: f32) -> f32 {
 /// steep to hold snow.
 fn alpine(u: f32, steep: f32, v: f32) -> Rgb {
     use ground::*;
+    // From a bare granite range (dry turf, pale rock) through today's to
+    // one of dark slate over lush pastures, by the mountain.
+    let k = smoothstep(0.0, 1.0, mood(v));
+    let pick = |[bare, slate]: [Rgb; 2], today: Rgb| match k < 0.5 {
+        true => mix(bare, today, 2.0 * k),
+        false => mix(today, slate, 2.0 * k - 1.0),
+    };
+    let valley = pick([[0.50, 0.52, 0.36], [0.30, 0.58, 0.18]], VALLEY);
+    let wood = pick([[0.40, 0.40, 0.33], [0.12, 0.28, 0.13]], LARCH_GREEN);
     let low = ramp(
         &[
-            (0.0, VALLEY),
-            (0.07, VALLEY),
-            (0.12, LARCH_GREEN),
-            (0.2, LARCH_GREEN),
+            (0.0, valley),
+            (0.07, valley),
+            (0.12, wood),
+            (0.2, wood),
             (0.28, SCREE),
         ],
         u,
     );
-    let rock = mix(GREY_ROCK, DARK_ROCK, smoothstep(0.5, 1.0, steep));
+    let grey = pick([[0.64, 0.62, 0.60], [0.34, 0.35, 0.38]], GREY_ROCK);
+    let dark = pick([[0.42, 0.40, 0.40], [0.17, 0.18, 0.21]], DARK_ROCK);
+    let rock = mix(grey, dark, smoothstep(0.5, 1.0, steep));
     let low = mix(low, rock, smoothstep(0.45, 0.85, steep));
     // Snow from low on the flats (from the valleys after a fresh fall,
     // only on the high ground late in a summer), higher on steep ground.
@@ -178,8 +198,13 @@ fn winter(u: f32, steep: f32, v: f32) -> Rgb {
         * (1.0 - smoothstep(treeline, treeline + 0.2, u))
         * (0.15 + 0.85 * v);
     let ground = mix(snow, DARK_CONIFER, forest * bands(u, 9.0));
-    let bare = smoothstep(0.62, 0.92, steep);
-    mix(ground, DARK_ROCK, bare)
+    // Fresh snow on every face that holds it, or a wind that has scoured
+    // the ridges and the steeper slopes to brown rock, by the mountain.
+    let wind = mood(v);
+    let bare = smoothstep(0.62 - 0.4 * wind, 0.92 - 0.25 * wind, steep)
+        * (1.0 - 0.4 * wind * bands(u, 6.0));
+    let rock = mix(DARK_ROCK, [0.36, 0.31, 0.27], wind);
+    mix(ground, rock, bare)
 }
 
 /// Whether `world`'s ground differs by the way a slope faces: autumn's
@@ -241,6 +266,18 @@ fn autumn(u: f32, steep: f32, beach: bool, v: f32, facing: f32) -> Rgb {
         // brown.
         u + 0.08 * (b - 0.5) + 0.3 * (v - 0.4) + 0.14 * facing,
     );
+    // Woods of larch and birch gold, of maple red, or of oak and heath
+    // brown, by the mountain.
+    let leaves = ramp(
+        &[
+            (0.0, [0.90, 0.68, 0.18]),
+            (0.5, [0.74, 0.20, 0.10]),
+            (1.0, [0.46, 0.32, 0.20]),
+        ],
+        // The slopes facing the sun further into the season, as above.
+        mood(v) + 0.25 * facing,
+    );
+    let broadleaf = mix(broadleaf, leaves, 0.55);
     let evergreen = smoothstep(0.35, 0.6, steep - 0.2 * facing)
         * (1.0 - smoothstep(0.6, 0.75, u))
         * (0.3 + 0.6 * b);
@@ -282,7 +319,9 @@ fn desert(u: f32, steep: f32, v: f32) -> Rgb {
     );
     // Flats take sand; faces show their layers.
     let flat = 1.0 - smoothstep(0.15, 0.45, steep);
+    // Pale sand, or red, by the mountain.
     let sand = ramp(&[(0.0, DUNE), (0.1, DUNE), (1.0, OCHRE)], u);
+    let sand = mix(sand, [0.74, 0.40, 0.22], 0.9 * mood(v));
     let cover = flat * (1.0 - smoothstep(0.1, 0.35, u)) + flat * 0.35;
     let ground = mix(layer, sand, cover.min(1.0));
     let ground = mix(ground, mix(ground, RUST, 0.5), smoothstep(0.7, 1.0, steep));
@@ -329,7 +368,13 @@ fn tropical(u: f32, steep: f32, beach: bool, v: f32) -> Rgb {
     // The lee of some islands lies in a dry season: golden grass and
     // olive scrub for the palms and the jungle.
     let dry = smoothstep(0.55, 0.9, v);
-    let (palm, jungle) = (mix(PALM, DRY_GRASS, dry), mix(JUNGLE, SCRUB, dry));
+    // Emerald forest or a yellower green, by the mountain.
+    let k = mood(v);
+    let (palm, jungle) = (
+        mix([0.16, 0.58, 0.24], [0.50, 0.64, 0.12], k),
+        mix([0.02, 0.44, 0.26], [0.28, 0.44, 0.06], k),
+    );
+    let (palm, jungle) = (mix(palm, DRY_GRASS, dry), mix(jungle, SCRUB, dry));
     let green = ramp(
         &[(0.0, palm), (0.12, palm), (0.3, jungle), (1.0, jungle)],
         u,
@@ -439,6 +484,22 @@ pub fn air(world: World, [zenith, horizon]: [Rgb; 2], v: f32, night: f32) -> [Rg
     let glow = super::dusk::afterglow(world, v);
     [top, mix(horizon, glow, super::dusk::glowing(night))]
 }
+
+/// How thick the aerial haze is at the back edge (`haze.rs`) on the
+/// mountain of air draw `v` ([`air_draw`]) in `world`, within [`HAZE`]
+/// (another of the draw's digits): a crisp day whose far ridges keep
+/// their colours, or a hazy one that fades them into the sky. None for
+/// the temperate world, which keeps its own.
+pub fn haze(world: World, v: f32) -> Option<f32> {
+    if matches!(world, World::Temperate | World::Varied) {
+        return None;
+    }
+    Some(HAZE.0 + (HAZE.1 - HAZE.0) * (v * 23.0).fract())
+}
+
+/// The thinnest and the thickest haze at the back edge of a world's
+/// land ([`haze`]; the temperate world's is `haze.rs`'s 0.45).
+pub const HAZE: (f32, f32) = (0.05, 0.6);
 
 /// How far a full night turns the sky to its world's own ([`night_air`]):
 /// most of the way, the night's deep blue still under it.
@@ -560,9 +621,11 @@ pub fn sun(world: World, identity: u64) -> Option<SunAt> {
 /// low, cold sun (lower, paler and bluer, more of its light from the
 /// sky); in every world but the temperate a brighter or duller, warmer or
 /// colder day, its shade lighter or deeper, by the mountain's draw `v`
-/// ([`air_draw`]); a full night's
-/// land lit [`MOONLIT`] times as bright as the temperate world's.
-/// Twilights and seed 000's light are left as they are.
+/// ([`light_draw`]), the shade lighter still under a low sun ahead
+/// ([`BACKLIT`]); a twilight's land lit [`TWILIGHT_LIFT`] times as
+/// bright as the time of day's; a full night's land lit [`MOONLIT`]
+/// times as bright as the temperate world's. Seed 000's light is left
+/// as it is.
 pub fn light(world: World, mut light: Lighting, v: f32) -> Lighting {
     if light.classic || matches!(world, World::Temperate | World::Varied) {
         return light;
@@ -576,6 +639,12 @@ pub fn light(world: World, mut light: Lighting, v: f32) -> Lighting {
         return light;
     }
     if light.night > 0.0 {
+        // The afterglow and the blue hour's sky still light the land:
+        // the sunset's light dimmed to the night's was a dark land under
+        // every world's twilight, and those slides alike.
+        for c in [&mut light.direct, &mut light.ambient] {
+            *c = c.map(|x| x * TWILIGHT_LIFT);
+        }
         return light;
     }
     if world == World::Winter {
@@ -590,14 +659,15 @@ pub fn light(world: World, mut light: Lighting, v: f32) -> Lighting {
     // Two draws from one: how bright, and how warm.
     let (bright, warm) = (v, (v * 5.0).fract());
     let tint = match warm < 0.5 {
-        true => mix([1.0; 3], [1.0, 0.84, 0.66], 0.5 - warm),
-        false => mix([1.0; 3], [0.84, 0.92, 1.0], warm - 0.5),
+        true => mix([1.0; 3], [1.0, 0.84, 0.66], 2.0 * (0.5 - warm)),
+        false => mix([1.0; 3], [0.84, 0.92, 1.0], 2.0 * (warm - 0.5)),
     };
-    let k = 0.95 + 0.3 * bright;
+    let k = DIRECT.0 + (DIRECT.1 - DIRECT.0) * bright;
     light.direct = [0, 1, 2].map(|i| light.direct[i] * tint[i] * k);
     // A hazy day's sky lights the shade more than a clear one's: how
     // much, a third draw from the one.
     let sky = SKY_LIGHT.0 + (SKY_LIGHT.1 - SKY_LIGHT.0) * (v * 3.0).fract();
+    let sky = sky * (1.0 + BACKLIT * backlit(light.sun));
     light.ambient = light.ambient.map(|c| c * sky);
     light.glints = light.direct;
     light
@@ -606,7 +676,29 @@ pub fn light(world: World, mut light: Lighting, v: f32) -> Lighting {
 /// How bright a world's day's sky light is against its time of day's,
 /// least and most ([`light`]): the shade deep under a clear sky, light
 /// under a hazy one.
-const SKY_LIGHT: (f32, f32) = (0.7, 1.6);
+const SKY_LIGHT: (f32, f32) = (0.55, 1.9);
+
+/// How bright a world's day's sunlight is against its time of day's,
+/// least and most ([`light`]): a dull day's or a brilliant one's.
+const DIRECT: (f32, f32) = (0.85, 1.35);
+
+/// How much of a world's twilight's light ([`light`]) the land keeps
+/// against the time of day's: the afterglow's and the blue sky's light
+/// on the snow, the rock and the leaves, the land still read.
+const TWILIGHT_LIFT: f32 = 1.8;
+
+/// How much more sky light the faces turned to the viewer take under a
+/// low sun ahead ([`backlit`]): the glowing sky ahead and the air lit
+/// round them fill the shade, which else is one dark silhouette on
+/// every such slide of every world.
+const BACKLIT: f32 = 0.8;
+
+/// How far the sun at unit vector `sun` (z up, y towards the back)
+/// stands low ahead of the viewer: 1 low in the view, 0 from the side,
+/// behind or high.
+fn backlit(sun: Vec3) -> f32 {
+    smoothstep(0.3, 0.9, sun.y) * (1.0 - smoothstep(0.1, 0.3, sun.z))
+}
 
 /// How much brighter a world's moonlit land is than `sun = "night"`'s
 /// (the temperate world's nights keep their pictures): the land must
@@ -701,6 +793,103 @@ mod tests {
         assert_eq!(
             light(World::Temperate, day.clone(), 0.3).ambient,
             day.ambient
+        );
+    }
+
+    /// The mean colour of `world`'s ground over its heights and
+    /// steepnesses, dry and wet, for the mountain of draw `v`.
+    fn mean_land(world: World, v: f32) -> Rgb {
+        let mut sum = [0.0; 3];
+        let mut n = 0.0;
+        for i in 0..20 {
+            for j in 0..10 {
+                for wet in [0.0, 1.0] {
+                    let (u, steep) = (0.025 + i as f32 / 20.0, j as f32 / 10.0);
+                    let c = land(world, (u, steep, 0.0, wet), true, v);
+                    (0..3).for_each(|k| sum[k] += c[k]);
+                    n += 1.0;
+                }
+            }
+        }
+        sum.map(|c| c / n)
+    }
+
+    /// Two mountains of one world whose palettes lie at either end of
+    /// its range ([`mood`]) are grounded in visibly different colours
+    /// (their other draws alike: the two draws 0.06 apart), and each
+    /// stays its world's: the winter land pale with snow, autumn's and
+    /// the desert's warm, the tropics' green.
+    #[test]
+    fn a_worlds_palette_differs_by_the_mountain_within_its_world() {
+        let (first, last) = (0.001 / 17.0, 0.999 / 17.0);
+        assert!(mood(first) < 0.01 && mood(last) > 0.99);
+        for world in DRAWN {
+            let (a, b) = (mean_land(world, first), mean_land(world, last));
+            let apart = (0..3).map(|k| (a[k] - b[k]).powi(2)).sum::<f32>().sqrt();
+            assert!(apart >= 0.07, "{world:?}: {a:?} {b:?} {apart}");
+            for c in [a, b] {
+                match world {
+                    World::Autumn | World::Desert => assert!(c[0] > c[2] + 0.1, "{world:?} {c:?}"),
+                    World::Tropical => assert!(c[1] > c[0] && c[1] > c[2], "{c:?}"),
+                    World::Winter => {
+                        let luma = crate::render::base::colour::luminance(c);
+                        assert!(luma >= 0.55, "{c:?} {luma}");
+                    }
+                    _ => {}
+                }
+            }
+        }
+    }
+
+    /// A world's haze at the back edge lies within [`HAZE`], over most
+    /// of it; the temperate world keeps its own.
+    #[test]
+    fn a_worlds_haze_lies_within_its_range() {
+        for world in DRAWN {
+            let hazes: Vec<f32> = (0..500)
+                .map(|i| haze(world, i as f32 / 500.0).expect("a world's haze"))
+                .collect();
+            let (lo, hi) = hazes
+                .iter()
+                .fold((f32::MAX, f32::MIN), |(a, b), &h| (a.min(h), b.max(h)));
+            assert!(lo >= HAZE.0 && hi <= HAZE.1, "{world:?}: {lo}..{hi}");
+            assert!(hi - lo >= 0.9 * (HAZE.1 - HAZE.0), "{world:?}: {lo}..{hi}");
+        }
+        assert_eq!(haze(World::Temperate, 0.3), None);
+    }
+
+    /// A world's twilight lights its land [`TWILIGHT_LIFT`] times as bright
+    /// as the time of day's, and a low sun ahead fills the shade more
+    /// than the same sun from the side; the temperate world's light is
+    /// its time of day's.
+    #[test]
+    fn a_worlds_twilight_and_backlit_shade_are_lifted() {
+        let hour = |elevation, azimuth| {
+            Lighting::at_hour(SunAt {
+                elevation,
+                azimuth,
+                afternoon: true,
+            })
+        };
+        let dusk = hour(-5.0, 20.0);
+        assert!(dusk.night > 0.0 && dusk.night < 1.0);
+        for world in DRAWN {
+            let lit = light(world, dusk.clone(), 0.5);
+            for (a, b) in [(lit.direct, dusk.direct), (lit.ambient, dusk.ambient)] {
+                for k in 0..3 {
+                    assert!((a[k] - TWILIGHT_LIFT * b[k]).abs() < 1e-5, "{world:?}");
+                }
+            }
+            let (ahead, side) = (hour(3.0, 90.0), hour(3.0, 10.0));
+            let (a, s) = (
+                light(world, ahead.clone(), 0.5).ambient[2] / ahead.ambient[2],
+                light(world, side.clone(), 0.5).ambient[2] / side.ambient[2],
+            );
+            assert!(a > 1.5 * s, "{world:?}: {a} {s}");
+        }
+        assert_eq!(
+            light(World::Temperate, dusk.clone(), 0.5).direct,
+            dusk.direct
         );
     }
 

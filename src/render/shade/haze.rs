@@ -19,14 +19,18 @@ pub(crate) struct Haze {
     pub colour: u32,
     /// 1 - e^-(DENSITY (1 - CLEAR)): the back edge's unscaled haze.
     norm: f32,
+    /// Haze at the back edge (0..=1).
+    far: f32,
 }
 
 impl Haze {
-    /// Haze fading to packed `colour`.
-    pub(crate) fn new(colour: u32) -> Self {
+    /// Haze fading to packed `colour`, as thick at the back edge as
+    /// `far` (0..=1) says, or as [`FAR`] without it.
+    pub(crate) fn new(colour: u32, far: Option<f32>) -> Self {
         Haze {
             colour,
             norm: 1.0 - (-DENSITY * (1.0 - CLEAR)).exp(),
+            far: far.unwrap_or(FAR),
         }
     }
 
@@ -38,7 +42,7 @@ impl Haze {
         if d.is_nan() || d <= 0.0 {
             return 0;
         }
-        let h = FAR * (1.0 - (-DENSITY * d).exp()) / self.norm;
+        let h = self.far * (1.0 - (-DENSITY * d).exp()) / self.norm;
         (h.clamp(0.0, 1.0) * 256.0) as u32
     }
 }

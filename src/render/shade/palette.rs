@@ -461,6 +461,12 @@ impl Palette {
         pack(self.skirt, self.brightness(normal, 1.0), self.offset)
     }
 
+    /// How thick the air's haze is at the back edge, where the world
+    /// draws it per mountain (`cover::haze`).
+    pub(crate) fn haze(&self) -> Option<f32> {
+        cover::haze(self.world, self.air)
+    }
+
     /// The sky behind the mountain, top and horizon colours, filtered
     /// (black in Mono, Sonar and Outline).
     pub fn sky(&self) -> (u32, u32) {
