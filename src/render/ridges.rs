@@ -96,7 +96,7 @@ fn mix64(z: u64) -> u64 {
 /// A uniform number in -1..1 for point `k` of layer `layer`.
 fn random(seed: u64, layer: usize, k: usize) -> f32 {
     let bits = mix64(seed ^ mix64((layer as u64) << 40 ^ k as u64));
-    (bits >> 40) as f32 / (1u64 << 23) as f32 - 1.0
+    crate::terrain::splitmix::signed_unit(bits)
 }
 
 /// Profile length: a power of two plus one, at least the frame width (up to

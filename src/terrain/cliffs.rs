@@ -60,7 +60,7 @@ impl Strata {
         bounds.push(top);
         for j in 0..BEDS as u64 {
             let draw = super::splitmix::mix(seed ^ STRATA_KEY ^ j.wrapping_mul(0x9e37_79b9));
-            let u = (draw >> 40) as f32 / (1u64 << 24) as f32;
+            let u = super::splitmix::unit(draw);
             top += step * (THINNEST + THICKER_BY * u);
             bounds.push(top);
         }

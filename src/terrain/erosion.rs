@@ -306,6 +306,6 @@ impl SplitMix {
     /// A number in `0..1`.
     fn unit(&mut self) -> f32 {
         self.0 = self.0.wrapping_add(GOLDEN);
-        (mix(self.0) >> 40) as f32 / (1u64 << 24) as f32
+        super::splitmix::unit(mix(self.0))
     }
 }

@@ -172,7 +172,7 @@ mod tests {
             );
             let f = match i % 10 {
                 0 => odd[(state >> 50) as usize % odd.len()],
-                _ => (state >> 40) as f32 / (1u64 << 24) as f32,
+                _ => crate::terrain::splitmix::unit(state),
             };
             let k = [f, 1.0 - f, f * 0.5];
             assert_eq!(

@@ -50,7 +50,7 @@ pub(crate) fn amount(choice: Clouds, draw: u64) -> f32 {
     match choice {
         Clouds::Amount(a) => a.clamp(0.0, 1.0),
         Clouds::Varied => {
-            let u = (splitmix::mix(draw ^ 0xC10D_5EED) >> 40) as f32 / (1u64 << 24) as f32;
+            let u = splitmix::unit(splitmix::mix(draw ^ 0xC10D_5EED));
             if u < CLEAR_SHARE {
                 0.0
             } else {
@@ -66,7 +66,7 @@ pub(crate) fn amount(choice: Clouds, draw: u64) -> f32 {
 pub(crate) fn amount_in(choice: Clouds, world: World, draw: u64) -> f32 {
     match (choice, skies(world)) {
         (Clouds::Varied, Some((clear, least, most))) => {
-            let u = (splitmix::mix(draw ^ 0xC10D_5EED) >> 40) as f32 / (1u64 << 24) as f32;
+            let u = splitmix::unit(splitmix::mix(draw ^ 0xC10D_5EED));
             if u < clear {
                 0.0
             } else {
@@ -125,7 +125,7 @@ impl CloudSheet {
             .map(|i| {
                 let bits =
                     splitmix::mix(seed.wrapping_add((i as u64).wrapping_mul(splitmix::GOLDEN)));
-                (bits >> 40) as f32 / (1u64 << 23) as f32 - 1.0
+                splitmix::signed_unit(bits)
             })
             .collect();
         let unit = |bits: u64| (bits & 0xffff) as f32 / 65536.0 * LATTICE as f32;

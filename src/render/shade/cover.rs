@@ -55,7 +55,7 @@ const DRAW_KEY: u64 = 0x636f_7665_7220_6472;
 /// its world's range this mountain's cover lies (a snow line, a season's
 /// progress, a rock's colour), so two slides of one world differ.
 pub fn draw(identity: u64) -> f32 {
-    (crate::terrain::splitmix::mix(identity ^ DRAW_KEY) >> 40) as f32 / (1u64 << 24) as f32
+    crate::terrain::splitmix::unit(crate::terrain::splitmix::mix(identity ^ DRAW_KEY))
 }
 
 /// Where between its world's palettes the mountain of draw `v` ([`draw`])
@@ -221,8 +221,9 @@ pub fn faces(world: World) -> bool {
 /// (`Settings::quarter_turns`): the side belongs to the land, so it turns
 /// with it.
 pub fn sunward(identity: u64, quarters: u32) -> Vec2 {
-    let turn = (crate::terrain::splitmix::mix(identity ^ SUNWARD_KEY) >> 40) as f32;
-    let side = Vec2::from_angle(turn / (1u64 << 24) as f32 * std::f32::consts::TAU);
+    let turn =
+        crate::terrain::splitmix::unit(crate::terrain::splitmix::mix(identity ^ SUNWARD_KEY));
+    let side = Vec2::from_angle(turn * std::f32::consts::TAU);
     // A quarter turn takes the old right edge (+x) to the row y = 0.
     (0..quarters % 4).fold(side, |d, _| Vec2::new(d.y, -d.x))
 }

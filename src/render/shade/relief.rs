@@ -777,7 +777,10 @@ mod tests {
         let face_on = relief.cell_px(12.0);
         let up = Vec3::Z;
         // Seen from straight above, or without an eye: its own size.
-        assert_eq!(relief.cell_px_seen(12.0, up, Some(Vec3::NEG_Z * 7.0)), face_on);
+        assert_eq!(
+            relief.cell_px_seen(12.0, up, Some(Vec3::NEG_Z * 7.0)),
+            face_on
+        );
         assert_eq!(relief.cell_px_seen(12.0, up, None), face_on);
         // Lower and lower lines of sight narrow it, down to the least facing.
         let seen = |deg: f32| {
@@ -887,7 +890,7 @@ mod tests {
         let mut state = 9u64;
         let mut next = || {
             state = mix(state);
-            (state >> 40) as f32 / (1u64 << 24) as f32 * 2.0 - 1.0
+            crate::terrain::splitmix::signed_unit(state)
         };
         let (mut walls, mut not) = (0, 0);
         for face in 0..4000 {
@@ -1031,7 +1034,7 @@ mod tests {
         let mut state = 1u64;
         let mut next = || {
             state = mix(state);
-            (state >> 40) as f32 / (1u64 << 24) as f32
+            crate::terrain::splitmix::unit(state)
         };
         let (mut plain, mut refined) = (0, 0);
         for face in 0..2000 {

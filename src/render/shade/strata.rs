@@ -134,7 +134,7 @@ impl RockStrata {
         }
         let draw = |k: u64| {
             let d = splitmix::mix(seed ^ TONE_KEY ^ k.wrapping_mul(0x9e37_79b9_7f4a_7c15));
-            (d >> 40) as f32 / (1u64 << 24) as f32
+            splitmix::unit(d)
         };
         let cell = extent / size.saturating_sub(1).max(1) as f32;
         let turn = |a: f32| Vec2::new(a.cos(), a.sin());
@@ -209,7 +209,7 @@ impl Sampler<'_> {
 fn tone(beds: &Strata, thin: &Strata, seed: u64, h: f32) -> f32 {
     let shade = |(bottom, _): (f32, f32)| {
         let draw = splitmix::mix(seed ^ TONE_KEY ^ u64::from(bottom.to_bits()));
-        (draw >> 40) as f32 / (1u64 << 23) as f32 - 1.0
+        splitmix::signed_unit(draw)
     };
     let (bottom, top) = thin.bed(h);
     let share = (h - bottom) / (top - bottom);
