@@ -12,6 +12,7 @@ use super::base::colour::{Rgb, mix, to_u32};
 use super::base::frame::{Frame, Rect};
 use super::base::size::Size;
 use crate::settings::Settings;
+use crate::terrain::curves::hermite;
 use crate::terrain::{Heightfield, splitmix};
 
 /// Number of ranges, from the horizon to the foreground.
@@ -266,7 +267,7 @@ fn mist_shades(layer: &Layer, h: u32) -> Vec<u32> {
     (0..=depth)
         .map(|d| {
             let t = d as f32 / depth as f32;
-            to_u32(mix(layer.crest, layer.mist, t * t * (3.0 - 2.0 * t)))
+            to_u32(mix(layer.crest, layer.mist, hermite(t)))
         })
         .collect()
 }

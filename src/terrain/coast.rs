@@ -10,6 +10,7 @@
 //! `water_line = "generator"` the square generator is Mountain Terrain's.
 
 use super::Heightfield;
+use super::curves::smoothstep;
 use crate::settings::COAST_SEA_SHARE;
 
 /// Share of the rows, at the front, that are lowered into the sea.
@@ -68,10 +69,4 @@ pub(crate) fn lower_the_front(field: &mut Heightfield) {
             };
         }
     }
-}
-
-/// Hermite step from 0 at `e0` to 1 at `e1`.
-pub(super) fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
-    let t = ((x - e0) / (e1 - e0)).clamp(0.0, 1.0);
-    t * t * (3.0 - 2.0 * t)
 }

@@ -3,6 +3,7 @@
 mod brownian;
 mod cliffs;
 mod coast;
+pub(crate) mod curves;
 mod erosion;
 mod fft;
 pub mod heightfield;

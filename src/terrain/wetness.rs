@@ -15,7 +15,7 @@
 
 use super::Heightfield;
 use super::SHARED_EXPONENT;
-use super::coast::smoothstep;
+use super::curves::smoothstep;
 use super::heightfield::NEIGHBOURS;
 
 /// The wetness of most of a mountain's slopes: neither a ridge (0) nor a

@@ -32,12 +32,7 @@ pub fn luminance(c: Rgb) -> f32 {
     0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]
 }
 
-/// Hermite step from 0 at `e0` to 1 at `e1` (0 below, 1 above).
-#[inline]
-pub fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
-    let t = ((x - e0) / (e1 - e0)).clamp(0.0, 1.0);
-    t * t * (3.0 - 2.0 * t)
-}
+pub use crate::terrain::curves::smoothstep;
 
 /// A 0..=1 colour as `0x00RRGGBB`.
 pub fn to_u32(c: Rgb) -> u32 {

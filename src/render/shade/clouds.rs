@@ -15,6 +15,7 @@
 
 use crate::render::base::colour::smoothstep;
 use crate::settings::{Clouds, World};
+use crate::terrain::curves::hermite;
 use crate::terrain::splitmix;
 
 /// How far the sheet lies for a point one frame height above the horizon
@@ -160,7 +161,7 @@ impl CloudSheet {
             let mask = LATTICE as i32 - 1;
             let layer = Layer {
                 rows: [j, j + 1].map(|j| (j & mask) as usize * LATTICE),
-                ty: fade_curve(y - j as f32),
+                ty: hermite(y - j as f32),
             };
             // Not exactly 2: the layers' lattices never line up.
             y = y * 1.97 + 31.7;
@@ -252,7 +253,7 @@ impl CloudSheet {
     fn value(&self, x: f32, layer: &Layer) -> f32 {
         let mask = LATTICE as i32 - 1;
         let i = floor(x);
-        let tx = fade_curve(x - i as f32);
+        let tx = hermite(x - i as f32);
         let (i0, i1) = ((i & mask) as usize, ((i + 1) & mask) as usize);
         let [r0, r1] = layer.rows;
         let l = &self.lattice;
@@ -268,12 +269,6 @@ impl CloudSheet {
 fn floor(x: f32) -> i32 {
     let i = x as i32;
     if (i as f32) > x { i - 1 } else { i }
-}
-
-/// 3t^2 - 2t^3: the lattice's blend, smooth across its cells' edges.
-#[inline]
-fn fade_curve(t: f32) -> f32 {
-    t * t * (3.0 - 2.0 * t)
 }
 
 #[cfg(test)]

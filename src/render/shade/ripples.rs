@@ -9,6 +9,7 @@
 
 use crate::render::base::colour::blend_packed;
 use crate::terrain::Heightfield;
+use crate::terrain::curves::hermite;
 use crate::terrain::heightfield::MAX_EXPONENT;
 use crate::terrain::noise::Noise;
 
@@ -119,7 +120,7 @@ impl Ripples {
     #[inline]
     fn noise(&self, u: f32, v: f32) -> f32 {
         let (a, b) = (u as i32, v as i32);
-        let (fu, fv) = (smooth(u - a as f32), smooth(v - b as f32));
+        let (fu, fv) = (hermite(u - a as f32), hermite(v - b as f32));
         let at = |da: i32, db: i32| {
             let mask = LATTICE as i32 - 1;
             let (i, j) = (a.wrapping_add(da) & mask, b.wrapping_add(db) & mask);
@@ -129,11 +130,6 @@ impl Ripples {
         let bottom = at(0, 1) + (at(1, 1) - at(0, 1)) * fu;
         top + (bottom - top) * fv
     }
-}
-
-#[inline]
-fn smooth(t: f32) -> f32 {
-    t * t * (3.0 - 2.0 * t)
 }
 
 #[cfg(test)]
