@@ -236,6 +236,17 @@ impl Show {
         }
     }
 
+    /// Waits for the mountain being made on another thread, if one is,
+    /// and lets the show go: no work of it runs afterwards. For a caller
+    /// that must know that (a test counting the process's heap, whose next
+    /// test would count a detached maker's field). The saver's exit does
+    /// not wait: the process ends with the thread.
+    pub fn finish(mut self) {
+        if let Next::Pending(handle, _) = std::mem::replace(&mut self.next, Next::None) {
+            crate::log::joined(handle, "making the next mountain");
+        }
+    }
+
     /// Starts the next mountain now (the N key, or the end of a hold).
     pub fn advance(&mut self, now: Instant) -> Rect {
         if self.current.is_none() {
