@@ -40,9 +40,10 @@ const NONE_PX: f32 = 0.8;
 /// light would sparkle long before it does face-on; in full (a power of 1)
 /// the near land would lose its finest level where it is seen edge-on.
 /// Measured over the quality seeds at 1080p against the 4x reference and
-/// the near land's detail against a `detail = 12` grid: 0 gave 44.2 dB and
-/// 1.21 of the finer grid's detail, 0.15 45.1 dB and 0.90, 0.5 46.6 dB and
-/// 0.79.
+/// the near land's detail against a `detail = 12` grid (1080p, before the
+/// worlds drew their heights per mountain; BENCHMARKS.md has today's): 0
+/// gave 44.2 dB and 1.21 of the finer grid's detail, 0.15 45.1 dB and
+/// 0.90, 0.5 46.6 dB and 0.79.
 const FORESHORTENING: f32 = 0.15;
 /// Least `facing` counted: ground seen edge-on keeps some of its size.
 const LEAST_FACING: f32 = 0.05;
