@@ -541,12 +541,8 @@ impl<'a> Scene<'a> {
     fn fine_point(&self, relief: &Relief, v: &Vert, n: Vec3, x: usize, y: usize) -> FinePoint {
         let (gx, gy) = (x as f32, y as f32);
         let ground = v.h.max(v.w);
-        let cell = self.view.cell();
-        let from_eye = self.view.eye().map(|eye| {
-            let v = Vec3::new(gx * cell, gy * cell, ground) - eye;
-            // The palette's y runs to the back, the grid's to the front.
-            Vec3::new(v.x, -v.y, v.z)
-        });
+        // The palette's y runs to the back, the grid's to the front.
+        let from_eye = (self.view.sight_to(gx, gy, ground)).map(|v| Vec3::new(v.x, -v.y, v.z));
         let cell_px = relief.cell_px_seen(self.view.cell_pixels(gx, gy, ground), n, from_eye);
         let slope = Vec2::new(n.x, n.y) / n.z.max(0.05);
         if !relief.needs(cell_px) {

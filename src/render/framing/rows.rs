@@ -25,7 +25,7 @@ const CROWDED_PX: f32 = 0.75;
 /// Most rows merged into one strip.
 const MAX_STEP: usize = 4;
 /// Columns sampled across a row pair.
-const SAMPLES: usize = 64;
+const SAMPLES: usize = 256;
 
 /// The grid rows (of `n` a side) to draw, back to front: always the first
 /// and the last. `ground(x, y)` is the height drawn at grid point (x, y).

@@ -454,12 +454,21 @@ impl View {
     /// (which draws no relief below its grid).
     pub(crate) fn cell_pixels(&self, gx: f32, gy: f32, z: f32) -> f32 {
         match &self.camera {
-            Some(cam) => {
-                let p = Vec3::new(gx * self.cell, gy * self.cell, z);
-                self.cell * self.scale.y / cam.depth(p)
-            }
+            Some(cam) => self.cell * self.scale.y / cam.depth(self.point(gx, gy, z)),
             None => 0.0,
         }
+    }
+
+    /// The line from the eye to grid position (`gx`, `gy`) at height `z`,
+    /// in world units (x right, y towards the front, z up); `None` for the
+    /// oblique view, which has no eye.
+    pub(crate) fn sight_to(&self, gx: f32, gy: f32, z: f32) -> Option<Vec3> {
+        self.camera.map(|cam| self.point(gx, gy, z) - cam.eye())
+    }
+
+    /// Grid position (`gx`, `gy`) at height `z` in world units.
+    fn point(&self, gx: f32, gy: f32, z: f32) -> Vec3 {
+        Vec3::new(gx * self.cell, gy * self.cell, z)
     }
 
     /// Width of one grid step in height units.

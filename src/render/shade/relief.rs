@@ -763,6 +763,14 @@ fn finite_or(v: f32, or: f32) -> f32 {
 mod tests {
     use super::*;
 
+    /// A stream of draws from `state` on, for tests that try many cases.
+    fn draws(mut state: u64) -> impl FnMut() -> u64 {
+        move || {
+            state = mix(state);
+            state
+        }
+    }
+
     #[test]
     fn a_level_fades_in_between_its_two_sizes() {
         let px = Vec4::new(NONE_PX, 0.5 * NONE_PX, FULL_PX, 40.0);
@@ -888,11 +896,8 @@ mod tests {
     #[test]
     fn a_face_said_too_steep_for_the_plan_is_so_at_every_pixel() {
         let sine = |s: Vec2| s.length() / (1.0 + s.length_squared()).sqrt();
-        let mut state = 9u64;
-        let mut next = || {
-            state = mix(state);
-            crate::terrain::splitmix::signed_unit(state)
-        };
+        let mut draw = draws(9);
+        let mut next = || crate::terrain::splitmix::signed_unit(draw());
         let (mut walls, mut not) = (0, 0);
         for face in 0..4000 {
             // Corners turned about one way, steeper or gentler.
@@ -1032,11 +1037,8 @@ mod tests {
     fn a_face_the_relief_is_said_not_to_show_on_changes_no_pixel_by_a_level() {
         let sun = Vec3::new(0.3, -0.4, 0.8).normalize();
         let relief = Relief::new(&Heightfield::flat(10, 250.0), 5, sun, 0.25);
-        let mut state = 1u64;
-        let mut next = || {
-            state = mix(state);
-            crate::terrain::splitmix::unit(state)
-        };
+        let mut draw = draws(1);
+        let mut next = || crate::terrain::splitmix::unit(draw());
         let (mut plain, mut refined) = (0, 0);
         for face in 0..2000 {
             // Every other face steep: its pixels take the side views.
