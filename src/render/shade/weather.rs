@@ -12,7 +12,7 @@ use glam::{Vec2, Vec3};
 
 use super::clouds::{CloudSheet, Cover, SheetRow};
 use super::light::Lighting;
-use crate::render::base::colour::{Rgb, mix, smoothstep};
+use crate::render::base::colour::{Rgb, luminance, mix, smoothstep};
 use crate::render::framing::view::View;
 
 /// Sight lines farther from the sun than this (1 - cos of the angle
@@ -98,13 +98,18 @@ impl Weather {
         // night keeps the plain gradient.
         let glows = glows && low > 0.0 && lighting.night < 0.5;
         let night = lighting.night;
-        let white = mix(lighting.direct, [1.0; 3], 0.15 * (1.0 - night));
+        // A world's brilliant day or its twilight lifts the sun's light
+        // on the land past 1; the clouds take its colour, not the lift.
+        let direct = lighting.direct;
+        let sun_light = direct.map(|c| c / direct[0].max(direct[1]).max(direct[2]).max(1.0));
+        let white = mix(sun_light, [1.0; 3], 0.15 * (1.0 - night));
         let lit: Rgb = [0, 1, 2].map(|i| (0.8 * white[i] + 0.35 * lighting.horizon[i]).min(1.0));
         let lit = match night > 0.0 {
             true => lit.map(|c| c * (1.0 - (1.0 - MOONLIT_CLOUD) * night)),
             false => lit,
         };
         let shade: Rgb = [0, 1, 2].map(|i| (lighting.ambient[i] + 0.3 * lighting.zenith[i]) * 1.15);
+        let shade = heart_within(shade, lit);
         Some(Weather {
             view: view.clone(),
             sun,
@@ -112,7 +117,7 @@ impl Weather {
             middle: frame.x * 0.5,
             height: frame.y.max(1.0),
             horizon_row,
-            light: filter(lighting.direct),
+            light: filter(sun_light),
             glow: low,
             clouds: (amount > 0.0).then(|| CloudSheet::new(amount, draw)),
             amount,
@@ -172,6 +177,28 @@ impl Weather {
         let below = (1.0 - smoothstep(0.0, 0.3, up)) * (1.0 - smoothstep(0.15, 0.5, self.sun.z));
         mix(c, self.light, 0.45 * below)
     }
+}
+
+/// The most a cloud's heart, in its own shade, shows of the brightness of
+/// its lit edge (luminance). A world lifts the sky's light on its land
+/// (`cover::light`: a twilight's land lit up to 1.8 times, the shade
+/// under a low sun ahead more): unbounded, that lift lit an overcast
+/// sky's hearts past their edges and past white, a blank sky over 40% of
+/// the frame (seed 218, a tropical dawn). The plain day's hearts show
+/// 0.55-0.7 of their edges.
+const HEART_MOST: f32 = 0.8;
+
+/// The cloud's heart colour `shade` darkened, its hue kept, to at most
+/// [`HEART_MOST`] of the lit edge `lit`'s luminance and to no channel
+/// over 1.
+fn heart_within(shade: Rgb, lit: Rgb) -> Rgb {
+    let most = HEART_MOST * luminance(lit);
+    let (l, top) = (luminance(shade), shade[0].max(shade[1]).max(shade[2]));
+    let k = [1.0, most / l, 1.0 / top]
+        .into_iter()
+        .filter(|k| k.is_finite() && *k > 0.0)
+        .fold(1.0f32, f32::min);
+    shade.map(|c| c * k)
 }
 
 impl Weather {
@@ -282,6 +309,40 @@ mod tests {
             right[0] - right[2] > left[0] - left[2],
             "warmer: {left:?} {right:?}"
         );
+    }
+
+    /// A world's brilliant day and bright shade (`cover::light` lifts the
+    /// sun's light up to 1.35 times and the sky's up to 1.9 x 1.8 times
+    /// under a low sun ahead) light the land, not the clouds: an overcast
+    /// morning keeps its hearts darker than their edges, and its sky is not
+    /// blown out to white (seed 218's was, over 40% of the frame).
+    #[test]
+    fn a_worlds_lifted_light_leaves_the_clouds_their_shade() {
+        let field = Heightfield::flat(5, 100.0);
+        let mut lighting = Lighting::new(Sun::Morning, &field);
+        lighting.direct = lighting.direct.map(|c| c * 1.35);
+        lighting.ambient = lighting.ambient.map(|c| c * 1.9 * 1.8);
+        let frame = (Vec2::new(960.0, 540.0), 300.0);
+        let w = Weather::new(&view(), &lighting, |c| c, frame, 0.8, 7).expect("a camera");
+        assert!(
+            luminance(w.shade) <= HEART_MOST * luminance(w.lit) + 1e-4,
+            "heart {:?} against edge {:?}",
+            w.shade,
+            w.lit
+        );
+        for c in [w.shade, w.lit, w.light] {
+            assert!(c.iter().all(|&v| v <= 1.0 + 1e-6), "{c:?}");
+        }
+        let sky = [0.55, 0.65, 0.85];
+        let (mut white, mut all) = (0, 0);
+        for y in (0..300).step_by(10) {
+            for x in (0..960).step_by(10) {
+                let c = w.over(sky, x as f32, y as f32);
+                white += c.iter().all(|&v| v >= 0.99) as usize;
+                all += 1;
+            }
+        }
+        assert!(white * 100 <= all, "{white} of {all} sky points white");
     }
 
     /// The sun's disc against its own glow over a bright sky (a world's
