@@ -23,7 +23,10 @@
 //!   Lab; two slides are the mean CIE76 dE of their 144 cells apart;
 //! - *night*: the slide's light is the night's;
 //! - *lakes seen*: at least 0.1% of the frame is water with `lakes = true`
-//!   and not with `lakes = false` (the basins' water alone).
+//!   and not with `lakes = false` (the basins' water alone);
+//! - *block*: the sky shows along the bottom row: the whole grid is in
+//!   view, a block in the sky, instead of the vista's land to the frame's
+//!   edges.
 //!
 //! Each slide's line and each `nearest to` line name the slide's world and
 //! time of day, so the near pairs say which worlds and hours sit close.
@@ -52,6 +55,7 @@ struct Slide {
     water: bool,
     snow: bool,
     lakes: f64,
+    block: bool,
     thumb: Vec<[f32; 3]>,
 }
 
@@ -75,14 +79,15 @@ fn main() {
         .map(|&seed| {
             let s = slide(&prefs, seed, size);
             println!(
-                "seed {seed:3} {:9} {:14} night {} green {} water {} snow {} lakes {:.2}%",
+                "seed {seed:3} {:9} {:14} night {} green {} water {} snow {} lakes {:.2}%{}",
                 s.world,
                 s.time,
                 s.night as u8,
                 s.green as u8,
                 s.water as u8,
                 s.snow as u8,
-                100.0 * s.lakes
+                100.0 * s.lakes,
+                if s.block { " BLOCK" } else { "" }
             );
             s
         })
@@ -130,6 +135,7 @@ fn report(slides: &[Slide]) {
     println!("water across the bottom third: {:.0}%", share(&|s| s.water));
     println!("snow in the lower two thirds: {:.0}%", share(&|s| s.snow));
     println!("night slides: {:.1}%", share(&|s| s.night));
+    println!("the grid seen whole, a block: {:.1}%", share(&|s| s.block));
     println!("nearest other slide, mean dE: {mean_nearest:.1}");
     println!("all pairs, median dE: {median:.1}");
     let mut worlds: Vec<&str> = slides.iter().map(|s| s.world.as_str()).collect();
@@ -202,6 +208,7 @@ fn slide(prefs: &Settings, seed: u64, (w, h): (u32, u32)) -> Slide {
         water: 2 * water > bottom,
         snow: snow * 50 >= lower,
         lakes: lakes as f64 / (w * h) as f64,
+        block: classes[(h - 1) * w..].contains(&Class::Sky),
         thumb: thumbnail(&labs, w, h),
     }
 }

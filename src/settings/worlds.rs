@@ -138,6 +138,15 @@ fn spread_as(key: &keys::Key, seed: Option<u64>, place: usize, (least, most): (f
     }
 }
 
+/// Whether the mountain of `seed` under `settings` stands as high as its
+/// world draws it ([`spreads`]): not where a person set `height`, nor in
+/// a world that keeps the key's own.
+pub fn height_drawn(settings: &Settings, seed: Option<u64>) -> bool {
+    let world = chosen(settings, seed);
+    let drawn = spreads(world).iter().any(|&(name, _)| name == HEIGHT.name);
+    drawn && keys::find(HEIGHT.name).is_some_and(|key| keys::get(settings, key) == (key.default)())
+}
+
 /// The keys `world` sets and their values (none for the temperate coast,
 /// which is the keys' own defaults, nor for "varied", which is one of the
 /// others).

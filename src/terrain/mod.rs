@@ -78,8 +78,7 @@ pub fn generate(settings: &Settings, seed: u64) -> Heightfield {
 /// [`generate`] on at most `threads` threads (0 counts as 1). The result
 /// is the same for every thread count.
 pub fn generate_with_threads(settings: &Settings, seed: u64, threads: usize) -> Heightfield {
-    let settings = &worlds::drawn(settings, Some(seed));
-    let params = Params::from_settings(settings);
+    let params = params_for(settings, seed);
     let mut field = Heightfield::flat(params.exponent, params.extent());
     fill(&mut field, &params, seed, threads);
     field
@@ -92,14 +91,29 @@ pub fn generate_with_threads(settings: &Settings, seed: u64, threads: usize) -> 
 /// them). Every point is overwritten; the result is the
 /// same bits as `generate`.
 pub fn generate_into(settings: &Settings, seed: u64, field: &mut Heightfield) {
-    let settings = &worlds::drawn(settings, Some(seed));
-    let params = Params::from_settings(settings);
+    let params = params_for(settings, seed);
     if field.exponent() == params.exponent {
         field.set_extent(params.extent());
     } else {
         *field = Heightfield::flat(params.exponent, params.extent());
     }
     fill(field, &params, seed, default_threads());
+}
+
+/// The tallest a world's drawn land stands above its water line, in grid
+/// widths. The vista frames land up to about half the width tall with
+/// its back edge across the frame (`render::framing::vista`); taller, a
+/// slide showed the whole grid as a block floating in the sky (3 of
+/// seeds 1-480: alpine and desert ranges drawn 7 or 8 high over a low
+/// sea, 0.51-0.61 widths tall). The tallest of the others stand 0.49.
+pub const DRAWN_TALLEST: f32 = 0.45;
+
+/// The parameters `settings` give the mountain of `seed` in its world
+/// (`worlds::drawn`).
+fn params_for(settings: &Settings, seed: u64) -> Params {
+    let mut params = Params::from_settings(&worlds::drawn(settings, Some(seed)));
+    params.tallest = worlds::height_drawn(settings, Some(seed)).then_some(DRAWN_TALLEST);
+    params
 }
 
 /// Runs the generator and the finishing passes over `field`.
@@ -109,8 +123,30 @@ fn fill(field: &mut Heightfield, params: &Params, seed: u64, threads: usize) {
     let extremes = subdivide_all(field, params, seed, threads, &Plain);
     let extremes = weather(field, params, seed, threads, extremes);
     finish(field, params, threads, extremes);
+    if let Some(tallest) = params.tallest {
+        lower_to(field, tallest);
+    }
     cliffs::terrace(field, params.cliffs, threads);
     find_lakes(field, params);
+}
+
+/// Lowers the land of `field` (all its heights alike: the same mountain,
+/// less tall) where it stands more than `tallest` grid widths above its
+/// water line, as measured on the lattice every detail shares
+/// ([`SHARED_EXPONENT`]), so a mountain is lowered alike at every size.
+fn lower_to(field: &mut Heightfield, tallest: f32) {
+    let cells = field.size() - 1;
+    let step = (cells >> SHARED_EXPONENT).max(1);
+    let top = (0..=cells)
+        .step_by(step)
+        .flat_map(|y| field.row(y).iter().step_by(step).copied())
+        .filter(|h| h.is_finite())
+        .fold(0.0f32, f32::max);
+    let most = tallest * field.extent();
+    if top > most {
+        let k = most / top;
+        field.heights_mut().iter_mut().for_each(|h| *h *= k);
+    }
 }
 
 /// The lakes of the finished field, if asked for (`lakes = true`).
@@ -252,6 +288,38 @@ fn finish(field: &mut Heightfield, p: &Params, threads: usize, extremes: Option<
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The tallest of `field`'s land, in grid widths.
+    fn tallest(field: &Heightfield) -> f32 {
+        field.max() / field.extent()
+    }
+
+    /// Seeds 264, 353 and 379 drew alpine and desert ranges 7 or 8 high
+    /// over a low sea, 0.51-0.61 widths tall: too tall for the vista, their
+    /// slides showed the whole grid as a block in the sky. A person's own
+    /// height is left as set.
+    #[test]
+    fn a_worlds_drawn_land_is_no_taller_than_the_vista_frames() {
+        let at = |height: Option<u32>| Settings {
+            detail: crate::settings::Detail::Level(8),
+            height: height.unwrap_or(Settings::default().height),
+            ..Settings::default()
+        };
+        for seed in [264, 353, 379] {
+            let drawn = generate(&at(None), seed);
+            assert!(
+                tallest(&drawn) <= DRAWN_TALLEST * 1.001,
+                "seed {seed}: {}",
+                tallest(&drawn)
+            );
+            let own = worlds::drawn(&at(None), Some(seed)).height;
+            let set = generate(&at(Some(own)), seed);
+            assert!(!worlds::height_drawn(&at(Some(own)), Some(seed)));
+            assert!(tallest(&set) >= tallest(&drawn), "seed {seed}");
+        }
+        let set = generate(&at(Some(8)), 264);
+        assert!(tallest(&set) > DRAWN_TALLEST, "{}", tallest(&set));
+    }
 
     #[test]
     fn the_subdivision_sees_the_true_extremes_when_asked() {

@@ -37,6 +37,10 @@ pub(crate) struct Params {
     /// centre's (the square generators), where it is not the same: the
     /// essay's `side_roughness = 0.15` against `center_roughness = 0.2`.
     pub(crate) edge_share: Option<f32>,
+    /// The most the land may stand above its water line, in grid widths,
+    /// where its world drew its height (`worlds::height_drawn`): none
+    /// where a person set it, or the world keeps the key's own.
+    pub(crate) tallest: Option<f32>,
 }
 
 /// The essay's edge midpoints' roughness against its centres'.
@@ -68,6 +72,7 @@ impl Params {
             },
             still_edges: s.look == Look::Essay,
             edge_share: (s.look == Look::Essay).then_some(ESSAY_EDGE_SHARE),
+            tallest: None,
         }
     }
 
