@@ -26,7 +26,9 @@
 //!   and not with `lakes = false` (the basins' water alone);
 //! - *block*: the sky shows along the bottom row: the whole grid is in
 //!   view, a block in the sky, instead of the vista's land to the frame's
-//!   edges.
+//!   edges;
+//! - *wall*: under a fifth of the top row is sky: the land rises out of
+//!   the top of the frame, and the slide is mostly one near face.
 //!
 //! Each slide's line and each `nearest to` line name the slide's world and
 //! time of day, so the near pairs say which worlds and hours sit close.
@@ -56,6 +58,7 @@ struct Slide {
     snow: bool,
     lakes: f64,
     block: bool,
+    wall: bool,
     thumb: Vec<[f32; 3]>,
 }
 
@@ -87,7 +90,13 @@ fn main() {
                 s.water as u8,
                 s.snow as u8,
                 100.0 * s.lakes,
-                if s.block { " BLOCK" } else { "" }
+                if s.block {
+                    " BLOCK"
+                } else if s.wall {
+                    " WALL"
+                } else {
+                    ""
+                }
             );
             s
         })
@@ -136,6 +145,10 @@ fn report(slides: &[Slide]) {
     println!("snow in the lower two thirds: {:.0}%", share(&|s| s.snow));
     println!("night slides: {:.1}%", share(&|s| s.night));
     println!("the grid seen whole, a block: {:.1}%", share(&|s| s.block));
+    println!(
+        "the land out of the top, a wall: {:.1}%",
+        share(&|s| s.wall)
+    );
     println!("nearest other slide, mean dE: {mean_nearest:.1}");
     println!("all pairs, median dE: {median:.1}");
     let mut worlds: Vec<&str> = slides.iter().map(|s| s.world.as_str()).collect();
@@ -209,6 +222,7 @@ fn slide(prefs: &Settings, seed: u64, (w, h): (u32, u32)) -> Slide {
         snow: snow * 50 >= lower,
         lakes: lakes as f64 / (w * h) as f64,
         block: classes[(h - 1) * w..].contains(&Class::Sky),
+        wall: 5 * classes[..w].iter().filter(|&&c| c == Class::Sky).count() < w,
         thumb: thumbnail(&labs, w, h),
     }
 }
