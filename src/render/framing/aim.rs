@@ -40,7 +40,29 @@ pub(crate) struct Aim {
     pub standoff: f32,
 }
 
+/// The shares of the land's depth, from its near edge, that a world's
+/// vista whose land it sees only cut off at the top crops below the frame
+/// instead, tried in turn ([`Aim::looking_down`]): a camera above the near
+/// land, looking down over it as the alpine world's does, rather than one
+/// near face from edge to edge (6 of seeds 1-480 were such walls: tall
+/// land near the front, whichever side is the front).
+pub(super) const DOWN_CROPS: [f32; 3] = [0.5, 0.65, 0.8];
+/// Where the back edge of a vista looking down sits ([`Aim::looking_down`]):
+/// high in the frame, over the land below it.
+const DOWN_SKYLINE: f32 = 0.2;
+
 impl Aim {
+    /// This aim from above its near land, looking down over it: `cropped`
+    /// of the land's depth below the frame, the back edge high
+    /// ([`DOWN_SKYLINE`]).
+    pub(super) fn looking_down(self, cropped: f32) -> Aim {
+        Aim {
+            cropped,
+            skyline: DOWN_SKYLINE,
+            ..self
+        }
+    }
+
     /// Low in front of the land, looking across it: the near edge at the
     /// bottom, the back edge at [`SKYLINE`] (the temperate world's vista).
     pub const ACROSS: Aim = Aim {

@@ -7,7 +7,7 @@
 
 use glam::{Vec2, Vec3, Vec4};
 
-use super::aim::Aim;
+use super::aim::{Aim, DOWN_CROPS};
 use super::camera::{Camera, RowCamera};
 use super::tops::finite;
 use super::vista;
@@ -25,6 +25,19 @@ pub fn near_floor(field: &Heightfield) -> f32 {
     } else {
         0.0
     }
+}
+
+/// The highest point of each row of a grid `extent` units wide whose row
+/// tops are `row_top` (spread evenly from back to front), down its
+/// middle, as the vista's fit reads them.
+fn vista_tops(row_top: &[f32], extent: f32) -> Vec<Vec3> {
+    let last = row_top.len().saturating_sub(1).max(1) as f32;
+    (row_top.iter().enumerate())
+        .map(|(i, &z)| {
+            let z = if z.is_finite() { z.max(0.0) } else { 0.0 };
+            Vec3::new(0.5 * extent, extent * i as f32 / last, z)
+        })
+        .collect()
 }
 
 /// Sine and cosine of the classic view's tilt: the grid is tipped back 70
@@ -298,7 +311,9 @@ impl View {
 
     /// Places the vista camera, aimed as `aim` says, over the land whose
     /// row tops are `row_top` (spread evenly from back to front); tall land puts the back edge
-    /// lower (`vista::fitted`), and land too tall for the vista at all, or
+    /// lower (`vista::fitted`), a world's land still cut off at the top is
+    /// looked down on from above its near part ([`Aim::looking_down`]),
+    /// and land too tall for the vista at all, or
     /// whose near edge stands above its camera (`near_floor`), is framed as
     /// the perspective view frames it.
     fn frame_vista(
@@ -310,14 +325,19 @@ impl View {
         height: f32,
     ) {
         let extent = self.cell * steps;
-        let last = row_top.len().saturating_sub(1).max(1) as f32;
-        let tops: Vec<Vec3> = (row_top.iter().enumerate())
-            .map(|(i, &z)| {
-                let z = if z.is_finite() { z.max(0.0) } else { 0.0 };
-                Vec3::new(0.5 * extent, extent * i as f32 / last, z)
-            })
-            .collect();
-        let Some(shot) = vista::fitted(aim, extent, (width, height), &tops, near_floor) else {
+        let tops = vista_tops(row_top, extent);
+        let fit = |aim| vista::fitted(aim, extent, (width, height), &tops, near_floor);
+        // A world's vista that sees its land only cut off at the top sees
+        // one near face: from above the near land, looking down over it,
+        // where that frames it (today's vista keeps its pictures).
+        let shot = match fit(aim) {
+            Some(shot) if shot.cut && aim != Aim::ACROSS => (DOWN_CROPS.into_iter())
+                .filter(|&cropped| cropped > aim.cropped)
+                .find_map(|cropped| fit(aim.looking_down(cropped)).filter(|down| !down.cut))
+                .or(Some(shot)),
+            shot => shot,
+        };
+        let Some(shot) = shot else {
             // Land too tall for a camera low in front of it, or raised above
             // it: the perspective's camera, above it, sees it whole.
             let zmax = tops.iter().map(|p| p.z).fold(0.0, f32::max);
@@ -490,6 +510,56 @@ mod tests {
                 check(kind, &view, gy, &view.along_row(gy));
             }
         }
+    }
+
+    /// Tall land near the front (a third of the width high over the
+    /// nearest third of the rows, low hills behind): a world's vista from
+    /// low in front of it saw one near face from edge to edge, no sky (6
+    /// of seeds 1-480). It now looks down over the near land, and no
+    /// row's top stands more than `vista::OVER_TOP` over the top of the
+    /// frame (a peak's tip), at both sizes.
+    #[test]
+    fn a_worlds_vista_looks_down_over_tall_near_land_rather_than_at_a_wall() {
+        let (size, extent) = (65, 250.0);
+        let rows: Vec<f32> = (0..size)
+            .map(|i| {
+                if i >= 44 {
+                    0.33 * extent
+                } else {
+                    0.05 * extent
+                }
+            })
+            .collect();
+        let mut looked_down = 0;
+        for identity in 0..12 {
+            let world = (World::Desert, identity);
+            let aim = Aim::of(World::Desert, identity);
+            for (w, h) in [(320, 180), (1920, 1080)] {
+                let frame = Size::new(w, h);
+                let view = View::fitted_in(
+                    ViewKind::Vista,
+                    (Oblique::OURS, world),
+                    size,
+                    extent,
+                    (&rows, 0.0),
+                    frame,
+                );
+                let top = (0..size)
+                    .map(|i| view.project(32.0, i as f32, rows[i]).y / h as f32)
+                    .fold(f32::INFINITY, f32::min);
+                assert!(
+                    top >= -vista::OVER_TOP,
+                    "desert {identity} at {w}x{h}: the land's top at {top}"
+                );
+            }
+            let tops = vista_tops(&rows, extent);
+            let plain = vista::fitted(aim, extent, (1920.0, 1080.0), &tops, 0.0);
+            looked_down += usize::from(plain.is_some_and(|shot| shot.cut));
+        }
+        assert!(
+            looked_down >= 6,
+            "{looked_down} of 12 aims cut the land off"
+        );
     }
 
     #[test]

@@ -59,6 +59,13 @@ const VISTA_TALLEST: f32 = 0.5;
 /// How far below the bottom the near edge falls, as a fraction of the
 /// height (two pixels at 1080 rows), so no row of sky shows under the sea.
 const BELOW: f32 = 2.0 / 1080.0;
+/// How far the land may rise out of the top of the frame, as a share of
+/// its height, and the shot not count as cut off there ([`Shot::cut`]): a
+/// peak's tip over the top is a near range looming; land that rises a
+/// tenth of the frame over it and more was, on the worlds' slides, one
+/// near face from edge to edge (seeds 70, 188, 253, 315, 345 and 353 rose
+/// 0.15-0.84 of the frame over it; the slides a peak's tip left, 0-0.08).
+pub(crate) const OVER_TOP: f32 = 0.1;
 /// Camera heights tried, in grid widths. Above the upper end a higher camera
 /// no longer widens the angle between the near and back edges.
 const HEIGHTS: (f32, f32) = (1e-3, 0.97);
@@ -77,6 +84,9 @@ pub(crate) struct Shot {
     /// How many times wider than high a unit is drawn across the frame
     /// (1 but in frames wider than [`ORDINARY`] whose land needs it).
     pub stretch: f32,
+    /// Whether the land still rises out of the top of the frame by more
+    /// than [`OVER_TOP`] (the vista accepts it, see [`fitted`]).
+    pub cut: bool,
 }
 
 impl Shot {
@@ -146,7 +156,8 @@ fn fitted_to_tops(aim: Aim, extent: f32, width: f32, height: f32, tops: &[Vec3])
     // the vista accepts (its near slope is not yet all there is to see) up
     // to a height of `VISTA_TALLEST`.
     let fits = clear(&lowered) >= -aim.room || tallest <= VISTA_TALLEST * extent;
-    fits.then_some(lowered)
+    let cut = clear(&lowered) + aim.room < -OVER_TOP;
+    fits.then_some(Shot { cut, ..lowered })
 }
 
 /// The vista for a grid `extent` units wide in a `width` x `height` frame,
@@ -171,6 +182,7 @@ fn frame(aim: Aim, extent: f32, width: f32, height: f32) -> Shot {
         camera: Camera::looking_back(eye, pitch, extent),
         focal: focal(standoff, eye_h, pitch, w),
         stretch: 1.0,
+        cut: false,
     }
 }
 
