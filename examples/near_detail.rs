@@ -52,9 +52,10 @@ fn main() {
     }
 }
 
+/// The size `WxH` names.
 fn size(text: &str) -> Size {
-    let (w, h) = text.split_once('x').expect("WxH");
-    Size::new(w.parse().expect("width"), h.parse().expect("height"))
+    let (w, h) = flags::size(text);
+    Size::new(w, h)
 }
 
 /// Mean |Laplacian| of the luminance (0..=1) over rows 55-95% of the

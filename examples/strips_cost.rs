@@ -34,10 +34,7 @@ fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     for pair in args.chunks(2) {
         match (pair[0].as_str(), pair.get(1)) {
-            ("--size", Some(v)) => {
-                let (w, h) = v.split_once('x').expect("--size WxH");
-                size = (w.parse().expect("width"), h.parse().expect("height"));
-            }
+            ("--size", Some(v)) => size = flags::size(v),
             ("--seeds", Some(v)) => seeds = flags::seeds(v),
             ("--rounds", Some(v)) => rounds = v.parse().expect("--rounds N"),
             ("--set", Some(v)) => flags::set(&mut prefs, v),

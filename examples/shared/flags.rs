@@ -1,7 +1,13 @@
-//! The flags the survey examples share (`--seeds A-B`, `--set KEY=VALUE`),
-//! read one way.
+//! The flags the survey examples share (`--size WxH`, `--seeds A-B`,
+//! `--set KEY=VALUE`), read one way.
 
 use mountains::settings::{Settings, load};
+
+/// The width and height of `--size WxH`.
+pub fn size(v: &str) -> (u32, u32) {
+    let (w, h) = v.split_once('x').expect("--size WxH");
+    (w.parse().expect("width"), h.parse().expect("height"))
+}
 
 /// The seeds of `--seeds A-B`, A to B inclusive.
 pub fn seeds(v: &str) -> Vec<u64> {
