@@ -62,18 +62,40 @@ impl Wine {
         self.server("-w");
     }
 
-    /// Runs Wine's `reg ARGS` in the prefix, which must succeed.
+    /// Runs Wine's `reg ARGS` in the prefix, which must succeed. It is tried
+    /// again after the prefix's Wine processes end: a `reg` started while a
+    /// killed program's wineserver is going down can lose its server.
     fn reg(&self, args: &[&str]) {
-        let status = Command::new(&self.loader)
+        let mut failures = Vec::new();
+        for _ in 0..3 {
+            match self.try_reg(args) {
+                Ok(()) => return,
+                Err(why) => failures.push(why),
+            }
+            self.stop_all();
+        }
+        panic!("wine reg {args:?} failed: {}", failures.join("; "));
+    }
+
+    /// One run of Wine's `reg ARGS`; the error holds its status and output.
+    fn try_reg(&self, args: &[&str]) -> Result<(), String> {
+        let out = Command::new(&self.loader)
             .arg("reg")
             .args(args)
             .envs(self.env())
             .env_remove("DISPLAY")
-            .stdout(Stdio::null())
-            .stderr(Stdio::null())
-            .status()
+            .stdin(Stdio::null())
+            .output()
             .expect("run Wine's reg");
-        assert!(status.success(), "wine reg {args:?} failed: {status}");
+        if out.status.success() {
+            return Ok(());
+        }
+        Err(format!(
+            "{} (stdout {:?}, stderr {:?})",
+            out.status,
+            String::from_utf8_lossy(&out.stdout).trim(),
+            String::from_utf8_lossy(&out.stderr).trim()
+        ))
     }
 
     /// Runs `wineserver FLAG` for the prefix (`-w` waits until it ends).
@@ -142,7 +164,13 @@ pub struct XineramaMonitors<'a>(&'a Wine);
 
 impl Drop for XineramaMonitors<'_> {
     fn drop(&mut self) {
-        self.0.reg(&["delete", X11_DRIVER, "/v", "UseXRandR", "/f"]);
+        // The test's programs end first, so that `reg` finds a settled
+        // wineserver; `Y` is Wine's own default, and unlike deleting the
+        // value, setting it cannot fail for want of it.
+        self.0.stop_all();
+        self.0
+            .reg(&["add", X11_DRIVER, "/v", "UseXRandR", "/d", "Y", "/f"]);
+        self.0.server("-w");
     }
 }
 
