@@ -160,6 +160,12 @@ pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
             Some(m) => m,
             None => continue,
         };
+        // `mountains render --help` asks about the program, as it would of
+        // most commands: it is answered, whatever mode came before.
+        if matches!(new_mode, Mode::Help | Mode::Version) {
+            p.inv.mode = new_mode;
+            return Ok(p.inv);
+        }
         mode = Some(match mode {
             None => (new_mode, arg),
             Some((old_mode, old)) => match (old_mode, new_mode) {

@@ -296,3 +296,16 @@ fn help_and_man_page_name_every_layer() {
         assert!(man.contains(name), "the man page lacks {name}");
     }
 }
+
+/// `--help` or `--version` after a mode (`mountains render --help`, as one
+/// asks most commands) answers it, even with the mode's own flags given;
+/// two modes are still refused.
+#[test]
+fn help_after_a_mode_is_answered() {
+    assert_eq!(mode(&["render", "--help"]), Mode::Help);
+    assert_eq!(mode(&["render", "-o", "x.png", "-h"]), Mode::Help);
+    assert_eq!(mode(&["heightmap", "--size", "9x9", "--help"]), Mode::Help);
+    assert_eq!(mode(&["/s", "--version"]), Mode::Version);
+    let e = parse(&["render", "/s"]).unwrap_err().0;
+    assert!(e.contains("choose one mode"), "{e}");
+}
