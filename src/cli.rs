@@ -284,6 +284,15 @@ impl Parser<'_> {
                 Some(v) => OsString::from(v),
                 None => p.value(arg)?,
             };
+            // `render -o --help` wrote a picture named `--help`: a flag
+            // where a file or key=value belongs is a slip, not a name
+            // (`-` alone is standard output).
+            if inline.is_none() && v.len() > 1 && v.to_string_lossy().starts_with('-') {
+                return Err(UsageError(format!(
+                    "{arg} needs a value, not the flag `{}` (a file whose name starts with `-`: write ./{0})",
+                    v.to_string_lossy()
+                )));
+            }
             if v.is_empty() {
                 return Err(UsageError(format!(
                     "{arg}: an empty value; give a file name"

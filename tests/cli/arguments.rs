@@ -309,3 +309,35 @@ fn help_after_a_mode_is_answered() {
     let e = parse(&["render", "/s"]).unwrap_err().0;
     assert!(e.contains("choose one mode"), "{e}");
 }
+
+/// A flag where a file or key=value belongs is refused, naming both: `render
+/// -o --help` wrote a picture named `--help`, and `--config --help` read
+/// a file of that name. A name that starts with a dash can still be given
+/// as `./-name` or `--output=-name`.
+#[test]
+fn a_flag_is_not_taken_as_a_flags_value() {
+    for args in [
+        &["render", "-o", "--help"][..],
+        &["--config", "--help"],
+        &["--open", "-x.png"],
+        &["--set", "--seed=3"],
+        &["render", "-o", "x.png", "--size", "-1920x1080"],
+    ] {
+        let e = parse(args).unwrap_err().0;
+        assert!(e.contains("needs a value, not the flag"), "{args:?}: {e}");
+        assert!(e.contains(args[args.len() - 2]), "{args:?}: {e}");
+    }
+    let inv = parse(&["render", "--output=-x.png"]).expect("an inline value");
+    assert_eq!(
+        inv.mode,
+        Mode::Render {
+            size: mountains::render::Size::new(1920, 1080),
+            output: "-x.png".into()
+        }
+    );
+    let inv = parse(&["--config", "./--help"]).expect("a dashed name as ./");
+    assert_eq!(
+        inv.config.as_deref(),
+        Some(std::path::Path::new("./--help"))
+    );
+}
