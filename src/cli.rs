@@ -5,7 +5,7 @@
 //! Our own flags are long (`--config`, `--set`); subcommands are words.
 
 use std::ffi::OsString;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use crate::render::Size;
 
@@ -481,7 +481,10 @@ fn is_word(s: &str) -> bool {
 }
 
 /// An argument nothing takes, with the flag or word nearest to it
-/// (`--colour`: `--color`), written with two dashes whatever was typed.
+/// (`--colour`: `--color`), written with two dashes whatever was typed;
+/// a mode word typed as a flag (`--render`: `render`), a flag typed as a
+/// word (`help`: `--help`), and a file name on its own (`render out.png`:
+/// `-o out.png`; a PNG that is there: `--open`) are offered as meant.
 fn unknown_argument(arg: &str) -> UsageError {
     let nearest = match arg.strip_prefix('-') {
         Some(flag) => {
@@ -490,8 +493,16 @@ fn unknown_argument(arg: &str) -> UsageError {
                 .iter()
                 .map(|f| f.to_string())
                 .chain(key_flags::names());
-            crate::spelling::nearest(&bare, names).map(|f| format!("--{f}"))
+            match WORDS.iter().find(|w| **w == bare) {
+                Some(word) => Some(word.to_string()),
+                None => crate::spelling::nearest(&bare, names).map(|f| format!("--{f}")),
+            }
         }
+        None if FLAGS.contains(&arg) => Some(format!("--{arg}")),
+        None if is_file_name(arg) => Some(match opens(arg) {
+            true => format!("--open {arg}"),
+            false => format!("-o {arg}"),
+        }),
         None => crate::spelling::nearest(arg, WORDS).map(str::to_string),
     };
     UsageError(format!(
@@ -499,6 +510,24 @@ fn unknown_argument(arg: &str) -> UsageError {
         crate::quote::clipped(arg),
         crate::spelling::offer(nearest.as_deref())
     ))
+}
+
+/// Whether `arg` names a file `-o` or `--open` takes (by its extension).
+fn is_file_name(arg: &str) -> bool {
+    let ext = Path::new(arg)
+        .extension()
+        .map(|e| e.to_string_lossy().to_ascii_lowercase());
+    let known = output::PICTURES.iter().chain(output::DATA_SETS);
+    ext.is_some_and(|ext| known.map(|(e, _)| *e).any(|e| e == ext))
+}
+
+/// Whether `arg` is a PNG that is there, as `--open` reads.
+fn opens(arg: &str) -> bool {
+    let path = Path::new(arg);
+    let png = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("png"));
+    png && path.is_file()
 }
 
 /// `--layer NAME`: one of [`Layer::NAMES`], or a message listing them.

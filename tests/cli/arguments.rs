@@ -1,7 +1,7 @@
 //! The command line: both screensaver protocols and our own flags.
 
 use std::ffi::OsString;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use mountains::cli::{self, Mode};
 use mountains::render::Size;
@@ -331,7 +331,7 @@ fn a_flag_is_not_taken_as_a_flags_value() {
     assert_eq!(
         inv.mode,
         Mode::Render {
-            size: mountains::render::Size::new(1920, 1080),
+            size: Size::new(1920, 1080),
             output: "-x.png".into()
         }
     );
@@ -340,4 +340,38 @@ fn a_flag_is_not_taken_as_a_flags_value() {
         inv.config.as_deref(),
         Some(std::path::Path::new("./--help"))
     );
+}
+
+/// What a newcomer types for a mode, a flag or a file is offered as the
+/// program takes it: `--render` as `render`, `help` as `--help`, a lone
+/// file name as `-o` (a PNG that is there as `--open`).
+#[test]
+fn a_mode_flag_or_file_typed_the_other_way_is_offered_as_meant() {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cli-offers");
+    std::fs::create_dir_all(&dir).unwrap();
+    let there = dir.join("there.png");
+    std::fs::write(&there, b"not read here").unwrap();
+    let there = there.to_str().unwrap();
+    let missing = dir.join("missing.png");
+    let missing = missing.to_str().unwrap();
+    let open = format!("`--open {there}`");
+    let output = format!("`-o {missing}`");
+    for (args, offered) in [
+        (&["--render", "-o", "x.png"][..], "`render`"),
+        (&["-heightmap"], "`heightmap`"),
+        (&["help"], "`--help`"),
+        (&["version"], "`--version`"),
+        (&["root"], "`--root`"),
+        (&["render", "out.jpg"], "`-o out.jpg`"),
+        (&["heightmap", "out.r16"], "`-o out.r16`"),
+        (&["render", missing], output.as_str()),
+        (&["render", there], open.as_str()),
+        (&["--colour", "red"], "`--color`"),
+    ] {
+        let e = parse(args).unwrap_err().0;
+        assert!(
+            e.contains(&format!("did you mean {offered}?")),
+            "{args:?}: {e}"
+        );
+    }
 }
