@@ -30,15 +30,20 @@ const MAX_POLLS: u32 = 600;
 /// (or skips it if asked to: see common/tools.rs).
 fn start_display() -> Option<Xvfb> {
     let x = Xvfb::start(2560, 1600, &["-ardelay", "60000"])?;
+    has_xdotool().then_some(x)
+}
+
+/// Whether xdotool runs; if not, the test fails (or skips if asked to).
+fn has_xdotool() -> bool {
     if Command::new("xdotool").arg("version").output().is_err() {
         tools::missing(
             "xdotool is not installed",
             "apt-get install xdotool",
             "MOUNTAINS_REQUIRE_DISPLAY",
         );
-        return None;
+        return false;
     }
-    Some(x)
+    true
 }
 
 /// Runs xdotool against the test's display and returns what it printed.
@@ -559,6 +564,9 @@ struct LoneServer {
 
 impl LoneServer {
     fn start() -> Option<LoneServer> {
+        if !has_xdotool() {
+            return None;
+        }
         let spawned = Command::new("Xvfb")
             .args(["-terminate", "-nolisten", "tcp", "-displayfd", "1"])
             .args(["-screen", "0", "1280x800x24"])
