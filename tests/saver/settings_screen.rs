@@ -76,6 +76,11 @@ impl Drop for App {
 
 impl App {
     fn start(x: &Xvfb, config: &Path, home: &Path, scale: u32) -> App {
+        App::start_on(x.display(), config, home, scale)
+    }
+
+    /// [`App::start`] on `display`.
+    fn start_on(display: &str, config: &Path, home: &Path, scale: u32) -> App {
         let stderr_path = home.join("stderr.txt");
         let stderr = std::fs::File::create(&stderr_path).unwrap();
         let mut command = Command::new(env!("CARGO_BIN_EXE_mountains"));
@@ -83,7 +88,7 @@ impl App {
             .arg("--settings")
             .arg("--config")
             .arg(config)
-            .env("DISPLAY", x.display())
+            .env("DISPLAY", display)
             .env("HOME", home)
             .env("WINIT_X11_SCALE_FACTOR", scale.to_string())
             .env_remove("XDG_CONFIG_HOME")
@@ -175,12 +180,17 @@ const COMMENTED: &str = "# my mountains\n\n# sharp ones\ncragginess = 40   # kee
                          color = \"sonar\"\nmystery = \"unknown key\"\n";
 
 fn press(x: &Xvfb, window: u32, keys: &[&str]) {
+    press_on(x.display(), window, keys);
+}
+
+/// [`press`] on `display`.
+fn press_on(display: &str, window: u32, keys: &[&str]) {
     let id = window.to_string();
     // No window manager runs under Xvfb: give the window the focus ourselves.
-    xdotool(x, &["windowfocus", "--sync", &id]);
+    xdotool_on(display, &["windowfocus", "--sync", &id]);
     let mut args = vec!["key", "--delay", "80"];
     args.extend_from_slice(keys);
-    xdotool(x, &args);
+    xdotool_on(display, &args);
 }
 
 /// Waits until the window shows the dialog grey at `(x, y)`: drawn.
@@ -611,30 +621,12 @@ fn display_the_settings_open_on_a_server_with_no_other_client() {
     let home = scratch("lone-server");
     let config = home.join("mountains.toml");
     std::fs::write(&config, COMMENTED).unwrap();
-    let stderr_path = home.join("stderr.txt");
-    let mut command = Command::new(env!("CARGO_BIN_EXE_mountains"));
-    let child = xvfb::signals::as_from_a_terminal(&mut command)
-        .args(["--settings", "--config"])
-        .arg(&config)
-        .env("DISPLAY", &server.display)
-        .env("HOME", &home)
-        .env_remove("WAYLAND_DISPLAY")
-        .env_remove("XDG_CONFIG_HOME")
-        .env_remove("XDG_DATA_HOME")
-        .stdout(Stdio::null())
-        .stderr(std::fs::File::create(&stderr_path).unwrap())
-        .spawn()
-        .expect("the binary starts");
-    let mut app = App { child, stderr_path };
+    let mut app = App::start_on(&server.display, &config, &home, 1);
     // xdotool's connections, coming and going, would end the server if
     // they came before the settings held one of their own.
     app.wait_connected();
     let window = app.window_on(&server.display);
-    xdotool_on(
-        &server.display,
-        &["windowfocus", "--sync", &window.to_string()],
-    );
-    xdotool_on(&server.display, &["key", "Escape"]);
+    press_on(&server.display, window, &["Escape"]);
     let status = app.wait_exit();
     assert!(status.success(), "{status}: {}", app.stderr());
     assert_eq!(std::fs::read(&config).unwrap(), COMMENTED.as_bytes());
