@@ -46,8 +46,8 @@ pub use watch::start as watch_power_and_display;
 #[cfg(windows_platform)]
 pub use win32::host::Host;
 pub use window::{
-    FULLSCREEN_TAPS_ALT, ScreenCheck, choose_backend, event_loop_failed, keep_covering, on_head,
-    refusal, report_when_the_server_goes, settings_attributes, use_backend,
+    FULLSCREEN_TAPS_ALT, choose_backend, event_loop_failed, keep_covering, on_head, refusal,
+    report_when_the_server_goes, settings_attributes, use_backend,
 };
 #[cfg(x11_platform)]
 pub use x11::host::Host;

@@ -115,37 +115,15 @@ pub fn settings_attributes(
     }
 }
 
-/// What `backend`'s screen says before a window opens there ([`refusal`]).
-/// Hold it until the event loop is built: on X it keeps the connection
-/// that asked, because a server whose last client leaves resets and
-/// refuses a connection made meanwhile (the settings screen, whose check
-/// was the only client of a bare Xvfb, failed to open about one time in
-/// seven with "Failed to open connection to X server").
-pub struct ScreenCheck {
-    /// Why nothing can be drawn there (an X screen of 8-bit visuals only).
-    pub refusal: Option<String>,
+/// Why nothing can be drawn on `backend`'s screen (an X screen of 8-bit
+/// visuals only), before a window opens there.
+pub fn refusal(backend: Backend) -> Option<String> {
     #[cfg(x11_platform)]
-    _asked: Option<x11rb::rust_connection::RustConnection>,
-}
-
-/// Asks `backend`'s screen whether anything can be drawn on it.
-pub fn refusal(backend: Backend) -> ScreenCheck {
-    #[cfg(x11_platform)]
-    {
-        let (refusal, asked) = match backend {
-            Backend::X11 => super::x11::visual::refusal(),
-            _ => (None, None),
-        };
-        ScreenCheck {
-            refusal,
-            _asked: asked,
-        }
+    if backend == Backend::X11 {
+        return super::x11::visual::refusal();
     }
-    #[cfg(not(x11_platform))]
-    {
-        let _ = backend;
-        ScreenCheck { refusal: None }
-    }
+    let _ = backend;
+    None
 }
 
 /// Full-screen attributes covering `head` (on `monitor`, where winit

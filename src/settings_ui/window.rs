@@ -42,10 +42,6 @@ struct App {
 /// `platform::choose_backend`) and runs it until OK or Cancel. `parent`
 /// is the window that owns the dialog on Windows (`/c:<HWND>`).
 pub fn run(make: MakeScreen, parent: Option<u64>, backend: Backend) -> Result<(), String> {
-    let check = platform::refusal(backend);
-    if let Some(why) = &check.refusal {
-        return Err(why.clone());
-    }
     let mut builder = EventLoop::<Terminate>::with_user_event();
     platform::use_backend(&mut builder, backend, None);
     // Why it could not start in the saver's words: which display was
@@ -53,7 +49,12 @@ pub fn run(make: MakeScreen, parent: Option<u64>, backend: Backend) -> Result<()
     let event_loop = builder
         .build()
         .map_err(|e| platform::event_loop_failed(&e.to_string(), backend).to_string())?;
-    drop(check);
+    // Asked once winit holds its connection: on an X server with no other
+    // client, the check's own connection closing first reset the server
+    // and winit's was refused (docs/platform-notes.md).
+    if let Some(why) = platform::refusal(backend) {
+        return Err(why);
+    }
     // SIGTERM, SIGINT, SIGHUP: close as Cancel does (nothing written), exit 0.
     let proxy = event_loop.create_proxy();
     crate::platform::signals::on_terminate(move || {

@@ -23,14 +23,11 @@ pub fn drawable_visual() -> Option<u32> {
     drawable_visual_on(&conn, screen)
 }
 
-/// [`screen_refusal`] for `$DISPLAY`'s screen (`None` when the server
-/// cannot be reached: opening the window then says why), and the
-/// connection that asked, for the caller to hold (`platform::ScreenCheck`).
-pub fn refusal() -> (Option<String>, Option<RustConnection>) {
-    match RustConnection::connect(None) {
-        Ok((conn, screen)) => (screen_refusal(conn.setup(), screen), Some(conn)),
-        Err(_) => (None, None),
-    }
+/// [`screen_refusal`] for `$DISPLAY`'s screen; `None` when the server
+/// cannot be reached (opening the window then says why).
+pub fn refusal() -> Option<String> {
+    let (conn, screen) = RustConnection::connect(None).ok()?;
+    screen_refusal(conn.setup(), screen)
 }
 
 /// [`drawable_visual`] on screen `screen` of a connection already open.
