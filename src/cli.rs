@@ -279,7 +279,7 @@ impl Parser<'_> {
             _ => (flag, None),
         };
         // A value as typed, named by the flag as typed (`--output`, not `-o`).
-        let take = |p: &mut Self, _name: &str| -> Result<OsString, UsageError> {
+        let take = |p: &mut Self, long: &str| -> Result<OsString, UsageError> {
             let v = match &inline {
                 Some(v) => OsString::from(v),
                 None => p.value(arg)?,
@@ -289,7 +289,7 @@ impl Parser<'_> {
             // (`-` alone is standard output).
             if inline.is_none() && v.len() > 1 && v.to_string_lossy().starts_with('-') {
                 return Err(UsageError(format!(
-                    "{arg} needs a value, not the flag `{}` (a file whose name starts with `-`: write ./{0})",
+                    "{arg} needs a value, not the flag `{}` (a value that starts with `-`: write {long}={0})",
                     v.to_string_lossy()
                 )));
             }
@@ -314,7 +314,7 @@ impl Parser<'_> {
                     .sets
                     .push((k.trim().to_string(), v.trim().to_string()));
             }
-            "-o" | "--output" => *output = Some(take(self, "-o")?.into()),
+            "-o" | "--output" => *output = Some(take(self, "--output")?.into()),
             "--size" => *size = Some(parse_size(&take(self, "--size")?.to_string_lossy())?),
             "--root" => return Ok(Some(Mode::XRoot)),
             "--window" => return Ok(Some(Mode::Window)),
@@ -493,9 +493,9 @@ fn unknown_argument(arg: &str) -> UsageError {
                 .iter()
                 .map(|f| f.to_string())
                 .chain(key_flags::names());
-            match WORDS.iter().find(|w| **w == bare) {
-                Some(word) => Some(word.to_string()),
-                None => crate::spelling::nearest(&bare, names).map(|f| format!("--{f}")),
+            match is_word(&bare) {
+                true => Some(bare),
+                false => crate::spelling::nearest(&bare, names).map(|f| format!("--{f}")),
             }
         }
         None if FLAGS.contains(&arg) => Some(format!("--{arg}")),

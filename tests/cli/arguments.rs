@@ -312,8 +312,8 @@ fn help_after_a_mode_is_answered() {
 
 /// A flag where a file or key=value belongs is refused, naming both: `render
 /// -o --help` wrote a picture named `--help`, and `--config --help` read
-/// a file of that name. A name that starts with a dash can still be given
-/// as `./-name` or `--output=-name`.
+/// a file of that name. A value that starts with a dash can still be given
+/// as `--output=-name` (as the message says) or `./-name`.
 #[test]
 fn a_flag_is_not_taken_as_a_flags_value() {
     for args in [
@@ -326,6 +326,10 @@ fn a_flag_is_not_taken_as_a_flags_value() {
         let e = parse(args).unwrap_err().0;
         assert!(e.contains("needs a value, not the flag"), "{args:?}: {e}");
         assert!(e.contains(args[args.len() - 2]), "{args:?}: {e}");
+        assert!(
+            e.contains(&format!("={}", args[args.len() - 1])),
+            "{args:?}: {e}"
+        );
     }
     let inv = parse(&["render", "--output=-x.png"]).expect("an inline value");
     assert_eq!(
@@ -336,10 +340,7 @@ fn a_flag_is_not_taken_as_a_flags_value() {
         }
     );
     let inv = parse(&["--config", "./--help"]).expect("a dashed name as ./");
-    assert_eq!(
-        inv.config.as_deref(),
-        Some(std::path::Path::new("./--help"))
-    );
+    assert_eq!(inv.config.as_deref(), Some(Path::new("./--help")));
 }
 
 /// What a newcomer types for a mode, a flag or a file is offered as the
