@@ -170,7 +170,6 @@ impl Drop for XineramaMonitors<'_> {
         self.0.stop_all();
         self.0
             .reg(&["add", X11_DRIVER, "/v", "UseXRandR", "/d", "Y", "/f"]);
-        self.0.server("-w");
     }
 }
 

@@ -82,36 +82,9 @@ impl Xvfb {
     /// ARGS` (on `host`'s display, if any) and connects to it. Without the
     /// program the test fails, or skips if asked to (see common/tools.rs).
     fn serve(program: &str, args: &[&str], host: Option<Xvfb>, install: &str) -> Option<Xvfb> {
-        let mut command = Command::new(program);
-        command
-            .args(["-noreset", "-nolisten", "tcp", "-displayfd", "1"])
-            .args(args)
-            .stdout(Stdio::piped())
-            .stderr(Stdio::null());
-        if let Some(host) = &host {
-            command.env("DISPLAY", host.display());
-        }
-        let mut child = match command.spawn() {
-            Ok(c) => c,
-            Err(e) => {
-                let what = format!("{program} cannot start ({e})");
-                super::tools::missing(&what, install, "MOUNTAINS_REQUIRE_DISPLAY");
-                return None;
-            }
-        };
-        let mut line = String::new();
-        let stdout = child.stdout.take().expect("X server stdout");
-        BufReader::new(stdout)
-            .read_line(&mut line)
-            .expect("X server display number");
-        let number: u32 = match line.trim().parse() {
-            Ok(n) => n,
-            Err(_) => {
-                let _ = child.kill();
-                panic!("{program} did not report a display number: {line:?}");
-            }
-        };
-        let display = format!(":{number}");
+        let mut all = vec!["-noreset"];
+        all.extend_from_slice(args);
+        let (child, display) = launch(program, &all, host.as_ref(), install)?;
         let (conn, screen_num) = RustConnection::connect(Some(&display)).expect("connect to X");
         let screen = &conn.setup().roots[screen_num];
         let (root, size) = (
@@ -459,6 +432,74 @@ fn extra_depth(extra: &[&str]) -> Option<u8> {
 }
 
 impl Drop for Xvfb {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+/// Starts the X server `program -nolisten tcp -displayfd 1 ARGS` (on
+/// `host`'s display, if any): the server and its `DISPLAY`. Without the
+/// program the test fails, or skips if asked to (see common/tools.rs).
+fn launch(
+    program: &str,
+    args: &[&str],
+    host: Option<&Xvfb>,
+    install: &str,
+) -> Option<(Child, String)> {
+    let mut command = Command::new(program);
+    command
+        .args(["-nolisten", "tcp", "-displayfd", "1"])
+        .args(args)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null());
+    if let Some(host) = host {
+        command.env("DISPLAY", host.display());
+    }
+    let mut child = match command.spawn() {
+        Ok(c) => c,
+        Err(e) => {
+            let what = format!("{program} cannot start ({e})");
+            super::tools::missing(&what, install, "MOUNTAINS_REQUIRE_DISPLAY");
+            return None;
+        }
+    };
+    let mut line = String::new();
+    let stdout = child.stdout.take().expect("X server stdout");
+    BufReader::new(stdout)
+        .read_line(&mut line)
+        .expect("X server display number");
+    let number: u32 = match line.trim().parse() {
+        Ok(n) => n,
+        Err(_) => {
+            let _ = child.kill();
+            panic!("{program} did not report a display number: {line:?}");
+        }
+    };
+    Some((child, format!(":{number}")))
+}
+
+/// An Xvfb the test holds no connection to, which ends when its last
+/// client leaves (`-terminate`) where a default server resets and refuses
+/// a connection made meanwhile: a person's `xinit mountains`, or a kiosk,
+/// where the program is the only client. Killed on drop.
+pub struct LoneServer {
+    child: Child,
+    /// Its `DISPLAY` value.
+    pub display: String,
+}
+
+impl LoneServer {
+    /// Starts `Xvfb -terminate` with one `width` x `height` x 24 screen.
+    pub fn start(width: u16, height: u16) -> Option<LoneServer> {
+        let screen = format!("{width}x{height}x24");
+        let args = ["-terminate", "-screen", "0", &screen];
+        let (child, display) = launch("Xvfb", &args, None, "apt-get install xvfb")?;
+        Some(LoneServer { child, display })
+    }
+}
+
+impl Drop for LoneServer {
     fn drop(&mut self) {
         let _ = self.child.kill();
         let _ = self.child.wait();

@@ -563,59 +563,18 @@ fn display_the_last_row_and_its_help_show_at_the_default_and_the_smallest_size()
     assert_eq!(std::fs::read(&config).unwrap(), COMMENTED.as_bytes());
 }
 
-/// An X server the test holds no connection to, which ends when its last
-/// client leaves (`-terminate`) where a default server resets, refusing a
-/// connection made meanwhile: a person's `xinit mountains --settings`, or
-/// a kiosk, where the program is the only client.
-struct LoneServer {
-    child: Child,
-    display: String,
-}
-
-impl LoneServer {
-    fn start() -> Option<LoneServer> {
-        if !has_xdotool() {
-            return None;
-        }
-        let spawned = Command::new("Xvfb")
-            .args(["-terminate", "-nolisten", "tcp", "-displayfd", "1"])
-            .args(["-screen", "0", "1280x800x24"])
-            .stdout(Stdio::piped())
-            .stderr(Stdio::null())
-            .spawn();
-        let mut child = match spawned {
-            Ok(child) => child,
-            Err(e) => {
-                let what = format!("Xvfb cannot start ({e})");
-                tools::missing(&what, "apt-get install xvfb", "MOUNTAINS_REQUIRE_DISPLAY");
-                return None;
-            }
-        };
-        let mut line = String::new();
-        let stdout = child.stdout.take().expect("Xvfb's stdout");
-        std::io::BufRead::read_line(&mut std::io::BufReader::new(stdout), &mut line)
-            .expect("Xvfb's display number");
-        let display = format!(":{}", line.trim());
-        Some(LoneServer { child, display })
-    }
-}
-
-impl Drop for LoneServer {
-    fn drop(&mut self) {
-        let _ = self.child.kill();
-        let _ = self.child.wait();
-    }
-}
-
 /// The settings open on an X server with no other client. The check for
 /// a drawable screen (`platform::refusal`) was its only client, and closed
 /// before winit opened its own connection: on this server the window
 /// never opened, and on a resetting Xvfb about one time in seven ("Failed
-/// to open connection to X server"). Now the check is held until the
-/// event loop has connected.
+/// to open connection to X server"). Now the check comes after winit has
+/// connected.
 #[test]
 fn display_the_settings_open_on_a_server_with_no_other_client() {
-    let Some(server) = LoneServer::start() else {
+    if !has_xdotool() {
+        return;
+    }
+    let Some(server) = xvfb::LoneServer::start(1280, 800) else {
         return;
     };
     let home = scratch("lone-server");
