@@ -8,6 +8,7 @@ use std::ffi::OsString;
 use std::path::{Path, PathBuf};
 
 use crate::render::Size;
+use crate::terrain::heightmap::RAW_EXTENSIONS;
 
 pub mod key_flags;
 pub mod output;
@@ -521,13 +522,15 @@ fn is_file_name(arg: &str) -> bool {
     ext.is_some_and(|ext| known.map(|(e, _)| *e).any(|e| e == ext))
 }
 
-/// Whether `arg` is a PNG that is there, as `--open` reads.
+/// Whether `arg` is a data set that is there, as `--open` reads: a PNG
+/// or raw samples.
 fn opens(arg: &str) -> bool {
     let path = Path::new(arg);
-    let png = path
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("png"));
-    png && path.is_file()
+    let readable = path.extension().is_some_and(|e| {
+        let e = e.to_string_lossy();
+        e.eq_ignore_ascii_case("png") || RAW_EXTENSIONS.iter().any(|r| e.eq_ignore_ascii_case(r))
+    });
+    readable && path.is_file()
 }
 
 /// `--layer NAME`: one of [`Layer::NAMES`], or a message listing them.

@@ -5,6 +5,7 @@
 use std::path::Path;
 
 use super::UsageError;
+use crate::terrain::heightmap::RAW_EXTENSIONS;
 
 /// A file type `-o` can write.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -27,8 +28,8 @@ pub const PICTURES: &[(&str, Format)] = &[
 /// Extensions and formats `heightmap -o` writes.
 pub const DATA_SETS: &[(&str, Format)] = &[
     ("png", Format::Png),
-    ("r16", Format::Raw16),
-    ("raw", Format::Raw16),
+    (RAW_EXTENSIONS[0], Format::Raw16),
+    (RAW_EXTENSIONS[1], Format::Raw16),
 ];
 
 /// The format `path`'s extension names among `allowed` (no extension: PNG).

@@ -51,7 +51,7 @@ mountains \- fractal mountains drawn strip by strip, as a slide show
 .B mountains
 [\-root | \-window\-id \fIid\fP | \-\-window | \-\-layer \fIlayer\fP | /s | /p [\fIhwnd\fP] | \-\-settings]
 [\-\-config \fIfile\fP] [\-\-set \fIkey\fP=\fIvalue\fP] [\-\fIkey\fP \fIvalue\fP]
-[\-\-open \fIfile.png\fP] [\-fps] [\-delay \fIusecs\fP] [\-display \fIhost:display.screen\fP]
+[\-\-open \fIfile\fP] [\-fps] [\-delay \fIusecs\fP] [\-display \fIhost:display.screen\fP]
 .br
 .B mountains render \-o
 .I out.png

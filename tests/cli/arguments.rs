@@ -357,6 +357,10 @@ fn a_mode_flag_or_file_typed_the_other_way_is_offered_as_meant() {
     let missing = missing.to_str().unwrap();
     let open = format!("`--open {there}`");
     let output = format!("`-o {missing}`");
+    let raw = dir.join("there.r16");
+    std::fs::write(&raw, b"not read here").unwrap();
+    let raw = raw.to_str().unwrap();
+    let open_raw = format!("`--open {raw}`");
     for (args, offered) in [
         (&["--render", "-o", "x.png"][..], "`render`"),
         (&["-heightmap"], "`heightmap`"),
@@ -367,6 +371,7 @@ fn a_mode_flag_or_file_typed_the_other_way_is_offered_as_meant() {
         (&["heightmap", "out.r16"], "`-o out.r16`"),
         (&["render", missing], output.as_str()),
         (&["render", there], open.as_str()),
+        (&["render", raw], open_raw.as_str()),
         (&["--colour", "red"], "`--color`"),
     ] {
         let e = parse(args).unwrap_err().0;

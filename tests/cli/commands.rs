@@ -389,6 +389,75 @@ fn render_open_draws_a_saved_data_set() {
     assert!(stderr(&o).contains("missing.png"), "{}", stderr(&o));
 }
 
+/// A raw data set (`-o NAME.r16`, as terrain tools import and export)
+/// opens again: saved raw once more it gives the same bytes (the same
+/// samples, rows and byte order), and it draws. A raw file whose length
+/// is no square of samples is refused, naming the file and its length.
+#[test]
+fn a_raw_data_set_opens_and_saves_back_the_same() {
+    let dir = scratch("open-raw");
+    let [a, b, picture, bad] = ["a.r16", "b.RAW", "p.png", "bad.r16"].map(|f| dir.join(f));
+    let arg = |p: &Path| p.to_str().unwrap().to_string();
+    let run = |args: &[&str]| {
+        let o = mountains(args);
+        assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+        o
+    };
+    run(&[
+        "heightmap",
+        "--set",
+        "detail=5",
+        "--set",
+        "seed=3",
+        "-o",
+        &arg(&a),
+    ]);
+    let o = run(&["heightmap", "--open", &arg(&a), "-o", &arg(&b)]);
+    assert!(
+        stderr(&o).contains("a 33x33 square, little-endian"),
+        "{}",
+        stderr(&o)
+    );
+    let (saved, again) = (std::fs::read(&a).unwrap(), std::fs::read(&b).unwrap());
+    assert_eq!(saved.len(), 33 * 33 * 2);
+    assert!(saved == again, "the raw data set came back changed");
+    run(&[
+        "render",
+        "--size",
+        "80x60",
+        "--open",
+        &arg(&a),
+        "-o",
+        &arg(&picture),
+    ]);
+    assert_eq!(png_size(&picture), (80, 60));
+    // A PNG data set named as raw is read as the PNG it is.
+    let png = dir.join("h.png");
+    run(&[
+        "heightmap",
+        "--set",
+        "detail=5",
+        "--set",
+        "seed=3",
+        "-o",
+        &arg(&png),
+    ]);
+    std::fs::copy(&png, &bad).unwrap();
+    run(&["heightmap", "--open", &arg(&bad), "-o", &arg(&b)]);
+    assert!(
+        std::fs::read(&b).unwrap() == saved,
+        "a PNG named .r16 read as raw"
+    );
+    std::fs::write(&bad, &saved[..1000]).unwrap();
+    let o = mountains(&["render", "--open", &arg(&bad), "-o", &arg(&picture)]);
+    assert_eq!(o.status.code(), Some(1));
+    let err = stderr(&o);
+    assert!(
+        err.contains("bad.r16") && err.contains("is 1000 bytes"),
+        "{err}"
+    );
+}
+
 /// `--open` draws a data set under the look its file recorded (and the
 /// height): the picture the same file makes with those keys given on the
 /// command line, and, but for the 16-bit heights' rounding, the picture

@@ -85,17 +85,28 @@ pub fn read<R: BufRead + Seek>(
     })
 }
 
-/// Reads the first 8 bytes, names what is not a PNG, and rewinds.
-fn check_signature<R: Read + Seek>(input: &mut R, path: &Path) -> Result<(), HeightmapError> {
-    let io =
-        |e: io::Error| HeightmapError::new(path, ErrorKind::Io, format!("cannot be read: {e}"));
+/// Whether `input` starts with the PNG signature; rewinds.
+pub(super) fn starts_as_png<R: Read + Seek>(input: &mut R) -> io::Result<bool> {
+    Ok(head(input)? == SIGNATURE)
+}
+
+/// The first bytes of `input`, as many as the signature's (fewer if it is
+/// shorter); rewinds.
+fn head<R: Read + Seek>(input: &mut R) -> io::Result<Vec<u8>> {
     let mut head = Vec::with_capacity(SIGNATURE.len());
     input
         .by_ref()
         .take(SIGNATURE.len() as u64)
-        .read_to_end(&mut head)
-        .map_err(io)?;
-    input.seek(SeekFrom::Start(0)).map_err(io)?;
+        .read_to_end(&mut head)?;
+    input.seek(SeekFrom::Start(0))?;
+    Ok(head)
+}
+
+/// Reads the first 8 bytes, names what is not a PNG, and rewinds.
+fn check_signature<R: Read + Seek>(input: &mut R, path: &Path) -> Result<(), HeightmapError> {
+    let io =
+        |e: io::Error| HeightmapError::new(path, ErrorKind::Io, format!("cannot be read: {e}"));
+    let head = head(input).map_err(io)?;
     if head == SIGNATURE {
         return Ok(());
     }

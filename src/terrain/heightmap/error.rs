@@ -11,6 +11,9 @@ pub enum ErrorKind {
     Io,
     /// The bytes do not start with the PNG signature.
     NotPng,
+    /// A raw heightmap (`.r16`, `.raw`) whose length is no square of
+    /// 16-bit samples.
+    NotRaw,
     /// The file ends before the image is complete.
     Truncated,
     /// The PNG structure is broken (bad CRC, bad chunk, bad compressed data).

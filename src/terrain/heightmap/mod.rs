@@ -8,7 +8,7 @@
 //! the first quantisation the round trip is exact (see [`quantise`]).
 //!
 //! **Loading** takes any 8- or 16-bit grayscale PNG, ours or a terrain
-//! tool's, fits it to a `2^n + 1` grid (see [`fit`] for the exact method:
+//! tool's, or raw 16-bit samples (see [`raw`]), fits it to a `2^n + 1` grid (see [`fit`] for the exact method:
 //! central square crop, `2^n` sides extended by one, others resampled to the
 //! nearest `2^n + 1` up to 4097) and fills in what its metadata lacks:
 //! - no `mountains:scale`: the relief (highest - lowest sample) becomes
@@ -33,6 +33,7 @@ mod error;
 pub mod fit;
 pub mod meta;
 pub mod quantise;
+mod raw;
 pub mod soften;
 
 use std::path::Path;
@@ -42,6 +43,7 @@ pub use encode::encode;
 pub use error::{ErrorKind, HeightmapError};
 pub use fit::{Fit, FitMethod};
 pub use meta::GeneratorParams;
+pub use raw::RAW_EXTENSIONS;
 
 use super::Heightfield;
 use super::heightfield::MAX_DRAWN_RELIEF;
@@ -114,7 +116,8 @@ pub fn save(
 /// terrain tool's.
 pub const MAX_FILE_BYTES: u64 = 256 << 20;
 
-/// Loads an 8- or 16-bit grayscale PNG heightmap, ours or a terrain tool's.
+/// Loads an 8- or 16-bit grayscale PNG heightmap, ours or a terrain tool's,
+/// or raw 16-bit samples (a `.r16` or `.raw` file that is not a PNG).
 ///
 /// Only a regular file is read (a FIFO would block): see `fsutil::open_regular`.
 /// The file is streamed: memory is the fitted grid, never the whole image.
@@ -124,7 +127,15 @@ pub fn load(path: &Path) -> Result<DataSet, HeightmapError> {
     };
     let file = crate::fsutil::open_regular(path, MAX_FILE_BYTES).map_err(io)?;
     let len = file.metadata().map_err(io)?.len();
-    let raw = decode::read(std::io::BufReader::new(file), len, path)?;
+    let mut input = std::io::BufReader::new(file);
+    if raw::is_raw(path) && !decode::starts_as_png(&mut input).map_err(io)? {
+        let grid = raw::read(input, len, path)?;
+        let side = grid.fit.source_width;
+        let mut data = finish(grid, path)?;
+        data.notes.insert(0, raw::note(side));
+        return Ok(data);
+    }
+    let raw = decode::read(input, len, path)?;
     finish(raw, path)
 }
 
