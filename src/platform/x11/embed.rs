@@ -74,15 +74,27 @@ pub fn parse_window_id(text: &str) -> Option<u32> {
 
 /// The window `--root` draws on: `$XSCREENSAVER_WINDOW`, else the root window.
 fn root_target(conn: &RustConnection, screen: usize) -> u32 {
-    if let Ok(text) = std::env::var("XSCREENSAVER_WINDOW") {
-        match parse_window_id(&text) {
-            Some(id) => return id,
-            None => crate::log::warn(&format!(
-                "XSCREENSAVER_WINDOW={text:?} is not a window id; drawing on the root window"
-            )),
+    let named = std::env::var("XSCREENSAVER_WINDOW").ok();
+    match named_window(named.as_deref()) {
+        Ok(Some(id)) => id,
+        Ok(None) => conn.setup().roots[screen].root,
+        Err(why) => {
+            crate::log::warn(&why);
+            conn.setup().roots[screen].root
         }
     }
-    conn.setup().roots[screen].root
+}
+
+/// The window `$XSCREENSAVER_WINDOW` (`var`) names: `None` unset or
+/// empty (as a shell's `XSCREENSAVER_WINDOW= mountains --root` leaves
+/// it: the root window, as unset), or why its text is no window id.
+fn named_window(var: Option<&str>) -> Result<Option<u32>, String> {
+    match var.filter(|text| !text.trim().is_empty()) {
+        None => Ok(None),
+        Some(text) => parse_window_id(text).map(Some).ok_or_else(|| {
+            format!("XSCREENSAVER_WINDOW={text:?} is not a window id; drawing on the root window")
+        }),
+    }
 }
 
 /// Draws the slide show into `window` (`None`: `--root`) until the window is
@@ -287,6 +299,16 @@ impl Embedded {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn an_empty_xscreensaver_window_is_unset_and_a_wrong_one_is_named() {
+        assert_eq!(named_window(None), Ok(None));
+        assert_eq!(named_window(Some("")), Ok(None));
+        assert_eq!(named_window(Some("  ")), Ok(None));
+        assert_eq!(named_window(Some("0x2a")), Ok(Some(42)));
+        let why = named_window(Some("window")).unwrap_err();
+        assert!(why.contains("\"window\" is not a window id"), "{why}");
+    }
 
     #[test]
     fn window_ids_parse_in_hex_and_decimal() {
