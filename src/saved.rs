@@ -84,9 +84,10 @@ pub fn folders(data_dir: Option<&Path>, heightmaps_dir: Option<&str>) -> Vec<Pat
     out
 }
 
-/// The `.png` files directly in `folders`, sorted by name within each
-/// folder. Folders that cannot be read are skipped.
-pub fn list_pngs(folders: &[PathBuf]) -> Vec<PathBuf> {
+/// The data sets (`.png`, and raw `.r16` and `.raw`) directly in
+/// `folders`, sorted by name within each folder. Folders that cannot be
+/// read are skipped.
+pub fn list_data_sets(folders: &[PathBuf]) -> Vec<PathBuf> {
     let mut all = Vec::new();
     for dir in folders {
         let Ok(entries) = std::fs::read_dir(dir) else {
@@ -96,7 +97,7 @@ pub fn list_pngs(folders: &[PathBuf]) -> Vec<PathBuf> {
             .take(MAX_ENTRIES)
             .filter_map(Result::ok)
             .map(|e| e.path())
-            .filter(|p| p.is_file() && is_png(p))
+            .filter(|p| p.is_file() && is_data_set(p))
             .collect();
         found.sort();
         all.extend(found);
@@ -104,10 +105,11 @@ pub fn list_pngs(folders: &[PathBuf]) -> Vec<PathBuf> {
     all
 }
 
-fn is_png(p: &Path) -> bool {
-    p.extension()
-        .and_then(|e| e.to_str())
-        .is_some_and(|e| e.eq_ignore_ascii_case("png"))
+fn is_data_set(p: &Path) -> bool {
+    let raw = &crate::terrain::heightmap::RAW_EXTENSIONS;
+    p.extension().and_then(|e| e.to_str()).is_some_and(|e| {
+        e.eq_ignore_ascii_case("png") || raw.iter().any(|r| e.eq_ignore_ascii_case(r))
+    })
 }
 
 /// The data set after `current` in `files` (the first if `current` is not

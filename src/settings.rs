@@ -348,7 +348,7 @@ pub struct Settings {
     pub monitors: Monitors,
     /// On battery or in power-saver mode: hold the slide, slow down, or go on.
     pub on_battery: OnBattery,
-    /// Folder of PNG heightmaps mixed into the slide show (empty = none).
+    /// Folder of heightmaps (PNG or raw) mixed into the slide show (empty = none).
     pub heightmaps_dir: Option<String>,
 }
 

@@ -148,7 +148,7 @@ pub fn open_next_data_set(
         crate::settings::paths::data_dir().as_deref(),
         settings.heightmaps_dir.as_deref(),
     );
-    let files = crate::saved::list_pngs(&folders);
+    let files = crate::saved::list_data_sets(&folders);
     let path =
         crate::saved::next_after(&files, current).ok_or("no saved data sets yet (S saves one)")?;
     let (mountain, _notes) = Mountain::open(path)?;

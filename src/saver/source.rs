@@ -13,7 +13,7 @@ pub fn slide_uses_folder(slide: u64) -> bool {
 }
 
 /// The mountain for slide number `slide`: from the heightmap folder on
-/// alternate slides when one is set and holds a readable PNG, else generated.
+/// alternate slides when one is set and holds a readable data set, else generated.
 pub fn next_mountain(settings: &Settings, slide: u64) -> Mountain {
     let folder = settings.heightmaps_dir.as_deref().filter(|d| !d.is_empty());
     if let Some(dir) = folder.filter(|_| slide_uses_folder(slide))
@@ -43,10 +43,10 @@ fn warn_once(message: String) {
 }
 
 fn random_heightmap(dir: &Path) -> Option<Mountain> {
-    let files = crate::saved::list_pngs(&[dir.to_path_buf()]);
+    let files = crate::saved::list_data_sets(&[dir.to_path_buf()]);
     if files.is_empty() {
         warn_once(format!(
-            "{}: no PNG heightmaps to show; generating instead",
+            "{}: no heightmaps (.png, .r16, .raw) to show; generating instead",
             dir.display()
         ));
         return None;
@@ -76,18 +76,18 @@ mod tests {
     }
 
     #[test]
-    fn lists_only_png_files_sorted() {
+    fn lists_only_data_sets_sorted() {
         let dir = folder("list");
-        for name in ["b.png", "a.PNG", "notes.txt", "c.png.tmp"] {
+        for name in ["b.png", "a.PNG", "notes.txt", "c.png.tmp", "e.r16", "f.RAW"] {
             std::fs::write(dir.join(name), b"x").unwrap();
         }
         std::fs::create_dir(dir.join("d.png")).unwrap();
-        let names: Vec<_> = crate::saved::list_pngs(std::slice::from_ref(&dir))
+        let names: Vec<_> = crate::saved::list_data_sets(std::slice::from_ref(&dir))
             .iter()
             .map(|p| p.file_name().unwrap().to_string_lossy().into_owned())
             .collect();
-        assert_eq!(names, ["a.PNG", "b.png"]);
-        assert!(crate::saved::list_pngs(&[dir.join("missing")]).is_empty());
+        assert_eq!(names, ["a.PNG", "b.png", "e.r16", "f.RAW"]);
+        assert!(crate::saved::list_data_sets(&[dir.join("missing")]).is_empty());
         std::fs::remove_dir_all(&dir).unwrap();
     }
 
@@ -107,6 +107,25 @@ mod tests {
         assert_eq!(loaded.field.size(), 17);
         let generated = next_mountain(&settings, 2);
         assert_eq!(generated.field.size(), 33);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_raw_heightmap_in_the_folder_is_shown_too() {
+        let dir = folder("raw");
+        let mut field = Heightfield::flat(4, 100.0);
+        field.set(5, 5, 33.0);
+        std::fs::write(dir.join("tool.r16"), heightmap::raw16(&field).0).unwrap();
+        let settings = Settings {
+            detail: Detail::Level(5),
+            heightmaps_dir: Some(dir.to_string_lossy().into_owned()),
+            ..Settings::default()
+        };
+        let loaded = next_mountain(&settings, 1);
+        // The tool's 17x17 grid, its one peak where it was.
+        assert_eq!(loaded.field.size(), 17);
+        let peak = loaded.field.get(5, 5);
+        assert!(peak > loaded.field.get(4, 5) && peak > loaded.field.get(5, 4));
         std::fs::remove_dir_all(&dir).unwrap();
     }
 

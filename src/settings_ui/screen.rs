@@ -155,7 +155,7 @@ impl Screen {
             names.join(" and ")
         };
         self.model
-            .show_list(crate::saved::list_pngs(&dirs), &searched);
+            .show_list(crate::saved::list_data_sets(&dirs), &searched);
     }
 
     fn open_data_set(&mut self, path: &Path) {

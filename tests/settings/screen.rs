@@ -606,7 +606,7 @@ fn data_sets_are_listed_from_both_folders_and_saved_under_readable_names() {
     let maps_str = maps.to_str().unwrap();
     let folders = saved::folders(Some(&data), Some(maps_str));
     assert_eq!(
-        saved::list_pngs(&folders),
+        saved::list_data_sets(&folders),
         vec![
             data.join("a.PNG"),
             data.join("b.png"),
