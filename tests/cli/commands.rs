@@ -27,6 +27,31 @@ fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
+/// `mountains args`, which must succeed.
+fn run(args: &[&str]) -> Output {
+    let o = mountains(args);
+    assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+    o
+}
+
+/// `heightmap -o to` of seed 3's 33x33 grid, which must succeed.
+fn small_data_set(to: &Path) -> Output {
+    run(&[
+        "heightmap",
+        "--set",
+        "detail=5",
+        "--set",
+        "seed=3",
+        "-o",
+        &arg(to),
+    ])
+}
+
+/// `p` as an argument.
+fn arg(p: &Path) -> String {
+    p.to_str().unwrap().to_string()
+}
+
 fn png_size(path: &Path) -> (u32, u32) {
     let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(path).unwrap()));
     let reader = decoder.read_info().unwrap();
@@ -339,11 +364,6 @@ fn heightmap_saves_a_data_set_that_loads_back_with_its_seed() {
 fn render_open_draws_a_saved_data_set() {
     let dir = scratch("open");
     let (h, a, b) = (dir.join("h.png"), dir.join("a.png"), dir.join("b.png"));
-    let arg = |p: &Path| p.to_str().unwrap().to_string();
-    let run = |args: &[&str]| {
-        let o = mountains(args);
-        assert!(o.status.success(), "{args:?}: {}", stderr(&o));
-    };
     run(&[
         "heightmap",
         "--set",
@@ -397,21 +417,7 @@ fn render_open_draws_a_saved_data_set() {
 fn a_raw_data_set_opens_and_saves_back_the_same() {
     let dir = scratch("open-raw");
     let [a, b, picture, bad] = ["a.r16", "b.RAW", "p.png", "bad.r16"].map(|f| dir.join(f));
-    let arg = |p: &Path| p.to_str().unwrap().to_string();
-    let run = |args: &[&str]| {
-        let o = mountains(args);
-        assert!(o.status.success(), "{args:?}: {}", stderr(&o));
-        o
-    };
-    run(&[
-        "heightmap",
-        "--set",
-        "detail=5",
-        "--set",
-        "seed=3",
-        "-o",
-        &arg(&a),
-    ]);
+    small_data_set(&a);
     let o = run(&["heightmap", "--open", &arg(&a), "-o", &arg(&b)]);
     assert!(
         stderr(&o).contains("a 33x33 square, little-endian"),
@@ -433,15 +439,7 @@ fn a_raw_data_set_opens_and_saves_back_the_same() {
     assert_eq!(png_size(&picture), (80, 60));
     // A PNG data set named as raw is read as the PNG it is.
     let png = dir.join("h.png");
-    run(&[
-        "heightmap",
-        "--set",
-        "detail=5",
-        "--set",
-        "seed=3",
-        "-o",
-        &arg(&png),
-    ]);
+    small_data_set(&png);
     std::fs::copy(&png, &bad).unwrap();
     run(&["heightmap", "--open", &arg(&bad), "-o", &arg(&b)]);
     assert!(
@@ -468,10 +466,6 @@ fn render_open_draws_a_data_set_under_its_recorded_look() {
     let dir = scratch("open-look");
     let files = ["h.png", "made.png", "opened.png", "told.png", "theirs.png"].map(|f| dir.join(f));
     let [h, made, opened, told, theirs] = files.each_ref().map(|p| p.to_str().unwrap());
-    let run = |args: &[&str]| {
-        let o = mountains(args);
-        assert!(o.status.success(), "{args:?}: {}", stderr(&o));
-    };
     let recorded = ["--set", "look=essay", "--set", "height=7"];
     let sets = [&recorded[..], &["--set", "detail=5", "--set", "seed=9"]].concat();
     run(&[&["heightmap", "-o", h][..], &sets].concat());
@@ -593,16 +587,7 @@ fn the_output_extension_chooses_the_format() {
     let bytes = std::fs::read(&jpg).unwrap();
     assert_eq!(&bytes[..3], &[0xff, 0xd8, 0xff], "not a JPEG");
     let raw = dir.join("h.r16");
-    let o = mountains(&[
-        "heightmap",
-        "--set",
-        "detail=5",
-        "--set",
-        "seed=3",
-        "-o",
-        raw.to_str().unwrap(),
-    ]);
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let o = small_data_set(&raw);
     assert_eq!(std::fs::read(&raw).unwrap().len(), 33 * 33 * 2);
     assert!(String::from_utf8_lossy(&o.stdout).contains("33x33 16-bit little-endian"));
     for (args, allowed) in [
