@@ -67,10 +67,17 @@ fn side_of(len: u64, path: &Path) -> Result<u32, HeightmapError> {
         ));
     }
     if side * side * 2 != len {
-        let problem = format!(
+        let mut problem = format!(
             "is {len} bytes, not a raw heightmap: raw 16-bit samples of a square take \
              2 x side x side bytes (1025x1025: 2101250)"
         );
+        // Twice a square is never a square: a square of bytes is 8-bit.
+        let bytes_side = len.isqrt();
+        if bytes_side * bytes_side == len {
+            problem += &format!(
+                "; as {bytes_side}x{bytes_side} 8-bit samples, save it as a grayscale PNG"
+            );
+        }
         return Err(HeightmapError::new(path, ErrorKind::NotRaw, problem));
     }
     let too = |kind, what: &str, bound: u32| {
@@ -127,6 +134,11 @@ mod tests {
             (0, ErrorKind::NotRaw, "is empty"),
             (17, ErrorKind::NotRaw, "is 17 bytes"),
             (2 * 3 * 4, ErrorKind::NotRaw, "is 24 bytes"),
+            (
+                9,
+                ErrorKind::NotRaw,
+                "as 3x3 8-bit samples, save it as a grayscale PNG",
+            ),
             (2, ErrorKind::TooSmall, "1x1"),
         ] {
             let e = read_bytes(&vec![0; len]).err().expect("refused");
