@@ -8,7 +8,7 @@ use std::ffi::OsString;
 use std::path::{Path, PathBuf};
 
 use crate::render::Size;
-use crate::terrain::heightmap::RAW_EXTENSIONS;
+use crate::terrain::heightmap;
 
 pub mod key_flags;
 pub mod output;
@@ -526,11 +526,7 @@ fn is_file_name(arg: &str) -> bool {
 /// or raw samples.
 fn opens(arg: &str) -> bool {
     let path = Path::new(arg);
-    let readable = path.extension().is_some_and(|e| {
-        let e = e.to_string_lossy();
-        e.eq_ignore_ascii_case("png") || RAW_EXTENSIONS.iter().any(|r| e.eq_ignore_ascii_case(r))
-    });
-    readable && path.is_file()
+    heightmap::named_as_data_set(path) && path.is_file()
 }
 
 /// `--layer NAME`: one of [`Layer::NAMES`], or a message listing them.

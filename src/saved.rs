@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use crate::render::Frame;
 use crate::settings::Settings;
-use crate::terrain::Heightfield;
+use crate::terrain::{Heightfield, heightmap};
 
 /// A readable file stem in local time: `mountain-2026-11-22-023512-seed-42`.
 pub fn file_stem(unix_seconds: u64, seed: Option<u64>) -> String {
@@ -55,7 +55,7 @@ pub fn save_data_set(
     settings: &Settings,
 ) -> Result<PathBuf, String> {
     let path = new_path(dir, ".png", seed)?;
-    crate::terrain::heightmap::save(&path, field, seed, settings).map_err(|e| e.to_string())?;
+    heightmap::save(&path, field, seed, settings).map_err(|e| e.to_string())?;
     Ok(path)
 }
 
@@ -97,19 +97,12 @@ pub fn list_data_sets(folders: &[PathBuf]) -> Vec<PathBuf> {
             .take(MAX_ENTRIES)
             .filter_map(Result::ok)
             .map(|e| e.path())
-            .filter(|p| p.is_file() && is_data_set(p))
+            .filter(|p| p.is_file() && heightmap::named_as_data_set(p))
             .collect();
         found.sort();
         all.extend(found);
     }
     all
-}
-
-fn is_data_set(p: &Path) -> bool {
-    let raw = &crate::terrain::heightmap::RAW_EXTENSIONS;
-    p.extension().and_then(|e| e.to_str()).is_some_and(|e| {
-        e.eq_ignore_ascii_case("png") || raw.iter().any(|r| e.eq_ignore_ascii_case(r))
-    })
 }
 
 /// The data set after `current` in `files` (the first if `current` is not

@@ -8,9 +8,10 @@
 //! the first quantisation the round trip is exact (see [`quantise`]).
 //!
 //! **Loading** takes any 8- or 16-bit grayscale PNG, ours or a terrain
-//! tool's, or raw 16-bit samples (see [`raw`]), fits it to a `2^n + 1` grid (see [`fit`] for the exact method:
-//! central square crop, `2^n` sides extended by one, others resampled to the
-//! nearest `2^n + 1` up to 4097) and fills in what its metadata lacks:
+//! tool's, or raw 16-bit samples (see [`raw`]), fits it to a `2^n + 1`
+//! grid (see [`fit`] for the exact method: central square crop, `2^n`
+//! sides extended by one, others resampled to the nearest `2^n + 1` up to
+//! 4097) and fills in what its metadata lacks:
 //! - no `mountains:scale`: the relief (highest - lowest sample) becomes
 //!   [`DEFAULT_RELIEF`] of the width, a natural mountain aspect;
 //! - no `mountains:offset`: sample 0 is elevation 0;
@@ -115,6 +116,15 @@ pub fn save(
 /// compression is 32 MiB; anything far larger is not one of ours or a
 /// terrain tool's.
 pub const MAX_FILE_BYTES: u64 = 256 << 20;
+
+/// Whether `path`'s name is a data set's, as [`load`] reads them: a PNG,
+/// or raw samples (any case).
+pub fn named_as_data_set(path: &Path) -> bool {
+    let png = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("png"));
+    png || raw::is_raw(path)
+}
 
 /// Loads an 8- or 16-bit grayscale PNG heightmap, ours or a terrain tool's,
 /// or raw 16-bit samples (a `.r16` or `.raw` file that is not a PNG).
