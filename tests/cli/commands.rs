@@ -6,13 +6,18 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 fn mountains(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_mountains"))
+    command(args).output().expect("run mountains")
+}
+
+/// The binary with `args`, its preferences and data in a scratch home.
+fn command(args: &[&str]) -> Command {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_mountains"));
+    command
         .args(args)
         .env("HOME", scratch("home"))
         .env("XDG_CONFIG_HOME", scratch("home").join("config"))
-        .env("XDG_DATA_HOME", scratch("home").join("data"))
-        .output()
-        .expect("run mountains")
+        .env("XDG_DATA_HOME", scratch("home").join("data"));
+    command
 }
 
 fn scratch(name: &str) -> PathBuf {
@@ -454,6 +459,43 @@ fn a_raw_data_set_opens_and_saves_back_the_same() {
         err.contains("bad.r16") && err.contains("is 1000 bytes"),
         "{err}"
     );
+}
+
+/// `--open -` reads a data set from standard input, a PNG or raw
+/// samples: `heightmap -o - | mountains render --open -` draws what the
+/// file does, and raw samples piped in save back the same.
+#[test]
+fn a_data_set_opens_from_standard_input() {
+    use std::io::Write;
+    let dir = scratch("open-stdin");
+    let [png, raw, from_file, piped, raw_again] =
+        ["h.png", "h.r16", "file.png", "piped.png", "again.r16"].map(|f| dir.join(f));
+    small_data_set(&png);
+    small_data_set(&raw);
+    let piping = |input: &Path, args: &[&str]| {
+        let mut child = command(args)
+            .stdin(std::process::Stdio::piped())
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .expect("run mountains");
+        let bytes = std::fs::read(input).unwrap();
+        child.stdin.take().unwrap().write_all(&bytes).unwrap();
+        let o = child.wait_with_output().unwrap();
+        assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+    };
+    let size = ["render", "--size", "80x60"];
+    run(&[&size[..], &["--open", &arg(&png), "-o", &arg(&from_file)]].concat());
+    piping(
+        &png,
+        &[&size[..], &["--open", "-", "-o", &arg(&piped)]].concat(),
+    );
+    assert!(
+        std::fs::read(&from_file).unwrap() == std::fs::read(&piped).unwrap(),
+        "the piped data set drew another picture"
+    );
+    piping(&raw, &["heightmap", "--open", "-", "-o", &arg(&raw_again)]);
+    assert!(std::fs::read(&raw).unwrap() == std::fs::read(&raw_again).unwrap());
 }
 
 /// `--open` draws a data set under the look its file recorded (and the

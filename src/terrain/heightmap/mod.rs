@@ -37,6 +37,7 @@ pub mod quantise;
 mod raw;
 pub mod soften;
 
+use std::io::Read;
 use std::path::Path;
 
 pub use decode::{MAX_SOURCE_SIDE, MIN_SOURCE_SIDE};
@@ -131,22 +132,63 @@ pub fn named_as_data_set(path: &Path) -> bool {
 ///
 /// Only a regular file is read (a FIFO would block): see `fsutil::open_regular`.
 /// The file is streamed: memory is the fitted grid, never the whole image.
+/// `-` is standard input (`heightmap -o - | mountains --open -`), read
+/// whole, at most [`MAX_FILE_BYTES`]: a PNG, or else raw samples.
 pub fn load(path: &Path) -> Result<DataSet, HeightmapError> {
     let io = |e: std::io::Error| {
         HeightmapError::new(path, ErrorKind::Io, format!("cannot be read: {e}"))
     };
+    if path == Path::new("-") {
+        let mut bytes = Vec::new();
+        let stdin = std::io::stdin().lock();
+        stdin
+            .take(MAX_FILE_BYTES + 1)
+            .read_to_end(&mut bytes)
+            .map_err(io)?;
+        return load_bytes(&bytes, path);
+    }
     let file = crate::fsutil::open_regular(path, MAX_FILE_BYTES).map_err(io)?;
     let len = file.metadata().map_err(io)?.len();
     let mut input = std::io::BufReader::new(file);
     if raw::is_raw(path) && !decode::starts_as_png(&mut input).map_err(io)? {
-        let grid = raw::read(input, len, path)?;
-        let side = grid.fit.source_width;
-        let mut data = finish(grid, path)?;
-        data.notes.insert(0, raw::note(side));
-        return Ok(data);
+        return raw_data_set(raw::read(input, len, path)?, path);
     }
     let raw = decode::read(input, len, path)?;
     finish(raw, path)
+}
+
+/// A data set from `bytes` (a PNG, or else raw samples) that `path`
+/// names in messages.
+fn load_bytes(bytes: &[u8], path: &Path) -> Result<DataSet, HeightmapError> {
+    let len = bytes.len() as u64;
+    if len > MAX_FILE_BYTES {
+        let problem = format!(
+            "holds over {} MiB; a data set is smaller",
+            MAX_FILE_BYTES >> 20
+        );
+        return Err(HeightmapError::new(path, ErrorKind::TooLarge, problem));
+    }
+    if decode::starts_as_png(&mut std::io::Cursor::new(bytes)).unwrap_or(false) || len < 8 {
+        return decode(bytes, path);
+    }
+    let grid = raw::read(bytes, len, path).map_err(|e| match e.kind {
+        ErrorKind::NotRaw => HeightmapError::new(
+            path,
+            ErrorKind::NotPng,
+            format!("is {len} bytes, neither a PNG nor raw 16-bit samples of a square"),
+        ),
+        _ => e,
+    })?;
+    raw_data_set(grid, path)
+}
+
+/// The data set of the raw samples in `grid`, read from `path`, with a
+/// note of how they were read.
+fn raw_data_set(grid: RawGrid, path: &Path) -> Result<DataSet, HeightmapError> {
+    let side = grid.fit.source_width;
+    let mut data = finish(grid, path)?;
+    data.notes.insert(0, raw::note(side));
+    Ok(data)
 }
 
 /// Decodes PNG `bytes`; `path` only names the file in messages.
