@@ -357,6 +357,17 @@ fn messages_name_what_was_typed() {
     };
     assert!(check("detail = 8.0\n").contains("key `detail`: 8.0 is not allowed"));
     assert!(check("seed = 1e3\n").contains("key `seed`: 1000.0 is not allowed"));
+    // A choice typed another way is offered as meant; one far from all is not.
+    for (typed, meant) in [
+        ("Desert", "desert"),
+        ("desret", "desert"),
+        ("Sonar", "sonar"),
+    ] {
+        let key = if meant == "sonar" { "color" } else { "world" };
+        let err = check(&format!("{key} = \"{typed}\"\n"));
+        assert!(err.contains(&format!("; did you mean `{meant}`?")), "{err}");
+    }
+    assert!(!check("world = \"zzzzzz\"\n").contains("did you mean"));
     let err = check("detail =\n");
     assert!(
         err.contains("1:9: key `detail`: not valid TOML: nothing after `=`"),

@@ -46,8 +46,15 @@ pub fn known(name: &str) -> Result<&'static Key, String> {
 /// order they come in (see [`follow_look`]).
 pub fn apply(settings: &mut Settings, key: &Key, value: &Value) -> Result<(), String> {
     write(settings, key, value).ok_or_else(|| {
+        // A name typed another way ("Desert", "desret") is offered as meant.
+        let hint = match (key.kind, value) {
+            (Kind::Choice(names), Value::Str(typed)) => {
+                crate::spelling::did_you_mean(typed, names.iter())
+            }
+            _ => String::new(),
+        };
         format!(
-            "{} is not allowed; expected {}",
+            "{} is not allowed; expected {}{hint}",
             value.shown(),
             key.kind.allowed()
         )
