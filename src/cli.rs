@@ -578,15 +578,37 @@ pub fn parse_handle(text: &str) -> Result<u64, UsageError> {
 /// side, not only with its pixels.
 pub const MAX_SIDE: u32 = 32768;
 
-/// `--size WIDTHxHEIGHT`: both sides from 1 to [`MAX_SIDE`].
+/// The screens' sizes `--size` also takes by name (any case), as people
+/// call them.
+const NAMED_SIZES: &[(&str, u32, u32)] = &[
+    ("720p", 1280, 720),
+    ("1080p", 1920, 1080),
+    ("1440p", 2560, 1440),
+    ("4k", 3840, 2160),
+    ("2160p", 3840, 2160),
+    ("5k", 5120, 2880),
+    ("8k", 7680, 4320),
+];
+
+/// `--size WIDTHxHEIGHT` (or one of [`NAMED_SIZES`]): both sides from 1
+/// to [`MAX_SIDE`].
 fn parse_size(text: &str) -> Result<Size, UsageError> {
+    if let Some(&(_, w, h)) = NAMED_SIZES
+        .iter()
+        .find(|(n, ..)| n.eq_ignore_ascii_case(text))
+    {
+        return Ok(Size::new(w, h));
+    }
     let bad = || {
+        let names: Vec<&str> = NAMED_SIZES.iter().map(|(n, ..)| *n).collect();
         UsageError(format!(
-            "--size {text}: expected WIDTHxHEIGHT, e.g. 1920x1080"
+            "--size {text}: expected WIDTHxHEIGHT, e.g. 1920x1080, or one of {}",
+            names.join(", ")
         ))
     };
     let (w, h) = text.split_once(['x', 'X']).ok_or_else(bad)?;
-    let size = Size::new(w.parse().map_err(|_| bad())?, h.parse().map_err(|_| bad())?);
+    let side = |s: &str| s.trim().parse().map_err(|_| bad());
+    let size = Size::new(side(w)?, side(h)?);
     if size.is_empty() {
         return Err(bad());
     }

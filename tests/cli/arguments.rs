@@ -176,6 +176,28 @@ fn size_bounds_each_side() {
     }
 }
 
+/// `--size` takes the sizes people name screens by, in any case, and
+/// spaces around the `x`.
+#[test]
+fn size_takes_named_screens() {
+    for (text, w, h) in [
+        ("4k", 3840, 2160),
+        ("4K", 3840, 2160),
+        ("1080p", 1920, 1080),
+        ("720P", 1280, 720),
+        ("80 x 60", 80, 60),
+    ] {
+        let m = mode(&["render", "--size", text, "-o", "x.png"]);
+        let want = Mode::Render {
+            size: Size::new(w, h),
+            output: "x.png".into(),
+        };
+        assert_eq!(m, want, "{text}");
+    }
+    let e = parse(&["render", "-o", "x.png", "--size", "4kk"]).unwrap_err();
+    assert!(e.0.contains("or one of 720p, 1080p, 1440p, 4k"), "{e}");
+}
+
 #[test]
 fn handles_must_be_nonzero() {
     assert!(cli::parse_handle("0").is_err());
