@@ -390,3 +390,52 @@ fn the_worlds_nights_differ() {
         }
     }
 }
+
+/// The desert's low ground lies dry (sand and salt, `cover::dry_basin`):
+/// no wind streaks it as they streak water, which drew its basins as
+/// golden lakes. A level basin floor (every point as deep) then shows one
+/// colour along each row of pixels, but for the air; the temperate sea over
+/// the same floor is streaked.
+#[test]
+fn a_desert_basin_is_not_streaked_as_water_is() {
+    use mountains::terrain::Heightfield;
+    // The left half a level floor 3 below the sea, the right half rising land.
+    let mut field = Heightfield::flat(7, terrain::SQUARE_EXTENT);
+    let mid = field.size() / 2;
+    for y in 0..field.size() {
+        for x in 0..field.size() {
+            let land = (x as f32 - mid as f32).max(0.0);
+            field.set(x, y, if x < mid { -3.0 } else { 0.5 * land });
+        }
+    }
+    // The spread of lightness along a row, the most of the rows, over the
+    // frame's bottom left (the floor near the viewer).
+    let (w, h) = (320, 180);
+    let streaks = |world: World| {
+        let s = Settings {
+            world,
+            reflections: false,
+            ..Settings::default()
+        };
+        let s = detail::for_frame(&s, Size::new(w, h));
+        let mut frame = Frame::new(w, h).expect("a frame");
+        render_full(&field, &s, &mut frame);
+        let pixels = frame.pixels();
+        let spread = |y: u32| {
+            let light = (10..80).map(|x| lab(channels(pixels[(y * w + x) as usize]))[0]);
+            let (lo, hi) = light.fold((f32::MAX, f32::MIN), |(l, h), v| (l.min(v), h.max(v)));
+            hi - lo
+        };
+        (150..175).map(spread).fold(0.0, f32::max)
+    };
+    let (desert, temperate) = (streaks(World::Desert), streaks(World::Temperate));
+    eprintln!("lightness spread along a row: desert {desert:.2}, temperate {temperate:.2}");
+    assert!(
+        temperate > 2.0,
+        "the sea is not streaked ({temperate:.2}): no test"
+    );
+    assert!(
+        desert < 0.25 * temperate,
+        "desert {desert:.2} against {temperate:.2}"
+    );
+}

@@ -388,6 +388,12 @@ fn tropical(u: f32, steep: f32, beach: bool, v: f32) -> Rgb {
     mix(green, BASALT, rock.min(0.85))
 }
 
+/// Whether `world`'s low ground lies dry (sand and salt in place of the
+/// water, see [`water`]): no wind streaks it, and it mirrors nothing.
+pub fn dry_basin(world: World) -> bool {
+    world == World::Desert
+}
+
 /// The water's colour over ground a share `t` (0 at the shore, 1 the
 /// deepest) of the deepest depth down, in `world`; `v` the mountain's draw.
 pub fn water(world: World, t: f32, v: f32) -> Rgb {

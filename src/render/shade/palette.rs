@@ -286,6 +286,12 @@ impl Palette {
         self.land_in(mean_height, normal, lit, 1.0, ORDINARY)
     }
 
+    /// Whether the water is a dry basin's sand and salt
+    /// ([`cover::dry_basin`]).
+    pub fn dry_basin(&self) -> bool {
+        cover::dry_basin(self.world)
+    }
+
     /// Whether the ground's colour follows where water runs (`wet` of
     /// [`Palette::land_in`]; a world's own cover, never the temperate's).
     pub fn follows_water(&self) -> bool {
