@@ -335,6 +335,9 @@ impl<'a> Scene<'a> {
         } else {
             0.0
         };
+        // A dry basin's sand and salt take no wind streaks (the weather
+        // above was chosen with them).
+        let ripples = ripples.filter(|_| !palette.dry_basin());
         Scene {
             field,
             view,

@@ -570,11 +570,11 @@ impl Scene<'_> {
         let haze = c.iter().map(|k| k.haze).sum::<u32>() / c.len() as u32;
         let water = self.palette.water(depth);
         let (water, ripple) = match &self.ripples {
-            Some(r) if !self.palette.dry_basin() => {
+            Some(r) => {
                 let n = r.value(g.x, g.y);
                 (r.with(water, n), n)
             }
-            _ => (water, 0.0),
+            None => (water, 0.0),
         };
         (self.hazed(water, haze), ripple)
     }
