@@ -202,8 +202,14 @@ fn forty_seeds_keep_their_time_of_day_and_sea_at_every_size() {
         times, 5,
         "40 seeds, not every time of day (morning, midday, evening, sunset, night)"
     );
-    let seas = kinds(seas.iter().map(|t| format!("{t:?}")).collect());
-    assert!(seas >= 39, "40 seeds, {seas} seas");
+    // A desert's dry basin has no sea to streak (`cover::dry_basin`).
+    let streaked: Vec<_> = seas.iter().flatten().collect();
+    let patterns = kinds(streaked.iter().map(|t| format!("{t:?}")).collect());
+    assert!(
+        streaked.len() >= 30 && patterns + 1 >= streaked.len(),
+        "40 seeds, {} with a sea, {patterns} patterns",
+        streaked.len()
+    );
 }
 
 /// A saved mountain opened again is its seed's scene; a data set without a
