@@ -593,6 +593,7 @@ const NAMED_SIZES: &[(&str, u32, u32)] = &[
 /// `--size WIDTHxHEIGHT` (or one of [`NAMED_SIZES`]): both sides from 1
 /// to [`MAX_SIDE`].
 fn parse_size(text: &str) -> Result<Size, UsageError> {
+    let text = text.trim();
     if let Some(&(_, w, h)) = NAMED_SIZES
         .iter()
         .find(|(n, ..)| n.eq_ignore_ascii_case(text))
@@ -623,6 +624,15 @@ fn parse_size(text: &str) -> Result<Size, UsageError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `--help` names every screen `--size` takes by name.
+    #[test]
+    fn the_help_names_every_named_size() {
+        let help = crate::help::text();
+        for (name, ..) in NAMED_SIZES {
+            assert!(help.contains(name), "--help leaves out {name}");
+        }
+    }
 
     /// The names a mistyped flag is compared with are ones `parse` takes.
     #[test]

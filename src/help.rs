@@ -45,7 +45,7 @@ Usage:
   mountains --window-id ID             xscreensaver preview: draw into window ID (0x.. or decimal)
   mountains --layer LAYER              Wayland: every output's background, bottom, top or overlay layer
   mountains render -o OUT.png [--size WxH] [OPTIONS]   one mountain to a PNG (.jpg: JPEG);
-                                                       WxH also 720p, 1080p, 1440p, 4k, 5k, 8k
+                                                       WxH also 720p, 1080p, 1440p, 4k (2160p), 5k, 8k
   mountains heightmap -o OUT.png [OPTIONS]             generate and save a data set (.r16: raw)
   mountains --check-config [FILE]      check a preferences file; exit 0 if good, 1 if not
   mountains --help | --version

@@ -25,7 +25,8 @@ pub const PICTURES: &[(&str, Format)] = &[
     ("jpeg", Format::Jpeg),
 ];
 
-/// Extensions and formats `heightmap -o` writes.
+/// Extensions and formats `heightmap -o` writes: every data set `--open`
+/// reads (a test holds the two lists alike).
 pub const DATA_SETS: &[(&str, Format)] = &[
     ("png", Format::Png),
     (RAW_EXTENSIONS[0], Format::Raw16),
@@ -54,4 +55,17 @@ pub fn format_of(
                 names.join(", ")
             ))
         })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `heightmap -o` writes every kind of data set `--open` reads, and no
+    /// other: the two lists are one list.
+    #[test]
+    fn the_data_sets_written_are_those_read() {
+        let written: Vec<&str> = DATA_SETS.iter().map(|(e, _)| *e).collect();
+        assert_eq!(written, crate::terrain::heightmap::DATA_SET_EXTENSIONS);
+    }
 }

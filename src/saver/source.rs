@@ -46,8 +46,9 @@ fn random_heightmap(dir: &Path) -> Option<Mountain> {
     let files = crate::saved::list_data_sets(&[dir.to_path_buf()]);
     if files.is_empty() {
         warn_once(format!(
-            "{}: no heightmaps (.png, .r16, .raw) to show; generating instead",
-            dir.display()
+            "{}: no heightmaps ({}) to show; generating instead",
+            dir.display(),
+            crate::terrain::heightmap::data_set_extensions()
         ));
         return None;
     }

@@ -63,7 +63,7 @@ pub const SEED_BUTTON: (u32, u32) = (CTRL_END - 66, CTRL_END);
 pub enum Button {
     /// A new preview mountain.
     New,
-    /// Open a saved data set (a PNG heightmap).
+    /// Open a saved data set (a PNG or raw heightmap).
     Open,
     /// Save the preview mountain as a data set.
     SaveData,

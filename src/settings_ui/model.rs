@@ -590,7 +590,10 @@ impl Model {
     /// Shows the data sets Open can load (the window found them on disk).
     pub fn show_list(&mut self, files: Vec<PathBuf>, searched: &str) {
         if files.is_empty() {
-            self.message = format!("No data sets (.png, .r16, .raw) in {searched}.");
+            self.message = format!(
+                "No data sets ({}) in {searched}.",
+                crate::terrain::heightmap::data_set_extensions()
+            );
             self.open_list = None;
         } else {
             self.message = "Choose a data set: arrows and Enter, or click; Esc closes.".into();

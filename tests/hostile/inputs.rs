@@ -360,8 +360,10 @@ fn messages_name_what_was_typed() {
     // A choice typed another way is offered as meant; one far from all is not.
     for (typed, meant) in [
         ("Desert", "desert"),
+        ("DESERT", "desert"),
+        ("Desret", "desert"),
         ("desret", "desert"),
-        ("Sonar", "sonar"),
+        ("SONAR", "sonar"),
     ] {
         let key = if meant == "sonar" { "color" } else { "world" };
         let err = check(&format!("{key} = \"{typed}\"\n"));

@@ -49,7 +49,10 @@ pub fn apply(settings: &mut Settings, key: &Key, value: &Value) -> Result<(), St
         // A name typed another way ("Desert", "desret") is offered as meant.
         let hint = match (key.kind, value) {
             (Kind::Choice(names), Value::Str(typed)) => {
-                crate::spelling::did_you_mean(typed, names.iter())
+                match names.iter().find(|n| n.eq_ignore_ascii_case(typed)) {
+                    Some(same) => crate::spelling::offer(Some(same)),
+                    None => crate::spelling::did_you_mean(&typed.to_lowercase(), names.iter()),
+                }
             }
             _ => String::new(),
         };

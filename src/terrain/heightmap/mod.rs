@@ -121,10 +121,31 @@ pub const MAX_FILE_BYTES: u64 = 256 << 20;
 /// Whether `path`'s name is a data set's, as [`load`] reads them: a PNG,
 /// or raw samples (any case).
 pub fn named_as_data_set(path: &Path) -> bool {
-    let png = path
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("png"));
-    png || raw::is_raw(path)
+    path.extension().is_some_and(|e| {
+        DATA_SET_EXTENSIONS
+            .iter()
+            .any(|d| e.eq_ignore_ascii_case(d))
+    })
+}
+
+/// The extensions of data sets [`load`] reads: PNG, then the raw ones.
+pub const DATA_SET_EXTENSIONS: [&str; 1 + RAW_EXTENSIONS.len()] = {
+    let mut all = ["png"; 1 + RAW_EXTENSIONS.len()];
+    let mut i = 0;
+    while i < RAW_EXTENSIONS.len() {
+        all[i + 1] = RAW_EXTENSIONS[i];
+        i += 1;
+    }
+    all
+};
+
+/// [`DATA_SET_EXTENSIONS`] as a message lists them: `.png, .r16, .raw`.
+pub fn data_set_extensions() -> String {
+    let dotted: Vec<String> = DATA_SET_EXTENSIONS
+        .iter()
+        .map(|e| format!(".{e}"))
+        .collect();
+    dotted.join(", ")
 }
 
 /// Loads an 8- or 16-bit grayscale PNG heightmap, ours or a terrain tool's,
@@ -139,6 +160,12 @@ pub fn load(path: &Path) -> Result<DataSet, HeightmapError> {
         HeightmapError::new(path, ErrorKind::Io, format!("cannot be read: {e}"))
     };
     if path == Path::new("-") {
+        use std::io::IsTerminal;
+        if std::io::stdin().is_terminal() {
+            let problem = "is standard input, a terminal: pipe a data set in \
+                           (mountains heightmap -o - | mountains --open -)";
+            return Err(HeightmapError::new(path, ErrorKind::Io, problem));
+        }
         let mut bytes = Vec::new();
         let stdin = std::io::stdin().lock();
         stdin
@@ -168,16 +195,21 @@ fn load_bytes(bytes: &[u8], path: &Path) -> Result<DataSet, HeightmapError> {
         );
         return Err(HeightmapError::new(path, ErrorKind::TooLarge, problem));
     }
-    if decode::starts_as_png(&mut std::io::Cursor::new(bytes)).unwrap_or(false) || len < 8 {
+    if len == 0 {
+        let problem = "is empty: nothing was piped in";
+        return Err(HeightmapError::new(path, ErrorKind::NotPng, problem));
+    }
+    if decode::starts_as_png(&mut std::io::Cursor::new(bytes)).unwrap_or(false) {
         return decode(bytes, path);
     }
-    let grid = raw::read(bytes, len, path).map_err(|e| match e.kind {
-        ErrorKind::NotRaw => HeightmapError::new(
-            path,
-            ErrorKind::NotPng,
-            format!("is {len} bytes, neither a PNG nor raw 16-bit samples of a square"),
-        ),
-        _ => e,
+    // Not a PNG: say so beside what the raw reading found wrong.
+    let grid = raw::read(bytes, len, path).map_err(|mut e| {
+        if e.kind == ErrorKind::NotRaw {
+            e.problem = e
+                .problem
+                .replacen("not a raw", "neither a PNG nor a raw", 1);
+        }
+        e
     })?;
     raw_data_set(grid, path)
 }
@@ -356,4 +388,40 @@ pub fn refit(field: &Heightfield, exponent: u32) -> Heightfield {
     }
     out.heights_mut().copy_from_slice(&grid.finish());
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn problem(bytes: &[u8]) -> String {
+        let e = load_bytes(bytes, Path::new("-")).expect_err("refused");
+        e.problem
+    }
+
+    #[test]
+    fn piped_bytes_are_a_png_or_else_raw_samples() {
+        let mut field = Heightfield::flat(4, 100.0);
+        field.set(3, 3, 9.0);
+        let (raw, _) = raw16(&field);
+        let from_raw = load_bytes(&raw, Path::new("-")).unwrap();
+        assert_eq!(from_raw.field.size(), 17);
+        assert!(from_raw.notes[0].starts_with("raw 16-bit samples"));
+        let png = encode(&field, Some(5), &Settings::default(), Path::new("x.png")).unwrap();
+        assert_eq!(load_bytes(&png, Path::new("-")).unwrap().seed, Some(5));
+    }
+
+    #[test]
+    fn piped_bytes_of_neither_kind_say_so() {
+        assert!(problem(b"").contains("nothing was piped in"));
+        let short = problem(b"abc");
+        assert!(
+            short.contains("is 3 bytes, neither a PNG nor a raw"),
+            "{short}"
+        );
+        // A square of bytes keeps the raw reading's 8-bit hint.
+        let square = problem(&[7; 9]);
+        assert!(square.contains("neither a PNG nor a raw"), "{square}");
+        assert!(square.contains("3x3 8-bit samples"), "{square}");
+    }
 }

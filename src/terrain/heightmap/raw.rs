@@ -1,6 +1,6 @@
 //! Reading raw 16-bit heightmaps (`.r16`, `.raw`): what `heightmap -o
-//! NAME.r16` writes for terrain tools, and what they export (World
-//! Machine, L3DT, Unity's RAW with Windows byte order).
+//! NAME.r16` writes for terrain tools, and what those that write their
+//! rows from the back in little-endian order export.
 //!
 //! Such a file is its samples alone: a square grid, little-endian, row by
 //! row from the back. Its side is the square root of half its length; its
@@ -75,7 +75,7 @@ fn side_of(len: u64, path: &Path) -> Result<u32, HeightmapError> {
         let bytes_side = len.isqrt();
         if bytes_side * bytes_side == len {
             problem += &format!(
-                "; as {bytes_side}x{bytes_side} 8-bit samples, save it as a grayscale PNG"
+                "; if it holds {bytes_side}x{bytes_side} 8-bit samples, save it as a grayscale PNG"
             );
         }
         return Err(HeightmapError::new(path, ErrorKind::NotRaw, problem));
@@ -137,7 +137,7 @@ mod tests {
             (
                 9,
                 ErrorKind::NotRaw,
-                "as 3x3 8-bit samples, save it as a grayscale PNG",
+                "if it holds 3x3 8-bit samples, save it as a grayscale PNG",
             ),
             (2, ErrorKind::TooSmall, "1x1"),
         ] {
