@@ -76,13 +76,11 @@ pub fn parse_window_id(text: &str) -> Option<u32> {
 fn root_target(conn: &RustConnection, screen: usize) -> u32 {
     let named = std::env::var("XSCREENSAVER_WINDOW").ok();
     match named_window(named.as_deref()) {
-        Ok(Some(id)) => id,
-        Ok(None) => conn.setup().roots[screen].root,
-        Err(why) => {
-            crate::log::warn(&why);
-            conn.setup().roots[screen].root
-        }
+        Ok(Some(id)) => return id,
+        Ok(None) => {}
+        Err(why) => crate::log::warn(&why),
     }
+    conn.setup().roots[screen].root
 }
 
 /// The window `$XSCREENSAVER_WINDOW` (`var`) names: `None` unset or

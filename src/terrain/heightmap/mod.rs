@@ -129,15 +129,7 @@ pub fn named_as_data_set(path: &Path) -> bool {
 }
 
 /// The extensions of data sets [`load`] reads: PNG, then the raw ones.
-pub const DATA_SET_EXTENSIONS: [&str; 1 + RAW_EXTENSIONS.len()] = {
-    let mut all = ["png"; 1 + RAW_EXTENSIONS.len()];
-    let mut i = 0;
-    while i < RAW_EXTENSIONS.len() {
-        all[i + 1] = RAW_EXTENSIONS[i];
-        i += 1;
-    }
-    all
-};
+pub const DATA_SET_EXTENSIONS: [&str; 3] = ["png", RAW_EXTENSIONS[0], RAW_EXTENSIONS[1]];
 
 /// [`DATA_SET_EXTENSIONS`] as a message lists them: `.png, .r16, .raw`.
 pub fn data_set_extensions() -> String {
