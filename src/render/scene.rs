@@ -178,6 +178,11 @@ pub(crate) struct Scene<'a> {
     /// What the water mirrors: `None` without reflections (the key off,
     /// a look without ripples, a view without an eye).
     pub(crate) mirror: Option<Mirror>,
+    /// Pixels a grid step would span were the grid as wide as the frame:
+    /// the unit the mirror's streaks fade by (order/mirrored.rs), so that
+    /// a frame and one drawn larger from the same grid (the quality
+    /// figure's reference) fade the same water.
+    pub(crate) frame_step: f32,
     /// Under smooth shading, where the camera stands over the ground (grid
     /// steps): each cell is split along the diagonal that suits its
     /// heights, and the camera's side of it says which face is nearer.
@@ -353,6 +358,7 @@ impl<'a> Scene<'a> {
             strata,
             relief,
             mirror,
+            frame_step: frame.width as f32 / cells.max(1) as f32,
             eye,
             style,
             clean_edges,

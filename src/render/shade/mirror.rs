@@ -63,6 +63,13 @@ const STRIDE: f32 = 3.0 / 1024.0;
 /// the outline is not between it and the samples beside it, whose look
 /// is all a point of the water blends.
 const BAND: f32 = 4.0;
+/// How many of the water's grid steps across a mirrored point's colour
+/// stands for: water a step apart mirrors land farther apart where the
+/// land stands far behind it, and near water then showed the far land's
+/// finest texture (snow, rock) one point a corner, as blocks the corners
+/// wide. Two, so that the colours of neighbouring corners overlap and
+/// blend without edges.
+const FOOTPRINT: f32 = 2.0;
 /// Water's reflectance looking straight down (Schlick's `F0`).
 const F0: f32 = 0.02;
 /// The mirror's share is Schlick's term times this, at most [`MOST`]:
@@ -97,8 +104,10 @@ const NONE: u32 = u32::MAX;
 /// What a reflected line meets.
 #[derive(Debug, Clone, Copy)]
 pub(crate) enum Seen {
-    /// The ground at grid position `at`, height `height`.
-    Land { at: Vec2, height: f32 },
+    /// The ground at grid position `at` (on a grid row), height `height`,
+    /// its colour standing for the land `across` grid steps wide there (at
+    /// least 1, see [`FOOTPRINT`]).
+    Land { at: Vec2, height: f32, across: f32 },
     /// Nothing: the sky along this direction.
     Sky(Vec3),
 }
@@ -445,13 +454,17 @@ impl Mirror {
         Vec3::new(spread * self.cell, -self.cell, slope).normalize()
     }
 
-    /// The land at sample `k` of `profile`, `height` high.
-    fn land(&self, profile: &Profile, k: usize, height: f32) -> Seen {
+    /// The land at sample `k` of `profile`, `height` high, met by a line
+    /// off the water at sample `j`.
+    fn land(&self, profile: &Profile, (j, k): (usize, usize), height: f32) -> Seen {
         let y = (self.last - self.stride * k) as f32;
         let x = self.origin.x + profile.spread * self.back(k);
+        // The lines from the eye's image spread out: water a step apart
+        // across mirrors land `back(k) / back(j)` steps apart.
         Seen::Land {
             at: Vec2::new(x, y),
             height,
+            across: (FOOTPRINT * self.back(k) / self.back(j)).max(1.0),
         }
     }
 
@@ -470,7 +483,7 @@ impl Mirror {
         let u = self.back(j);
         let dir = self.direction(profile.spread, rise / u);
         let seen = match met {
-            Some((k, height)) => self.land(profile, k, height),
+            Some((k, height)) => self.land(profile, (j, k), height),
             None => Seen::Sky(dir),
         };
         // The sight line down to the water is the reflected one, mirrored.
@@ -689,6 +702,49 @@ mod tests {
         assert!(seen(&m, &f, 32.0, 5.0, 0.0).is_none(), "behind the tower");
         // Close to the eye the line rises too steeply to meet it.
         assert!(seen(&m, &f, 32.0, 63.0, 0.0).is_none(), "at the near edge");
+    }
+
+    /// How wide the land the water at (`x`, `y`) on the sea mirrors stands
+    /// for ([`Seen::Land`]'s `across`), and where the land is. (A mirror of
+    /// its own: the sea's looks are worked out once.)
+    fn footprint(f: &Heightfield, x: f32, y: f32) -> (f32, Vec2) {
+        let found = std::cell::Cell::new(None);
+        mirror(f)
+            .look(f, Vec2::new(x, y), 0.0, 0.0, |s| {
+                if let Seen::Land { at, across, .. } = s {
+                    found.set(Some((across, at)));
+                }
+                0
+            })
+            .expect("the eye looks down at the water");
+        found
+            .get()
+            .unwrap_or_else(|| panic!("no land seen from {x}, {y}"))
+    }
+
+    /// Water mirrors land [`FOOTPRINT`] times as wide as the land its
+    /// corners a grid step apart meet: wider the nearer the water is to the
+    /// eye and the farther the land behind it (the near water's blocks of
+    /// far snow and rock, one point a corner, came from a footprint of one
+    /// point).
+    #[test]
+    fn near_water_mirrors_far_land_as_wide_as_its_corners_see_it() {
+        let f = tower(32, 10, 40.0);
+        let eye = EYE.y;
+        for y in [30.0, 45.0, 60.0] {
+            let (across, at) = footprint(&f, 32.0, y);
+            let expected = FOOTPRINT * (eye - at.y) / (eye - y);
+            assert!(
+                (across - expected).abs() < 0.1 * expected,
+                "water at {y}: {across} against {expected}"
+            );
+        }
+        let near = footprint(&f, 32.0, 60.0).0;
+        let far = footprint(&f, 32.0, 30.0).0;
+        assert!(near > 1.5 * far, "{near} against {far}");
+        // Land right behind the water: the footprint's least.
+        let (close, _) = footprint(&tower(32, 40, 40.0), 32.0, 48.0);
+        assert!((FOOTPRINT..1.25 * FOOTPRINT).contains(&close), "{close}");
     }
 
     #[test]
