@@ -9,6 +9,7 @@ pub mod load;
 pub mod looks;
 pub mod paths;
 pub mod save;
+pub mod text;
 pub mod worlds;
 
 use serde::{Deserialize, Serialize};

@@ -277,18 +277,14 @@ fn parse_set_value(raw: &str) -> Value {
 pub fn apply_file(settings: &mut Settings, path: &Path) -> Vec<Problem> {
     let source = path.display().to_string();
     match crate::fsutil::read_regular(path, crate::fsutil::MAX_PREFERENCES_BYTES) {
-        Ok(bytes) => match String::from_utf8(bytes) {
-            Ok(text) => apply_toml(settings, &text, &source),
-            Err(e) => {
-                let (line, col) = line_col_bytes(e.as_bytes(), e.utf8_error().valid_up_to());
-                let message = "not valid UTF-8 text".to_string();
-                vec![Problem {
-                    source,
-                    position: Some((line, col)),
-                    key: None,
-                    message,
-                }]
-            }
+        Ok(bytes) => match super::text::decode(bytes) {
+            Ok((text, _)) => apply_toml(settings, &text, &source),
+            Err(e) => vec![Problem {
+                source,
+                position: Some((e.line, e.column)),
+                key: None,
+                message: e.message.to_string(),
+            }],
         },
         Err(e) => vec![Problem {
             source,
@@ -297,13 +293,6 @@ pub fn apply_file(settings: &mut Settings, path: &Path) -> Vec<Problem> {
             message: format!("{CANNOT_READ}{e}"),
         }],
     }
-}
-
-fn line_col_bytes(bytes: &[u8], offset: usize) -> (usize, usize) {
-    let before = &bytes[..offset];
-    let line = before.iter().filter(|&&b| b == b'\n').count() + 1;
-    let col = before.iter().rev().take_while(|&&b| b != b'\n').count() + 1;
-    (line, col)
 }
 
 /// The settings file that ships with the program, every key commented; what

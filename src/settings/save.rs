@@ -14,6 +14,7 @@ use toml_edit::{DocumentMut, Item};
 use super::Settings;
 use super::keys::{self, KEYS, Key, Value};
 use super::load::{DEFAULT_TOML, line_col};
+use super::text::{Form, decode, encode};
 
 /// Why the preferences could not be saved. The file on disk is unchanged.
 #[derive(Debug, Clone, PartialEq)]
@@ -111,6 +112,11 @@ pub fn merge(text: &str, settings: &Settings) -> Result<String, ParseError> {
     if !out.is_empty() && !out.ends_with('\n') {
         out.push('\n');
     }
+    // The parser ends every line it writes with `\n`; a file written on
+    // Windows keeps its `\r\n` (a save changes only the values edited).
+    if text.contains("\r\n") {
+        out = out.replace("\r\n", "\n").replace('\n', "\r\n");
+    }
     Ok(out)
 }
 
@@ -136,7 +142,10 @@ const SAVE_ATTEMPTS: usize = 8;
 /// not parse is left alone and the error says where it is broken.
 pub fn save_changes(path: &Path, edited: &Settings, changed: &[&Key]) -> Result<(), SaveError> {
     for _ in 0..SAVE_ATTEMPTS {
-        let on_disk = read_text(path)?;
+        let (on_disk, form) = match read_text(path)? {
+            Some((text, form)) => (Some(text), form),
+            None => (None, Form::Utf8),
+        };
         let text = on_disk.as_deref().unwrap_or(DEFAULT_TOML);
         let mut wanted = Settings::default();
         // A syntax error is reported by `merge` below, with its position.
@@ -155,7 +164,7 @@ pub fn save_changes(path: &Path, edited: &Settings, changed: &[&Key]) -> Result<
         if on_disk.as_deref() == Some(merged.as_str()) {
             return Ok(());
         }
-        if write_unless_changed(path, &merged, &on_disk)? {
+        if write_unless_changed(path, &encode(&merged, form), &on_disk)? {
             return Ok(());
         }
     }
@@ -185,14 +194,15 @@ fn io_error(path: &Path, message: String, e: &std::io::Error) -> SaveError {
     }
 }
 
-/// The file's text now, or `None` when there is no file.
-fn read_text(path: &Path) -> Result<Option<String>, SaveError> {
+/// The file's text now and its form (a save keeps it), or `None` when
+/// there is no file.
+fn read_text(path: &Path) -> Result<Option<(String, Form)>, SaveError> {
     match crate::fsutil::read_regular(path, crate::fsutil::MAX_PREFERENCES_BYTES) {
-        Ok(bytes) => String::from_utf8(bytes).map(Some).map_err(|_| {
+        Ok(bytes) => decode(bytes).map(Some).map_err(|e| {
             text_error(
                 path,
-                None,
-                "not valid UTF-8 text; fix it with Edit file".into(),
+                Some((e.line, e.column)),
+                format!("{}; fix it with Edit file", e.message),
             )
         }),
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(None),
@@ -200,11 +210,12 @@ fn read_text(path: &Path) -> Result<Option<String>, SaveError> {
     }
 }
 
-/// Writes `merged` over the file atomically if the file still holds what
-/// `was` says (its text, or no file); false when it changed meanwhile.
+/// Writes `merged` (the file's new bytes) over the file atomically if the
+/// file still holds what `was` says (its text, or no file); false when it
+/// changed meanwhile.
 fn write_unless_changed(
     path: &Path,
-    merged: &str,
+    merged: &[u8],
     was: &Option<String>,
 ) -> Result<bool, SaveError> {
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
@@ -212,8 +223,9 @@ fn write_unless_changed(
             .map_err(|e| io_error(path, format!("cannot create {}: {e}", dir.display()), &e))?;
     }
     // Unreadable now counts as changed: the next attempt says why.
-    let unchanged = || Ok(matches!(read_text(path), Ok(now) if now == *was));
-    crate::fsutil::write_atomic_checked(path, |w| w.write_all(merged.as_bytes()), unchanged)
+    let unchanged =
+        || Ok(matches!(read_text(path), Ok(now) if now.as_ref().map(|(t, _)| t) == was.as_ref()));
+    crate::fsutil::write_atomic_checked(path, |w| w.write_all(merged), unchanged)
         .map_err(|e| io_error(path, format!("cannot write: {e}"), &e))
 }
 

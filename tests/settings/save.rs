@@ -175,6 +175,75 @@ fn a_file_that_is_not_utf8_is_never_overwritten() {
     assert_eq!(std::fs::read(&path).unwrap(), bytes);
 }
 
+/// A file written on Windows keeps its `\r\n` line endings: saving it
+/// unchanged leaves it byte for byte, and an edit changes only its value
+/// (the parser had turned every line ending into `\n`).
+#[test]
+fn windows_line_endings_are_kept() {
+    let input = "# mine\r\ncolor = \"sonar\"\r\n\r\n# more\r\nseed = 5\r\n";
+    let s = loaded(input);
+    assert_eq!(merge(input, &s).unwrap(), input);
+    let edited = Settings {
+        color: ColorMode::Mono,
+        cragginess: 12,
+        ..s
+    };
+    let out = merge(input, &edited).unwrap();
+    assert!(
+        out.starts_with("# mine\r\ncolor = \"mono\"\r\n\r\n# more\r\nseed = 5\r\n"),
+        "{out:?}"
+    );
+    assert!(!out.replace("\r\n", "").contains('\n'), "{out:?}");
+    assert_eq!(loaded(&out), edited);
+}
+
+/// A file in UTF-16 with its mark (Windows PowerShell 5's `>`, Notepad's
+/// "Unicode") is read as its text, and a save writes it back in UTF-16:
+/// its comments and keys kept, only the edited value changed. Before, the
+/// save refused it ("not valid UTF-8 text") and loading ignored it.
+#[test]
+fn a_utf16_file_is_read_and_saved_back_in_utf16() {
+    use mountains::settings::text::{Form, encode};
+    let dir = scratch("utf16");
+    let path = dir.join("mountains.toml");
+    let text = "# mine \u{2603}\r\ncolor = \"sonar\"\r\nseed = 5\r\n";
+    for form in [Form::Utf16Le, Form::Utf16Be] {
+        std::fs::write(&path, encode(text, form)).unwrap();
+        let mut read = Settings::default();
+        assert!(load::apply_file(&mut read, &path).is_empty());
+        assert_eq!((read.color, read.seed), (ColorMode::Sonar, Some(5)));
+        let edited = Settings {
+            color: ColorMode::Mono,
+            ..read
+        };
+        save::save(&path, &edited).unwrap();
+        let saved = std::fs::read(&path).unwrap();
+        let expected = text.replace("\"sonar\"", "\"mono\"");
+        assert_eq!(saved, encode(&expected, form), "{form:?}");
+    }
+}
+
+/// A UTF-16 file whose text breaks is refused where it breaks, and left
+/// as it is.
+#[test]
+fn a_broken_utf16_file_is_never_overwritten() {
+    let dir = scratch("utf16-broken");
+    let path = dir.join("mountains.toml");
+    let mut bytes = vec![0xff, 0xfe];
+    for c in "seed = 5\n# ".bytes() {
+        bytes.extend([c, 0]);
+    }
+    bytes.extend(0xdc00u16.to_le_bytes());
+    std::fs::write(&path, &bytes).unwrap();
+    let err = save::save(&path, &Settings::default()).unwrap_err();
+    assert_eq!(err.position, Some((2, 3)), "{err}");
+    assert!(err.to_string().contains("not valid UTF-16 text"), "{err}");
+    assert_eq!(std::fs::read(&path).unwrap(), bytes);
+    let problems = load::apply_file(&mut Settings::default(), &path);
+    assert_eq!(problems.len(), 1, "{problems:?}");
+    assert_eq!(problems[0].position, Some((2, 3)));
+}
+
 #[test]
 fn an_invalid_value_is_never_saved() {
     let dir = scratch("invalid");
