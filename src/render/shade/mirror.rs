@@ -12,9 +12,12 @@
 //! mirror image below sea level, so a profile also holds, for each of its
 //! samples, the first sample a line off the sea there meets (one sweep
 //! from the back), and what the water there mirrors, worked out the first
-//! time a face asks. A lake's lines are followed along the profile. A
-//! point of the water shows the four samples around it blended: the two
-//! profiles either side and, along each, the samples either side.
+//! time a face asks. A lake's lines are followed along the profile (what
+//! they show kept, for one lake's level a profile). A point of the water
+//! shows the four samples around it blended: the two profiles either side
+//! and, along each, the samples either side. What a line meets stands for
+//! as wide a piece of the land as the water's points a grid step apart see
+//! there ([`FOOTPRINT`]).
 //!
 //! A line off the sea also knows how far it passes over the land (its
 //! margin: negative where it meets it), which runs on smoothly from one
