@@ -58,19 +58,6 @@ impl fmt::Display for Problem {
     }
 }
 
-/// The 1-based line and column of byte `offset` in `text`.
-pub(crate) fn line_col(text: &str, offset: usize) -> (usize, usize) {
-    let before = &text[..offset.min(text.len())];
-    let line = before.matches('\n').count() + 1;
-    let col = before
-        .rfind('\n')
-        .map_or(before, |i| &before[i + 1..])
-        .chars()
-        .count()
-        + 1;
-    (line, col)
-}
-
 /// What a TOML value that no key takes is, in words.
 fn kind_of(item: &Item) -> &'static str {
     match item.as_value() {

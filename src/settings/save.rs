@@ -13,8 +13,8 @@ use toml_edit::{DocumentMut, Item};
 
 use super::Settings;
 use super::keys::{self, KEYS, Key, Value};
-use super::load::{DEFAULT_TOML, line_col};
-use super::text::{Form, decode, encode};
+use super::load::DEFAULT_TOML;
+use super::text::{Form, decode, encode, line_col};
 
 /// Why the preferences could not be saved. The file on disk is unchanged.
 #[derive(Debug, Clone, PartialEq)]
@@ -101,8 +101,10 @@ pub fn merge(text: &str, settings: &Settings) -> Result<String, ParseError> {
             }
             Some(_) => {}
             None if wanted != keys::under_look(settings.look, key, keys::get(&defaults, key)) => {
-                let gap = added || !(text.is_empty() || text.ends_with("\n\n"));
-                append_key(&mut doc, key, &wanted, gap);
+                if !added {
+                    drop_blank_end(&mut doc);
+                }
+                append_key(&mut doc, key, &wanted, added || !text.is_empty());
                 added = true;
             }
             None => {}
@@ -114,10 +116,26 @@ pub fn merge(text: &str, settings: &Settings) -> Result<String, ParseError> {
     }
     // The parser ends every line it writes with `\n`; a file written on
     // Windows keeps its `\r\n` (a save changes only the values edited).
-    if text.contains("\r\n") {
+    // A file of mixed endings is left to the parser's.
+    if windows_lines(text) {
         out = out.replace("\r\n", "\n").replace('\n', "\r\n");
     }
     Ok(out)
+}
+
+/// Drops the blank lines `doc` ends with: the parser writes them after
+/// every key added, so a file ending in a blank line got its new keys with
+/// none before them and the blank line after.
+fn drop_blank_end(doc: &mut DocumentMut) {
+    let blank = doc.trailing().as_str().is_some_and(|t| t.trim().is_empty());
+    if blank {
+        doc.set_trailing("");
+    }
+}
+
+/// Whether every line of `text` ends with `\r\n` (and one does).
+fn windows_lines(text: &str) -> bool {
+    text.contains("\r\n") && !text.replace("\r\n", "").contains('\n')
 }
 
 /// Saves `settings` into the file at `path`, atomically: every key takes

@@ -2,14 +2,18 @@
 //! UTF-8 (with or without a byte-order mark), a file may be UTF-16 with a
 //! mark: what Windows PowerShell 5 writes with `>` and `Out-File`, and
 //! Notepad's "Unicode". Such a file is read as its text (it was ignored,
-//! the defaults used, with "not valid UTF-8 text"), and a save writes it
-//! back in its own form.
+//! the defaults used, with "not valid UTF-8 text"), and a save writes
+//! every file back in its own form, mark and all. (UTF-16 without a mark
+//! reads as UTF-8 with a NUL after each character: the TOML parser then
+//! names the first.)
 
 /// How a preferences file's text is stored.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Form {
     /// UTF-8, as written from the commented defaults.
     Utf8,
+    /// UTF-8 after a byte-order mark (older Notepad's "UTF-8").
+    Utf8Bom,
     /// UTF-16 with a byte-order mark, little-endian (Windows').
     Utf16Le,
     /// UTF-16 with a byte-order mark, big-endian.
@@ -33,16 +37,8 @@ pub fn decode(bytes: Vec<u8>) -> Result<(String, Form), NotText> {
     let form = match bytes.as_slice() {
         [0xff, 0xfe, ..] => Form::Utf16Le,
         [0xfe, 0xff, ..] => Form::Utf16Be,
-        _ => {
-            return match String::from_utf8(bytes) {
-                Ok(text) => Ok((text, Form::Utf8)),
-                Err(e) => {
-                    let valid = &e.as_bytes()[..e.utf8_error().valid_up_to()];
-                    let before = std::str::from_utf8(valid).unwrap_or_default();
-                    Err(not_text(before, "not valid UTF-8 text"))
-                }
-            };
-        }
+        [0xef, 0xbb, 0xbf, ..] => return utf8(bytes[3..].to_vec(), Form::Utf8Bom),
+        _ => return utf8(bytes, Form::Utf8),
     };
     let message = "not valid UTF-16 text";
     let body = &bytes[2..];
@@ -65,11 +61,24 @@ pub fn decode(bytes: Vec<u8>) -> Result<(String, Form), NotText> {
     }
 }
 
+/// The text of UTF-8 `bytes` (after any mark), kept in `form`.
+fn utf8(bytes: Vec<u8>, form: Form) -> Result<(String, Form), NotText> {
+    match String::from_utf8(bytes) {
+        Ok(text) => Ok((text, form)),
+        Err(e) => {
+            let valid = &e.as_bytes()[..e.utf8_error().valid_up_to()];
+            let before = std::str::from_utf8(valid).unwrap_or_default();
+            Err(not_text(before, "not valid UTF-8 text"))
+        }
+    }
+}
+
 /// `text` stored in `form` (with its byte-order mark for UTF-16).
 pub fn encode(text: &str, form: Form) -> Vec<u8> {
     let units = text.encode_utf16();
     match form {
         Form::Utf8 => text.as_bytes().to_vec(),
+        Form::Utf8Bom => [0xef, 0xbb, 0xbf].into_iter().chain(text.bytes()).collect(),
         Form::Utf16Le => [0xff, 0xfe]
             .into_iter()
             .chain(units.flat_map(u16::to_le_bytes))
@@ -81,10 +90,22 @@ pub fn encode(text: &str, form: Form) -> Vec<u8> {
     }
 }
 
+/// The 1-based line and column of byte `offset` in `text`.
+pub(crate) fn line_col(text: &str, offset: usize) -> (usize, usize) {
+    let before = &text[..offset.min(text.len())];
+    let line = before.matches('\n').count() + 1;
+    let col = before
+        .rfind('\n')
+        .map_or(before, |i| &before[i + 1..])
+        .chars()
+        .count()
+        + 1;
+    (line, col)
+}
+
 /// The place just after `before`, the text read so far.
 fn not_text(before: &str, message: &'static str) -> NotText {
-    let line = before.matches('\n').count() + 1;
-    let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    let (line, column) = line_col(before, before.len());
     NotText {
         line,
         column,
@@ -121,6 +142,19 @@ mod tests {
             bytes.extend([c, 0]);
         }
         assert_eq!(decode(bytes).unwrap().0, "seed = 5\r\n");
+    }
+
+    #[test]
+    fn a_utf8_mark_is_kept_and_a_mark_alone_is_an_empty_file() {
+        let bytes = b"\xef\xbb\xbfseed = 5\n".to_vec();
+        let (text, form) = decode(bytes.clone()).unwrap();
+        assert_eq!((text.as_str(), form), ("seed = 5\n", Form::Utf8Bom));
+        assert_eq!(encode(&text, form), bytes);
+        for mark in [&[0xef, 0xbb, 0xbf][..], &[0xff, 0xfe], &[0xfe, 0xff]] {
+            let (text, form) = decode(mark.to_vec()).unwrap();
+            assert!(text.is_empty());
+            assert_eq!(encode("", form), mark);
+        }
     }
 
     #[test]

@@ -177,7 +177,8 @@ fn a_file_that_is_not_utf8_is_never_overwritten() {
 
 /// A file written on Windows keeps its `\r\n` line endings: saving it
 /// unchanged leaves it byte for byte, and an edit changes only its value
-/// (the parser had turned every line ending into `\n`).
+/// (the parser had turned every line ending into `\n`); a key added after
+/// its blank last line gets one blank line before it, not two.
 #[test]
 fn windows_line_endings_are_kept() {
     let input = "# mine\r\ncolor = \"sonar\"\r\n\r\n# more\r\nseed = 5\r\n";
@@ -195,19 +196,32 @@ fn windows_line_endings_are_kept() {
     );
     assert!(!out.replace("\r\n", "").contains('\n'), "{out:?}");
     assert_eq!(loaded(&out), edited);
+    // A key added after a file's blank last line: one blank line before it.
+    let added = merge("seed = 5\r\n\r\n", &edited).unwrap();
+    assert!(added.starts_with("seed = 5\r\n\r\n# "), "{added:?}");
+    assert!(!added.ends_with("\r\n\r\n"), "{added:?}");
+    let unix = merge("seed = 5\n\n", &edited).unwrap();
+    assert_eq!(unix.replace('\n', "\r\n"), added);
+    // Mixed endings are no Windows file: the parser's `\n` throughout.
+    let mixed = "seed = 5\r\ncolor = \"sonar\"\n";
+    assert_eq!(
+        merge(mixed, &loaded(mixed)).unwrap(),
+        "seed = 5\ncolor = \"sonar\"\n"
+    );
 }
 
 /// A file in UTF-16 with its mark (Windows PowerShell 5's `>`, Notepad's
 /// "Unicode") is read as its text, and a save writes it back in UTF-16:
 /// its comments and keys kept, only the edited value changed. Before, the
-/// save refused it ("not valid UTF-8 text") and loading ignored it.
+/// save refused it ("not valid UTF-8 text") and loading ignored it. A
+/// UTF-8 file's mark (older Notepad's) is kept too; a save dropped it.
 #[test]
 fn a_utf16_file_is_read_and_saved_back_in_utf16() {
     use mountains::settings::text::{Form, encode};
     let dir = scratch("utf16");
     let path = dir.join("mountains.toml");
     let text = "# mine \u{2603}\r\ncolor = \"sonar\"\r\nseed = 5\r\n";
-    for form in [Form::Utf16Le, Form::Utf16Be] {
+    for form in [Form::Utf16Le, Form::Utf16Be, Form::Utf8Bom] {
         std::fs::write(&path, encode(text, form)).unwrap();
         let mut read = Settings::default();
         assert!(load::apply_file(&mut read, &path).is_empty());

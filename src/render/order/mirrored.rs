@@ -91,10 +91,15 @@ impl Scene<'_> {
     /// position `g` on `level` takes (0..=1). The tilt shifts each point's
     /// image up or down: where a grid step of the water spans many pixels,
     /// each cell mirrored a slice of its own, a mosaic; it fades there.
-    pub(super) fn tilt_share(&self, g: Vec2, level: f32) -> f32 {
+    fn tilt_share(&self, g: Vec2, level: f32) -> f32 {
         let a = self.view.project(g.x, g.y, level);
         let b = self.view.project(g.x + 1.0, g.y, level);
         let steps = (b - a).length() / self.frame_step;
+        // Not a number (no frame): the whole tilt, as before the fade (a
+        // NaN share would tilt the line the most the mirror allows).
+        if steps.is_nan() {
+            return 1.0;
+        }
         1.0 - ((steps - TILT_FULL) / (TILT_NONE - TILT_FULL)).clamp(0.0, 1.0)
     }
 
@@ -121,11 +126,15 @@ impl Scene<'_> {
 
     /// The land at grid position `p` (on a grid row), height `h`, seen in
     /// water at `level`, standing for the land `across` grid steps wide
-    /// there: the mean of the grid points of its row over that width,
-    /// each weighted by how much of the width is nearest to it (so the
-    /// colour moves smoothly as `p` moves), at most [`TAPS`] of them; hazed
-    /// as far as its image below the water lies from the eye.
+    /// there: the mean of its row's points over that width, each weighted
+    /// by how much of the width is nearest to it (so the colour moves
+    /// smoothly as `p` moves); over [`TAPS`] steps wide, of [`TAPS`]
+    /// points spread evenly across it (each its nearest grid point), and
+    /// past the grid's edge its edge point again. Hazed as far as its
+    /// image below the water lies from the eye.
     fn mirrored_land(&self, p: Vec2, h: f32, level: f32, across: f32) -> u32 {
+        // At least a point's own step: the weights below then sum to over 0.
+        let across = across.max(1.0);
         let last = self.cells();
         let y = index(p.y.round().clamp(0.0, last as f32));
         // Points `step` apart (one grid step, or more where the width

@@ -16,8 +16,8 @@
 //! they show kept, for one lake's level a profile). A point of the water
 //! shows the four samples around it blended: the two profiles either side
 //! and, along each, the samples either side. What a line meets stands for
-//! as wide a piece of the land as the water's points a grid step apart see
-//! there ([`FOOTPRINT`]).
+//! a piece of the land [`FOOTPRINT`] times as wide as the water's points a
+//! grid step apart see there.
 //!
 //! A line off the sea also knows how far it passes over the land (its
 //! margin: negative where it meets it), which runs on smoothly from one
