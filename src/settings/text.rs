@@ -33,11 +33,14 @@ pub struct NotText {
 }
 
 /// The text of a preferences file's `bytes`, and its form.
-pub fn decode(bytes: Vec<u8>) -> Result<(String, Form), NotText> {
+pub fn decode(mut bytes: Vec<u8>) -> Result<(String, Form), NotText> {
     let form = match bytes.as_slice() {
         [0xff, 0xfe, ..] => Form::Utf16Le,
         [0xfe, 0xff, ..] => Form::Utf16Be,
-        [0xef, 0xbb, 0xbf, ..] => return utf8(bytes[3..].to_vec(), Form::Utf8Bom),
+        [0xef, 0xbb, 0xbf, ..] => {
+            bytes.drain(..3);
+            return utf8(bytes, Form::Utf8Bom);
+        }
         _ => return utf8(bytes, Form::Utf8),
     };
     let message = "not valid UTF-16 text";
@@ -73,7 +76,7 @@ fn utf8(bytes: Vec<u8>, form: Form) -> Result<(String, Form), NotText> {
     }
 }
 
-/// `text` stored in `form` (with its byte-order mark for UTF-16).
+/// `text` stored in `form` (with its byte-order mark, if the form has one).
 pub fn encode(text: &str, form: Form) -> Vec<u8> {
     let units = text.encode_utf16();
     match form {
