@@ -149,3 +149,48 @@ fn deeper_water_is_never_lighter_on_screen() {
         last = l;
     }
 }
+
+/// The palette of `world` on a small island under a sun `elevation`
+/// degrees up, and its shallowest water's luminance.
+fn shallow_water_under(world: mountains::settings::World, elevation: f32) -> u32 {
+    use mountains::render::hour::SunAt;
+    use mountains::render::light::Lighting;
+    let field = ramp(7.3, 2.0);
+    let s = Settings {
+        world,
+        ..Settings::default()
+    };
+    let light = Lighting::at_hour(SunAt {
+        elevation,
+        azimuth: 60.0,
+        afternoon: false,
+    });
+    luminance(Palette::lit_by(&s, &field, light).water(0.0))
+}
+
+/// A world's water takes the light the land does: under a sun two degrees
+/// up it is darker than at midday (its colour was the midday's at every
+/// hour, and an alpine tarn at dawn shone turquoise out of a dim valley).
+/// The temperate world's water keeps its pixels.
+#[test]
+fn a_worlds_water_is_dimmer_under_a_low_sun() {
+    use mountains::settings::World;
+    for world in [World::Alpine, World::Winter, World::Tropical, World::Autumn] {
+        let (low, high) = (
+            shallow_water_under(world, 2.0),
+            shallow_water_under(world, 40.0),
+        );
+        assert!(
+            (low as f32) < 0.85 * high as f32,
+            "{world:?}: {low} at 2 degrees against {high} at 40"
+        );
+    }
+    let (low, high) = (
+        shallow_water_under(World::Temperate, 2.0),
+        shallow_water_under(World::Temperate, 40.0),
+    );
+    assert!(
+        (low as f32) > 0.9 * high as f32,
+        "temperate: {low} against {high}"
+    );
+}

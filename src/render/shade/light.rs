@@ -308,6 +308,20 @@ impl Lighting {
         [0, 1, 2].map(|i| self.direct[i] * direct + self.ambient[i] * sky)
     }
 
+    /// How bright level open ground is under this light against under
+    /// [`MIDDAY`]'s, at most 1: by it a world's water colour, tuned in the
+    /// midday sun, dims under a low sun or a dull day, as the land does
+    /// (the palette's `lit_water`).
+    pub(crate) fn level_share(&self) -> f32 {
+        let midday = luminance(Self::at(&MIDDAY, 0.0).on(Vec3::Z, 1.0));
+        let here = luminance(self.on(Vec3::Z, 1.0));
+        if here.is_finite() && midday > 0.0 {
+            (here / midday).clamp(0.0, 1.0)
+        } else {
+            1.0
+        }
+    }
+
     /// Of the light [`Lighting::on_under`] gives a face along unit
     /// `normal` (its brightness), the share the direct light brings per
     /// unit of its cosine, and the share the sky brings per unit of the

@@ -202,6 +202,7 @@ impl Palette {
             night: lighting.night,
             world: settings.world,
             draw: zones.draw,
+            lit: lighting.level_share(),
         };
         let listing = (settings.look == Look::FractalMountainClimbing
             && matches!(mode, ColorMode::Natural | ColorMode::Mono))
@@ -739,6 +740,20 @@ struct Waters {
     world: World,
     /// The mountain's draw within its world (`cover::draw`).
     draw: f32,
+    /// How much of its midday brightness a world's water keeps in this
+    /// light ([`Lighting::level_share`]); the temperate's keeps its own.
+    lit: f32,
+}
+
+/// A world's water colour `c` in the light of `w`: by day, dimmed by the
+/// square root of how dim level ground is against the midday sun (the
+/// whole of it turned a low sun's ice to mud, the mirror, unchanged, then
+/// showing more than the ice); the night's look dims it on its own
+/// (`night::water`).
+fn lit_water(c: Rgb, w: &Waters) -> Rgb {
+    let lit = w.lit.sqrt();
+    let k = lit + (1.0 - lit) * w.night.clamp(0.0, 1.0);
+    c.map(|v| v * k)
 }
 
 /// Water colours by depth and the depth-to-bin scale.
@@ -753,8 +768,8 @@ fn water_table(mode: ColorMode, w: &Waters, gain: f32, offset: f32) -> (Box<[u32
                     mix(natural::SHALLOW, natural::DEEP, t.sqrt())
                 }
                 (false, World::Temperate | World::Varied) => natural::SEA,
-                (true, world) => cover::water(world, t, w.draw),
-                (false, world) => cover::water(world, 0.35, w.draw),
+                (true, world) => lit_water(cover::water(world, t, w.draw), w),
+                (false, world) => lit_water(cover::water(world, 0.35, w.draw), w),
             };
             let c = w.reflected.map_or(c, |sky| mix(c, sky, WATER_REFLECTS));
             let c = night::water(c, w.night);
