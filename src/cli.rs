@@ -295,9 +295,12 @@ impl Parser<'_> {
                 )));
             }
             if v.is_empty() {
-                return Err(UsageError(format!(
-                    "{arg}: an empty value; give a file name"
-                )));
+                let wanted = match long {
+                    "--set" => "give key=value",
+                    "--size" => "give WIDTHxHEIGHT, e.g. 1920x1080",
+                    _ => "give a file name",
+                };
+                return Err(UsageError(format!("{arg}: an empty value; {wanted}")));
             }
             Ok(v)
         };
@@ -379,15 +382,33 @@ impl Parser<'_> {
                     output: PathBuf::new(),
                 }));
             }
-            _ => return self.key_flag(arg).map(|()| None),
+            // `--cragginess=40`: a key's flag takes `--flag=VALUE` as every
+            // other flag does.
+            _ => match inline {
+                Some(v) if key_flags::lookup(&flag).is_some() => {
+                    return self.key_flag_with(&flag, Some(v)).map(|()| None);
+                }
+                _ => return self.key_flag(arg).map(|()| None),
+            },
         }
         Ok(None)
     }
 
     /// A preference key given as a flag of its own (`-cragginess 40`).
     fn key_flag(&mut self, arg: &str) -> Result<(), UsageError> {
+        self.key_flag_with(arg, None)
+    }
+
+    /// As [`Self::key_flag`], the value given inline (`--seed=5`) if `inline`.
+    fn key_flag_with(&mut self, arg: &str, inline: Option<String>) -> Result<(), UsageError> {
         let (key, own) = key_flags::lookup(arg).ok_or_else(|| unknown_argument(arg))?;
-        let kv = key_flags::take(arg, key, own, || self.value_str(arg).ok())?;
+        let kv = match (inline, own) {
+            (Some(_), Some(false)) => {
+                return Err(UsageError(format!("{arg} takes no value")));
+            }
+            (Some(v), _) => (key.name.to_string(), v),
+            (None, _) => key_flags::take(arg, key, own, || self.value_str(arg).ok())?,
+        };
         // Checked here, against the defaults (a value's range and type do
         // not depend on the other keys), so the message names the flag typed.
         let mut scratch = crate::settings::Settings::default();

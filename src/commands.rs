@@ -29,6 +29,9 @@ pub fn mountain(settings: &Settings, open: Option<&Path>) -> Result<Mountain, St
 
 /// `mountains render`: one complete mountain to a PNG.
 pub fn render(settings: &Settings, open: Option<&Path>, size: Size, output: &Path) -> ExitCode {
+    if let Some(code) = refuse_a_terminal(output).or_else(|| refuse_the_data_set(open, output)) {
+        return code;
+    }
     let Some(mut frame) = Frame::new(size.width, size.height) else {
         let pixels = size.pixels();
         if pixels > crate::render::frame::MAX_PIXELS {
@@ -82,6 +85,9 @@ fn work_exponent(settings: &Settings, open: Option<&Path>) -> u32 {
 /// `mountains heightmap`: generate a data set and save it as a 16-bit PNG,
 /// or as raw 16-bit samples (`.r16`, `.raw`), whose height range it prints.
 pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> ExitCode {
+    if let Some(code) = refuse_a_terminal(output) {
+        return code;
+    }
     if let Err(mib) = crate::memory::room_to_work(work_exponent(settings, open)) {
         return fail(&format!(
             "not enough memory to make the data set: about {mib} MiB is needed"
@@ -115,6 +121,30 @@ pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> Exi
         return fail(&format!("-o {e}"));
     }
     console::status(print_seed(seed, output), ExitCode::SUCCESS)
+}
+
+/// `-o -` on a terminal would fill it with binary (as `--open -` from a
+/// terminal would wait for ever, which is refused too).
+fn refuse_a_terminal(output: &Path) -> Option<ExitCode> {
+    use std::io::IsTerminal;
+    (output == Path::new("-") && std::io::stdout().is_terminal()).then(|| {
+        console::error("-o -: standard output is a terminal; redirect it (-o - > file) or pipe it");
+        ExitCode::from(EXIT_USAGE)
+    })
+}
+
+/// `render --open X -o X` would put the picture in place of the data set
+/// it was drawn from, which no one asks for on purpose. The two paths are
+/// compared resolved, never opened (a FIFO's open would wait).
+fn refuse_the_data_set(open: Option<&Path>, output: &Path) -> Option<ExitCode> {
+    let (open, output_at) = (open?.canonicalize().ok()?, output.canonicalize().ok()?);
+    (open == output_at).then(|| {
+        console::error(&format!(
+            "-o {}: is the data set --open reads; give the picture another name",
+            output.display()
+        ));
+        ExitCode::from(EXIT_USAGE)
+    })
 }
 
 /// Says which seed made the file.
@@ -183,13 +213,19 @@ pub fn check_config(
             file.display()
         ));
     }
+    let mut mistyped = false;
     for (key, value) in sets {
         if let Err(p) = load::apply_set(&mut settings, key, value) {
             problems.push(p);
+            mistyped = true;
         }
     }
     for line in load::report_with(&problems, |p| console::error_line(&p.to_string())) {
         console::err(&line);
+    }
+    if mistyped {
+        // A `--set` is typed for the run: a usage error, as in every mode.
+        return ExitCode::from(EXIT_USAGE);
     }
     if !problems.is_empty() {
         return ExitCode::FAILURE;

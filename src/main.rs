@@ -123,6 +123,8 @@ fn problem_warnings(loaded: &load::Loaded) -> Vec<String> {
     let what = |p: &load::Problem| {
         if p.is_unreadable() {
             "using the defaults"
+        } else if p.drops_the_file() {
+            "nothing in the file was used: using the defaults"
         } else if p.is_unknown_key() {
             "ignored"
         } else {

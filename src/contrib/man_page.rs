@@ -26,7 +26,10 @@ pub fn man_page() -> String {
             "{}. Allowed: {}; default {}. In the preferences file: \\fB{}\\fP.",
             escape(k.doc),
             escape(&k.kind.allowed()),
-            escape(&default_text(k)),
+            escape(&match default_text(k) {
+                t if t.is_empty() => "\"\"".to_string(),
+                t => t,
+            }),
             k.name.replace('_', "\\_")
         );
     }

@@ -30,6 +30,9 @@ pub struct Problem {
 
 /// How the problem of a file that could not be read at all begins.
 const CANNOT_READ: &str = "cannot read: ";
+/// How the problem of a file that is not TOML begins: a syntax error stops
+/// the reading, so nothing in the file is used ([`apply_toml`]).
+const NOT_TOML: &str = "not valid TOML: ";
 
 impl Problem {
     /// The file could not be read at all (missing, not a regular file, too
@@ -42,6 +45,15 @@ impl Problem {
     /// rest of the file still means what it says.
     pub fn is_unknown_key(&self) -> bool {
         self.key.as_deref().is_some_and(|k| keys::find(k).is_none())
+    }
+
+    /// Nothing in the file was used: it could not be read, is not text
+    /// (`text::decode`'s refusal), or is not TOML (a
+    /// syntax error stops the reading, see [`apply_toml`]).
+    pub fn drops_the_file(&self) -> bool {
+        self.is_unreadable()
+            || self.message.starts_with(NOT_TOML)
+            || [super::text::NOT_UTF8, super::text::NOT_UTF16].contains(&self.message.as_str())
     }
 }
 
@@ -84,14 +96,21 @@ fn explain(message: &str, line: &str) -> (Option<String>, String) {
     if value_missing {
         return (key, "nothing after `=`; give a value".to_string());
     }
+    // A number too large for TOML: name its key, so the hint fits it.
+    if message.contains("overflow") {
+        return (key, message.to_string());
+    }
     (None, message.to_string())
 }
 
-/// What to do about a TOML error a person is likely to meet.
-fn hint(message: &str) -> &'static str {
-    if message.contains("overflow") {
+/// What to do about a TOML error a person is likely to meet, on the key
+/// `key` (if known).
+fn hint(message: &str, key: Option<&str>) -> &'static str {
+    if message.contains("overflow") && key == Some("seed") {
         // TOML integers stop at 2^63-1; our seeds go to 2^64-1.
         "; a seed above 9223372036854775807 is written in quotes, e.g. seed = \"18446744073709551615\""
+    } else if message.contains("overflow") {
+        "; no key takes a number this large (`mountains --help` lists each key's range)"
     } else {
         ""
     }
@@ -171,7 +190,7 @@ pub fn apply_toml(settings: &mut Settings, text: &str, source: &str) -> Vec<Prob
             let line = start.map_or("", |o| lines.line_of(o));
             // toml_edit names neither the key of a duplicate nor a missing value.
             let (key, said) = explain(e.message(), line);
-            let message = format!("not valid TOML: {said}{}", hint(e.message()));
+            let message = format!("{NOT_TOML}{said}{}", hint(e.message(), key.as_deref()));
             return vec![Problem {
                 source: source.into(),
                 position: at(start),
@@ -327,7 +346,9 @@ pub fn resolve(
     let mut settings = Settings::default();
     let file = match config {
         Some(p) => Some(p.to_path_buf()),
-        None => super::paths::config_file().filter(|p| p.exists()),
+        // A link to nowhere is a file that cannot be read, said as one
+        // (`exists` follows the link, and the file was passed over).
+        None => super::paths::config_file().filter(|p| p.symlink_metadata().is_ok()),
     };
     let new_file =
         |p: &Path| unreadable == Unreadable::NewIfMissing && config.is_some() && !p.exists();

@@ -13,7 +13,7 @@ use toml_edit::{DocumentMut, Item};
 
 use super::Settings;
 use super::keys::{self, KEYS, Key, Value};
-use super::load::DEFAULT_TOML;
+use super::load::{DEFAULT_TOML, Problem};
 use super::text::{Form, decode, encode, line_col};
 
 /// Why the preferences could not be saved. The file on disk is unchanged.
@@ -166,18 +166,24 @@ pub fn save_changes(path: &Path, edited: &Settings, changed: &[&Key]) -> Result<
         };
         let text = on_disk.as_deref().unwrap_or(DEFAULT_TOML);
         let mut wanted = Settings::default();
-        // A syntax error is reported by `merge` below, with its position.
-        let _ = super::load::apply_toml(&mut wanted, text, "");
+        // A syntax error is reported by `merge` below, with its position,
+        // in the words loading uses (`read`'s problem).
+        let read = super::load::apply_toml(&mut wanted, text, "");
         for key in changed {
             let value = checked_value(edited, key).map_err(|m| text_error(path, None, m))?;
             keys::apply(&mut wanted, key, &value).map_err(|m| text_error(path, None, m))?;
         }
         let merged = merge(text, &wanted).map_err(|e| {
-            text_error(
-                path,
-                e.position,
-                format!("not valid TOML ({}); not saved", e.message),
-            )
+            let said = match read.iter().find(|p| p.drops_the_file()) {
+                Some(Problem {
+                    key: Some(k),
+                    message,
+                    ..
+                }) => format!("key `{k}`: {message}"),
+                Some(p) => p.message.clone(),
+                None => format!("not valid TOML ({})", e.message),
+            };
+            text_error(path, e.position, format!("{said}; not saved"))
         })?;
         if on_disk.as_deref() == Some(merged.as_str()) {
             return Ok(());

@@ -32,6 +32,12 @@ pub struct NotText {
     pub message: &'static str,
 }
 
+/// What [`NotText`] says of bytes that are not UTF-8 text.
+pub const NOT_UTF8: &str = "not valid UTF-8 text";
+/// What [`NotText`] says of bytes behind a UTF-16 mark that are not UTF-16
+/// text.
+pub const NOT_UTF16: &str = "not valid UTF-16 text";
+
 /// The text of a preferences file's `bytes`, and its form.
 pub fn decode(mut bytes: Vec<u8>) -> Result<(String, Form), NotText> {
     let form = match bytes.as_slice() {
@@ -43,7 +49,7 @@ pub fn decode(mut bytes: Vec<u8>) -> Result<(String, Form), NotText> {
         }
         _ => return utf8(bytes, Form::Utf8),
     };
-    let message = "not valid UTF-16 text";
+    let message = NOT_UTF16;
     let body = &bytes[2..];
     // An odd byte at the end is no character: refused after the rest.
     let (whole, odd) = body.split_at(body.len() & !1);
@@ -71,7 +77,7 @@ fn utf8(bytes: Vec<u8>, form: Form) -> Result<(String, Form), NotText> {
         Err(e) => {
             let valid = &e.as_bytes()[..e.utf8_error().valid_up_to()];
             let before = std::str::from_utf8(valid).unwrap_or_default();
-            Err(not_text(before, "not valid UTF-8 text"))
+            Err(not_text(before, NOT_UTF8))
         }
     }
 }

@@ -253,6 +253,85 @@ fn render_warns_about_a_broken_config_value_and_draws_on_the_default() {
     assert_eq!(std::fs::read_to_string(&config).unwrap(), text);
 }
 
+/// A file that is not TOML, or not text, is used not at all (a syntax
+/// error stops the reading): the warning says so, where a bad value's says
+/// that its key keeps the default.
+#[test]
+fn render_says_when_nothing_in_a_broken_file_was_used() {
+    let dir = scratch("unused");
+    let warning = |name: &str, bytes: &[u8]| {
+        let config = dir.join(name);
+        std::fs::write(&config, bytes).unwrap();
+        let out = dir.join("x.png");
+        let o = mountains(&[
+            "render",
+            "--config",
+            &arg(&config),
+            "--size",
+            "16x9",
+            "-o",
+            &arg(&out),
+        ]);
+        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+        assert_eq!(std::fs::read(&config).unwrap(), bytes);
+        stderr(&o)
+    };
+    for (name, bytes) in [
+        ("syntax.toml", &b"seed = 5\ncragginess = \n"[..]),
+        ("latin1.toml", &b"seed = 5\n# caf\xe9\n"[..]),
+    ] {
+        let err = warning(name, bytes);
+        assert!(
+            err.contains("nothing in the file was used: using the defaults"),
+            "{name}: {err}"
+        );
+    }
+    let err = warning("value.toml", b"seed = 5\ncragginess = 500\n");
+    assert!(
+        err.contains("using the default") && !err.contains("nothing in the file"),
+        "{err}"
+    );
+}
+
+/// A key's flag takes its value after `=` as every other flag does, and a
+/// flag that is a value of its own (`--no-shadows`) takes none.
+#[test]
+fn a_key_flag_takes_its_value_after_an_equals_sign() {
+    let dir = scratch("equals");
+    let (a, b) = (dir.join("a.png"), dir.join("b.png"));
+    let o = mountains(&[
+        "render",
+        "--seed=5",
+        "--color=sonar",
+        "--size",
+        "32x18",
+        "-o",
+        &arg(&a),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(String::from_utf8_lossy(&o.stdout).starts_with("seed 5 -> "));
+    let o = mountains(&[
+        "render",
+        "--set",
+        "seed=5",
+        "--set",
+        "color=sonar",
+        "--size",
+        "32x18",
+        "-o",
+        &arg(&b),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(std::fs::read(&a).unwrap(), std::fs::read(&b).unwrap());
+    let o = mountains(&["render", "--no-shadows=true", "-o", &arg(&a)]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("--no-shadows takes no value"),
+        "{}",
+        stderr(&o)
+    );
+}
+
 /// `--set` is typed for this one run: a bad value is an error, said as one,
 /// and nothing is drawn.
 #[test]
@@ -567,8 +646,9 @@ fn check_config_without_a_file_is_fine_and_honours_config_and_set() {
         "{}",
         stderr(&o)
     );
+    // A `--set` is typed for the run: a usage error (docs/refusals.md).
     let o = mountains(&["--check-config", "--set", "color=pink"]);
-    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("--set: key `color`"), "{}", stderr(&o));
     let missing = dir.join("missing.toml");
     let o = mountains(&["--check-config", missing.to_str().unwrap()]);

@@ -387,6 +387,14 @@ fn messages_name_what_was_typed() {
         err.contains("is written in quotes, e.g. seed = \"18446744073709551615\""),
         "{err}"
     );
+    // Another key's number too large for TOML is named, with no seed's hint.
+    let err = check("cragginess = 99999999999999999999\n");
+    assert!(
+        err.contains("1:14: key `cragginess`: not valid TOML")
+            && err.contains("no key takes a number this large")
+            && !err.contains("seed ="),
+        "{err}"
+    );
     let (a, b) = (dir.join("loop-a.toml"), dir.join("loop-b.toml"));
     std::os::unix::fs::symlink(&b, &a).unwrap();
     std::os::unix::fs::symlink(&a, &b).unwrap();
@@ -403,10 +411,132 @@ fn messages_name_what_was_typed() {
     assert!(usage(&["--config", ""]).contains("--config: an empty value"));
     assert!(usage(&["render", "-o", ""]).contains("-o: an empty value"));
     assert!(usage(&["--open", "", "render", "-o", "x.png"]).contains("--open: an empty value"));
+    assert!(usage(&["render", "--set", ""]).contains("--set: an empty value; give key=value"));
+    assert!(usage(&["render", "--size", ""]).contains("--size: an empty value; give WIDTHxHEIGHT"));
+    // `--set` is typed for the run under `--check-config` too: exit 2.
+    let good = dir.join("good.toml");
+    std::fs::write(&good, "seed = 5\n").unwrap();
+    let err = usage(&[
+        "--check-config",
+        good.to_str().unwrap(),
+        "--set",
+        "cragginess=500",
+    ]);
+    assert!(
+        err.contains("--set: key `cragginess`: 500 is not allowed"),
+        "{err}"
+    );
     assert!(usage(&["/p", "abc"]).contains("`abc` is not a window handle"));
     let err = usage(&["--window-id", "0x100000000"]);
     assert!(
         err.contains("--window-id 0x100000000: X window ids have 32 bits"),
+        "{err}"
+    );
+}
+
+/// `-o -` on a terminal would fill it with a PNG's bytes: refused, as
+/// `--open -` from a terminal is. (A pseudo-terminal stands in for one.)
+#[cfg(target_os = "linux")]
+#[test]
+fn a_picture_is_not_written_into_a_terminal() {
+    use std::os::fd::FromRawFd;
+    let dir = scratch("terminal");
+    let (mut leader, mut follower) = (0, 0);
+    // SAFETY: openpty writes the two descriptors; no name, settings or size.
+    let made = unsafe {
+        libc::openpty(
+            &mut leader,
+            &mut follower,
+            std::ptr::null_mut(),
+            std::ptr::null(),
+            std::ptr::null(),
+        )
+    };
+    assert_eq!(made, 0, "openpty: {}", std::io::Error::last_os_error());
+    // SAFETY: both descriptors are open and owned by nothing else.
+    let (_leader, tty) = unsafe {
+        (
+            std::fs::File::from_raw_fd(leader),
+            std::fs::File::from_raw_fd(follower),
+        )
+    };
+    for args in [&["render", "--size", "16x9"][..], &["heightmap"][..]] {
+        let mode = args[0];
+        let got = Command::new(env!("CARGO_BIN_EXE_mountains"))
+            .args(args)
+            .args(["--set", "detail=4", "-o", "-"])
+            .env("HOME", &dir)
+            .env("XDG_CONFIG_HOME", dir.join("config"))
+            .stdout(tty.try_clone().unwrap())
+            .stderr(Stdio::piped())
+            .output()
+            .expect("run mountains");
+        let err = String::from_utf8_lossy(&got.stderr);
+        assert_eq!(got.status.code(), Some(2), "{mode}: {err}");
+        assert!(
+            err.contains("-o -: standard output is a terminal"),
+            "{mode}: {err}"
+        );
+    }
+}
+
+/// `render --open X -o X` would put the picture in place of its data set:
+/// refused, the data set kept (also through a link to it).
+#[test]
+fn a_picture_never_replaces_the_data_set_it_is_drawn_from() {
+    let dir = scratch("same-file");
+    let map = dir.join("map.png");
+    let made = run(
+        &[
+            "heightmap",
+            "--set",
+            "detail=4",
+            "-o",
+            map.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert!(made.status.success());
+    let bytes = std::fs::read(&map).unwrap();
+    let link = dir.join("link.png");
+    std::os::unix::fs::symlink(&map, &link).unwrap();
+    for out in [&map, &link] {
+        let got = run(
+            &[
+                "render",
+                "--open",
+                map.to_str().unwrap(),
+                "--size",
+                "16x9",
+                "-o",
+                out.to_str().unwrap(),
+            ],
+            &dir,
+        );
+        let err = String::from_utf8_lossy(&got.stderr);
+        assert_eq!(got.status.code(), Some(2), "{err}");
+        assert!(err.contains("is the data set --open reads"), "{err}");
+        assert_eq!(std::fs::read(&map).unwrap(), bytes);
+    }
+}
+
+/// A preferences file that is a link to nowhere is a file that cannot be
+/// read, and said to be (it was passed over as no file at all).
+#[test]
+fn a_preferences_link_to_nowhere_is_reported() {
+    let dir = scratch("dangling");
+    let prefs = dir.join("config").join("mountains");
+    std::fs::create_dir_all(&prefs).unwrap();
+    std::os::unix::fs::symlink(dir.join("gone.toml"), prefs.join("mountains.toml")).unwrap();
+    let out = dir.join("x.png");
+    let got = run(
+        &["render", "--size", "16x9", "-o", out.to_str().unwrap()],
+        &dir,
+    );
+    let err = String::from_utf8_lossy(&got.stderr);
+    assert!(got.status.success(), "{err}");
+    assert!(
+        err.contains("mountains.toml: cannot read") && err.contains("using the defaults"),
         "{err}"
     );
 }

@@ -161,6 +161,17 @@ fn a_file_that_does_not_parse_is_never_overwritten() {
     let text = err.to_string();
     assert!(text.contains("mountains.toml:3:"), "{text}");
     assert!(text.contains("not saved"), "{text}");
+    // In the words the file's loading uses, naming the key.
+    let missing = dir.join("missing-value.toml");
+    std::fs::write(&missing, b"cragginess = \n").unwrap();
+    let text = save::save(&missing, &s).unwrap_err().to_string();
+    assert!(
+        text.contains(
+            "key `cragginess`: not valid TOML: nothing after `=`; give a value; not saved"
+        ),
+        "{text}"
+    );
+    std::fs::remove_file(&missing).unwrap();
     let leftovers: Vec<_> = std::fs::read_dir(&dir).unwrap().collect();
     assert_eq!(leftovers.len(), 1, "no temporary file is left behind");
 }
