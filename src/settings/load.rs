@@ -48,8 +48,8 @@ impl Problem {
     }
 
     /// Nothing in the file was used: it could not be read, is not text
-    /// (`text::decode`'s refusal), or is not TOML (a
-    /// syntax error stops the reading, see [`apply_toml`]).
+    /// (`text::decode`'s refusal), or is not TOML (a syntax error stops
+    /// the reading, see [`apply_toml`]).
     pub fn drops_the_file(&self) -> bool {
         self.is_unreadable()
             || self.message.starts_with(NOT_TOML)
