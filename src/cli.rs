@@ -362,6 +362,11 @@ impl Parser<'_> {
             }
             "--check-config" => {
                 let path = match (inline, self.args.get(self.pos).and_then(|a| a.to_str())) {
+                    (Some(v), _) if v.is_empty() => {
+                        return Err(UsageError(format!(
+                            "{arg}: an empty value; give a file name, or no `=` for the usual file"
+                        )));
+                    }
                     (Some(v), _) => Some(PathBuf::from(v)),
                     (None, Some(next)) if !next.starts_with('-') => {
                         self.pos += 1;
@@ -508,6 +513,14 @@ fn is_word(s: &str) -> bool {
 /// word (`help`: `--help`), and a file name on its own (`render out.png`:
 /// `-o out.png`; a PNG that is there: `--open`) are offered as meant.
 fn unknown_argument(arg: &str) -> UsageError {
+    // `-shadows false`, as some programs' flags take it: ours are on or
+    // off by their names.
+    if matches!(arg, "true" | "false") {
+        return UsageError(format!(
+            "unknown argument `{arg}`: an on/off flag takes no value: \
+             -KEY turns it on, -no-KEY off (-shadows, -no-shadows)"
+        ));
+    }
     let nearest = match arg.strip_prefix('-') {
         Some(flag) => {
             let bare = flag.trim_start_matches('-').replace('_', "-");

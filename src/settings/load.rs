@@ -13,6 +13,7 @@ use toml_edit::{Document, Item};
 
 use super::Settings;
 use super::keys::{self, Value};
+use super::text;
 
 /// One thing wrong in a preferences source.
 #[derive(Debug, Clone, PartialEq)]
@@ -53,7 +54,7 @@ impl Problem {
     pub fn drops_the_file(&self) -> bool {
         self.is_unreadable()
             || self.message.starts_with(NOT_TOML)
-            || [super::text::NOT_UTF8, super::text::NOT_UTF16].contains(&self.message.as_str())
+            || [text::NOT_UTF8, text::NOT_UTF16, text::NUL_IN_TEXT].contains(&self.message.as_str())
     }
 }
 

@@ -37,6 +37,10 @@ pub const NOT_UTF8: &str = "not valid UTF-8 text";
 /// What [`NotText`] says of bytes behind a UTF-16 mark that are not UTF-16
 /// text.
 pub const NOT_UTF16: &str = "not valid UTF-16 text";
+/// What [`NotText`] says of UTF-8 that holds a NUL, which no TOML may:
+/// most likely UTF-16 written without its byte-order mark.
+pub const NUL_IN_TEXT: &str =
+    "a NUL byte, which text has none of (UTF-16 without its byte-order mark? save it as UTF-8)";
 
 /// The text of a preferences file's `bytes`, and its form.
 pub fn decode(mut bytes: Vec<u8>) -> Result<(String, Form), NotText> {
@@ -73,7 +77,10 @@ pub fn decode(mut bytes: Vec<u8>) -> Result<(String, Form), NotText> {
 /// The text of UTF-8 `bytes` (after any mark), kept in `form`.
 fn utf8(bytes: Vec<u8>, form: Form) -> Result<(String, Form), NotText> {
     match String::from_utf8(bytes) {
-        Ok(text) => Ok((text, form)),
+        Ok(text) => match text.find('\0') {
+            Some(nul) => Err(not_text(&text[..nul], NUL_IN_TEXT)),
+            None => Ok((text, form)),
+        },
         Err(e) => {
             let valid = &e.as_bytes()[..e.utf8_error().valid_up_to()];
             let before = std::str::from_utf8(valid).unwrap_or_default();
@@ -133,6 +140,18 @@ mod tests {
         let err = decode(b"# ok\n# caf\xe9\n".to_vec()).unwrap_err();
         assert_eq!((err.line, err.column), (2, 6));
         assert_eq!(err.message, "not valid UTF-8 text");
+    }
+
+    /// UTF-16 without its mark reads as UTF-8 full of NULs: said as what
+    /// it most likely is, where the first one stands.
+    #[test]
+    fn utf16_without_its_mark_is_named() {
+        let bytes: Vec<u8> = "seed = 5\n"
+            .encode_utf16()
+            .flat_map(u16::to_le_bytes)
+            .collect();
+        let err = decode(bytes).unwrap_err();
+        assert_eq!((err.line, err.column, err.message), (1, 2, NUL_IN_TEXT));
     }
 
     #[test]

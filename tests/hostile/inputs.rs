@@ -412,6 +412,12 @@ fn messages_name_what_was_typed() {
     assert!(usage(&["render", "-o", ""]).contains("-o: an empty value"));
     assert!(usage(&["--open", "", "render", "-o", "x.png"]).contains("--open: an empty value"));
     assert!(usage(&["render", "--set", ""]).contains("--set: an empty value; give key=value"));
+    assert!(usage(&["--check-config="]).contains("--check-config=: an empty value"));
+    let err = usage(&["render", "-shadows", "false", "-o", "x.png"]);
+    assert!(
+        err.contains("`false`: an on/off flag takes no value"),
+        "{err}"
+    );
     assert!(usage(&["render", "--size", ""]).contains("--size: an empty value; give WIDTHxHEIGHT"));
     // `--set` is typed for the run under `--check-config` too: exit 2.
     let good = dir.join("good.toml");
