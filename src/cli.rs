@@ -342,10 +342,15 @@ impl Parser<'_> {
             "--version" | "-V" | "-version" => return Ok(Some(Mode::Version)),
             "--xscreensaver-xml" => return Ok(Some(Mode::XscreensaverXml)),
             "--man-page" => return Ok(Some(Mode::ManPage)),
+            "-fps" | "--fps" | "-no-fps" | "--no-fps" | "-install" | "--install"
+                if inline.is_some() =>
+            {
+                return Err(UsageError(format!("{flag} takes no value")));
+            }
             "-fps" | "--fps" => self.inv.xss.fps = true,
             "-no-fps" | "--no-fps" => self.inv.xss.fps = false,
             "-delay" | "--delay" => {
-                let v = self.value_str(&flag)?;
+                let v = inline.map_or_else(|| self.value_str(&flag), Ok)?;
                 let us = v.trim().parse::<u64>().map_err(|_| {
                     UsageError(format!(
                         "`{flag} {v}`: expected microseconds, e.g. -delay 20000"
@@ -353,12 +358,14 @@ impl Parser<'_> {
                 })?;
                 self.inv.xss.delay_us = Some(us);
             }
-            "-display" | "--display" => self.inv.xss.display = Some(self.value_str(&flag)?),
+            "-display" | "--display" => {
+                self.inv.xss.display = Some(inline.map_or_else(|| self.value_str(&flag), Ok)?);
+            }
             // xscreensaver's colormap and visual choices: a true-colour
             // framebuffer needs neither.
             "-install" | "--install" => {}
             "-visual" | "--visual" => {
-                self.value_str(&flag)?;
+                inline.map_or_else(|| self.value_str(&flag), Ok)?;
             }
             "--check-config" => {
                 let path = match (inline, self.args.get(self.pos).and_then(|a| a.to_str())) {
@@ -387,8 +394,8 @@ impl Parser<'_> {
                     output: PathBuf::new(),
                 }));
             }
-            // `--cragginess=40`: a key's flag takes `--flag=VALUE` as every
-            // other flag does.
+            // `--cragginess=40`: a key's flag takes `--flag=VALUE` as the
+            // file flags do (`--output=x.png`).
             _ => match inline {
                 Some(v) if key_flags::lookup(&flag).is_some() => {
                     return self.key_flag_with(&flag, Some(v)).map(|()| None);
@@ -408,10 +415,13 @@ impl Parser<'_> {
     fn key_flag_with(&mut self, arg: &str, inline: Option<String>) -> Result<(), UsageError> {
         let (key, own) = key_flags::lookup(arg).ok_or_else(|| unknown_argument(arg))?;
         let kv = match (inline, own) {
-            (Some(_), Some(false)) => {
-                return Err(UsageError(format!("{arg} takes no value")));
+            (Some(_), Some(_)) => {
+                return Err(UsageError(format!(
+                    "{arg} takes no value: -{0} turns it on, -no-{0} off",
+                    key.name.replace('_', "-")
+                )));
             }
-            (Some(v), _) => (key.name.to_string(), v),
+            (Some(v), None) => (key.name.to_string(), v),
             (None, _) => key_flags::take(arg, key, own, || self.value_str(arg).ok())?,
         };
         // Checked here, against the defaults (a value's range and type do

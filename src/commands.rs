@@ -135,9 +135,12 @@ fn refuse_a_terminal(output: &Path) -> Option<ExitCode> {
 
 /// `render --open X -o X` would put the picture in place of the data set
 /// it was drawn from, which no one asks for on purpose. The two paths are
-/// compared resolved, never opened (a FIFO's open would wait).
+/// compared resolved (on Unix without opening either: a FIFO's open would
+/// wait); `-` is a pipe, never the file of that name.
 fn refuse_the_data_set(open: Option<&Path>, output: &Path) -> Option<ExitCode> {
-    let (open, output_at) = (open?.canonicalize().ok()?, output.canonicalize().ok()?);
+    let dash = Path::new("-");
+    let open = open.filter(|&p| p != dash && output != dash)?;
+    let (open, output_at) = (open.canonicalize().ok()?, output.canonicalize().ok()?);
     (open == output_at).then(|| {
         console::error(&format!(
             "-o {}: is the data set --open reads; give the picture another name",
@@ -176,7 +179,8 @@ fn fail(message: &str) -> ExitCode {
 /// preferences file, and every `--set`. Exit 0 when all is good, also when
 /// there is no preferences file at the usual place (the defaults are in
 /// use, which is no mistake) and for the null device (`/dev/null`: no
-/// preferences); 1 for any problem, or a named file missing.
+/// preferences); 1 for any problem in the file, or a named file missing;
+/// 2 for a bad `--set` (typed for the run, as in every mode).
 pub fn check_config(
     path: Option<&Path>,
     config: Option<&Path>,

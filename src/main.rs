@@ -117,8 +117,9 @@ fn printed(result: std::io::Result<()>) -> ExitCode {
 
 /// One rule for a preferences file in every mode: a bad or unknown key is
 /// a warning naming file:line:key, and the key keeps its default (a file
-/// the platform's path names that cannot be read: all of them). Only
-/// `--set` and flags, typed for this one run, are errors.
+/// that cannot be read, is not text or is not TOML: all of them, and the
+/// warning says so). Only `--set` and flags, typed for this one run, are
+/// errors.
 fn problem_warnings(loaded: &load::Loaded) -> Vec<String> {
     let what = |p: &load::Problem| {
         if p.is_unreadable() {

@@ -86,7 +86,7 @@ fn kind_of(item: &Item) -> &'static str {
 fn explain(message: &str, line: &str) -> (Option<String>, String) {
     let key = line
         .split_once('=')
-        .map(|(k, _)| k.trim().to_string())
+        .map(|(k, _)| k.trim().trim_matches(['"', '\'']).to_string())
         .filter(|k| !k.is_empty());
     let value_missing = line
         .split_once('=')
@@ -313,7 +313,8 @@ pub struct Loaded {
     pub settings: Settings,
     /// The preferences file that was read, if any.
     pub file: Option<std::path::PathBuf>,
-    /// What was wrong in that file (its good keys were still used).
+    /// What was wrong in that file (its good keys were still used, unless
+    /// a problem drops the whole file: [`Problem::drops_the_file`]).
     pub problems: Vec<Problem>,
 }
 
@@ -333,7 +334,8 @@ pub enum Unreadable {
 }
 
 /// Builds the settings: defaults, then the file (`config`, or the platform's
-/// preferences file if it exists), then each `--set` in order.
+/// preferences file if anything is at its name, a link to nowhere too),
+/// then each `--set` in order.
 ///
 /// An explicit `config` that cannot be read is handled as `unreadable` says;
 /// any bad `--set` is an error (a mistake on the command line). Problems

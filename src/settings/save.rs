@@ -179,7 +179,7 @@ pub fn save_changes(path: &Path, edited: &Settings, changed: &[&Key]) -> Result<
                     key: Some(k),
                     message,
                     ..
-                }) => format!("key `{k}`: {message}"),
+                }) => format!("key `{}`: {message}", crate::quote::clipped(k)),
                 Some(p) => p.message.clone(),
                 None => format!("not valid TOML ({})", e.message),
             };

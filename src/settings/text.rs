@@ -84,7 +84,12 @@ fn utf8(bytes: Vec<u8>, form: Form) -> Result<(String, Form), NotText> {
         Err(e) => {
             let valid = &e.as_bytes()[..e.utf8_error().valid_up_to()];
             let before = std::str::from_utf8(valid).unwrap_or_default();
-            Err(not_text(before, NOT_UTF8))
+            // UTF-16 without its mark breaks as UTF-8 at its first accent,
+            // after its first NUL: named as what it most likely is.
+            match before.find('\0') {
+                Some(nul) => Err(not_text(&before[..nul], NUL_IN_TEXT)),
+                None => Err(not_text(before, NOT_UTF8)),
+            }
         }
     }
 }
@@ -146,12 +151,15 @@ mod tests {
     /// it most likely is, where the first one stands.
     #[test]
     fn utf16_without_its_mark_is_named() {
-        let bytes: Vec<u8> = "seed = 5\n"
-            .encode_utf16()
-            .flat_map(u16::to_le_bytes)
-            .collect();
-        let err = decode(bytes).unwrap_err();
-        assert_eq!((err.line, err.column, err.message), (1, 2, NUL_IN_TEXT));
+        for text in ["seed = 5\n", "# café\nseed = 5\n"] {
+            let bytes: Vec<u8> = text.encode_utf16().flat_map(u16::to_le_bytes).collect();
+            let err = decode(bytes).unwrap_err();
+            assert_eq!(
+                (err.line, err.column, err.message),
+                (1, 2, NUL_IN_TEXT),
+                "{text}"
+            );
+        }
     }
 
     #[test]

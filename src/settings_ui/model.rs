@@ -49,7 +49,8 @@ pub struct Model {
     pub editing: Option<String>,
     /// The line under the rows: what happened, or what is wrong.
     pub message: String,
-    /// Set when the preferences file does not parse: OK cannot save.
+    /// Set when the preferences file cannot be read, is not text or does
+    /// not parse: OK cannot save.
     pub file_error: Option<String>,
     /// The Open list, while it is shown.
     pub open_list: Option<OpenList>,
@@ -103,7 +104,9 @@ impl Model {
         self.original = settings.clone();
         self.settings = settings;
         self.editing = None;
-        let broken = problems.iter().find(|p| p.key.is_none());
+        // Nothing in such a file was used (a syntax error, even one naming
+        // its key, stops the reading), and no save can merge into it.
+        let broken = problems.iter().find(|p| p.drops_the_file());
         self.file_error = broken.map(|p| format!("{p}. Fix it with Edit file; OK cannot save."));
         self.message = match (&self.file_error, problems.first()) {
             (Some(e), _) => e.clone(),

@@ -271,6 +271,13 @@ fn xscreensavers_common_options_mean_what_they_mean_there() {
     assert_eq!(inv.xss.delay_us, Some(20000));
     let inv = parse(&["-display", ":7", "--window"]).expect("-display");
     assert_eq!(inv.xss.display.as_deref(), Some(":7"));
+    // `--flag=VALUE` as the other flags take it (the value was dropped, and
+    // the next argument taken: `--display=:1 --root` meant display `--root`).
+    let inv = parse(&["--display=:1", "--root", "--delay=300", "--visual=default"]).expect("=");
+    assert_eq!(inv.xss.display.as_deref(), Some(":1"));
+    assert_eq!((inv.mode, inv.xss.delay_us), (Mode::XRoot, Some(300)));
+    let e = parse(&["--fps=false", "--root"]).unwrap_err().0;
+    assert!(e.contains("--fps takes no value"), "{e}");
     assert_eq!(mode(&["-help"]), Mode::Help);
     for v in ["--version", "-V", "-version"] {
         assert_eq!(mode(&[v]), Mode::Version, "{v}");

@@ -323,13 +323,18 @@ fn a_key_flag_takes_its_value_after_an_equals_sign() {
     ]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert_eq!(std::fs::read(&a).unwrap(), std::fs::read(&b).unwrap());
-    let o = mountains(&["render", "--no-shadows=true", "-o", &arg(&a)]);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("--no-shadows takes no value"),
-        "{}",
-        stderr(&o)
-    );
+    for typed in ["--no-shadows=true", "--shadows=false"] {
+        let o = mountains(&["render", typed, "-o", &arg(&a)]);
+        assert_eq!(o.status.code(), Some(2));
+        let flag = typed.split('=').next().unwrap();
+        assert!(
+            stderr(&o).contains(&format!(
+                "{flag} takes no value: -shadows turns it on, -no-shadows off"
+            )),
+            "{}",
+            stderr(&o)
+        );
+    }
 }
 
 /// `--set` is typed for this one run: a bad value is an error, said as one,

@@ -328,6 +328,23 @@ fn a_file_that_does_not_parse_cannot_be_saved_and_offers_edit_file() {
         Effect::Redraw,
         "nor does Enter"
     );
+    // Syntax errors that name their key stop the reading too.
+    for text in [
+        "seed = 1\nseed = 2\n",
+        "cragginess =\n",
+        "seed = 18446744073709551615\n",
+    ] {
+        let mut s = Settings::default();
+        let problems = load::apply_toml(&mut s, text, "/home/u/mountains.toml");
+        let mut m = Model::new(s, &problems);
+        assert_eq!(m.focused_button(), Some(Button::EditFile), "{text}");
+        assert!(
+            m.message.contains("OK cannot save"),
+            "{text}: {}",
+            m.message
+        );
+        assert_eq!(m.activate(Button::Ok), Effect::Redraw, "{text}");
+    }
 }
 
 #[test]
