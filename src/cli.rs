@@ -245,6 +245,11 @@ impl Parser<'_> {
             .ok_or_else(|| UsageError(format!("{flag} needs a value")))
     }
 
+    /// The value given after `=` (`inline`), else the next argument.
+    fn inline_or_next(&mut self, inline: Option<String>, flag: &str) -> Result<String, UsageError> {
+        inline.map_or_else(|| self.value_str(flag), Ok)
+    }
+
     fn value_str(&mut self, flag: &str) -> Result<String, UsageError> {
         let v = self.value(flag)?;
         v.into_string()
@@ -323,18 +328,11 @@ impl Parser<'_> {
             "--root" => return Ok(Some(Mode::XRoot)),
             "--window" => return Ok(Some(Mode::Window)),
             "--layer" => {
-                let name = match inline {
-                    Some(v) => v,
-                    None => self.value_str(arg)?,
-                };
+                let name = self.inline_or_next(inline, arg)?;
                 return Ok(Some(Mode::Layer(layer_named(arg, &name)?)));
             }
             "--window-id" => {
-                let id = if let Some(v) = inline {
-                    v
-                } else {
-                    self.value_str(arg)?
-                };
+                let id = self.inline_or_next(inline, arg)?;
                 return Ok(Some(Mode::XWindowId(x_window_id(arg, &id)?)));
             }
             "--settings" => return Ok(Some(Mode::Settings { parent: None })),
@@ -350,7 +348,7 @@ impl Parser<'_> {
             "-fps" | "--fps" => self.inv.xss.fps = true,
             "-no-fps" | "--no-fps" => self.inv.xss.fps = false,
             "-delay" | "--delay" => {
-                let v = inline.map_or_else(|| self.value_str(&flag), Ok)?;
+                let v = self.inline_or_next(inline, &flag)?;
                 let us = v.trim().parse::<u64>().map_err(|_| {
                     UsageError(format!(
                         "`{flag} {v}`: expected microseconds, e.g. -delay 20000"
@@ -359,13 +357,13 @@ impl Parser<'_> {
                 self.inv.xss.delay_us = Some(us);
             }
             "-display" | "--display" => {
-                self.inv.xss.display = Some(inline.map_or_else(|| self.value_str(&flag), Ok)?);
+                self.inv.xss.display = Some(self.inline_or_next(inline, &flag)?);
             }
             // xscreensaver's colormap and visual choices: a true-colour
             // framebuffer needs neither.
             "-install" | "--install" => {}
             "-visual" | "--visual" => {
-                inline.map_or_else(|| self.value_str(&flag), Ok)?;
+                self.inline_or_next(inline, &flag)?;
             }
             "--check-config" => {
                 let path = match (inline, self.args.get(self.pos).and_then(|a| a.to_str())) {

@@ -56,6 +56,14 @@ impl Problem {
             || self.message.starts_with(NOT_TOML)
             || [text::NOT_UTF8, text::NOT_UTF16, text::NUL_IN_TEXT].contains(&self.message.as_str())
     }
+
+    /// The problem without its place: the key (clipped) and the message.
+    pub fn what(&self) -> String {
+        match &self.key {
+            Some(key) => format!("key `{}`: {}", crate::quote::clipped(key), self.message),
+            None => self.message.clone(),
+        }
+    }
 }
 
 impl fmt::Display for Problem {
@@ -64,10 +72,7 @@ impl fmt::Display for Problem {
         if let Some((line, col)) = self.position {
             write!(f, ":{line}:{col}")?;
         }
-        if let Some(key) = &self.key {
-            write!(f, ": key `{}`", crate::quote::clipped(key))?;
-        }
-        write!(f, ": {}", self.message)
+        write!(f, ": {}", self.what())
     }
 }
 

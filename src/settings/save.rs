@@ -13,7 +13,7 @@ use toml_edit::{DocumentMut, Item};
 
 use super::Settings;
 use super::keys::{self, KEYS, Key, Value};
-use super::load::{DEFAULT_TOML, Problem};
+use super::load::DEFAULT_TOML;
 use super::text::{Form, decode, encode, line_col};
 
 /// Why the preferences could not be saved. The file on disk is unchanged.
@@ -175,12 +175,7 @@ pub fn save_changes(path: &Path, edited: &Settings, changed: &[&Key]) -> Result<
         }
         let merged = merge(text, &wanted).map_err(|e| {
             let said = match read.iter().find(|p| p.drops_the_file()) {
-                Some(Problem {
-                    key: Some(k),
-                    message,
-                    ..
-                }) => format!("key `{}`: {message}", crate::quote::clipped(k)),
-                Some(p) => p.message.clone(),
+                Some(p) => p.what(),
                 None => format!("not valid TOML ({})", e.message),
             };
             text_error(path, e.position, format!("{said}; not saved"))

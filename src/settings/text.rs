@@ -4,8 +4,7 @@
 //! Notepad's "Unicode". Such a file is read as its text (it was ignored,
 //! the defaults used, with "not valid UTF-8 text"), and a save writes
 //! every file back in its own form, mark and all. (UTF-16 without a mark
-//! reads as UTF-8 with a NUL after each character: the TOML parser then
-//! names the first.)
+//! reads as UTF-8 with a NUL after each character: refused as such.)
 
 /// How a preferences file's text is stored.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -76,21 +75,22 @@ pub fn decode(mut bytes: Vec<u8>) -> Result<(String, Form), NotText> {
 
 /// The text of UTF-8 `bytes` (after any mark), kept in `form`.
 fn utf8(bytes: Vec<u8>, form: Form) -> Result<(String, Form), NotText> {
-    match String::from_utf8(bytes) {
-        Ok(text) => match text.find('\0') {
-            Some(nul) => Err(not_text(&text[..nul], NUL_IN_TEXT)),
-            None => Ok((text, form)),
-        },
+    // The text up to where it breaks as UTF-8, if it does.
+    let (text, broken) = match String::from_utf8(bytes) {
+        Ok(text) => (text, false),
         Err(e) => {
-            let valid = &e.as_bytes()[..e.utf8_error().valid_up_to()];
-            let before = std::str::from_utf8(valid).unwrap_or_default();
-            // UTF-16 without its mark breaks as UTF-8 at its first accent,
-            // after its first NUL: named as what it most likely is.
-            match before.find('\0') {
-                Some(nul) => Err(not_text(&before[..nul], NUL_IN_TEXT)),
-                None => Err(not_text(before, NOT_UTF8)),
-            }
+            let valid = e.utf8_error().valid_up_to();
+            let mut bytes = e.into_bytes();
+            bytes.truncate(valid);
+            (String::from_utf8(bytes).unwrap_or_default(), true)
         }
+    };
+    // UTF-16 without its mark breaks as UTF-8 (at its first accent) only
+    // after its first NUL: named as what it most likely is.
+    match (text.find('\0'), broken) {
+        (Some(nul), _) => Err(not_text(&text[..nul], NUL_IN_TEXT)),
+        (None, true) => Err(not_text(&text, NOT_UTF8)),
+        (None, false) => Ok((text, form)),
     }
 }
 
