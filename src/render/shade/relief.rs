@@ -136,6 +136,60 @@ pub(crate) struct Relief {
     /// The frame's pixels per pixel of the frame the relief is for: 1,
     /// but in a reference drawn k times finer (see [`Relief::for_finer`]).
     finer: f32,
+    /// [`Relief::levels_shown`] at steps of the cells' pixels.
+    shown: ShownTable,
+}
+
+/// [`Relief::levels_shown`] at every [`SHOWN_STEP`] of the cells' pixels
+/// up to where every level shows in full, on faces that may take the
+/// plan's bumps and on walls: the count grows with the cells' pixels, so
+/// the values at the two steps around a cell's pixels bound its own.
+#[derive(Clone, Debug, Default)]
+struct ShownTable {
+    open: Vec<f32>,
+    walls: Vec<f32>,
+}
+
+/// The table's step, in cell pixels: a power of two, so that a cell's
+/// step is found without rounding.
+const SHOWN_STEP: f32 = 0.25;
+/// How much wider than the table's two values the bounds are taken: far
+/// more than the rounding of the count's sums and smooth steps.
+const SHOWN_MARGIN: f32 = 1e-4;
+
+impl ShownTable {
+    /// The table of `relief`.
+    fn of(relief: &Relief) -> Self {
+        // The finest plan level shows in full from FULL_PX of its bumps,
+        // 2^(LEVELS - 1) first-level steps; the side views' sooner.
+        let full = FULL_PX * (1 << (LEVELS - 1)) as f32 * relief.first_step;
+        let steps = (full / SHOWN_STEP).ceil() as usize + 2;
+        let at = |walls: bool| {
+            (0..steps)
+                .map(|j| relief.levels_shown(j as f32 * SHOWN_STEP, walls))
+                .collect()
+        };
+        ShownTable {
+            open: at(false),
+            walls: at(true),
+        }
+    }
+
+    /// The least and the most [`Relief::levels_shown`] of cells spanning
+    /// `cell_px` pixels, if within the table.
+    #[inline]
+    fn bounds(&self, cell_px: f32, walls: bool) -> Option<(f32, f32)> {
+        let table = if walls { &self.walls } else { &self.open };
+        let at = cell_px / SHOWN_STEP;
+        if !(at >= 0.0 && at < table.len().saturating_sub(1) as f32) {
+            return None;
+        }
+        let j = at as usize;
+        Some((
+            table[j] * (1.0 - SHOWN_MARGIN),
+            table[j + 1] * (1.0 + SHOWN_MARGIN),
+        ))
+    }
 }
 
 /// Points a side of the blocks whose roughness is measured together: one
@@ -157,7 +211,7 @@ impl Relief {
         let side_turns = std::array::from_fn(|j| {
             Turn::of(seed ^ mix(SIDE_KEY ^ (first_level as u64 + j as u64)))
         });
-        Relief {
+        let mut relief = Relief {
             lattice: Lattice::new(seed),
             first_step,
             first_level,
@@ -168,7 +222,10 @@ impl Relief {
             rough,
             blocks,
             finer: 1.0,
-        }
+            shown: ShownTable::default(),
+        };
+        relief.shown = ShownTable::of(&relief);
+        relief
     }
 
     /// This relief in a frame `k` times as wide and tall as the one it is
@@ -198,15 +255,28 @@ impl Relief {
         // roughness: a level's slope at its steepest, over the cell, for
         // as much of each level as shows at the face's largest cells.
         let walls = steepest_everywhere(points.map(|p| p.slope));
-        let per =
-            STEEPEST * FIRST * self.first_step * self.levels_shown(cell_px, walls) / self.cell;
-        let shares = most(&|p| p.shares.x + p.shares.y * (1.0 + HOLLOW));
+        let (shares, rough) = (
+            most(&|p| p.shares.x + p.shares.y * (1.0 + HOLLOW)),
+            most(&|p| p.rough),
+        );
         let bright = colours
             .iter()
             .flat_map(|c| [16, 8, 0].map(|s| (c >> s) & 0xff))
             .max()
             .unwrap_or(0);
-        shares * most(&|p| p.rough) * per * bright as f32 >= 1.0
+        let reaches = |levels: f32| {
+            let per = STEEPEST * FIRST * self.first_step * levels / self.cell;
+            shares * rough * per * bright as f32 >= 1.0
+        };
+        // The levels' count is worked out only where its table's bounds
+        // leave the answer open: the same answer, for a fraction of the
+        // faces' cost (`most` is never negative or NaN, so `reaches` grows
+        // with the count).
+        match self.shown.bounds(cell_px, walls) {
+            Some((_, most_levels)) if !reaches(most_levels) => false,
+            Some((least_levels, _)) if reaches(least_levels) => true,
+            _ => reaches(self.levels_shown(cell_px, walls)),
+        }
     }
 
     /// How many levels show where a cell spans `cell_px` pixels, each
@@ -1085,6 +1155,79 @@ mod tests {
             plain > 200 && refined > 200,
             "{plain} plain, {refined} refined"
         );
+    }
+
+    #[test]
+    fn the_levels_tables_bounds_hold_the_count_of_every_cell() {
+        let mut draw = draws(4);
+        let mut next = || crate::terrain::splitmix::unit(draw());
+        // A grid whose cells are not a power of two has a wider first step.
+        for size in [10, 7] {
+            let field = Heightfield::flat(size, 250.0);
+            let relief = Relief::new(&field, 9, Vec3::Z, 0.25);
+            let (mut within, mut past) = (0, 0);
+            for i in 0..20_000 {
+                let cell_px = [next() * 8.0, next() * 200.0][i % 2];
+                for walls in [false, true] {
+                    let exact = relief.levels_shown(cell_px, walls);
+                    let Some((least, most)) = relief.shown.bounds(cell_px, walls) else {
+                        past += 1;
+                        continue;
+                    };
+                    within += 1;
+                    assert!(
+                        least <= exact && exact <= most,
+                        "{cell_px} px: {exact} outside {least}..{most}"
+                    );
+                }
+            }
+            assert!(within > 20_000 && past > 5_000, "{within} within, {past} past");
+        }
+    }
+
+    #[test]
+    fn a_face_shows_the_relief_as_its_exact_count_says() {
+        let relief = Relief::new(&Heightfield::flat(10, 250.0), 5, Vec3::Z, 0.25);
+        let exact = |points: [&FinePoint; 3], colours: [u32; 3]| {
+            let most = |f: &dyn Fn(&FinePoint) -> f32| {
+                points.iter().map(|p| f(p)).fold(0.0, f32::max)
+            };
+            let cell_px = most(&|p| p.cell_px);
+            if cell_px < MIN_CELL_PX {
+                return false;
+            }
+            let walls = steepest_everywhere(points.map(|p| p.slope));
+            let per = STEEPEST * FIRST * relief.first_step * relief.levels_shown(cell_px, walls)
+                / relief.cell;
+            let shares = most(&|p| p.shares.x + p.shares.y * (1.0 + HOLLOW));
+            let bright = colours.iter().map(|c| c & 0xff).max().unwrap();
+            shares * most(&|p| p.rough) * per * bright as f32 >= 1.0
+        };
+        let mut draw = draws(6);
+        let mut next = || crate::terrain::splitmix::unit(draw());
+        let (mut shown, mut plain) = (0, 0);
+        for face in 0..50_000 {
+            let steep = if face % 2 == 0 { 1.0 } else { 8.0 };
+            // Roughness about where a face tips between plain and refined.
+            let odd = match face % 20 {
+                17 => 0.0,
+                18 => f32::NAN,
+                19 => f32::INFINITY,
+                _ => 1.0,
+            };
+            let rough = 10f32.powf(-3.5 + next()) * odd;
+            let points: [FinePoint; 3] = std::array::from_fn(|_| FinePoint {
+                slope: Vec2::new(next() * 2.0 - 1.0, next() * 2.0 - 1.0) * steep,
+                shares: Vec2::new(next(), next() * 0.6),
+                cell_px: [next() * 6.0, next() * 150.0][face % 3 / 2],
+                rough,
+            });
+            let colours = [0x10101 * (next() * 255.0) as u32; 3];
+            let want = exact(points.each_ref(), colours);
+            assert_eq!(relief.shows(points.each_ref(), colours), want, "{points:?}");
+            if want { shown += 1 } else { plain += 1 }
+        }
+        assert!(shown > 5_000 && plain > 5_000, "{shown} shown, {plain} plain");
     }
 
     #[test]
