@@ -781,12 +781,13 @@ fn laplacian(field: &Heightfield, x: usize, y: usize) -> f32 {
 fn roughness(field: &Heightfield) -> (Vec<f32>, usize) {
     let n = field.size();
     let blocks = (n - 1) / BLOCK + 2;
-    let mut rough = vec![0.0; blocks * blocks];
-    let half = BLOCK / 2;
-    let mut sample = Vec::with_capacity(BLOCK * BLOCK / 4);
-    for by in 0..blocks {
-        for bx in 0..blocks {
-            let (cx, cy) = (bx * BLOCK, by * BLOCK);
+    // Rows of blocks, half on each of two cores: the scene's start waits
+    // for it, and at 4K it is some milliseconds of the frame.
+    let rows = |by: std::ops::Range<usize>| -> Vec<f32> {
+        let half = BLOCK / 2;
+        let mut sample = Vec::with_capacity(BLOCK * BLOCK / 4);
+        let mut rough = Vec::with_capacity(by.len() * blocks);
+        for (cy, cx) in by.flat_map(|by| (0..blocks).map(move |bx| (by * BLOCK, bx * BLOCK))) {
             sample.clear();
             // At least the field's last point: past the field's end a
             // block's window would be empty.
@@ -796,9 +797,17 @@ fn roughness(field: &Heightfield) -> (Vec<f32>, usize) {
                     sample.push(laplacian(field, x, y));
                 }
             }
-            rough[by * blocks + bx] = median(&mut sample) * MEDIAN_TO_RMS;
+            rough.push(median(&mut sample) * MEDIAN_TO_RMS);
         }
-    }
+        rough
+    };
+    let middle = blocks / 2;
+    let (mut rough, back) = crate::threads::both_if(
+        crate::cores::cores() >= 2,
+        || rows(0..middle),
+        || rows(middle..blocks),
+    );
+    rough.extend(back);
     // A block on a crest or a cliff's rim measures the grid's own bend
     // there, not its finest bumps: each is held to a little over the
     // typical block's.
@@ -1181,7 +1190,10 @@ mod tests {
                     );
                 }
             }
-            assert!(within > 20_000 && past > 5_000, "{within} within, {past} past");
+            assert!(
+                within > 20_000 && past > 5_000,
+                "{within} within, {past} past"
+            );
         }
     }
 
@@ -1189,9 +1201,8 @@ mod tests {
     fn a_face_shows_the_relief_as_its_exact_count_says() {
         let relief = Relief::new(&Heightfield::flat(10, 250.0), 5, Vec3::Z, 0.25);
         let exact = |points: [&FinePoint; 3], colours: [u32; 3]| {
-            let most = |f: &dyn Fn(&FinePoint) -> f32| {
-                points.iter().map(|p| f(p)).fold(0.0, f32::max)
-            };
+            let most =
+                |f: &dyn Fn(&FinePoint) -> f32| points.iter().map(|p| f(p)).fold(0.0, f32::max);
             let cell_px = most(&|p| p.cell_px);
             if cell_px < MIN_CELL_PX {
                 return false;
@@ -1227,7 +1238,10 @@ mod tests {
             assert_eq!(relief.shows(points.each_ref(), colours), want, "{points:?}");
             if want { shown += 1 } else { plain += 1 }
         }
-        assert!(shown > 5_000 && plain > 5_000, "{shown} shown, {plain} plain");
+        assert!(
+            shown > 5_000 && plain > 5_000,
+            "{shown} shown, {plain} plain"
+        );
     }
 
     #[test]
