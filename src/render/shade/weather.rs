@@ -137,6 +137,11 @@ impl Weather {
         self.row(y).over(gradient, x)
     }
 
+    /// The width of the frame it is seen in, in pixels.
+    pub(crate) fn frame_width(&self) -> f32 {
+        2.0 * self.middle
+    }
+
     /// The weather along screen row `y` (the clouds' part that does not
     /// change along a row worked out once).
     pub(crate) fn row(&self, y: f32) -> WeatherRow<'_> {
