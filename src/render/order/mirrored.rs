@@ -147,7 +147,10 @@ impl Scene<'_> {
             let weight = to.min(c + 0.5) - from.max(c - 0.5);
             if weight > 0.0 {
                 let x = index((c * step).round().clamp(0.0, last as f32));
-                let colour = self.land_point(x, y);
+                let colour = match &self.mirror {
+                    Some(m) => m.land_point(x, y, || self.land_point(x, y)),
+                    None => self.land_point(x, y),
+                };
                 for (ch, s) in sum.iter_mut().enumerate() {
                     *s += weight * ((colour >> (16 - 8 * ch)) & 0xff) as f32;
                 }

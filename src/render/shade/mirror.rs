@@ -39,6 +39,7 @@ use std::sync::atomic::{AtomicU32, Ordering};
 use glam::{Vec2, Vec3};
 
 use super::index;
+use super::kept_points::KeptPoints;
 use crate::render::base::colour::{Rgb, blend_packed, to_u32};
 use crate::render::framing::tops::finite;
 use crate::terrain::Heightfield;
@@ -226,6 +227,8 @@ pub(crate) struct Mirror {
     sun: Vec3,
     /// The sun's direct colour, packed.
     sun_colour: u32,
+    /// The colours of the land's grid points the samples are the mean of.
+    land_points: KeptPoints,
 }
 
 /// The ground under one profile of the fan: sample `k` lies on grid row
@@ -317,7 +320,15 @@ impl Mirror {
             profiles: (0..count).map(|_| OnceLock::new()).collect(),
             sun: Vec3::new(sun.x, -sun.y, sun.z).normalize_or(Vec3::Z),
             sun_colour: to_u32(sun_colour),
+            land_points: KeptPoints::default(),
         })
+    }
+
+    /// The colour of the land's grid point (`x`, `y`), which `colour()`
+    /// works out the first time: a line's sample is the mean of several
+    /// points, and its neighbours' of most of the same.
+    pub(crate) fn land_point(&self, x: usize, y: usize, colour: impl FnOnce() -> u32) -> u32 {
+        self.land_points.get_or(x, y, colour)
     }
 
     /// What the water at grid position `g`, on a surface at `level`, with

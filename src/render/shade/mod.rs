@@ -11,6 +11,7 @@ pub mod essay;
 pub mod facings;
 pub(super) mod haze;
 pub mod hour;
+pub(super) mod kept_points;
 pub mod light;
 pub mod listing;
 pub(super) mod mirror;
