@@ -27,6 +27,23 @@ pub fn mountain(settings: &Settings, open: Option<&Path>) -> Result<Mountain, St
     Ok(mountain)
 }
 
+/// Warns of each `--set` (or key flag) in `sets` that `--open` leaves
+/// without effect in `render` and `heightmap`: one that only shapes the
+/// heights a generator makes ([`crate::mountain::HEIGHTS_ONLY`]), where
+/// the heights are the data set's. A preferences file's keys are no
+/// mistake of this run, and are not named.
+pub fn warn_heights_only(sets: &[(String, String)], open: Option<&Path>) {
+    let Some(path) = open else { return };
+    let heights_only = |key: &str| crate::mountain::HEIGHTS_ONLY.iter().any(|k| k.name == key);
+    for (key, value) in sets.iter().filter(|(key, _)| heights_only(key)) {
+        console::err(&format!(
+            "mountains: warning: --set {key}={value}: no effect with --open {}: \
+             the data set's heights are drawn as they are",
+            path.display()
+        ));
+    }
+}
+
 /// `mountains render`: one complete mountain to a PNG.
 pub fn render(settings: &Settings, open: Option<&Path>, size: Size, output: &Path) -> ExitCode {
     if let Some(code) = refuse_a_terminal(output).or_else(|| refuse_the_data_set(open, output)) {
@@ -98,7 +115,7 @@ pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> Exi
         Err(e) => return fail(&e),
     };
     // A data set saved again keeps the keys its file recorded.
-    let settings = &shown.drawn_with(settings);
+    let settings = &shown.saved_with(settings);
     let (field, seed) = (shown.field, shown.seed);
     let format = output::format_of(output, output::DATA_SETS, "a data set").unwrap_or(Format::Png);
     if format == Format::Raw16 {

@@ -6,8 +6,30 @@ use std::path::Path;
 use std::sync::Arc;
 
 use crate::settings::Settings;
+use crate::settings::keys::{self, Key};
 use crate::terrain::heightmap::{self, DataSet, GeneratorParams};
 use crate::terrain::{self, Heightfield};
+
+/// The keys that only shape the heights a generator makes. A data set
+/// opened from a file has its heights already, so `render --open` and
+/// `heightmap --open` draw and save it the same whatever these say (the
+/// saver's N key, which makes a new mountain after `--open`, still uses
+/// them). The others are drawn under: the look, the world, the height's
+/// treeline, the cliffs' strata, low detail's wireframe.
+pub const HEIGHTS_ONLY: [&Key; 12] = [
+    &keys::SEED,
+    &keys::GENERATOR,
+    &keys::CRAGGINESS,
+    &keys::ELEVATION,
+    &keys::ROUGHNESS,
+    &keys::CONTOUR,
+    &keys::PROFILE,
+    &keys::HURST,
+    &keys::EROSION,
+    &keys::DETAIL,
+    &keys::SEA_LEVEL,
+    &keys::WATER_LINE,
+];
 
 /// A mountain ready to draw and the seed that made it (none for a foreign heightmap).
 #[derive(Debug, Clone)]
@@ -59,6 +81,23 @@ impl Mountain {
     /// ([`GeneratorParams::drawn_under`]); `prefs` themselves otherwise.
     pub fn drawn_with(&self, prefs: &Settings) -> Settings {
         Mountain::drawn_under(self.recorded.as_ref(), prefs)
+    }
+
+    /// The settings this mountain is saved again with under `prefs`: as
+    /// [`Mountain::drawn_with`], but a data set read from a file keeps its
+    /// file's record of how its heights were made ([`HEIGHTS_ONLY`]), which
+    /// `prefs` made nothing of here (`--set detail=5` recorded on a grid
+    /// of another size would be false).
+    pub fn saved_with(&self, prefs: &Settings) -> Settings {
+        if self.generated {
+            return prefs.clone();
+        }
+        let mut made = prefs.clone();
+        let defaults = Settings::default();
+        for key in HEIGHTS_ONLY {
+            keys::copy(key, &defaults, &mut made);
+        }
+        self.drawn_with(&made)
     }
 
     /// The settings a mountain whose file recorded `recorded` is drawn with

@@ -845,3 +845,62 @@ fn a_closed_stderr_keeps_the_exit_status() {
     }
     assert!(out.exists());
 }
+
+/// `heightmap --open` saves the grid it read: the detail and generator
+/// its file recorded, not the ones typed for the run (a 33x33 grid said
+/// to be detail 7). A `--set` that only shapes generated heights, which
+/// `--open` leaves without effect, is named in a warning, in `render` too.
+#[test]
+fn open_keeps_the_data_sets_record_and_warns_of_a_set_it_ignores() {
+    let dir = scratch("open-record");
+    let files = ["h.png", "again.png", "r.png"].map(|f| dir.join(f));
+    let [h, again, picture] = files.each_ref().map(|p| p.to_str().unwrap());
+    small_data_set(&files[0]);
+    let o = run(&[
+        "heightmap",
+        "--open",
+        h,
+        "--set",
+        "detail=7",
+        "-seed",
+        "9",
+        "-o",
+        again,
+    ]);
+    let err = stderr(&o);
+    for set in ["--set detail=7", "--set seed=9"] {
+        assert!(
+            err.contains(&format!("warning: {set}: no effect with --open")),
+            "{err}"
+        );
+    }
+    let data = mountains::terrain::heightmap::load(&files[1]).unwrap();
+    let recorded = mountains::mountain::Mountain::drawn_under(
+        data.params.as_ref(),
+        &mountains::settings::Settings::default(),
+    );
+    assert_eq!(data.field.size(), 33);
+    assert_eq!(recorded.detail, mountains::settings::Detail::Level(5));
+    assert_eq!(data.seed, Some(3));
+    let o = run(&[
+        "render", "--size", "40x30", "--open", h, "--set", "seed=9", "-o", picture,
+    ]);
+    assert!(
+        stderr(&o).contains("warning: --set seed=9: no effect with --open"),
+        "{}",
+        stderr(&o)
+    );
+    // A key the picture is drawn under is no mistake.
+    let o = run(&[
+        "render",
+        "--size",
+        "40x30",
+        "--open",
+        h,
+        "--set",
+        "color=sonar",
+        "-o",
+        picture,
+    ]);
+    assert!(!stderr(&o).contains("warning"), "{}", stderr(&o));
+}
