@@ -358,8 +358,11 @@ pub fn resolve(
         // (`exists` follows the link, and the file was passed over).
         None => super::paths::config_file().filter(|p| p.symlink_metadata().is_ok()),
     };
-    let new_file =
-        |p: &Path| unreadable == Unreadable::NewIfMissing && config.is_some() && !p.exists();
+    // Nothing at all at the name: a link to nowhere is someone's, and
+    // cannot be read (`exists` would follow it).
+    let new_file = |p: &Path| {
+        unreadable == Unreadable::NewIfMissing && config.is_some() && p.symlink_metadata().is_err()
+    };
     let file = file.filter(|p| !new_file(p) && !crate::fsutil::is_null_device(p));
     let mut problems = Vec::new();
     if let Some(path) = &file {

@@ -206,7 +206,8 @@ impl Screen {
         }
         self.config_seen = now;
         let mut fresh = Settings::default();
-        let problems = if self.config.exists() {
+        // A link to nowhere is read, and says so (`exists` follows it).
+        let problems = if self.config.symlink_metadata().is_ok() {
             load::apply_file(&mut fresh, &self.config)
         } else {
             Vec::new()

@@ -545,6 +545,30 @@ fn a_preferences_link_to_nowhere_is_reported() {
         err.contains("mountains.toml: cannot read") && err.contains("using the defaults"),
         "{err}"
     );
+    // Said as what it is, where the link points too.
+    assert!(err.contains("a link to nowhere (to "), "{err}");
+    let got = run(
+        &[
+            "--check-config",
+            "--config",
+            prefs.join("mountains.toml").to_str().unwrap(),
+        ],
+        &dir,
+    );
+    let err = String::from_utf8_lossy(&got.stderr);
+    assert_eq!(got.status.code(), Some(1), "{err}");
+    assert!(err.contains("cannot read: a link to nowhere"), "{err}");
+    // Nor does a picture written through one put a file in its place.
+    let link = dir.join("picture.png");
+    std::os::unix::fs::symlink(dir.join("gone").join("p.png"), &link).unwrap();
+    let got = run(
+        &["render", "--size", "16x9", "-o", link.to_str().unwrap()],
+        &dir,
+    );
+    let err = String::from_utf8_lossy(&got.stderr);
+    assert_eq!(got.status.code(), Some(1), "{err}");
+    assert!(err.contains("a link to nowhere"), "{err}");
+    assert!(std::fs::symlink_metadata(&link).unwrap().is_symlink());
 }
 
 /// Starts `render` of a large picture into `dir` with the signals set up

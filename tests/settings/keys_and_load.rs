@@ -211,6 +211,20 @@ fn resolve_reports_file_problems_and_refuses_a_missing_explicit_file() {
     .unwrap();
     assert_eq!((fresh.file, fresh.problems.len()), (None, 0));
     assert_eq!(fresh.settings, mountains::settings::Settings::default());
+    // A link to nowhere is no new file: it cannot be read, and says why.
+    #[cfg(unix)]
+    {
+        let link = dir.join("link.toml");
+        std::os::unix::fs::symlink(dir.join("gone.toml"), &link).unwrap();
+        let refused = load::resolve(Some(&link), &[], load::Unreadable::NewIfMissing).unwrap_err();
+        assert!(refused.to_string().contains("--config"), "{refused}");
+        assert!(
+            refused
+                .message
+                .starts_with("cannot read: a link to nowhere"),
+            "{refused}"
+        );
+    }
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
