@@ -366,12 +366,16 @@ impl Parser<'_> {
                 self.inline_or_next(inline, &flag)?;
             }
             "--check-config" => {
-                let path = match (inline, self.args.get(self.pos).and_then(|a| a.to_str())) {
-                    (Some(v), _) if v.is_empty() => {
-                        return Err(UsageError(format!(
-                            "{arg}: an empty value; give a file name, or no `=` for the usual file"
-                        )));
-                    }
+                let next = self.args.get(self.pos).and_then(|a| a.to_str());
+                // `--check-config ""` (an unset variable in a script) as
+                // `--check-config=`: a bad value, not a file that is missing.
+                let (empty_inline, empty_next) = (inline.as_deref() == Some(""), next == Some(""));
+                if empty_inline || (inline.is_none() && empty_next) {
+                    return Err(UsageError(format!(
+                        "{arg}: an empty value; give a file name, or none for the usual file"
+                    )));
+                }
+                let path = match (inline, next) {
                     (Some(v), _) => Some(PathBuf::from(v)),
                     (None, Some(next)) if !next.starts_with('-') => {
                         self.pos += 1;

@@ -665,6 +665,30 @@ fn check_config_without_a_file_is_fine_and_honours_config_and_set() {
     );
 }
 
+/// A bad `--set` is exit 2 under `--check-config` whatever the file, and
+/// is never hidden: not behind a named file that is missing, nor in the
+/// "... and N more" of a file with many problems.
+#[test]
+fn check_config_always_says_a_bad_set() {
+    let dir = scratch("check-config-sets");
+    let missing = dir.join("missing.toml");
+    let o = mountains(&["--check-config", &arg(&missing), "--set", "color=pink"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(
+        err.contains("--set: key `color`") && err.contains("no such file"),
+        "{err}"
+    );
+    let many = dir.join("many.toml");
+    let lines: String = (0..30).map(|n| format!("nonsense{n} = 1\n")).collect();
+    std::fs::write(&many, lines).unwrap();
+    let o = mountains(&["--check-config", &arg(&many), "--set", "color=pink"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(err.contains("... and 10 more"), "{err}");
+    assert!(err.contains("--set: key `color`"), "{err}");
+}
+
 /// A key this version does not know (the settings screen keeps it) is a
 /// warning with a suggestion for `render`, and still a failure for
 /// `--check-config`.

@@ -413,6 +413,7 @@ fn messages_name_what_was_typed() {
     assert!(usage(&["--open", "", "render", "-o", "x.png"]).contains("--open: an empty value"));
     assert!(usage(&["render", "--set", ""]).contains("--set: an empty value; give key=value"));
     assert!(usage(&["--check-config="]).contains("--check-config=: an empty value"));
+    assert!(usage(&["--check-config", ""]).contains("--check-config: an empty value"));
     let err = usage(&["render", "-shadows", "false", "-o", "x.png"]);
     assert!(
         err.contains("`false`: an on/off flag takes no value"),
