@@ -279,10 +279,13 @@ impl Parser<'_> {
         if let Some(mode) = self.windows_flag(arg)? {
             return Ok(Some(mode));
         }
-        let flag = long_name(arg);
-        let (flag, inline) = match flag.split_once('=') {
-            Some((f, v)) if f.starts_with("--") => (f.to_string(), Some(v.to_string())),
-            _ => (flag, None),
+        // `--seed=5`, and with one dash as xscreensaver's flags are typed
+        // (`-seed=5`, `-config=FILE`), as `-seed 5` is taken.
+        let (flag, inline) = match arg.split_once('=') {
+            Some((f, v)) if f.len() > 1 && f.starts_with('-') => {
+                (long_name(f), Some(v.to_string()))
+            }
+            _ => (long_name(arg), None),
         };
         // A value as typed, named by the flag as typed (`--output`, not `-o`).
         let take = |p: &mut Self, long: &str| -> Result<OsString, UsageError> {

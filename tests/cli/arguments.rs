@@ -258,6 +258,26 @@ fn every_key_is_a_flag_of_its_own() {
     assert!(e.contains("unknown argument `-no-color`"), "{e}");
 }
 
+/// A value after `=` is taken with one dash as with two, as `-seed 5`
+/// is: `-seed=5` as `--seed=5`, `-config=FILE` as `--config=FILE`.
+#[test]
+fn one_dash_takes_a_value_after_an_equals_sign() {
+    let inv = parse(&["-seed=5", "-color=sonar", "-config=f.toml", "-delay=20"])
+        .unwrap_or_else(|e| panic!("{e}"));
+    let sets: Vec<(&str, &str)> = inv
+        .sets
+        .iter()
+        .map(|(k, v)| (k.as_str(), v.as_str()))
+        .collect();
+    assert_eq!(sets, [("seed", "5"), ("color", "sonar")]);
+    assert_eq!(inv.config, Some(PathBuf::from("f.toml")));
+    assert_eq!(inv.xss.delay_us, Some(20));
+    let e = parse(&["-cragginess=500"]).unwrap_err().0;
+    assert!(e.starts_with("-cragginess: "), "{e}");
+    let e = parse(&["-fps=1"]).unwrap_err().0;
+    assert!(e.contains("-fps takes no value"), "{e}");
+}
+
 /// xscreensaver's common options, `--version`, and its dialog's preview
 /// command (`-root` and `-window-id` together, in either order).
 #[test]
