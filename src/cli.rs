@@ -536,7 +536,9 @@ fn unknown_argument(arg: &str) -> UsageError {
              -KEY turns it on, -no-KEY off (-shadows, -no-shadows)"
         ));
     }
-    let nearest = match arg.strip_prefix('-') {
+    // `--colour=sonar` is compared by its flag, `color=sonar` is a `--set`.
+    let name = arg.split_once('=').map_or(arg, |(name, _)| name);
+    let nearest = match name.strip_prefix('-') {
         Some(flag) => {
             let bare = flag.trim_start_matches('-').replace('_', "-");
             let names = FLAGS
@@ -549,6 +551,9 @@ fn unknown_argument(arg: &str) -> UsageError {
             }
         }
         None if FLAGS.contains(&arg) => Some(format!("--{arg}")),
+        None if name != arg && crate::settings::keys::find(name.trim()).is_some() => {
+            Some(format!("--set {arg}"))
+        }
         None if is_file_name(arg) => Some(match opens(arg) {
             true => format!("--open {arg}"),
             false => format!("-o {arg}"),
@@ -660,7 +665,9 @@ fn parse_size(text: &str) -> Result<Size, UsageError> {
     let side = |s: &str| s.trim().parse().map_err(|_| bad());
     let size = Size::new(side(w)?, side(h)?);
     if size.is_empty() {
-        return Err(bad());
+        return Err(UsageError(format!(
+            "--size {text}: too small (each side at least 1 pixel)"
+        )));
     }
     if size.width.max(size.height) > MAX_SIDE {
         return Err(UsageError(format!(

@@ -149,6 +149,11 @@ fn a_mistyped_flag_offers_the_nearest() {
         (&["--check-confg"][..], "did you mean `--check-config`?"),
         (&["--verison"][..], "did you mean `--version`?"),
         (&["rendr", "-o", "x.png"][..], "did you mean `render`?"),
+        // A value after `=` does not hide the flag, and a key=value
+        // alone is a `--set` without its flag.
+        (&["--colour=sonar"][..], "did you mean `--color`?"),
+        (&["-outptu=x.png"][..], "did you mean `--output`?"),
+        (&["color=sonar"][..], "did you mean `--set color=sonar`?"),
     ] {
         let e = parse(args).expect_err(&format!("{args:?} should fail"));
         assert!(e.0.contains(offered), "{args:?}: {e}");
@@ -172,6 +177,12 @@ fn size_bounds_each_side() {
     for size in ["268435456x1", "1x268435456", "32769x2", "2x32769"] {
         let e = parse(&["render", "-o", "x.png", "--size", size]).unwrap_err();
         let want = format!("--size {size}: too large (each side at most 32768 pixels)");
+        assert!(e.0.contains(&want), "{e}");
+    }
+    // A side of none is a size, but too small: said so, not as a misspelling.
+    for size in ["0x0", "0x100", "100x0"] {
+        let e = parse(&["render", "-o", "x.png", "--size", size]).unwrap_err();
+        let want = format!("--size {size}: too small (each side at least 1 pixel)");
         assert!(e.0.contains(&want), "{e}");
     }
 }
