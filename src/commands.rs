@@ -46,7 +46,9 @@ pub fn warn_heights_only(sets: &[(String, String)], open: Option<&Path>) {
 
 /// `mountains render`: one complete mountain to a PNG.
 pub fn render(settings: &Settings, open: Option<&Path>, size: Size, output: &Path) -> ExitCode {
-    if let Some(code) = refuse_a_terminal(output).or_else(|| refuse_the_data_set(open, output)) {
+    let refused =
+        refuse_a_terminal(output).or_else(|| refuse_the_data_set(open, output, "picture"));
+    if let Some(code) = refused {
         return code;
     }
     let Some(mut frame) = Frame::new(size.width, size.height) else {
@@ -102,7 +104,9 @@ fn work_exponent(settings: &Settings, open: Option<&Path>) -> u32 {
 /// `mountains heightmap`: generate a data set and save it as a 16-bit PNG,
 /// or as raw 16-bit samples (`.r16`, `.raw`), whose height range it prints.
 pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> ExitCode {
-    if let Some(code) = refuse_a_terminal(output) {
+    let refused =
+        refuse_a_terminal(output).or_else(|| refuse_the_data_set(open, output, "data set"));
+    if let Some(code) = refused {
         return code;
     }
     if let Err(mib) = crate::memory::room_to_work(work_exponent(settings, open)) {
@@ -151,16 +155,18 @@ fn refuse_a_terminal(output: &Path) -> Option<ExitCode> {
 }
 
 /// `render --open X -o X` would put the picture in place of the data set
-/// it was drawn from, which no one asks for on purpose. The two paths are
+/// it was drawn from, which no one asks for on purpose; `heightmap --open
+/// X -o X` a terrain tool's file in place of our fitted copy of it (cropped
+/// to a square, resampled). `made` names what `-o` writes. The two paths are
 /// compared resolved (on Unix without opening either: a FIFO's open would
 /// wait); `-` is a pipe, never the file of that name.
-fn refuse_the_data_set(open: Option<&Path>, output: &Path) -> Option<ExitCode> {
+fn refuse_the_data_set(open: Option<&Path>, output: &Path, made: &str) -> Option<ExitCode> {
     let dash = Path::new("-");
     let open = open.filter(|&p| p != dash && output != dash)?;
     let (open, output_at) = (open.canonicalize().ok()?, output.canonicalize().ok()?);
     (open == output_at).then(|| {
         console::error(&format!(
-            "-o {}: is the data set --open reads; give the picture another name",
+            "-o {}: is the data set --open reads; give the {made} another name",
             output.display()
         ));
         ExitCode::from(EXIT_USAGE)

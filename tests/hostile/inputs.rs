@@ -525,6 +525,22 @@ fn a_picture_never_replaces_the_data_set_it_is_drawn_from() {
         assert!(err.contains("is the data set --open reads"), "{err}");
         assert_eq!(std::fs::read(&map).unwrap(), bytes);
     }
+    // Nor a data set over the one it opens: a terrain tool's file of
+    // another size would be replaced by our fitted copy of it.
+    let got = run(
+        &[
+            "heightmap",
+            "--open",
+            map.to_str().unwrap(),
+            "-o",
+            link.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    let err = String::from_utf8_lossy(&got.stderr);
+    assert_eq!(got.status.code(), Some(2), "{err}");
+    assert!(err.contains("give the data set another name"), "{err}");
+    assert_eq!(std::fs::read(&map).unwrap(), bytes);
 }
 
 /// A preferences file that is a link to nowhere is a file that cannot be
