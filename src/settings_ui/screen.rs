@@ -178,7 +178,7 @@ impl Screen {
             dir,
             field,
             self.preview.seed,
-            &self.preview.drawn_with(&self.model.settings),
+            &self.preview.saved_with(field, &self.model.settings),
         ) {
             Ok(path) => format!("Saved {}.", path.display()),
             Err(e) => format!("Cannot save the data set: {e}"),

@@ -906,6 +906,18 @@ fn open_keeps_the_data_sets_record_and_warns_of_a_set_it_ignores() {
     assert_eq!(data.field.size(), 33);
     assert_eq!(recorded.detail, mountains::settings::Detail::Level(5));
     assert_eq!(data.seed, Some(3));
+    // A 9x9 set is read fitted to 17x17, and saved again as what it is.
+    run(&["heightmap", "--set", "detail=3", "--set", "seed=3", "-o", h]);
+    run(&["heightmap", "--open", h, "-o", again]);
+    let data = mountains::terrain::heightmap::load(&files[1]).unwrap();
+    let recorded = mountains::mountain::Mountain::drawn_under(
+        data.params.as_ref(),
+        &mountains::settings::Settings::default(),
+    );
+    assert_eq!(
+        (data.field.size(), recorded.detail),
+        (17, mountains::settings::Detail::Level(4))
+    );
     let o = run(&[
         "render", "--size", "40x30", "--open", h, "--set", "seed=9", "-o", picture,
     ]);
