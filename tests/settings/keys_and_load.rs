@@ -164,6 +164,34 @@ fn seeds_accept_integers_big_strings_and_random() {
     assert_eq!(load_text("seed = -3\n").1.len(), 1);
 }
 
+/// A number or a true/false written in quotes in the file is offered
+/// without them, when the key takes it so; one out of range is not.
+#[test]
+fn a_quoted_number_or_boolean_is_offered_without_quotes() {
+    for (line, offered) in [
+        ("detail = \"8\"\n", "did you mean 8, without quotes?"),
+        ("draw_seconds = \"5\"\n", "did you mean 5, without quotes?"),
+        (
+            "low_detail = \"true\"\n",
+            "did you mean true, without quotes?",
+        ),
+    ] {
+        let problems = load_text(line).1;
+        assert_eq!(problems.len(), 1, "{line}");
+        assert!(
+            problems[0].message.contains(offered),
+            "{line}: {}",
+            problems[0]
+        );
+    }
+    let problems = load_text("detail = \"99\"\n").1;
+    assert!(
+        !problems[0].message.contains("did you mean"),
+        "{}",
+        problems[0]
+    );
+}
+
 #[test]
 fn set_accepts_bare_words_and_toml_values() {
     let mut s = Settings::default();
