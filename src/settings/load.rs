@@ -54,7 +54,13 @@ impl Problem {
     pub fn drops_the_file(&self) -> bool {
         self.is_unreadable()
             || self.message.starts_with(NOT_TOML)
-            || [text::NOT_UTF8, text::NOT_UTF16, text::NUL_IN_TEXT].contains(&self.message.as_str())
+            || [
+                text::NOT_UTF8,
+                text::NOT_UTF16,
+                text::NUL_IN_TEXT,
+                text::A_PNG,
+            ]
+            .contains(&self.message.as_str())
     }
 
     /// The problem without its place: the key (clipped) and the message.

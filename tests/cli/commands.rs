@@ -940,3 +940,33 @@ fn open_keeps_the_data_sets_record_and_warns_of_a_set_it_ignores() {
     ]);
     assert!(!stderr(&o).contains("warning"), "{}", stderr(&o));
 }
+
+/// A data set given as the preferences file (`--config h.png`, meant for
+/// `--open`) is named as a PNG, with the flag that reads one.
+#[test]
+fn a_png_given_as_preferences_is_named_as_one() {
+    let dir = scratch("png-config");
+    let h = dir.join("h.png");
+    small_data_set(&h);
+    let o = mountains(&["--check-config", &arg(&h)]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(
+        stderr(&o)
+            .contains("h.png:1:1: a PNG image, not text (a data set is opened with --open FILE)"),
+        "{}",
+        stderr(&o)
+    );
+    let out = dir.join("x.png");
+    let o = run(&[
+        "render",
+        "--config",
+        &arg(&h),
+        "--size",
+        "8x8",
+        "-o",
+        &arg(&out),
+    ]);
+    let err = stderr(&o);
+    assert!(err.contains("a PNG image, not text"), "{err}");
+    assert!(err.contains("nothing in the file was used"), "{err}");
+}
