@@ -38,7 +38,7 @@ pub fn warn_heights_only(sets: &[(String, String)], open: Option<&Path>) {
     for (key, value) in sets.iter().filter(|(key, _)| heights_only(key)) {
         console::err(&format!(
             "mountains: warning: --set {key}={value}: no effect with --open {}: \
-             the data set's heights are drawn as they are",
+             the data set's heights are used as they are",
             path.display()
         ));
     }
