@@ -184,7 +184,24 @@ pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
     }
     let mode = mode.map_or_else(default_mode, |(m, _)| m);
     p.inv.mode = finish_mode(mode, output, size)?;
+    one_file_to_check(&p.inv)?;
     Ok(p.inv)
+}
+
+/// `--config A --check-config B` names two files where one is checked:
+/// which one the user meant is not ours to guess (B was checked, A
+/// passed over in silence).
+fn one_file_to_check(inv: &Invocation) -> Result<(), UsageError> {
+    match (&inv.mode, &inv.config) {
+        (Mode::CheckConfig(Some(file)), Some(config)) if file != config => {
+            Err(UsageError(format!(
+                "--check-config {} and --config {}: two files; give one",
+                file.display(),
+                config.display()
+            )))
+        }
+        _ => Ok(()),
+    }
 }
 
 /// Fills in the output and size of the subcommands, and refuses them elsewhere.

@@ -105,6 +105,17 @@ fn subcommands_take_output_and_size() {
         mode(&["--check-config", "f.toml"]),
         Mode::CheckConfig(Some("f.toml".into()))
     );
+    // One file is checked: `--config` names it, or `--check-config` does,
+    // and two different ones are refused rather than one passed over.
+    assert_eq!(
+        mode(&["--config", "f.toml", "--check-config", "f.toml"]),
+        Mode::CheckConfig(Some("f.toml".into()))
+    );
+    let e = parse(&["--config", "a.toml", "--check-config", "b.toml"]).unwrap_err();
+    assert!(
+        e.0.contains("--check-config b.toml and --config a.toml: two files; give one"),
+        "{e}"
+    );
 }
 
 #[test]
