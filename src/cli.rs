@@ -184,7 +184,24 @@ pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
     }
     let mode = mode.map_or_else(default_mode, |(m, _)| m);
     p.inv.mode = finish_mode(mode, output, size)?;
+    one_file_to_check(&p.inv)?;
     Ok(p.inv)
+}
+
+/// `--config A --check-config B` names two files where one is checked:
+/// which one the user meant is not ours to guess (B was checked, A
+/// passed over in silence).
+fn one_file_to_check(inv: &Invocation) -> Result<(), UsageError> {
+    match (&inv.mode, &inv.config) {
+        (Mode::CheckConfig(Some(file)), Some(config)) if file != config => {
+            Err(UsageError(format!(
+                "--check-config {} and --config {}: two files; give one",
+                file.display(),
+                config.display()
+            )))
+        }
+        _ => Ok(()),
+    }
 }
 
 /// Fills in the output and size of the subcommands, and refuses them elsewhere.
@@ -279,10 +296,13 @@ impl Parser<'_> {
         if let Some(mode) = self.windows_flag(arg)? {
             return Ok(Some(mode));
         }
-        let flag = long_name(arg);
-        let (flag, inline) = match flag.split_once('=') {
-            Some((f, v)) if f.starts_with("--") => (f.to_string(), Some(v.to_string())),
-            _ => (flag, None),
+        // `--seed=5`, and with one dash as xscreensaver's flags are typed
+        // (`-seed=5`, `-config=FILE`), as `-seed 5` is taken.
+        let (flag, inline) = match arg.split_once('=') {
+            Some((f, v)) if f.len() > 1 && f.starts_with('-') => {
+                (long_name(f), Some(v.to_string()))
+            }
+            _ => (long_name(arg), None),
         };
         // A value as typed, named by the flag as typed (`--output`, not `-o`).
         let take = |p: &mut Self, long: &str| -> Result<OsString, UsageError> {
@@ -366,12 +386,16 @@ impl Parser<'_> {
                 self.inline_or_next(inline, &flag)?;
             }
             "--check-config" => {
-                let path = match (inline, self.args.get(self.pos).and_then(|a| a.to_str())) {
-                    (Some(v), _) if v.is_empty() => {
-                        return Err(UsageError(format!(
-                            "{arg}: an empty value; give a file name, or no `=` for the usual file"
-                        )));
-                    }
+                let next = self.args.get(self.pos).and_then(|a| a.to_str());
+                // `--check-config ""` (an unset variable in a script) as
+                // `--check-config=`: a bad value, not a file that is missing.
+                let (empty_inline, empty_next) = (inline.as_deref() == Some(""), next == Some(""));
+                if empty_inline || (inline.is_none() && empty_next) {
+                    return Err(UsageError(format!(
+                        "{arg}: an empty value; give a file name, or none for the usual file"
+                    )));
+                }
+                let path = match (inline, next) {
                     (Some(v), _) => Some(PathBuf::from(v)),
                     (None, Some(next)) if !next.starts_with('-') => {
                         self.pos += 1;
@@ -529,7 +553,9 @@ fn unknown_argument(arg: &str) -> UsageError {
              -KEY turns it on, -no-KEY off (-shadows, -no-shadows)"
         ));
     }
-    let nearest = match arg.strip_prefix('-') {
+    // `--colour=sonar` is compared by its flag, `color=sonar` is a `--set`.
+    let name = arg.split_once('=').map_or(arg, |(name, _)| name);
+    let nearest = match name.strip_prefix('-') {
         Some(flag) => {
             let bare = flag.trim_start_matches('-').replace('_', "-");
             let names = FLAGS
@@ -542,6 +568,9 @@ fn unknown_argument(arg: &str) -> UsageError {
             }
         }
         None if FLAGS.contains(&arg) => Some(format!("--{arg}")),
+        None if name != arg && crate::settings::keys::find(name.trim()).is_some() => {
+            Some(format!("--set {arg}"))
+        }
         None if is_file_name(arg) => Some(match opens(arg) {
             true => format!("--open {arg}"),
             false => format!("-o {arg}"),
@@ -653,7 +682,9 @@ fn parse_size(text: &str) -> Result<Size, UsageError> {
     let side = |s: &str| s.trim().parse().map_err(|_| bad());
     let size = Size::new(side(w)?, side(h)?);
     if size.is_empty() {
-        return Err(bad());
+        return Err(UsageError(format!(
+            "--size {text}: too small (each side at least 1 pixel)"
+        )));
     }
     if size.width.max(size.height) > MAX_SIDE {
         return Err(UsageError(format!(

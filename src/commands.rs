@@ -27,9 +27,28 @@ pub fn mountain(settings: &Settings, open: Option<&Path>) -> Result<Mountain, St
     Ok(mountain)
 }
 
+/// Warns of each `--set` (or key flag) in `sets` that `--open` leaves
+/// without effect in `render` and `heightmap`: one that only shapes the
+/// heights a generator makes ([`crate::mountain::HEIGHTS_ONLY`]), where
+/// the heights are the data set's. A preferences file's keys are no
+/// mistake of this run, and are not named.
+pub fn warn_heights_only(sets: &[(String, String)], open: Option<&Path>) {
+    let Some(path) = open else { return };
+    let heights_only = |key: &str| crate::mountain::HEIGHTS_ONLY.iter().any(|k| k.name == key);
+    for (key, value) in sets.iter().filter(|(key, _)| heights_only(key)) {
+        console::err(&format!(
+            "mountains: warning: --set {key}={value}: no effect with --open {}: \
+             the data set's heights are used as they are",
+            path.display()
+        ));
+    }
+}
+
 /// `mountains render`: one complete mountain to a PNG.
 pub fn render(settings: &Settings, open: Option<&Path>, size: Size, output: &Path) -> ExitCode {
-    if let Some(code) = refuse_a_terminal(output).or_else(|| refuse_the_data_set(open, output)) {
+    let refused =
+        refuse_a_terminal(output).or_else(|| refuse_the_data_set(open, output, "picture"));
+    if let Some(code) = refused {
         return code;
     }
     let Some(mut frame) = Frame::new(size.width, size.height) else {
@@ -85,7 +104,9 @@ fn work_exponent(settings: &Settings, open: Option<&Path>) -> u32 {
 /// `mountains heightmap`: generate a data set and save it as a 16-bit PNG,
 /// or as raw 16-bit samples (`.r16`, `.raw`), whose height range it prints.
 pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> ExitCode {
-    if let Some(code) = refuse_a_terminal(output) {
+    let refused =
+        refuse_a_terminal(output).or_else(|| refuse_the_data_set(open, output, "data set"));
+    if let Some(code) = refused {
         return code;
     }
     if let Err(mib) = crate::memory::room_to_work(work_exponent(settings, open)) {
@@ -98,7 +119,7 @@ pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> Exi
         Err(e) => return fail(&e),
     };
     // A data set saved again keeps the keys its file recorded.
-    let settings = &shown.drawn_with(settings);
+    let settings = &shown.saved_with(settings);
     let (field, seed) = (shown.field, shown.seed);
     let format = output::format_of(output, output::DATA_SETS, "a data set").unwrap_or(Format::Png);
     if format == Format::Raw16 {
@@ -134,16 +155,18 @@ fn refuse_a_terminal(output: &Path) -> Option<ExitCode> {
 }
 
 /// `render --open X -o X` would put the picture in place of the data set
-/// it was drawn from, which no one asks for on purpose. The two paths are
+/// it was drawn from, which no one asks for on purpose; `heightmap --open
+/// X -o X` a terrain tool's file in place of our fitted copy of it (cropped
+/// to a square, resampled). `made` names what `-o` writes. The two paths are
 /// compared resolved (on Unix without opening either: a FIFO's open would
 /// wait); `-` is a pipe, never the file of that name.
-fn refuse_the_data_set(open: Option<&Path>, output: &Path) -> Option<ExitCode> {
+fn refuse_the_data_set(open: Option<&Path>, output: &Path, made: &str) -> Option<ExitCode> {
     let dash = Path::new("-");
     let open = open.filter(|&p| p != dash && output != dash)?;
     let (open, output_at) = (open.canonicalize().ok()?, output.canonicalize().ok()?);
     (open == output_at).then(|| {
         console::error(&format!(
-            "-o {}: is the data set --open reads; give the picture another name",
+            "-o {}: is the data set --open reads; give the {made} another name",
             output.display()
         ));
         ExitCode::from(EXIT_USAGE)
@@ -180,65 +203,90 @@ fn fail(message: &str) -> ExitCode {
 /// there is no preferences file at the usual place (the defaults are in
 /// use, which is no mistake) and for the null device (`/dev/null`: no
 /// preferences); 1 for any problem in the file, or a named file missing;
-/// 2 for a bad `--set` (typed for the run, as in every mode).
+/// 2 for a bad `--set` (typed for the run, as in every mode), whatever
+/// the file.
 pub fn check_config(
     path: Option<&Path>,
     config: Option<&Path>,
     sets: &[(String, String)],
 ) -> ExitCode {
+    // Said first: typed for this run, they are what to mend now, and a
+    // file's flood of problems ends in "... and N more".
+    let mistyped = report_bad_sets(sets);
+    let checked = check_file(path, config);
+    let printed = match checked {
+        Err(code) => {
+            return if mistyped {
+                ExitCode::from(EXIT_USAGE)
+            } else {
+                code
+            };
+        }
+        Ok(printed) => printed,
+    };
+    if mistyped {
+        return ExitCode::from(EXIT_USAGE);
+    }
+    let printed = match sets.is_empty() {
+        true => printed,
+        false => printed.and_then(|()| console::outln("--set: ok")),
+    };
+    console::status(printed, ExitCode::SUCCESS)
+}
+
+/// Says each `--set` whose key or value is bad; true if any was. A value's
+/// range and type do not depend on the other keys, so each is checked
+/// against the defaults.
+fn report_bad_sets(sets: &[(String, String)]) -> bool {
+    let problems: Vec<load::Problem> = sets
+        .iter()
+        .filter_map(|(key, value)| load::apply_set(&mut Settings::default(), key, value).err())
+        .collect();
+    for line in load::report_with(&problems, |p| console::error_line(&p.to_string())) {
+        console::err(&line);
+    }
+    !problems.is_empty()
+}
+
+/// The file part of [`check_config`]: its problems said, and `Err` with
+/// the exit code when there are any (or the file cannot be checked);
+/// `Ok` with what printing its verdict gave.
+fn check_file(path: Option<&Path>, config: Option<&Path>) -> Result<std::io::Result<()>, ExitCode> {
     let named = path.or(config).map(Path::to_path_buf);
     let Some(file) = named.clone().or_else(paths::config_file) else {
-        return fail("--check-config: no preferences file given and no home directory to look in");
+        return Err(fail(
+            "--check-config: no preferences file given and no home directory to look in",
+        ));
     };
-    let mut settings = Settings::default();
-    let mut problems = Vec::new();
-    let mut printed = Ok(());
     // A link that leads nowhere (or round in a loop) is there, and reading
     // it says what is wrong with it; only a name with nothing at all is missing.
     let present = std::fs::symlink_metadata(&file).is_ok();
-    let none = crate::fsutil::is_null_device(&file);
-    if none {
-        printed = console::outln(&format!(
+    if crate::fsutil::is_null_device(&file) {
+        return Ok(console::outln(&format!(
             "mountains: {}: no preferences; the defaults are in use",
             file.display()
-        ));
-    } else if present {
-        problems = load::apply_file(&mut settings, &file);
-    } else if named.is_some() {
+        )));
+    }
+    if !present {
+        if named.is_none() {
+            return Ok(console::outln(&format!(
+                "mountains: no preferences file at {}; the defaults are in use",
+                file.display()
+            )));
+        }
         let flag = if path.is_some() {
             "--check-config"
         } else {
             "--config"
         };
-        return fail(&format!("{flag} {}: no such file", file.display()));
-    } else {
-        printed = console::outln(&format!(
-            "mountains: no preferences file at {}; the defaults are in use",
-            file.display()
-        ));
+        return Err(fail(&format!("{flag} {}: no such file", file.display())));
     }
-    let mut mistyped = false;
-    for (key, value) in sets {
-        if let Err(p) = load::apply_set(&mut settings, key, value) {
-            problems.push(p);
-            mistyped = true;
-        }
-    }
+    let problems = load::apply_file(&mut Settings::default(), &file);
     for line in load::report_with(&problems, |p| console::error_line(&p.to_string())) {
         console::err(&line);
     }
-    if mistyped {
-        // A `--set` is typed for the run: a usage error, as in every mode.
-        return ExitCode::from(EXIT_USAGE);
-    }
     if !problems.is_empty() {
-        return ExitCode::FAILURE;
+        return Err(ExitCode::FAILURE);
     }
-    if present && !none {
-        printed = printed.and_then(|()| console::outln(&format!("{}: ok", file.display())));
-    }
-    if !sets.is_empty() {
-        printed = printed.and_then(|()| console::outln("--set: ok"));
-    }
-    console::status(printed, ExitCode::SUCCESS)
+    Ok(console::outln(&format!("{}: ok", file.display())))
 }

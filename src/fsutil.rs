@@ -13,7 +13,7 @@ pub const MAX_PREFERENCES_BYTES: u64 = 4 << 20;
 /// links) of at most `cap` bytes. A FIFO would block until someone writes
 /// to it, a device may never end: both get a message instead.
 pub fn open_regular(path: &Path, cap: u64) -> io::Result<File> {
-    let meta = std::fs::metadata(path)?;
+    let meta = std::fs::metadata(path).map_err(|e| nowhere(path, e))?;
     if !meta.is_file() {
         return Err(io::Error::new(
             io::ErrorKind::InvalidInput,
@@ -24,6 +24,22 @@ pub fn open_regular(path: &Path, cap: u64) -> io::Result<File> {
         return Err(too_big(meta.len(), cap));
     }
     File::open(path)
+}
+
+/// `e`, the error of following `path`, said as a link to nowhere when
+/// `path` is a symbolic link to nothing. Not `NotFound` then: a name with
+/// nothing at all is a file not made yet, which a save creates, but a
+/// link is someone's, and a file written in its place would replace it.
+fn nowhere(path: &Path, e: io::Error) -> io::Error {
+    let is_link = std::fs::symlink_metadata(path).is_ok_and(|m| m.file_type().is_symlink());
+    if e.kind() != io::ErrorKind::NotFound || !is_link {
+        return e;
+    }
+    let to = std::fs::read_link(path).unwrap_or_default();
+    io::Error::new(
+        io::ErrorKind::InvalidInput,
+        format!("a link to nowhere (to {})", to.display()),
+    )
 }
 
 /// Whether `path` names the null device (`/dev/null`, or `NUL` on
@@ -107,7 +123,10 @@ pub fn write_atomic_checked(
 ) -> io::Result<bool> {
     let target = match std::fs::canonicalize(path) {
         Ok(real) => real,
-        // Not there yet (or a dangling link): the name itself.
+        // A link to nowhere, or round in a loop: the rename would put a
+        // file in place of the link.
+        Err(e) if path.is_symlink() => return Err(nowhere(path, e)),
+        // Not there yet: the name itself.
         Err(_) => path.to_path_buf(),
     };
     match std::fs::metadata(&target) {

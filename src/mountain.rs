@@ -5,9 +5,31 @@
 use std::path::Path;
 use std::sync::Arc;
 
-use crate::settings::Settings;
+use crate::settings::keys::{self, Key};
+use crate::settings::{Detail, Settings};
 use crate::terrain::heightmap::{self, DataSet, GeneratorParams};
 use crate::terrain::{self, Heightfield};
+
+/// The keys that only shape the heights a generator makes. A data set
+/// opened from a file has its heights already, so `render --open` and
+/// `heightmap --open` draw and save it the same whatever these say (the
+/// saver's N key, which makes a new mountain after `--open`, still uses
+/// them). The others are drawn under: the look, the world, the height's
+/// treeline, the cliffs' strata, low detail's wireframe.
+pub const HEIGHTS_ONLY: [&Key; 12] = [
+    &keys::SEED,
+    &keys::GENERATOR,
+    &keys::CRAGGINESS,
+    &keys::ELEVATION,
+    &keys::ROUGHNESS,
+    &keys::CONTOUR,
+    &keys::PROFILE,
+    &keys::HURST,
+    &keys::EROSION,
+    &keys::DETAIL,
+    &keys::SEA_LEVEL,
+    &keys::WATER_LINE,
+];
 
 /// A mountain ready to draw and the seed that made it (none for a foreign heightmap).
 #[derive(Debug, Clone)]
@@ -61,6 +83,49 @@ impl Mountain {
         Mountain::drawn_under(self.recorded.as_ref(), prefs)
     }
 
+    /// The settings this mountain is saved with under `prefs` (what a data
+    /// set records): as [`Mountain::drawn_with`], but a data set read from
+    /// a file keeps its file's record of how its heights were made
+    /// ([`HEIGHTS_ONLY`]), which `prefs` made nothing of here, and the
+    /// detail is always the grid's own (`--set detail=5` recorded on a grid
+    /// of another size would be false).
+    pub fn saved_with(&self, prefs: &Settings) -> Settings {
+        let opened = (!self.generated).then_some(self.recorded.as_ref());
+        Mountain::saved_under(opened, &self.field, prefs)
+    }
+
+    /// [`Mountain::saved_with`] for those that keep only the heights and
+    /// what their file recorded: `opened` is `Some` (with that record) for
+    /// heights read from a file.
+    pub fn saved_under(
+        opened: Option<Option<&GeneratorParams>>,
+        field: &Heightfield,
+        prefs: &Settings,
+    ) -> Settings {
+        let mut saved = match opened {
+            None => prefs.clone(),
+            Some(recorded) => {
+                let mut made = prefs.clone();
+                let defaults = Settings::default();
+                for key in HEIGHTS_ONLY {
+                    keys::copy(key, &defaults, &mut made);
+                }
+                Mountain::drawn_under(recorded, &made)
+            }
+        };
+        // The grid may not be the one the settings say: a 9x9 set is read
+        // fitted to 17x17, "auto" fits a window, a preview is smaller.
+        let exponent = field.exponent();
+        if saved.grid_exponent() != exponent {
+            // `low_detail` halves all but the smallest grids
+            // (`Settings::grid_exponent`), and none is finer than the finest.
+            saved.low_detail &= exponent < crate::settings::MAX_GRID_EXPONENT;
+            let halved = saved.low_detail && exponent >= 4;
+            saved.detail = Detail::Level(exponent + u32::from(halved));
+        }
+        saved
+    }
+
     /// The settings a mountain whose file recorded `recorded` is drawn with
     /// under `prefs` (see [`Mountain::drawn_with`]), for those that keep
     /// only what the file recorded.
@@ -102,6 +167,32 @@ mod tests {
             seed: Some(11),
             ..Settings::default()
         }
+    }
+
+    /// A data set records the detail of its own grid, whatever the
+    /// preferences say: "auto" (fitted to a window) or another level.
+    #[test]
+    fn a_saved_set_records_its_own_grid() {
+        let made = Mountain::from_seed(&small(), 11);
+        let auto = Settings {
+            detail: Detail::Auto,
+            ..small()
+        };
+        assert_eq!(made.saved_with(&auto).detail, Detail::Level(5));
+        let low = Settings {
+            low_detail: true,
+            ..auto.clone()
+        };
+        assert_eq!(made.saved_with(&low).grid_exponent(), 5);
+        let opened = Mountain {
+            generated: false,
+            ..made.clone()
+        };
+        let eight = Settings {
+            detail: Detail::Level(8),
+            ..small()
+        };
+        assert_eq!(opened.saved_with(&eight).detail, Detail::Level(5));
     }
 
     #[test]

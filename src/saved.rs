@@ -72,11 +72,11 @@ pub fn save_screenshot(dir: &Path, frame: &Frame, seed: Option<u64>) -> Result<P
 const MAX_ENTRIES: usize = 10_000;
 
 /// The folders saved data sets are looked for in: the data directory, then
-/// `heightmaps_dir` (empty = none), without repeats.
+/// `heightmaps_dir` (empty = none; `~` is the home folder), without repeats.
 pub fn folders(data_dir: Option<&Path>, heightmaps_dir: Option<&str>) -> Vec<PathBuf> {
     let mut out: Vec<PathBuf> = data_dir.map(Path::to_path_buf).into_iter().collect();
     if let Some(d) = heightmaps_dir.filter(|d| !d.is_empty()) {
-        let d = PathBuf::from(d);
+        let d = crate::settings::paths::folder(d);
         if !out.contains(&d) {
             out.push(d);
         }
@@ -118,6 +118,19 @@ pub fn next_after<'a>(files: &'a [PathBuf], current: Option<&Path>) -> Option<&'
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `heightmaps_dir = "~/maps"` is the maps in the home folder, as a
+    /// shell would read it; a `~` inside a name is a `~`.
+    #[test]
+    fn a_leading_tilde_is_the_home_folder() {
+        let Some(home) = directories::BaseDirs::new().map(|b| b.home_dir().to_path_buf()) else {
+            return;
+        };
+        assert_eq!(folders(None, Some("~")), [home.join("")]);
+        assert_eq!(folders(None, Some("~/maps")), [home.join("maps")]);
+        assert_eq!(folders(None, Some("a~/b")), [PathBuf::from("a~/b")]);
+        assert_eq!(folders(None, Some("~user/b")), [PathBuf::from("~user/b")]);
+    }
 
     #[test]
     fn file_names_hold_local_date_time_and_seed() {

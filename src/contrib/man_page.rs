@@ -118,7 +118,8 @@ Accepted for xscreensaver; a true-colour framebuffer needs neither.
 Print the version.
 .SH PREFERENCE KEYS
 Every key is read from the preferences file, from \fB\-\-set\fP \fIkey\fP=\fIvalue\fP,
-and from a flag of its own (one or two dashes; underscores written as dashes).
+and from a flag of its own (one or two dashes; underscores written as dashes;
+the value after a space or =: \fB\-seed 5\fP, \fB\-seed=5\fP).
 "#;
 
 const TAIL: &str = r#".SH FILES

@@ -17,7 +17,7 @@ pub fn slide_uses_folder(slide: u64) -> bool {
 pub fn next_mountain(settings: &Settings, slide: u64) -> Mountain {
     let folder = settings.heightmaps_dir.as_deref().filter(|d| !d.is_empty());
     if let Some(dir) = folder.filter(|_| slide_uses_folder(slide))
-        && let Some(mountain) = random_heightmap(Path::new(dir))
+        && let Some(mountain) = random_heightmap(&crate::settings::paths::folder(dir))
     {
         return mountain;
     }

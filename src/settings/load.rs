@@ -54,7 +54,13 @@ impl Problem {
     pub fn drops_the_file(&self) -> bool {
         self.is_unreadable()
             || self.message.starts_with(NOT_TOML)
-            || [text::NOT_UTF8, text::NOT_UTF16, text::NUL_IN_TEXT].contains(&self.message.as_str())
+            || [
+                text::NOT_UTF8,
+                text::NOT_UTF16,
+                text::NUL_IN_TEXT,
+                text::A_PNG,
+            ]
+            .contains(&self.message.as_str())
     }
 
     /// The problem without its place: the key (clipped) and the message.
@@ -358,8 +364,11 @@ pub fn resolve(
         // (`exists` follows the link, and the file was passed over).
         None => super::paths::config_file().filter(|p| p.symlink_metadata().is_ok()),
     };
-    let new_file =
-        |p: &Path| unreadable == Unreadable::NewIfMissing && config.is_some() && !p.exists();
+    // Nothing at all at the name: a link to nowhere is someone's, and
+    // cannot be read (`exists` would follow it).
+    let new_file = |p: &Path| {
+        unreadable == Unreadable::NewIfMissing && config.is_some() && p.symlink_metadata().is_err()
+    };
     let file = file.filter(|p| !new_file(p) && !crate::fsutil::is_null_device(p));
     let mut problems = Vec::new();
     if let Some(path) = &file {

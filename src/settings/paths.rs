@@ -1,6 +1,6 @@
 //! Where preferences, logs and saved data sets live on this platform.
 
-use std::path::PathBuf;
+use std::path::{PathBuf, is_separator};
 
 fn project_dirs() -> Option<directories::ProjectDirs> {
     directories::ProjectDirs::from("", "", "mountains")
@@ -15,4 +15,18 @@ pub fn config_file() -> Option<PathBuf> {
 /// e.g. `~/.local/share/mountains`.
 pub fn data_dir() -> Option<PathBuf> {
     project_dirs().map(|d| d.data_dir().to_path_buf())
+}
+
+/// A folder a person named in the preferences (`heightmaps_dir`), a
+/// leading `~` read as their home folder as a shell reads it: the file is
+/// written by hand, and no shell ever sees it (`~/maps` was looked for in
+/// a folder named `~`).
+pub fn folder(text: &str) -> PathBuf {
+    let home = directories::BaseDirs::new().map(|b| b.home_dir().to_path_buf());
+    match (text.strip_prefix('~'), home) {
+        (Some(rest), Some(home)) if rest.is_empty() || rest.starts_with(is_separator) => {
+            home.join(rest.trim_start_matches(is_separator))
+        }
+        _ => PathBuf::from(text),
+    }
 }

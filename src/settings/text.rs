@@ -41,8 +41,15 @@ pub const NOT_UTF16: &str = "not valid UTF-16 text";
 pub const NUL_IN_TEXT: &str =
     "a NUL byte, which text has none of (UTF-16 without its byte-order mark? save it as UTF-8)";
 
+/// What [`NotText`] says of a PNG given as a preferences file (`--config
+/// h.png`, meant for `--open`).
+pub const A_PNG: &str = "a PNG image, not text (a data set is opened with --open FILE)";
+
 /// The text of a preferences file's `bytes`, and its form.
 pub fn decode(mut bytes: Vec<u8>) -> Result<(String, Form), NotText> {
+    if bytes.starts_with(&crate::terrain::heightmap::PNG_SIGNATURE) {
+        return Err(not_text("", A_PNG));
+    }
     let form = match bytes.as_slice() {
         [0xff, 0xfe, ..] => Form::Utf16Le,
         [0xfe, 0xff, ..] => Form::Utf16Be,

@@ -63,6 +63,7 @@ impl Editing {
 /// start is an error now; one that ends with a failure status is reported
 /// through `editing`.
 pub fn open(path: &Path, editing: &Editing) -> Result<String, String> {
+    // Only where nothing is: a link to nowhere is refused by the write.
     if !path.exists() {
         create_default(path)?;
     }

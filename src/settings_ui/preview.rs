@@ -107,6 +107,13 @@ impl Preview {
         Mountain::drawn_under(self.recorded.as_ref(), settings)
     }
 
+    /// What a data set of the mountain shown records under `settings`
+    /// (see `Mountain::saved_with`).
+    pub fn saved_with(&self, field: &Heightfield, settings: &Settings) -> Settings {
+        let opened = self.file.is_some().then_some(self.recorded.as_ref());
+        Mountain::saved_under(opened, field, settings)
+    }
+
     /// Draws the next few strips; true while more remain.
     pub fn step(&mut self) -> bool {
         let (Some(p), Some(pic)) = (self.painter.as_mut(), self.picture.as_mut()) else {

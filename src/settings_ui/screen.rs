@@ -178,7 +178,7 @@ impl Screen {
             dir,
             field,
             self.preview.seed,
-            &self.preview.drawn_with(&self.model.settings),
+            &self.preview.saved_with(field, &self.model.settings),
         ) {
             Ok(path) => format!("Saved {}.", path.display()),
             Err(e) => format!("Cannot save the data set: {e}"),
@@ -206,7 +206,8 @@ impl Screen {
         }
         self.config_seen = now;
         let mut fresh = Settings::default();
-        let problems = if self.config.exists() {
+        // A link to nowhere is read, and says so (`exists` follows it).
+        let problems = if self.config.symlink_metadata().is_ok() {
             load::apply_file(&mut fresh, &self.config)
         } else {
             Vec::new()

@@ -105,6 +105,17 @@ fn subcommands_take_output_and_size() {
         mode(&["--check-config", "f.toml"]),
         Mode::CheckConfig(Some("f.toml".into()))
     );
+    // One file is checked: `--config` names it, or `--check-config` does,
+    // and two different ones are refused rather than one passed over.
+    assert_eq!(
+        mode(&["--config", "f.toml", "--check-config", "f.toml"]),
+        Mode::CheckConfig(Some("f.toml".into()))
+    );
+    let e = parse(&["--config", "a.toml", "--check-config", "b.toml"]).unwrap_err();
+    assert!(
+        e.0.contains("--check-config b.toml and --config a.toml: two files; give one"),
+        "{e}"
+    );
 }
 
 #[test]
@@ -149,6 +160,11 @@ fn a_mistyped_flag_offers_the_nearest() {
         (&["--check-confg"][..], "did you mean `--check-config`?"),
         (&["--verison"][..], "did you mean `--version`?"),
         (&["rendr", "-o", "x.png"][..], "did you mean `render`?"),
+        // A value after `=` does not hide the flag, and a key=value
+        // alone is a `--set` without its flag.
+        (&["--colour=sonar"][..], "did you mean `--color`?"),
+        (&["-outptu=x.png"][..], "did you mean `--output`?"),
+        (&["color=sonar"][..], "did you mean `--set color=sonar`?"),
     ] {
         let e = parse(args).expect_err(&format!("{args:?} should fail"));
         assert!(e.0.contains(offered), "{args:?}: {e}");
@@ -172,6 +188,12 @@ fn size_bounds_each_side() {
     for size in ["268435456x1", "1x268435456", "32769x2", "2x32769"] {
         let e = parse(&["render", "-o", "x.png", "--size", size]).unwrap_err();
         let want = format!("--size {size}: too large (each side at most 32768 pixels)");
+        assert!(e.0.contains(&want), "{e}");
+    }
+    // A side of none is a size, but too small: said so, not as a misspelling.
+    for size in ["0x0", "0x100", "100x0"] {
+        let e = parse(&["render", "-o", "x.png", "--size", size]).unwrap_err();
+        let want = format!("--size {size}: too small (each side at least 1 pixel)");
         assert!(e.0.contains(&want), "{e}");
     }
 }
@@ -256,6 +278,26 @@ fn every_key_is_a_flag_of_its_own() {
     );
     let e = parse(&["-no-color", "x"]).unwrap_err().0;
     assert!(e.contains("unknown argument `-no-color`"), "{e}");
+}
+
+/// A value after `=` is taken with one dash as with two, as `-seed 5`
+/// is: `-seed=5` as `--seed=5`, `-config=FILE` as `--config=FILE`.
+#[test]
+fn one_dash_takes_a_value_after_an_equals_sign() {
+    let inv = parse(&["-seed=5", "-color=sonar", "-config=f.toml", "-delay=20"])
+        .unwrap_or_else(|e| panic!("{e}"));
+    let sets: Vec<(&str, &str)> = inv
+        .sets
+        .iter()
+        .map(|(k, v)| (k.as_str(), v.as_str()))
+        .collect();
+    assert_eq!(sets, [("seed", "5"), ("color", "sonar")]);
+    assert_eq!(inv.config, Some(PathBuf::from("f.toml")));
+    assert_eq!(inv.xss.delay_us, Some(20));
+    let e = parse(&["-cragginess=500"]).unwrap_err().0;
+    assert!(e.starts_with("-cragginess: "), "{e}");
+    let e = parse(&["-fps=1"]).unwrap_err().0;
+    assert!(e.contains("-fps takes no value"), "{e}");
 }
 
 /// xscreensaver's common options, `--version`, and its dialog's preview

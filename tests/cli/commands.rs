@@ -665,6 +665,30 @@ fn check_config_without_a_file_is_fine_and_honours_config_and_set() {
     );
 }
 
+/// A bad `--set` is exit 2 under `--check-config` whatever the file, and
+/// is never hidden: not behind a named file that is missing, nor in the
+/// "... and N more" of a file with many problems.
+#[test]
+fn check_config_always_says_a_bad_set() {
+    let dir = scratch("check-config-sets");
+    let missing = dir.join("missing.toml");
+    let o = mountains(&["--check-config", &arg(&missing), "--set", "color=pink"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(
+        err.contains("--set: key `color`") && err.contains("no such file"),
+        "{err}"
+    );
+    let many = dir.join("many.toml");
+    let lines: String = (0..30).map(|n| format!("nonsense{n} = 1\n")).collect();
+    std::fs::write(&many, lines).unwrap();
+    let o = mountains(&["--check-config", &arg(&many), "--set", "color=pink"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(err.contains("... and 10 more"), "{err}");
+    assert!(err.contains("--set: key `color`"), "{err}");
+}
+
 /// A key this version does not know (the settings screen keeps it) is a
 /// warning with a suggestion for `render`, and still a failure for
 /// `--check-config`.
@@ -844,4 +868,105 @@ fn a_closed_stderr_keeps_the_exit_status() {
         assert_eq!(o.status.code(), Some(code), "{args:?}");
     }
     assert!(out.exists());
+}
+
+/// `heightmap --open` saves the grid it read: the detail and generator
+/// its file recorded, not the ones typed for the run (a 33x33 grid said
+/// to be detail 7). A `--set` that only shapes generated heights, which
+/// `--open` leaves without effect, is named in a warning, in `render` too.
+#[test]
+fn open_keeps_the_data_sets_record_and_warns_of_a_set_it_ignores() {
+    let dir = scratch("open-record");
+    let files = ["h.png", "again.png", "r.png"].map(|f| dir.join(f));
+    let [h, again, picture] = files.each_ref().map(|p| p.to_str().unwrap());
+    small_data_set(&files[0]);
+    let o = run(&[
+        "heightmap",
+        "--open",
+        h,
+        "--set",
+        "detail=7",
+        "-seed",
+        "9",
+        "-o",
+        again,
+    ]);
+    let err = stderr(&o);
+    for set in ["--set detail=7", "--set seed=9"] {
+        assert!(
+            err.contains(&format!("warning: {set}: no effect with --open")),
+            "{err}"
+        );
+    }
+    let data = mountains::terrain::heightmap::load(&files[1]).unwrap();
+    let recorded = mountains::mountain::Mountain::drawn_under(
+        data.params.as_ref(),
+        &mountains::settings::Settings::default(),
+    );
+    assert_eq!(data.field.size(), 33);
+    assert_eq!(recorded.detail, mountains::settings::Detail::Level(5));
+    assert_eq!(data.seed, Some(3));
+    // A 9x9 set is read fitted to 17x17, and saved again as what it is.
+    run(&["heightmap", "--set", "detail=3", "--set", "seed=3", "-o", h]);
+    run(&["heightmap", "--open", h, "-o", again]);
+    let data = mountains::terrain::heightmap::load(&files[1]).unwrap();
+    let recorded = mountains::mountain::Mountain::drawn_under(
+        data.params.as_ref(),
+        &mountains::settings::Settings::default(),
+    );
+    assert_eq!(
+        (data.field.size(), recorded.detail),
+        (17, mountains::settings::Detail::Level(4))
+    );
+    let o = run(&[
+        "render", "--size", "40x30", "--open", h, "--set", "seed=9", "-o", picture,
+    ]);
+    assert!(
+        stderr(&o).contains("warning: --set seed=9: no effect with --open"),
+        "{}",
+        stderr(&o)
+    );
+    // A key the picture is drawn under is no mistake.
+    let o = run(&[
+        "render",
+        "--size",
+        "40x30",
+        "--open",
+        h,
+        "--set",
+        "color=sonar",
+        "-o",
+        picture,
+    ]);
+    assert!(!stderr(&o).contains("warning"), "{}", stderr(&o));
+}
+
+/// A data set given as the preferences file (`--config h.png`, meant for
+/// `--open`) is named as a PNG, with the flag that reads one.
+#[test]
+fn a_png_given_as_preferences_is_named_as_one() {
+    let dir = scratch("png-config");
+    let h = dir.join("h.png");
+    small_data_set(&h);
+    let o = mountains(&["--check-config", &arg(&h)]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(
+        stderr(&o)
+            .contains("h.png:1:1: a PNG image, not text (a data set is opened with --open FILE)"),
+        "{}",
+        stderr(&o)
+    );
+    let out = dir.join("x.png");
+    let o = run(&[
+        "render",
+        "--config",
+        &arg(&h),
+        "--size",
+        "8x8",
+        "-o",
+        &arg(&out),
+    ]);
+    let err = stderr(&o);
+    assert!(err.contains("a PNG image, not text"), "{err}");
+    assert!(err.contains("nothing in the file was used"), "{err}");
 }

@@ -413,6 +413,7 @@ fn messages_name_what_was_typed() {
     assert!(usage(&["--open", "", "render", "-o", "x.png"]).contains("--open: an empty value"));
     assert!(usage(&["render", "--set", ""]).contains("--set: an empty value; give key=value"));
     assert!(usage(&["--check-config="]).contains("--check-config=: an empty value"));
+    assert!(usage(&["--check-config", ""]).contains("--check-config: an empty value"));
     let err = usage(&["render", "-shadows", "false", "-o", "x.png"]);
     assert!(
         err.contains("`false`: an on/off flag takes no value"),
@@ -524,6 +525,22 @@ fn a_picture_never_replaces_the_data_set_it_is_drawn_from() {
         assert!(err.contains("is the data set --open reads"), "{err}");
         assert_eq!(std::fs::read(&map).unwrap(), bytes);
     }
+    // Nor a data set over the one it opens: a terrain tool's file of
+    // another size would be replaced by our fitted copy of it.
+    let got = run(
+        &[
+            "heightmap",
+            "--open",
+            map.to_str().unwrap(),
+            "-o",
+            link.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    let err = String::from_utf8_lossy(&got.stderr);
+    assert_eq!(got.status.code(), Some(2), "{err}");
+    assert!(err.contains("give the data set another name"), "{err}");
+    assert_eq!(std::fs::read(&map).unwrap(), bytes);
 }
 
 /// A preferences file that is a link to nowhere is a file that cannot be
@@ -545,6 +562,30 @@ fn a_preferences_link_to_nowhere_is_reported() {
         err.contains("mountains.toml: cannot read") && err.contains("using the defaults"),
         "{err}"
     );
+    // Said as what it is, where the link points too.
+    assert!(err.contains("a link to nowhere (to "), "{err}");
+    let got = run(
+        &[
+            "--check-config",
+            "--config",
+            prefs.join("mountains.toml").to_str().unwrap(),
+        ],
+        &dir,
+    );
+    let err = String::from_utf8_lossy(&got.stderr);
+    assert_eq!(got.status.code(), Some(1), "{err}");
+    assert!(err.contains("cannot read: a link to nowhere"), "{err}");
+    // Nor does a picture written through one put a file in its place.
+    let link = dir.join("picture.png");
+    std::os::unix::fs::symlink(dir.join("gone").join("p.png"), &link).unwrap();
+    let got = run(
+        &["render", "--size", "16x9", "-o", link.to_str().unwrap()],
+        &dir,
+    );
+    let err = String::from_utf8_lossy(&got.stderr);
+    assert_eq!(got.status.code(), Some(1), "{err}");
+    assert!(err.contains("a link to nowhere"), "{err}");
+    assert!(std::fs::symlink_metadata(&link).unwrap().is_symlink());
 }
 
 /// Starts `render` of a large picture into `dir` with the signals set up

@@ -164,6 +164,34 @@ fn seeds_accept_integers_big_strings_and_random() {
     assert_eq!(load_text("seed = -3\n").1.len(), 1);
 }
 
+/// A number or a true/false written in quotes in the file is offered
+/// without them, when the key takes it so; one out of range is not.
+#[test]
+fn a_quoted_number_or_boolean_is_offered_without_quotes() {
+    for (line, offered) in [
+        ("detail = \"8\"\n", "did you mean 8, without quotes?"),
+        ("draw_seconds = \"5\"\n", "did you mean 5, without quotes?"),
+        (
+            "low_detail = \"true\"\n",
+            "did you mean true, without quotes?",
+        ),
+    ] {
+        let problems = load_text(line).1;
+        assert_eq!(problems.len(), 1, "{line}");
+        assert!(
+            problems[0].message.contains(offered),
+            "{line}: {}",
+            problems[0]
+        );
+    }
+    let problems = load_text("detail = \"99\"\n").1;
+    assert!(
+        !problems[0].message.contains("did you mean"),
+        "{}",
+        problems[0]
+    );
+}
+
 #[test]
 fn set_accepts_bare_words_and_toml_values() {
     let mut s = Settings::default();
@@ -211,6 +239,20 @@ fn resolve_reports_file_problems_and_refuses_a_missing_explicit_file() {
     .unwrap();
     assert_eq!((fresh.file, fresh.problems.len()), (None, 0));
     assert_eq!(fresh.settings, mountains::settings::Settings::default());
+    // A link to nowhere is no new file: it cannot be read, and says why.
+    #[cfg(unix)]
+    {
+        let link = dir.join("link.toml");
+        std::os::unix::fs::symlink(dir.join("gone.toml"), &link).unwrap();
+        let refused = load::resolve(Some(&link), &[], load::Unreadable::NewIfMissing).unwrap_err();
+        assert!(refused.to_string().contains("--config"), "{refused}");
+        assert!(
+            refused
+                .message
+                .starts_with("cannot read: a link to nowhere"),
+            "{refused}"
+        );
+    }
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

@@ -397,3 +397,21 @@ fn saving_no_changes_leaves_a_file_changed_elsewhere_as_it_is() {
     save::save_changes(&path, &edited, &[]).unwrap();
     assert_eq!(read(&path), "cragginess = 41\ncolor = \"sonar\"\n");
 }
+
+/// A preferences file that is a link to nowhere is someone's link (say, to
+/// a file on a disk not mounted yet): a save refuses it, naming it, and the
+/// link stays a link, never replaced by a file of the defaults.
+#[cfg(unix)]
+#[test]
+fn a_link_to_nowhere_is_never_replaced_by_a_save() {
+    let dir = scratch("nowhere");
+    let path = dir.join("mountains.toml");
+    std::os::unix::fs::symlink(dir.join("gone").join("prefs.toml"), &path).unwrap();
+    let e = save::save(&path, &Settings::default()).unwrap_err();
+    assert!(
+        e.to_string().contains("cannot read: a link to nowhere"),
+        "{e}"
+    );
+    assert!(std::fs::symlink_metadata(&path).unwrap().is_symlink());
+    assert!(!dir.join("gone").exists());
+}

@@ -541,6 +541,29 @@ fn ok_on_a_broken_file_keeps_the_window_open_and_the_file() {
     );
 }
 
+/// OK on a preferences file that is a link to nowhere keeps the window
+/// open and the link a link, and says why: no file of the defaults is put
+/// in the link's place.
+#[cfg(unix)]
+#[test]
+fn ok_on_a_link_to_nowhere_keeps_the_window_open_and_the_link() {
+    let dir = scratch("nowhere");
+    let file = dir.join("mountains.toml");
+    std::os::unix::fs::symlink(dir.join("gone.toml"), &file).unwrap();
+    let mut sc = screen(&file, 1);
+    for input in [Input::Down, Input::Down, Input::Right] {
+        sc.input(input);
+    }
+    assert_eq!(sc.input(Input::Enter), Next::Stay);
+    assert!(std::fs::symlink_metadata(&file).unwrap().is_symlink());
+    assert!(!dir.join("gone.toml").exists());
+    assert!(
+        sc.model.message.contains("a link to nowhere"),
+        "{}",
+        sc.model.message
+    );
+}
+
 #[test]
 fn the_200_percent_screen_is_the_100_percent_screen_doubled() {
     let dir = scratch("scale");

@@ -54,6 +54,7 @@ pub fn apply(settings: &mut Settings, key: &Key, value: &Value) -> Result<(), St
                     None => crate::spelling::did_you_mean(&typed.to_lowercase(), names.iter()),
                 }
             }
+            (_, Value::Str(typed)) => unquoted(key, typed),
             _ => String::new(),
         };
         format!(
@@ -64,6 +65,22 @@ pub fn apply(settings: &mut Settings, key: &Key, value: &Value) -> Result<(), St
     })?;
     follow_look(settings, key);
     Ok(())
+}
+
+/// `; did you mean 8, without quotes?` for a number or a true/false that
+/// `key` takes, written as a string (`detail = "8"`), or nothing.
+fn unquoted(key: &Key, typed: &str) -> String {
+    let t = typed.trim();
+    let value = match (t.parse::<i64>(), t.parse::<f64>(), t.parse::<bool>()) {
+        (Ok(i), ..) => Value::Int(i),
+        (_, Ok(x), _) => Value::Float(x),
+        (.., Ok(b)) => Value::Bool(b),
+        _ => return String::new(),
+    };
+    match (key.write)(&mut Settings::default(), key, &value) {
+        Some(()) => format!("; did you mean {value}, without quotes?"),
+        None => String::new(),
+    }
 }
 
 /// The value `look` gives `key` in place of its default, if it gives one.

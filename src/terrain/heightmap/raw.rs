@@ -32,15 +32,22 @@ pub fn read(mut input: impl Read, len: u64, path: &Path) -> Result<RawGrid, Heig
     let fit = Fit::plan(side, side);
     let mut grid = Resampler::new(fit);
     let mut row = vec![0u8; 2 * side as usize];
+    let mut text = Text::default();
     for y in 0..side {
         input.read_exact(&mut row).map_err(|e| {
             let problem = format!("cannot be read: {e} (row {y} of {side})");
             HeightmapError::new(path, ErrorKind::Truncated, problem)
         })?;
+        text.take(&row);
         let samples = row
             .chunks_exact(2)
             .map(|b| f32::from(u16::from_le_bytes([b[0], b[1]])));
         grid.push_row(y, samples);
+    }
+    if text.is_text() {
+        // `echo hello | mountains --open -`: 8 bytes, a square of 4 samples.
+        let problem = "holds lines of text, not a raw heightmap of 16-bit samples";
+        return Err(HeightmapError::new(path, ErrorKind::NotRaw, problem));
     }
     Ok(RawGrid {
         fit,
@@ -48,6 +55,28 @@ pub fn read(mut input: impl Read, len: u64, path: &Path) -> Result<RawGrid, Heig
         samples: grid.finish(),
         text: Vec::new(),
     })
+}
+
+/// Whether the bytes seen are lines of text (printable ASCII, tabs and
+/// line ends, with a line end among them): what a text piped or named by
+/// mistake is, and what no terrain's samples are, whose low bytes run
+/// through all 256 values.
+#[derive(Default)]
+struct Text {
+    other: bool,
+    line_end: bool,
+}
+
+impl Text {
+    fn take(&mut self, bytes: &[u8]) {
+        let texty = |b: &u8| matches!(b, b'\t' | b'\n' | b'\r' | 0x20..=0x7e);
+        self.other |= !bytes.iter().all(texty);
+        self.line_end |= bytes.contains(&b'\n');
+    }
+
+    fn is_text(&self) -> bool {
+        self.line_end && !self.other
+    }
 }
 
 /// What [`read`] assumed, for the data set's notes.
@@ -148,6 +177,21 @@ mod tests {
         let side = u64::from(MAX_SOURCE_SIDE) + 1;
         let e = side_of(2 * side * side, Path::new("big.raw")).unwrap_err();
         assert_eq!(e.kind, ErrorKind::TooLarge, "{}", e.problem);
+    }
+
+    /// Lines of text of a square's length (`echo garbage | mountains
+    /// --open -`) are no samples; samples with a line end's byte are.
+    #[test]
+    fn lines_of_text_are_no_samples() {
+        let e = read_bytes(b"garbage\n").err().expect("refused");
+        assert_eq!(e.kind, ErrorKind::NotRaw, "{}", e.problem);
+        assert!(e.problem.contains("holds lines of text"), "{}", e.problem);
+        let e = read_bytes(&b"seed = 5\n".repeat(32)[..288])
+            .err()
+            .expect("refused");
+        assert_eq!(e.kind, ErrorKind::NotRaw, "{}", e.problem);
+        let samples = raw(12, |i| 0x0a00 + i as u16);
+        assert!(read_bytes(&samples).is_ok());
     }
 
     #[test]
