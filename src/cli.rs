@@ -193,7 +193,9 @@ pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
 /// passed over in silence).
 fn one_file_to_check(inv: &Invocation) -> Result<(), UsageError> {
     match (&inv.mode, &inv.config) {
-        (Mode::CheckConfig(Some(file)), Some(config)) if file != config => {
+        (Mode::CheckConfig(Some(file)), Some(config))
+            if file != config && !crate::fsutil::same_file(file, config) =>
+        {
             Err(UsageError(format!(
                 "--check-config {} and --config {}: two files; give one",
                 file.display(),

@@ -163,8 +163,7 @@ fn refuse_a_terminal(output: &Path) -> Option<ExitCode> {
 fn refuse_the_data_set(open: Option<&Path>, output: &Path, made: &str) -> Option<ExitCode> {
     let dash = Path::new("-");
     let open = open.filter(|&p| p != dash && output != dash)?;
-    let (open, output_at) = (open.canonicalize().ok()?, output.canonicalize().ok()?);
-    (open == output_at).then(|| {
+    crate::fsutil::same_file(open, output).then(|| {
         console::error(&format!(
             "-o {}: is the data set --open reads; give the {made} another name",
             output.display()
@@ -260,7 +259,7 @@ fn check_file(path: Option<&Path>, config: Option<&Path>) -> Result<std::io::Res
     };
     // A link that leads nowhere (or round in a loop) is there, and reading
     // it says what is wrong with it; only a name with nothing at all is missing.
-    let present = std::fs::symlink_metadata(&file).is_ok();
+    let present = crate::fsutil::taken(&file);
     if crate::fsutil::is_null_device(&file) {
         return Ok(console::outln(&format!(
             "mountains: {}: no preferences; the defaults are in use",

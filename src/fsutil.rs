@@ -42,6 +42,22 @@ fn nowhere(path: &Path, e: io::Error) -> io::Error {
     )
 }
 
+/// Whether anything is at `path`: a file, a folder, or a link, even one
+/// to nowhere (which `Path::exists` follows, and calls missing: a file
+/// written there as if new would replace someone's link).
+pub fn taken(path: &Path) -> bool {
+    std::fs::symlink_metadata(path).is_ok()
+}
+
+/// Whether `a` and `b` name one file (links and `..` resolved; both must
+/// exist). Neither is opened: a FIFO's open would wait for a writer.
+pub fn same_file(a: &Path, b: &Path) -> bool {
+    match (a.canonicalize(), b.canonicalize()) {
+        (Ok(a), Ok(b)) => a == b,
+        _ => false,
+    }
+}
+
 /// Whether `path` names the null device (`/dev/null`, or `NUL` on
 /// Windows), the usual way to say "no file": it reads as empty, so a
 /// preferences file there means the defaults, not an error.

@@ -115,13 +115,10 @@ impl Mountain {
         };
         // The grid may not be the one the settings say: a 9x9 set is read
         // fitted to 17x17, "auto" fits a window, a preview is smaller.
+        // `low_detail` is kept as it is: it draws the wireframe's cells.
         let exponent = field.exponent();
         if saved.grid_exponent() != exponent {
-            // `low_detail` halves all but the smallest grids
-            // (`Settings::grid_exponent`), and none is finer than the finest.
-            saved.low_detail &= exponent < crate::settings::MAX_GRID_EXPONENT;
-            let halved = saved.low_detail && exponent >= 4;
-            saved.detail = Detail::Level(exponent + u32::from(halved));
+            saved.detail = Detail::Level(saved.detail_for_grid(exponent));
         }
         saved
     }
@@ -193,6 +190,38 @@ mod tests {
             ..small()
         };
         assert_eq!(opened.saved_with(&eight).detail, Detail::Level(5));
+    }
+
+    #[test]
+    fn the_detail_for_a_grid_gives_that_grid_back() {
+        for low_detail in [false, true] {
+            for exponent in crate::settings::MIN_GRID_EXPONENT..crate::settings::MAX_GRID_EXPONENT {
+                let prefs = Settings {
+                    low_detail,
+                    ..small()
+                };
+                let detail = Detail::Level(prefs.detail_for_grid(exponent));
+                let back = Settings { detail, ..prefs };
+                assert_eq!(back.grid_exponent(), exponent, "low_detail {low_detail}");
+            }
+        }
+    }
+
+    #[test]
+    fn a_low_detail_set_of_the_finest_grid_keeps_its_low_detail() {
+        // low_detail draws the wireframe's cells: dropped from the record,
+        // the set saved again drew twice as many lines.
+        let field = Heightfield::flat(crate::settings::MAX_GRID_EXPONENT, 100.0);
+        let low = Settings {
+            low_detail: true,
+            ..small()
+        };
+        let saved = Mountain::saved_under(Some(None), &field, &low);
+        assert!(saved.low_detail);
+        assert_eq!(
+            saved.detail,
+            Detail::Level(crate::settings::MAX_GRID_EXPONENT)
+        );
     }
 
     #[test]

@@ -271,6 +271,10 @@ pub const MIN_GRID_EXPONENT: u32 = 3;
 /// Largest grid exponent (4097x4097 points), as [`MIN_GRID_EXPONENT`].
 pub const MAX_GRID_EXPONENT: u32 = 12;
 
+/// `low_detail` halves the grids of a detail over this one (the smallest
+/// keep their size).
+const LOW_DETAIL_FROM: u32 = 4;
+
 /// The detail `"auto"` means where no frame is known (a saved data set):
 /// what a 1920x1080 vista gets.
 pub const AUTO_DETAIL_FALLBACK: u32 = 10;
@@ -376,10 +380,19 @@ impl Settings {
             Detail::Auto => AUTO_DETAIL_FALLBACK,
             Detail::Level(n) => n,
         };
-        if self.low_detail && detail > 4 {
+        if self.low_detail && detail > LOW_DETAIL_FROM {
             detail - 1
         } else {
             detail
         }
+    }
+
+    /// The detail whose grid is `2^exponent + 1` points a side under these
+    /// settings' `low_detail` ([`Settings::grid_exponent`]'s inverse), at
+    /// most the finest: a low-detail grid of the finest detail's size has
+    /// no detail of its own, and keeps the finest.
+    pub fn detail_for_grid(&self, exponent: u32) -> u32 {
+        let halved = self.low_detail && exponent + 1 > LOW_DETAIL_FROM;
+        (exponent + u32::from(halved)).min(MAX_GRID_EXPONENT)
     }
 }

@@ -362,12 +362,12 @@ pub fn resolve(
         Some(p) => Some(p.to_path_buf()),
         // A link to nowhere is a file that cannot be read, said as one
         // (`exists` follows the link, and the file was passed over).
-        None => super::paths::config_file().filter(|p| p.symlink_metadata().is_ok()),
+        None => super::paths::config_file().filter(|p| crate::fsutil::taken(p)),
     };
     // Nothing at all at the name: a link to nowhere is someone's, and
     // cannot be read (`exists` would follow it).
     let new_file = |p: &Path| {
-        unreadable == Unreadable::NewIfMissing && config.is_some() && p.symlink_metadata().is_err()
+        unreadable == Unreadable::NewIfMissing && config.is_some() && !crate::fsutil::taken(p)
     };
     let file = file.filter(|p| !new_file(p) && !crate::fsutil::is_null_device(p));
     let mut problems = Vec::new();

@@ -207,7 +207,7 @@ impl Screen {
         self.config_seen = now;
         let mut fresh = Settings::default();
         // A link to nowhere is read, and says so (`exists` follows it).
-        let problems = if self.config.symlink_metadata().is_ok() {
+        let problems = if crate::fsutil::taken(&self.config) {
             load::apply_file(&mut fresh, &self.config)
         } else {
             Vec::new()

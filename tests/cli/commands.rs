@@ -689,6 +689,23 @@ fn check_config_always_says_a_bad_set() {
     assert!(err.contains("--set: key `color`"), "{err}");
 }
 
+/// `--config` and `--check-config` naming one file in two ways (through
+/// `..`, a link) name one file to check, not two.
+#[test]
+fn check_config_and_config_naming_one_file_check_it() {
+    let dir = scratch("check-config-one-file");
+    let file = dir.join("p.toml");
+    std::fs::write(&file, "seed = 5\n").unwrap();
+    std::fs::create_dir_all(dir.join("sub")).unwrap();
+    let other = dir.join("sub").join("..").join("p.toml");
+    let o = mountains(&["--config", &arg(&file), "--check-config", &arg(&other)]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let two = dir.join("q.toml");
+    std::fs::write(&two, "seed = 6\n").unwrap();
+    let o = mountains(&["--config", &arg(&file), "--check-config", &arg(&two)]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+}
+
 /// A key this version does not know (the settings screen keeps it) is a
 /// warning with a suggestion for `render`, and still a failure for
 /// `--check-config`.

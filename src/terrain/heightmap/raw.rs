@@ -45,7 +45,8 @@ pub fn read(mut input: impl Read, len: u64, path: &Path) -> Result<RawGrid, Heig
         grid.push_row(y, samples);
     }
     if text.is_text() {
-        // `echo hello | mountains --open -`: 8 bytes, a square of 4 samples.
+        // `printf 'garbage\n' | mountains --open -`: 8 bytes, a square of 4
+        // samples.
         let problem = "holds lines of text, not a raw heightmap of 16-bit samples";
         return Err(HeightmapError::new(path, ErrorKind::NotRaw, problem));
     }
