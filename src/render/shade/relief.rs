@@ -782,32 +782,34 @@ fn roughness(field: &Heightfield) -> (Vec<f32>, usize) {
     let n = field.size();
     let blocks = (n - 1) / BLOCK + 2;
     // Rows of blocks, half on each of two cores: the scene's start waits
-    // for it, and at 4K it is some milliseconds of the frame.
-    let rows = |by: std::ops::Range<usize>| -> Vec<f32> {
+    // for it, and at 4K it is some milliseconds of the frame. Each writes
+    // its half in place, with no vector of its own.
+    let fill = |out: &mut [f32], first_row: usize| {
         let half = BLOCK / 2;
-        let mut sample = Vec::with_capacity(BLOCK * BLOCK / 4);
-        let mut rough = Vec::with_capacity(by.len() * blocks);
-        for (cy, cx) in by.flat_map(|by| (0..blocks).map(move |bx| (by * BLOCK, bx * BLOCK))) {
-            sample.clear();
+        let mut sample = [0.0f32; BLOCK * BLOCK / 4];
+        for (i, r) in out.iter_mut().enumerate() {
+            let (cy, cx) = ((first_row + i / blocks) * BLOCK, (i % blocks) * BLOCK);
             // At least the field's last point: past the field's end a
             // block's window would be empty.
             let window = |c: usize| c.saturating_sub(half).min(n - 1)..(c + half).clamp(1, n);
+            let mut count = 0;
             for y in window(cy).step_by(2) {
                 for x in window(cx).step_by(2) {
-                    sample.push(laplacian(field, x, y));
+                    sample[count] = laplacian(field, x, y);
+                    count += 1;
                 }
             }
-            rough.push(median(&mut sample) * MEDIAN_TO_RMS);
+            *r = median(&mut sample[..count]) * MEDIAN_TO_RMS;
         }
-        rough
     };
+    let mut rough = vec![0.0; blocks * blocks];
     let middle = blocks / 2;
-    let (mut rough, back) = crate::threads::both_if(
+    let (front, back) = rough.split_at_mut(middle * blocks);
+    crate::threads::both_if(
         crate::cores::cores() >= 2,
-        || rows(0..middle),
-        || rows(middle..blocks),
+        || fill(front, 0),
+        || fill(back, middle),
     );
-    rough.extend(back);
     // A block on a crest or a cliff's rim measures the grid's own bend
     // there, not its finest bumps: each is held to a little over the
     // typical block's.
