@@ -67,7 +67,7 @@ impl Sky {
             horizon_row,
             weather: None,
             stars: None,
-            anchors: Anchors::for_width(0.0),
+            anchors: Anchors::for_height(0.0),
         }
     }
 
@@ -81,7 +81,7 @@ impl Sky {
     pub(crate) fn with_weather(mut self, weather: Option<Weather>) -> Self {
         self.weather = weather.filter(|w| !w.is_clear()).map(Arc::new);
         if let Some(w) = &self.weather {
-            self.anchors = Anchors::for_width(w.frame_width());
+            self.anchors = Anchors::for_height(w.frame_height());
         }
         self
     }
@@ -294,14 +294,16 @@ struct Anchors {
 }
 
 impl Anchors {
-    /// Every 4 columns in a frame under [`WIDE`] pixels wide, every 8 from
-    /// it, every 16 from twice it: the weather's shapes are as many of the
-    /// frame's pixels wider. At 1080p and 4K a sunset's glow and a cloudy
-    /// sky then changed by at most a level in 1-2% of the pixels, for
-    /// 2-3% of a cloudy 1080p frame's instructions.
-    fn for_width(width: f32) -> Self {
-        let wider = u32::from(width >= WIDE) + u32::from(width >= 2.0 * WIDE);
-        Anchors { step: 4 << wider }
+    /// Every 4 columns in a frame under [`TALL`] pixels tall, every 8 from
+    /// it, every 16 from twice it: the clouds' sizes are shares of the
+    /// frame's height, so their shapes span as many more pixels (a span of
+    /// two 1080p monitors side by side keeps 8). At 1080p and 4K a
+    /// sunset's glow and a cloudy sky then changed by about a level (at
+    /// most 5) in 1-2% of the pixels, for 2-3% of a cloudy 1080p frame's
+    /// instructions.
+    fn for_height(height: f32) -> Self {
+        let finer = u32::from(height >= TALL) + u32::from(height >= 2.0 * TALL);
+        Anchors { step: 4 << finer }
     }
 
     /// The anchor at or before column `x`.
@@ -328,8 +330,8 @@ impl Anchors {
     }
 }
 
-/// The frame width from which the weather's anchors are twice as far apart.
-const WIDE: f32 = 1920.0;
+/// The frame height from which the weather's anchors are twice as far apart.
+const TALL: f32 = 1080.0;
 
 /// Row `y`'s steps of the ordered dither, by column `x & 3`, in levels.
 #[inline]
@@ -350,27 +352,29 @@ mod tests {
 
     #[test]
     fn painted_weather_is_what_colour_says() {
-        // Narrow, and as wide as frames whose anchors lie farther apart.
-        for (width, step) in [(150, 4), (1920, 8), (3840, 16)] {
+        // Small, and as large as frames whose anchors lie farther apart:
+        // the top 90 rows of each painted.
+        for (width, height, step) in [(150, 90, 4), (1920, 1080, 8), (3840, 2160, 16)] {
             let field = Heightfield::flat(5, 100.0);
             let tops = RowTops::of(&field);
-            let size = Size::new(width, 90);
+            let size = Size::new(width, height);
             let view = View::fitted(ViewKind::Vista, 33, 100.0, (tops.rows(), 0.0), size);
             let lighting = Lighting::new(Sun::Evening, &field);
-            let frame = Vec2::new(width as f32, 90.0);
-            let w = Weather::new(&view, &lighting, |c| c, (frame, 60.0), 0.8, 3);
-            let sky = Sky::new(0x203060, 0xc0d0e0, 60.0).with_weather(w);
+            let frame = Vec2::new(width as f32, height as f32);
+            let horizon = height as f32 * 0.66;
+            let w = Weather::new(&view, &lighting, |c| c, (frame, horizon), 0.8, 3);
+            let sky = Sky::new(0x203060, 0xc0d0e0, horizon).with_weather(w);
             assert!(sky.weather().is_some());
-            assert_eq!(sky.anchors.step, step, "{width} wide");
+            assert_eq!(sky.anchors.step, step, "{height} tall");
             let mut pixels = vec![0u32; width as usize * 90];
             let mut canvas = Canvas::new(&mut pixels, width, 0);
             sky.paint(&mut canvas);
-            for y in 0..90 {
+            for y in (0..90).step_by(if height > 90 { 7 } else { 1 }) {
                 for x in 0..width {
                     assert_eq!(
                         pixels[(y * width + x) as usize],
                         sky.colour(x, y),
-                        "{width} wide: ({x}, {y})"
+                        "{height} tall: ({x}, {y})"
                     );
                 }
             }

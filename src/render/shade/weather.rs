@@ -137,9 +137,10 @@ impl Weather {
         self.row(y).over(gradient, x)
     }
 
-    /// The width of the frame it is seen in, in pixels.
-    pub(crate) fn frame_width(&self) -> f32 {
-        2.0 * self.middle
+    /// The height of the frame it is seen in, in pixels: the clouds'
+    /// sizes are shares of it.
+    pub(crate) fn frame_height(&self) -> f32 {
+        self.height
     }
 
     /// The weather along screen row `y` (the clouds' part that does not
