@@ -95,7 +95,7 @@ impl Screen {
             Action::SaveDataSet => {
                 let saved = show
                     .current()
-                    .map(|m| actions::save_data_set(&m, &m.saved_with(show.settings())));
+                    .map(|m| actions::save_data_set(&m, &m.saved_with(&show.saved_settings())));
                 actions::report(saved, "data set");
                 Rect::default()
             }

@@ -170,6 +170,17 @@ impl Show {
         &self.settings
     }
 
+    /// The settings the mountain on screen is saved with (the S key): drawn
+    /// as it is now, and made as it was (a key that shapes only the next
+    /// mountain, changed since, is not this one's).
+    pub fn saved_settings(&self) -> Settings {
+        let mut saved = self.settings.clone();
+        for key in keys::KEYS.iter().filter(|k| k.change == Change::Next) {
+            keys::copy(key, &self.made_with, &mut saved);
+        }
+        saved
+    }
+
     /// The window title for what is on screen now (see `actions::window_title`).
     pub fn title(&self) -> String {
         super::actions::window_title(
@@ -678,6 +689,8 @@ mod tests {
         };
         show.change_settings(craggier, Change::Next, t0);
         assert!(show.title().contains("cragginess 96"), "{}", show.title());
+        // Saved now, the mountain on screen says how it was made.
+        assert_eq!(show.saved_settings().cragginess, 96);
         show.tick(t0 + Duration::from_millis(1000));
         show.tick(t0 + Duration::from_millis(3000));
         let two = seed(&show);
