@@ -206,6 +206,24 @@ fn one_file_to_check(inv: &Invocation) -> Result<(), UsageError> {
     }
 }
 
+/// The flags that take no value (as they are matched: see `long_name`).
+const NO_VALUE: [&str; 14] = [
+    "--root",
+    "--window",
+    "--settings",
+    "--xscreensaver-xml",
+    "--man-page",
+    "--help",
+    "-h",
+    "-help",
+    "-fps",
+    "--fps",
+    "-no-fps",
+    "--no-fps",
+    "-install",
+    "--install",
+];
+
 /// Fills in the output and size of the subcommands, and refuses them elsewhere.
 fn finish_mode(
     mode: Mode,
@@ -332,6 +350,10 @@ impl Parser<'_> {
             Ok(v)
         };
         match flag.as_str() {
+            // `-root=1` dropped its value, as `--fps=false` had.
+            f if inline.is_some() && NO_VALUE.contains(&f) => {
+                return Err(UsageError(format!("{f} takes no value")));
+            }
             "--config" => self.inv.config = Some(take(self, "--config")?.into()),
             "--open" => self.inv.open = Some(take(self, "--open")?.into()),
             "--set" => {
@@ -362,11 +384,6 @@ impl Parser<'_> {
             "--version" | "-V" | "-version" => return Ok(Some(Mode::Version)),
             "--xscreensaver-xml" => return Ok(Some(Mode::XscreensaverXml)),
             "--man-page" => return Ok(Some(Mode::ManPage)),
-            "-fps" | "--fps" | "-no-fps" | "--no-fps" | "-install" | "--install"
-                if inline.is_some() =>
-            {
-                return Err(UsageError(format!("{flag} takes no value")));
-            }
             "-fps" | "--fps" => self.inv.xss.fps = true,
             "-no-fps" | "--no-fps" => self.inv.xss.fps = false,
             "-delay" | "--delay" => {

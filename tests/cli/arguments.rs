@@ -320,6 +320,18 @@ fn xscreensavers_common_options_mean_what_they_mean_there() {
     assert_eq!((inv.mode, inv.xss.delay_us), (Mode::XRoot, Some(300)));
     let e = parse(&["--fps=false", "--root"]).unwrap_err().0;
     assert!(e.contains("--fps takes no value"), "{e}");
+    // A mode's flag takes no value either (`-root=1` dropped its `1`).
+    for (typed, said) in [
+        ("-root=1", "--root"),
+        ("--window=x", "--window"),
+        ("-settings=x", "--settings"),
+    ] {
+        let e = parse(&[typed]).unwrap_err().0;
+        assert!(
+            e.contains(&format!("{said} takes no value")),
+            "{typed}: {e}"
+        );
+    }
     assert_eq!(mode(&["-help"]), Mode::Help);
     for v in ["--version", "-V", "-version"] {
         assert_eq!(mode(&[v]), Mode::Version, "{v}");
