@@ -280,12 +280,31 @@ fn check_file(path: Option<&Path>, config: Option<&Path>) -> Result<std::io::Res
         };
         return Err(fail(&format!("{flag} {}: no such file", file.display())));
     }
-    let problems = load::apply_file(&mut Settings::default(), &file);
+    let mut settings = Settings::default();
+    let problems = load::apply_file(&mut settings, &file);
     for line in load::report_with(&problems, |p| console::error_line(&p.to_string())) {
         console::err(&line);
     }
     if !problems.is_empty() {
         return Err(ExitCode::FAILURE);
     }
+    warn_of_a_missing_folder(&settings);
     Ok(console::outln(&format!("{}: ok", file.display())))
+}
+
+/// Warns when `heightmaps_dir` names no folder: the value is well formed,
+/// but the slide show would show none of its heightmaps, and only say so in
+/// its log.
+fn warn_of_a_missing_folder(settings: &Settings) {
+    let Some(dir) = settings.heightmaps_dir.as_deref().filter(|d| !d.is_empty()) else {
+        return;
+    };
+    let folder = paths::folder(dir);
+    if !folder.is_dir() {
+        console::err(&format!(
+            "mountains: warning: heightmaps_dir {dir:?}: no such folder ({}); \
+             every slide is generated",
+            folder.display()
+        ));
+    }
 }

@@ -706,6 +706,27 @@ fn check_config_and_config_naming_one_file_check_it() {
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
 }
 
+/// A `heightmaps_dir` that names no folder is well formed, but the slide
+/// show would show none of it: `--check-config` warns, and the file is ok.
+#[test]
+fn check_config_warns_of_a_heightmaps_folder_that_is_not_there() {
+    let dir = scratch("check-config-folder");
+    let file = dir.join("p.toml");
+    let missing = dir.join("no-maps");
+    std::fs::write(&file, format!("heightmaps_dir = {:?}\n", arg(&missing))).unwrap();
+    let o = mountains(&["--check-config", &arg(&file)]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(
+        err.contains("heightmaps_dir") && err.contains("no such folder"),
+        "{err}"
+    );
+    std::fs::create_dir_all(&missing).unwrap();
+    let o = mountains(&["--check-config", &arg(&file)]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("no such folder"), "{}", stderr(&o));
+}
+
 /// A key this version does not know (the settings screen keeps it) is a
 /// warning with a suggestion for `render`, and still a failure for
 /// `--check-config`.
