@@ -213,19 +213,13 @@ pub fn check_config(
     // file's flood of problems ends in "... and N more".
     let mistyped = report_bad_sets(sets);
     let checked = check_file(path, config);
-    let printed = match checked {
-        Err(code) => {
-            return if mistyped {
-                ExitCode::from(EXIT_USAGE)
-            } else {
-                code
-            };
-        }
-        Ok(printed) => printed,
-    };
     if mistyped {
         return ExitCode::from(EXIT_USAGE);
     }
+    let printed = match checked {
+        Ok(printed) => printed,
+        Err(code) => return code,
+    };
     let printed = match sets.is_empty() {
         true => printed,
         false => printed.and_then(|()| console::outln("--set: ok")),
@@ -296,14 +290,12 @@ fn check_file(path: Option<&Path>, config: Option<&Path>) -> Result<std::io::Res
 /// but the slide show would show none of its heightmaps, and only say so in
 /// its log.
 fn warn_of_a_missing_folder(settings: &Settings) {
-    let Some(dir) = settings.heightmaps_dir.as_deref().filter(|d| !d.is_empty()) else {
-        return;
-    };
-    let folder = paths::folder(dir);
-    if !folder.is_dir() {
+    let dir = settings.heightmaps_dir.as_deref();
+    if let Some(folder) = paths::heightmaps_folder(dir).filter(|f| !f.is_dir()) {
         console::err(&format!(
-            "mountains: warning: heightmaps_dir {dir:?}: no such folder ({}); \
+            "mountains: warning: heightmaps_dir {:?}: no such folder ({}); \
              every slide is generated",
+            dir.unwrap_or_default(),
             folder.display()
         ));
     }

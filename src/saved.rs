@@ -75,11 +75,10 @@ const MAX_ENTRIES: usize = 10_000;
 /// `heightmaps_dir` (empty = none; `~` is the home folder), without repeats.
 pub fn folders(data_dir: Option<&Path>, heightmaps_dir: Option<&str>) -> Vec<PathBuf> {
     let mut out: Vec<PathBuf> = data_dir.map(Path::to_path_buf).into_iter().collect();
-    if let Some(d) = heightmaps_dir.filter(|d| !d.is_empty()) {
-        let d = crate::settings::paths::folder(d);
-        if !out.contains(&d) {
-            out.push(d);
-        }
+    if let Some(d) = crate::settings::paths::heightmaps_folder(heightmaps_dir)
+        && !out.contains(&d)
+    {
+        out.push(d);
     }
     out
 }

@@ -15,9 +15,9 @@ pub fn slide_uses_folder(slide: u64) -> bool {
 /// The mountain for slide number `slide`: from the heightmap folder on
 /// alternate slides when one is set and holds a readable data set, else generated.
 pub fn next_mountain(settings: &Settings, slide: u64) -> Mountain {
-    let folder = settings.heightmaps_dir.as_deref().filter(|d| !d.is_empty());
+    let folder = crate::settings::paths::heightmaps_folder(settings.heightmaps_dir.as_deref());
     if let Some(dir) = folder.filter(|_| slide_uses_folder(slide))
-        && let Some(mountain) = random_heightmap(&crate::settings::paths::folder(dir))
+        && let Some(mountain) = random_heightmap(&dir)
     {
         return mountain;
     }

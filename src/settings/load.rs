@@ -13,7 +13,6 @@ use toml_edit::{Document, Item};
 
 use super::Settings;
 use super::keys::{self, Value};
-use super::text;
 
 /// One thing wrong in a preferences source.
 #[derive(Debug, Clone, PartialEq)]
@@ -27,19 +26,28 @@ pub struct Problem {
     pub key: Option<String>,
     /// What is wrong and what is allowed.
     pub message: String,
+    /// How much of the source it costs.
+    pub reach: Reach,
 }
 
-/// How the problem of a file that could not be read at all begins.
-const CANNOT_READ: &str = "cannot read: ";
-/// How the problem of a file that is not TOML begins: a syntax error stops
-/// the reading, so nothing in the file is used ([`apply_toml`]).
-const NOT_TOML: &str = "not valid TOML: ";
+/// How much of its source a [`Problem`] leaves unused.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Reach {
+    /// One key: the rest of the source still means what it says.
+    Key,
+    /// The file could not be read at all (missing, not a regular file, too
+    /// large, no permission).
+    Unreadable,
+    /// The file was read, but is not text, or not TOML (a syntax error
+    /// stops the reading, see [`apply_toml`]).
+    Unparsed,
+}
 
 impl Problem {
     /// The file could not be read at all (missing, not a regular file, too
     /// large, no permission): nothing in it was used.
     pub fn is_unreadable(&self) -> bool {
-        self.position.is_none() && self.key.is_none() && self.message.starts_with(CANNOT_READ)
+        self.reach == Reach::Unreadable
     }
 
     /// A key this version does not know (a newer version's, or a typo): the
@@ -52,15 +60,7 @@ impl Problem {
     /// (`text::decode`'s refusal), or is not TOML (a syntax error stops
     /// the reading, see [`apply_toml`]).
     pub fn drops_the_file(&self) -> bool {
-        self.is_unreadable()
-            || self.message.starts_with(NOT_TOML)
-            || [
-                text::NOT_UTF8,
-                text::NOT_UTF16,
-                text::NUL_IN_TEXT,
-                text::A_PNG,
-            ]
-            .contains(&self.message.as_str())
+        self.reach != Reach::Key
     }
 
     /// The problem without its place: the key (clipped) and the message.
@@ -202,12 +202,16 @@ pub fn apply_toml(settings: &mut Settings, text: &str, source: &str) -> Vec<Prob
             let line = start.map_or("", |o| lines.line_of(o));
             // toml_edit names neither the key of a duplicate nor a missing value.
             let (key, said) = explain(e.message(), line);
-            let message = format!("{NOT_TOML}{said}{}", hint(e.message(), key.as_deref()));
+            let message = format!(
+                "not valid TOML: {said}{}",
+                hint(e.message(), key.as_deref())
+            );
             return vec![Problem {
                 source: source.into(),
                 position: at(start),
                 key,
                 message,
+                reach: Reach::Unparsed,
             }];
         }
     };
@@ -226,6 +230,7 @@ pub fn apply_toml(settings: &mut Settings, text: &str, source: &str) -> Vec<Prob
                 position,
                 key: Some(name.into()),
                 message,
+                reach: Reach::Key,
             })
         };
         let key = match keys::known(name) {
@@ -273,6 +278,7 @@ pub fn apply_set(settings: &mut Settings, key: &str, raw: &str) -> Result<(), Pr
         position: None,
         key: Some(key.into()),
         message,
+        reach: Reach::Key,
     };
     let spec = keys::known(key).map_err(problem)?;
     let value = parse_set_value(raw);
@@ -302,13 +308,15 @@ pub fn apply_file(settings: &mut Settings, path: &Path) -> Vec<Problem> {
                 position: Some((e.line, e.column)),
                 key: None,
                 message: e.message.to_string(),
+                reach: Reach::Unparsed,
             }],
         },
         Err(e) => vec![Problem {
             source,
             position: None,
             key: None,
-            message: format!("{CANNOT_READ}{e}"),
+            message: format!("cannot read: {e}"),
+            reach: Reach::Unreadable,
         }],
     }
 }

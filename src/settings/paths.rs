@@ -17,11 +17,16 @@ pub fn data_dir() -> Option<PathBuf> {
     project_dirs().map(|d| d.data_dir().to_path_buf())
 }
 
-/// A folder a person named in the preferences (`heightmaps_dir`), a
-/// leading `~` read as their home folder as a shell reads it: the file is
+/// The folder `heightmaps_dir` names (`text`; empty or none: no folder),
+/// a leading `~` read as the home folder as a shell reads it: the file is
 /// written by hand, and no shell ever sees it (`~/maps` was looked for in
 /// a folder named `~`).
-pub fn folder(text: &str) -> PathBuf {
+pub fn heightmaps_folder(text: Option<&str>) -> Option<PathBuf> {
+    text.filter(|t| !t.is_empty()).map(folder)
+}
+
+/// A folder a person named, `~` read as [`heightmaps_folder`] says.
+fn folder(text: &str) -> PathBuf {
     let home = directories::BaseDirs::new().map(|b| b.home_dir().to_path_buf());
     match (text.strip_prefix('~'), home) {
         (Some(rest), Some(home)) if rest.is_empty() || rest.starts_with(is_separator) => {

@@ -32,18 +32,18 @@ pub struct NotText {
 }
 
 /// What [`NotText`] says of bytes that are not UTF-8 text.
-pub const NOT_UTF8: &str = "not valid UTF-8 text";
+const NOT_UTF8: &str = "not valid UTF-8 text";
 /// What [`NotText`] says of bytes behind a UTF-16 mark that are not UTF-16
 /// text.
-pub const NOT_UTF16: &str = "not valid UTF-16 text";
+const NOT_UTF16: &str = "not valid UTF-16 text";
 /// What [`NotText`] says of UTF-8 that holds a NUL, which no TOML may:
 /// most likely UTF-16 written without its byte-order mark.
-pub const NUL_IN_TEXT: &str =
+const NUL_IN_TEXT: &str =
     "a NUL byte, which text has none of (UTF-16 without its byte-order mark? save it as UTF-8)";
 
 /// What [`NotText`] says of a PNG given as a preferences file (`--config
 /// h.png`, meant for `--open`).
-pub const A_PNG: &str = "a PNG image, not text (a data set is opened with --open FILE)";
+const A_PNG: &str = "a PNG image, not text (a data set is opened with --open FILE)";
 
 /// The text of a preferences file's `bytes`, and its form.
 pub fn decode(mut bytes: Vec<u8>) -> Result<(String, Form), NotText> {
