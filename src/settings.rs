@@ -74,7 +74,9 @@ choice! {
         /// One of the others per mountain, drawn from its identity as the
         /// varied sun is.
         Varied = "varied",
-        /// Green islands in blue water: the picture before worlds.
+        /// Green islands in blue water: the picture before worlds (drawn
+        /// by "varied", lit by an hour and framed by a camera of its own:
+        /// `worlds::drawn_world`).
         Temperate = "temperate",
         /// High, jagged ranges, snow and glaciers down to the valleys, lakes.
         Alpine = "alpine",

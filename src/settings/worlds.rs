@@ -168,7 +168,7 @@ pub fn presets(world: World) -> &'static [(&'static str, Preset)] {
 /// temperate world's. So does a mountain without a seed (a foreign data
 /// set: its heights were not made in any world).
 pub fn chosen(settings: &Settings, seed: Option<u64>) -> World {
-    if settings.look != Look::Ours || settings.color != ColorMode::Natural {
+    if keeps_its_picture(settings) {
         return World::Temperate;
     }
     match (settings.world, seed) {
@@ -192,14 +192,36 @@ pub fn drawn_for(seed: u64) -> World {
     World::Temperate
 }
 
+/// The world the mountain of `seed` is made and drawn in under
+/// `settings`: [`chosen`]'s, except that a temperate mountain of the
+/// varied draw stays `World::Varied`, which the render reads as the
+/// temperate coast under a day drawn for it as the other worlds' days are
+/// (its hour, its light, its camera). A temperate world named keeps the
+/// picture from before the worlds, the slide show's twins among them.
+pub fn drawn_world(settings: &Settings, seed: Option<u64>) -> World {
+    match (chosen(settings, seed), settings.world, seed) {
+        (World::Temperate, World::Varied, Some(_)) if !keeps_its_picture(settings) => {
+            World::Varied
+        }
+        (world, ..) => world,
+    }
+}
+
+/// Whether `settings` keep a picture of their own in any world (the seed
+/// programs' looks, the colour modes other than the natural colours): the
+/// temperate world's.
+fn keeps_its_picture(settings: &Settings) -> bool {
+    settings.look != Look::Ours || settings.color != ColorMode::Natural
+}
+
 /// `settings` as the mountain of `seed` is made and drawn with: its world
-/// chosen ([`chosen`]) and held in `world`, and each key the world sets
+/// ([`drawn_world`]) held in `world`, and each key the world sets
 /// that `settings` leave at their default given the world's value (its
 /// fixed [`presets`], and its [`spreads`] drawn for the mountain).
 pub fn drawn(settings: &Settings, seed: Option<u64>) -> Settings {
     let world = chosen(settings, seed);
     let mut out = settings.clone();
-    out.world = world;
+    out.world = drawn_world(settings, seed);
     let fixed = presets(world).iter().map(|&(name, preset)| {
         let value = match preset {
             Int(i) => Value::Int(i),

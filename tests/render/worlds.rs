@@ -112,8 +112,13 @@ fn a_varied_world_is_the_same_at_every_size_and_at_low_detail() {
                     low_detail,
                     ..named.clone()
                 };
+                // The temperate coast of the varied draw is lit and framed
+                // as its own day (`scene::a_seed_is_one_scene...` holds it
+                // one scene at every size); the temperate world named keeps
+                // the picture from before the worlds.
+                let same = world != World::Temperate;
                 assert!(
-                    picture(&varied, seed, size) == picture(&named, seed, size),
+                    (picture(&varied, seed, size) == picture(&named, seed, size)) == same,
                     "seed {seed} ({world:?}) at {size:?}, low_detail {low_detail}"
                 );
             }

@@ -578,7 +578,9 @@ const LOW_SUN: f32 = 10.0;
 /// peaks' last light; a sun below it is a twilight's, `dusk.rs`, so the
 /// survey's nights are the nights drawn), winter's sun never stands high, the
 /// desert's and the tropics' noon stand highest. None for the temperate
-/// world (its four times are the slide show from before the worlds).
+/// world named (its four times are the slide show from before the
+/// worlds); the temperate coast of the varied draw (`World::Varied` here,
+/// `worlds::drawn_world`) draws its hour as the others do.
 fn sun_heights(world: World) -> Option<(f32, f32)> {
     match world {
         World::Alpine => Some((0.0, 50.0)),
@@ -586,7 +588,8 @@ fn sun_heights(world: World) -> Option<(f32, f32)> {
         World::Autumn => Some((1.0, 35.0)),
         World::Desert => Some((1.0, 65.0)),
         World::Tropical => Some((2.0, 70.0)),
-        World::Varied | World::Temperate => None,
+        World::Varied => Some((1.0, 55.0)),
+        World::Temperate => None,
     }
 }
 
@@ -595,7 +598,7 @@ fn sun_heights(world: World) -> Option<(f32, f32)> {
 /// afternoon, from the viewer's side, and half the low suns ahead (the
 /// land against a glowing sky), so two slides of one world are seldom lit
 /// by one hour (the temperate world's four times light many alike). None
-/// for the temperate world.
+/// for the temperate world named.
 pub fn sun(world: World, identity: u64) -> Option<SunAt> {
     let (lo, hi) = sun_heights(world)?;
     let draw = crate::terrain::splitmix::mix(identity ^ SUN_KEY);
@@ -626,7 +629,8 @@ pub fn sun(world: World, identity: u64) -> Option<SunAt> {
 
 /// The day's light in `world`, from the time of day's `light`: winter's
 /// low, cold sun (lower, paler and bluer, more of its light from the
-/// sky); in every world but the temperate a brighter or duller, warmer or
+/// sky); in every world but the temperate named (`World::Varied` is the
+/// temperate coast of the varied draw) a brighter or duller, warmer or
 /// colder day, its shade lighter or deeper, by the mountain's draw `v`
 /// ([`light_draw`]), the shade lighter still under a low sun ahead
 /// ([`BACKLIT`]); a twilight's land lit [`TWILIGHT_LIFT`] times as
@@ -634,7 +638,7 @@ pub fn sun(world: World, identity: u64) -> Option<SunAt> {
 /// times as bright as the temperate world's. Seed 000's light is left
 /// as it is.
 pub fn light(world: World, mut light: Lighting, v: f32) -> Lighting {
-    if light.classic || matches!(world, World::Temperate | World::Varied) {
+    if light.classic || world == World::Temperate {
         return light;
     }
     if light.night >= 1.0 {
@@ -732,7 +736,8 @@ mod tests {
     /// low, from ahead: never from high behind the range.
     #[test]
     fn a_worlds_sun_stands_within_its_heights_and_never_behind_the_range() {
-        for world in DRAWN {
+        // `World::Varied`: the temperate coast of the varied draw.
+        for world in DRAWN.into_iter().chain([World::Varied]) {
             let (lo, hi) = sun_heights(world).expect("a world's heights");
             let suns: Vec<SunAt> = (0..2000).filter_map(|i| sun(world, i)).collect();
             assert_eq!(suns.len(), 2000, "{world:?}");
@@ -766,7 +771,7 @@ mod tests {
         let night = Lighting::new(Sun::Night, &field);
         let temperate = light(World::Temperate, night.clone(), 0.5);
         assert_eq!(temperate.direct, night.direct);
-        for world in DRAWN {
+        for world in DRAWN.into_iter().chain([World::Varied]) {
             let lit = light(world, night.clone(), 0.5);
             for (a, b) in [(lit.direct, night.direct), (lit.ambient, night.ambient)] {
                 assert!(luminance(a) >= 1.5 * luminance(b), "{world:?}: {a:?} {b:?}");
@@ -783,7 +788,8 @@ mod tests {
         use crate::settings::Sun;
         let field = crate::terrain::Heightfield::flat(5, 100.0);
         let day = Lighting::new(Sun::Midday, &field);
-        for world in [World::Alpine, World::Autumn, World::Desert, World::Tropical] {
+        let days = [World::Alpine, World::Autumn, World::Desert, World::Tropical];
+        for world in days.into_iter().chain([World::Varied]) {
             let ks: Vec<f32> = (0..500)
                 .map(|i| light(world, day.clone(), i as f32 / 500.0).ambient[2] / day.ambient[2])
                 .collect();

@@ -34,7 +34,7 @@ use crate::render::base::colour::{
     Rgb, luminance, mix, mix_packed, pack, ramp, scale_packed, scale_packed3, smoothstep, to_u32,
     unpack,
 };
-use crate::settings::{ColorMode, Look, Settings, Sun, World};
+use crate::settings::{ColorMode, Look, Settings, Sun, World, worlds};
 use crate::terrain::Heightfield;
 use crate::terrain::wetness::ORDINARY;
 use glam::{Vec2, Vec3};
@@ -139,6 +139,15 @@ pub struct Palette {
     air: f32,
 }
 
+/// The world `field` is coloured and lit in under `settings`: the one its
+/// seed draws ([`worlds::drawn_world`]), which settings already drawn for
+/// it hold, so the palette of a scene and one made from the preferences
+/// themselves agree (a "varied" left in them is not taken for the
+/// temperate coast of the varied draw).
+fn world_of(settings: &Settings, field: &Heightfield) -> World {
+    worlds::drawn_world(settings, field.seed())
+}
+
 impl Palette {
     /// Prepares the colours for `field` (treeline, depth range) under `settings`.
     pub fn new(settings: &Settings, field: &Heightfield) -> Self {
@@ -166,16 +175,17 @@ impl Palette {
         // pictures a varied draw gave them before there were nights.
         let nights = settings.color == ColorMode::Natural && settings.look == Look::Ours;
         let mut light = Lighting::drawn(sun, field, nights);
+        let world = world_of(settings, field);
         // A world's varied day is lit by an hour of its own drawing, and
         // some of its nights are twilight.
         let own = match light.night > 0.0 {
-            false => cover::sun(settings.world, field.identity()),
-            true => dusk::twilight(settings.world, field.identity()),
+            false => cover::sun(world, field.identity()),
+            true => dusk::twilight(world, field.identity()),
         };
         if let (Sun::Varied, Some(at)) = (sun, own) {
             light = Lighting::at_hour(at);
         }
-        cover::light(settings.world, light, cover::light_draw(field.identity()))
+        cover::light(world, light, cover::light_draw(field.identity()))
     }
 
     /// [`Palette::new`] with its light worked out already
@@ -185,7 +195,8 @@ impl Palette {
         let (lowest, highest) = field.min_max();
         let top = positive_or(highest, 1.0);
         let (gain, offset) = tone(mode);
-        let zones = Zones::new(settings.height, lowest < 0.0, settings.world);
+        let world = world_of(settings, field);
+        let zones = Zones::new(settings.height, lowest < 0.0, world);
         let zones = Zones {
             draw: cover::draw(field.identity()),
             ..zones
@@ -200,7 +211,7 @@ impl Palette {
             deepest,
             reflected: (!lighting.classic).then_some(lighting.horizon),
             night: lighting.night,
-            world: settings.world,
+            world,
             draw: zones.draw,
             lit: lighting.level_share(),
         };
@@ -244,7 +255,7 @@ impl Palette {
                 Look::Essay => Some(essay::BACKGROUND),
                 _ => None,
             },
-            world: settings.world,
+            world,
             air: cover::air_draw(field.identity()),
         }
     }

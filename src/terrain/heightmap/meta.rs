@@ -63,9 +63,12 @@ pub const KEY_CLIFFS: &str = "mountains:cliffs";
 /// `Settings::look`, as in the config file; absent in files made before
 /// the looks, whose mountains were ours.
 pub const KEY_LOOK: &str = "mountains:look";
-/// `Settings::world`, the world the mountain was made in (never
-/// "varied": the one drawn); absent in files made before the worlds,
-/// whose mountains were temperate.
+/// `Settings::world`, the world the mountain was made in: the one drawn
+/// for its seed, and "varied" only for the temperate coast the varied
+/// draw gives (its day drawn as the other worlds' are, which the temperate
+/// world named does not: `worlds::drawn_world`; the set's seed draws it
+/// again); absent in files made before the worlds, whose mountains were
+/// temperate.
 pub const KEY_WORLD: &str = "mountains:world";
 
 /// Parameters files from before they existed lack: their default is taken
@@ -198,7 +201,7 @@ pub fn to_pairs(
         pairs.push((KEY_SEED, seed.to_string()));
         // The world drawn for the seed, so the set comes back in it.
         let made = Settings {
-            world: worlds::chosen(settings, Some(seed)),
+            world: worlds::drawn_world(settings, Some(seed)),
             ..settings.clone()
         };
         pairs.extend(GeneratorParams::from_settings(&made).to_pairs());
@@ -497,6 +500,40 @@ mod tests {
         assert_eq!(meta.params, Some(GeneratorParams::from_settings(&made)));
         assert_eq!(meta.offset, Some(-3.0));
         assert!(meta.notes.is_empty(), "{:?}", meta.notes);
+    }
+
+    /// A temperate mountain of the varied draw is recorded as "varied"
+    /// (its day drawn, which the temperate world named does not draw), and
+    /// comes back to be drawn as it was; a temperate one named as
+    /// "temperate".
+    #[test]
+    fn a_varied_temperate_mountain_is_recorded_as_varied() {
+        let seed = (1..)
+            .find(|&s| worlds::drawn_for(s) == World::Temperate)
+            .expect("a temperate seed");
+        let q = Quantisation::spanning(-3.0, 9.0);
+        for (world, recorded) in [
+            (World::Varied, World::Varied),
+            (World::Temperate, World::Temperate),
+        ] {
+            let s = Settings {
+                world,
+                ..Settings::default()
+            };
+            let written: Vec<(String, String)> = to_pairs(&q, 400.0, Some(seed), &s)
+                .into_iter()
+                .map(|(k, v)| (k.to_string(), v))
+                .collect();
+            let meta = parse(&written, Path::new("x.png")).unwrap();
+            let params = meta.params.expect("its parameters");
+            assert_eq!(params.0.world, recorded, "{world:?}");
+            let back = params.drawn_under(&Settings::default());
+            assert_eq!(
+                worlds::drawn_world(&back, Some(seed)),
+                worlds::drawn_world(&s, Some(seed)),
+                "{world:?}"
+            );
+        }
     }
 
     #[test]
