@@ -200,9 +200,7 @@ pub fn drawn_for(seed: u64) -> World {
 /// picture from before the worlds, the slide show's twins among them.
 pub fn drawn_world(settings: &Settings, seed: Option<u64>) -> World {
     match (chosen(settings, seed), settings.world, seed) {
-        (World::Temperate, World::Varied, Some(_)) if !keeps_its_picture(settings) => {
-            World::Varied
-        }
+        (World::Temperate, World::Varied, Some(_)) if !keeps_its_picture(settings) => World::Varied,
         (world, ..) => world,
     }
 }

@@ -73,6 +73,62 @@ fn night_is_part_of_the_varied_draw_in_our_look_only() {
     assert_eq!(asked.night, 1.0);
 }
 
+/// Of the varied draw's full nights, some see the moon rise ahead, low
+/// in the view (its disc and glow in the sky, `moonrise.rs`), and some
+/// keep it high to the side; the temperate world named keeps its nights
+/// (all of them high moons). A rising moon's slide draws its disc: the
+/// sky's brightest pixel is the moon's pale white.
+#[test]
+fn some_varied_nights_see_the_moon_rise_and_the_temperate_world_none() {
+    let s = Settings {
+        detail: Detail::Level(6),
+        ..Settings::default()
+    };
+    let temperate = Settings {
+        world: mountains::settings::World::Temperate,
+        ..s.clone()
+    };
+    let (mut rising, mut high) = (Vec::new(), 0);
+    for seed in 1..=400u64 {
+        let field = terrain::generate(&s, seed);
+        let drawn = mountains::settings::worlds::drawn(&s, Some(seed));
+        let light = Palette::lighting_for(&drawn, &field);
+        if light.night >= 1.0 {
+            match light.sun.z < 0.1 {
+                true => rising.push(seed),
+                false => high += 1,
+            }
+        }
+        let named = Palette::lighting_for(&temperate, &field);
+        assert!(
+            named.night < 1.0 || named.sun.z > 0.1,
+            "seed {seed}: a rising moon in the temperate world named"
+        );
+    }
+    assert!(
+        rising.len() >= 2 && high >= 2,
+        "{rising:?} rising, {high} high"
+    );
+    let moon_in_sight = rising.iter().any(|&seed| {
+        let at = for_frame(
+            &Settings {
+                clouds: Clouds::Amount(0.0),
+                ..s.clone()
+            },
+            Size::new(480, 270),
+        );
+        let field = terrain::generate(&at, seed);
+        let (frame, classes) = drawn(&field, &at, 480, 270);
+        (frame.pixels().iter().zip(classes.pixels()))
+            .filter(|&(_, &c)| Class::of(c) == Class::Sky)
+            .any(|(&p, _)| colour::unpack(p).iter().all(|&v| v > 0.85))
+    });
+    assert!(
+        moon_in_sight,
+        "no rising moon's disc in sight on {rising:?}"
+    );
+}
+
 /// Dark but never black, and the land can be told from the sky: along
 /// the skyline the land's pixels just below differ from the sky's just
 /// above, column by column.

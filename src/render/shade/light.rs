@@ -239,6 +239,16 @@ impl Lighting {
         Self::at(&time, turn).under_moon(1.0)
     }
 
+    /// This night's light with its moon `elevation` degrees up and
+    /// `azimuth` round from the viewer's left (`moonrise.rs`): its colours
+    /// and its phase kept.
+    pub(super) fn moon_at(self, elevation: f32, azimuth: f32) -> Self {
+        Lighting {
+            sun: towards(elevation, azimuth),
+            ..self
+        }
+    }
+
     /// This light on the land `k` times as bright (a moon's phase; the
     /// night sky stays the night's).
     fn phased(mut self, k: f32) -> Self {
@@ -258,13 +268,8 @@ impl Lighting {
 
     /// The light of `time`, its sun turned `turn` degrees.
     pub(super) fn at(time: &Time, turn: f32) -> Self {
-        let (el, az) = (
-            time.elevation.to_radians(),
-            (time.azimuth + turn).to_radians(),
-        );
-        let sun = Vec3::new(-az.cos() * el.cos(), az.sin() * el.cos(), el.sin());
         Lighting {
-            sun: sun.normalize(),
+            sun: towards(time.elevation, time.azimuth + turn),
             direct: time.direct,
             ambient: time.ambient,
             zenith: time.zenith,
@@ -363,4 +368,12 @@ fn open_sky(seen: f32) -> f32 {
 #[inline]
 fn unit(v: f32) -> f32 {
     if v > 0.0 { v.min(1.0) } else { 0.0 }
+}
+
+/// The unit vector towards a light `elevation` degrees up and `azimuth`
+/// round from the viewer's left (90 ahead, behind the range), z up and y
+/// towards the back.
+fn towards(elevation: f32, azimuth: f32) -> Vec3 {
+    let (el, az) = (elevation.to_radians(), azimuth.to_radians());
+    Vec3::new(-az.cos() * el.cos(), az.sin() * el.cos(), el.sin()).normalize()
 }

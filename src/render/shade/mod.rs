@@ -15,6 +15,7 @@ pub(super) mod kept_points;
 pub mod light;
 pub mod listing;
 pub(super) mod mirror;
+pub(super) mod moonrise;
 pub(super) mod night;
 pub(super) mod normals;
 pub mod palette;

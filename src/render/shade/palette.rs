@@ -28,6 +28,7 @@ use super::hour::SunAt;
 use super::index;
 use super::light::Lighting;
 use super::listing;
+use super::moonrise;
 use super::night;
 use super::strata;
 use crate::render::base::colour::{
@@ -182,8 +183,15 @@ impl Palette {
             false => cover::sun(world, field.identity()),
             true => dusk::twilight(world, field.identity()),
         };
-        if let (Sun::Varied, Some(at)) = (sun, own) {
-            light = Lighting::at_hour(at);
+        match (sun, own) {
+            (Sun::Varied, Some(at)) => light = Lighting::at_hour(at),
+            // Half the full nights see the moon rise ahead.
+            (Sun::Varied, None) if light.night >= 1.0 => {
+                if let Some((up, round)) = moonrise::rising(world, field.identity()) {
+                    light = light.moon_at(up, round);
+                }
+            }
+            _ => {}
         }
         cover::light(world, light, cover::light_draw(field.identity()))
     }

@@ -108,10 +108,36 @@ impl Sky {
         let first = canvas.keeps_first();
         if first {
             self.paint_stars(canvas, end);
+            self.paint_disc(canvas, end);
         }
         self.paint_gradient(canvas, end, below);
         if !first {
             self.paint_stars(canvas, end);
+            self.paint_disc(canvas, end);
+        }
+    }
+
+    /// The pixels round the light's disc, of rows above `end` that are
+    /// still open: each its own colour (the weather's every few columns
+    /// would draw the disc's edge in steps).
+    fn paint_disc(&self, canvas: &mut Canvas, end: i64) {
+        let Some([(left, right), (top, bottom)]) =
+            self.weather.as_ref().and_then(|w| w.disc_bounds())
+        else {
+            return;
+        };
+        let clip = *canvas.clip();
+        let cols = (
+            left.max(clip.x0 as f32) as u32,
+            right.min(clip.x1 as f32).max(0.0) as u32,
+        );
+        let last = (end as f32).min(bottom).min(self.horizon_row.ceil());
+        let mut seen = SkySeen::default();
+        for y in top.max(clip.y0 as f32).max(0.0) as u32..last.max(0.0) as u32 {
+            for x in cols.0..cols.1 {
+                let c = self.colour_seen(x, y, &mut seen);
+                canvas.fill_with(y, x, x + 1, |_| c);
+            }
         }
     }
 
@@ -190,6 +216,13 @@ impl Sky {
     /// time, they were most of that pass on a cloudy 1080p slide).
     pub(crate) fn colour_seen<'s>(&'s self, x: u32, y: u32, seen: &mut SkySeen<'s>) -> u32 {
         let c = self.gradient_seen(x, y, seen);
+        let (px, py) = (x as f32 + 0.5, y as f32 + 0.5);
+        let c = match &self.weather {
+            Some(w) if w.disc_covers(px, py) => {
+                crate::render::base::colour::to_u32(w.disc_over(unpack(c), px, py))
+            }
+            _ => c,
+        };
         let Some(star) = self.stars.as_ref().and_then(|s| s.at(x, y)) else {
             return c;
         };
@@ -316,7 +349,7 @@ impl Anchors {
     /// anchor `k`'s column, as lanes (blue, green, red, 0; 0..=1).
     #[inline]
     fn anchor(self, row: &WeatherRow, g: Rgb, k: u32) -> Vec4 {
-        rgb_lanes(row.over(g, (k * self.step) as f32 + 0.5))
+        rgb_lanes(row.over_sky(g, (k * self.step) as f32 + 0.5))
     }
 
     /// Pixel `x` of a row whose dither steps are `dither`, blended from
@@ -379,5 +412,64 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// A rising moon's disc is drawn pixel by pixel: its edge crosses from
+    /// the sky to the disc within a pixel or two, where the weather's
+    /// columns, worked out every 8 at 1080p, would draw it in steps; and
+    /// what is painted is what `colour` says.
+    #[test]
+    fn a_rising_moons_disc_is_drawn_pixel_by_pixel() {
+        let (width, height) = (1920u32, 1080u32);
+        let field = Heightfield::flat(5, 100.0);
+        let tops = RowTops::of(&field);
+        let size = Size::new(width, height);
+        let view = View::fitted(ViewKind::Vista, 33, 100.0, (tops.rows(), 0.0), size);
+        let lighting = Lighting::new(Sun::Night, &field).moon_at(0.3, 90.0);
+        let frame = Vec2::new(width as f32, height as f32);
+        let horizon = height as f32 * 0.66;
+        let w = Weather::new(&view, &lighting, |c| c, (frame, horizon), 0.0, 3);
+        let sky = Sky::new(0x101828, 0x303848, horizon).with_weather(w);
+        let w = sky.weather().expect("a rising moon's glow");
+        let [(left, right), (top, bottom)] = w.disc_bounds().expect("its disc");
+        let (cx, cy) = ((left + right) / 2.0, (top + bottom) / 2.0);
+        assert!(
+            cx > 0.0 && cx < width as f32 && cy > 0.0 && cy < horizon,
+            "the moon at ({cx}, {cy}), out of the sky"
+        );
+        let rows = bottom.ceil() as u32 + 1;
+        let mut pixels = vec![0u32; (width * rows) as usize];
+        let mut canvas = Canvas::new(&mut pixels, width, 0);
+        sky.paint(&mut canvas);
+        let y = cy as u32;
+        let luma = |c: u32| crate::render::base::colour::luminance(unpack(c));
+        let row: Vec<f32> = (0..width)
+            .map(|x| luma(pixels[(y * width + x) as usize]))
+            .collect();
+        for x in left as u32..right as u32 {
+            assert_eq!(
+                pixels[(y * width + x) as usize],
+                sky.colour(x, y),
+                "({x}, {y})"
+            );
+        }
+        let inside = luma(sky.colour(cx as u32, y));
+        let outside = row[(left as usize).saturating_sub(4)];
+        assert!(
+            inside > outside + 0.3,
+            "disc {inside} over the sky {outside}"
+        );
+        // Pixels part way between the sky round it and the disc: its two
+        // edges, a pixel or two each.
+        let between = row[left as usize..right as usize]
+            .iter()
+            .filter(|&&l| {
+                l > outside + 0.1 * (inside - outside) && l < inside - 0.1 * (inside - outside)
+            })
+            .count();
+        assert!(
+            (1..=4).contains(&between),
+            "{between} pixels across the edges"
+        );
     }
 }

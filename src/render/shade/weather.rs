@@ -31,6 +31,19 @@ const HALO: f32 = 0.06;
 const DISC: f32 = 0.000_15;
 /// What a full night leaves of the light on the clouds' lit edges.
 const MOONLIT_CLOUD: f32 = 0.6;
+/// The height under which a night's moon is a rising one, in the frame
+/// (its unit vector's z: about 6 degrees; `moonrise::HEIGHTS`).
+const RISING: f32 = 0.1;
+/// A rising moon's disc and glow: a pale, warm white, its glow a share
+/// of the sun's (the disc itself as bright).
+const MOON: Rgb = [1.0, 0.95, 0.84];
+/// A rising moon's disc: 1 - cos of its radius (half a degree; the sky's
+/// real moon is half as wide, but a frame's few degrees of sky make it a
+/// speck).
+const MOON_DISC: f32 = 0.000_038;
+const MOON_GLOW: f32 = 0.35;
+/// How far (1 - cos) from a rising moon its glow hides the stars.
+const MOON_WASH: f32 = 0.03;
 
 /// The weather of one slide, seen through one view.
 #[derive(Debug, Clone)]
@@ -49,6 +62,11 @@ pub(crate) struct Weather {
     /// horizon, 0 for a high one).
     light: Rgb,
     glow: f32,
+    /// Whether the light is a rising moon's: its glow hides the stars
+    /// round it.
+    rising: bool,
+    /// The light's disc, where its glow shows.
+    disc: Option<Disc>,
     clouds: Option<CloudSheet>,
     amount: f32,
     /// Cloud lit by the sun (its edges) and in its own shade (its heart).
@@ -94,9 +112,12 @@ impl Weather {
         // A high sun stands far above the frame: its glow is not seen.
         let low = 1.0 - smoothstep(0.3, 0.6, sun.z);
         // The moon's glow is too faint to show beside its cost (every
-        // sky pixel and every mirrored one on the weather's path): a clear
-        // night keeps the plain gradient.
-        let glows = glows && low > 0.0 && lighting.night < 0.5;
+        // sky pixel and every mirrored one on the weather's path) but
+        // where it rises ahead (`moonrise.rs`), its disc in the frame: a
+        // clear night under a high moon keeps the plain gradient.
+        let moon = lighting.night >= 0.5;
+        let rising = moon && sun.z < RISING;
+        let glows = glows && low > 0.0 && (!moon || rising);
         let night = lighting.night;
         // A world's brilliant day or its twilight lifts the sun's light
         // on the land past 1; the clouds take its colour, not the lift.
@@ -110,6 +131,16 @@ impl Weather {
         };
         let shade: Rgb = [0, 1, 2].map(|i| (lighting.ambient[i] + 0.3 * lighting.zenith[i]) * 1.15);
         let shade = heart_within(shade, lit);
+        // A rising moon's own colour, glow and disc; a high one's clouds
+        // keep the light's.
+        let (light, strength, size) = match rising {
+            true => (MOON, MOON_GLOW, MOON_DISC),
+            false => (sun_light, 1.0, DISC),
+        };
+        // The disc is never darker than the glow around it: where a
+        // world's haze brightens the glow past the disc's colour, the sun
+        // reads as a blown-out white, not as a grey coin.
+        let disc_colour = filter(mix(light, [1.0; 3], 0.6));
         Some(Weather {
             view: view.clone(),
             sun,
@@ -117,8 +148,12 @@ impl Weather {
             middle: frame.x * 0.5,
             height: frame.y.max(1.0),
             horizon_row,
-            light: filter(sun_light),
-            glow: low,
+            light: filter(light),
+            glow: low * strength,
+            rising,
+            disc: glows
+                .then(|| Disc::of(view, (sun, size), disc_colour))
+                .flatten(),
             clouds: (amount > 0.0).then(|| CloudSheet::new(amount, draw)),
             amount,
             lit: filter(lit),
@@ -159,7 +194,9 @@ impl Weather {
     /// (1 - cos) from the sun. Each part is left out where it would add
     /// less than a tenth of a level.
     fn glow_at(&self, away: f32) -> f32 {
-        let mut g = WIDE * ((GLOW_REACH - away) / GLOW_REACH).powi(2);
+        // A moon's light is too faint to warm a whole side of the sky.
+        let wide = if self.rising { 0.0 } else { WIDE };
+        let mut g = wide * ((GLOW_REACH - away) / GLOW_REACH).powi(2);
         if away < 0.06 {
             g += 0.6 * (-away / CORE).exp();
         }
@@ -181,7 +218,9 @@ impl Weather {
             c = [0, 1, 2].map(|i| c[i] + self.light[i] * silver);
         }
         let below = (1.0 - smoothstep(0.0, 0.3, up)) * (1.0 - smoothstep(0.15, 0.5, self.sun.z));
-        mix(c, self.light, 0.45 * below)
+        // A rising moon lights them from below as faintly as it glows.
+        let lift = if self.rising { MOON_GLOW } else { 1.0 };
+        mix(c, self.light, 0.45 * lift * below)
     }
 }
 
@@ -209,22 +248,55 @@ fn heart_within(shade: Rgb, lit: Rgb) -> Rgb {
 
 impl Weather {
     /// How much of the sky at screen point (`x`, `y`) is clear of cloud
-    /// and of the light's disc (0..=1): where the stars show.
+    /// and of the light's disc (0..=1): where the stars show (a rising
+    /// moon's glow washes them out round it).
     pub(crate) fn clear_at(&self, x: f32, y: f32) -> f32 {
-        if self.glows
-            && let Some(dir) = self.view.sight(x, y)
-            && 1.0 - dir.dot(self.sun) < 4.0 * DISC
-        {
+        if self.disc_covers(x, y) {
             return 0.0;
         }
+        let washed = match (self.rising && self.glows, self.view.sight(x, y)) {
+            (true, Some(dir)) => smoothstep(0.0, MOON_WASH, 1.0 - dir.dot(self.sun)),
+            _ => 1.0,
+        };
+        washed * self.cloud_clear(x, y)
+    }
+
+    /// How much of the sky at screen point (`x`, `y`) is clear of cloud.
+    fn cloud_clear(&self, x: f32, y: f32) -> f32 {
         let row = self.row(y);
         let Some(sheet) = &row.sheet else {
             return 1.0;
         };
-        1.0 - sheet
-            .seen((x - self.middle) / self.height)
-            .opacity
-            .clamp(0.0, 1.0)
+        let opacity = sheet.seen((x - self.middle) / self.height).opacity;
+        1.0 - opacity.clamp(0.0, 1.0)
+    }
+
+    /// The sky's colour `c` (its gradient, glow and cloud) at screen point
+    /// (`x`, `y`) with the light's disc over it where it shows, behind the
+    /// cloud there, its edge drawn across a pixel.
+    pub(crate) fn disc_over(&self, c: Rgb, x: f32, y: f32) -> Rgb {
+        let Some(disc) = &self.disc else {
+            return c;
+        };
+        let cover = disc.cover(x, y);
+        if cover <= 0.0 {
+            return c;
+        }
+        let lit = mix(c, disc.colour, 0.9);
+        let top = [0, 1, 2].map(|i| lit[i].max(c[i]));
+        mix(c, top, cover * self.cloud_clear(x, y))
+    }
+
+    /// Whether the light's disc covers any of the pixel round screen point
+    /// (`x`, `y`).
+    pub(crate) fn disc_covers(&self, x: f32, y: f32) -> bool {
+        self.disc.is_some_and(|d| d.cover(x, y) > 0.0)
+    }
+
+    /// The pixels (columns and rows, each from and to) where the light's
+    /// disc may show: the sky's painter draws them one by one.
+    pub(crate) fn disc_bounds(&self) -> Option<[(f32, f32); 2]> {
+        self.disc.map(|d| d.bounds())
     }
 }
 
@@ -239,8 +311,17 @@ pub(crate) struct WeatherRow<'a> {
 
 impl WeatherRow<'_> {
     /// The sky's `gradient` colour at column `x` of the row with the
-    /// weather over it.
+    /// weather over it, the light's disc included.
     pub(crate) fn over(&self, gradient: Rgb, x: f32) -> Rgb {
+        let c = self.over_sky(gradient, x);
+        self.weather.disc_over(c, x, self.y)
+    }
+
+    /// [`WeatherRow::over`] without the light's disc: what varies little
+    /// over a few pixels (the glow, the clouds), which the sky's painter
+    /// works out every few columns and blends between (the disc's edge it
+    /// draws at each pixel, [`Weather::disc_over`]).
+    pub(crate) fn over_sky(&self, gradient: Rgb, x: f32) -> Rgb {
         let w = self.weather;
         let away = match w.view.sight(x, self.y) {
             Some(dir) => 1.0 - dir.dot(w.sun),
@@ -250,14 +331,6 @@ impl WeatherRow<'_> {
         if w.glows && away < GLOW_REACH {
             let g = w.glow_at(away);
             c = [0, 1, 2].map(|i| c[i] + w.light[i] * g);
-            if away < DISC {
-                // The disc is never darker than the glow around it: where a
-                // world's haze brightens the glow past the disc's colour, the
-                // sun reads as a blown-out white, not as a grey coin.
-                let glow = c;
-                c = mix(c, mix(w.light, [1.0; 3], 0.6), 0.9);
-                c = [0, 1, 2].map(|i| c[i].max(glow[i]));
-            }
         }
         let Some(sheet) = &self.sheet else {
             return c;
@@ -267,6 +340,55 @@ impl WeatherRow<'_> {
             return c;
         }
         mix(c, w.cloud(cover, self.up, away), cover.opacity)
+    }
+}
+
+/// The light's disc on the screen, where the sky holds it ([`Disc::of`]).
+#[derive(Debug, Clone, Copy)]
+struct Disc {
+    /// Its centre (possibly outside the frame) and its radius, in pixels.
+    centre: Vec2,
+    radius: f32,
+    colour: Rgb,
+}
+
+impl Disc {
+    /// The disc of the light towards `sun`, `size` (1 - cos of its
+    /// radius) seen through `view`, in `colour`: a circle on the screen (a
+    /// degree across is a few pixels' difference from one in perspective at
+    /// most). None where the view has no camera or the light stands behind
+    /// it.
+    fn of(view: &View, (sun, size): (Vec3, f32), colour: Rgb) -> Option<Self> {
+        let centre = view.vanishing(sun)?;
+        // The angle a pixel spans there, as the chord over a hundred
+        // pixels (a cosine this near 1 is lost to rounding).
+        let (a, b) = (
+            view.sight(centre.x, centre.y)?,
+            view.sight(centre.x + 100.0, centre.y)?,
+        );
+        let per_pixel = a.distance(b) / 100.0;
+        let angle = (1.0 - size).acos();
+        (per_pixel > 0.0).then(|| Disc {
+            centre,
+            radius: angle / per_pixel,
+            colour,
+        })
+    }
+
+    /// How much of the pixel around screen point (`x`, `y`) the disc
+    /// covers: 1 within, 0 outside, the share of a pixel across its edge.
+    fn cover(&self, x: f32, y: f32) -> f32 {
+        let d = Vec2::new(x, y).distance(self.centre);
+        (self.radius + 0.5 - d).clamp(0.0, 1.0)
+    }
+
+    /// The pixels (columns, rows, each from and to) of the square round it.
+    fn bounds(&self) -> [(f32, f32); 2] {
+        let r = self.radius + 1.0;
+        [
+            (self.centre.x - r, self.centre.x + r),
+            (self.centre.y - r, self.centre.y + r),
+        ]
     }
 }
 
@@ -349,6 +471,29 @@ mod tests {
             }
         }
         assert!(white * 100 <= all, "{white} of {all} sky points white");
+    }
+
+    /// A high moon to the side keeps a clear night's plain gradient; one
+    /// rising ahead shows its disc, hides the stars behind it and washes
+    /// out those round it, and leaves them further off.
+    #[test]
+    fn a_rising_moon_shows_its_disc_and_hides_the_stars_round_it() {
+        assert!(weather(Sun::Night, 0.0).is_clear());
+        let field = Heightfield::flat(5, 100.0);
+        let lighting = Lighting::new(Sun::Night, &field).moon_at(0.3, 90.0);
+        let frame = (Vec2::new(960.0, 540.0), 300.0);
+        let w = Weather::new(&view(), &lighting, |c| c, frame, 0.0, 7).expect("a camera");
+        assert!(!w.is_clear());
+        let disc = w.disc.expect("the moon's disc");
+        let (c, r) = (disc.centre, disc.radius);
+        assert!(r > 1.0 && r < 20.0, "radius {r} px");
+        assert!(w.disc_covers(c.x, c.y) && w.clear_at(c.x, c.y) == 0.0);
+        let near = w.clear_at(c.x + 2.0 * r, c.y);
+        assert!(near > 0.0 && near < 1.0, "beside the moon: {near}");
+        assert_eq!(w.clear_at(c.x + 400.0, c.y - 150.0), 1.0);
+        let sky = [0.05, 0.07, 0.12];
+        let (lit, dark) = (w.over(sky, c.x, c.y), w.over(sky, c.x + 400.0, c.y));
+        assert!(luminance(lit) > luminance(dark) + 0.5, "{lit:?} {dark:?}");
     }
 
     /// The sun's disc against its own glow over a bright sky (a world's
