@@ -37,11 +37,11 @@ const RISING: f32 = 0.1;
 /// A rising moon's disc and glow: a pale, warm white, its glow a share
 /// of the sun's (the disc itself as bright).
 const MOON: Rgb = [1.0, 0.95, 0.84];
+const MOON_GLOW: f32 = 0.35;
 /// A rising moon's disc: 1 - cos of its radius (half a degree; the sky's
 /// real moon is half as wide, but a frame's few degrees of sky make it a
 /// speck).
 const MOON_DISC: f32 = 0.000_038;
-const MOON_GLOW: f32 = 0.35;
 /// How far (1 - cos) from a rising moon its glow hides the stars.
 const MOON_WASH: f32 = 0.03;
 
