@@ -152,7 +152,7 @@ impl Weather {
             glow: low * strength,
             rising,
             disc: glows
-                .then(|| Disc::of(view, (sun, size), disc_colour))
+                .then(|| Disc::of(view, (sun, size), disc_colour, rising))
                 .flatten(),
             clouds: (amount > 0.0).then(|| CloudSheet::new(amount, draw)),
             amount,
@@ -282,7 +282,7 @@ impl Weather {
         if cover <= 0.0 {
             return c;
         }
-        let lit = mix(c, disc.colour, 0.9);
+        let lit = mix(c, disc.colour_at(x, y), 0.9);
         let top = [0, 1, 2].map(|i| lit[i].max(c[i]));
         mix(c, top, cover * self.cloud_clear(x, y))
     }
@@ -350,7 +350,24 @@ struct Disc {
     centre: Vec2,
     radius: f32,
     colour: Rgb,
+    /// Whether it is the moon's, which shows its seas.
+    moon: bool,
 }
+
+/// The moon's seas as the eye sees them, each a centre on the disc (in
+/// its radii, x right and y down) and a radius: Imbrium, Serenitatis,
+/// Tranquillitatis, Crisium, Procellarum and Nubium, in shape and place
+/// roughly (a disc of one colour reads as a lamp, not the moon).
+const SEAS: [(f32, f32, f32); 6] = [
+    (-0.3, -0.35, 0.36),
+    (0.12, -0.3, 0.24),
+    (0.3, 0.02, 0.28),
+    (0.66, -0.18, 0.15),
+    (-0.55, 0.1, 0.4),
+    (-0.12, 0.45, 0.24),
+];
+/// How much darker than the highlands a sea is at its middle.
+const SEA_DARK: f32 = 0.13;
 
 impl Disc {
     /// The disc of the light towards `sun`, `size` (1 - cos of its
@@ -358,7 +375,7 @@ impl Disc {
     /// degree across is a few pixels' difference from one in perspective at
     /// most). None where the view has no camera or the light stands behind
     /// it.
-    fn of(view: &View, (sun, size): (Vec3, f32), colour: Rgb) -> Option<Self> {
+    fn of(view: &View, (sun, size): (Vec3, f32), colour: Rgb, moon: bool) -> Option<Self> {
         let centre = view.vanishing(sun)?;
         // The angle a pixel spans there, as the chord over a hundred
         // pixels (a cosine this near 1 is lost to rounding).
@@ -372,7 +389,22 @@ impl Disc {
             centre,
             radius: angle / per_pixel,
             colour,
+            moon,
         })
+    }
+
+    /// The disc's colour at screen point (`x`, `y`) on it: the moon's
+    /// darker over its seas ([`SEAS`]).
+    fn colour_at(&self, x: f32, y: f32) -> Rgb {
+        if !self.moon {
+            return self.colour;
+        }
+        let p = (Vec2::new(x, y) - self.centre) / self.radius;
+        let dark: f32 = SEAS
+            .iter()
+            .map(|&(sx, sy, r)| 1.0 - smoothstep(0.0, r, p.distance(Vec2::new(sx, sy))))
+            .sum();
+        self.colour.map(|c| c * (1.0 - SEA_DARK * dark.min(1.0)))
     }
 
     /// How much of the pixel around screen point (`x`, `y`) the disc
