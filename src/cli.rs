@@ -145,6 +145,7 @@ pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
     let mut p = Parser {
         args,
         pos: 0,
+        files: Vec::new(),
         inv: Invocation {
             mode: default_mode(),
             config: None,
@@ -256,6 +257,9 @@ fn finish_mode(
 struct Parser<'a> {
     args: &'a [OsString],
     pos: usize,
+    /// Each file flag given so far (by its long name) and how it was typed:
+    /// what a second one of it is refused with.
+    files: Vec<(&'static str, String)>,
     inv: Invocation,
 }
 
@@ -316,6 +320,8 @@ impl Parser<'_> {
         if let Some(mode) = self.windows_flag(arg)? {
             return Ok(Some(mode));
         }
+        // Where `arg` was: with what it takes after it, the option as typed.
+        let from = self.pos - 1;
         // `--seed=5`, and with one dash as xscreensaver's flags are typed
         // (`-seed=5`, `-config=FILE`), as `-seed 5` is taken.
         let (flag, inline) = match arg.split_once('=') {
@@ -354,8 +360,16 @@ impl Parser<'_> {
             f if inline.is_some() && NO_VALUE.contains(&f) => {
                 return Err(UsageError(format!("{f} takes no value")));
             }
-            "--config" => self.inv.config = Some(take(self, "--config")?.into()),
-            "--open" => self.inv.open = Some(take(self, "--open")?.into()),
+            "--config" => {
+                let file = take(self, "--config")?;
+                self.once("--config", "preferences file", self.typed_since(from))?;
+                self.inv.config = Some(file.into());
+            }
+            "--open" => {
+                let file = take(self, "--open")?;
+                self.once("--open", "data set", self.typed_since(from))?;
+                self.inv.open = Some(file.into());
+            }
             "--set" => {
                 let kv = take(self, "--set")?
                     .into_string()
@@ -367,7 +381,11 @@ impl Parser<'_> {
                     .sets
                     .push((k.trim().to_string(), v.trim().to_string()));
             }
-            "-o" | "--output" => *output = Some(take(self, "--output")?.into()),
+            "-o" | "--output" => {
+                let file = take(self, "--output")?;
+                self.once("--output", "output file", self.typed_since(from))?;
+                *output = Some(file.into());
+            }
             "--size" => *size = Some(parse_size(&take(self, "--size")?.to_string_lossy())?),
             "--root" => return Ok(Some(Mode::XRoot)),
             "--window" => return Ok(Some(Mode::Window)),
@@ -445,6 +463,32 @@ impl Parser<'_> {
             },
         }
         Ok(None)
+    }
+
+    /// Records the file flag `long` (naming `what`), typed as `typed`;
+    /// refuses it if it was given before. Last-wins passed the first file
+    /// over in silence (`-o a.png -o b.png` wrote b.png alone), and which
+    /// one was meant is not ours to guess.
+    fn once(&mut self, long: &'static str, what: &str, typed: String) -> Result<(), UsageError> {
+        if let Some((_, first)) = self.files.iter().find(|(flag, _)| *flag == long) {
+            return Err(UsageError(format!(
+                "`{typed}` given after `{first}`: give one {what}"
+            )));
+        }
+        self.files.push((long, typed));
+        Ok(())
+    }
+
+    /// The arguments from `from` to the last one taken, as typed (`-seed
+    /// 9`, `--seed=9`, `-o x.png`), each cut as every echo is: how a
+    /// message names an option.
+    fn typed_since(&self, from: usize) -> String {
+        let taken = &self.args[from..self.pos.min(self.args.len())];
+        let typed: Vec<String> = taken
+            .iter()
+            .map(|a| crate::quote::clipped(&a.to_string_lossy()))
+            .collect();
+        typed.join(" ")
     }
 
     /// A preference key given as a flag of its own (`-cragginess 40`).

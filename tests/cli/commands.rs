@@ -1008,3 +1008,31 @@ fn a_png_given_as_preferences_is_named_as_one() {
     assert!(err.contains("a PNG image, not text"), "{err}");
     assert!(err.contains("nothing in the file was used"), "{err}");
 }
+
+/// A file flag given twice is a usage error (exit 2) said before any
+/// work: no picture is written to either name.
+#[test]
+fn a_file_flag_given_twice_exits_2_and_writes_nothing() {
+    let dir = scratch("file-flag-twice");
+    let (a, b) = (dir.join("a.png"), dir.join("b.png"));
+    let o = mountains(&[
+        "render",
+        "--size",
+        "8x8",
+        "--set",
+        "detail=4",
+        "-o",
+        &arg(&a),
+        "--output",
+        &arg(&b),
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let first = stderr(&o).lines().next().unwrap_or_default().to_string();
+    let want = format!(
+        "mountains: error: `--output {}` given after `-o {}`: give one output file",
+        arg(&b),
+        arg(&a)
+    );
+    assert_eq!(first, want);
+    assert!(!a.exists() && !b.exists());
+}
