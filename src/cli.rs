@@ -103,6 +103,9 @@ pub struct Invocation {
     pub config: Option<PathBuf>,
     /// `--set key=value`, in the order given.
     pub sets: Vec<(String, String)>,
+    /// How each of `sets` was typed, in the same order (`-seed 9`,
+    /// `--seed=9`, `--set seed=9`): what a message about one names.
+    pub sets_as_typed: Vec<String>,
     /// `--open FILE`: show a saved heightmap instead of generating.
     pub open: Option<PathBuf>,
     /// The xscreensaver options every hack takes.
@@ -150,6 +153,7 @@ pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
             mode: default_mode(),
             config: None,
             sets: Vec::new(),
+            sets_as_typed: Vec::new(),
             open: None,
             xss: XssOptions::default(),
         },
@@ -377,9 +381,7 @@ impl Parser<'_> {
                 let (k, v) = kv
                     .split_once('=')
                     .ok_or_else(|| UsageError(format!("--set {kv}: expected key=value")))?;
-                self.inv
-                    .sets
-                    .push((k.trim().to_string(), v.trim().to_string()));
+                self.push_set((k.trim().to_string(), v.trim().to_string()), from);
             }
             "-o" | "--output" => {
                 let file = take(self, "--output")?;
@@ -457,9 +459,9 @@ impl Parser<'_> {
             // file flags do (`--output=x.png`).
             _ => match inline {
                 Some(v) if key_flags::lookup(&flag).is_some() => {
-                    return self.key_flag_with(&flag, Some(v)).map(|()| None);
+                    return self.key_flag_with(&flag, Some(v), from).map(|()| None);
                 }
-                _ => return self.key_flag(arg).map(|()| None),
+                _ => return self.key_flag(arg, from).map(|()| None),
             },
         }
         Ok(None)
@@ -491,13 +493,26 @@ impl Parser<'_> {
         typed.join(" ")
     }
 
-    /// A preference key given as a flag of its own (`-cragginess 40`).
-    fn key_flag(&mut self, arg: &str) -> Result<(), UsageError> {
-        self.key_flag_with(arg, None)
+    /// Adds `kv` to the sets, typed as the arguments from `from` were.
+    fn push_set(&mut self, kv: (String, String), from: usize) {
+        let typed = self.typed_since(from);
+        self.inv.sets.push(kv);
+        self.inv.sets_as_typed.push(typed);
+    }
+
+    /// A preference key given as a flag of its own (`-cragginess 40`),
+    /// typed from the argument at `from`.
+    fn key_flag(&mut self, arg: &str, from: usize) -> Result<(), UsageError> {
+        self.key_flag_with(arg, None, from)
     }
 
     /// As [`Self::key_flag`], the value given inline (`--seed=5`) if `inline`.
-    fn key_flag_with(&mut self, arg: &str, inline: Option<String>) -> Result<(), UsageError> {
+    fn key_flag_with(
+        &mut self,
+        arg: &str,
+        inline: Option<String>,
+        from: usize,
+    ) -> Result<(), UsageError> {
         let (key, own) = key_flags::lookup(arg).ok_or_else(|| unknown_argument(arg))?;
         let kv = match (inline, own) {
             (Some(_), Some(_)) => {
@@ -514,7 +529,7 @@ impl Parser<'_> {
         let mut scratch = crate::settings::Settings::default();
         crate::settings::load::apply_set(&mut scratch, &kv.0, &kv.1)
             .map_err(|problem| UsageError(format!("{arg}: {}", problem.message)))?;
-        self.inv.sets.push(kv);
+        self.push_set(kv, from);
         Ok(())
     }
 

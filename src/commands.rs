@@ -3,6 +3,7 @@
 use std::path::Path;
 use std::process::ExitCode;
 
+use crate::cli::Invocation;
 use crate::cli::output::{self, Format};
 use crate::console;
 use crate::mountain::Mountain;
@@ -27,17 +28,19 @@ pub fn mountain(settings: &Settings, open: Option<&Path>) -> Result<Mountain, St
     Ok(mountain)
 }
 
-/// Warns of each `--set` (or key flag) in `sets` that `--open` leaves
+/// Warns of each `--set` (or key flag) in `inv` that its `--open` leaves
 /// without effect in `render` and `heightmap`: one that only shapes the
 /// heights a generator makes ([`crate::mountain::HEIGHTS_ONLY`]), where
-/// the heights are the data set's. A preferences file's keys are no
-/// mistake of this run, and are not named.
-pub fn warn_heights_only(sets: &[(String, String)], open: Option<&Path>) {
-    let Some(path) = open else { return };
+/// the heights are the data set's. Each is named as it was typed (`-seed
+/// 9` is no `--set seed=9` to the one who typed it). A preferences file's
+/// keys are no mistake of this run, and are not named.
+pub fn warn_heights_only(inv: &Invocation) {
+    let Some(path) = &inv.open else { return };
     let heights_only = |key: &str| crate::mountain::HEIGHTS_ONLY.iter().any(|k| k.name == key);
-    for (key, value) in sets.iter().filter(|(key, _)| heights_only(key)) {
+    let typed = inv.sets.iter().zip(&inv.sets_as_typed);
+    for (_, typed) in typed.filter(|((key, _), _)| heights_only(key)) {
         console::err(&format!(
-            "mountains: warning: --set {key}={value}: no effect with --open {}: \
+            "mountains: warning: {typed}: no effect with --open {}: \
              the data set's heights are used as they are",
             path.display()
         ));

@@ -930,7 +930,8 @@ fn open_keeps_the_data_sets_record_and_warns_of_a_set_it_ignores() {
         again,
     ]);
     let err = stderr(&o);
-    for set in ["--set detail=7", "--set seed=9"] {
+    // Each named as typed: `-seed 9` was named `--set seed=9`.
+    for set in ["--set detail=7", "-seed 9"] {
         assert!(
             err.contains(&format!("warning: {set}: no effect with --open")),
             "{err}"
@@ -1035,4 +1036,47 @@ fn a_file_flag_given_twice_exits_2_and_writes_nothing() {
     );
     assert_eq!(first, want);
     assert!(!a.exists() && !b.exists());
+}
+
+/// The warning of a key `--open` leaves without effect names it as it was
+/// typed: `-seed 9` was named `--set seed=9`, a flag the person never gave.
+#[test]
+fn open_names_a_set_it_ignores_as_typed() {
+    let dir = scratch("open-as-typed");
+    let files = ["h.png", "again.png", "r.png"].map(|f| dir.join(f));
+    let [h, again, picture] = files.each_ref().map(|p| p.to_str().unwrap());
+    small_data_set(&files[0]);
+    let o = run(&[
+        "heightmap",
+        "--open",
+        h,
+        "-seed",
+        "9",
+        "--cragginess=40",
+        "--set=detail=6",
+        "-set",
+        "erosion=0",
+        "-o",
+        again,
+    ]);
+    let err = stderr(&o);
+    for typed in [
+        "-seed 9",
+        "--cragginess=40",
+        "--set=detail=6",
+        "-set erosion=0",
+    ] {
+        let warning = format!("mountains: warning: {typed}: no effect with --open {h}");
+        assert!(err.lines().any(|l| l.starts_with(&warning)), "{err}");
+    }
+    assert!(!err.contains("--set seed=9"), "{err}");
+    let o = run(&[
+        "render", "--size", "40x30", "--open", h, "--seed", "9", "-o", picture,
+    ]);
+    let err = stderr(&o);
+    assert!(
+        err.contains("warning: --seed 9: no effect with --open"),
+        "{err}"
+    );
+    assert!(!err.contains("--set seed=9"), "{err}");
 }
