@@ -206,7 +206,7 @@ fn fail(message: &str) -> ExitCode {
 /// use, which is no mistake) and for the null device (`/dev/null`: no
 /// preferences); 1 for any problem in the file, or a named file missing;
 /// 2 for a bad `--set` (typed for the run, as in every mode), whatever
-/// the file.
+/// the file: then a good file is said to be fine, but not "ok" alone.
 pub fn check_config(
     path: Option<&Path>,
     config: Option<&Path>,
@@ -215,7 +215,7 @@ pub fn check_config(
     // Said first: typed for this run, they are what to mend now, and a
     // file's flood of problems ends in "... and N more".
     let mistyped = report_bad_sets(sets);
-    let checked = check_file(path, config);
+    let checked = check_file(path, config, mistyped);
     if mistyped {
         return ExitCode::from(EXIT_USAGE);
     }
@@ -246,8 +246,13 @@ fn report_bad_sets(sets: &[(String, String)]) -> bool {
 
 /// The file part of [`check_config`]: its problems said, and `Err` with
 /// the exit code when there are any (or the file cannot be checked);
-/// `Ok` with what printing its verdict gave.
-fn check_file(path: Option<&Path>, config: Option<&Path>) -> Result<std::io::Result<()>, ExitCode> {
+/// `Ok` with what printing its verdict gave. `mistyped`: a `--set` given
+/// with it was refused, which the verdict of a good file must not hide.
+fn check_file(
+    path: Option<&Path>,
+    config: Option<&Path>,
+    mistyped: bool,
+) -> Result<std::io::Result<()>, ExitCode> {
     let named = path.or(config).map(Path::to_path_buf);
     let Some(file) = named.clone().or_else(paths::config_file) else {
         return Err(fail(
@@ -286,7 +291,16 @@ fn check_file(path: Option<&Path>, config: Option<&Path>) -> Result<std::io::Res
         return Err(ExitCode::FAILURE);
     }
     warn_of_a_missing_folder(&settings);
-    Ok(console::outln(&format!("{}: ok", file.display())))
+    Ok(console::outln(&verdict(&file, mistyped)))
+}
+
+/// What `--check-config` says of a file without problems. A bare "ok"
+/// beside a refused `--set` (exit 2) read as if all were well.
+fn verdict(file: &Path, mistyped: bool) -> String {
+    match mistyped {
+        false => format!("{}: ok", file.display()),
+        true => format!("{}: the file is ok; a --set is not", file.display()),
+    }
 }
 
 /// Warns when `heightmaps_dir` names no folder: the value is well formed,

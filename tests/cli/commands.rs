@@ -1080,3 +1080,43 @@ fn open_names_a_set_it_ignores_as_typed() {
     );
     assert!(!err.contains("--set seed=9"), "{err}");
 }
+
+/// A good file checked with a bad `--set` is exit 2, and what stdout says
+/// does not contradict it: it printed "good.toml: ok" as if all were
+/// well. It says the file is fine and the `--set` is not.
+#[test]
+fn check_config_with_a_bad_set_says_no_bare_ok() {
+    let dir = scratch("check-config-ok-but");
+    let good = dir.join("good.toml");
+    std::fs::write(&good, "seed = 5\n").unwrap();
+    for args in [
+        vec![
+            "--check-config",
+            good.to_str().unwrap(),
+            "--set",
+            "color=pink",
+        ],
+        vec![
+            "--config",
+            good.to_str().unwrap(),
+            "--check-config",
+            "--set",
+            "color=pink",
+        ],
+    ] {
+        let o = mountains(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains("key `color`"), "{}", stderr(&o));
+        let out = String::from_utf8_lossy(&o.stdout);
+        let said = format!("{}: the file is ok; a --set is not\n", good.display());
+        assert_eq!(out, said, "{args:?}");
+    }
+    let o = run(&[
+        "--check-config",
+        good.to_str().unwrap(),
+        "--set",
+        "color=sonar",
+    ]);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(out, format!("{}: ok\n--set: ok\n", good.display()));
+}
