@@ -49,8 +49,9 @@ pub fn warn_heights_only(inv: &Invocation) {
 
 /// `mountains render`: one complete mountain to a PNG.
 pub fn render(settings: &Settings, open: Option<&Path>, size: Size, output: &Path) -> ExitCode {
-    let refused =
-        refuse_a_terminal(output).or_else(|| refuse_the_data_set(open, output, "picture"));
+    let refused = refuse_a_terminal(output)
+        .or_else(|| refuse_the_data_set(open, output, "picture"))
+        .or_else(|| refuse_a_link_to_nowhere(output));
     if let Some(code) = refused {
         return code;
     }
@@ -107,8 +108,9 @@ fn work_exponent(settings: &Settings, open: Option<&Path>) -> u32 {
 /// `mountains heightmap`: generate a data set and save it as a 16-bit PNG,
 /// or as raw 16-bit samples (`.r16`, `.raw`), whose height range it prints.
 pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> ExitCode {
-    let refused =
-        refuse_a_terminal(output).or_else(|| refuse_the_data_set(open, output, "data set"));
+    let refused = refuse_a_terminal(output)
+        .or_else(|| refuse_the_data_set(open, output, "data set"))
+        .or_else(|| refuse_a_link_to_nowhere(output));
     if let Some(code) = refused {
         return code;
     }
@@ -128,7 +130,7 @@ pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> Exi
     if format == Format::Raw16 {
         let (bytes, q) = heightmap::raw16(&field);
         if let Err(e) = crate::fsutil::write_output_with(output, |w| w.write_all(&bytes)) {
-            return fail(&format!("-o {}: cannot write: {e}", output.display()));
+            return fail(&cannot_write(output, &e));
         }
         let n = field.size();
         let top = heightmap::quantise::MAX_SAMPLE;
@@ -173,6 +175,23 @@ fn refuse_the_data_set(open: Option<&Path>, output: &Path, made: &str) -> Option
         ));
         ExitCode::from(EXIT_USAGE)
     })
+}
+
+/// `-o` through a link to nowhere is refused by the write (see
+/// [`crate::fsutil::write_target`]), but that came once the work was done,
+/// minutes of it for a large picture: it is asked before any, and said
+/// as the write says it (exit 1). `-` is standard output, no file.
+fn refuse_a_link_to_nowhere(output: &Path) -> Option<ExitCode> {
+    if output == Path::new("-") {
+        return None;
+    }
+    let e = crate::fsutil::write_target(output).err()?;
+    Some(fail(&cannot_write(output, &e)))
+}
+
+/// How a file `-o` names that cannot be written is said.
+fn cannot_write(output: &Path, e: &std::io::Error) -> String {
+    format!("-o {}: cannot write: {e}", output.display())
 }
 
 /// Says which seed made the file.

@@ -1120,3 +1120,38 @@ fn check_config_with_a_bad_set_says_no_bare_ok() {
     let out = String::from_utf8_lossy(&o.stdout);
     assert_eq!(out, format!("{}: ok\n--set: ok\n", good.display()));
 }
+
+/// `-o` through a link to nowhere is refused (a file renamed in its place
+/// would replace someone's link), and before any work: it was refused only
+/// once the whole picture was drawn or the data set made. With an
+/// `--open` that cannot be read, the link is still what is said: the work
+/// that would fail on the data set is not begun.
+#[cfg(unix)]
+#[test]
+fn a_link_to_nowhere_at_o_is_refused_before_any_work() {
+    let dir = scratch("link-to-nowhere");
+    let missing = arg(&dir.join("missing.png"));
+    for (mode, name) in [
+        (&["render", "--size", "8x8"][..], "p.png"),
+        (&["render", "--size", "8x8"], "p.jpg"),
+        (&["heightmap"], "h.png"),
+        (&["heightmap"], "h.r16"),
+    ] {
+        let (link, target) = (dir.join(name), dir.join("gone").join(name));
+        let _ = std::fs::remove_file(&link);
+        std::os::unix::fs::symlink(&target, &link).unwrap();
+        let link_arg = arg(&link);
+        let want = format!(
+            "mountains: error: -o {link_arg}: cannot write: a link to nowhere (to {})\n",
+            target.display()
+        );
+        for heights in [&["--set", "detail=4"][..], &["--open", &missing]] {
+            let args = [mode, heights, &["-o", &link_arg]].concat();
+            let o = mountains(&args);
+            assert_eq!(o.status.code(), Some(1), "{args:?}: {}", stderr(&o));
+            assert_eq!(stderr(&o), want, "{args:?}");
+            let still = std::fs::symlink_metadata(&link).unwrap();
+            assert!(still.file_type().is_symlink(), "{args:?}");
+        }
+    }
+}
