@@ -103,6 +103,9 @@ pub struct Invocation {
     pub config: Option<PathBuf>,
     /// `--set key=value`, in the order given.
     pub sets: Vec<(String, String)>,
+    /// How each of `sets` was typed, in the same order (`-seed 9`,
+    /// `--seed=9`, `--set seed=9`): what a message about one names.
+    pub sets_as_typed: Vec<String>,
     /// `--open FILE`: show a saved heightmap instead of generating.
     pub open: Option<PathBuf>,
     /// The xscreensaver options every hack takes.
@@ -145,10 +148,12 @@ pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
     let mut p = Parser {
         args,
         pos: 0,
+        files: Vec::new(),
         inv: Invocation {
             mode: default_mode(),
             config: None,
             sets: Vec::new(),
+            sets_as_typed: Vec::new(),
             open: None,
             xss: XssOptions::default(),
         },
@@ -256,6 +261,9 @@ fn finish_mode(
 struct Parser<'a> {
     args: &'a [OsString],
     pos: usize,
+    /// Each file flag given so far (by its long name) and how it was typed:
+    /// what a second one of it is refused with.
+    files: Vec<(&'static str, String)>,
     inv: Invocation,
 }
 
@@ -316,6 +324,8 @@ impl Parser<'_> {
         if let Some(mode) = self.windows_flag(arg)? {
             return Ok(Some(mode));
         }
+        // Where `arg` was: with what it takes after it, the option as typed.
+        let from = self.pos - 1;
         // `--seed=5`, and with one dash as xscreensaver's flags are typed
         // (`-seed=5`, `-config=FILE`), as `-seed 5` is taken.
         let (flag, inline) = match arg.split_once('=') {
@@ -354,8 +364,16 @@ impl Parser<'_> {
             f if inline.is_some() && NO_VALUE.contains(&f) => {
                 return Err(UsageError(format!("{f} takes no value")));
             }
-            "--config" => self.inv.config = Some(take(self, "--config")?.into()),
-            "--open" => self.inv.open = Some(take(self, "--open")?.into()),
+            "--config" => {
+                let file = take(self, "--config")?;
+                self.once("--config", "preferences file", self.typed_since(from))?;
+                self.inv.config = Some(file.into());
+            }
+            "--open" => {
+                let file = take(self, "--open")?;
+                self.once("--open", "data set", self.typed_since(from))?;
+                self.inv.open = Some(file.into());
+            }
             "--set" => {
                 let kv = take(self, "--set")?
                     .into_string()
@@ -363,11 +381,13 @@ impl Parser<'_> {
                 let (k, v) = kv
                     .split_once('=')
                     .ok_or_else(|| UsageError(format!("--set {kv}: expected key=value")))?;
-                self.inv
-                    .sets
-                    .push((k.trim().to_string(), v.trim().to_string()));
+                self.push_set((k.trim().to_string(), v.trim().to_string()), from);
             }
-            "-o" | "--output" => *output = Some(take(self, "--output")?.into()),
+            "-o" | "--output" => {
+                let file = take(self, "--output")?;
+                self.once("--output", "output file", self.typed_since(from))?;
+                *output = Some(file.into());
+            }
             "--size" => *size = Some(parse_size(&take(self, "--size")?.to_string_lossy())?),
             "--root" => return Ok(Some(Mode::XRoot)),
             "--window" => return Ok(Some(Mode::Window)),
@@ -439,21 +459,60 @@ impl Parser<'_> {
             // file flags do (`--output=x.png`).
             _ => match inline {
                 Some(v) if key_flags::lookup(&flag).is_some() => {
-                    return self.key_flag_with(&flag, Some(v)).map(|()| None);
+                    return self.key_flag_with(&flag, Some(v), from).map(|()| None);
                 }
-                _ => return self.key_flag(arg).map(|()| None),
+                _ => return self.key_flag(arg, from).map(|()| None),
             },
         }
         Ok(None)
     }
 
-    /// A preference key given as a flag of its own (`-cragginess 40`).
-    fn key_flag(&mut self, arg: &str) -> Result<(), UsageError> {
-        self.key_flag_with(arg, None)
+    /// Records the file flag `long` (naming `what`), typed as `typed`;
+    /// refuses it if it was given before. Last-wins passed the first file
+    /// over in silence (`-o a.png -o b.png` wrote b.png alone), and which
+    /// one was meant is not ours to guess.
+    fn once(&mut self, long: &'static str, what: &str, typed: String) -> Result<(), UsageError> {
+        if let Some((_, first)) = self.files.iter().find(|(flag, _)| *flag == long) {
+            return Err(UsageError(format!(
+                "`{typed}` given after `{first}`: give one {what}"
+            )));
+        }
+        self.files.push((long, typed));
+        Ok(())
+    }
+
+    /// The arguments from `from` to the last one taken, as typed (`-seed
+    /// 9`, `--seed=9`, `-o x.png`), each cut as every echo is: how a
+    /// message names an option.
+    fn typed_since(&self, from: usize) -> String {
+        let taken = &self.args[from..self.pos.min(self.args.len())];
+        let typed: Vec<String> = taken
+            .iter()
+            .map(|a| crate::quote::clipped(&a.to_string_lossy()))
+            .collect();
+        typed.join(" ")
+    }
+
+    /// Adds `kv` to the sets, typed as the arguments from `from` were.
+    fn push_set(&mut self, kv: (String, String), from: usize) {
+        let typed = self.typed_since(from);
+        self.inv.sets.push(kv);
+        self.inv.sets_as_typed.push(typed);
+    }
+
+    /// A preference key given as a flag of its own (`-cragginess 40`),
+    /// typed from the argument at `from`.
+    fn key_flag(&mut self, arg: &str, from: usize) -> Result<(), UsageError> {
+        self.key_flag_with(arg, None, from)
     }
 
     /// As [`Self::key_flag`], the value given inline (`--seed=5`) if `inline`.
-    fn key_flag_with(&mut self, arg: &str, inline: Option<String>) -> Result<(), UsageError> {
+    fn key_flag_with(
+        &mut self,
+        arg: &str,
+        inline: Option<String>,
+        from: usize,
+    ) -> Result<(), UsageError> {
         let (key, own) = key_flags::lookup(arg).ok_or_else(|| unknown_argument(arg))?;
         let kv = match (inline, own) {
             (Some(_), Some(_)) => {
@@ -470,7 +529,7 @@ impl Parser<'_> {
         let mut scratch = crate::settings::Settings::default();
         crate::settings::load::apply_set(&mut scratch, &kv.0, &kv.1)
             .map_err(|problem| UsageError(format!("{arg}: {}", problem.message)))?;
-        self.inv.sets.push(kv);
+        self.push_set(kv, from);
         Ok(())
     }
 

@@ -3,6 +3,7 @@
 use std::path::Path;
 use std::process::ExitCode;
 
+use crate::cli::Invocation;
 use crate::cli::output::{self, Format};
 use crate::console;
 use crate::mountain::Mountain;
@@ -27,17 +28,19 @@ pub fn mountain(settings: &Settings, open: Option<&Path>) -> Result<Mountain, St
     Ok(mountain)
 }
 
-/// Warns of each `--set` (or key flag) in `sets` that `--open` leaves
+/// Warns of each `--set` (or key flag) in `inv` that its `--open` leaves
 /// without effect in `render` and `heightmap`: one that only shapes the
 /// heights a generator makes ([`crate::mountain::HEIGHTS_ONLY`]), where
-/// the heights are the data set's. A preferences file's keys are no
-/// mistake of this run, and are not named.
-pub fn warn_heights_only(sets: &[(String, String)], open: Option<&Path>) {
-    let Some(path) = open else { return };
+/// the heights are the data set's. Each is named as it was typed (`-seed
+/// 9` is no `--set seed=9` to the one who typed it). A preferences file's
+/// keys are no mistake of this run, and are not named.
+pub fn warn_heights_only(inv: &Invocation) {
+    let Some(path) = &inv.open else { return };
     let heights_only = |key: &str| crate::mountain::HEIGHTS_ONLY.iter().any(|k| k.name == key);
-    for (key, value) in sets.iter().filter(|(key, _)| heights_only(key)) {
+    let typed = inv.sets.iter().zip(&inv.sets_as_typed);
+    for (_, typed) in typed.filter(|((key, _), _)| heights_only(key)) {
         console::err(&format!(
-            "mountains: warning: --set {key}={value}: no effect with --open {}: \
+            "mountains: warning: {typed}: no effect with --open {}: \
              the data set's heights are used as they are",
             path.display()
         ));
@@ -46,8 +49,9 @@ pub fn warn_heights_only(sets: &[(String, String)], open: Option<&Path>) {
 
 /// `mountains render`: one complete mountain to a PNG.
 pub fn render(settings: &Settings, open: Option<&Path>, size: Size, output: &Path) -> ExitCode {
-    let refused =
-        refuse_a_terminal(output).or_else(|| refuse_the_data_set(open, output, "picture"));
+    let refused = refuse_a_terminal(output)
+        .or_else(|| refuse_the_data_set(open, output, "picture"))
+        .or_else(|| refuse_a_link_to_nowhere(output));
     if let Some(code) = refused {
         return code;
     }
@@ -104,8 +108,9 @@ fn work_exponent(settings: &Settings, open: Option<&Path>) -> u32 {
 /// `mountains heightmap`: generate a data set and save it as a 16-bit PNG,
 /// or as raw 16-bit samples (`.r16`, `.raw`), whose height range it prints.
 pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> ExitCode {
-    let refused =
-        refuse_a_terminal(output).or_else(|| refuse_the_data_set(open, output, "data set"));
+    let refused = refuse_a_terminal(output)
+        .or_else(|| refuse_the_data_set(open, output, "data set"))
+        .or_else(|| refuse_a_link_to_nowhere(output));
     if let Some(code) = refused {
         return code;
     }
@@ -125,7 +130,7 @@ pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> Exi
     if format == Format::Raw16 {
         let (bytes, q) = heightmap::raw16(&field);
         if let Err(e) = crate::fsutil::write_output_with(output, |w| w.write_all(&bytes)) {
-            return fail(&format!("-o {}: cannot write: {e}", output.display()));
+            return fail(&cannot_write(output, &e));
         }
         let n = field.size();
         let top = heightmap::quantise::MAX_SAMPLE;
@@ -172,6 +177,23 @@ fn refuse_the_data_set(open: Option<&Path>, output: &Path, made: &str) -> Option
     })
 }
 
+/// `-o` through a link to nowhere is refused by the write (see
+/// [`crate::fsutil::write_target`]), but that came once the work was done,
+/// minutes of it for a large picture: it is asked before any, and said
+/// as the write says it (exit 1). `-` is standard output, no file.
+fn refuse_a_link_to_nowhere(output: &Path) -> Option<ExitCode> {
+    if output == Path::new("-") {
+        return None;
+    }
+    let e = crate::fsutil::write_target(output).err()?;
+    Some(fail(&cannot_write(output, &e)))
+}
+
+/// How a file `-o` names that cannot be written is said.
+fn cannot_write(output: &Path, e: &std::io::Error) -> String {
+    format!("-o {}: cannot write: {e}", output.display())
+}
+
 /// Says which seed made the file.
 fn print_seed(seed: Option<u64>, output: &Path) -> std::io::Result<()> {
     let line = match seed {
@@ -203,7 +225,7 @@ fn fail(message: &str) -> ExitCode {
 /// use, which is no mistake) and for the null device (`/dev/null`: no
 /// preferences); 1 for any problem in the file, or a named file missing;
 /// 2 for a bad `--set` (typed for the run, as in every mode), whatever
-/// the file.
+/// the file: then a good file is said to be fine, but not "ok" alone.
 pub fn check_config(
     path: Option<&Path>,
     config: Option<&Path>,
@@ -212,7 +234,7 @@ pub fn check_config(
     // Said first: typed for this run, they are what to mend now, and a
     // file's flood of problems ends in "... and N more".
     let mistyped = report_bad_sets(sets);
-    let checked = check_file(path, config);
+    let checked = check_file(path, config, mistyped);
     if mistyped {
         return ExitCode::from(EXIT_USAGE);
     }
@@ -243,8 +265,13 @@ fn report_bad_sets(sets: &[(String, String)]) -> bool {
 
 /// The file part of [`check_config`]: its problems said, and `Err` with
 /// the exit code when there are any (or the file cannot be checked);
-/// `Ok` with what printing its verdict gave.
-fn check_file(path: Option<&Path>, config: Option<&Path>) -> Result<std::io::Result<()>, ExitCode> {
+/// `Ok` with what printing its verdict gave. `mistyped`: a `--set` given
+/// with it was refused, which the verdict of a good file must not hide.
+fn check_file(
+    path: Option<&Path>,
+    config: Option<&Path>,
+    mistyped: bool,
+) -> Result<std::io::Result<()>, ExitCode> {
     let named = path.or(config).map(Path::to_path_buf);
     let Some(file) = named.clone().or_else(paths::config_file) else {
         return Err(fail(
@@ -283,7 +310,16 @@ fn check_file(path: Option<&Path>, config: Option<&Path>) -> Result<std::io::Res
         return Err(ExitCode::FAILURE);
     }
     warn_of_a_missing_folder(&settings);
-    Ok(console::outln(&format!("{}: ok", file.display())))
+    Ok(console::outln(&verdict(&file, mistyped)))
+}
+
+/// What `--check-config` says of a file without problems. A bare "ok"
+/// beside a refused `--set` (exit 2) read as if all were well.
+fn verdict(file: &Path, mistyped: bool) -> String {
+    match mistyped {
+        false => format!("{}: ok", file.display()),
+        true => format!("{}: the file is ok; a --set is not", file.display()),
+    }
 }
 
 /// Warns when `heightmaps_dir` names no folder: the value is well formed,

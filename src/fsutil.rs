@@ -3,7 +3,7 @@
 
 use std::fs::File;
 use std::io::{self, Read, Write};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 /// The largest preferences file read: a real one is a few KiB; a bigger one
 /// is a mistake (or `/dev/zero`), not something to read into memory.
@@ -126,6 +126,19 @@ pub fn write_atomic_with(
     write_atomic_checked(path, write, || Ok(true)).map(|_| ())
 }
 
+/// The file a write to `path` replaces: a link's target (the link stays),
+/// else `path` itself, there or not yet. A link to nowhere, or round in a
+/// loop, is an error: a file renamed in its place would replace the link.
+/// Nothing is opened (a FIFO's open would wait), so a command can ask
+/// before its work as well as when it writes.
+pub fn write_target(path: &Path) -> io::Result<PathBuf> {
+    match std::fs::canonicalize(path) {
+        Ok(real) => Ok(real),
+        Err(e) if path.is_symlink() => Err(nowhere(path, e)),
+        Err(_) => Ok(path.to_path_buf()),
+    }
+}
+
 /// [`write_atomic_with`], asking `still_wanted` once the new text is on
 /// disk and just before it replaces the old: `Ok(false)` drops the new
 /// file and leaves the old one (the result is then `Ok(false)`). A caller
@@ -137,14 +150,7 @@ pub fn write_atomic_checked(
     write: impl FnOnce(&mut dyn Write) -> io::Result<()>,
     still_wanted: impl FnOnce() -> io::Result<bool>,
 ) -> io::Result<bool> {
-    let target = match std::fs::canonicalize(path) {
-        Ok(real) => real,
-        // A link to nowhere, or round in a loop: the rename would put a
-        // file in place of the link.
-        Err(e) if path.is_symlink() => return Err(nowhere(path, e)),
-        // Not there yet: the name itself.
-        Err(_) => path.to_path_buf(),
-    };
+    let target = write_target(path)?;
     match std::fs::metadata(&target) {
         Ok(m) if m.is_dir() => Err(io::Error::new(
             io::ErrorKind::InvalidInput,

@@ -86,12 +86,12 @@ fn main() -> ExitCode {
     match &inv.mode {
         Mode::Render { size, output } => {
             warn_problems(&loaded);
-            commands::warn_heights_only(&inv.sets, open);
+            commands::warn_heights_only(&inv);
             commands::render(&loaded.settings, open, *size, output)
         }
         Mode::Heightmap { output } => {
             warn_problems(&loaded);
-            commands::warn_heights_only(&inv.sets, open);
+            commands::warn_heights_only(&inv);
             commands::heightmap(&loaded.settings, open, output)
         }
         Mode::Settings { parent } => {

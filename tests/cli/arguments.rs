@@ -464,3 +464,31 @@ fn a_mode_flag_or_file_typed_the_other_way_is_offered_as_meant() {
         );
     }
 }
+
+/// A file flag given twice (`-o a.png -o b.png`, in any of its spellings)
+/// was "last wins": the first file was passed over in silence. It is
+/// refused, naming both as typed; no invocation of ours repeats one.
+#[test]
+fn a_file_flag_given_twice_is_refused_naming_both() {
+    for (args, said) in [
+        (
+            &["render", "-o", "a.png", "-o", "b.png"][..],
+            "`-o b.png` given after `-o a.png`: give one output file",
+        ),
+        (
+            &["render", "--output=a.png", "-o", "a.png"],
+            "`-o a.png` given after `--output=a.png`: give one output file",
+        ),
+        (
+            &["--config", "a.toml", "-config=b.toml", "/s"],
+            "`-config=b.toml` given after `--config a.toml`: give one preferences file",
+        ),
+        (
+            &["--open", "a.png", "--window", "-open", "b.png"],
+            "`-open b.png` given after `--open a.png`: give one data set",
+        ),
+    ] {
+        let e = parse(args).expect_err(&format!("{args:?} should fail"));
+        assert_eq!(e.0, said, "{args:?}");
+    }
+}

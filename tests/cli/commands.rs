@@ -930,7 +930,8 @@ fn open_keeps_the_data_sets_record_and_warns_of_a_set_it_ignores() {
         again,
     ]);
     let err = stderr(&o);
-    for set in ["--set detail=7", "--set seed=9"] {
+    // Each named as typed: `-seed 9` was named `--set seed=9`.
+    for set in ["--set detail=7", "-seed 9"] {
         assert!(
             err.contains(&format!("warning: {set}: no effect with --open")),
             "{err}"
@@ -1007,4 +1008,150 @@ fn a_png_given_as_preferences_is_named_as_one() {
     let err = stderr(&o);
     assert!(err.contains("a PNG image, not text"), "{err}");
     assert!(err.contains("nothing in the file was used"), "{err}");
+}
+
+/// A file flag given twice is a usage error (exit 2) said before any
+/// work: no picture is written to either name.
+#[test]
+fn a_file_flag_given_twice_exits_2_and_writes_nothing() {
+    let dir = scratch("file-flag-twice");
+    let (a, b) = (dir.join("a.png"), dir.join("b.png"));
+    let o = mountains(&[
+        "render",
+        "--size",
+        "8x8",
+        "--set",
+        "detail=4",
+        "-o",
+        &arg(&a),
+        "--output",
+        &arg(&b),
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let first = stderr(&o).lines().next().unwrap_or_default().to_string();
+    let want = format!(
+        "mountains: error: `--output {}` given after `-o {}`: give one output file",
+        arg(&b),
+        arg(&a)
+    );
+    assert_eq!(first, want);
+    assert!(!a.exists() && !b.exists());
+}
+
+/// The warning of a key `--open` leaves without effect names it as it was
+/// typed: `-seed 9` was named `--set seed=9`, a flag the person never gave.
+#[test]
+fn open_names_a_set_it_ignores_as_typed() {
+    let dir = scratch("open-as-typed");
+    let files = ["h.png", "again.png", "r.png"].map(|f| dir.join(f));
+    let [h, again, picture] = files.each_ref().map(|p| p.to_str().unwrap());
+    small_data_set(&files[0]);
+    let o = run(&[
+        "heightmap",
+        "--open",
+        h,
+        "-seed",
+        "9",
+        "--cragginess=40",
+        "--set=detail=6",
+        "-set",
+        "erosion=0",
+        "-o",
+        again,
+    ]);
+    let err = stderr(&o);
+    for typed in [
+        "-seed 9",
+        "--cragginess=40",
+        "--set=detail=6",
+        "-set erosion=0",
+    ] {
+        let warning = format!("mountains: warning: {typed}: no effect with --open {h}");
+        assert!(err.lines().any(|l| l.starts_with(&warning)), "{err}");
+    }
+    assert!(!err.contains("--set seed=9"), "{err}");
+    let o = run(&[
+        "render", "--size", "40x30", "--open", h, "--seed", "9", "-o", picture,
+    ]);
+    let err = stderr(&o);
+    assert!(
+        err.contains("warning: --seed 9: no effect with --open"),
+        "{err}"
+    );
+    assert!(!err.contains("--set seed=9"), "{err}");
+}
+
+/// A good file checked with a bad `--set` is exit 2, and what stdout says
+/// does not contradict it: it printed "good.toml: ok" as if all were
+/// well. It says the file is fine and the `--set` is not.
+#[test]
+fn check_config_with_a_bad_set_says_no_bare_ok() {
+    let dir = scratch("check-config-ok-but");
+    let good = dir.join("good.toml");
+    std::fs::write(&good, "seed = 5\n").unwrap();
+    for args in [
+        vec![
+            "--check-config",
+            good.to_str().unwrap(),
+            "--set",
+            "color=pink",
+        ],
+        vec![
+            "--config",
+            good.to_str().unwrap(),
+            "--check-config",
+            "--set",
+            "color=pink",
+        ],
+    ] {
+        let o = mountains(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains("key `color`"), "{}", stderr(&o));
+        let out = String::from_utf8_lossy(&o.stdout);
+        let said = format!("{}: the file is ok; a --set is not\n", good.display());
+        assert_eq!(out, said, "{args:?}");
+    }
+    let o = run(&[
+        "--check-config",
+        good.to_str().unwrap(),
+        "--set",
+        "color=sonar",
+    ]);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(out, format!("{}: ok\n--set: ok\n", good.display()));
+}
+
+/// `-o` through a link to nowhere is refused (a file renamed in its place
+/// would replace someone's link), and before any work: it was refused only
+/// once the whole picture was drawn or the data set made. With an
+/// `--open` that cannot be read, the link is still what is said: the work
+/// that would fail on the data set is not begun.
+#[cfg(unix)]
+#[test]
+fn a_link_to_nowhere_at_o_is_refused_before_any_work() {
+    let dir = scratch("link-to-nowhere");
+    let missing = arg(&dir.join("missing.png"));
+    for (mode, name) in [
+        (&["render", "--size", "8x8"][..], "p.png"),
+        (&["render", "--size", "8x8"], "p.jpg"),
+        (&["heightmap"], "h.png"),
+        (&["heightmap"], "h.r16"),
+    ] {
+        let (link, target) = (dir.join(name), dir.join("gone").join(name));
+        let _ = std::fs::remove_file(&link);
+        std::os::unix::fs::symlink(&target, &link).unwrap();
+        let link_arg = arg(&link);
+        let want = format!(
+            "mountains: error: -o {link_arg}: cannot write: a link to nowhere (to {})\n",
+            target.display()
+        );
+        for heights in [&["--set", "detail=4"][..], &["--open", &missing]] {
+            let args = [mode, heights, &["-o", &link_arg]].concat();
+            let o = mountains(&args);
+            assert_eq!(o.status.code(), Some(1), "{args:?}: {}", stderr(&o));
+            assert_eq!(stderr(&o), want, "{args:?}");
+            let still = std::fs::symlink_metadata(&link).unwrap();
+            assert!(still.file_type().is_symlink(), "{args:?}");
+        }
+    }
 }
