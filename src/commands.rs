@@ -51,7 +51,7 @@ pub fn warn_heights_only(inv: &Invocation) {
 pub fn render(settings: &Settings, open: Option<&Path>, size: Size, output: &Path) -> ExitCode {
     let refused = refuse_a_terminal(output)
         .or_else(|| refuse_the_data_set(open, output, "picture"))
-        .or_else(|| refuse_a_link_to_nowhere(output));
+        .or_else(|| refuse_an_unwritable_output(output));
     if let Some(code) = refused {
         return code;
     }
@@ -110,7 +110,7 @@ fn work_exponent(settings: &Settings, open: Option<&Path>) -> u32 {
 pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> ExitCode {
     let refused = refuse_a_terminal(output)
         .or_else(|| refuse_the_data_set(open, output, "data set"))
-        .or_else(|| refuse_a_link_to_nowhere(output));
+        .or_else(|| refuse_an_unwritable_output(output));
     if let Some(code) = refused {
         return code;
     }
@@ -177,15 +177,16 @@ fn refuse_the_data_set(open: Option<&Path>, output: &Path, made: &str) -> Option
     })
 }
 
-/// `-o` through a link to nowhere is refused by the write (see
-/// [`crate::fsutil::write_target`]), but that came once the work was done,
-/// minutes of it for a large picture: it is asked before any, and said
-/// as the write says it (exit 1). `-` is standard output, no file.
-fn refuse_a_link_to_nowhere(output: &Path) -> Option<ExitCode> {
+/// An `-o` the write would refuse (a link to nowhere, a folder, a folder
+/// that is not there or takes no file: [`crate::fsutil::writable`]) was
+/// refused once the work was done, minutes of it for a large picture: it
+/// is asked before any, and said as the write says it (exit 1). `-` is
+/// standard output, no file.
+fn refuse_an_unwritable_output(output: &Path) -> Option<ExitCode> {
     if output == Path::new("-") {
         return None;
     }
-    let e = crate::fsutil::write_target(output).err()?;
+    let e = crate::fsutil::writable(output).err()?;
     Some(fail(&cannot_write(output, &e)))
 }
 

@@ -139,6 +139,51 @@ pub fn write_target(path: &Path) -> io::Result<PathBuf> {
     }
 }
 
+/// Whether a write to `path` ([`write_atomic_with`]) can begin: its folder
+/// is there and takes a new file, and `path` is no folder and no link to
+/// nowhere. Asked before a long work (a 4K picture, a large data set), so
+/// a wrong `-o` is said at once rather than after it. The write's own
+/// temporary file is made and removed: the only sure test of leave to
+/// write in a folder. A device or FIFO is not opened (a FIFO's open would
+/// wait for a reader).
+pub fn writable(path: &Path) -> io::Result<()> {
+    let target = write_target(path)?;
+    match std::fs::metadata(&target) {
+        Ok(m) if m.is_dir() => Err(a_folder()),
+        Ok(m) if !m.is_file() => Ok(()),
+        _ => {
+            let tmp = temporary(&target)?;
+            let _pending = partial::Pending::new(&tmp);
+            File::create(&tmp)?;
+            std::fs::remove_file(&tmp)
+        }
+    }
+}
+
+/// The error of a write to a folder.
+fn a_folder() -> io::Error {
+    io::Error::new(io::ErrorKind::InvalidInput, "is a folder, not a file")
+}
+
+/// The temporary file beside `path` that a write fills before renaming
+/// it over `path`: hidden, and this process's own.
+fn temporary(path: &Path) -> io::Result<PathBuf> {
+    let dir = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    let name = path.file_name().ok_or_else(|| {
+        io::Error::new(
+            io::ErrorKind::InvalidInput,
+            format!("{} names no file", path.display()),
+        )
+    })?;
+    let mut tmp_name = std::ffi::OsString::from(".");
+    tmp_name.push(name);
+    tmp_name.push(format!(".{}.tmp", std::process::id()));
+    Ok(dir.join(tmp_name))
+}
+
 /// [`write_atomic_with`], asking `still_wanted` once the new text is on
 /// disk and just before it replaces the old: `Ok(false)` drops the new
 /// file and leaves the old one (the result is then `Ok(false)`). A caller
@@ -152,10 +197,7 @@ pub fn write_atomic_checked(
 ) -> io::Result<bool> {
     let target = write_target(path)?;
     match std::fs::metadata(&target) {
-        Ok(m) if m.is_dir() => Err(io::Error::new(
-            io::ErrorKind::InvalidInput,
-            "is a folder, not a file",
-        )),
+        Ok(m) if m.is_dir() => Err(a_folder()),
         Ok(m) if !m.is_file() => {
             if !still_wanted()? {
                 return Ok(false);
@@ -177,20 +219,7 @@ fn replace_file(
     write: impl FnOnce(&mut dyn Write) -> io::Result<()>,
     still_wanted: impl FnOnce() -> io::Result<bool>,
 ) -> io::Result<bool> {
-    let dir = match path.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p,
-        _ => Path::new("."),
-    };
-    let name = path.file_name().ok_or_else(|| {
-        io::Error::new(
-            io::ErrorKind::InvalidInput,
-            format!("{} names no file", path.display()),
-        )
-    })?;
-    let mut tmp_name = std::ffi::OsString::from(".");
-    tmp_name.push(name);
-    tmp_name.push(format!(".{}.tmp", std::process::id()));
-    let tmp = dir.join(tmp_name);
+    let tmp = temporary(path)?;
     let _pending = partial::Pending::new(&tmp);
     let result = (|| {
         let mut out = io::BufWriter::new(File::create(&tmp)?);

@@ -1121,6 +1121,42 @@ fn check_config_with_a_bad_set_says_no_bare_ok() {
     assert_eq!(out, format!("{}: ok\n--set: ok\n", good.display()));
 }
 
+/// An `-o` the write would refuse, a folder that is not there or a
+/// folder named as the file, is refused before any work, as the write
+/// refuses it (exit 1): it was said only once the picture was drawn or
+/// the data set made. With an `--open` that cannot be read, the `-o` is
+/// still what is said; nothing is left behind.
+#[test]
+fn an_output_the_write_would_refuse_is_refused_before_any_work() {
+    let dir = scratch("unwritable-output");
+    let missing = arg(&dir.join("missing.png"));
+    let folder = dir.join("a-folder.png");
+    std::fs::create_dir_all(&folder).unwrap();
+    let nowhere = dir.join("no-such-folder").join("x.png");
+    for mode in [&["render", "--size", "8x8"][..], &["heightmap"]] {
+        for (out, why) in [(&nowhere, None), (&folder, Some("is a folder, not a file"))] {
+            let out_arg = arg(out);
+            for heights in [&["--set", "detail=4"][..], &["--open", &missing]] {
+                let args = [mode, heights, &["-o", &out_arg]].concat();
+                let o = mountains(&args);
+                assert_eq!(o.status.code(), Some(1), "{args:?}: {}", stderr(&o));
+                let said = format!("mountains: error: -o {out_arg}: cannot write: ");
+                assert!(stderr(&o).starts_with(&said), "{args:?}: {}", stderr(&o));
+                if let Some(why) = why {
+                    assert_eq!(stderr(&o), format!("{said}{why}\n"), "{args:?}");
+                }
+            }
+        }
+    }
+    assert!(folder.is_dir() && !nowhere.parent().unwrap().exists());
+    let left: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .filter(|n| n.to_string_lossy().starts_with('.'))
+        .collect();
+    assert!(left.is_empty(), "left behind: {left:?}");
+}
+
 /// `-o` through a link to nowhere is refused (a file renamed in its place
 /// would replace someone's link), and before any work: it was refused only
 /// once the whole picture was drawn or the data set made. With an
