@@ -78,7 +78,8 @@ impl Aim {
     /// world's camera stands high and looks down into its valleys, where
     /// its lakes lie: the back edge high in the frame and the near half of
     /// the land below it. Each part is drawn from bits of its own. The
-    /// temperate world keeps today's vista.
+    /// temperate world named keeps today's vista (`World::Varied`, the
+    /// temperate coast of the varied draw, draws its own).
     pub fn of(world: World, identity: u64) -> Aim {
         let Some(ranges) = aims(world) else {
             return Aim::ACROSS;

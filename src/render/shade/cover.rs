@@ -597,7 +597,8 @@ fn sun_heights(world: World) -> Option<(f32, f32)> {
 /// `world`: any height in the world's range ([`sun_heights`]), morning or
 /// afternoon, from the viewer's side, and half the low suns ahead (the
 /// land against a glowing sky), so two slides of one world are seldom lit
-/// by one hour (the temperate world's four times light many alike). None
+/// by one hour (the temperate world's four times lit many alike, and
+/// still light it where it is named). None
 /// for the temperate world named.
 pub fn sun(world: World, identity: u64) -> Option<SunAt> {
     let (lo, hi) = sun_heights(world)?;
