@@ -212,7 +212,10 @@ fn one_file_to_check(inv: &Invocation) -> Result<(), UsageError> {
 }
 
 /// The flags that take no value (as they are matched: see `long_name`).
-const NO_VALUE: [&str; 14] = [
+const NO_VALUE: [&str; 17] = [
+    "--version",
+    "-V",
+    "-version",
     "--root",
     "--window",
     "--settings",
@@ -775,6 +778,25 @@ fn parse_size(text: &str) -> Result<Size, UsageError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every flag that is taken with nothing after it refuses a value
+    /// after `=`, in either spelling (`--version=3` was taken as
+    /// `--version`, its `3` dropped): [`NO_VALUE`] holds them all. Only
+    /// `--check-config`'s file may be left out or given.
+    #[test]
+    fn a_flag_taken_without_a_value_refuses_one() {
+        let parse = |args: &[String]| parse(&args.iter().map(OsString::from).collect::<Vec<_>>());
+        for name in FLAGS.iter().filter(|&&n| n != "check-config") {
+            for dashes in ["--", "-"] {
+                let bare = format!("{dashes}{name}");
+                if parse(std::slice::from_ref(&bare)).is_err() {
+                    continue;
+                }
+                let given = parse(&[format!("{bare}=3")]);
+                assert!(given.is_err(), "{bare}=3 was taken");
+            }
+        }
+    }
 
     /// `--help` names every screen `--size` takes by name.
     #[test]
