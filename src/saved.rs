@@ -23,15 +23,17 @@ fn stem_at(when: &str, seed: Option<u64>) -> String {
     }
 }
 
-/// A path in `dir` for `stem` + `suffix` (e.g. `.png`) that names no
-/// existing file: `stem.png`, else `stem-2.png`, `stem-3.png` ...
+/// A path in `dir` for `stem` + `suffix` (e.g. `.png`) that names
+/// nothing there, a link to nowhere included (`fsutil::taken`: a save
+/// refuses to write through one): `stem.png`, else `stem-2.png`,
+/// `stem-3.png` ...
 pub fn free_path(dir: &Path, stem: &str, suffix: &str) -> Option<PathBuf> {
     (1..100)
         .map(|n| match n {
             1 => dir.join(format!("{stem}{suffix}")),
             n => dir.join(format!("{stem}-{n}{suffix}")),
         })
-        .find(|p| !p.exists())
+        .find(|p| !crate::fsutil::taken(p))
 }
 
 /// A new file name in `dir` (created if missing) for something saved now.
@@ -129,6 +131,20 @@ mod tests {
         assert_eq!(folders(None, Some("~/maps")), [home.join("maps")]);
         assert_eq!(folders(None, Some("a~/b")), [PathBuf::from("a~/b")]);
         assert_eq!(folders(None, Some("~user/b")), [PathBuf::from("~user/b")]);
+    }
+
+    #[test]
+    fn a_link_to_nowhere_is_no_free_name() {
+        let dir = std::env::temp_dir().join(format!("mountains-free-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let link = dir.join("m.png");
+        let _ = std::fs::remove_file(&link);
+        #[cfg(unix)]
+        std::os::unix::fs::symlink(dir.join("gone").join("m.png"), &link).unwrap();
+        #[cfg(not(unix))]
+        std::fs::write(&link, b"").unwrap();
+        assert_eq!(free_path(&dir, "m", ".png"), Some(dir.join("m-2.png")));
+        let _ = std::fs::remove_dir_all(&dir);
     }
 
     #[test]
