@@ -217,9 +217,10 @@ impl Sky {
     pub(crate) fn colour_seen<'s>(&'s self, x: u32, y: u32, seen: &mut SkySeen<'s>) -> u32 {
         let c = self.gradient_seen(x, y, seen);
         let (px, py) = (x as f32 + 0.5, y as f32 + 0.5);
+        let cover = self.weather.as_ref().map_or(0.0, |w| w.disc_cover(px, py));
         let c = match &self.weather {
-            Some(w) if w.disc_covers(px, py) => {
-                crate::render::base::colour::to_u32(w.disc_over(unpack(c), px, py))
+            Some(w) if cover > 0.0 => {
+                crate::render::base::colour::to_u32(w.disc_over(unpack(c), px, py, cover))
             }
             _ => c,
         };
@@ -235,7 +236,8 @@ impl Sky {
         lit(r, star[0]) << 16 | lit(g, star[1]) << 8 | lit(b, star[2])
     }
 
-    /// [`Sky::colour_seen`] without the stars.
+    /// [`Sky::colour_seen`] without the stars and the light's disc: the
+    /// weather's every few columns, blended.
     fn gradient_seen<'s>(&'s self, x: u32, y: u32, seen: &mut SkySeen<'s>) -> u32 {
         let Some(w) = &self.weather else {
             let phases = match seen.phases {

@@ -251,7 +251,7 @@ impl Weather {
     /// and of the light's disc (0..=1): where the stars show (a rising
     /// moon's glow washes them out round it).
     pub(crate) fn clear_at(&self, x: f32, y: f32) -> f32 {
-        if self.disc_covers(x, y) {
+        if self.disc_cover(x, y) > 0.0 {
             return 0.0;
         }
         let washed = match (self.rising && self.glows, self.view.sight(x, y)) {
@@ -272,25 +272,22 @@ impl Weather {
     }
 
     /// The sky's colour `c` (its gradient, glow and cloud) at screen point
-    /// (`x`, `y`) with the light's disc over it where it shows, behind the
-    /// cloud there, its edge drawn across a pixel.
-    pub(crate) fn disc_over(&self, c: Rgb, x: f32, y: f32) -> Rgb {
-        let Some(disc) = &self.disc else {
+    /// (`x`, `y`), of which the light's disc covers `cover`
+    /// ([`Weather::disc_cover`]), with the disc over it, behind the cloud
+    /// there.
+    pub(crate) fn disc_over(&self, c: Rgb, x: f32, y: f32, cover: f32) -> Rgb {
+        let Some(disc) = self.disc.filter(|_| cover > 0.0) else {
             return c;
         };
-        let cover = disc.cover(x, y);
-        if cover <= 0.0 {
-            return c;
-        }
         let lit = mix(c, disc.colour_at(x, y), 0.9);
         let top = [0, 1, 2].map(|i| lit[i].max(c[i]));
         mix(c, top, cover * self.cloud_clear(x, y))
     }
 
-    /// Whether the light's disc covers any of the pixel round screen point
-    /// (`x`, `y`).
-    pub(crate) fn disc_covers(&self, x: f32, y: f32) -> bool {
-        self.disc.is_some_and(|d| d.cover(x, y) > 0.0)
+    /// How much of the pixel round screen point (`x`, `y`) the light's
+    /// disc covers: 0 without one, its edge across a pixel.
+    pub(crate) fn disc_cover(&self, x: f32, y: f32) -> f32 {
+        self.disc.map_or(0.0, |d| d.cover(x, y))
     }
 
     /// The pixels (columns and rows, each from and to) where the light's
@@ -314,7 +311,8 @@ impl WeatherRow<'_> {
     /// weather over it, the light's disc included.
     pub(crate) fn over(&self, gradient: Rgb, x: f32) -> Rgb {
         let c = self.over_sky(gradient, x);
-        self.weather.disc_over(c, x, self.y)
+        let cover = self.weather.disc_cover(x, self.y);
+        self.weather.disc_over(c, x, self.y, cover)
     }
 
     /// [`WeatherRow::over`] without the light's disc: what varies little
@@ -410,6 +408,11 @@ impl Disc {
     /// How much of the pixel around screen point (`x`, `y`) the disc
     /// covers: 1 within, 0 outside, the share of a pixel across its edge.
     fn cover(&self, x: f32, y: f32) -> f32 {
+        let reach = self.radius + 0.5;
+        // Most asking pixels lie far off: no root for them.
+        if (x - self.centre.x).abs() > reach || (y - self.centre.y).abs() > reach {
+            return 0.0;
+        }
         let d = Vec2::new(x, y).distance(self.centre);
         (self.radius + 0.5 - d).clamp(0.0, 1.0)
     }
@@ -519,7 +522,7 @@ mod tests {
         let disc = w.disc.expect("the moon's disc");
         let (c, r) = (disc.centre, disc.radius);
         assert!(r > 1.0 && r < 20.0, "radius {r} px");
-        assert!(w.disc_covers(c.x, c.y) && w.clear_at(c.x, c.y) == 0.0);
+        assert!(w.disc_cover(c.x, c.y) == 1.0 && w.clear_at(c.x, c.y) == 0.0);
         let near = w.clear_at(c.x + 2.0 * r, c.y);
         assert!(near > 0.0 && near < 1.0, "beside the moon: {near}");
         assert_eq!(w.clear_at(c.x + 400.0, c.y - 150.0), 1.0);

@@ -491,9 +491,10 @@ mod tests {
             .collect();
         let meta = parse(&written, Path::new("x.png")).unwrap();
         assert_eq!(meta.seed, Some(42));
-        // The world recorded is the one drawn for the seed, not "varied".
+        // The world recorded is the one drawn for the seed (42's desert,
+        // not "varied", which stands for a temperate coast only).
         let made = Settings {
-            world: worlds::chosen(&s, Some(42)),
+            world: worlds::drawn_world(&s, Some(42)),
             ..s.clone()
         };
         assert_ne!(made.world, World::Varied);
