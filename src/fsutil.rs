@@ -5,6 +5,11 @@ use std::fs::File;
 use std::io::{self, Read, Write};
 use std::path::{Path, PathBuf};
 
+/// The eight bytes every PNG file begins with: how a file read as one
+/// thing (a preferences file) is known to be an image (a data set), and
+/// how a data set is known at all.
+pub const PNG_SIGNATURE: [u8; 8] = [0x89, b'P', b'N', b'G', b'\r', b'\n', 0x1a, b'\n'];
+
 /// The largest preferences file read: a real one is a few KiB; a bigger one
 /// is a mistake (or `/dev/zero`), not something to read into memory.
 pub const MAX_PREFERENCES_BYTES: u64 = 4 << 20;

@@ -47,7 +47,7 @@ const A_PNG: &str = "a PNG image, not text (a data set is opened with --open FIL
 
 /// The text of a preferences file's `bytes`, and its form.
 pub fn decode(mut bytes: Vec<u8>) -> Result<(String, Form), NotText> {
-    if bytes.starts_with(&crate::terrain::heightmap::PNG_SIGNATURE) {
+    if bytes.starts_with(&crate::fsutil::PNG_SIGNATURE) {
         return Err(not_text("", A_PNG));
     }
     let form = match bytes.as_slice() {

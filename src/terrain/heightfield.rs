@@ -17,19 +17,6 @@ pub const COARSENED_LEAST_EXPONENT: u32 = 4;
 /// (see [`Heightfield::drawn`]).
 pub const MAX_DRAWN_RELIEF: f32 = 2.0;
 
-/// The eight neighbours of a grid point as (column, row) steps, in place
-/// order: the order the lakes' steps and the rain's sharing read them in.
-pub(crate) const NEIGHBOURS: [(isize, isize); 8] = [
-    (-1, -1),
-    (0, -1),
-    (1, -1),
-    (-1, 0),
-    (1, 0),
-    (-1, 1),
-    (0, 1),
-    (1, 1),
-];
-
 /// A square grid of `2^n + 1` points a side of `f32` elevations, sea level at 0.
 ///
 /// Row `y` runs from the back of the mountain (`y = 0`) to the front

@@ -9,6 +9,7 @@ mod fft;
 pub mod heightfield;
 pub mod heightmap;
 pub mod lakes;
+pub(crate) mod neighbours;
 pub(crate) mod noise;
 mod normalize;
 mod params;

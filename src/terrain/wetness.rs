@@ -16,7 +16,7 @@
 use super::Heightfield;
 use super::SHARED_EXPONENT;
 use super::curves::smoothstep;
-use super::heightfield::NEIGHBOURS;
+use super::neighbours::NEIGHBOURS;
 
 /// The wetness of most of a mountain's slopes: neither a ridge (0) nor a
 /// stream (1). What the cover is drawn with where no map is at hand.

@@ -14,6 +14,7 @@ use png::{BitDepth, ColorType, Decoder, DecodingError, Limits, Transformations};
 
 use super::error::{ErrorKind, HeightmapError};
 use super::fit::{Fit, Resampler};
+use crate::fsutil::PNG_SIGNATURE as SIGNATURE;
 
 /// Largest width or height of a PNG we open.
 pub const MAX_SOURCE_SIDE: u32 = 16384;
@@ -29,8 +30,6 @@ const TEXT_LIMIT: usize = 4096;
 const OUR_PREFIX: &str = "mountains:";
 /// Most bytes one byte of deflate data can expand to (with a safety margin).
 const MAX_DEFLATE_RATIO: u64 = 1100;
-/// The eight bytes every PNG file begins with.
-pub const SIGNATURE: [u8; 8] = [0x89, b'P', b'N', b'G', b'\r', b'\n', 0x1a, b'\n'];
 
 /// A decoded image: the fitted grid in sample units and its text chunks.
 pub struct RawGrid {

@@ -40,7 +40,7 @@ pub mod soften;
 use std::io::Read;
 use std::path::Path;
 
-pub use decode::{MAX_SOURCE_SIDE, MIN_SOURCE_SIDE, SIGNATURE as PNG_SIGNATURE};
+pub use decode::{MAX_SOURCE_SIDE, MIN_SOURCE_SIDE};
 pub use encode::encode;
 pub use error::{ErrorKind, HeightmapError};
 pub use fit::{Fit, FitMethod};

@@ -1,7 +1,7 @@
 //! A point's neighbours on the square grid the lakes are found on, and
 //! which points are land.
 
-use crate::terrain::heightfield::NEIGHBOURS;
+use crate::terrain::neighbours::NEIGHBOURS;
 
 /// Whether height `h` is land: above sea level (NaN, no data, is not).
 /// Water leaves the field wherever it reaches a point that is not.
