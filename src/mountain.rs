@@ -90,33 +90,21 @@ impl Mountain {
     /// detail is always the grid's own (`--set detail=5` recorded on a grid
     /// of another size would be false).
     pub fn saved_with(&self, prefs: &Settings) -> Settings {
-        let opened = (!self.generated).then_some(self.recorded.as_ref());
-        Mountain::saved_under(opened, &self.field, prefs)
-    }
-
-    /// [`Mountain::saved_with`] for those that keep only the heights and
-    /// what their file recorded: `opened` is `Some` (with that record) for
-    /// heights read from a file.
-    pub fn saved_under(
-        opened: Option<Option<&GeneratorParams>>,
-        field: &Heightfield,
-        prefs: &Settings,
-    ) -> Settings {
-        let mut saved = match opened {
-            None => prefs.clone(),
-            Some(recorded) => {
+        let mut saved = match self.generated {
+            true => prefs.clone(),
+            false => {
                 let mut made = prefs.clone();
                 let defaults = Settings::default();
                 for key in HEIGHTS_ONLY {
                     keys::copy(key, &defaults, &mut made);
                 }
-                Mountain::drawn_under(recorded, &made)
+                Mountain::drawn_under(self.recorded.as_ref(), &made)
             }
         };
         // The grid may not be the one the settings say: a 9x9 set is read
         // fitted to 17x17, "auto" fits a window, a preview is smaller.
         // `low_detail` is kept as it is: it draws the wireframe's cells.
-        let exponent = field.exponent();
+        let exponent = self.field.exponent();
         if saved.grid_exponent() != exponent {
             saved.detail = Detail::Level(saved.detail_for_grid(exponent));
         }
@@ -216,7 +204,14 @@ mod tests {
             low_detail: true,
             ..small()
         };
-        let saved = Mountain::saved_under(Some(None), &field, &low);
+        // A data set read from a file that records no keys.
+        let opened = Mountain {
+            field: Arc::new(field),
+            seed: None,
+            generated: false,
+            recorded: None,
+        };
+        let saved = opened.saved_with(&low);
         assert!(saved.low_detail);
         assert_eq!(
             saved.detail,

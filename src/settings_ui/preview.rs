@@ -2,13 +2,11 @@
 //! picture, remade or repainted as the settings change. No window here.
 
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
 
 use crate::mountain::Mountain;
 use crate::render::{Frame, Painter, Size};
 use crate::settings::{Detail, Settings};
 use crate::terrain::Heightfield;
-use crate::terrain::heightmap::GeneratorParams;
 
 /// The preview never generates more than 2^9+1 points a side: the picture is
 /// a few hundred pixels wide, so more detail would only cost time.
@@ -20,13 +18,10 @@ const FRAMES_PER_MOUNTAIN: usize = 20;
 
 /// What the preview shows and how far it has drawn it.
 pub struct Preview {
-    field: Option<Arc<Heightfield>>,
-    /// The seed of the mountain shown, when it was generated or its file says.
-    pub seed: Option<u64>,
+    /// The mountain shown, generated here or read from a data set.
+    mountain: Option<Mountain>,
     /// The data set file shown, when it came from one.
     pub file: Option<PathBuf>,
-    /// What that file recorded (see `Mountain::recorded`).
-    recorded: Option<GeneratorParams>,
     painter: Option<Painter>,
     picture: Option<Frame>,
 }
@@ -41,13 +36,17 @@ impl Preview {
     /// An empty preview.
     pub fn new() -> Preview {
         Preview {
-            field: None,
-            seed: None,
+            mountain: None,
             file: None,
-            recorded: None,
             painter: None,
             picture: None,
         }
+    }
+
+    /// The seed of the mountain shown, when it was generated or its file
+    /// says.
+    pub fn seed(&self) -> Option<u64> {
+        self.mountain.as_ref().and_then(|m| m.seed)
     }
 
     /// The settings the preview generates with: the screen's, with the
@@ -63,17 +62,15 @@ impl Preview {
     /// A new mountain from `seed` under `settings`.
     pub fn generate(&mut self, settings: &Settings, seed: u64, size: Size) {
         let made = Mountain::from_seed(&Self::preview_settings(settings, size), seed);
-        self.field = Some(made.field);
-        self.seed = made.seed;
+        self.mountain = Some(made);
         self.file = None;
-        self.recorded = None;
         self.repaint(settings, size);
     }
 
     /// The same mountain made again (same seed) under new settings; a data
     /// set from a file is only repainted.
     pub fn regenerate(&mut self, settings: &Settings, size: Size) {
-        match (self.seed, &self.file) {
+        match (self.seed(), &self.file) {
             (Some(seed), None) => self.generate(settings, seed, size),
             _ => self.repaint(settings, size),
         }
@@ -82,36 +79,27 @@ impl Preview {
     /// Shows a data set from disk.
     pub fn open(&mut self, path: &Path, settings: &Settings, size: Size) -> Result<(), String> {
         let (opened, _notes) = Mountain::open(path)?;
-        self.field = Some(opened.field);
-        self.seed = opened.seed;
+        self.mountain = Some(opened);
         self.file = Some(path.to_path_buf());
-        self.recorded = opened.recorded;
         self.repaint(settings, size);
         Ok(())
     }
 
     /// Starts drawing the current mountain again, from the back.
     pub fn repaint(&mut self, settings: &Settings, size: Size) {
-        let drawn = self.drawn_with(settings);
-        self.painter = self
-            .field
-            .as_ref()
-            .map(|f| Painter::at_hour(f.clone(), &drawn, size, crate::solar::now_for(&drawn)));
+        self.painter = self.mountain.as_ref().map(|m| {
+            let drawn = m.drawn_with(settings);
+            Painter::at_hour(m.field.clone(), &drawn, size, crate::solar::now_for(&drawn))
+        });
         self.picture = Frame::new(size.width, size.height);
     }
 
-    /// The settings the mountain shown is drawn with under the screen's
-    /// `settings`: for a data set, with the keys its file recorded (see
-    /// `Mountain::drawn_with`).
-    pub fn drawn_with(&self, settings: &Settings) -> Settings {
-        Mountain::drawn_under(self.recorded.as_ref(), settings)
-    }
-
-    /// What a data set of the mountain shown records under `settings`
-    /// (see `Mountain::saved_with`).
-    pub fn saved_with(&self, field: &Heightfield, settings: &Settings) -> Settings {
-        let opened = self.file.is_some().then_some(self.recorded.as_ref());
-        Mountain::saved_under(opened, field, settings)
+    /// What a data set of the mountain shown records under the screen's
+    /// `settings` (see `Mountain::saved_with`), and its heights; `None`
+    /// before there is a mountain.
+    pub fn to_save(&self, settings: &Settings) -> Option<(&Heightfield, Settings)> {
+        let m = self.mountain.as_ref()?;
+        Some((&m.field, m.saved_with(settings)))
     }
 
     /// Draws the next few strips; true while more remain.
@@ -129,14 +117,9 @@ impl Preview {
         self.picture.as_ref()
     }
 
-    /// The heights shown, for saving as a data set.
-    pub fn field(&self) -> Option<&Heightfield> {
-        self.field.as_deref()
-    }
-
     /// One line saying what the preview shows.
     pub fn caption(&self) -> String {
-        match (&self.file, self.seed) {
+        match (&self.file, self.seed()) {
             (Some(f), _) => {
                 let name = f.file_name().map_or_else(
                     || f.display().to_string(),

@@ -101,7 +101,7 @@ impl Screen {
         let seed = self.model.settings.next_seed();
         self.preview
             .generate(&self.model.settings, seed, self.preview_size());
-        self.model.preview_seed = self.preview.seed;
+        self.model.preview_seed = self.preview.seed();
     }
 
     /// Handles one input and carries out what it asks for.
@@ -162,7 +162,7 @@ impl Screen {
         let size = self.preview_size();
         match self.preview.open(path, &self.model.settings, size) {
             Ok(()) => {
-                self.model.preview_seed = self.preview.seed;
+                self.model.preview_seed = self.preview.seed();
                 self.model.message = format!("Opened {}.", path.display());
             }
             Err(e) => self.model.message = format!("Cannot open: {e}"),
@@ -170,19 +170,16 @@ impl Screen {
     }
 
     fn save_data_set(&mut self) {
-        let (Some(field), Some(dir)) = (self.preview.field(), self.data_dir.as_deref()) else {
+        let to_save = self.preview.to_save(&self.model.settings);
+        let (Some((field, saved)), Some(dir)) = (to_save, self.data_dir.as_deref()) else {
             self.model.message = "Nothing to save, or no data directory.".into();
             return;
         };
-        self.model.message = match crate::saved::save_data_set(
-            dir,
-            field,
-            self.preview.seed,
-            &self.preview.saved_with(field, &self.model.settings),
-        ) {
-            Ok(path) => format!("Saved {}.", path.display()),
-            Err(e) => format!("Cannot save the data set: {e}"),
-        };
+        self.model.message =
+            match crate::saved::save_data_set(dir, field, self.preview.seed(), &saved) {
+                Ok(path) => format!("Saved {}.", path.display()),
+                Err(e) => format!("Cannot save the data set: {e}"),
+            };
     }
 
     fn edit_file(&mut self) {
