@@ -245,53 +245,21 @@ impl<'a> Scene<'a> {
         let settings = &worlds::drawn(settings, field.seed());
         let style = Style::of(settings.color);
         let (field, square, outline) = laid_out(field, settings, frame);
-        let lighting = Palette::lighting_at(settings, &field, hour);
-        let shaded = style.is_filled();
-        let wants_sky = style == Style::Shaded && !lighting.classic;
-        let light = lighting.sun;
-        // Four parts, two to a thread, or each on its own with four cores:
-        // the frame's serial start (the shadow sweep, the sky's sweeps, the
-        // view's fit, the palette's tables), paired so the two threads
-        // carry about the same; three threads on two cores would only
-        // take turns.
-        let wide = crate::cores::cores() >= 4;
-        let (((row_top, view, rows), skylight), (shadow, palette)) = both(
-            || {
-                both_if(
-                    wide,
-                    || framed(&field, settings, (shaded, square), frame),
-                    || wants_sky.then(|| SkyLight::new(&field)),
-                )
-            },
-            || {
-                both_if(
-                    wide,
-                    || (shaded && settings.shadows).then(|| shadow::cast(&field, light)),
-                    || Palette::lit_by(settings, &field, lighting),
-                )
-            },
-        );
+        let Start {
+            row_top,
+            view,
+            rows,
+            skylight,
+            shadow,
+            palette,
+        } = Start::of(&field, settings, (style, square), frame, hour);
         let size = field.size();
         let wetness = palette.follows_water().then(|| Wetness::of(&field));
-        let sky = backdrop(&palette, &view, style, frame.height);
-        // The seed programs' looks have no air.
-        let haze = (style == Style::Shaded
-            && settings.view != ViewKind::Oblique
-            && settings.look == Look::Ours)
-            .then(|| Haze::new(palette.sky().1, palette.haze()));
-        let ripples = (haze.is_some() && !palette.lighting().classic)
-            .then(|| Ripples::new(palette.sky().1, &field));
-        // The looks with depth in colour; the classic looks and the seed
-        // programs' keep their pixels.
-        let clean_edges = style == Style::Shaded
-            && settings.view != ViewKind::Oblique
-            && !palette.lighting().classic
-            && settings.look == Look::Ours;
-        let smooth = clean_edges && settings.shading == Shading::Smooth;
-        let reflections = settings.reflections && ripples.is_some();
+        let depth = Depth::of(settings, style, &palette, &field);
+        let smooth = depth.smooth;
         let steep_ref = palette.steep_reference();
-        let normals =
-            (smooth || reflections).then(|| Normals::new(size, &rows, view.cell(), steep_ref));
+        let normals = (smooth || depth.reflections)
+            .then(|| Normals::new(size, &rows, view.cell(), steep_ref));
         // The terraces' beds are level; others dip and fold.
         let strata = smooth.then(|| {
             let level = settings.cliffs > 0.0;
@@ -301,54 +269,22 @@ impl<'a> Scene<'a> {
             .then(|| Relief::new(&field, field.identity(), palette.light(), view.cell()));
         let eye = view.camera_ground().filter(|_| smooth);
         let cells = size - 1;
-        // The weather is the ripples' kind of look: the shaded views with depth.
-        let sky = match ripples.is_some() {
-            true => {
-                let w = weather(&palette, &view, settings, &field, &sky, frame);
-                let night = palette.lighting().night;
-                let stars = Stars::new(frame.height, sky.horizon_row(), night, field.identity());
-                sky.with_weather(w).with_stars(stars)
-            }
-            false => sky,
-        };
-        let mirror = view.eye().filter(|_| reflections).and_then(|eye| {
+        let sky = sky_of(&palette, &view, settings, &field, (style, &depth), frame);
+        let mirror = view.eye().filter(|_| depth.reflections).and_then(|eye| {
             let light = palette.lighting();
             Mirror::new(&field, eye, view.cell(), light.sun, light.glints)
         });
-        let lakes = shaded && field.lakes().is_some();
-        let (split, sees_right, sees_front) = match view.camera_column() {
-            Some(cx) => {
-                let split = cx.floor().clamp(0.0, cells as f32) as usize;
-                // The essay draws the surface alone.
-                let sides = settings.look != Look::Essay;
-                (split, sides && cx > cells as f32, sides)
-            }
-            // Seed 000's listing cuts no sides: below its front edge is
-            // the black window.
-            None if settings.look == Look::FractalMountainClimbing => (cells, false, false),
-            None => (cells, true, true),
-        };
-        let listing_diagonal = view.camera_column().is_none();
-        let listing_cuts = listing_diagonal && settings.look == Look::FractalMountainClimbing;
-        let mono_floor = if settings.look == Look::FractalMountainClimbing {
-            0
-        } else {
-            dither::FACE_FLOOR
-        };
-        let normal_shear = if palette.lighting().classic {
-            view.shear()
-        } else {
-            0.0
-        };
+        let lakes = style.is_filled() && field.lakes().is_some();
+        let sides = Sides::of(settings, &view, &palette, cells);
         // A dry basin's sand and salt take no wind streaks (the weather
         // above was chosen with them).
-        let ripples = ripples.filter(|_| !palette.dry_basin());
+        let ripples = depth.ripples.filter(|_| !palette.dry_basin());
         Scene {
             field,
             view,
             palette,
             sky,
-            haze,
+            haze: depth.haze,
             ripples,
             shadow,
             skylight,
@@ -361,18 +297,18 @@ impl<'a> Scene<'a> {
             frame_step: frame.width as f32 / cells.max(1) as f32,
             eye,
             style,
-            clean_edges,
-            split,
+            clean_edges: depth.clean_edges,
+            split: sides.split,
             row_top,
             rows,
             lakes,
             outline,
-            normal_shear,
-            listing_diagonal,
-            listing_cuts,
-            mono_floor,
-            sees_right,
-            sees_front,
+            normal_shear: sides.normal_shear,
+            listing_diagonal: sides.listing_diagonal,
+            listing_cuts: sides.listing_cuts,
+            mono_floor: sides.mono_floor,
+            sees_right: sides.sees_right,
+            sees_front: sides.sees_front,
         }
     }
 
@@ -662,6 +598,161 @@ impl<'a> Scene<'a> {
             return (i64::MIN, i64::MAX);
         }
         (lo.floor() as i64 - 1, hi.ceil() as i64 + 1)
+    }
+}
+
+/// The frame's serial start: the view fitted and the rows kept, the
+/// shadow swept, the sky light and the palette's tables, before any strip
+/// is drawn.
+struct Start {
+    row_top: RowTops,
+    view: View,
+    rows: Vec<usize>,
+    skylight: Option<SkyLight>,
+    shadow: Option<ShadowMap>,
+    palette: Palette,
+}
+
+impl Start {
+    /// The start of drawing `field` under `settings` in `style` (the
+    /// essay's `square`, if any) into a frame of `frame` size, lit at
+    /// `hour`.
+    fn of(
+        field: &Heightfield,
+        settings: &Settings,
+        (style, square): (Style, Option<easel::Square>),
+        frame: Size,
+        hour: Option<SunAt>,
+    ) -> Start {
+        let lighting = Palette::lighting_at(settings, field, hour);
+        let shaded = style.is_filled();
+        let wants_sky = style == Style::Shaded && !lighting.classic;
+        let light = lighting.sun;
+        // Four parts, two to a thread, or each on its own with four cores,
+        // paired so the two threads carry about the same; three threads on
+        // two cores would only take turns.
+        let wide = crate::cores::cores() >= 4;
+        let (((row_top, view, rows), skylight), (shadow, palette)) = both(
+            || {
+                both_if(
+                    wide,
+                    || framed(field, settings, (shaded, square), frame),
+                    || wants_sky.then(|| SkyLight::new(field)),
+                )
+            },
+            || {
+                both_if(
+                    wide,
+                    || (shaded && settings.shadows).then(|| shadow::cast(field, light)),
+                    || Palette::lit_by(settings, field, lighting),
+                )
+            },
+        );
+        Start {
+            row_top,
+            view,
+            rows,
+            skylight,
+            shadow,
+            palette,
+        }
+    }
+}
+
+/// What the shaded looks with depth add to the picture (the seed
+/// programs' looks, the oblique view and the classic light keep their
+/// pixels): the air, the wind on the water, clean edges, smooth land and
+/// the water's mirror.
+struct Depth {
+    haze: Option<Haze>,
+    ripples: Option<Ripples>,
+    clean_edges: bool,
+    smooth: bool,
+    reflections: bool,
+}
+
+impl Depth {
+    /// What `settings` in `style` and the `palette` lit for `field` draw.
+    fn of(settings: &Settings, style: Style, palette: &Palette, field: &Heightfield) -> Depth {
+        let ours = style == Style::Shaded
+            && settings.view != ViewKind::Oblique
+            && settings.look == Look::Ours;
+        let haze = ours.then(|| Haze::new(palette.sky().1, palette.haze()));
+        let classic = palette.lighting().classic;
+        let ripples = (ours && !classic).then(|| Ripples::new(palette.sky().1, field));
+        let clean_edges = ours && !classic;
+        Depth {
+            smooth: clean_edges && settings.shading == Shading::Smooth,
+            reflections: settings.reflections && ripples.is_some(),
+            haze,
+            ripples,
+            clean_edges,
+        }
+    }
+}
+
+/// The sky behind the land: with the weather and the stars where the
+/// water has its wind (the shaded views with depth).
+fn sky_of(
+    palette: &Palette,
+    view: &View,
+    settings: &Settings,
+    field: &Heightfield,
+    (style, depth): (Style, &Depth),
+    frame: Size,
+) -> Sky {
+    let sky = backdrop(palette, view, style, frame.height);
+    if depth.ripples.is_none() {
+        return sky;
+    }
+    let w = weather(palette, view, settings, field, &sky, frame);
+    let night = palette.lighting().night;
+    let stars = Stars::new(frame.height, sky.horizon_row(), night, field.identity());
+    sky.with_weather(w).with_stars(stars)
+}
+
+/// How the cells of a row are ordered and cut, and what the classic views
+/// and the seed programs' looks keep of their own (see the [`Scene`]
+/// fields of the same names).
+struct Sides {
+    split: usize,
+    sees_right: bool,
+    sees_front: bool,
+    listing_diagonal: bool,
+    listing_cuts: bool,
+    mono_floor: u8,
+    normal_shear: f32,
+}
+
+impl Sides {
+    /// The sides of a grid `cells` wide seen in `view` under `settings`.
+    fn of(settings: &Settings, view: &View, palette: &Palette, cells: usize) -> Sides {
+        let listing = settings.look == Look::FractalMountainClimbing;
+        let (split, sees_right, sees_front) = match view.camera_column() {
+            Some(cx) => {
+                let split = cx.floor().clamp(0.0, cells as f32) as usize;
+                // The essay draws the surface alone.
+                let sides = settings.look != Look::Essay;
+                (split, sides && cx > cells as f32, sides)
+            }
+            // Seed 000's listing cuts no sides: below its front edge is
+            // the black window.
+            None if listing => (cells, false, false),
+            None => (cells, true, true),
+        };
+        let listing_diagonal = view.camera_column().is_none();
+        Sides {
+            split,
+            sees_right,
+            sees_front,
+            listing_diagonal,
+            listing_cuts: listing_diagonal && listing,
+            mono_floor: if listing { 0 } else { dither::FACE_FLOOR },
+            normal_shear: match palette.lighting().classic {
+                true => view.shear(),
+                false => 0.0,
+            },
+        }
     }
 }
 
