@@ -74,6 +74,47 @@ pub(crate) struct Weather {
     shade: Rgb,
 }
 
+/// Whether the glow round the sun at unit vector `sun` (y to the back)
+/// can reach a frame of size `frame` seen through `view`: the sun less
+/// than the glow's reach beyond the frame's farthest corner from its
+/// centre. `None` for a view without a camera.
+fn glow_reaches_frame(view: &View, frame: Vec2, sun: Vec3) -> Option<bool> {
+    let centre = view.sight(frame.x * 0.5, frame.y * 0.5)?;
+    let corners = [
+        (0.0, 0.0),
+        (frame.x, 0.0),
+        (0.0, frame.y),
+        (frame.x, frame.y),
+    ];
+    let spread = corners
+        .iter()
+        .filter_map(|&(x, y)| view.sight(x, y))
+        .map(|d| d.dot(centre))
+        .fold(1.0f32, f32::min);
+    // The frame's farthest corner from its centre, and the sun's
+    // distance from the centre, as angles.
+    let (reach, off) = (
+        spread.clamp(-1.0, 1.0).acos(),
+        sun.dot(centre).clamp(-1.0, 1.0).acos(),
+    );
+    Some(off - reach < (1.0 - GLOW_REACH).acos())
+}
+
+/// The clouds' colours under `lighting` whose light, at most 1 bright, is
+/// `sun_light`: lit by it (their edges) and in their own shade (their
+/// hearts, never brighter than their edges), dimmed by the night.
+fn cloud_colours(lighting: &Lighting, sun_light: Rgb) -> (Rgb, Rgb) {
+    let night = lighting.night;
+    let white = mix(sun_light, [1.0; 3], 0.15 * (1.0 - night));
+    let lit: Rgb = [0, 1, 2].map(|i| (0.8 * white[i] + 0.35 * lighting.horizon[i]).min(1.0));
+    let lit = match night > 0.0 {
+        true => lit.map(|c| c * (1.0 - (1.0 - MOONLIT_CLOUD) * night)),
+        false => lit,
+    };
+    let shade: Rgb = [0, 1, 2].map(|i| (lighting.ambient[i] + 0.3 * lighting.zenith[i]) * 1.15);
+    (lit, heart_within(shade, lit))
+}
+
 impl Weather {
     /// The weather under `lighting` (its colours through `filter`, the
     /// palette's), seen through `view` in a frame of size `frame` whose
@@ -88,27 +129,9 @@ impl Weather {
         amount: f32,
         draw: u64,
     ) -> Option<Self> {
-        let centre = view.sight(frame.x * 0.5, frame.y * 0.5)?;
         // The palette's frame has y towards the back.
         let sun = lighting.sun * Vec3::new(1.0, -1.0, 1.0);
-        let corners = [
-            (0.0, 0.0),
-            (frame.x, 0.0),
-            (0.0, frame.y),
-            (frame.x, frame.y),
-        ];
-        let spread = corners
-            .iter()
-            .filter_map(|&(x, y)| view.sight(x, y))
-            .map(|d| d.dot(centre))
-            .fold(1.0f32, f32::min);
-        // The frame's farthest corner from its centre, and the sun's
-        // distance from the centre, as angles.
-        let (reach, off) = (
-            spread.clamp(-1.0, 1.0).acos(),
-            sun.dot(centre).clamp(-1.0, 1.0).acos(),
-        );
-        let glows = off - reach < (1.0 - GLOW_REACH).acos();
+        let glows = glow_reaches_frame(view, frame, sun)?;
         // A high sun stands far above the frame: its glow is not seen.
         let low = 1.0 - smoothstep(0.3, 0.6, sun.z);
         // The moon's glow is too faint to show beside its cost (every
@@ -118,19 +141,11 @@ impl Weather {
         let moon = lighting.night >= 0.5;
         let rising = moon && sun.z < RISING;
         let glows = glows && low > 0.0 && (!moon || rising);
-        let night = lighting.night;
         // A world's brilliant day or its twilight lifts the sun's light
         // on the land past 1; the clouds take its colour, not the lift.
         let direct = lighting.direct;
         let sun_light = direct.map(|c| c / direct[0].max(direct[1]).max(direct[2]).max(1.0));
-        let white = mix(sun_light, [1.0; 3], 0.15 * (1.0 - night));
-        let lit: Rgb = [0, 1, 2].map(|i| (0.8 * white[i] + 0.35 * lighting.horizon[i]).min(1.0));
-        let lit = match night > 0.0 {
-            true => lit.map(|c| c * (1.0 - (1.0 - MOONLIT_CLOUD) * night)),
-            false => lit,
-        };
-        let shade: Rgb = [0, 1, 2].map(|i| (lighting.ambient[i] + 0.3 * lighting.zenith[i]) * 1.15);
-        let shade = heart_within(shade, lit);
+        let (lit, shade) = cloud_colours(lighting, sun_light);
         // A rising moon's own colour, glow and disc; a high one's clouds
         // keep the light's.
         let (light, strength, size) = match rising {
