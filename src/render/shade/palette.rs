@@ -229,16 +229,10 @@ impl Palette {
         let preference = (settings.look == Look::MountainTerrain)
             .then(|| facings::preference(mode))
             .flatten();
-        let (water, depth_scale) = match listing {
+        let (water, depth_scale) = match (&listing, preference) {
             // The listing's one light blue, unshaded.
-            Some(_) if !settings.relative_depth => {
-                let water = match mode {
-                    ColorMode::Mono => dither::grey(listing::WATER_PATTERN),
-                    _ => listing::WATER,
-                };
-                (vec![water].into(), 0.0)
-            }
-            _ if preference.is_some() => mountain_terrain_water(settings.relative_depth),
+            (Some(_), _) if !settings.relative_depth => listing_water(mode),
+            (_, Some(_)) => mountain_terrain_water(settings.relative_depth),
             _ => water_table(mode, &waters, gain, offset),
         };
         Palette {
@@ -804,6 +798,17 @@ fn water_table(mode: ColorMode, w: &Waters, gain: f32, offset: f32) -> (Box<[u32
         0.0
     };
     (table, scale)
+}
+
+/// The water of seed 000's listing (`look = "fractal-mountain-climbing"`
+/// without `relative_depth`): its one light blue, unshaded (Mono's grey
+/// pattern), at every depth.
+fn listing_water(mode: ColorMode) -> (Box<[u32]>, f32) {
+    let water = match mode {
+        ColorMode::Mono => dither::grey(listing::WATER_PATTERN),
+        _ => listing::WATER,
+    };
+    (vec![water].into(), 0.0)
 }
 
 /// Mountain Terrain's water by depth, one bin a height unit: pure blue,
