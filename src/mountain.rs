@@ -146,6 +146,31 @@ mod tests {
     use super::*;
     use crate::settings::Detail;
 
+    /// The heights-only keys and the key table's keys that shape the next
+    /// mountain say one thing twice: each key that shapes only the next
+    /// mountain is heights-only (height and cliffs shape it and are drawn
+    /// under too: the treeline, the strata), and a heights-only key changes
+    /// the mountain on screen only by making it again.
+    #[test]
+    fn the_heights_only_keys_are_the_tables_next_mountain_keys() {
+        use crate::settings::keys::{Change, KEYS};
+        let drawn_under_too = [keys::HEIGHT.name, keys::CLIFFS.name];
+        for key in KEYS {
+            let heights_only = HEIGHTS_ONLY.iter().any(|k| k.name == key.name);
+            if key.change == Change::Next && !drawn_under_too.contains(&key.name) {
+                assert!(heights_only, "`{}` shapes only the next mountain", key.name);
+            }
+            if heights_only {
+                let remade = matches!(key.change, Change::Next | Change::Remake);
+                assert!(
+                    remade,
+                    "`{}` is heights-only but {:?}",
+                    key.name, key.change
+                );
+            }
+        }
+    }
+
     fn small() -> Settings {
         Settings {
             detail: Detail::Level(5),
