@@ -74,7 +74,8 @@ choice! {
         /// One of the others per mountain, drawn from its identity as the
         /// varied sun is. In settings drawn for a mountain
         /// (`worlds::drawn`) it stands for the temperate coast that draw
-        /// gave, its day drawn (`worlds::drawn_world`).
+        /// gave, its day drawn (`worlds::drawn_world`), named there
+        /// `worlds::COAST`.
         Varied = "varied",
         /// Green islands in blue water: the picture before worlds (drawn
         /// by "varied", lit by an hour and framed by a camera of its own:

@@ -192,6 +192,13 @@ pub fn drawn_for(seed: u64) -> World {
     World::Temperate
 }
 
+/// How settings drawn for a mountain ([`drawn`]) hold the temperate
+/// coast of the varied draw: a temperate mountain whose day, light and
+/// camera are drawn as the other worlds' are. The enum's "varied" has no
+/// other meaning once a mountain's world is drawn, so it stands for this
+/// one; the render matches on this name, not on "varied".
+pub const COAST: World = World::Varied;
+
 /// The world the mountain of `seed` is made and drawn in under
 /// `settings`: [`chosen`]'s, except that a temperate mountain of the
 /// varied draw stays `World::Varied`, which the render reads as the
@@ -200,7 +207,7 @@ pub fn drawn_for(seed: u64) -> World {
 /// picture from before the worlds, the slide show's twins among them.
 pub fn drawn_world(settings: &Settings, seed: Option<u64>) -> World {
     match (chosen(settings, seed), settings.world, seed) {
-        (World::Temperate, World::Varied, Some(_)) if !keeps_its_picture(settings) => World::Varied,
+        (World::Temperate, World::Varied, Some(_)) if !keeps_its_picture(settings) => COAST,
         (world, ..) => world,
     }
 }

@@ -3,6 +3,7 @@
 //! the aim in `vista.rs`.
 
 use crate::settings::World;
+use crate::settings::worlds::COAST;
 
 /// The camera's horizontal distance in front of the near edge, in grid
 /// widths: closer magnifies the foreground more. Tall frames (portrait)
@@ -78,7 +79,7 @@ impl Aim {
     /// world's camera stands high and looks down into its valleys, where
     /// its lakes lie: the back edge high in the frame and the near half of
     /// the land below it. Each part is drawn from bits of its own. The
-    /// temperate world named keeps today's vista (`World::Varied`, the
+    /// temperate world named keeps today's vista (`worlds::COAST`, the
     /// temperate coast of the varied draw, draws its own).
     pub fn of(world: World, identity: u64) -> Aim {
         let Some(ranges) = aims(world) else {
@@ -137,14 +138,14 @@ const DESERT_NEARER: Range = (0.3, STANDOFFS[0]);
 
 /// The ranges of the vista of `world`; none for the temperate world
 /// named ([`Aim::ACROSS`]), which keeps the picture from before the
-/// worlds (`World::Varied` here is the temperate coast the varied draw
+/// worlds (`worlds::COAST` here is the temperate coast the varied draw
 /// gave, `worlds::drawn_world`).
 fn aims(world: World) -> Option<Ranges> {
     let (skyline, cropped, standoff) = match world {
         World::Temperate => return None,
         // The temperate coast of the varied draw: low over its sea, as the
         // tropics', and now and then a near ridge cropped.
-        World::Varied => ((0.3, 0.55), (0.0, 0.3), NEARER),
+        COAST => ((0.3, 0.55), (0.0, 0.3), NEARER),
         World::Alpine => ((0.16, 0.34), (0.35, 0.65), NEARER),
         World::Winter => ((0.22, 0.5), (0.0, 0.5), NEARER),
         World::Autumn => ((0.25, 0.5), (0.0, 0.45), NEARER),
@@ -171,12 +172,12 @@ mod tests {
     use super::*;
 
     /// Each world's aims lie within its ranges and reach across most of
-    /// them, the temperate coast of the varied draw's (`World::Varied`)
+    /// them, the temperate coast of the varied draw's (`worlds::COAST`)
     /// too; the temperate world named keeps today's vista.
     #[test]
     fn each_world_aims_within_its_ranges() {
         let worlds = crate::settings::worlds::OWN_LOOKS;
-        for world in worlds.into_iter().chain([World::Varied]) {
+        for world in worlds.into_iter().chain([COAST]) {
             let ranges = aims(world).expect("a world's ranges");
             let drawn: Vec<Aim> = (0..500).map(|i| Aim::of(world, i)).collect();
             for (range, get) in [

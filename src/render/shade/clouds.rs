@@ -14,6 +14,7 @@
 //! the water mirrors it through the same function.
 
 use crate::render::base::colour::smoothstep;
+use crate::settings::worlds::COAST;
 use crate::settings::{Clouds, World};
 use crate::terrain::curves::hermite;
 use crate::terrain::splitmix;
@@ -89,7 +90,7 @@ fn skies(world: World) -> Option<(f32, f32, f32)> {
         World::Autumn => Some((0.3, 0.25, 1.0)),
         World::Tropical => Some((0.2, 0.2, 0.75)),
         World::Alpine => Some((0.45, 0.2, 0.85)),
-        World::Varied | World::Temperate => None,
+        COAST | World::Temperate => None,
     }
 }
 

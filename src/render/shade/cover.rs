@@ -14,6 +14,7 @@ use super::hour::SunAt;
 use super::light::Lighting;
 use crate::render::base::colour::{Rgb, mix, ramp, smoothstep};
 use crate::settings::World;
+use crate::settings::worlds::COAST;
 
 /// Colours of the ground, full sun.
 mod ground {
@@ -86,7 +87,7 @@ pub fn land(
         World::Autumn => autumn(u, steep, beach, v, facing),
         World::Desert => desert(u, steep, v),
         World::Tropical => tropical(u, steep, beach, v),
-        World::Varied | World::Temperate => return ground::VALLEY,
+        COAST | World::Temperate => return ground::VALLEY,
     };
     watered(world, ground, (u, steep), beach, v, wet)
 }
@@ -94,7 +95,7 @@ pub fn land(
 /// Whether `world`'s ground follows where water runs (every world's own
 /// cover; the temperate world keeps its picture).
 pub fn wets(world: World) -> bool {
-    !matches!(world, World::Temperate | World::Varied)
+    !matches!(world, World::Temperate | COAST)
 }
 
 /// Greener where the ground drains much (`wet` near 1: the valley
@@ -123,7 +124,7 @@ fn watered(
         World::Autumn => ([0.26, 0.38, 0.14], HEATH, (0.22, 0.08), 0.7),
         World::Desert => ([0.30, 0.40, 0.16], ground, (0.75, 0.0), 0.35),
         World::Tropical => (JUNGLE, DRY_GRASS, (0.4, 0.35), 0.8),
-        World::Varied | World::Temperate => return ground,
+        COAST | World::Temperate => return ground,
     };
     let low = 1.0 - smoothstep(top, top + 0.15, u);
     let shore = if beach {
@@ -431,7 +432,7 @@ pub fn water(world: World, t: f32, v: f32) -> Rgb {
             ],
             t,
         ),
-        World::Varied | World::Temperate => [0.10, 0.34, 0.66],
+        COAST | World::Temperate => [0.10, 0.34, 0.66],
     }
 }
 
@@ -478,7 +479,7 @@ pub fn air(world: World, [zenith, horizon]: [Rgb; 2], v: f32, night: f32) -> [Rg
             [[0.04, 0.12, 0.42], [0.12, 0.34, 0.78]],
             0.75,
         ),
-        World::Varied | World::Temperate => return [zenith, horizon],
+        COAST | World::Temperate => return [zenith, horizon],
     };
     let day = 1.0 - night;
     let horizon = mix(horizon, tint, (lo + (hi - lo) * v) * day);
@@ -498,7 +499,7 @@ pub fn air(world: World, [zenith, horizon]: [Rgb; 2], v: f32, night: f32) -> [Rg
 /// their colours, or a hazy one that fades them into the sky. None for
 /// the temperate world, which keeps its own.
 pub fn haze(world: World, v: f32) -> Option<f32> {
-    if matches!(world, World::Temperate | World::Varied) {
+    if matches!(world, World::Temperate | COAST) {
         return None;
     }
     Some(HAZE.0 + (HAZE.1 - HAZE.0) * (v * 23.0).fract())
@@ -540,7 +541,7 @@ fn night_air(world: World, v: f32) -> [Rgb; 2] {
             [[0.004, 0.008, 0.035], [0.04, 0.06, 0.13]],
             [[0.030, 0.070, 0.180], [0.14, 0.22, 0.36]],
         ],
-        World::Varied | World::Temperate => [
+        COAST | World::Temperate => [
             [[0.015, 0.030, 0.085], [0.08, 0.11, 0.20]],
             [[0.015, 0.030, 0.085], [0.08, 0.11, 0.20]],
         ],
@@ -579,7 +580,7 @@ const LOW_SUN: f32 = 10.0;
 /// survey's nights are the nights drawn), winter's sun never stands high, the
 /// desert's and the tropics' noon stand highest. None for the temperate
 /// world named (its four times are the slide show from before the
-/// worlds); the temperate coast of the varied draw (`World::Varied` here,
+/// worlds); the temperate coast of the varied draw (`worlds::COAST` here,
 /// `worlds::drawn_world`) draws its hour as the others do.
 fn sun_heights(world: World) -> Option<(f32, f32)> {
     match world {
@@ -588,7 +589,7 @@ fn sun_heights(world: World) -> Option<(f32, f32)> {
         World::Autumn => Some((1.0, 35.0)),
         World::Desert => Some((1.0, 65.0)),
         World::Tropical => Some((2.0, 70.0)),
-        World::Varied => Some((1.0, 55.0)),
+        COAST => Some((1.0, 55.0)),
         World::Temperate => None,
     }
 }
@@ -630,7 +631,7 @@ pub fn sun(world: World, identity: u64) -> Option<SunAt> {
 
 /// The day's light in `world`, from the time of day's `light`: winter's
 /// low, cold sun (lower, paler and bluer, more of its light from the
-/// sky); in every world but the temperate named (`World::Varied` is the
+/// sky); in every world but the temperate named (`worlds::COAST` is the
 /// temperate coast of the varied draw) a brighter or duller, warmer or
 /// colder day, its shade lighter or deeper, by the mountain's draw `v`
 /// ([`light_draw`]), the shade lighter still under a low sun ahead
@@ -737,8 +738,8 @@ mod tests {
     /// low, from ahead: never from high behind the range.
     #[test]
     fn a_worlds_sun_stands_within_its_heights_and_never_behind_the_range() {
-        // `World::Varied`: the temperate coast of the varied draw.
-        for world in DRAWN.into_iter().chain([World::Varied]) {
+        // `worlds::COAST`: the temperate coast of the varied draw.
+        for world in DRAWN.into_iter().chain([COAST]) {
             let (lo, hi) = sun_heights(world).expect("a world's heights");
             let suns: Vec<SunAt> = (0..2000).filter_map(|i| sun(world, i)).collect();
             assert_eq!(suns.len(), 2000, "{world:?}");
@@ -772,7 +773,7 @@ mod tests {
         let night = Lighting::new(Sun::Night, &field);
         let temperate = light(World::Temperate, night.clone(), 0.5);
         assert_eq!(temperate.direct, night.direct);
-        for world in DRAWN.into_iter().chain([World::Varied]) {
+        for world in DRAWN.into_iter().chain([COAST]) {
             let lit = light(world, night.clone(), 0.5);
             for (a, b) in [(lit.direct, night.direct), (lit.ambient, night.ambient)] {
                 assert!(luminance(a) >= 1.5 * luminance(b), "{world:?}: {a:?} {b:?}");
@@ -790,7 +791,7 @@ mod tests {
         let field = crate::terrain::Heightfield::flat(5, 100.0);
         let day = Lighting::new(Sun::Midday, &field);
         let days = [World::Alpine, World::Autumn, World::Desert, World::Tropical];
-        for world in days.into_iter().chain([World::Varied]) {
+        for world in days.into_iter().chain([COAST]) {
             let ks: Vec<f32> = (0..500)
                 .map(|i| light(world, day.clone(), i as f32 / 500.0).ambient[2] / day.ambient[2])
                 .collect();

@@ -10,6 +10,7 @@
 use super::hour::SunAt;
 use crate::render::base::colour::{Rgb, mix, smoothstep};
 use crate::settings::World;
+use crate::settings::worlds::COAST;
 
 /// How many of a world's varied nights in 256 are twilight instead: most
 /// of them (full nights sit close together whatever the world).
@@ -31,7 +32,7 @@ const DUSK_KEY: u64 = 0x6475_736b_2064_7261;
 /// gone down to the viewer's right or left: its last light's disc (which
 /// `hour.rs` keeps a degree up) stays out of the frame.
 pub(super) fn twilight(world: World, identity: u64) -> Option<SunAt> {
-    if matches!(world, World::Temperate | World::Varied) {
+    if matches!(world, World::Temperate | COAST) {
         return None;
     }
     let draw = crate::terrain::splitmix::mix(identity ^ DUSK_KEY);
@@ -62,7 +63,7 @@ pub(super) fn afterglow(world: World, v: f32) -> Rgb {
         World::Tropical => [[0.86, 0.40, 0.38], [0.92, 0.62, 0.44]],
         World::Autumn => [[0.84, 0.50, 0.26], [0.88, 0.70, 0.44]],
         World::Alpine => [[0.80, 0.46, 0.44], [0.88, 0.66, 0.54]],
-        World::Varied | World::Temperate => return [0.0; 3],
+        COAST | World::Temperate => return [0.0; 3],
     };
     mix(deep, pale, (v * 11.0).fract())
 }

@@ -47,15 +47,15 @@ pub(super) fn rising(world: World, identity: u64) -> Option<(f32, f32)> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::settings::worlds::OWN_LOOKS;
+    use crate::settings::worlds::{COAST, OWN_LOOKS};
 
     /// Half of every world's full nights see the moon rise, the temperate
-    /// coast of the varied draw's (`World::Varied`) too, each moon within
+    /// coast of the varied draw's (`worlds::COAST`) too, each moon within
     /// its heights and turns and over most of them; the temperate world
     /// named sees none.
     #[test]
     fn half_a_worlds_full_nights_see_the_moon_rise_within_the_view() {
-        for world in OWN_LOOKS.into_iter().chain([World::Varied]) {
+        for world in OWN_LOOKS.into_iter().chain([COAST]) {
             let moons: Vec<(f32, f32)> = (0..2000).filter_map(|i| rising(world, i)).collect();
             let share = moons.len() as f32 / 2000.0;
             assert!((share - 0.5).abs() < 0.05, "{world:?}: {share}");

@@ -35,6 +35,7 @@ use crate::render::base::colour::{
     Rgb, luminance, mix, mix_packed, pack, ramp, scale_packed, scale_packed3, smoothstep, to_u32,
     unpack,
 };
+use crate::settings::worlds::COAST;
 use crate::settings::{ColorMode, Look, Settings, Sun, World, worlds};
 use crate::terrain::Heightfield;
 use crate::terrain::wetness::ORDINARY;
@@ -663,7 +664,7 @@ impl Zones {
     /// water runs `wet` (which the temperate world's cover ignores).
     fn colour(&self, u: f32, steep: f32, facing: f32, wet: f32) -> Rgb {
         use natural::*;
-        if !matches!(self.world, World::Temperate | World::Varied) {
+        if !matches!(self.world, World::Temperate | COAST) {
             return cover::land(self.world, (u, steep, facing, wet), self.beach, self.draw);
         }
         let low = u / self.treeline;
@@ -777,10 +778,8 @@ fn water_table(mode: ColorMode, w: &Waters, gain: f32, offset: f32) -> (Box<[u32
             let t = i as f32 / (DEPTH_BINS - 1) as f32;
             let c = match (relative, w.world) {
                 // Most of the darkening near the shore, where it shows.
-                (true, World::Temperate | World::Varied) => {
-                    mix(natural::SHALLOW, natural::DEEP, t.sqrt())
-                }
-                (false, World::Temperate | World::Varied) => natural::SEA,
+                (true, World::Temperate | COAST) => mix(natural::SHALLOW, natural::DEEP, t.sqrt()),
+                (false, World::Temperate | COAST) => natural::SEA,
                 (true, world) => lit_water(cover::water(world, t, w.draw), w),
                 (false, world) => lit_water(cover::water(world, 0.35, w.draw), w),
             };
