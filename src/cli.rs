@@ -101,15 +101,36 @@ pub struct Invocation {
     pub mode: Mode,
     /// `--config FILE`: preferences file instead of the platform default.
     pub config: Option<PathBuf>,
-    /// `--set key=value`, in the order given.
-    pub sets: Vec<(String, String)>,
-    /// How each of `sets` was typed, in the same order (`-seed 9`,
-    /// `--seed=9`, `--set seed=9`): what a message about one names.
-    pub sets_as_typed: Vec<String>,
+    /// Each `--set key=value` and key flag (`-seed 9`), in the order given.
+    pub sets: Vec<Set>,
     /// `--open FILE`: show a saved heightmap instead of generating.
     pub open: Option<PathBuf>,
     /// The xscreensaver options every hack takes.
     pub xss: XssOptions,
+}
+
+/// One preference set for this run: a `--set key=value` or a key's own
+/// flag, with how it was typed. The two travel together: a message about
+/// a value names it as the user typed it (`-seed 9` is no `--set seed=9`
+/// to the one who typed it).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Set {
+    /// The key, as the key table names it (`low_detail`, not `low-detail`).
+    pub key: String,
+    /// The value, as given (a flag of a boolean gives `true` or `false`).
+    pub value: String,
+    /// The arguments that gave it, as typed (`-seed 9`, `--seed=9`,
+    /// `--set seed=9`), each cut as every echo is.
+    pub typed: String,
+}
+
+impl Invocation {
+    /// Every set's key and value, in the order given, as
+    /// [`crate::settings::load::resolve`] takes them.
+    pub fn key_values(&self) -> Vec<(String, String)> {
+        let pair = |set: &Set| (set.key.clone(), set.value.clone());
+        self.sets.iter().map(pair).collect()
+    }
 }
 
 /// xscreensaver's common options, which it may pass to any hack.
@@ -153,7 +174,6 @@ pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
             mode: default_mode(),
             config: None,
             sets: Vec::new(),
-            sets_as_typed: Vec::new(),
             open: None,
             xss: XssOptions::default(),
         },
@@ -497,10 +517,9 @@ impl Parser<'_> {
     }
 
     /// Adds `kv` to the sets, typed as the arguments from `from` were.
-    fn push_set(&mut self, kv: (String, String), from: usize) {
+    fn push_set(&mut self, (key, value): (String, String), from: usize) {
         let typed = self.typed_since(from);
-        self.inv.sets.push(kv);
-        self.inv.sets_as_typed.push(typed);
+        self.inv.sets.push(Set { key, value, typed });
     }
 
     /// A preference key given as a flag of its own (`-cragginess 40`),

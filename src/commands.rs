@@ -3,8 +3,8 @@
 use std::path::Path;
 use std::process::ExitCode;
 
-use crate::cli::Invocation;
 use crate::cli::output::{self, Format};
+use crate::cli::{Invocation, Set};
 use crate::console;
 use crate::mountain::Mountain;
 use crate::render::{Frame, Size, render_full_at};
@@ -37,11 +37,11 @@ pub fn mountain(settings: &Settings, open: Option<&Path>) -> Result<Mountain, St
 pub fn warn_heights_only(inv: &Invocation) {
     let Some(path) = &inv.open else { return };
     let heights_only = |key: &str| crate::mountain::HEIGHTS_ONLY.iter().any(|k| k.name == key);
-    let typed = inv.sets.iter().zip(&inv.sets_as_typed);
-    for (_, typed) in typed.filter(|((key, _), _)| heights_only(key)) {
+    for set in inv.sets.iter().filter(|set| heights_only(&set.key)) {
         console::err(&format!(
-            "mountains: warning: {typed}: no effect with --open {}: \
+            "mountains: warning: {}: no effect with --open {}: \
              the data set's heights are used as they are",
+            set.typed,
             path.display()
         ));
     }
@@ -227,11 +227,7 @@ fn fail(message: &str) -> ExitCode {
 /// preferences); 1 for any problem in the file, or a named file missing;
 /// 2 for a bad `--set` (typed for the run, as in every mode), whatever
 /// the file: then a good file is said to be fine, but not "ok" alone.
-pub fn check_config(
-    path: Option<&Path>,
-    config: Option<&Path>,
-    sets: &[(String, String)],
-) -> ExitCode {
+pub fn check_config(path: Option<&Path>, config: Option<&Path>, sets: &[Set]) -> ExitCode {
     // Said first: typed for this run, they are what to mend now, and a
     // file's flood of problems ends in "... and N more".
     let mistyped = report_bad_sets(sets);
@@ -253,10 +249,10 @@ pub fn check_config(
 /// Says each `--set` whose key or value is bad; true if any was. A value's
 /// range and type do not depend on the other keys, so each is checked
 /// against the defaults.
-fn report_bad_sets(sets: &[(String, String)]) -> bool {
+fn report_bad_sets(sets: &[Set]) -> bool {
     let problems: Vec<load::Problem> = sets
         .iter()
-        .filter_map(|(key, value)| load::apply_set(&mut Settings::default(), key, value).err())
+        .filter_map(|set| load::apply_set(&mut Settings::default(), &set.key, &set.value).err())
         .collect();
     for line in load::report_with(&problems, |p| console::error_line(&p.to_string())) {
         console::err(&line);

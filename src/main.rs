@@ -75,7 +75,7 @@ fn main() -> ExitCode {
         Mode::Settings { .. } => load::Unreadable::NewIfMissing,
         _ => load::Unreadable::Defaults,
     };
-    let loaded = match load::resolve(inv.config.as_deref(), &inv.sets, unreadable) {
+    let loaded = match load::resolve(inv.config.as_deref(), &inv.key_values(), unreadable) {
         Ok(l) => l,
         Err(p) => {
             console::error(&p.to_string());

@@ -69,7 +69,7 @@ fn shared_options_go_with_every_mode() {
     assert_eq!(inv.config, Some(PathBuf::from("a.toml")));
     assert_eq!(inv.open, Some(PathBuf::from("h.png")));
     assert_eq!(
-        inv.sets,
+        inv.key_values(),
         vec![
             ("color".into(), "sonar".into()),
             ("detail".into(), "6".into())
@@ -254,7 +254,7 @@ fn every_key_is_a_flag_of_its_own() {
     let got: Vec<(&str, &str)> = inv
         .sets
         .iter()
-        .map(|(k, v)| (k.as_str(), v.as_str()))
+        .map(|set| (set.key.as_str(), set.value.as_str()))
         .collect();
     assert_eq!(got, want);
     // Each flag with a value it accepts, its key's default: a value out of
@@ -269,7 +269,7 @@ fn every_key_is_a_flag_of_its_own() {
         };
         let args: &[&str] = if boolean { &[&flag] } else { &[&flag, &value] };
         let inv = parse(args).unwrap_or_else(|e| panic!("{flag}: {e}"));
-        assert_eq!(inv.sets[0].0, key.name, "{flag}");
+        assert_eq!(inv.sets[0].key, key.name, "{flag}");
     }
     let e = parse(&["-cragginess"]).unwrap_err().0;
     assert!(
@@ -289,7 +289,7 @@ fn one_dash_takes_a_value_after_an_equals_sign() {
     let sets: Vec<(&str, &str)> = inv
         .sets
         .iter()
-        .map(|(k, v)| (k.as_str(), v.as_str()))
+        .map(|set| (set.key.as_str(), set.value.as_str()))
         .collect();
     assert_eq!(sets, [("seed", "5"), ("color", "sonar")]);
     assert_eq!(inv.config, Some(PathBuf::from("f.toml")));
@@ -298,6 +298,38 @@ fn one_dash_takes_a_value_after_an_equals_sign() {
     assert!(e.starts_with("-cragginess: "), "{e}");
     let e = parse(&["-fps=1"]).unwrap_err().0;
     assert!(e.contains("-fps takes no value"), "{e}");
+}
+
+/// Each set keeps its key, its value and how it was typed together, in
+/// the order given: a message about one names it as typed. (They were
+/// two vectors side by side, kept in step by hand.)
+#[test]
+fn each_set_keeps_how_it_was_typed() {
+    let inv = parse(&[
+        "-seed",
+        "9",
+        "--set",
+        "color=sonar",
+        "--cragginess=40",
+        "-no-shadows",
+        "-set=detail=6",
+    ])
+    .unwrap_or_else(|e| panic!("{e}"));
+    let got: Vec<(&str, &str, &str)> = inv
+        .sets
+        .iter()
+        .map(|set| (set.key.as_str(), set.value.as_str(), set.typed.as_str()))
+        .collect();
+    assert_eq!(
+        got,
+        [
+            ("seed", "9", "-seed 9"),
+            ("color", "sonar", "--set color=sonar"),
+            ("cragginess", "40", "--cragginess=40"),
+            ("shadows", "false", "-no-shadows"),
+            ("detail", "6", "-set=detail=6"),
+        ]
+    );
 }
 
 /// xscreensaver's common options, `--version`, and its dialog's preview
