@@ -8,6 +8,7 @@ use std::ffi::OsString;
 use std::path::{Path, PathBuf};
 
 use crate::render::Size;
+use crate::settings::load::Problem;
 use crate::terrain::heightmap;
 
 pub mod key_flags;
@@ -124,6 +125,31 @@ pub struct Set {
     pub typed: String,
 }
 
+impl Set {
+    /// `problem`, the loader's about this set's key or value, named as
+    /// the set was typed: a key's flag by the flag (`-color: "pink" is not
+    /// allowed; ...`), a `--set` as the loader names one (`--set: key
+    /// `color`: ...`).
+    pub fn named_as_typed(&self, mut problem: Problem) -> Problem {
+        if !self.by_set() {
+            problem.source = self.flag().to_string();
+            problem.key = None;
+        }
+        problem
+    }
+
+    /// Whether it was typed as a `--set` (any spelling), not a key's flag.
+    pub fn by_set(&self) -> bool {
+        long_name(self.flag()) == "--set"
+    }
+
+    /// The flag that gave it, as typed (`-seed` of `-seed 9`, `--seed` of
+    /// `--seed=9`): no flag's name holds a space or an `=`.
+    fn flag(&self) -> &str {
+        self.typed.split([' ', '=']).next().unwrap_or_default()
+    }
+}
+
 impl Invocation {
     /// Every set's key and value, in the order given, as
     /// [`crate::settings::load::resolve`] takes them.
@@ -170,6 +196,7 @@ pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
         args,
         pos: 0,
         files: Vec::new(),
+        bad_value: None,
         inv: Invocation {
             mode: default_mode(),
             config: None,
@@ -178,39 +205,52 @@ pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
             xss: XssOptions::default(),
         },
     };
-    let mut mode: Option<(Mode, String)> = None;
-    let mut output: Option<PathBuf> = None;
-    let mut size: Option<Size> = None;
-    while let Some(arg) = p.next_str()? {
-        let new_mode = match p.option(&arg, &mut output, &mut size)? {
-            Some(m) => m,
-            None => continue,
-        };
-        // `mountains render --help` asks about the program, as it would of
-        // most commands: it is answered, whatever mode came before.
-        if matches!(new_mode, Mode::Help | Mode::Version) {
-            p.inv.mode = new_mode;
-            return Ok(p.inv);
-        }
-        mode = Some(match mode {
-            None => (new_mode, arg),
-            Some((old_mode, old)) => match (old_mode, new_mode) {
-                // What xscreensaver's settings dialog runs for its preview.
-                (Mode::XRoot, id @ Mode::XWindowId(_)) | (id @ Mode::XWindowId(_), Mode::XRoot) => {
-                    (id, arg)
-                }
-                _ => {
-                    return Err(UsageError(format!(
-                        "`{arg}` given after `{old}`: choose one mode"
-                    )));
-                }
-            },
-        });
+    let read = p.arguments();
+    // A key flag's bad value waits for the mode: `--check-config` says it
+    // beside the file's verdict (refused here, the file went unchecked);
+    // every other mode refuses it, as the first mistake typed.
+    match (p.bad_value.take(), read) {
+        (Some(_), Ok(())) if matches!(p.inv.mode, Mode::CheckConfig(_)) => Ok(p.inv),
+        (Some(bad), _) => Err(bad),
+        (None, read) => read.map(|()| p.inv),
     }
-    let mode = mode.map_or_else(default_mode, |(m, _)| m);
-    p.inv.mode = finish_mode(mode, output, size)?;
-    one_file_to_check(&p.inv)?;
-    Ok(p.inv)
+}
+
+impl Parser<'_> {
+    /// Reads every argument into `self.inv`, its mode last.
+    fn arguments(&mut self) -> Result<(), UsageError> {
+        let mut mode: Option<(Mode, String)> = None;
+        let mut output: Option<PathBuf> = None;
+        let mut size: Option<Size> = None;
+        while let Some(arg) = self.next_str()? {
+            let new_mode = match self.option(&arg, &mut output, &mut size)? {
+                Some(m) => m,
+                None => continue,
+            };
+            // `mountains render --help` asks about the program, as it would of
+            // most commands: it is answered, whatever mode came before.
+            if matches!(new_mode, Mode::Help | Mode::Version) {
+                self.inv.mode = new_mode;
+                return Ok(());
+            }
+            mode = Some(match mode {
+                None => (new_mode, arg),
+                Some((old_mode, old)) => match (old_mode, new_mode) {
+                    // What xscreensaver's settings dialog runs for its preview.
+                    (Mode::XRoot, id @ Mode::XWindowId(_))
+                    | (id @ Mode::XWindowId(_), Mode::XRoot) => (id, arg),
+                    _ => {
+                        return Err(UsageError(format!(
+                            "`{arg}` given after `{old}`: choose one mode"
+                        )));
+                    }
+                },
+            });
+        }
+        let mode = mode.map_or_else(default_mode, |(m, _)| m);
+        self.inv.mode = finish_mode(mode, output, size)?;
+        one_file_to_check(&self.inv)
+    }
 }
 
 /// `--config A --check-config B` names two files where one is checked:
@@ -287,6 +327,9 @@ struct Parser<'a> {
     /// Each file flag given so far (by its long name) and how it was typed:
     /// what a second one of it is refused with.
     files: Vec<(&'static str, String)>,
+    /// The refusal of the first key flag whose value is bad (`-color
+    /// pink`): see [`parse`] for when it is said.
+    bad_value: Option<UsageError>,
     inv: Invocation,
 }
 
@@ -549,9 +592,12 @@ impl Parser<'_> {
         // Checked here, against the defaults (a value's range and type do
         // not depend on the other keys), so the message names the flag typed.
         let mut scratch = crate::settings::Settings::default();
-        crate::settings::load::apply_set(&mut scratch, &kv.0, &kv.1)
-            .map_err(|problem| UsageError(format!("{arg}: {}", problem.message)))?;
+        let checked = crate::settings::load::apply_set(&mut scratch, &kv.0, &kv.1);
         self.push_set(kv, from);
+        if let (Err(problem), None) = (checked, &self.bad_value) {
+            let set = self.inv.sets.last().expect("the set just pushed");
+            self.bad_value = Some(UsageError(set.named_as_typed(problem).to_string()));
+        }
         Ok(())
     }
 

@@ -225,14 +225,15 @@ fn fail(message: &str) -> ExitCode {
 /// there is no preferences file at the usual place (the defaults are in
 /// use, which is no mistake) and for the null device (`/dev/null`: no
 /// preferences); 1 for any problem in the file, or a named file missing;
-/// 2 for a bad `--set` (typed for the run, as in every mode), whatever
-/// the file: then a good file is said to be fine, but not "ok" alone.
+/// 2 for a bad `--set` or key flag (`-color pink`: typed for the run, as
+/// in every mode), whatever the file: then a good file is said to be
+/// fine, but not "ok" alone.
 pub fn check_config(path: Option<&Path>, config: Option<&Path>, sets: &[Set]) -> ExitCode {
     // Said first: typed for this run, they are what to mend now, and a
     // file's flood of problems ends in "... and N more".
     let mistyped = report_bad_sets(sets);
     let checked = check_file(path, config, mistyped);
-    if mistyped {
+    if mistyped.is_some() {
         return ExitCode::from(EXIT_USAGE);
     }
     let printed = match checked {
@@ -241,33 +242,49 @@ pub fn check_config(path: Option<&Path>, config: Option<&Path>, sets: &[Set]) ->
     };
     let printed = match sets.is_empty() {
         true => printed,
-        false => printed.and_then(|()| console::outln("--set: ok")),
+        false => printed.and_then(|()| console::outln(&format!("{}: ok", sets_named(sets)))),
     };
     console::status(printed, ExitCode::SUCCESS)
 }
 
-/// Says each `--set` whose key or value is bad; true if any was. A value's
-/// range and type do not depend on the other keys, so each is checked
-/// against the defaults.
-fn report_bad_sets(sets: &[Set]) -> bool {
-    let problems: Vec<load::Problem> = sets
+/// How `--check-config`'s verdict names the sets it checked: `--set`
+/// when every one was typed so, else each as typed (`-color sonar`: a
+/// "--set: ok" named a flag no one typed).
+fn sets_named(sets: &[Set]) -> String {
+    if sets.iter().all(Set::by_set) {
+        return "--set".to_string();
+    }
+    let typed: Vec<&str> = sets.iter().map(|set| set.typed.as_str()).collect();
+    typed.join(" ")
+}
+
+/// Says each `--set` or key flag whose key or value is bad, named as it
+/// was typed; returns the first such, if any. A value's range and type do
+/// not depend on the other keys, so each is checked against the defaults.
+fn report_bad_sets(sets: &[Set]) -> Option<&Set> {
+    let bad: Vec<(&Set, load::Problem)> = sets
         .iter()
-        .filter_map(|set| load::apply_set(&mut Settings::default(), &set.key, &set.value).err())
+        .filter_map(|set| {
+            let checked = load::apply_set(&mut Settings::default(), &set.key, &set.value);
+            checked.err().map(|p| (set, set.named_as_typed(p)))
+        })
         .collect();
+    let problems: Vec<load::Problem> = bad.iter().map(|(_, p)| p.clone()).collect();
     for line in load::report_with(&problems, |p| console::error_line(&p.to_string())) {
         console::err(&line);
     }
-    !problems.is_empty()
+    bad.first().map(|&(set, _)| set)
 }
 
 /// The file part of [`check_config`]: its problems said, and `Err` with
 /// the exit code when there are any (or the file cannot be checked);
-/// `Ok` with what printing its verdict gave. `mistyped`: a `--set` given
-/// with it was refused, which the verdict of a good file must not hide.
+/// `Ok` with what printing its verdict gave. `mistyped`: the first `--set`
+/// or key flag given with it that was refused, which the verdict of a good
+/// file must not hide.
 fn check_file(
     path: Option<&Path>,
     config: Option<&Path>,
-    mistyped: bool,
+    mistyped: Option<&Set>,
 ) -> Result<std::io::Result<()>, ExitCode> {
     let named = path.or(config).map(Path::to_path_buf);
     let Some(file) = named.clone().or_else(paths::config_file) else {
@@ -311,11 +328,13 @@ fn check_file(
 }
 
 /// What `--check-config` says of a file without problems. A bare "ok"
-/// beside a refused `--set` (exit 2) read as if all were well.
-fn verdict(file: &Path, mistyped: bool) -> String {
+/// beside a refused `--set` (exit 2) read as if all were well; a key flag
+/// refused is named as typed (`-color pink`), as no `--set` was typed.
+fn verdict(file: &Path, mistyped: Option<&Set>) -> String {
     match mistyped {
-        false => format!("{}: ok", file.display()),
-        true => format!("{}: the file is ok; a --set is not", file.display()),
+        None => format!("{}: ok", file.display()),
+        Some(set) if set.by_set() => format!("{}: the file is ok; a --set is not", file.display()),
+        Some(set) => format!("{}: the file is ok; {} is not", file.display(), set.typed),
     }
 }
 

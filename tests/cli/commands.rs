@@ -1121,6 +1121,72 @@ fn check_config_with_a_bad_set_says_no_bare_ok() {
     assert_eq!(out, format!("{}: ok\n--set: ok\n", good.display()));
 }
 
+/// A key flag with a bad value beside `--check-config` (`-color pink`)
+/// is said as a bad `--set` is: named as typed, after it the file's own
+/// verdict, exit 2. It was refused while the arguments were read, and
+/// the file went unchecked: the user was not told whether it was ok.
+#[test]
+fn check_config_with_a_bad_key_flag_still_checks_the_file() {
+    let dir = scratch("check-config-key-flag");
+    let good = dir.join("good.toml");
+    std::fs::write(&good, "seed = 5\n").unwrap();
+    let good = arg(&good);
+    for (args, typed) in [
+        (
+            vec!["--check-config", &good, "-color", "pink"],
+            "-color pink",
+        ),
+        (
+            vec!["--check-config", &good, "--color=pink"],
+            "--color=pink",
+        ),
+        (
+            vec!["--config", &good, "--check-config", "-cragginess", "500"],
+            "-cragginess 500",
+        ),
+    ] {
+        let o = mountains(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        let flag = typed.split([' ', '=']).next().unwrap();
+        let err = stderr(&o);
+        assert!(
+            err.starts_with(&format!("mountains: error: {flag}: "))
+                && err.contains("is not allowed"),
+            "{args:?}: {err}"
+        );
+        let out = String::from_utf8_lossy(&o.stdout);
+        assert_eq!(
+            out,
+            format!("{good}: the file is ok; {typed} is not\n"),
+            "{args:?}"
+        );
+    }
+    // A bad file beside it: both are said, the flag first.
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, "cragginess = 500\n").unwrap();
+    let o = mountains(&["--check-config", &arg(&bad), "-color", "pink"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let err = stderr(&o);
+    let (flag, file) = (
+        err.find("-color: "),
+        err.find("bad.toml:1:14: key `cragginess`"),
+    );
+    assert!(flag.is_some() && file.is_some() && flag < file, "{err}");
+    // A good flag is named as typed, not as a `--set` no one typed.
+    let o = run(&["--check-config", &good, "-color", "sonar"]);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(out, format!("{good}: ok\n-color sonar: ok\n"));
+    // Every other mode still refuses it before any work, as typed.
+    let o = mountains(&["render", "-o", &arg(&dir.join("x.png")), "-color", "pink"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        stderr(&o).starts_with("mountains: error: -color: "),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!dir.join("x.png").exists());
+}
+
 /// An `-o` the write would refuse, a folder that is not there or a
 /// folder named as the file, is refused before any work, as the write
 /// refuses it (exit 1): it was said only once the picture was drawn or
