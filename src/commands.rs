@@ -28,27 +28,51 @@ pub fn mountain(settings: &Settings, open: Option<&Path>) -> Result<Mountain, St
     Ok(mountain)
 }
 
-/// Warns of each `--set` (or key flag) in `inv` that its `--open` leaves
-/// without effect in `render` and `heightmap`: one that only shapes the
-/// heights a generator makes ([`crate::mountain::HEIGHTS_ONLY`]), where
+/// The warnings of each `--set` (or key flag) in `inv` that its `--open`
+/// leaves without effect in `render` and `heightmap`: one that only shapes
+/// the heights a generator makes ([`crate::mountain::HEIGHTS_ONLY`]), where
 /// the heights are the data set's. Each is named as it was typed (`-seed
 /// 9` is no `--set seed=9` to the one who typed it). A preferences file's
 /// keys are no mistake of this run, and are not named.
-pub fn warn_heights_only(inv: &Invocation) {
-    let Some(path) = &inv.open else { return };
+pub fn heights_only_warnings(inv: &Invocation) -> Vec<String> {
+    let Some(path) = &inv.open else {
+        return Vec::new();
+    };
     let heights_only = |key: &str| crate::mountain::HEIGHTS_ONLY.iter().any(|k| k.name == key);
-    for set in inv.sets.iter().filter(|set| heights_only(&set.key)) {
-        console::err(&format!(
+    let warning = |set: &Set| {
+        format!(
             "mountains: warning: {}: no effect with --open {}: \
              the data set's heights are used as they are",
             set.typed,
             path.display()
-        ));
+        )
+    };
+    inv.sets
+        .iter()
+        .filter(|set| heights_only(&set.key))
+        .map(warning)
+        .collect()
+}
+
+/// Says `warnings` (whole lines) on stderr: once nothing is left to
+/// refuse, so a refused command says only why (a warning, then a refusal
+/// of the same command, told of work it never did).
+fn say_warnings(warnings: &[String]) {
+    for line in warnings {
+        console::err(line);
     }
 }
 
-/// `mountains render`: one complete mountain to a PNG.
-pub fn render(settings: &Settings, open: Option<&Path>, size: Size, output: &Path) -> ExitCode {
+/// `mountains render`: one complete mountain to a PNG. `warnings` (about
+/// the preferences and the flags) are said once the picture is sure to be
+/// drawn: after every refusal, and after `--open`'s data set is read.
+pub fn render(
+    settings: &Settings,
+    open: Option<&Path>,
+    size: Size,
+    output: &Path,
+    warnings: &[String],
+) -> ExitCode {
     let refused = refuse_a_terminal(output)
         .or_else(|| refuse_the_data_set(open, output, "picture"))
         .or_else(|| refuse_an_unwritable_output(output));
@@ -81,6 +105,7 @@ pub fn render(settings: &Settings, open: Option<&Path>, size: Size, output: &Pat
         Ok(m) => m,
         Err(e) => return fail(&e),
     };
+    say_warnings(warnings);
     let drawn = shown.drawn_with(settings);
     render_full_at(
         &shown.field,
@@ -107,7 +132,13 @@ fn work_exponent(settings: &Settings, open: Option<&Path>) -> u32 {
 
 /// `mountains heightmap`: generate a data set and save it as a 16-bit PNG,
 /// or as raw 16-bit samples (`.r16`, `.raw`), whose height range it prints.
-pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> ExitCode {
+/// `warnings` are said as [`render`] says them.
+pub fn heightmap(
+    settings: &Settings,
+    open: Option<&Path>,
+    output: &Path,
+    warnings: &[String],
+) -> ExitCode {
     let refused = refuse_a_terminal(output)
         .or_else(|| refuse_the_data_set(open, output, "data set"))
         .or_else(|| refuse_an_unwritable_output(output));
@@ -123,6 +154,7 @@ pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> Exi
         Ok(m) => m,
         Err(e) => return fail(&e),
     };
+    say_warnings(warnings);
     // A data set saved again keeps the keys its file recorded.
     let settings = &shown.saved_with(settings);
     let (field, seed) = (shown.field, shown.seed);

@@ -1187,6 +1187,69 @@ fn check_config_with_a_bad_key_flag_still_checks_the_file() {
     assert!(!dir.join("x.png").exists());
 }
 
+/// A command refused before its work says only why: no warning about
+/// the preferences or the flags comes before the refusal (a warning of
+/// `-seed 9` beside `--open`, then a refusal of the `-o`, told of work
+/// it never did). The same warnings are said when the work is done.
+#[test]
+fn a_refused_command_says_no_warnings_first() {
+    let dir = scratch("refused-first");
+    let h = dir.join("h.png");
+    small_data_set(&h);
+    let config = dir.join("prefs.toml");
+    std::fs::write(&config, "nonsense = 1\n").unwrap();
+    let broken = dir.join("broken.png");
+    std::fs::write(&broken, b"\x89PNG\r\n\x1a\nnot a png at all").unwrap();
+    let (h, config) = (arg(&h), arg(&config));
+    let missing_folder = arg(&dir.join("no-such-folder").join("x.png"));
+    let common = ["--config", &config, "-seed", "9"];
+    for (mode, open, output, code) in [
+        (
+            &["render", "--size", "40x30"][..],
+            h.as_str(),
+            missing_folder.as_str(),
+            1,
+        ),
+        (&["heightmap"], h.as_str(), missing_folder.as_str(), 1),
+        (&["render", "--size", "40x30"], h.as_str(), h.as_str(), 2),
+        (&["heightmap"], h.as_str(), h.as_str(), 2),
+        (
+            &["render", "--size", "32768x32768"],
+            h.as_str(),
+            &arg(&dir.join("big.png")),
+            2,
+        ),
+        (
+            &["render", "--size", "40x30"],
+            &arg(&broken),
+            &arg(&dir.join("r.png")),
+            1,
+        ),
+        (&["heightmap"], &arg(&broken), &arg(&dir.join("d.png")), 1),
+    ] {
+        let args: Vec<&str> = [mode, &common, &["--open", open, "-o", output]].concat();
+        let o = mountains(&args);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(code), "{args:?}: {err}");
+        assert!(!err.contains("warning:"), "{args:?}: {err}");
+        assert!(err.starts_with("mountains: error: "), "{args:?}: {err}");
+    }
+    // Done, the work is warned of as before.
+    let done = arg(&dir.join("done.png"));
+    let args = [
+        &["render", "--size", "40x30"][..],
+        &common,
+        &["--open", &h, "-o", &done],
+    ]
+    .concat();
+    let err = stderr(&run(&args));
+    assert!(
+        err.contains("warning: -seed 9: no effect with --open"),
+        "{err}"
+    );
+    assert!(err.contains("prefs.toml:1:1: key `nonsense`"), "{err}");
+}
+
 /// An `-o` the write would refuse, a folder that is not there or a
 /// folder named as the file, is refused before any work, as the write
 /// refuses it (exit 1): it was said only once the picture was drawn or
