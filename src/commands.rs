@@ -222,9 +222,11 @@ fn refuse_an_unwritable_output(output: &Path) -> Option<ExitCode> {
     Some(fail(&cannot_write(output, &e)))
 }
 
-/// How a file `-o` names that cannot be written is said.
+/// How a file `-o` names that cannot be written is said: the flag, the
+/// file, and [`crate::fsutil::cannot_write`]'s words.
 fn cannot_write(output: &Path, e: &std::io::Error) -> String {
-    format!("-o {}: cannot write: {e}", output.display())
+    let why = crate::fsutil::cannot_write(e);
+    format!("-o {}: {why}", output.display())
 }
 
 /// Says which seed made the file.

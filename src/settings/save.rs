@@ -245,7 +245,7 @@ fn write_unless_changed(
     let unchanged =
         || Ok(matches!(read_text(path), Ok(now) if now.as_ref().map(|(t, _)| t) == was.as_ref()));
     crate::fsutil::write_atomic_checked(path, |w| w.write_all(merged), unchanged)
-        .map_err(|e| io_error(path, format!("cannot write: {e}"), &e))
+        .map_err(|e| io_error(path, crate::fsutil::cannot_write(&e), &e))
 }
 
 /// The value to write for `key`, after the key table has accepted it.
