@@ -454,7 +454,14 @@ impl Parser<'_> {
                 self.once("--output", "output file", self.typed_since(from))?;
                 *output = Some(file.into());
             }
-            "--size" => *size = Some(parse_size(&take(self, "--size")?.to_string_lossy())?),
+            "--size" => {
+                let text = take(self, "--size")?;
+                // Ours alone (no X toolkit convention, nothing we ship
+                // repeats it): a second one is a slip, refused as the
+                // file flags' are. `-delay` and `-display` stay last-wins.
+                self.once("--size", "size", self.typed_since(from))?;
+                *size = Some(parse_size(&text.to_string_lossy())?);
+            }
             "--root" => return Ok(Some(Mode::XRoot)),
             "--window" => return Ok(Some(Mode::Window)),
             "--layer" => {
@@ -472,6 +479,11 @@ impl Parser<'_> {
             "--man-page" => return Ok(Some(Mode::ManPage)),
             "-fps" | "--fps" => self.inv.xss.fps = true,
             "-no-fps" | "--no-fps" => self.inv.xss.fps = false,
+            // X toolkit programs, xscreensaver's hacks among them, take the
+            // last of a repeated option (XrmParseCommand puts each into the
+            // resource database in order, a later one over an earlier), and
+            // a command line edited in xscreensaver's settings may keep the
+            // `-delay` it had and gain one: it and `-display` stay last-wins.
             "-delay" | "--delay" => {
                 let v = self.inline_or_next(inline, &flag)?;
                 let us = v.trim().parse::<u64>().map_err(|_| {

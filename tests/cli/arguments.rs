@@ -524,3 +524,38 @@ fn a_file_flag_given_twice_is_refused_naming_both() {
         assert_eq!(e.0, said, "{args:?}");
     }
 }
+
+/// `--size` given twice is refused naming both as typed, as the file
+/// flags are: the last one won, and the first was passed over in
+/// silence. Nothing we ship repeats it. `-delay` and `-display` keep the
+/// last, as X toolkit programs and xscreensaver's hacks do (a command line
+/// edited in xscreensaver's settings may repeat `-delay`).
+#[test]
+fn a_second_size_is_refused_and_delay_and_display_keep_the_last() {
+    for (args, said) in [
+        (
+            &["render", "-o", "x.png", "--size", "640x480", "--size", "4k"][..],
+            "`--size 4k` given after `--size 640x480`: give one size",
+        ),
+        (
+            &["render", "--size=1080p", "-o", "x.png", "-size", "1x1"],
+            "`-size 1x1` given after `--size=1080p`: give one size",
+        ),
+    ] {
+        let e = parse(args).expect_err(&format!("{args:?} should fail"));
+        assert_eq!(e.0, said, "{args:?}");
+    }
+    let inv = parse(&[
+        "-root",
+        "-delay",
+        "10",
+        "-delay=20",
+        "-display",
+        ":1",
+        "--display",
+        ":2",
+    ])
+    .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(inv.xss.delay_us, Some(20));
+    assert_eq!(inv.xss.display.as_deref(), Some(":2"));
+}
