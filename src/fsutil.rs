@@ -97,6 +97,13 @@ fn kind_of(meta: &std::fs::Metadata) -> &'static str {
     crate::platform::os::special_file_kind(&t).unwrap_or("not a file")
 }
 
+/// How a read that failed is said, after the file it names (the path,
+/// and the flag that named it, are the caller's): one wording for every
+/// file we read, data sets and preferences alike.
+pub fn cannot_read(e: &io::Error) -> String {
+    format!("cannot read: {e}")
+}
+
 /// How a write that failed is said, after the file it names (the path,
 /// and the flag that named it, are the caller's): one wording for every
 /// file we write, pictures, data sets and preferences alike.

@@ -315,7 +315,7 @@ pub fn apply_file(settings: &mut Settings, path: &Path) -> Vec<Problem> {
             source,
             position: None,
             key: None,
-            message: format!("cannot read: {e}"),
+            message: crate::fsutil::cannot_read(&e),
             reach: Reach::Unreadable,
         }],
     }

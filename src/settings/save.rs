@@ -225,7 +225,7 @@ fn read_text(path: &Path) -> Result<Option<(String, Form)>, SaveError> {
             )
         }),
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(None),
-        Err(e) => Err(io_error(path, format!("cannot read: {e}"), &e)),
+        Err(e) => Err(io_error(path, crate::fsutil::cannot_read(&e), &e)),
     }
 }
 

@@ -1187,6 +1187,28 @@ fn check_config_with_a_bad_key_flag_still_checks_the_file() {
     assert!(!dir.join("x.png").exists());
 }
 
+/// A data set and a preferences file that cannot be read are said in
+/// one wording, the flag and the file first: `--open` said "cannot be
+/// read" where `--config` said "cannot read", which read as two faults.
+#[test]
+fn a_failed_read_is_said_alike_for_data_sets_and_preferences() {
+    let dir = scratch("read-alike");
+    let out = arg(&dir.join("x.png"));
+    for (flag, name) in [("--open", "missing.png"), ("--config", "missing.toml")] {
+        let missing = arg(&dir.join(name));
+        let o = mountains(&["render", "--size", "8x8", flag, &missing, "-o", &out]);
+        assert_ne!(o.status.code(), Some(0));
+        let err = stderr(&o);
+        let said = format!("mountains: error: {flag} {missing}: cannot read: ");
+        assert!(err.starts_with(&said), "{err}");
+    }
+    let folder = dir.join("a-folder.png");
+    std::fs::create_dir_all(&folder).unwrap();
+    let o = mountains(&["render", "--open", &arg(&folder), "-o", &out]);
+    let said = format!("--open {}: cannot read: is a folder", folder.display());
+    assert!(stderr(&o).contains(&said), "{}", stderr(&o));
+}
+
 /// A command refused before its work says only why: no warning about
 /// the preferences or the flags comes before the refusal (a warning of
 /// `-seed 9` beside `--open`, then a refusal of the `-o`, told of work

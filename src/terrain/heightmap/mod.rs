@@ -149,7 +149,7 @@ pub fn data_set_extensions() -> String {
 /// whole, at most [`MAX_FILE_BYTES`]: a PNG, or else raw samples.
 pub fn load(path: &Path) -> Result<DataSet, HeightmapError> {
     let io = |e: std::io::Error| {
-        HeightmapError::new(path, ErrorKind::Io, format!("cannot be read: {e}"))
+        HeightmapError::new(path, ErrorKind::Io, crate::fsutil::cannot_read(&e))
     };
     if path == Path::new("-") {
         use std::io::IsTerminal;
