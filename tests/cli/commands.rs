@@ -1209,6 +1209,38 @@ fn a_failed_read_is_said_alike_for_data_sets_and_preferences() {
     assert!(stderr(&o).contains(&said), "{}", stderr(&o));
 }
 
+/// A file its owner made read-only is not replaced by `-o`: the rename
+/// that replaces a file asks leave of its folder, not of the file, so
+/// `render -o kept.png` replaced a `chmod a-w` file that a shell's `>`
+/// would have refused. It is refused before any work, exit 1, the file
+/// left as it was (also for root, who may write anything: the file's own
+/// bits say it is to be kept).
+#[test]
+fn a_read_only_file_is_not_replaced() {
+    let dir = scratch("read-only-output");
+    for (mode, name) in [
+        (&["render", "--size", "8x8"][..], "kept.png"),
+        (&["heightmap", "--set", "detail=3"], "kept.r16"),
+    ] {
+        let kept = dir.join(name);
+        std::fs::write(&kept, b"precious").unwrap();
+        let mut permissions = std::fs::metadata(&kept).unwrap().permissions();
+        permissions.set_readonly(true);
+        std::fs::set_permissions(&kept, permissions).unwrap();
+        let out = arg(&kept);
+        let args = [mode, &["-o", &out]].concat();
+        let o = mountains(&args);
+        assert_eq!(o.status.code(), Some(1), "{args:?}: {}", stderr(&o));
+        let said = format!(
+            "mountains: error: -o {}: cannot write: is read-only",
+            kept.display()
+        );
+        assert!(stderr(&o).starts_with(&said), "{}", stderr(&o));
+        assert!(o.stdout.is_empty(), "{args:?}");
+        assert_eq!(std::fs::read(&kept).unwrap(), b"precious");
+    }
+}
+
 /// A command refused before its work says only why: no warning about
 /// the preferences or the flags comes before the refusal (a warning of
 /// `-seed 9` beside `--open`, then a refusal of the `-o`, told of work

@@ -355,6 +355,23 @@ fn the_advice_after_a_failed_save_follows_its_cause() {
     assert!(read_only.advice().contains("writable"));
 }
 
+/// A preferences file its owner made read-only is not replaced by a save
+/// (the rename asks leave of the folder, not of the file): refused, with
+/// the advice to make it writable, the file as it was.
+#[test]
+fn a_read_only_preferences_file_is_not_replaced() {
+    let dir = scratch("read-only");
+    let file = dir.join("mountains.toml");
+    std::fs::write(&file, "seed = 5\n").unwrap();
+    let mut permissions = std::fs::metadata(&file).unwrap().permissions();
+    permissions.set_readonly(true);
+    std::fs::set_permissions(&file, permissions).unwrap();
+    let e = save::save(&file, &Settings::default()).unwrap_err();
+    assert!(e.message.starts_with("cannot write: is read-only"), "{e}");
+    assert!(e.advice().contains("writable"), "{}", e.advice());
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), "seed = 5\n");
+}
+
 fn key(name: &str) -> &'static mountains::settings::keys::Key {
     mountains::settings::keys::find(name).unwrap()
 }
