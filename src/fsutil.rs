@@ -252,6 +252,12 @@ fn replace_file(
         let mut out = io::BufWriter::new(File::create(&tmp)?);
         write(&mut out)?;
         let file = out.into_inner().map_err(|e| e.into_error())?;
+        // The file replaced keeps its owner's leave to read it: a private
+        // (0600) preferences file, which may hold where its owner lives,
+        // came back readable by all from the new file's defaults.
+        if let Ok(old) = std::fs::metadata(path) {
+            file.set_permissions(old.permissions())?;
+        }
         file.sync_all()?;
         if !still_wanted()? {
             return Ok(false);

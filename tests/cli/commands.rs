@@ -1241,6 +1241,22 @@ fn a_read_only_file_is_not_replaced() {
     }
 }
 
+/// `-o` over a file keeps its leave to read it (a private picture stays
+/// private): the new file was made with the defaults.
+#[cfg(unix)]
+#[test]
+fn a_replaced_output_keeps_its_permissions() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = scratch("private-output");
+    let private = dir.join("private.png");
+    std::fs::write(&private, b"old").unwrap();
+    std::fs::set_permissions(&private, std::fs::Permissions::from_mode(0o600)).unwrap();
+    run(&["render", "--size", "8x8", "-o", &arg(&private)]);
+    assert_eq!(png_size(&private), (8, 8));
+    let mode = std::fs::metadata(&private).unwrap().permissions().mode();
+    assert_eq!(mode & 0o777, 0o600, "{mode:o}");
+}
+
 /// A command refused before its work says only why: no warning about
 /// the preferences or the flags comes before the refusal (a warning of
 /// `-seed 9` beside `--open`, then a refusal of the `-o`, told of work
