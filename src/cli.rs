@@ -849,6 +849,14 @@ fn parse_size(text: &str) -> Result<Size, UsageError> {
             "--size {text}: too large (each side at most {MAX_SIDE} pixels)"
         )));
     }
+    // Said here with the other bounds, before any other check or warning:
+    // `render` found it only once its output was asked about.
+    let most = crate::render::frame::MAX_PIXELS;
+    if size.pixels() > most {
+        return Err(UsageError(format!(
+            "--size {text}: too large (at most {most} pixels in all)"
+        )));
+    }
     Ok(size)
 }
 

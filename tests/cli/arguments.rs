@@ -175,6 +175,19 @@ fn a_mistyped_flag_offers_the_nearest() {
     }
 }
 
+/// `--size` bounds the pixels in all as it bounds each side, as the
+/// arguments are read: `render` said it only after asking about its `-o`.
+#[test]
+fn size_bounds_the_pixels_in_all() {
+    for size in ["32768x32768", "16385x16384"] {
+        let e = parse(&["render", "-o", "x.png", "--size", size]).unwrap_err();
+        let want = format!("--size {size}: too large (at most 268435456 pixels in all)");
+        assert_eq!(e.0, want);
+    }
+    let inv = parse(&["render", "-o", "x.png", "--size", "16384x16384"]);
+    assert!(inv.is_ok(), "{:?}", inv.err());
+}
+
 /// `--size` bounds each side (a frame 2^28 pixels wide and one high took
 /// 97 s and 3.5 GB though its pixel count is allowed), and says so naming
 /// the flag; the bound itself is taken.
