@@ -692,6 +692,9 @@ const FLAGS: [&str; 21] = [
     "check-config",
 ];
 
+/// Our one-letter flags besides the Windows letters (which take any case).
+const LETTERS: [&str; 3] = ["-o", "-h", "-V"];
+
 /// Whether `s` is one of our subcommand words (not a window handle).
 fn is_word(s: &str) -> bool {
     WORDS.contains(&s)
@@ -713,7 +716,11 @@ fn unknown_argument(arg: &str) -> UsageError {
     }
     // `--colour=sonar` is compared by its flag, `color=sonar` is a `--set`.
     let name = arg.split_once('=').map_or(arg, |(name, _)| name);
+    // A one-letter flag in the other case (`-v` for the version, `-O`):
+    // too short for a misspelling to be measured, and typed so often.
+    let letter = LETTERS.iter().find(|l| l.eq_ignore_ascii_case(name));
     let nearest = match name.strip_prefix('-') {
+        Some(_) if letter.is_some() => letter.map(|l| l.to_string()),
         Some(flag) => {
             let bare = flag.trim_start_matches('-').replace('_', "-");
             let names = FLAGS

@@ -572,3 +572,14 @@ fn a_second_size_is_refused_and_delay_and_display_keep_the_last() {
     assert_eq!(inv.xss.delay_us, Some(20));
     assert_eq!(inv.xss.display.as_deref(), Some(":2"));
 }
+
+/// A one-letter flag typed in the other case is offered as ours: `-v`
+/// (the version, as many programs spell it) said only "unknown argument".
+#[test]
+fn a_letter_in_the_other_case_is_offered_as_ours() {
+    for (typed, ours) in [("-v", "-V"), ("-O", "-o"), ("-H", "-h")] {
+        let e = parse(&[typed]).unwrap_err();
+        let want = format!("unknown argument `{typed}`; did you mean `{ours}`?");
+        assert_eq!(e.0, want);
+    }
+}
