@@ -446,6 +446,7 @@ impl Parser<'_> {
                     .map_err(|_| UsageError("--set: not valid text".into()))?;
                 let (k, v) = kv
                     .split_once('=')
+                    .filter(|(k, _)| !k.trim().is_empty())
                     .ok_or_else(|| UsageError(format!("--set {kv}: expected key=value")))?;
                 self.push_set((k.trim().to_string(), v.trim().to_string()), from);
             }

@@ -583,3 +583,13 @@ fn a_letter_in_the_other_case_is_offered_as_ours() {
         assert_eq!(e.0, want);
     }
 }
+
+/// `--set =5` names no key: said as `--set color` is (expected
+/// key=value), where it was "key ``: unknown key" once the file was read.
+#[test]
+fn a_set_without_a_key_is_refused_as_read() {
+    for typed in ["=5", " =5", "="] {
+        let e = parse(&["--set", typed]).unwrap_err();
+        assert_eq!(e.0, format!("--set {typed}: expected key=value"));
+    }
+}
