@@ -357,7 +357,7 @@ fn check_file(
     if !problems.is_empty() {
         return Err(ExitCode::FAILURE);
     }
-    warn_of_a_missing_folder(&settings);
+    warn_of_a_missing_folder(&settings, &file);
     Ok(console::outln(&verdict(&file, mistyped)))
 }
 
@@ -372,17 +372,26 @@ fn verdict(file: &Path, mistyped: Option<&Set>) -> String {
     }
 }
 
-/// Warns when `heightmaps_dir` names no folder: the value is well formed,
-/// but the slide show would show none of its heightmaps, and only say so in
-/// its log.
-fn warn_of_a_missing_folder(settings: &Settings) {
+/// Warns when `heightmaps_dir` in `file` names no folder: the value is
+/// well formed, but the slide show would show none of its heightmaps, and
+/// only say so in its log. Named as a problem in the file is, by file,
+/// line and key; a file where the folder should be is said to be one.
+fn warn_of_a_missing_folder(settings: &Settings, file: &Path) {
     let dir = settings.heightmaps_dir.as_deref();
-    if let Some(folder) = paths::heightmaps_folder(dir).filter(|f| !f.is_dir()) {
-        console::err(&format!(
-            "mountains: warning: heightmaps_dir {:?}: no such folder ({}); \
-             every slide is generated",
-            dir.unwrap_or_default(),
-            folder.display()
-        ));
-    }
+    let Some(folder) = paths::heightmaps_folder(dir).filter(|f| !f.is_dir()) else {
+        return;
+    };
+    let key = "heightmaps_dir";
+    let at = load::value_position(file, key).map_or(String::new(), |(l, c)| format!(":{l}:{c}"));
+    let what = match folder.exists() {
+        true => "not a folder",
+        false => "no such folder",
+    };
+    console::err(&format!(
+        "mountains: warning: {}{at}: key `{key}`: {:?}: {what} ({}); \
+         every slide is generated",
+        file.display(),
+        dir.unwrap_or_default(),
+        folder.display()
+    ));
 }

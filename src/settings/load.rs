@@ -319,6 +319,18 @@ fn parse_set_value(raw: &str) -> Value {
     }
 }
 
+/// Where the value of `key` stands in the preferences file at `path`
+/// (1-based line and column), if the file reads and holds it: what a
+/// warning about a good value (a folder that is not there) names, as a
+/// [`Problem`] names a bad one.
+pub fn value_position(path: &Path, key: &str) -> Option<(usize, usize)> {
+    let bytes = crate::fsutil::read_regular(path, crate::fsutil::MAX_PREFERENCES_BYTES).ok()?;
+    let (text, _) = super::text::decode(bytes).ok()?;
+    let doc = Document::parse(text.as_str()).ok()?;
+    let start = doc.as_table().get(key)?.span()?.start;
+    Some(Lines::new(&text).line_col(start))
+}
+
 /// Reads the file at `path` and applies it on top of `settings`. An
 /// unreadable file is one problem; the settings are then left unchanged.
 pub fn apply_file(settings: &mut Settings, path: &Path) -> Vec<Problem> {

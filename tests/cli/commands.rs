@@ -727,6 +727,33 @@ fn check_config_warns_of_a_heightmaps_folder_that_is_not_there() {
     assert!(!stderr(&o).contains("no such folder"), "{}", stderr(&o));
 }
 
+/// The warning of a `heightmaps_dir` that names no folder names the file,
+/// line and key, as a problem in the file is named (it named only the
+/// key), and a file where the folder should be as not a folder (it said
+/// "no such folder" of a file that is there).
+#[test]
+fn check_config_names_the_line_of_a_heightmaps_folder_that_is_not_there() {
+    let dir = scratch("check-config-folder-line");
+    let file = dir.join("p.toml");
+    let in_the_way = dir.join("a-file");
+    std::fs::write(&in_the_way, "").unwrap();
+    for (target, what) in [
+        (dir.join("no-maps"), "no such folder"),
+        (in_the_way, "not a folder"),
+    ] {
+        let value = arg(&target);
+        std::fs::write(&file, format!("seed = 5\nheightmaps_dir = {value:?}\n")).unwrap();
+        let o = mountains(&["--check-config", &arg(&file)]);
+        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+        let said = format!(
+            "mountains: warning: {}:2:18: key `heightmaps_dir`: {value:?}: {what} ({value}); \
+             every slide is generated\n",
+            file.display()
+        );
+        assert_eq!(stderr(&o), said);
+    }
+}
+
 /// A key this version does not know (the settings screen keeps it) is a
 /// warning with a suggestion for `render`, and still a failure for
 /// `--check-config`.
