@@ -845,7 +845,21 @@ fn parse_size(text: &str) -> Result<Size, UsageError> {
         ))
     };
     let (w, h) = text.split_once(['x', 'X']).ok_or_else(bad)?;
-    let side = |s: &str| s.trim().parse().map_err(|_| bad());
+    let too_large = || {
+        UsageError(format!(
+            "--size {text}: too large (each side at most {MAX_SIDE} pixels)"
+        ))
+    };
+    // A side of digits past what a number holds is a size too large, not
+    // a misspelling (`4294967296x1` was "expected WIDTHxHEIGHT").
+    let side = |s: &str| -> Result<u32, UsageError> {
+        let s = s.trim();
+        match s.parse::<u32>() {
+            Ok(n) => Ok(n),
+            Err(_) if !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit()) => Err(too_large()),
+            Err(_) => Err(bad()),
+        }
+    };
     let size = Size::new(side(w)?, side(h)?);
     if size.is_empty() {
         return Err(UsageError(format!(
@@ -853,9 +867,7 @@ fn parse_size(text: &str) -> Result<Size, UsageError> {
         )));
     }
     if size.width.max(size.height) > MAX_SIDE {
-        return Err(UsageError(format!(
-            "--size {text}: too large (each side at most {MAX_SIDE} pixels)"
-        )));
+        return Err(too_large());
     }
     // Said here with the other bounds, before any other check or warning:
     // `render` found it only once its output was asked about.

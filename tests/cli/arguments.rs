@@ -593,3 +593,17 @@ fn a_set_without_a_key_is_refused_as_read() {
         assert_eq!(e.0, format!("--set {typed}: expected key=value"));
     }
 }
+
+/// A side of digits too many for a number is a size too large, as 32769
+/// is, not a misspelling: `--size 4294967296x1` said "expected
+/// WIDTHxHEIGHT".
+#[test]
+fn a_side_past_any_number_is_too_large() {
+    for size in ["4294967296x1", "1x99999999999999999999"] {
+        let e = parse(&["render", "-o", "x.png", "--size", size]).unwrap_err();
+        let want = format!("--size {size}: too large (each side at most 32768 pixels)");
+        assert_eq!(e.0, want);
+    }
+    let e = parse(&["render", "-o", "x.png", "--size", "1.5x2"]).unwrap_err();
+    assert!(e.0.contains("expected WIDTHxHEIGHT"), "{e}");
+}
