@@ -8,6 +8,7 @@ use std::ffi::OsString;
 use std::path::{Path, PathBuf};
 
 use crate::render::Size;
+use crate::settings::load::Problem;
 use crate::terrain::heightmap;
 
 pub mod key_flags;
@@ -101,15 +102,61 @@ pub struct Invocation {
     pub mode: Mode,
     /// `--config FILE`: preferences file instead of the platform default.
     pub config: Option<PathBuf>,
-    /// `--set key=value`, in the order given.
-    pub sets: Vec<(String, String)>,
-    /// How each of `sets` was typed, in the same order (`-seed 9`,
-    /// `--seed=9`, `--set seed=9`): what a message about one names.
-    pub sets_as_typed: Vec<String>,
+    /// Each `--set key=value` and key flag (`-seed 9`), in the order given.
+    pub sets: Vec<Set>,
     /// `--open FILE`: show a saved heightmap instead of generating.
     pub open: Option<PathBuf>,
     /// The xscreensaver options every hack takes.
     pub xss: XssOptions,
+}
+
+/// One preference set for this run: a `--set key=value` or a key's own
+/// flag, with how it was typed. The two travel together: a message about
+/// a value names it as the user typed it (`-seed 9` is no `--set seed=9`
+/// to the one who typed it).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Set {
+    /// The key, as the key table names it (`low_detail`, not `low-detail`).
+    pub key: String,
+    /// The value, as given (a flag of a boolean gives `true` or `false`).
+    pub value: String,
+    /// The arguments that gave it, as typed (`-seed 9`, `--seed=9`,
+    /// `--set seed=9`), each cut as every echo is.
+    pub typed: String,
+}
+
+impl Set {
+    /// `problem`, the loader's about this set's key or value, named as
+    /// the set was typed: a key's flag by the flag (`-color: "pink" is not
+    /// allowed; ...`), a `--set` as the loader names one (`--set: key
+    /// `color`: ...`).
+    pub fn named_as_typed(&self, mut problem: Problem) -> Problem {
+        if !self.by_set() {
+            problem.source = self.flag().to_string();
+            problem.key = None;
+        }
+        problem
+    }
+
+    /// Whether it was typed as a `--set` (any spelling), not a key's flag.
+    pub fn by_set(&self) -> bool {
+        long_name(self.flag()) == "--set"
+    }
+
+    /// The flag that gave it, as typed (`-seed` of `-seed 9`, `--seed` of
+    /// `--seed=9`): no flag's name holds a space or an `=`.
+    fn flag(&self) -> &str {
+        self.typed.split([' ', '=']).next().unwrap_or_default()
+    }
+}
+
+impl Invocation {
+    /// Every set's key and value, in the order given, as
+    /// [`crate::settings::load::resolve`] takes them.
+    pub fn key_values(&self) -> Vec<(String, String)> {
+        let pair = |set: &Set| (set.key.clone(), set.value.clone());
+        self.sets.iter().map(pair).collect()
+    }
 }
 
 /// xscreensaver's common options, which it may pass to any hack.
@@ -149,48 +196,61 @@ pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
         args,
         pos: 0,
         files: Vec::new(),
+        bad_value: None,
         inv: Invocation {
             mode: default_mode(),
             config: None,
             sets: Vec::new(),
-            sets_as_typed: Vec::new(),
             open: None,
             xss: XssOptions::default(),
         },
     };
-    let mut mode: Option<(Mode, String)> = None;
-    let mut output: Option<PathBuf> = None;
-    let mut size: Option<Size> = None;
-    while let Some(arg) = p.next_str()? {
-        let new_mode = match p.option(&arg, &mut output, &mut size)? {
-            Some(m) => m,
-            None => continue,
-        };
-        // `mountains render --help` asks about the program, as it would of
-        // most commands: it is answered, whatever mode came before.
-        if matches!(new_mode, Mode::Help | Mode::Version) {
-            p.inv.mode = new_mode;
-            return Ok(p.inv);
-        }
-        mode = Some(match mode {
-            None => (new_mode, arg),
-            Some((old_mode, old)) => match (old_mode, new_mode) {
-                // What xscreensaver's settings dialog runs for its preview.
-                (Mode::XRoot, id @ Mode::XWindowId(_)) | (id @ Mode::XWindowId(_), Mode::XRoot) => {
-                    (id, arg)
-                }
-                _ => {
-                    return Err(UsageError(format!(
-                        "`{arg}` given after `{old}`: choose one mode"
-                    )));
-                }
-            },
-        });
+    let read = p.arguments();
+    // A key flag's bad value waits for the mode: `--check-config` says it
+    // beside the file's verdict (refused here, the file went unchecked);
+    // every other mode refuses it, as the first mistake typed.
+    match (p.bad_value.take(), read) {
+        (Some(_), Ok(())) if matches!(p.inv.mode, Mode::CheckConfig(_)) => Ok(p.inv),
+        (Some(bad), _) => Err(bad),
+        (None, read) => read.map(|()| p.inv),
     }
-    let mode = mode.map_or_else(default_mode, |(m, _)| m);
-    p.inv.mode = finish_mode(mode, output, size)?;
-    one_file_to_check(&p.inv)?;
-    Ok(p.inv)
+}
+
+impl Parser<'_> {
+    /// Reads every argument into `self.inv`, its mode last.
+    fn arguments(&mut self) -> Result<(), UsageError> {
+        let mut mode: Option<(Mode, String)> = None;
+        let mut output: Option<PathBuf> = None;
+        let mut size: Option<Size> = None;
+        while let Some(arg) = self.next_str()? {
+            let new_mode = match self.option(&arg, &mut output, &mut size)? {
+                Some(m) => m,
+                None => continue,
+            };
+            // `mountains render --help` asks about the program, as it would of
+            // most commands: it is answered, whatever mode came before.
+            if matches!(new_mode, Mode::Help | Mode::Version) {
+                self.inv.mode = new_mode;
+                return Ok(());
+            }
+            mode = Some(match mode {
+                None => (new_mode, arg),
+                Some((old_mode, old)) => match (old_mode, new_mode) {
+                    // What xscreensaver's settings dialog runs for its preview.
+                    (Mode::XRoot, id @ Mode::XWindowId(_))
+                    | (id @ Mode::XWindowId(_), Mode::XRoot) => (id, arg),
+                    _ => {
+                        return Err(UsageError(format!(
+                            "`{arg}` given after `{old}`: choose one mode"
+                        )));
+                    }
+                },
+            });
+        }
+        let mode = mode.map_or_else(default_mode, |(m, _)| m);
+        self.inv.mode = finish_mode(mode, output, size)?;
+        one_file_to_check(&self.inv)
+    }
 }
 
 /// `--config A --check-config B` names two files where one is checked:
@@ -267,6 +327,9 @@ struct Parser<'a> {
     /// Each file flag given so far (by its long name) and how it was typed:
     /// what a second one of it is refused with.
     files: Vec<(&'static str, String)>,
+    /// The refusal of the first key flag whose value is bad (`-color
+    /// pink`): see [`parse`] for when it is said.
+    bad_value: Option<UsageError>,
     inv: Invocation,
 }
 
@@ -383,6 +446,7 @@ impl Parser<'_> {
                     .map_err(|_| UsageError("--set: not valid text".into()))?;
                 let (k, v) = kv
                     .split_once('=')
+                    .filter(|(k, _)| !k.trim().is_empty())
                     .ok_or_else(|| UsageError(format!("--set {kv}: expected key=value")))?;
                 self.push_set((k.trim().to_string(), v.trim().to_string()), from);
             }
@@ -391,7 +455,14 @@ impl Parser<'_> {
                 self.once("--output", "output file", self.typed_since(from))?;
                 *output = Some(file.into());
             }
-            "--size" => *size = Some(parse_size(&take(self, "--size")?.to_string_lossy())?),
+            "--size" => {
+                let text = take(self, "--size")?;
+                // Ours alone (no X toolkit convention, nothing we ship
+                // repeats it): a second one is a slip, refused as the
+                // file flags' are. `-delay` and `-display` stay last-wins.
+                self.once("--size", "size", self.typed_since(from))?;
+                *size = Some(parse_size(&text.to_string_lossy())?);
+            }
             "--root" => return Ok(Some(Mode::XRoot)),
             "--window" => return Ok(Some(Mode::Window)),
             "--layer" => {
@@ -409,6 +480,11 @@ impl Parser<'_> {
             "--man-page" => return Ok(Some(Mode::ManPage)),
             "-fps" | "--fps" => self.inv.xss.fps = true,
             "-no-fps" | "--no-fps" => self.inv.xss.fps = false,
+            // X toolkit programs, xscreensaver's hacks among them, take the
+            // last of a repeated option (XrmParseCommand puts each into the
+            // resource database in order, a later one over an earlier), and
+            // a command line edited in xscreensaver's settings may keep the
+            // `-delay` it had and gain one: it and `-display` stay last-wins.
             "-delay" | "--delay" => {
                 let v = self.inline_or_next(inline, &flag)?;
                 let us = v.trim().parse::<u64>().map_err(|_| {
@@ -497,10 +573,9 @@ impl Parser<'_> {
     }
 
     /// Adds `kv` to the sets, typed as the arguments from `from` were.
-    fn push_set(&mut self, kv: (String, String), from: usize) {
+    fn push_set(&mut self, (key, value): (String, String), from: usize) {
         let typed = self.typed_since(from);
-        self.inv.sets.push(kv);
-        self.inv.sets_as_typed.push(typed);
+        self.inv.sets.push(Set { key, value, typed });
     }
 
     /// A preference key given as a flag of its own (`-cragginess 40`),
@@ -530,9 +605,12 @@ impl Parser<'_> {
         // Checked here, against the defaults (a value's range and type do
         // not depend on the other keys), so the message names the flag typed.
         let mut scratch = crate::settings::Settings::default();
-        crate::settings::load::apply_set(&mut scratch, &kv.0, &kv.1)
-            .map_err(|problem| UsageError(format!("{arg}: {}", problem.message)))?;
+        let checked = crate::settings::load::apply_set(&mut scratch, &kv.0, &kv.1);
         self.push_set(kv, from);
+        if let (Err(problem), None) = (checked, &self.bad_value) {
+            let set = self.inv.sets.last().expect("the set just pushed");
+            self.bad_value = Some(UsageError(set.named_as_typed(problem).to_string()));
+        }
         Ok(())
     }
 
@@ -615,6 +693,9 @@ const FLAGS: [&str; 21] = [
     "check-config",
 ];
 
+/// Our one-letter flags besides the Windows letters (which take any case).
+const LETTERS: [&str; 3] = ["-o", "-h", "-V"];
+
 /// Whether `s` is one of our subcommand words (not a window handle).
 fn is_word(s: &str) -> bool {
     WORDS.contains(&s)
@@ -636,7 +717,11 @@ fn unknown_argument(arg: &str) -> UsageError {
     }
     // `--colour=sonar` is compared by its flag, `color=sonar` is a `--set`.
     let name = arg.split_once('=').map_or(arg, |(name, _)| name);
+    // A one-letter flag in the other case (`-v` for the version, `-O`):
+    // too short for a misspelling to be measured, and typed so often.
+    let letter = LETTERS.iter().find(|l| l.eq_ignore_ascii_case(name));
     let nearest = match name.strip_prefix('-') {
+        Some(_) if letter.is_some() => letter.map(|l| l.to_string()),
         Some(flag) => {
             let bare = flag.trim_start_matches('-').replace('_', "-");
             let names = FLAGS
@@ -760,7 +845,21 @@ fn parse_size(text: &str) -> Result<Size, UsageError> {
         ))
     };
     let (w, h) = text.split_once(['x', 'X']).ok_or_else(bad)?;
-    let side = |s: &str| s.trim().parse().map_err(|_| bad());
+    let too_large = || {
+        UsageError(format!(
+            "--size {text}: too large (each side at most {MAX_SIDE} pixels)"
+        ))
+    };
+    // A side of digits past what a number holds is a size too large, not
+    // a misspelling (`4294967296x1` was "expected WIDTHxHEIGHT").
+    let side = |s: &str| -> Result<u32, UsageError> {
+        let s = s.trim();
+        match s.parse::<u32>() {
+            Ok(n) => Ok(n),
+            Err(_) if !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit()) => Err(too_large()),
+            Err(_) => Err(bad()),
+        }
+    };
     let size = Size::new(side(w)?, side(h)?);
     if size.is_empty() {
         return Err(UsageError(format!(
@@ -768,8 +867,14 @@ fn parse_size(text: &str) -> Result<Size, UsageError> {
         )));
     }
     if size.width.max(size.height) > MAX_SIDE {
+        return Err(too_large());
+    }
+    // Said here with the other bounds, before any other check or warning:
+    // `render` found it only once its output was asked about.
+    let most = crate::render::frame::MAX_PIXELS;
+    if size.pixels() > most {
         return Err(UsageError(format!(
-            "--size {text}: too large (each side at most {MAX_SIDE} pixels)"
+            "--size {text}: too large (at most {most} pixels in all)"
         )));
     }
     Ok(size)

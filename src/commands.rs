@@ -3,8 +3,8 @@
 use std::path::Path;
 use std::process::ExitCode;
 
-use crate::cli::Invocation;
 use crate::cli::output::{self, Format};
+use crate::cli::{Invocation, Set};
 use crate::console;
 use crate::mountain::Mountain;
 use crate::render::{Frame, Size, render_full_at};
@@ -28,27 +28,51 @@ pub fn mountain(settings: &Settings, open: Option<&Path>) -> Result<Mountain, St
     Ok(mountain)
 }
 
-/// Warns of each `--set` (or key flag) in `inv` that its `--open` leaves
-/// without effect in `render` and `heightmap`: one that only shapes the
-/// heights a generator makes ([`crate::mountain::HEIGHTS_ONLY`]), where
+/// The warnings of each `--set` (or key flag) in `inv` that its `--open`
+/// leaves without effect in `render` and `heightmap`: one that only shapes
+/// the heights a generator makes ([`crate::mountain::HEIGHTS_ONLY`]), where
 /// the heights are the data set's. Each is named as it was typed (`-seed
 /// 9` is no `--set seed=9` to the one who typed it). A preferences file's
 /// keys are no mistake of this run, and are not named.
-pub fn warn_heights_only(inv: &Invocation) {
-    let Some(path) = &inv.open else { return };
+pub fn heights_only_warnings(inv: &Invocation) -> Vec<String> {
+    let Some(path) = &inv.open else {
+        return Vec::new();
+    };
     let heights_only = |key: &str| crate::mountain::HEIGHTS_ONLY.iter().any(|k| k.name == key);
-    let typed = inv.sets.iter().zip(&inv.sets_as_typed);
-    for (_, typed) in typed.filter(|((key, _), _)| heights_only(key)) {
-        console::err(&format!(
-            "mountains: warning: {typed}: no effect with --open {}: \
+    let warning = |set: &Set| {
+        format!(
+            "mountains: warning: {}: no effect with --open {}: \
              the data set's heights are used as they are",
+            set.typed,
             path.display()
-        ));
+        )
+    };
+    inv.sets
+        .iter()
+        .filter(|set| heights_only(&set.key))
+        .map(warning)
+        .collect()
+}
+
+/// Says `warnings` (whole lines) on stderr: once nothing is left to
+/// refuse, so a refused command says only why (a warning, then a refusal
+/// of the same command, told of work it never did).
+fn say_warnings(warnings: &[String]) {
+    for line in warnings {
+        console::err(line);
     }
 }
 
-/// `mountains render`: one complete mountain to a PNG.
-pub fn render(settings: &Settings, open: Option<&Path>, size: Size, output: &Path) -> ExitCode {
+/// `mountains render`: one complete mountain to a PNG. `warnings` (about
+/// the preferences and the flags) are said once the picture is sure to be
+/// drawn: after every refusal, and after `--open`'s data set is read.
+pub fn render(
+    settings: &Settings,
+    open: Option<&Path>,
+    size: Size,
+    output: &Path,
+    warnings: &[String],
+) -> ExitCode {
     let refused = refuse_a_terminal(output)
         .or_else(|| refuse_the_data_set(open, output, "picture"))
         .or_else(|| refuse_an_unwritable_output(output));
@@ -81,6 +105,7 @@ pub fn render(settings: &Settings, open: Option<&Path>, size: Size, output: &Pat
         Ok(m) => m,
         Err(e) => return fail(&e),
     };
+    say_warnings(warnings);
     let drawn = shown.drawn_with(settings);
     render_full_at(
         &shown.field,
@@ -107,7 +132,13 @@ fn work_exponent(settings: &Settings, open: Option<&Path>) -> u32 {
 
 /// `mountains heightmap`: generate a data set and save it as a 16-bit PNG,
 /// or as raw 16-bit samples (`.r16`, `.raw`), whose height range it prints.
-pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> ExitCode {
+/// `warnings` are said as [`render`] says them.
+pub fn heightmap(
+    settings: &Settings,
+    open: Option<&Path>,
+    output: &Path,
+    warnings: &[String],
+) -> ExitCode {
     let refused = refuse_a_terminal(output)
         .or_else(|| refuse_the_data_set(open, output, "data set"))
         .or_else(|| refuse_an_unwritable_output(output));
@@ -123,6 +154,7 @@ pub fn heightmap(settings: &Settings, open: Option<&Path>, output: &Path) -> Exi
         Ok(m) => m,
         Err(e) => return fail(&e),
     };
+    say_warnings(warnings);
     // A data set saved again keeps the keys its file recorded.
     let settings = &shown.saved_with(settings);
     let (field, seed) = (shown.field, shown.seed);
@@ -190,9 +222,11 @@ fn refuse_an_unwritable_output(output: &Path) -> Option<ExitCode> {
     Some(fail(&cannot_write(output, &e)))
 }
 
-/// How a file `-o` names that cannot be written is said.
+/// How a file `-o` names that cannot be written is said: the flag, the
+/// file, and [`crate::fsutil::cannot_write`]'s words.
 fn cannot_write(output: &Path, e: &std::io::Error) -> String {
-    format!("-o {}: cannot write: {e}", output.display())
+    let why = crate::fsutil::cannot_write(e);
+    format!("-o {}: {why}", output.display())
 }
 
 /// Says which seed made the file.
@@ -225,18 +259,15 @@ fn fail(message: &str) -> ExitCode {
 /// there is no preferences file at the usual place (the defaults are in
 /// use, which is no mistake) and for the null device (`/dev/null`: no
 /// preferences); 1 for any problem in the file, or a named file missing;
-/// 2 for a bad `--set` (typed for the run, as in every mode), whatever
-/// the file: then a good file is said to be fine, but not "ok" alone.
-pub fn check_config(
-    path: Option<&Path>,
-    config: Option<&Path>,
-    sets: &[(String, String)],
-) -> ExitCode {
+/// 2 for a bad `--set` or key flag (`-color pink`: typed for the run, as
+/// in every mode), whatever the file: then a good file is said to be
+/// fine, but not "ok" alone.
+pub fn check_config(path: Option<&Path>, config: Option<&Path>, sets: &[Set]) -> ExitCode {
     // Said first: typed for this run, they are what to mend now, and a
     // file's flood of problems ends in "... and N more".
     let mistyped = report_bad_sets(sets);
     let checked = check_file(path, config, mistyped);
-    if mistyped {
+    if mistyped.is_some() {
         return ExitCode::from(EXIT_USAGE);
     }
     let printed = match checked {
@@ -245,33 +276,49 @@ pub fn check_config(
     };
     let printed = match sets.is_empty() {
         true => printed,
-        false => printed.and_then(|()| console::outln("--set: ok")),
+        false => printed.and_then(|()| console::outln(&format!("{}: ok", sets_named(sets)))),
     };
     console::status(printed, ExitCode::SUCCESS)
 }
 
-/// Says each `--set` whose key or value is bad; true if any was. A value's
-/// range and type do not depend on the other keys, so each is checked
-/// against the defaults.
-fn report_bad_sets(sets: &[(String, String)]) -> bool {
-    let problems: Vec<load::Problem> = sets
+/// How `--check-config`'s verdict names the sets it checked: `--set`
+/// when every one was typed so, else each as typed (`-color sonar`: a
+/// "--set: ok" named a flag no one typed).
+fn sets_named(sets: &[Set]) -> String {
+    if sets.iter().all(Set::by_set) {
+        return "--set".to_string();
+    }
+    let typed: Vec<&str> = sets.iter().map(|set| set.typed.as_str()).collect();
+    typed.join(" ")
+}
+
+/// Says each `--set` or key flag whose key or value is bad, named as it
+/// was typed; returns the first such, if any. A value's range and type do
+/// not depend on the other keys, so each is checked against the defaults.
+fn report_bad_sets(sets: &[Set]) -> Option<&Set> {
+    let bad: Vec<(&Set, load::Problem)> = sets
         .iter()
-        .filter_map(|(key, value)| load::apply_set(&mut Settings::default(), key, value).err())
+        .filter_map(|set| {
+            let checked = load::apply_set(&mut Settings::default(), &set.key, &set.value);
+            checked.err().map(|p| (set, set.named_as_typed(p)))
+        })
         .collect();
+    let problems: Vec<load::Problem> = bad.iter().map(|(_, p)| p.clone()).collect();
     for line in load::report_with(&problems, |p| console::error_line(&p.to_string())) {
         console::err(&line);
     }
-    !problems.is_empty()
+    bad.first().map(|&(set, _)| set)
 }
 
 /// The file part of [`check_config`]: its problems said, and `Err` with
 /// the exit code when there are any (or the file cannot be checked);
-/// `Ok` with what printing its verdict gave. `mistyped`: a `--set` given
-/// with it was refused, which the verdict of a good file must not hide.
+/// `Ok` with what printing its verdict gave. `mistyped`: the first `--set`
+/// or key flag given with it that was refused, which the verdict of a good
+/// file must not hide.
 fn check_file(
     path: Option<&Path>,
     config: Option<&Path>,
-    mistyped: bool,
+    mistyped: Option<&Set>,
 ) -> Result<std::io::Result<()>, ExitCode> {
     let named = path.or(config).map(Path::to_path_buf);
     let Some(file) = named.clone().or_else(paths::config_file) else {
@@ -310,30 +357,41 @@ fn check_file(
     if !problems.is_empty() {
         return Err(ExitCode::FAILURE);
     }
-    warn_of_a_missing_folder(&settings);
+    warn_of_a_missing_folder(&settings, &file);
     Ok(console::outln(&verdict(&file, mistyped)))
 }
 
 /// What `--check-config` says of a file without problems. A bare "ok"
-/// beside a refused `--set` (exit 2) read as if all were well.
-fn verdict(file: &Path, mistyped: bool) -> String {
+/// beside a refused `--set` (exit 2) read as if all were well; a key flag
+/// refused is named as typed (`-color pink`), as no `--set` was typed.
+fn verdict(file: &Path, mistyped: Option<&Set>) -> String {
     match mistyped {
-        false => format!("{}: ok", file.display()),
-        true => format!("{}: the file is ok; a --set is not", file.display()),
+        None => format!("{}: ok", file.display()),
+        Some(set) if set.by_set() => format!("{}: the file is ok; a --set is not", file.display()),
+        Some(set) => format!("{}: the file is ok; {} is not", file.display(), set.typed),
     }
 }
 
-/// Warns when `heightmaps_dir` names no folder: the value is well formed,
-/// but the slide show would show none of its heightmaps, and only say so in
-/// its log.
-fn warn_of_a_missing_folder(settings: &Settings) {
+/// Warns when `heightmaps_dir` in `file` names no folder: the value is
+/// well formed, but the slide show would show none of its heightmaps, and
+/// only say so in its log. Named as a problem in the file is, by file,
+/// line and key; a file where the folder should be is said to be one.
+fn warn_of_a_missing_folder(settings: &Settings, file: &Path) {
     let dir = settings.heightmaps_dir.as_deref();
-    if let Some(folder) = paths::heightmaps_folder(dir).filter(|f| !f.is_dir()) {
-        console::err(&format!(
-            "mountains: warning: heightmaps_dir {:?}: no such folder ({}); \
-             every slide is generated",
-            dir.unwrap_or_default(),
-            folder.display()
-        ));
-    }
+    let Some(folder) = paths::heightmaps_folder(dir).filter(|f| !f.is_dir()) else {
+        return;
+    };
+    let key = "heightmaps_dir";
+    let at = load::value_position(file, key).map_or(String::new(), |(l, c)| format!(":{l}:{c}"));
+    let what = match folder.exists() {
+        true => "not a folder",
+        false => "no such folder",
+    };
+    console::err(&format!(
+        "mountains: warning: {}{at}: key `{key}`: {:?}: {what} ({}); \
+         every slide is generated",
+        file.display(),
+        dir.unwrap_or_default(),
+        folder.display()
+    ));
 }

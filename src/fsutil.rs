@@ -102,6 +102,20 @@ fn kind_of(meta: &std::fs::Metadata) -> &'static str {
     crate::platform::os::special_file_kind(&t).unwrap_or("not a file")
 }
 
+/// How a read that failed is said, after the file it names (the path,
+/// and the flag that named it, are the caller's): one wording for every
+/// file we read, data sets and preferences alike.
+pub fn cannot_read(e: &io::Error) -> String {
+    format!("cannot read: {e}")
+}
+
+/// How a write that failed is said, after the file it names (the path,
+/// and the flag that named it, are the caller's): one wording for every
+/// file we write, pictures, data sets and preferences alike.
+pub fn cannot_write(e: &io::Error) -> String {
+    format!("cannot write: {e}")
+}
+
 /// Writes what `write` makes to `path`, or to standard output when `path`
 /// is `-` (`-o -`, for a pipe); see [`write_atomic_with`]. `write` is given
 /// the destination (buffered), so a large picture never exists whole in
@@ -123,7 +137,7 @@ pub fn write_output_with(
 /// to disk, then renamed over the target. A symbolic link is written
 /// through (its target is replaced, the link stays); a device or FIFO is
 /// written to directly (there is nothing to replace: `-o /dev/null` must
-/// not make a file); a folder is refused.
+/// not make a file); a folder and a read-only file are refused.
 pub fn write_atomic_with(
     path: &Path,
     write: impl FnOnce(&mut dyn Write) -> io::Result<()>,
@@ -145,8 +159,8 @@ pub fn write_target(path: &Path) -> io::Result<PathBuf> {
 }
 
 /// Whether a write to `path` ([`write_atomic_with`]) can begin: its folder
-/// is there and takes a new file, and `path` is no folder and no link to
-/// nowhere. Asked before a long work (a 4K picture, a large data set), so
+/// is there and takes a new file, and `path` is no folder, no read-only
+/// file and no link to nowhere. Asked before a long work (a 4K picture, a large data set), so
 /// a wrong `-o` is said at once rather than after it. The write's own
 /// temporary file is made and removed: the only sure test of leave to
 /// write in a folder. A device or FIFO is not opened (a FIFO's open would
@@ -156,6 +170,7 @@ pub fn writable(path: &Path) -> io::Result<()> {
     match std::fs::metadata(&target) {
         Ok(m) if m.is_dir() => Err(a_folder()),
         Ok(m) if !m.is_file() => Ok(()),
+        Ok(m) if m.permissions().readonly() => Err(read_only()),
         _ => {
             let tmp = temporary(&target)?;
             let _pending = partial::Pending::new(&tmp);
@@ -168,6 +183,17 @@ pub fn writable(path: &Path) -> io::Result<()> {
 /// The error of a write to a folder.
 fn a_folder() -> io::Error {
     io::Error::new(io::ErrorKind::InvalidInput, "is a folder, not a file")
+}
+
+/// The error of a write to a file its owner made read-only. The rename
+/// that replaces a file asks leave of its folder, not of the file, so a
+/// file kept from changes (`chmod a-w`) was replaced as if it were not:
+/// it is refused, as a shell's `>` or `cp` refuses it.
+fn read_only() -> io::Error {
+    io::Error::new(
+        io::ErrorKind::PermissionDenied,
+        "is read-only (its owner keeps it from changes)",
+    )
 }
 
 /// The temporary file beside `path` that a write fills before renaming
@@ -203,6 +229,7 @@ pub fn write_atomic_checked(
     let target = write_target(path)?;
     match std::fs::metadata(&target) {
         Ok(m) if m.is_dir() => Err(a_folder()),
+        Ok(m) if m.is_file() && m.permissions().readonly() => Err(read_only()),
         Ok(m) if !m.is_file() => {
             if !still_wanted()? {
                 return Ok(false);
@@ -230,6 +257,12 @@ fn replace_file(
         let mut out = io::BufWriter::new(File::create(&tmp)?);
         write(&mut out)?;
         let file = out.into_inner().map_err(|e| e.into_error())?;
+        // The file replaced keeps its owner's leave to read it: a private
+        // (0600) preferences file, which may hold where its owner lives,
+        // came back readable by all from the new file's defaults.
+        if let Ok(old) = std::fs::metadata(path) {
+            file.set_permissions(old.permissions())?;
+        }
         file.sync_all()?;
         if !still_wanted()? {
             return Ok(false);

@@ -47,7 +47,7 @@ Usage:
   mountains render -o OUT.png [--size WxH] [OPTIONS]   one mountain to a PNG (.jpg: JPEG);
                                                        WxH also 720p, 1080p, 1440p, 4k (2160p), 5k, 8k
   mountains heightmap -o OUT.png [OPTIONS]             generate and save a data set (.r16: raw)
-  mountains --check-config [FILE]      check a preferences file; exit 0 if good, 1 if not (2: a bad --set)
+  mountains --check-config [FILE]      check a preferences file; exit 0 if good, 1 if not (2: a bad --set or flag)
   mountains --help | --version
   mountains --xscreensaver-xml | --man-page   print contrib/mountains.xml or mountains.6
 

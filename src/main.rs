@@ -75,7 +75,7 @@ fn main() -> ExitCode {
         Mode::Settings { .. } => load::Unreadable::NewIfMissing,
         _ => load::Unreadable::Defaults,
     };
-    let loaded = match load::resolve(inv.config.as_deref(), &inv.sets, unreadable) {
+    let loaded = match load::resolve(inv.config.as_deref(), &inv.key_values(), unreadable) {
         Ok(l) => l,
         Err(p) => {
             console::error(&p.to_string());
@@ -85,14 +85,12 @@ fn main() -> ExitCode {
     let open = inv.open.as_deref();
     match &inv.mode {
         Mode::Render { size, output } => {
-            warn_problems(&loaded);
-            commands::warn_heights_only(&inv);
-            commands::render(&loaded.settings, open, *size, output)
+            let warnings = one_shot_warnings(&loaded, &inv);
+            commands::render(&loaded.settings, open, *size, output, &warnings)
         }
         Mode::Heightmap { output } => {
-            warn_problems(&loaded);
-            commands::warn_heights_only(&inv);
-            commands::heightmap(&loaded.settings, open, output)
+            let warnings = one_shot_warnings(&loaded, &inv);
+            commands::heightmap(&loaded.settings, open, output, &warnings)
         }
         Mode::Settings { parent } => {
             gui_log();
@@ -137,11 +135,15 @@ fn problem_warnings(loaded: &load::Loaded) -> Vec<String> {
     load::report_with(&loaded.problems, |p| format!("warning: {p}; {}", what(p)))
 }
 
-/// The one-shot commands say each problem on stderr, then do their work.
-fn warn_problems(loaded: &load::Loaded) {
-    for line in problem_warnings(loaded) {
-        console::err(&format!("mountains: {line}"));
-    }
+/// What the one-shot commands warn of on stderr (each problem of the
+/// preferences file, each key `--open` leaves without effect) before their
+/// work, and only if they do it.
+fn one_shot_warnings(loaded: &load::Loaded, inv: &cli::Invocation) -> Vec<String> {
+    let problems = problem_warnings(loaded).into_iter();
+    let problems = problems.map(|line| format!("mountains: {line}"));
+    problems
+        .chain(commands::heights_only_warnings(inv))
+        .collect()
 }
 
 /// The screensaver modes keep going on a broken or unreadable file: each

@@ -132,6 +132,6 @@ pub fn write_png(path: &Path, frame: &Frame) -> Result<(), String> {
 fn failure(e: &io::Error) -> String {
     match e.get_ref().and_then(|r| r.downcast_ref::<EncodeError>()) {
         Some(EncodeError(why)) => format!("cannot encode: {why}"),
-        None => format!("cannot write: {e}"),
+        None => crate::fsutil::cannot_write(e),
     }
 }

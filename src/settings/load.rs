@@ -92,9 +92,12 @@ fn kind_of(item: &Item) -> &'static str {
 }
 
 /// toml_edit's `message` said better where it leaves out what matters: the
-/// key of a duplicate, a key with nothing after `=`. `line` is the line the
-/// error is on. Returns the key concerned, if known, and the words.
-fn explain(message: &str, line: &str) -> (Option<String>, String) {
+/// key of a duplicate, a key with nothing after `=`, the key of a value it
+/// cannot read (`color = sonar`: "string values must be quoted", about no
+/// key) and what that key takes. `line` is the line the error is on, `at`
+/// the error's byte offset in it. Returns the key concerned, if known, and
+/// the words.
+fn explain(message: &str, line: &str, at: usize) -> (Option<String>, String) {
     let key = line
         .split_once('=')
         .map(|(k, _)| k.trim().trim_matches(['"', '\'']).to_string())
@@ -112,7 +115,18 @@ fn explain(message: &str, line: &str) -> (Option<String>, String) {
     if message.contains("overflow") {
         return (key, message.to_string());
     }
-    (None, message.to_string())
+    // An error after the `=` is in the value: its key is the one before
+    // it. One before the `=` is in the key itself, which is no key yet.
+    let in_value = line.find('=').is_some_and(|eq| at > eq);
+    match key.filter(|_| in_value) {
+        Some(key) => {
+            let takes = keys::find(&key).map_or(String::new(), |k| {
+                format!("; it takes {}", k.kind.allowed())
+            });
+            (Some(key), format!("{message}{takes}"))
+        }
+        None => (None, message.to_string()),
+    }
 }
 
 /// What to do about a TOML error a person is likely to meet, on the key
@@ -140,6 +154,13 @@ impl<'a> Lines<'a> {
             .chain(text.match_indices('\n').map(|(i, _)| i + 1))
             .collect();
         Lines { text, starts }
+    }
+
+    /// Where the line holding byte `offset` starts.
+    fn start_of(&self, offset: usize) -> usize {
+        let offset = offset.min(self.text.len());
+        let line = self.starts.partition_point(|&s| s <= offset);
+        self.starts[line - 1]
     }
 
     /// The text of the line holding byte `offset`.
@@ -200,8 +221,10 @@ pub fn apply_toml(settings: &mut Settings, text: &str, source: &str) -> Vec<Prob
         Err(e) => {
             let start = e.span().map(|s| s.start);
             let line = start.map_or("", |o| lines.line_of(o));
-            // toml_edit names neither the key of a duplicate nor a missing value.
-            let (key, said) = explain(e.message(), line);
+            let in_line = start.map_or(0, |o| o - lines.start_of(o));
+            // toml_edit names neither the key of a duplicate nor a missing
+            // value, nor the key whose value it cannot read.
+            let (key, said) = explain(e.message(), line, in_line);
             let message = format!(
                 "not valid TOML: {said}{}",
                 hint(e.message(), key.as_deref())
@@ -296,6 +319,18 @@ fn parse_set_value(raw: &str) -> Value {
     }
 }
 
+/// Where the value of `key` stands in the preferences file at `path`
+/// (1-based line and column), if the file reads and holds it: what a
+/// warning about a good value (a folder that is not there) names, as a
+/// [`Problem`] names a bad one.
+pub fn value_position(path: &Path, key: &str) -> Option<(usize, usize)> {
+    let bytes = crate::fsutil::read_regular(path, crate::fsutil::MAX_PREFERENCES_BYTES).ok()?;
+    let (text, _) = super::text::decode(bytes).ok()?;
+    let doc = Document::parse(text.as_str()).ok()?;
+    let start = doc.as_table().get(key)?.span()?.start;
+    Some(Lines::new(&text).line_col(start))
+}
+
 /// Reads the file at `path` and applies it on top of `settings`. An
 /// unreadable file is one problem; the settings are then left unchanged.
 pub fn apply_file(settings: &mut Settings, path: &Path) -> Vec<Problem> {
@@ -315,7 +350,7 @@ pub fn apply_file(settings: &mut Settings, path: &Path) -> Vec<Problem> {
             source,
             position: None,
             key: None,
-            message: format!("cannot read: {e}"),
+            message: crate::fsutil::cannot_read(&e),
             reach: Reach::Unreadable,
         }],
     }

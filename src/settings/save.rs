@@ -225,7 +225,7 @@ fn read_text(path: &Path) -> Result<Option<(String, Form)>, SaveError> {
             )
         }),
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(None),
-        Err(e) => Err(io_error(path, format!("cannot read: {e}"), &e)),
+        Err(e) => Err(io_error(path, crate::fsutil::cannot_read(&e), &e)),
     }
 }
 
@@ -245,7 +245,7 @@ fn write_unless_changed(
     let unchanged =
         || Ok(matches!(read_text(path), Ok(now) if now.as_ref().map(|(t, _)| t) == was.as_ref()));
     crate::fsutil::write_atomic_checked(path, |w| w.write_all(merged), unchanged)
-        .map_err(|e| io_error(path, format!("cannot write: {e}"), &e))
+        .map_err(|e| io_error(path, crate::fsutil::cannot_write(&e), &e))
 }
 
 /// The value to write for `key`, after the key table has accepted it.

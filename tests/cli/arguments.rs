@@ -69,7 +69,7 @@ fn shared_options_go_with_every_mode() {
     assert_eq!(inv.config, Some(PathBuf::from("a.toml")));
     assert_eq!(inv.open, Some(PathBuf::from("h.png")));
     assert_eq!(
-        inv.sets,
+        inv.key_values(),
         vec![
             ("color".into(), "sonar".into()),
             ("detail".into(), "6".into())
@@ -175,6 +175,19 @@ fn a_mistyped_flag_offers_the_nearest() {
     }
 }
 
+/// `--size` bounds the pixels in all as it bounds each side, as the
+/// arguments are read: `render` said it only after asking about its `-o`.
+#[test]
+fn size_bounds_the_pixels_in_all() {
+    for size in ["32768x32768", "16385x16384"] {
+        let e = parse(&["render", "-o", "x.png", "--size", size]).unwrap_err();
+        let want = format!("--size {size}: too large (at most 268435456 pixels in all)");
+        assert_eq!(e.0, want);
+    }
+    let inv = parse(&["render", "-o", "x.png", "--size", "16384x16384"]);
+    assert!(inv.is_ok(), "{:?}", inv.err());
+}
+
 /// `--size` bounds each side (a frame 2^28 pixels wide and one high took
 /// 97 s and 3.5 GB though its pixel count is allowed), and says so naming
 /// the flag; the bound itself is taken.
@@ -254,7 +267,7 @@ fn every_key_is_a_flag_of_its_own() {
     let got: Vec<(&str, &str)> = inv
         .sets
         .iter()
-        .map(|(k, v)| (k.as_str(), v.as_str()))
+        .map(|set| (set.key.as_str(), set.value.as_str()))
         .collect();
     assert_eq!(got, want);
     // Each flag with a value it accepts, its key's default: a value out of
@@ -269,7 +282,7 @@ fn every_key_is_a_flag_of_its_own() {
         };
         let args: &[&str] = if boolean { &[&flag] } else { &[&flag, &value] };
         let inv = parse(args).unwrap_or_else(|e| panic!("{flag}: {e}"));
-        assert_eq!(inv.sets[0].0, key.name, "{flag}");
+        assert_eq!(inv.sets[0].key, key.name, "{flag}");
     }
     let e = parse(&["-cragginess"]).unwrap_err().0;
     assert!(
@@ -289,7 +302,7 @@ fn one_dash_takes_a_value_after_an_equals_sign() {
     let sets: Vec<(&str, &str)> = inv
         .sets
         .iter()
-        .map(|(k, v)| (k.as_str(), v.as_str()))
+        .map(|set| (set.key.as_str(), set.value.as_str()))
         .collect();
     assert_eq!(sets, [("seed", "5"), ("color", "sonar")]);
     assert_eq!(inv.config, Some(PathBuf::from("f.toml")));
@@ -298,6 +311,38 @@ fn one_dash_takes_a_value_after_an_equals_sign() {
     assert!(e.starts_with("-cragginess: "), "{e}");
     let e = parse(&["-fps=1"]).unwrap_err().0;
     assert!(e.contains("-fps takes no value"), "{e}");
+}
+
+/// Each set keeps its key, its value and how it was typed together, in
+/// the order given: a message about one names it as typed. (They were
+/// two vectors side by side, kept in step by hand.)
+#[test]
+fn each_set_keeps_how_it_was_typed() {
+    let inv = parse(&[
+        "-seed",
+        "9",
+        "--set",
+        "color=sonar",
+        "--cragginess=40",
+        "-no-shadows",
+        "-set=detail=6",
+    ])
+    .unwrap_or_else(|e| panic!("{e}"));
+    let got: Vec<(&str, &str, &str)> = inv
+        .sets
+        .iter()
+        .map(|set| (set.key.as_str(), set.value.as_str(), set.typed.as_str()))
+        .collect();
+    assert_eq!(
+        got,
+        [
+            ("seed", "9", "-seed 9"),
+            ("color", "sonar", "--set color=sonar"),
+            ("cragginess", "40", "--cragginess=40"),
+            ("shadows", "false", "-no-shadows"),
+            ("detail", "6", "-set=detail=6"),
+        ]
+    );
 }
 
 /// xscreensaver's common options, `--version`, and its dialog's preview
@@ -491,4 +536,74 @@ fn a_file_flag_given_twice_is_refused_naming_both() {
         let e = parse(args).expect_err(&format!("{args:?} should fail"));
         assert_eq!(e.0, said, "{args:?}");
     }
+}
+
+/// `--size` given twice is refused naming both as typed, as the file
+/// flags are: the last one won, and the first was passed over in
+/// silence. Nothing we ship repeats it. `-delay` and `-display` keep the
+/// last, as X toolkit programs and xscreensaver's hacks do (a command line
+/// edited in xscreensaver's settings may repeat `-delay`).
+#[test]
+fn a_second_size_is_refused_and_delay_and_display_keep_the_last() {
+    for (args, said) in [
+        (
+            &["render", "-o", "x.png", "--size", "640x480", "--size", "4k"][..],
+            "`--size 4k` given after `--size 640x480`: give one size",
+        ),
+        (
+            &["render", "--size=1080p", "-o", "x.png", "-size", "1x1"],
+            "`-size 1x1` given after `--size=1080p`: give one size",
+        ),
+    ] {
+        let e = parse(args).expect_err(&format!("{args:?} should fail"));
+        assert_eq!(e.0, said, "{args:?}");
+    }
+    let inv = parse(&[
+        "-root",
+        "-delay",
+        "10",
+        "-delay=20",
+        "-display",
+        ":1",
+        "--display",
+        ":2",
+    ])
+    .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(inv.xss.delay_us, Some(20));
+    assert_eq!(inv.xss.display.as_deref(), Some(":2"));
+}
+
+/// A one-letter flag typed in the other case is offered as ours: `-v`
+/// (the version, as many programs spell it) said only "unknown argument".
+#[test]
+fn a_letter_in_the_other_case_is_offered_as_ours() {
+    for (typed, ours) in [("-v", "-V"), ("-O", "-o"), ("-H", "-h")] {
+        let e = parse(&[typed]).unwrap_err();
+        let want = format!("unknown argument `{typed}`; did you mean `{ours}`?");
+        assert_eq!(e.0, want);
+    }
+}
+
+/// `--set =5` names no key: said as `--set color` is (expected
+/// key=value), where it was "key ``: unknown key" once the file was read.
+#[test]
+fn a_set_without_a_key_is_refused_as_read() {
+    for typed in ["=5", " =5", "="] {
+        let e = parse(&["--set", typed]).unwrap_err();
+        assert_eq!(e.0, format!("--set {typed}: expected key=value"));
+    }
+}
+
+/// A side of digits too many for a number is a size too large, as 32769
+/// is, not a misspelling: `--size 4294967296x1` said "expected
+/// WIDTHxHEIGHT".
+#[test]
+fn a_side_past_any_number_is_too_large() {
+    for size in ["4294967296x1", "1x99999999999999999999"] {
+        let e = parse(&["render", "-o", "x.png", "--size", size]).unwrap_err();
+        let want = format!("--size {size}: too large (each side at most 32768 pixels)");
+        assert_eq!(e.0, want);
+    }
+    let e = parse(&["render", "-o", "x.png", "--size", "1.5x2"]).unwrap_err();
+    assert!(e.0.contains("expected WIDTHxHEIGHT"), "{e}");
 }

@@ -727,6 +727,33 @@ fn check_config_warns_of_a_heightmaps_folder_that_is_not_there() {
     assert!(!stderr(&o).contains("no such folder"), "{}", stderr(&o));
 }
 
+/// The warning of a `heightmaps_dir` that names no folder names the file,
+/// line and key, as a problem in the file is named (it named only the
+/// key), and a file where the folder should be as not a folder (it said
+/// "no such folder" of a file that is there).
+#[test]
+fn check_config_names_the_line_of_a_heightmaps_folder_that_is_not_there() {
+    let dir = scratch("check-config-folder-line");
+    let file = dir.join("p.toml");
+    let in_the_way = dir.join("a-file");
+    std::fs::write(&in_the_way, "").unwrap();
+    for (target, what) in [
+        (dir.join("no-maps"), "no such folder"),
+        (in_the_way, "not a folder"),
+    ] {
+        let value = arg(&target);
+        std::fs::write(&file, format!("seed = 5\nheightmaps_dir = {value:?}\n")).unwrap();
+        let o = mountains(&["--check-config", &arg(&file)]);
+        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+        let said = format!(
+            "mountains: warning: {}:2:18: key `heightmaps_dir`: {value:?}: {what} ({value}); \
+             every slide is generated\n",
+            file.display()
+        );
+        assert_eq!(stderr(&o), said);
+    }
+}
+
 /// A key this version does not know (the settings screen keeps it) is a
 /// warning with a suggestion for `render`, and still a failure for
 /// `--check-config`.
@@ -1119,6 +1146,205 @@ fn check_config_with_a_bad_set_says_no_bare_ok() {
     ]);
     let out = String::from_utf8_lossy(&o.stdout);
     assert_eq!(out, format!("{}: ok\n--set: ok\n", good.display()));
+}
+
+/// A key flag with a bad value beside `--check-config` (`-color pink`)
+/// is said as a bad `--set` is: named as typed, after it the file's own
+/// verdict, exit 2. It was refused while the arguments were read, and
+/// the file went unchecked: the user was not told whether it was ok.
+#[test]
+fn check_config_with_a_bad_key_flag_still_checks_the_file() {
+    let dir = scratch("check-config-key-flag");
+    let good = dir.join("good.toml");
+    std::fs::write(&good, "seed = 5\n").unwrap();
+    let good = arg(&good);
+    for (args, typed) in [
+        (
+            vec!["--check-config", &good, "-color", "pink"],
+            "-color pink",
+        ),
+        (
+            vec!["--check-config", &good, "--color=pink"],
+            "--color=pink",
+        ),
+        (
+            vec!["--config", &good, "--check-config", "-cragginess", "500"],
+            "-cragginess 500",
+        ),
+    ] {
+        let o = mountains(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        let flag = typed.split([' ', '=']).next().unwrap();
+        let err = stderr(&o);
+        assert!(
+            err.starts_with(&format!("mountains: error: {flag}: "))
+                && err.contains("is not allowed"),
+            "{args:?}: {err}"
+        );
+        let out = String::from_utf8_lossy(&o.stdout);
+        assert_eq!(
+            out,
+            format!("{good}: the file is ok; {typed} is not\n"),
+            "{args:?}"
+        );
+    }
+    // A bad file beside it: both are said, the flag first.
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, "cragginess = 500\n").unwrap();
+    let o = mountains(&["--check-config", &arg(&bad), "-color", "pink"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let err = stderr(&o);
+    let (flag, file) = (
+        err.find("-color: "),
+        err.find("bad.toml:1:14: key `cragginess`"),
+    );
+    assert!(flag.is_some() && file.is_some() && flag < file, "{err}");
+    // A good flag is named as typed, not as a `--set` no one typed.
+    let o = run(&["--check-config", &good, "-color", "sonar"]);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(out, format!("{good}: ok\n-color sonar: ok\n"));
+    // Every other mode still refuses it before any work, as typed.
+    let o = mountains(&["render", "-o", &arg(&dir.join("x.png")), "-color", "pink"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        stderr(&o).starts_with("mountains: error: -color: "),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!dir.join("x.png").exists());
+}
+
+/// A data set and a preferences file that cannot be read are said in
+/// one wording, the flag and the file first: `--open` said "cannot be
+/// read" where `--config` said "cannot read", which read as two faults.
+#[test]
+fn a_failed_read_is_said_alike_for_data_sets_and_preferences() {
+    let dir = scratch("read-alike");
+    let out = arg(&dir.join("x.png"));
+    for (flag, name) in [("--open", "missing.png"), ("--config", "missing.toml")] {
+        let missing = arg(&dir.join(name));
+        let o = mountains(&["render", "--size", "8x8", flag, &missing, "-o", &out]);
+        assert_ne!(o.status.code(), Some(0));
+        let err = stderr(&o);
+        let said = format!("mountains: error: {flag} {missing}: cannot read: ");
+        assert!(err.starts_with(&said), "{err}");
+    }
+    let folder = dir.join("a-folder.png");
+    std::fs::create_dir_all(&folder).unwrap();
+    let o = mountains(&["render", "--open", &arg(&folder), "-o", &out]);
+    let said = format!("--open {}: cannot read: is a folder", folder.display());
+    assert!(stderr(&o).contains(&said), "{}", stderr(&o));
+}
+
+/// A file its owner made read-only is not replaced by `-o`: the rename
+/// that replaces a file asks leave of its folder, not of the file, so
+/// `render -o kept.png` replaced a `chmod a-w` file that a shell's `>`
+/// would have refused. It is refused before any work, exit 1, the file
+/// left as it was (also for root, who may write anything: the file's own
+/// bits say it is to be kept).
+#[test]
+fn a_read_only_file_is_not_replaced() {
+    let dir = scratch("read-only-output");
+    for (mode, name) in [
+        (&["render", "--size", "8x8"][..], "kept.png"),
+        (&["heightmap", "--set", "detail=3"], "kept.r16"),
+    ] {
+        let kept = dir.join(name);
+        std::fs::write(&kept, b"precious").unwrap();
+        let mut permissions = std::fs::metadata(&kept).unwrap().permissions();
+        permissions.set_readonly(true);
+        std::fs::set_permissions(&kept, permissions).unwrap();
+        let out = arg(&kept);
+        let args = [mode, &["-o", &out]].concat();
+        let o = mountains(&args);
+        assert_eq!(o.status.code(), Some(1), "{args:?}: {}", stderr(&o));
+        let said = format!(
+            "mountains: error: -o {}: cannot write: is read-only",
+            kept.display()
+        );
+        assert!(stderr(&o).starts_with(&said), "{}", stderr(&o));
+        assert!(o.stdout.is_empty(), "{args:?}");
+        assert_eq!(std::fs::read(&kept).unwrap(), b"precious");
+    }
+}
+
+/// `-o` over a file keeps its leave to read it (a private picture stays
+/// private): the new file was made with the defaults.
+#[cfg(unix)]
+#[test]
+fn a_replaced_output_keeps_its_permissions() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = scratch("private-output");
+    let private = dir.join("private.png");
+    std::fs::write(&private, b"old").unwrap();
+    std::fs::set_permissions(&private, std::fs::Permissions::from_mode(0o600)).unwrap();
+    run(&["render", "--size", "8x8", "-o", &arg(&private)]);
+    assert_eq!(png_size(&private), (8, 8));
+    let mode = std::fs::metadata(&private).unwrap().permissions().mode();
+    assert_eq!(mode & 0o777, 0o600, "{mode:o}");
+}
+
+/// A command refused before its work says only why: no warning about
+/// the preferences or the flags comes before the refusal (a warning of
+/// `-seed 9` beside `--open`, then a refusal of the `-o`, told of work
+/// it never did). The same warnings are said when the work is done.
+#[test]
+fn a_refused_command_says_no_warnings_first() {
+    let dir = scratch("refused-first");
+    let h = dir.join("h.png");
+    small_data_set(&h);
+    let config = dir.join("prefs.toml");
+    std::fs::write(&config, "nonsense = 1\n").unwrap();
+    let broken = dir.join("broken.png");
+    std::fs::write(&broken, b"\x89PNG\r\n\x1a\nnot a png at all").unwrap();
+    let (h, config) = (arg(&h), arg(&config));
+    let missing_folder = arg(&dir.join("no-such-folder").join("x.png"));
+    let common = ["--config", &config, "-seed", "9"];
+    for (mode, open, output, code) in [
+        (
+            &["render", "--size", "40x30"][..],
+            h.as_str(),
+            missing_folder.as_str(),
+            1,
+        ),
+        (&["heightmap"], h.as_str(), missing_folder.as_str(), 1),
+        (&["render", "--size", "40x30"], h.as_str(), h.as_str(), 2),
+        (&["heightmap"], h.as_str(), h.as_str(), 2),
+        (
+            &["render", "--size", "32768x32768"],
+            h.as_str(),
+            &arg(&dir.join("big.png")),
+            2,
+        ),
+        (
+            &["render", "--size", "40x30"],
+            &arg(&broken),
+            &arg(&dir.join("r.png")),
+            1,
+        ),
+        (&["heightmap"], &arg(&broken), &arg(&dir.join("d.png")), 1),
+    ] {
+        let args: Vec<&str> = [mode, &common, &["--open", open, "-o", output]].concat();
+        let o = mountains(&args);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(code), "{args:?}: {err}");
+        assert!(!err.contains("warning:"), "{args:?}: {err}");
+        assert!(err.starts_with("mountains: error: "), "{args:?}: {err}");
+    }
+    // Done, the work is warned of as before.
+    let done = arg(&dir.join("done.png"));
+    let args = [
+        &["render", "--size", "40x30"][..],
+        &common,
+        &["--open", &h, "-o", &done],
+    ]
+    .concat();
+    let err = stderr(&run(&args));
+    assert!(
+        err.contains("warning: -seed 9: no effect with --open"),
+        "{err}"
+    );
+    assert!(err.contains("prefs.toml:1:1: key `nonsense`"), "{err}");
 }
 
 /// An `-o` the write would refuse, a folder that is not there or a

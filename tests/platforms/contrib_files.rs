@@ -104,7 +104,8 @@ fn settings_of(command: &str) -> mountains::settings::Settings {
     assert_eq!(inv.mode, Mode::XRoot, "{command}");
     let empty = std::env::temp_dir().join(format!("mountains-contrib-{}.toml", std::process::id()));
     std::fs::write(&empty, "").expect("write empty config");
-    let loaded = load::resolve(Some(&empty), &inv.sets, load::Unreadable::Refuse).expect("resolve");
+    let loaded =
+        load::resolve(Some(&empty), &inv.key_values(), load::Unreadable::Refuse).expect("resolve");
     assert!(
         loaded.problems.is_empty(),
         "{command}: {:?}",

@@ -134,6 +134,42 @@ fn syntax_error_names_line_and_column_and_uses_nothing() {
     assert_eq!(s, Settings::default());
 }
 
+/// A value TOML cannot read names its key and what the key takes: `color
+/// = sonar` said only "string values must be quoted", about no key. An
+/// error in the key itself (before the `=`) names none.
+#[test]
+fn syntax_error_in_a_value_names_its_key_and_what_it_takes() {
+    for (text, key, position, takes) in [
+        (
+            "seed = 5\ncolor = sonar\n",
+            "color",
+            (2, 9),
+            "one of \"natural\"",
+        ),
+        ("lakes = yes\n", "lakes", (1, 9), "true or false"),
+        (
+            "sea_level = .5\n",
+            "sea_level",
+            (1, 13),
+            "a number from -1 to 1",
+        ),
+    ] {
+        let (s, problems) = load_text(text);
+        assert_eq!(problems.len(), 1, "{text:?}");
+        let p = &problems[0];
+        assert_eq!(p.key.as_deref(), Some(key), "{p}");
+        assert_eq!(p.position, Some(position), "{p}");
+        assert!(p.message.starts_with("not valid TOML: "), "{p}");
+        assert!(p.message.contains(&format!("; it takes {takes}")), "{p}");
+        assert_eq!(s, Settings::default());
+    }
+    let (_, problems) = load_text("se ed = 1\n");
+    assert_eq!(problems[0].key, None, "{}", problems[0]);
+    let (_, problems) = load_text("mystery = yes\n");
+    assert_eq!(problems[0].key.as_deref(), Some("mystery"));
+    assert!(!problems[0].message.contains("it takes"), "{}", problems[0]);
+}
+
 #[test]
 fn wrong_type_names_the_expected_values() {
     let (_, problems) = load_text("shadows = 1\ncolor = \"pink\"\n");

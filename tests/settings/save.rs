@@ -355,6 +355,44 @@ fn the_advice_after_a_failed_save_follows_its_cause() {
     assert!(read_only.advice().contains("writable"));
 }
 
+/// A preferences file its owner made read-only is not replaced by a save
+/// (the rename asks leave of the folder, not of the file): refused, with
+/// the advice to make it writable, the file as it was.
+#[test]
+fn a_read_only_preferences_file_is_not_replaced() {
+    let dir = scratch("read-only");
+    let file = dir.join("mountains.toml");
+    std::fs::write(&file, "seed = 5\n").unwrap();
+    let mut permissions = std::fs::metadata(&file).unwrap().permissions();
+    permissions.set_readonly(true);
+    std::fs::set_permissions(&file, permissions).unwrap();
+    let e = save::save(&file, &Settings::default()).unwrap_err();
+    assert!(e.message.starts_with("cannot write: is read-only"), "{e}");
+    assert!(e.advice().contains("writable"), "{}", e.advice());
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), "seed = 5\n");
+}
+
+/// A save keeps the file's leave to read it: a private (0600) preferences
+/// file, which may hold where its owner lives (`latitude`, `longitude`),
+/// came back readable by all (0644) from the new file's defaults.
+#[cfg(unix)]
+#[test]
+fn a_save_keeps_a_private_file_private() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = scratch("private");
+    let file = dir.join("mountains.toml");
+    std::fs::write(&file, "latitude = 51.5\n").unwrap();
+    std::fs::set_permissions(&file, std::fs::Permissions::from_mode(0o600)).unwrap();
+    let settings = Settings {
+        seed: Some(7),
+        ..Settings::default()
+    };
+    save::save(&file, &settings).unwrap();
+    assert!(std::fs::read_to_string(&file).unwrap().contains("seed = 7"));
+    let mode = std::fs::metadata(&file).unwrap().permissions().mode();
+    assert_eq!(mode & 0o777, 0o600, "{mode:o}");
+}
+
 fn key(name: &str) -> &'static mountains::settings::keys::Key {
     mountains::settings::keys::find(name).unwrap()
 }

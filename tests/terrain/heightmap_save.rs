@@ -71,8 +71,30 @@ fn missing_folder_is_an_error_naming_the_file() {
     )
     .unwrap_err();
     assert_eq!(e.kind, ErrorKind::Io);
-    assert!(e.problem.contains("cannot be written"), "{e}");
+    assert!(e.problem.starts_with("cannot write: "), "{e}");
     assert!(e.to_string().contains("m.png"), "{e}");
+}
+
+/// A data set, a picture and a screenshot that cannot be written are
+/// said in one wording, the file first: a data set's "cannot be written"
+/// beside a picture's "cannot write" read as two faults.
+#[test]
+fn a_failed_write_is_said_alike_for_data_sets_and_pictures() {
+    let dir = temp_dir("save-alike");
+    let target = dir.join("no/such/folder/m.png");
+    let setup = crate::common::terrain_setup::temperate();
+    let data_set = save(&target, &field(4, 400.0), None, &setup).unwrap_err();
+    let frame = mountains::render::Frame::new(4, 3).unwrap();
+    let screenshot = mountains::snapshot::write_png(&target, &frame).unwrap_err();
+    assert_eq!(data_set.to_string(), screenshot);
+    let picture =
+        mountains::snapshot::write_picture(&target, &frame, mountains::cli::output::Format::Png)
+            .unwrap_err();
+    assert_eq!(format!("-o {data_set}"), picture);
+    let missing = std::io::Error::from(std::io::ErrorKind::NotFound);
+    let said = mountains::fsutil::cannot_write(&missing);
+    assert!(said.starts_with("cannot write: "), "{said}");
+    assert!(screenshot.starts_with(&format!("{}: cannot write: ", target.display())));
 }
 
 #[test]

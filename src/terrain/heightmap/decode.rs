@@ -105,7 +105,7 @@ fn head<R: Read + Seek>(input: &mut R) -> io::Result<Vec<u8>> {
 /// Reads the first 8 bytes, names what is not a PNG, and rewinds.
 fn check_signature<R: Read + Seek>(input: &mut R, path: &Path) -> Result<(), HeightmapError> {
     let io =
-        |e: io::Error| HeightmapError::new(path, ErrorKind::Io, format!("cannot be read: {e}"));
+        |e: io::Error| HeightmapError::new(path, ErrorKind::Io, crate::fsutil::cannot_read(&e));
     let head = head(input).map_err(io)?;
     if head == SIGNATURE {
         return Ok(());
@@ -295,7 +295,7 @@ fn png_error(path: &Path, e: DecodingError) -> HeightmapError {
             )
         }
         DecodingError::IoError(io) => {
-            HeightmapError::new(path, ErrorKind::Io, format!("cannot be read: {io}"))
+            HeightmapError::new(path, ErrorKind::Io, crate::fsutil::cannot_read(&io))
         }
         DecodingError::LimitsExceeded => HeightmapError::new(
             path,

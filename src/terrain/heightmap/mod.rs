@@ -110,7 +110,7 @@ pub fn save(
 ) -> Result<(), HeightmapError> {
     let bytes = encode(field, seed, settings, path)?;
     crate::fsutil::write_output_with(path, |w| w.write_all(&bytes))
-        .map_err(|e| HeightmapError::new(path, ErrorKind::Io, format!("cannot be written: {e}")))
+        .map_err(|e| HeightmapError::new(path, ErrorKind::Io, crate::fsutil::cannot_write(&e)))
 }
 
 /// The largest data set file read: a 4097x4097 16-bit PNG stored without
@@ -149,7 +149,7 @@ pub fn data_set_extensions() -> String {
 /// whole, at most [`MAX_FILE_BYTES`]: a PNG, or else raw samples.
 pub fn load(path: &Path) -> Result<DataSet, HeightmapError> {
     let io = |e: std::io::Error| {
-        HeightmapError::new(path, ErrorKind::Io, format!("cannot be read: {e}"))
+        HeightmapError::new(path, ErrorKind::Io, crate::fsutil::cannot_read(&e))
     };
     if path == Path::new("-") {
         use std::io::IsTerminal;

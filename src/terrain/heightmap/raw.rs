@@ -35,7 +35,8 @@ pub fn read(mut input: impl Read, len: u64, path: &Path) -> Result<RawGrid, Heig
     let mut text = Text::default();
     for y in 0..side {
         input.read_exact(&mut row).map_err(|e| {
-            let problem = format!("cannot be read: {e} (row {y} of {side})");
+            let why = crate::fsutil::cannot_read(&e);
+            let problem = format!("{why} (row {y} of {side})");
             HeightmapError::new(path, ErrorKind::Truncated, problem)
         })?;
         text.take(&row);
