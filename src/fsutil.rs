@@ -160,8 +160,8 @@ pub fn write_target(path: &Path) -> io::Result<PathBuf> {
 
 /// Whether a write to `path` ([`write_atomic_with`]) can begin: its folder
 /// is there and takes a new file, and `path` is no folder, no read-only
-/// file and no link to nowhere. Asked before a long work (a 4K picture, a large data set), so
-/// a wrong `-o` is said at once rather than after it. The write's own
+/// file and no link to nowhere. Asked before a long work (a 4K picture, a
+/// large data set), so a wrong `-o` is said at once rather than after it. The write's own
 /// temporary file is made and removed: the only sure test of leave to
 /// write in a folder. A device or FIFO is not opened (a FIFO's open would
 /// wait for a reader).
