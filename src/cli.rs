@@ -249,7 +249,8 @@ impl Parser<'_> {
         }
         let mode = mode.map_or_else(default_mode, |(m, _)| m);
         self.inv.mode = finish_mode(mode, output, size)?;
-        one_file_to_check(&self.inv)
+        one_file_to_check(&self.inv)?;
+        nothing_to_open(&self.inv)
     }
 }
 
@@ -269,6 +270,26 @@ fn one_file_to_check(inv: &Invocation) -> Result<(), UsageError> {
         }
         _ => Ok(()),
     }
+}
+
+/// `--open` with a mode that shows no mountain (`--check-config`, the
+/// settings screen, the printed files): the data set would be passed over
+/// in silence, and `--check-config` said "ok" of a file it never read.
+fn nothing_to_open(inv: &Invocation) -> Result<(), UsageError> {
+    let what = match inv.mode {
+        Mode::CheckConfig(_) => "--check-config checks a preferences file only",
+        Mode::Settings { .. } => "the settings screen opens data sets from its own list",
+        Mode::XscreensaverXml | Mode::ManPage => "it prints a file and shows no mountain",
+        Mode::ChangePassword => "/a changes no password and shows no mountain",
+        _ => return Ok(()),
+    };
+    let Some(open) = &inv.open else {
+        return Ok(());
+    };
+    Err(UsageError(format!(
+        "--open {}: no data set is opened here: {what}",
+        open.display()
+    )))
 }
 
 /// The flags that take no value (as they are matched: see `long_name`).

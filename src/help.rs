@@ -54,9 +54,10 @@ Usage:
 Options (every mode):
   --config FILE      preferences file instead of the usual one
   --set KEY=VALUE    override one preference (repeatable), e.g. --set color=sonar
-  --open FILE        show a saved data set: a grayscale PNG heightmap, ours or a
-                     terrain tool's, or raw 16-bit samples (.r16, .raw); - reads
-                     standard input (heightmap -o - | mountains --open -)
+  --open FILE        show a saved data set (the modes that show a mountain): a
+                     grayscale PNG heightmap, ours or a terrain tool's, or raw
+                     16-bit samples (.r16, .raw); - reads standard input
+                     (heightmap -o - | mountains --open -)
   -KEY VALUE         every preference key is a flag too (dashes for underscores):
                      -cragginess 40, --color sonar; booleans -shadows / -no-shadows
 

@@ -607,3 +607,37 @@ fn a_side_past_any_number_is_too_large() {
     let e = parse(&["render", "-o", "x.png", "--size", "1.5x2"]).unwrap_err();
     assert!(e.0.contains("expected WIDTHxHEIGHT"), "{e}");
 }
+
+/// `--open` beside a mode that shows no mountain is refused, naming the
+/// file and why: `--check-config` said "ok" of a preferences file while
+/// the data set went unread, and the settings screen and the printed
+/// files passed it over in silence. The modes that show one take it.
+#[test]
+fn a_data_set_is_refused_where_no_mountain_is_shown() {
+    for (args, why) in [
+        (
+            &["--check-config", "p.toml", "--open", "h.png"][..],
+            "--check-config checks a preferences file only",
+        ),
+        (&["--settings", "--open", "h.png"], "the settings screen"),
+        (&["--open=h.png", "--man-page"], "prints a file"),
+        (&["--xscreensaver-xml", "--open", "h.png"], "prints a file"),
+    ] {
+        let e = parse(args).expect_err(&format!("{args:?} should fail"));
+        assert!(
+            e.0.starts_with("--open h.png: no data set is opened here: "),
+            "{}",
+            e.0
+        );
+        assert!(e.0.contains(why), "{args:?}: {}", e.0);
+    }
+    for args in [
+        &["render", "-o", "x.png", "--open", "h.png"][..],
+        &["heightmap", "-o", "y.png", "--open", "h.png"],
+        &["--root", "--open", "h.png"],
+        &["--window", "--open", "h.png"],
+    ] {
+        let inv = parse(args).unwrap_or_else(|e| panic!("{args:?}: {e}"));
+        assert_eq!(inv.open.as_deref(), Some(std::path::Path::new("h.png")));
+    }
+}
