@@ -73,10 +73,7 @@ pub fn render(
     output: &Path,
     warnings: &[String],
 ) -> ExitCode {
-    let refused = refuse_a_terminal(output)
-        .or_else(|| refuse_the_data_set(open, output, "picture"))
-        .or_else(|| refuse_an_unwritable_output(output));
-    if let Some(code) = refused {
+    if let Some(code) = refuse_the_output(open, output, "picture") {
         return code;
     }
     let Some(mut frame) = Frame::new(size.width, size.height) else {
@@ -139,10 +136,7 @@ pub fn heightmap(
     output: &Path,
     warnings: &[String],
 ) -> ExitCode {
-    let refused = refuse_a_terminal(output)
-        .or_else(|| refuse_the_data_set(open, output, "data set"))
-        .or_else(|| refuse_an_unwritable_output(output));
-    if let Some(code) = refused {
+    if let Some(code) = refuse_the_output(open, output, "data set") {
         return code;
     }
     if let Err(mib) = crate::memory::room_to_work(work_exponent(settings, open)) {
@@ -179,6 +173,15 @@ pub fn heightmap(
         return fail(&format!("-o {e}"));
     }
     console::status(print_seed(seed, output), ExitCode::SUCCESS)
+}
+
+/// Why `output`, where `made` (a picture, a data set) would be written,
+/// is refused before any work, if it is: a terminal, the `--open` data set
+/// itself, or a file the write would refuse.
+fn refuse_the_output(open: Option<&Path>, output: &Path, made: &str) -> Option<ExitCode> {
+    refuse_a_terminal(output)
+        .or_else(|| refuse_the_data_set(open, output, made))
+        .or_else(|| refuse_an_unwritable_output(output))
 }
 
 /// `-o -` on a terminal would fill it with binary (as `--open -` from a
