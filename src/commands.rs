@@ -76,18 +76,12 @@ pub fn render(
     if let Some(code) = refuse_the_output(open, output, "picture") {
         return code;
     }
+    // A size past the frame's bound was refused as the arguments were
+    // read (`cli::parse_size`): only the memory can be wanting here.
     let Some(mut frame) = Frame::new(size.width, size.height) else {
-        let pixels = size.pixels();
-        if pixels > crate::render::frame::MAX_PIXELS {
-            console::error(&format!(
-                "--size {size}: too large (at most {} pixels)",
-                crate::render::frame::MAX_PIXELS
-            ));
-            return ExitCode::from(EXIT_USAGE);
-        }
         return fail(&format!(
             "--size {size}: not enough memory for the frame ({} MiB)",
-            (pixels * 4) >> 20
+            (size.pixels() * 4) >> 20
         ));
     };
     let settings = &crate::render::detail::for_frame(settings, size);
