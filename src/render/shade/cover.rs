@@ -12,7 +12,7 @@ use glam::{Vec2, Vec3};
 
 use super::hour::SunAt;
 use super::light::Lighting;
-use crate::render::base::colour::{Rgb, mix, ramp, smoothstep};
+use crate::render::base::colour::{Rgb, luminance, mix, ramp, smoothstep};
 use crate::settings::World;
 use crate::settings::worlds::COAST;
 
@@ -75,7 +75,12 @@ pub fn mood(v: f32) -> f32 {
 /// a world that [`faces`] tells apart, where water runs `wet` (0 a dry
 /// ridge, 1 a stream: `terrain::Wetness`); `beach` when the land meets a
 /// sea; `v` the mountain's draw ([`draw`]).
-pub fn land(
+pub fn land(world: World, at: (f32, f32, f32, f32), beach: bool, v: f32) -> Rgb {
+    richer(world, land_drawn(world, at, beach, v))
+}
+
+/// [`land`] before the world's richness ([`richer`]).
+fn land_drawn(
     world: World,
     (u, steep, facing, wet): (f32, f32, f32, f32),
     beach: bool,
@@ -91,6 +96,30 @@ pub fn land(
     };
     watered(world, ground, (u, steep), beach, v, wet)
 }
+
+/// `c` as `world` shows it: in a world of its own cover, its colour
+/// strengthened at the same luminance, the more the duller it is (a
+/// photographer's vibrance), up to [`VIBRANCE`] times for a grey's
+/// faintest tint, and clamped to the gamut. The temperate world keeps its
+/// colours. A world's pigments are mixed with haze, sky and each other
+/// before they reach the screen; drawn as named, the six worlds' slides
+/// were told apart by their light more than by their places (issue 32's
+/// survey: a slide's nearest other 18.1 apart, all pairs 32.8).
+fn richer(world: World, c: Rgb) -> Rgb {
+    if matches!(world, World::Temperate | COAST) {
+        return c;
+    }
+    let (most, least) = c
+        .iter()
+        .fold((0.0f32, 1.0f32), |(hi, lo), &v| (hi.max(v), lo.min(v)));
+    let k = 1.0 + (VIBRANCE - 1.0) * (1.0 - (most - least).clamp(0.0, 1.0));
+    let y = luminance(c);
+    c.map(|v| (y + k * (v - y)).clamp(0.0, 1.0))
+}
+
+/// How many times stronger [`richer`] makes a world's dullest colours;
+/// a full colour (one channel 0, another 1) keeps its own.
+pub const VIBRANCE: f32 = 1.6;
 
 /// Whether `world`'s ground follows where water runs (every world's own
 /// cover; the temperate world keeps its picture).
@@ -398,6 +427,11 @@ pub fn dry_basin(world: World) -> bool {
 /// The water's colour over ground a share `t` (0 at the shore, 1 the
 /// deepest) of the deepest depth down, in `world`; `v` the mountain's draw.
 pub fn water(world: World, t: f32, v: f32) -> Rgb {
+    richer(world, water_drawn(world, t, v))
+}
+
+/// [`water`] before the world's richness ([`richer`]).
+fn water_drawn(world: World, t: f32, v: f32) -> Rgb {
     let s = t.sqrt();
     match world {
         World::Alpine => mix([0.22, 0.55, 0.58], [0.05, 0.24, 0.32], s),
@@ -444,7 +478,12 @@ pub fn water(world: World, t: f32, v: f32) -> Rgb {
 /// of day are apart. `night` (0 to 1) of the night's look turns both
 /// towards the world's own night ([`night_air`]), and a twilight's
 /// horizon to its afterglow (`dusk.rs`).
-pub fn air(world: World, [zenith, horizon]: [Rgb; 2], v: f32, night: f32) -> [Rgb; 2] {
+pub fn air(world: World, sky: [Rgb; 2], v: f32, night: f32) -> [Rgb; 2] {
+    air_drawn(world, sky, v, night).map(|c| richer(world, c))
+}
+
+/// [`air`] before the world's richness ([`richer`]).
+fn air_drawn(world: World, [zenith, horizon]: [Rgb; 2], v: f32, night: f32) -> [Rgb; 2] {
     // The tint of the horizon and how much of it (least to most), and the
     // two tints of the sky's top (a paler, hazier one and a deeper one)
     // and how much of them at most.
@@ -732,6 +771,60 @@ mod tests {
     use super::*;
 
     use crate::settings::worlds::OWN_LOOKS as DRAWN;
+
+    /// The spread of a colour's channels: how far from a grey it is.
+    fn chroma(c: Rgb) -> f32 {
+        c.iter().copied().fold(0.0, f32::max) - c.iter().copied().fold(1.0, f32::min)
+    }
+
+    /// A world of its own cover shows a dull colour stronger at the same
+    /// luminance, a grey as grey, a full colour as it is; the temperate
+    /// world (and its coast in the varied draw) keeps every colour.
+    #[test]
+    fn a_world_strengthens_its_dull_colours_and_keeps_greys_and_full_ones() {
+        let (dull, grey, full) = (ground::DUNE, [0.5; 3], [1.0, 0.5, 0.0]);
+        for world in DRAWN {
+            let r = richer(world, dull);
+            assert!(
+                (luminance(r) - luminance(dull)).abs() < 1e-4,
+                "{world:?} {r:?}"
+            );
+            let gain = chroma(r) / chroma(dull);
+            let most = 1.0 + (VIBRANCE - 1.0) * (1.0 - chroma(dull));
+            assert!(
+                (gain - most).abs() < 1e-3 && gain > 1.2,
+                "{world:?}: {gain}"
+            );
+            assert_eq!(richer(world, grey), grey, "{world:?}");
+            assert_eq!(richer(world, full), full, "{world:?}");
+        }
+        for world in [World::Temperate, COAST] {
+            assert_eq!(richer(world, dull), dull, "{world:?}");
+        }
+    }
+
+    /// What a world's land, water and air give is its pigments made richer:
+    /// each more colourful than its colour before [`richer`].
+    #[test]
+    fn a_worlds_land_water_and_air_are_richer_than_their_pigments() {
+        let (zenith, horizon) = ([0.30, 0.50, 0.85], [0.75, 0.82, 0.90]);
+        for world in DRAWN {
+            let at = (0.3, 0.2, 0.0, 0.0);
+            let ground = land_drawn(world, at, true, 0.5);
+            assert!(
+                chroma(land(world, at, true, 0.5)) > chroma(ground),
+                "{world:?}"
+            );
+            let lake = water_drawn(world, 0.2, 0.5);
+            assert!(chroma(water(world, 0.2, 0.5)) > chroma(lake), "{world:?}");
+            let [top, _] = air(world, [zenith, horizon], 0.5, 0.0);
+            let [before, _] = air_drawn(world, [zenith, horizon], 0.5, 0.0);
+            assert!(
+                chroma(top) > chroma(before),
+                "{world:?}: {top:?} {before:?}"
+            );
+        }
+    }
 
     /// A varied day's sun stands within its world's heights, over most of
     /// them, and shines from the side, over the viewer's shoulder or,
