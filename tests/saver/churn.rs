@@ -143,8 +143,9 @@ fn at_rest(x: &Xvfb, saver: &mut Saver) {
 const QUIET: Duration = Duration::from_millis(250);
 
 /// Six storms of 31 layouts each: once the saver is at rest again after
-/// each storm, its resident memory is where it was after the second (the
-/// first may still settle allocator pools). Before the fix, every resize
+/// each storm, its resident memory comes back to where it came back to
+/// after the second and third (the first may still settle allocator
+/// pools). Before the fix, every resize
 /// started a redraw on a thread of its own and a closed window's redraw ran
 /// on: 3840x1080 storms left the saver busy for a minute with up to 390 MB
 /// of frames and scenes nobody would see.
@@ -169,10 +170,16 @@ fn display_fullscreen_memory_stays_flat_through_monitor_storms() {
         eprintln!("after storm {n}: VmRSS {rss} KiB");
         after.push(rss);
     }
-    let growth = after[5].saturating_sub(after[1]);
+    // A leak raises the floor the resident memory comes back to, storm
+    // after storm; the allocator's pools move the level between storms by
+    // up to 6 MiB either way (one run: 61.9, 67.7, 61.0, 66.1, 61.7, 61.5
+    // MiB), so each end is the lesser of two storms'. The bound is the one
+    // before, a MiB a storm: three storms apart, 3 MiB.
+    let floor = |a: usize, b: usize| after[a].min(after[b]);
+    let growth = floor(4, 5).saturating_sub(floor(1, 2));
     assert!(
-        growth <= 4 * 1024,
-        "resident memory grew by {growth} KiB from storm 2 to storm 6: {after:?} KiB"
+        growth <= 3 * 1024,
+        "resident memory's floor grew by {growth} KiB from storms 2-3 to storms 5-6: {after:?} KiB"
     );
     saver.assert_running();
 }
