@@ -171,6 +171,23 @@ mod tests {
         }
     }
 
+    /// A data set remembers every key that shaped its heights, so that
+    /// opened again it is drawn as it was made: in its generator record,
+    /// but the seed (recorded apart, `mountains:seed`) and the water line
+    /// (recorded by what it made: the sea level itself).
+    #[test]
+    fn a_data_set_records_every_key_that_shaped_its_heights() {
+        let recorded: Vec<&str> = heightmap::meta::recorded_keys().collect();
+        let apart = [keys::SEED.name, keys::WATER_LINE.name];
+        for key in HEIGHTS_ONLY.iter().filter(|k| !apart.contains(&k.name)) {
+            assert!(
+                recorded.contains(&key.name),
+                "`{}` is not recorded",
+                key.name
+            );
+        }
+    }
+
     fn small() -> Settings {
         Settings {
             detail: Detail::Level(5),

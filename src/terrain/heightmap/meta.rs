@@ -451,6 +451,13 @@ const PARAM_KEYS: &[(&str, &str)] = &[
     (KEY_WORLD, keys::WORLD.name),
 ];
 
+/// The settings keys a data set's generator record holds, for the tests
+/// that tie it to the other lists of keys.
+#[cfg(test)]
+pub(crate) fn recorded_keys() -> impl Iterator<Item = &'static str> {
+    PARAM_KEYS.iter().map(|&(_, name)| name)
+}
+
 /// The settings key of the look: held apart from the others, because
 /// choosing a look through the key table also moves the keys that follow
 /// it (a key at its default takes the look's value), and a recorded key
