@@ -174,6 +174,11 @@ pub struct XssOptions {
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct UsageError(pub String);
 
+/// The line said after what was typed wrong (a flag, a `--set`, a key's
+/// flag), in every mode: where to read the rest. The usage itself would
+/// push the message off a small terminal.
+pub const SEE_HELP: &str = "`mountains --help` lists every mode, flag and key.";
+
 impl std::fmt::Display for UsageError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(&self.0)
@@ -206,9 +211,9 @@ pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
         },
     };
     let read = p.arguments();
-    // A key flag's bad value waits for the mode: `--check-config` says it
-    // beside the file's verdict (refused here, the file went unchecked);
-    // every other mode refuses it, as the first mistake typed.
+    // A bad `--set` or key flag waits for the mode: `--check-config` says
+    // it beside the file's verdict (refused here, the file went
+    // unchecked); every other mode refuses it, as the first mistake typed.
     match (p.bad_value.take(), read) {
         (Some(_), Ok(())) if matches!(p.inv.mode, Mode::CheckConfig(_)) => Ok(p.inv),
         (Some(bad), _) => Err(bad),
@@ -348,8 +353,8 @@ struct Parser<'a> {
     /// Each file flag given so far (by its long name) and how it was typed:
     /// what a second one of it is refused with.
     files: Vec<(&'static str, String)>,
-    /// The refusal of the first key flag whose value is bad (`-color
-    /// pink`): see [`parse`] for when it is said.
+    /// The refusal of the first `--set` or key flag whose key or value is
+    /// bad (`-color pink`): see [`parse`] for when it is said.
     bad_value: Option<UsageError>,
     inv: Invocation,
 }
@@ -470,6 +475,7 @@ impl Parser<'_> {
                     .filter(|(k, _)| !k.trim().is_empty())
                     .ok_or_else(|| UsageError(format!("--set {kv}: expected key=value")))?;
                 self.push_set((k.trim().to_string(), v.trim().to_string()), from);
+                self.check_the_last_set();
             }
             "-o" | "--output" => {
                 let file = take(self, "--output")?;
@@ -623,16 +629,23 @@ impl Parser<'_> {
             (Some(v), None) => (key.name.to_string(), v),
             (None, _) => key_flags::take(arg, key, own, || self.value_str(arg).ok())?,
         };
-        // Checked here, against the defaults (a value's range and type do
-        // not depend on the other keys), so the message names the flag typed.
-        let mut scratch = crate::settings::Settings::default();
-        let checked = crate::settings::load::apply_set(&mut scratch, &kv.0, &kv.1);
         self.push_set(kv, from);
-        if let (Err(problem), None) = (checked, &self.bad_value) {
-            let set = self.inv.sets.last().expect("the set just pushed");
+        self.check_the_last_set();
+        Ok(())
+    }
+
+    /// Checks the set last pushed, and holds its refusal if it is the
+    /// first bad one. Checked here, against the defaults (a value's range
+    /// and type do not depend on the other keys), so the message names it
+    /// as typed, and a bad `--set` is refused as a bad key flag is.
+    fn check_the_last_set(&mut self) {
+        let Some(set) = self.inv.sets.last().filter(|_| self.bad_value.is_none()) else {
+            return;
+        };
+        let mut scratch = crate::settings::Settings::default();
+        if let Err(problem) = crate::settings::load::apply_set(&mut scratch, &set.key, &set.value) {
             self.bad_value = Some(UsageError(set.named_as_typed(problem).to_string()));
         }
-        Ok(())
     }
 
     /// The Windows screensaver letters: `/s`, `/p[:]<HWND>`, `/c[:<HWND>]`, `/a`.

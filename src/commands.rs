@@ -290,7 +290,8 @@ fn sets_named(sets: &[Set]) -> String {
 }
 
 /// Says each `--set` or key flag whose key or value is bad, named as it
-/// was typed; returns the first such, if any. A value's range and type do
+/// was typed, then where to read the rest, as every mode says a mistake
+/// typed; returns the first such, if any. A value's range and type do
 /// not depend on the other keys, so each is checked against the defaults.
 fn report_bad_sets(sets: &[Set]) -> Option<&Set> {
     let bad: Vec<(&Set, load::Problem)> = sets
@@ -303,6 +304,9 @@ fn report_bad_sets(sets: &[Set]) -> Option<&Set> {
     let problems: Vec<load::Problem> = bad.iter().map(|(_, p)| p.clone()).collect();
     for line in load::report_with(&problems, |p| console::error_line(&p.to_string())) {
         console::err(&line);
+    }
+    if !bad.is_empty() {
+        console::err(crate::cli::SEE_HELP);
     }
     bad.first().map(|&(set, _)| set)
 }

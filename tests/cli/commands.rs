@@ -1417,3 +1417,39 @@ fn a_link_to_nowhere_at_o_is_refused_before_any_work() {
         }
     }
 }
+
+/// A bad `--set` is a mistake typed for the run, as a bad key flag is,
+/// and is answered alike: the message, then where to read the rest. It
+/// ended at the message (a bad value pointed nowhere), and an unknown key
+/// pointed at the help inside it.
+#[test]
+fn a_bad_set_is_answered_as_a_bad_key_flag_is() {
+    let out = arg(&scratch("set-alike").join("x.png"));
+    for (args, first) in [
+        (
+            vec!["render", "--set", "colr=pink", "-o", &out],
+            "mountains: error: --set: key `colr`: unknown key; did you mean `color`?",
+        ),
+        (
+            vec!["render", "--set", "color=pink", "-o", &out],
+            "mountains: error: --set: key `color`: \"pink\" is not allowed; expected one of ",
+        ),
+        (
+            vec!["render", "-color", "pink", "-o", &out],
+            "mountains: error: -color: \"pink\" is not allowed; expected one of ",
+        ),
+    ] {
+        let o = mountains(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        let err = stderr(&o);
+        let lines: Vec<&str> = err.lines().collect();
+        assert_eq!(lines.len(), 2, "{args:?}: {err}");
+        assert!(lines[0].starts_with(first), "{args:?}: {err}");
+        assert!(!lines[0].contains("--help"), "{args:?}: {err}");
+        assert_eq!(
+            lines[1], "`mountains --help` lists every mode, flag and key.",
+            "{args:?}"
+        );
+    }
+    assert!(!Path::new(&out).exists());
+}
