@@ -255,7 +255,8 @@ impl Parser<'_> {
         let mode = mode.map_or_else(default_mode, |(m, _)| m);
         self.inv.mode = finish_mode(mode, output, size)?;
         one_file_to_check(&self.inv)?;
-        nothing_to_open(&self.inv)
+        nothing_to_open(&self.inv)?;
+        nothing_to_set(&self.inv)
     }
 }
 
@@ -281,12 +282,13 @@ fn one_file_to_check(inv: &Invocation) -> Result<(), UsageError> {
 /// settings screen, the printed files): the data set would be passed over
 /// in silence, and `--check-config` said "ok" of a file it never read.
 fn nothing_to_open(inv: &Invocation) -> Result<(), UsageError> {
-    let what = match inv.mode {
+    let what = match &inv.mode {
         Mode::CheckConfig(_) => "--check-config checks a preferences file only",
         Mode::Settings { .. } => "the settings screen opens data sets from its own list",
-        Mode::XscreensaverXml | Mode::ManPage => "it prints a file and shows no mountain",
-        Mode::ChangePassword => "/a changes no password and shows no mountain",
-        _ => return Ok(()),
+        mode => match prints_only(mode) {
+            Some(why) => why,
+            None => return Ok(()),
+        },
     };
     let Some(open) = &inv.open else {
         return Ok(());
@@ -295,6 +297,30 @@ fn nothing_to_open(inv: &Invocation) -> Result<(), UsageError> {
         "--open {}: no data set is opened here: {what}",
         open.display()
     )))
+}
+
+/// A key set (`--set`, a key's flag) with a mode that only prints: it
+/// was passed over in silence, unchecked, as `--open` was there. A bad
+/// one is refused before this, in the words every mode says it in.
+fn nothing_to_set(inv: &Invocation) -> Result<(), UsageError> {
+    match (prints_only(&inv.mode), inv.sets.first()) {
+        (Some(why), Some(set)) => Err(UsageError(format!(
+            "{}: no key is set here: {why}",
+            set.typed
+        ))),
+        _ => Ok(()),
+    }
+}
+
+/// Why `mode` reads nothing a key or a data set could change, if it only
+/// prints: a file (built from the key table, not from the preferences),
+/// or `/a`'s one line.
+fn prints_only(mode: &Mode) -> Option<&'static str> {
+    match mode {
+        Mode::XscreensaverXml | Mode::ManPage => Some("it prints a file and shows no mountain"),
+        Mode::ChangePassword => Some("/a changes no password and shows no mountain"),
+        _ => None,
+    }
 }
 
 /// The flags that take no value (as they are matched: see `long_name`).

@@ -53,7 +53,8 @@ Usage:
 
 Options (every mode):
   --config FILE      preferences file instead of the usual one
-  --set KEY=VALUE    override one preference (repeatable), e.g. --set color=sonar
+  --set KEY=VALUE    override one preference (repeatable), e.g. --set color=sonar;
+                     not with the modes that only print (--man-page, /a, ...)
   --open FILE        show a saved data set (the modes that show a mountain): a
                      grayscale PNG heightmap, ours or a terrain tool's, or raw
                      16-bit samples (.r16, .raw); - reads standard input

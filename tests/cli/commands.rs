@@ -1453,3 +1453,57 @@ fn a_bad_set_is_answered_as_a_bad_key_flag_is() {
     }
     assert!(!Path::new(&out).exists());
 }
+
+/// A key set beside a mode that prints a file, or `/a`, is refused as
+/// `--open` is there: it can have no effect, and it passed with exit 0
+/// and no word, its key and value not even checked
+/// (`--xscreensaver-xml --set nope=1`). A bad one is refused in the words
+/// every other mode says it in; a good one naming it as typed, and why.
+#[test]
+fn a_key_set_is_refused_where_nothing_is_drawn() {
+    let out = arg(&scratch("printed-sets").join("x.png"));
+    let modes = ["--xscreensaver-xml", "--man-page", "/a"];
+    for bad in [
+        &["--set", "nope=1"][..],
+        &["--set", "seed=abc"],
+        &["-seed", "abc"],
+    ] {
+        let elsewhere = stderr(&mountains(&[&["render", "-o", &out][..], bad].concat()));
+        for mode in modes {
+            let args = [&[mode][..], bad].concat();
+            let o = mountains(&args);
+            assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+            assert!(o.stdout.is_empty(), "{args:?}");
+            assert_eq!(stderr(&o), elsewhere, "{args:?}");
+        }
+    }
+    for (args, typed, why) in [
+        (
+            &["--xscreensaver-xml", "--set", "seed=3"][..],
+            "--set seed=3",
+            "it prints a file and shows no mountain",
+        ),
+        (&["--man-page", "-seed", "3"], "-seed 3", "prints a file"),
+        (
+            &["-no-shadows", "--man-page"],
+            "-no-shadows",
+            "prints a file",
+        ),
+        (
+            &["/a", "--color=sonar"],
+            "--color=sonar",
+            "/a changes no password",
+        ),
+    ] {
+        let o = mountains(args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert!(o.stdout.is_empty(), "{args:?}");
+        let err = stderr(&o);
+        let said = format!("mountains: error: {typed}: no key is set here: ");
+        assert!(
+            err.starts_with(&said) && err.contains(why),
+            "{args:?}: {err}"
+        );
+    }
+    assert!(!Path::new(&out).exists());
+}
