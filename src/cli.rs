@@ -108,6 +108,20 @@ pub struct Invocation {
     pub open: Option<PathBuf>,
     /// The xscreensaver options every hack takes.
     pub xss: XssOptions,
+    /// A key's flag typed last with no value after it (`-seed`):
+    /// `--check-config` says it beside its verdict of the file; every other
+    /// mode refuses it before any work.
+    pub unfinished: Option<Unfinished>,
+}
+
+/// A key's flag typed last, its value left out (`--check-config p.toml
+/// -seed`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Unfinished {
+    /// The flag, as typed.
+    pub typed: String,
+    /// Its refusal, in the words every mode says it in.
+    pub refusal: UsageError,
 }
 
 /// One preference set for this run: a `--set key=value` or a key's own
@@ -208,12 +222,14 @@ pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
             sets: Vec::new(),
             open: None,
             xss: XssOptions::default(),
+            unfinished: None,
         },
     };
     let read = p.arguments();
-    // A bad `--set` or key flag waits for the mode: `--check-config` says
-    // it beside the file's verdict (refused here, the file went
-    // unchecked); every other mode refuses it, as the first mistake typed.
+    // A bad `--set` or key flag, or a key flag without its value, waits
+    // for the mode: `--check-config` says it beside the file's verdict
+    // (refused here, the file went unchecked); every other mode refuses
+    // it, as the first mistake typed.
     match (p.bad_value.take(), read) {
         (Some(_), Ok(())) if matches!(p.inv.mode, Mode::CheckConfig(_)) => Ok(p.inv),
         (Some(bad), _) => Err(bad),
@@ -380,7 +396,8 @@ struct Parser<'a> {
     /// what a second one of it is refused with.
     files: Vec<(&'static str, String)>,
     /// The refusal of the first `--set` or key flag whose key or value is
-    /// bad (`-color pink`): see [`parse`] for when it is said.
+    /// bad (`-color pink`), or of a key flag typed last without its value
+    /// (`-seed`): see [`parse`] for when it is said.
     bad_value: Option<UsageError>,
     inv: Invocation,
 }
@@ -645,6 +662,7 @@ impl Parser<'_> {
         from: usize,
     ) -> Result<(), UsageError> {
         let (key, own) = key_flags::lookup(arg).ok_or_else(|| unknown_argument(arg))?;
+        let last = self.pos >= self.args.len();
         let kv = match (inline, own) {
             (Some(_), Some(_)) => {
                 return Err(UsageError(format!(
@@ -653,11 +671,27 @@ impl Parser<'_> {
                 )));
             }
             (Some(v), None) => (key.name.to_string(), v),
-            (None, _) => key_flags::take(arg, key, own, || self.value_str(arg).ok())?,
+            (None, _) => match key_flags::take(arg, key, own, || self.value_str(arg).ok()) {
+                Ok(kv) => kv,
+                // Typed last, it leaves nothing unread: held as a bad value is.
+                Err(refusal) if last => {
+                    self.hold_unfinished(from, refusal);
+                    return Ok(());
+                }
+                Err(refusal) => return Err(refusal),
+            },
         };
         self.push_set(kv, from);
         self.check_the_last_set();
         Ok(())
+    }
+
+    /// Holds `refusal` of the key's flag typed from `from` to the end,
+    /// its value left out, as a bad value is held (see [`parse`]).
+    fn hold_unfinished(&mut self, from: usize, refusal: UsageError) {
+        let typed = self.typed_since(from);
+        self.bad_value.get_or_insert_with(|| refusal.clone());
+        self.inv.unfinished = Some(Unfinished { typed, refusal });
     }
 
     /// Checks the set last pushed, and holds its refusal if it is the

@@ -45,7 +45,7 @@ fn main() -> ExitCode {
             return printed(console::outln(&version));
         }
         Mode::CheckConfig(path) => {
-            return commands::check_config(path.as_deref(), inv.config.as_deref(), &inv.sets);
+            return commands::check_config(path.as_deref(), &inv);
         }
         Mode::ChangePassword => {
             return printed(console::outln(

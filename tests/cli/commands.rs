@@ -1507,3 +1507,52 @@ fn a_key_set_is_refused_where_nothing_is_drawn() {
     }
     assert!(!Path::new(&out).exists());
 }
+
+/// A key's flag typed last without its value beside `--check-config`
+/// (`-seed`) is said as one with a bad value is: named, the file checked
+/// and its verdict said, exit 2. It was refused while the arguments were
+/// read, and the file went unchecked.
+#[test]
+fn check_config_with_a_key_flag_missing_its_value_still_checks_the_file() {
+    let dir = scratch("check-config-no-value");
+    let good = dir.join("good.toml");
+    std::fs::write(&good, "seed = 5\n").unwrap();
+    let good = arg(&good);
+    for (args, flag) in [
+        (vec!["--check-config", &good, "-seed"], "-seed"),
+        (
+            vec!["--config", &good, "--check-config", "--color"],
+            "--color",
+        ),
+    ] {
+        let o = mountains(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        let err = stderr(&o);
+        let named = format!("mountains: error: `{flag}` needs a value: ");
+        assert!(err.starts_with(&named), "{args:?}: {err}");
+        let out = String::from_utf8_lossy(&o.stdout);
+        let verdict = format!("{good}: the file is ok; {flag} needs a value\n");
+        assert_eq!(out, verdict, "{args:?}");
+    }
+    // A bad file beside it: both are said, the flag first.
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, "cragginess = 500\n").unwrap();
+    let o = mountains(&["--check-config", &arg(&bad), "-seed"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let err = stderr(&o);
+    let (flag, file) = (
+        err.find("`-seed` needs a value"),
+        err.find("bad.toml:1:14: key `cragginess`"),
+    );
+    assert!(flag.is_some() && file.is_some() && flag < file, "{err}");
+    // Every other mode still refuses it before any work.
+    let out = arg(&dir.join("x.png"));
+    let o = mountains(&["render", "-o", &out, "-seed"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(
+        err.starts_with("mountains: error: `-seed` needs a value: "),
+        "{err}"
+    );
+    assert!(!Path::new(&out).exists());
+}
