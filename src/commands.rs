@@ -357,15 +357,14 @@ fn check_file(
                 file.display()
             )));
         }
-        let flag = if path.is_some() {
-            "--check-config"
-        } else {
-            "--config"
-        };
+        let flag = flag_naming(path);
         return Err(fail(&format!("{flag} {}: no such file", file.display())));
     }
     let mut settings = Settings::default();
-    let problems = load::apply_file(&mut settings, &file);
+    let mut problems = load::apply_file(&mut settings, &file);
+    if named.is_some() {
+        name_by_flag(&mut problems, flag_naming(path));
+    }
     for line in load::report_with(&problems, |p| console::error_line(&p.to_string())) {
         console::err(&line);
     }
@@ -374,6 +373,25 @@ fn check_file(
     }
     warn_of_a_missing_folder(&settings, &file);
     Ok(console::outln(&verdict(&file, mistyped)))
+}
+
+/// The flag that named the file `--check-config` checks, when one did:
+/// its own file `path`, else `--config`'s.
+fn flag_naming(path: Option<&Path>) -> &'static str {
+    match path {
+        Some(_) => "--check-config",
+        None => "--config",
+    }
+}
+
+/// A file that cannot be read is refused naming the flag that named it
+/// first (`--check-config DIR: cannot read: ...`), as `--config` and
+/// `--open` refuse theirs; a problem inside the file keeps its place
+/// (file:line:column) alone.
+fn name_by_flag(problems: &mut [load::Problem], flag: &str) {
+    for problem in problems.iter_mut().filter(|p| p.is_unreadable()) {
+        problem.source = format!("{flag} {}", problem.source);
+    }
 }
 
 /// What `--check-config` says of a file without problems. A bare "ok"

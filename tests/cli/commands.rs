@@ -1556,3 +1556,32 @@ fn check_config_with_a_key_flag_missing_its_value_still_checks_the_file() {
     );
     assert!(!Path::new(&out).exists());
 }
+
+/// A file `--check-config` cannot read (a folder) is named with the flag
+/// that named it, as `--config` and `--open` name theirs: it was named
+/// by the file alone.
+#[test]
+fn check_config_names_its_flag_for_a_file_it_cannot_read() {
+    let dir = scratch("check-config-folder");
+    let folder = dir.join("folder.toml");
+    std::fs::create_dir_all(&folder).unwrap();
+    let folder = arg(&folder);
+    let out = arg(&dir.join("x.png"));
+    let inline = format!("--check-config={folder}");
+    for (args, flag) in [
+        (vec!["--check-config", &folder], "--check-config"),
+        (vec![inline.as_str()], "--check-config"),
+        (vec!["--config", &folder, "--check-config"], "--config"),
+        (vec!["render", "--config", &folder, "-o", &out], "--config"),
+        (vec!["render", "--open", &folder, "-o", &out], "--open"),
+    ] {
+        let o = mountains(&args);
+        assert!(!o.status.success(), "{args:?}");
+        let err = stderr(&o);
+        let said = format!("mountains: error: {flag} {folder}: cannot read: ");
+        assert!(
+            err.starts_with(&said) && err.contains("folder"),
+            "{args:?}: {err}"
+        );
+    }
+}
