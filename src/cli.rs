@@ -315,16 +315,26 @@ fn nothing_to_open(inv: &Invocation) -> Result<(), UsageError> {
     )))
 }
 
-/// A key set (`--set`, a key's flag) with a mode that only prints: it
-/// was passed over in silence, unchecked, as `--open` was there. A bad
-/// one is refused before this, in the words every mode says it in.
+/// A preferences file (`--config`) or a key set (`--set`, a key's flag)
+/// with a mode that only prints: it was passed over in silence, a set
+/// unchecked, as `--open` was there. A bad set is refused before this,
+/// in the words every mode says it in.
 fn nothing_to_set(inv: &Invocation) -> Result<(), UsageError> {
-    match (prints_only(&inv.mode), inv.sets.first()) {
-        (Some(why), Some(set)) => Err(UsageError(format!(
+    let Some(why) = prints_only(&inv.mode) else {
+        return Ok(());
+    };
+    if let Some(config) = &inv.config {
+        return Err(UsageError(format!(
+            "--config {}: no preferences are read here: {why}",
+            config.display()
+        )));
+    }
+    match inv.sets.first() {
+        Some(set) => Err(UsageError(format!(
             "{}: no key is set here: {why}",
             set.typed
         ))),
-        _ => Ok(()),
+        None => Ok(()),
     }
 }
 

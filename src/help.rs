@@ -51,10 +51,9 @@ Usage:
   mountains --help | --version
   mountains --xscreensaver-xml | --man-page   print contrib/mountains.xml or mountains.6
 
-Options (every mode):
+Options (every mode but those that only print: --xscreensaver-xml, --man-page, /a):
   --config FILE      preferences file instead of the usual one
-  --set KEY=VALUE    override one preference (repeatable), e.g. --set color=sonar;
-                     not with the modes that only print (--man-page, /a, ...)
+  --set KEY=VALUE    override one preference (repeatable), e.g. --set color=sonar
   --open FILE        show a saved data set (the modes that show a mountain): a
                      grayscale PNG heightmap, ours or a terrain tool's, or raw
                      16-bit samples (.r16, .raw); - reads standard input

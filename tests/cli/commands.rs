@@ -1585,3 +1585,32 @@ fn check_config_names_its_flag_for_a_file_it_cannot_read() {
         );
     }
 }
+
+/// A preferences file beside a mode that only prints (`--man-page
+/// --config p.toml`) is refused naming it and why, as a key set there
+/// is: nothing reads it, and it was passed over with exit 0. Where a
+/// file is read, it is taken.
+#[test]
+fn a_preferences_file_is_refused_where_nothing_is_drawn() {
+    let dir = scratch("printed-config");
+    let good = dir.join("good.toml");
+    std::fs::write(&good, "seed = 5\n").unwrap();
+    let good = arg(&good);
+    let inline = format!("--config={good}");
+    for (args, why) in [
+        (vec!["--man-page", "--config", &good], "prints a file"),
+        (vec![&inline, "--xscreensaver-xml"], "prints a file"),
+        (vec!["/a", "--config", &good], "/a changes no password"),
+    ] {
+        let o = mountains(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert!(o.stdout.is_empty(), "{args:?}");
+        let err = stderr(&o);
+        let said = format!("mountains: error: --config {good}: no preferences are read here: ");
+        assert!(
+            err.starts_with(&said) && err.contains(why),
+            "{args:?}: {err}"
+        );
+    }
+    run(&["--config", &good, "--check-config"]);
+}
