@@ -108,6 +108,20 @@ pub struct Invocation {
     pub open: Option<PathBuf>,
     /// The xscreensaver options every hack takes.
     pub xss: XssOptions,
+    /// A key's flag typed last with no value after it (`-seed`):
+    /// `--check-config` says it beside its verdict of the file; every other
+    /// mode refuses it before any work.
+    pub unfinished: Option<Unfinished>,
+}
+
+/// A key's flag typed last, its value left out (`--check-config p.toml
+/// -seed`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Unfinished {
+    /// The flag, as typed.
+    pub typed: String,
+    /// Its refusal, in the words every mode says it in.
+    pub refusal: UsageError,
 }
 
 /// One preference set for this run: a `--set key=value` or a key's own
@@ -174,6 +188,11 @@ pub struct XssOptions {
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct UsageError(pub String);
 
+/// The line said after what was typed wrong (a flag, a `--set`, a key's
+/// flag), in every mode: where to read the rest. The usage itself would
+/// push the message off a small terminal.
+pub const SEE_HELP: &str = "`mountains --help` lists every mode, flag and key.";
+
 impl std::fmt::Display for UsageError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(&self.0)
@@ -203,12 +222,14 @@ pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
             sets: Vec::new(),
             open: None,
             xss: XssOptions::default(),
+            unfinished: None,
         },
     };
     let read = p.arguments();
-    // A key flag's bad value waits for the mode: `--check-config` says it
-    // beside the file's verdict (refused here, the file went unchecked);
-    // every other mode refuses it, as the first mistake typed.
+    // A bad `--set` or key flag, or a key flag without its value, waits
+    // for the mode: `--check-config` says it beside the file's verdict
+    // (refused here, the file went unchecked); every other mode refuses
+    // it, as the first mistake typed.
     match (p.bad_value.take(), read) {
         (Some(_), Ok(())) if matches!(p.inv.mode, Mode::CheckConfig(_)) => Ok(p.inv),
         (Some(bad), _) => Err(bad),
@@ -250,7 +271,8 @@ impl Parser<'_> {
         let mode = mode.map_or_else(default_mode, |(m, _)| m);
         self.inv.mode = finish_mode(mode, output, size)?;
         one_file_to_check(&self.inv)?;
-        nothing_to_open(&self.inv)
+        nothing_to_open(&self.inv)?;
+        nothing_to_set(&self.inv)
     }
 }
 
@@ -276,12 +298,13 @@ fn one_file_to_check(inv: &Invocation) -> Result<(), UsageError> {
 /// settings screen, the printed files): the data set would be passed over
 /// in silence, and `--check-config` said "ok" of a file it never read.
 fn nothing_to_open(inv: &Invocation) -> Result<(), UsageError> {
-    let what = match inv.mode {
+    let what = match &inv.mode {
         Mode::CheckConfig(_) => "--check-config checks a preferences file only",
         Mode::Settings { .. } => "the settings screen opens data sets from its own list",
-        Mode::XscreensaverXml | Mode::ManPage => "it prints a file and shows no mountain",
-        Mode::ChangePassword => "/a changes no password and shows no mountain",
-        _ => return Ok(()),
+        mode => match prints_only(mode) {
+            Some(why) => why,
+            None => return Ok(()),
+        },
     };
     let Some(open) = &inv.open else {
         return Ok(());
@@ -290,6 +313,40 @@ fn nothing_to_open(inv: &Invocation) -> Result<(), UsageError> {
         "--open {}: no data set is opened here: {what}",
         open.display()
     )))
+}
+
+/// A preferences file (`--config`) or a key set (`--set`, a key's flag)
+/// with a mode that only prints: it was passed over in silence, a set
+/// unchecked, as `--open` was there. A bad set is refused before this,
+/// in the words every mode says it in.
+fn nothing_to_set(inv: &Invocation) -> Result<(), UsageError> {
+    let Some(why) = prints_only(&inv.mode) else {
+        return Ok(());
+    };
+    if let Some(config) = &inv.config {
+        return Err(UsageError(format!(
+            "--config {}: no preferences are read here: {why}",
+            config.display()
+        )));
+    }
+    match inv.sets.first() {
+        Some(set) => Err(UsageError(format!(
+            "{}: no key is set here: {why}",
+            set.typed
+        ))),
+        None => Ok(()),
+    }
+}
+
+/// Why `mode` reads nothing a key or a data set could change, if it only
+/// prints: a file (built from the key table, not from the preferences),
+/// or `/a`'s one line.
+fn prints_only(mode: &Mode) -> Option<&'static str> {
+    match mode {
+        Mode::XscreensaverXml | Mode::ManPage => Some("it prints a file and shows no mountain"),
+        Mode::ChangePassword => Some("/a changes no password and shows no mountain"),
+        _ => None,
+    }
 }
 
 /// The flags that take no value (as they are matched: see `long_name`).
@@ -348,8 +405,9 @@ struct Parser<'a> {
     /// Each file flag given so far (by its long name) and how it was typed:
     /// what a second one of it is refused with.
     files: Vec<(&'static str, String)>,
-    /// The refusal of the first key flag whose value is bad (`-color
-    /// pink`): see [`parse`] for when it is said.
+    /// The refusal of the first `--set` or key flag whose key or value is
+    /// bad (`-color pink`), or of a key flag typed last without its value
+    /// (`-seed`): see [`parse`] for when it is said.
     bad_value: Option<UsageError>,
     inv: Invocation,
 }
@@ -470,6 +528,7 @@ impl Parser<'_> {
                     .filter(|(k, _)| !k.trim().is_empty())
                     .ok_or_else(|| UsageError(format!("--set {kv}: expected key=value")))?;
                 self.push_set((k.trim().to_string(), v.trim().to_string()), from);
+                self.check_the_last_set();
             }
             "-o" | "--output" => {
                 let file = take(self, "--output")?;
@@ -613,6 +672,7 @@ impl Parser<'_> {
         from: usize,
     ) -> Result<(), UsageError> {
         let (key, own) = key_flags::lookup(arg).ok_or_else(|| unknown_argument(arg))?;
+        let last = self.pos >= self.args.len();
         let kv = match (inline, own) {
             (Some(_), Some(_)) => {
                 return Err(UsageError(format!(
@@ -621,18 +681,41 @@ impl Parser<'_> {
                 )));
             }
             (Some(v), None) => (key.name.to_string(), v),
-            (None, _) => key_flags::take(arg, key, own, || self.value_str(arg).ok())?,
+            (None, _) => match key_flags::take(arg, key, own, || self.value_str(arg).ok()) {
+                Ok(kv) => kv,
+                // Typed last, it leaves nothing unread: held as a bad value is.
+                Err(refusal) if last => {
+                    self.hold_unfinished(from, refusal);
+                    return Ok(());
+                }
+                Err(refusal) => return Err(refusal),
+            },
         };
-        // Checked here, against the defaults (a value's range and type do
-        // not depend on the other keys), so the message names the flag typed.
-        let mut scratch = crate::settings::Settings::default();
-        let checked = crate::settings::load::apply_set(&mut scratch, &kv.0, &kv.1);
         self.push_set(kv, from);
-        if let (Err(problem), None) = (checked, &self.bad_value) {
-            let set = self.inv.sets.last().expect("the set just pushed");
+        self.check_the_last_set();
+        Ok(())
+    }
+
+    /// Holds `refusal` of the key's flag typed from `from` to the end,
+    /// its value left out, as a bad value is held (see [`parse`]).
+    fn hold_unfinished(&mut self, from: usize, refusal: UsageError) {
+        let typed = self.typed_since(from);
+        self.bad_value.get_or_insert_with(|| refusal.clone());
+        self.inv.unfinished = Some(Unfinished { typed, refusal });
+    }
+
+    /// Checks the set last pushed, and holds its refusal if it is the
+    /// first bad one. Checked here, against the defaults (a value's range
+    /// and type do not depend on the other keys), so the message names it
+    /// as typed, and a bad `--set` is refused as a bad key flag is.
+    fn check_the_last_set(&mut self) {
+        let Some(set) = self.inv.sets.last().filter(|_| self.bad_value.is_none()) else {
+            return;
+        };
+        let mut scratch = crate::settings::Settings::default();
+        if let Err(problem) = crate::settings::load::apply_set(&mut scratch, &set.key, &set.value) {
             self.bad_value = Some(UsageError(set.named_as_typed(problem).to_string()));
         }
-        Ok(())
     }
 
     /// The Windows screensaver letters: `/s`, `/p[:]<HWND>`, `/c[:<HWND>]`, `/a`.

@@ -256,14 +256,15 @@ fn fail(message: &str) -> ExitCode {
 /// there is no preferences file at the usual place (the defaults are in
 /// use, which is no mistake) and for the null device (`/dev/null`: no
 /// preferences); 1 for any problem in the file, or a named file missing;
-/// 2 for a bad `--set` or key flag (`-color pink`: typed for the run, as
-/// in every mode), whatever the file: then a good file is said to be
-/// fine, but not "ok" alone.
-pub fn check_config(path: Option<&Path>, config: Option<&Path>, sets: &[Set]) -> ExitCode {
+/// 2 for a bad `--set` or key flag (`-color pink`, or `-seed` without its
+/// value: typed for the run, as in every mode), whatever the file: then
+/// a good file is said to be fine, but not "ok" alone.
+pub fn check_config(path: Option<&Path>, inv: &Invocation) -> ExitCode {
+    let (config, sets) = (inv.config.as_deref(), &inv.sets);
     // Said first: typed for this run, they are what to mend now, and a
     // file's flood of problems ends in "... and N more".
-    let mistyped = report_bad_sets(sets);
-    let checked = check_file(path, config, mistyped);
+    let mistyped = report_mistakes(inv);
+    let checked = check_file(path, config, mistyped.as_deref());
     if mistyped.is_some() {
         return ExitCode::from(EXIT_USAGE);
     }
@@ -289,33 +290,50 @@ fn sets_named(sets: &[Set]) -> String {
     typed.join(" ")
 }
 
-/// Says each `--set` or key flag whose key or value is bad, named as it
-/// was typed; returns the first such, if any. A value's range and type do
-/// not depend on the other keys, so each is checked against the defaults.
-fn report_bad_sets(sets: &[Set]) -> Option<&Set> {
-    let bad: Vec<(&Set, load::Problem)> = sets
-        .iter()
-        .filter_map(|set| {
-            let checked = load::apply_set(&mut Settings::default(), &set.key, &set.value);
-            checked.err().map(|p| (set, set.named_as_typed(p)))
-        })
-        .collect();
+/// Says each mistake typed for the run, named as it was typed (each
+/// `--set` or key flag whose key or value is bad, then a key's flag left
+/// without its value), then where to read the rest, as every mode says a
+/// mistake typed; returns how the verdict names the first, if any.
+fn report_mistakes(inv: &Invocation) -> Option<String> {
+    let bad = bad_sets(&inv.sets);
     let problems: Vec<load::Problem> = bad.iter().map(|(_, p)| p.clone()).collect();
     for line in load::report_with(&problems, |p| console::error_line(&p.to_string())) {
         console::err(&line);
     }
-    bad.first().map(|&(set, _)| set)
+    if let Some(unfinished) = &inv.unfinished {
+        console::error(&unfinished.refusal.to_string());
+    }
+    let first = match (bad.first(), &inv.unfinished) {
+        (Some((set, _)), _) if set.by_set() => "a --set is not".to_string(),
+        (Some((set, _)), _) => format!("{} is not", set.typed),
+        (None, Some(unfinished)) => format!("{} needs a value", unfinished.typed),
+        (None, None) => return None,
+    };
+    console::err(crate::cli::SEE_HELP);
+    Some(first)
+}
+
+/// Each `--set` or key flag whose key or value is bad, with its problem
+/// named as it was typed. A value's range and type do not depend on the
+/// other keys, so each is checked against the defaults.
+fn bad_sets(sets: &[Set]) -> Vec<(&Set, load::Problem)> {
+    sets.iter()
+        .filter_map(|set| {
+            let checked = load::apply_set(&mut Settings::default(), &set.key, &set.value);
+            checked.err().map(|p| (set, set.named_as_typed(p)))
+        })
+        .collect()
 }
 
 /// The file part of [`check_config`]: its problems said, and `Err` with
 /// the exit code when there are any (or the file cannot be checked);
-/// `Ok` with what printing its verdict gave. `mistyped`: the first `--set`
-/// or key flag given with it that was refused, which the verdict of a good
-/// file must not hide.
+/// `Ok` with what printing its verdict gave. `mistyped`: how the first
+/// mistake typed with it is named (`-color pink is not`), which the
+/// verdict of a good file must not hide.
 fn check_file(
     path: Option<&Path>,
     config: Option<&Path>,
-    mistyped: Option<&Set>,
+    mistyped: Option<&str>,
 ) -> Result<std::io::Result<()>, ExitCode> {
     let named = path.or(config).map(Path::to_path_buf);
     let Some(file) = named.clone().or_else(paths::config_file) else {
@@ -339,15 +357,14 @@ fn check_file(
                 file.display()
             )));
         }
-        let flag = if path.is_some() {
-            "--check-config"
-        } else {
-            "--config"
-        };
+        let flag = flag_naming(path);
         return Err(fail(&format!("{flag} {}: no such file", file.display())));
     }
     let mut settings = Settings::default();
-    let problems = load::apply_file(&mut settings, &file);
+    let mut problems = load::apply_file(&mut settings, &file);
+    if named.is_some() {
+        name_by_flag(&mut problems, flag_naming(path));
+    }
     for line in load::report_with(&problems, |p| console::error_line(&p.to_string())) {
         console::err(&line);
     }
@@ -358,14 +375,32 @@ fn check_file(
     Ok(console::outln(&verdict(&file, mistyped)))
 }
 
+/// The flag that named the file `--check-config` checks, when one did:
+/// its own file `path`, else `--config`'s.
+fn flag_naming(path: Option<&Path>) -> &'static str {
+    match path {
+        Some(_) => "--check-config",
+        None => "--config",
+    }
+}
+
+/// A file that cannot be read is refused naming the flag that named it
+/// first (`--check-config DIR: cannot read: ...`), as `--config` and
+/// `--open` refuse theirs; a problem inside the file keeps its place
+/// (file:line:column) alone.
+fn name_by_flag(problems: &mut [load::Problem], flag: &str) {
+    for problem in problems.iter_mut().filter(|p| p.is_unreadable()) {
+        problem.source = format!("{flag} {}", problem.source);
+    }
+}
+
 /// What `--check-config` says of a file without problems. A bare "ok"
-/// beside a refused `--set` (exit 2) read as if all were well; a key flag
-/// refused is named as typed (`-color pink`), as no `--set` was typed.
-fn verdict(file: &Path, mistyped: Option<&Set>) -> String {
+/// beside a refused `--set` (exit 2) read as if all were well: the
+/// mistake is named after it, as [`report_mistakes`] names it.
+fn verdict(file: &Path, mistyped: Option<&str>) -> String {
     match mistyped {
         None => format!("{}: ok", file.display()),
-        Some(set) if set.by_set() => format!("{}: the file is ok; a --set is not", file.display()),
-        Some(set) => format!("{}: the file is ok; {} is not", file.display(), set.typed),
+        Some(mistake) => format!("{}: the file is ok; {mistake}", file.display()),
     }
 }
 

@@ -51,7 +51,7 @@ Usage:
   mountains --help | --version
   mountains --xscreensaver-xml | --man-page   print contrib/mountains.xml or mountains.6
 
-Options (every mode):
+Options (every mode but those that only print: --xscreensaver-xml, --man-page, /a):
   --config FILE      preferences file instead of the usual one
   --set KEY=VALUE    override one preference (repeatable), e.g. --set color=sonar
   --open FILE        show a saved data set (the modes that show a mountain): a

@@ -30,7 +30,7 @@ fn main() -> ExitCode {
             // The message names what was wrong; the usage after it would
             // push it off a small terminal.
             log::error(&e.to_string());
-            console::err("`mountains --help` lists every mode, flag and key.");
+            console::err(cli::SEE_HELP);
             return ExitCode::from(EXIT_USAGE);
         }
     };
@@ -45,7 +45,7 @@ fn main() -> ExitCode {
             return printed(console::outln(&version));
         }
         Mode::CheckConfig(path) => {
-            return commands::check_config(path.as_deref(), inv.config.as_deref(), &inv.sets);
+            return commands::check_config(path.as_deref(), &inv);
         }
         Mode::ChangePassword => {
             return printed(console::outln(

@@ -259,7 +259,12 @@ pub fn apply_toml(settings: &mut Settings, text: &str, source: &str) -> Vec<Prob
         let key = match keys::known(name) {
             Ok(key) => key,
             Err(message) => {
-                report(key_pos, message);
+                // A file's problem has no line after it to say where the
+                // keys are, as a command line's mistake has.
+                report(
+                    key_pos,
+                    format!("{message} (`mountains --help` lists every key)"),
+                );
                 continue;
             }
         };

@@ -1417,3 +1417,200 @@ fn a_link_to_nowhere_at_o_is_refused_before_any_work() {
         }
     }
 }
+
+/// A bad `--set` is a mistake typed for the run, as a bad key flag is,
+/// and is answered alike: the message, then where to read the rest. It
+/// ended at the message (a bad value pointed nowhere), and an unknown key
+/// pointed at the help inside it.
+#[test]
+fn a_bad_set_is_answered_as_a_bad_key_flag_is() {
+    let out = arg(&scratch("set-alike").join("x.png"));
+    for (args, first) in [
+        (
+            vec!["render", "--set", "colr=pink", "-o", &out],
+            "mountains: error: --set: key `colr`: unknown key; did you mean `color`?",
+        ),
+        (
+            vec!["render", "--set", "color=pink", "-o", &out],
+            "mountains: error: --set: key `color`: \"pink\" is not allowed; expected one of ",
+        ),
+        (
+            vec!["render", "-color", "pink", "-o", &out],
+            "mountains: error: -color: \"pink\" is not allowed; expected one of ",
+        ),
+    ] {
+        let o = mountains(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        let err = stderr(&o);
+        let lines: Vec<&str> = err.lines().collect();
+        assert_eq!(lines.len(), 2, "{args:?}: {err}");
+        assert!(lines[0].starts_with(first), "{args:?}: {err}");
+        assert!(!lines[0].contains("--help"), "{args:?}: {err}");
+        assert_eq!(
+            lines[1], "`mountains --help` lists every mode, flag and key.",
+            "{args:?}"
+        );
+    }
+    assert!(!Path::new(&out).exists());
+}
+
+/// A key set beside a mode that prints a file, or `/a`, is refused as
+/// `--open` is there: it can have no effect, and it passed with exit 0
+/// and no word, its key and value not even checked
+/// (`--xscreensaver-xml --set nope=1`). A bad one is refused in the words
+/// every other mode says it in; a good one naming it as typed, and why.
+#[test]
+fn a_key_set_is_refused_where_nothing_is_drawn() {
+    let out = arg(&scratch("printed-sets").join("x.png"));
+    let modes = ["--xscreensaver-xml", "--man-page", "/a"];
+    for bad in [
+        &["--set", "nope=1"][..],
+        &["--set", "seed=abc"],
+        &["-seed", "abc"],
+    ] {
+        let elsewhere = stderr(&mountains(&[&["render", "-o", &out][..], bad].concat()));
+        for mode in modes {
+            let args = [&[mode][..], bad].concat();
+            let o = mountains(&args);
+            assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+            assert!(o.stdout.is_empty(), "{args:?}");
+            assert_eq!(stderr(&o), elsewhere, "{args:?}");
+        }
+    }
+    for (args, typed, why) in [
+        (
+            &["--xscreensaver-xml", "--set", "seed=3"][..],
+            "--set seed=3",
+            "it prints a file and shows no mountain",
+        ),
+        (&["--man-page", "-seed", "3"], "-seed 3", "prints a file"),
+        (
+            &["-no-shadows", "--man-page"],
+            "-no-shadows",
+            "prints a file",
+        ),
+        (
+            &["/a", "--color=sonar"],
+            "--color=sonar",
+            "/a changes no password",
+        ),
+    ] {
+        let o = mountains(args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert!(o.stdout.is_empty(), "{args:?}");
+        let err = stderr(&o);
+        let said = format!("mountains: error: {typed}: no key is set here: ");
+        assert!(
+            err.starts_with(&said) && err.contains(why),
+            "{args:?}: {err}"
+        );
+    }
+    assert!(!Path::new(&out).exists());
+}
+
+/// A key's flag typed last without its value beside `--check-config`
+/// (`-seed`) is said as one with a bad value is: named, the file checked
+/// and its verdict said, exit 2. It was refused while the arguments were
+/// read, and the file went unchecked.
+#[test]
+fn check_config_with_a_key_flag_missing_its_value_still_checks_the_file() {
+    let dir = scratch("check-config-no-value");
+    let good = dir.join("good.toml");
+    std::fs::write(&good, "seed = 5\n").unwrap();
+    let good = arg(&good);
+    for (args, flag) in [
+        (vec!["--check-config", &good, "-seed"], "-seed"),
+        (
+            vec!["--config", &good, "--check-config", "--color"],
+            "--color",
+        ),
+    ] {
+        let o = mountains(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        let err = stderr(&o);
+        let named = format!("mountains: error: `{flag}` needs a value: ");
+        assert!(err.starts_with(&named), "{args:?}: {err}");
+        let out = String::from_utf8_lossy(&o.stdout);
+        let verdict = format!("{good}: the file is ok; {flag} needs a value\n");
+        assert_eq!(out, verdict, "{args:?}");
+    }
+    // A bad file beside it: both are said, the flag first.
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, "cragginess = 500\n").unwrap();
+    let o = mountains(&["--check-config", &arg(&bad), "-seed"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let err = stderr(&o);
+    let (flag, file) = (
+        err.find("`-seed` needs a value"),
+        err.find("bad.toml:1:14: key `cragginess`"),
+    );
+    assert!(flag.is_some() && file.is_some() && flag < file, "{err}");
+    // Every other mode still refuses it before any work.
+    let out = arg(&dir.join("x.png"));
+    let o = mountains(&["render", "-o", &out, "-seed"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(
+        err.starts_with("mountains: error: `-seed` needs a value: "),
+        "{err}"
+    );
+    assert!(!Path::new(&out).exists());
+}
+
+/// A file `--check-config` cannot read (a folder) is named with the flag
+/// that named it, as `--config` and `--open` name theirs: it was named
+/// by the file alone.
+#[test]
+fn check_config_names_its_flag_for_a_file_it_cannot_read() {
+    let dir = scratch("check-config-folder");
+    let folder = dir.join("folder.toml");
+    std::fs::create_dir_all(&folder).unwrap();
+    let folder = arg(&folder);
+    let out = arg(&dir.join("x.png"));
+    let inline = format!("--check-config={folder}");
+    for (args, flag) in [
+        (vec!["--check-config", &folder], "--check-config"),
+        (vec![inline.as_str()], "--check-config"),
+        (vec!["--config", &folder, "--check-config"], "--config"),
+        (vec!["render", "--config", &folder, "-o", &out], "--config"),
+        (vec!["render", "--open", &folder, "-o", &out], "--open"),
+    ] {
+        let o = mountains(&args);
+        assert!(!o.status.success(), "{args:?}");
+        let err = stderr(&o);
+        let said = format!("mountains: error: {flag} {folder}: cannot read: ");
+        assert!(
+            err.starts_with(&said) && err.contains("folder"),
+            "{args:?}: {err}"
+        );
+    }
+}
+
+/// A preferences file beside a mode that only prints (`--man-page
+/// --config p.toml`) is refused naming it and why, as a key set there
+/// is: nothing reads it, and it was passed over with exit 0. Where a
+/// file is read, it is taken.
+#[test]
+fn a_preferences_file_is_refused_where_nothing_is_drawn() {
+    let dir = scratch("printed-config");
+    let good = dir.join("good.toml");
+    std::fs::write(&good, "seed = 5\n").unwrap();
+    let good = arg(&good);
+    let inline = format!("--config={good}");
+    for (args, why) in [
+        (vec!["--man-page", "--config", &good], "prints a file"),
+        (vec![&inline, "--xscreensaver-xml"], "prints a file"),
+        (vec!["/a", "--config", &good], "/a changes no password"),
+    ] {
+        let o = mountains(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert!(o.stdout.is_empty(), "{args:?}");
+        let err = stderr(&o);
+        let said = format!("mountains: error: --config {good}: no preferences are read here: ");
+        assert!(
+            err.starts_with(&said) && err.contains(why),
+            "{args:?}: {err}"
+        );
+    }
+    run(&["--config", &good, "--check-config"]);
+}

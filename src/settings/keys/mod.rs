@@ -31,10 +31,13 @@ pub fn find(name: &str) -> Option<&'static Key> {
 
 /// Looks a key up by name; for an unknown one, a message naming the
 /// closest known key, if any is close, for a file's line or `--set`.
+/// Where every key is listed is said by the caller: a file's problem
+/// says it inside (`load::apply_toml`), a mistake typed in the line after
+/// it (`cli::SEE_HELP`).
 pub fn known(name: &str) -> Result<&'static Key, String> {
     find(name).ok_or_else(|| {
         let hint = crate::spelling::did_you_mean(name, KEYS.iter().map(|k| k.name));
-        format!("unknown key{hint} (`mountains --help` lists every key)")
+        format!("unknown key{hint}")
     })
 }
 
