@@ -1,8 +1,9 @@
 //! Each world's ground cover, water and air (`world = ...`; the keys a
 //! world sets are `settings/worlds.rs`'s): the colour of the ground by its
 //! height and steepness, the water's colour by its depth, and the tint of
-//! the air at the horizon. The temperate world is the palette's own
-//! natural colours and is never asked here.
+//! the air at the horizon, each made richer on its way out ([`richer`]).
+//! The temperate world is the palette's own natural colours and is never
+//! asked here.
 //!
 //! Heights are fractions of the highest peak (0 the water line, 1 the
 //! top), steepness is relative to the mountain's own steep faces (0 flat,
@@ -109,17 +110,19 @@ fn richer(world: World, c: Rgb) -> Rgb {
     if matches!(world, World::Temperate | COAST) {
         return c;
     }
-    let (most, least) = c
-        .iter()
-        .fold((0.0f32, 1.0f32), |(hi, lo), &v| (hi.max(v), lo.min(v)));
-    let k = 1.0 + (VIBRANCE - 1.0) * (1.0 - (most - least).clamp(0.0, 1.0));
+    let k = 1.0 + (VIBRANCE - 1.0) * (1.0 - spread(c).clamp(0.0, 1.0));
     let y = luminance(c);
     c.map(|v| (y + k * (v - y)).clamp(0.0, 1.0))
 }
 
 /// How many times stronger [`richer`] makes a world's dullest colours;
 /// a full colour (one channel 0, another 1) keeps its own.
-pub const VIBRANCE: f32 = 1.6;
+const VIBRANCE: f32 = 1.6;
+
+/// How far `c` is from a grey: its largest channel less its smallest.
+fn spread(c: Rgb) -> f32 {
+    c.iter().fold(0.0f32, |a, &v| a.max(v)) - c.iter().fold(1.0f32, |a, &v| a.min(v))
+}
 
 /// Whether `world`'s ground follows where water runs (every world's own
 /// cover; the temperate world keeps its picture).
@@ -772,11 +775,6 @@ mod tests {
 
     use crate::settings::worlds::OWN_LOOKS as DRAWN;
 
-    /// The spread of a colour's channels: how far from a grey it is.
-    fn chroma(c: Rgb) -> f32 {
-        c.iter().copied().fold(0.0, f32::max) - c.iter().copied().fold(1.0, f32::min)
-    }
-
     /// A world of its own cover shows a dull colour stronger at the same
     /// luminance, a grey as grey, a full colour as it is; the temperate
     /// world (and its coast in the varied draw) keeps every colour.
@@ -789,8 +787,8 @@ mod tests {
                 (luminance(r) - luminance(dull)).abs() < 1e-4,
                 "{world:?} {r:?}"
             );
-            let gain = chroma(r) / chroma(dull);
-            let most = 1.0 + (VIBRANCE - 1.0) * (1.0 - chroma(dull));
+            let gain = spread(r) / spread(dull);
+            let most = 1.0 + (VIBRANCE - 1.0) * (1.0 - spread(dull));
             assert!(
                 (gain - most).abs() < 1e-3 && gain > 1.2,
                 "{world:?}: {gain}"
@@ -812,15 +810,15 @@ mod tests {
             let at = (0.3, 0.2, 0.0, 0.0);
             let ground = land_drawn(world, at, true, 0.5);
             assert!(
-                chroma(land(world, at, true, 0.5)) > chroma(ground),
+                spread(land(world, at, true, 0.5)) > spread(ground),
                 "{world:?}"
             );
             let lake = water_drawn(world, 0.2, 0.5);
-            assert!(chroma(water(world, 0.2, 0.5)) > chroma(lake), "{world:?}");
+            assert!(spread(water(world, 0.2, 0.5)) > spread(lake), "{world:?}");
             let [top, _] = air(world, [zenith, horizon], 0.5, 0.0);
             let [before, _] = air_drawn(world, [zenith, horizon], 0.5, 0.0);
             assert!(
-                chroma(top) > chroma(before),
+                spread(top) > spread(before),
                 "{world:?}: {top:?} {before:?}"
             );
         }
