@@ -412,6 +412,39 @@ struct Parser<'a> {
     inv: Invocation,
 }
 
+/// One option as typed, what the parts of `Parser::option` read it by.
+struct Flag<'a> {
+    /// The argument as typed (`-o`, `--seed=5`): what a message names.
+    arg: &'a str,
+    /// Its name as matched (see `long_name`), without a value after `=`.
+    name: String,
+    /// The value typed after `=`, if one was.
+    inline: Option<String>,
+    /// Where it was in the arguments: with what it takes after it, the
+    /// option as typed (see `Parser::typed_since`).
+    from: usize,
+}
+
+impl<'a> Flag<'a> {
+    /// `arg`, found at `from`. `--seed=5`, and with one dash as
+    /// xscreensaver's flags are typed (`-seed=5`, `-config=FILE`), is
+    /// taken as `-seed 5` is.
+    fn read(arg: &'a str, from: usize) -> Self {
+        let (name, inline) = match arg.split_once('=') {
+            Some((f, v)) if f.len() > 1 && f.starts_with('-') => {
+                (long_name(f), Some(v.to_string()))
+            }
+            _ => (long_name(arg), None),
+        };
+        Flag {
+            arg,
+            name,
+            inline,
+            from,
+        }
+    }
+}
+
 impl Parser<'_> {
     fn next_os(&mut self) -> Option<&OsString> {
         let a = self.args.get(self.pos);
@@ -469,95 +502,176 @@ impl Parser<'_> {
         if let Some(mode) = self.windows_flag(arg)? {
             return Ok(Some(mode));
         }
-        // Where `arg` was: with what it takes after it, the option as typed.
-        let from = self.pos - 1;
-        // `--seed=5`, and with one dash as xscreensaver's flags are typed
-        // (`-seed=5`, `-config=FILE`), as `-seed 5` is taken.
-        let (flag, inline) = match arg.split_once('=') {
-            Some((f, v)) if f.len() > 1 && f.starts_with('-') => {
-                (long_name(f), Some(v.to_string()))
+        let flag = Flag::read(arg, self.pos - 1);
+        // `-root=1` dropped its value, as `--fps=false` had.
+        if flag.inline.is_some() && NO_VALUE.contains(&flag.name.as_str()) {
+            return Err(UsageError(format!("{} takes no value", flag.name)));
+        }
+        if self.file_flag(&flag, output, size)? {
+            return Ok(None);
+        }
+        if let Some(mode) = self.mode_flag(&flag)? {
+            return Ok(Some(mode));
+        }
+        if self.xscreensaver_option(&flag)? {
+            return Ok(None);
+        }
+        // `--cragginess=40`: a key's flag takes `--flag=VALUE` as the
+        // file flags do (`--output=x.png`).
+        match flag.inline {
+            Some(v) if key_flags::lookup(&flag.name).is_some() => {
+                self.key_flag_with(&flag.name, Some(v), flag.from)
             }
-            _ => (long_name(arg), None),
+            _ => self.key_flag(arg, flag.from),
+        }
+        .map(|()| None)
+    }
+
+    /// The value `flag` takes (named `long`, as `--output` for `-o`), as
+    /// typed after `=` or as the next argument.
+    fn take(&mut self, flag: &Flag, long: &str) -> Result<OsString, UsageError> {
+        let arg = flag.arg;
+        let v = match &flag.inline {
+            Some(v) => OsString::from(v),
+            None => self.value(arg)?,
         };
-        // A value as typed, named by the flag as typed (`--output`, not `-o`).
-        let take = |p: &mut Self, long: &str| -> Result<OsString, UsageError> {
-            let v = match &inline {
-                Some(v) => OsString::from(v),
-                None => p.value(arg)?,
+        // `render -o --help` wrote a picture named `--help`: a flag
+        // where a file or key=value belongs is a slip, not a name
+        // (`-` alone is standard output).
+        if flag.inline.is_none() && v.len() > 1 && v.to_string_lossy().starts_with('-') {
+            return Err(UsageError(format!(
+                "{arg} needs a value, not the flag `{}` (a value that starts with `-`: write {long}={0})",
+                v.to_string_lossy()
+            )));
+        }
+        if v.is_empty() {
+            let wanted = match long {
+                "--set" => "give key=value",
+                "--size" => "give WIDTHxHEIGHT, e.g. 1920x1080",
+                _ => "give a file name",
             };
-            // `render -o --help` wrote a picture named `--help`: a flag
-            // where a file or key=value belongs is a slip, not a name
-            // (`-` alone is standard output).
-            if inline.is_none() && v.len() > 1 && v.to_string_lossy().starts_with('-') {
-                return Err(UsageError(format!(
-                    "{arg} needs a value, not the flag `{}` (a value that starts with `-`: write {long}={0})",
-                    v.to_string_lossy()
-                )));
-            }
-            if v.is_empty() {
-                let wanted = match long {
-                    "--set" => "give key=value",
-                    "--size" => "give WIDTHxHEIGHT, e.g. 1920x1080",
-                    _ => "give a file name",
-                };
-                return Err(UsageError(format!("{arg}: an empty value; {wanted}")));
-            }
-            Ok(v)
-        };
-        match flag.as_str() {
-            // `-root=1` dropped its value, as `--fps=false` had.
-            f if inline.is_some() && NO_VALUE.contains(&f) => {
-                return Err(UsageError(format!("{f} takes no value")));
-            }
+            return Err(UsageError(format!("{arg}: an empty value; {wanted}")));
+        }
+        Ok(v)
+    }
+
+    /// The flags that take a file or a value of this run's own
+    /// (`--config`, `--open`, `--set`, `-o`, `--size`); whether `flag`
+    /// was one.
+    fn file_flag(
+        &mut self,
+        flag: &Flag,
+        output: &mut Option<PathBuf>,
+        size: &mut Option<Size>,
+    ) -> Result<bool, UsageError> {
+        match flag.name.as_str() {
             "--config" => {
-                let file = take(self, "--config")?;
-                self.once("--config", "preferences file", self.typed_since(from))?;
+                let file = self.take(flag, "--config")?;
+                self.once("--config", "preferences file", self.typed_since(flag.from))?;
                 self.inv.config = Some(file.into());
             }
             "--open" => {
-                let file = take(self, "--open")?;
-                self.once("--open", "data set", self.typed_since(from))?;
+                let file = self.take(flag, "--open")?;
+                self.once("--open", "data set", self.typed_since(flag.from))?;
                 self.inv.open = Some(file.into());
             }
-            "--set" => {
-                let kv = take(self, "--set")?
-                    .into_string()
-                    .map_err(|_| UsageError("--set: not valid text".into()))?;
-                let (k, v) = kv
-                    .split_once('=')
-                    .filter(|(k, _)| !k.trim().is_empty())
-                    .ok_or_else(|| UsageError(format!("--set {kv}: expected key=value")))?;
-                self.push_set((k.trim().to_string(), v.trim().to_string()), from);
-                self.check_the_last_set();
-            }
+            "--set" => self.set(flag)?,
             "-o" | "--output" => {
-                let file = take(self, "--output")?;
-                self.once("--output", "output file", self.typed_since(from))?;
+                let file = self.take(flag, "--output")?;
+                self.once("--output", "output file", self.typed_since(flag.from))?;
                 *output = Some(file.into());
             }
             "--size" => {
-                let text = take(self, "--size")?;
+                let text = self.take(flag, "--size")?;
                 // Ours alone (no X toolkit convention, nothing we ship
                 // repeats it): a second one is a slip, refused as the
                 // file flags' are. `-delay` and `-display` stay last-wins.
-                self.once("--size", "size", self.typed_since(from))?;
+                self.once("--size", "size", self.typed_since(flag.from))?;
                 *size = Some(parse_size(&text.to_string_lossy())?);
             }
-            "--root" => return Ok(Some(Mode::XRoot)),
-            "--window" => return Ok(Some(Mode::Window)),
+            _ => return Ok(false),
+        }
+        Ok(true)
+    }
+
+    /// `--set key=value`: a set checked as a key's flag is (see
+    /// [`Self::check_the_last_set`]).
+    fn set(&mut self, flag: &Flag) -> Result<(), UsageError> {
+        let kv = self
+            .take(flag, "--set")?
+            .into_string()
+            .map_err(|_| UsageError("--set: not valid text".into()))?;
+        let (k, v) = kv
+            .split_once('=')
+            .filter(|(k, _)| !k.trim().is_empty())
+            .ok_or_else(|| UsageError(format!("--set {kv}: expected key=value")))?;
+        self.push_set((k.trim().to_string(), v.trim().to_string()), flag.from);
+        self.check_the_last_set();
+        Ok(())
+    }
+
+    /// The mode `flag` names, if it names one (the Windows letters are
+    /// read before it, by [`Self::windows_flag`]).
+    fn mode_flag(&mut self, flag: &Flag) -> Result<Option<Mode>, UsageError> {
+        let arg = flag.arg;
+        let mode = match flag.name.as_str() {
+            "--root" => Mode::XRoot,
+            "--window" => Mode::Window,
             "--layer" => {
-                let name = self.inline_or_next(inline, arg)?;
-                return Ok(Some(Mode::Layer(layer_named(arg, &name)?)));
+                let name = self.inline_or_next(flag.inline.clone(), arg)?;
+                Mode::Layer(layer_named(arg, &name)?)
             }
             "--window-id" => {
-                let id = self.inline_or_next(inline, arg)?;
-                return Ok(Some(Mode::XWindowId(x_window_id(arg, &id)?)));
+                let id = self.inline_or_next(flag.inline.clone(), arg)?;
+                Mode::XWindowId(x_window_id(arg, &id)?)
             }
-            "--settings" => return Ok(Some(Mode::Settings { parent: None })),
-            "--help" | "-h" | "-help" => return Ok(Some(Mode::Help)),
-            "--version" | "-V" | "-version" => return Ok(Some(Mode::Version)),
-            "--xscreensaver-xml" => return Ok(Some(Mode::XscreensaverXml)),
-            "--man-page" => return Ok(Some(Mode::ManPage)),
+            "--settings" => Mode::Settings { parent: None },
+            "--help" | "-h" | "-help" => Mode::Help,
+            "--version" | "-V" | "-version" => Mode::Version,
+            "--xscreensaver-xml" => Mode::XscreensaverXml,
+            "--man-page" => Mode::ManPage,
+            "--check-config" => Mode::CheckConfig(self.file_to_check(flag)?),
+            "render" => Mode::Render {
+                size: Size::default(),
+                output: PathBuf::new(),
+            },
+            "heightmap" => Mode::Heightmap {
+                output: PathBuf::new(),
+            },
+            _ => return Ok(None),
+        };
+        Ok(Some(mode))
+    }
+
+    /// `--check-config`'s file, which may be left out (the usual file):
+    /// a next argument that starts with a dash is a flag, not the file.
+    fn file_to_check(&mut self, flag: &Flag) -> Result<Option<PathBuf>, UsageError> {
+        let next = self.args.get(self.pos).and_then(|a| a.to_str());
+        // `--check-config ""` (an unset variable in a script) as
+        // `--check-config=`: a bad value, not a file that is missing.
+        let inline = flag.inline.as_deref();
+        let (empty_inline, empty_next) = (inline == Some(""), next == Some(""));
+        if empty_inline || (inline.is_none() && empty_next) {
+            return Err(UsageError(format!(
+                "{}: an empty value; give a file name, or none for the usual file",
+                flag.arg
+            )));
+        }
+        Ok(match (inline, next) {
+            (Some(v), _) => Some(PathBuf::from(v)),
+            (None, Some(next)) if !next.starts_with('-') => {
+                self.pos += 1;
+                Some(PathBuf::from(next))
+            }
+            _ => None,
+        })
+    }
+
+    /// The options xscreensaver may pass to any hack (`-fps`, `-delay`,
+    /// `-display`, `-install`, `-visual`); whether `flag` was one.
+    fn xscreensaver_option(&mut self, flag: &Flag) -> Result<bool, UsageError> {
+        let name = flag.name.as_str();
+        match name {
             "-fps" | "--fps" => self.inv.xss.fps = true,
             "-no-fps" | "--no-fps" => self.inv.xss.fps = false,
             // X toolkit programs, xscreensaver's hacks among them, take the
@@ -566,64 +680,26 @@ impl Parser<'_> {
             // a command line edited in xscreensaver's settings may keep the
             // `-delay` it had and gain one: it and `-display` stay last-wins.
             "-delay" | "--delay" => {
-                let v = self.inline_or_next(inline, &flag)?;
+                let v = self.inline_or_next(flag.inline.clone(), name)?;
                 let us = v.trim().parse::<u64>().map_err(|_| {
                     UsageError(format!(
-                        "`{flag} {v}`: expected microseconds, e.g. -delay 20000"
+                        "`{name} {v}`: expected microseconds, e.g. -delay 20000"
                     ))
                 })?;
                 self.inv.xss.delay_us = Some(us);
             }
             "-display" | "--display" => {
-                self.inv.xss.display = Some(self.inline_or_next(inline, &flag)?);
+                self.inv.xss.display = Some(self.inline_or_next(flag.inline.clone(), name)?);
             }
             // xscreensaver's colormap and visual choices: a true-colour
             // framebuffer needs neither.
             "-install" | "--install" => {}
             "-visual" | "--visual" => {
-                self.inline_or_next(inline, &flag)?;
+                self.inline_or_next(flag.inline.clone(), name)?;
             }
-            "--check-config" => {
-                let next = self.args.get(self.pos).and_then(|a| a.to_str());
-                // `--check-config ""` (an unset variable in a script) as
-                // `--check-config=`: a bad value, not a file that is missing.
-                let (empty_inline, empty_next) = (inline.as_deref() == Some(""), next == Some(""));
-                if empty_inline || (inline.is_none() && empty_next) {
-                    return Err(UsageError(format!(
-                        "{arg}: an empty value; give a file name, or none for the usual file"
-                    )));
-                }
-                let path = match (inline, next) {
-                    (Some(v), _) => Some(PathBuf::from(v)),
-                    (None, Some(next)) if !next.starts_with('-') => {
-                        self.pos += 1;
-                        Some(PathBuf::from(next))
-                    }
-                    _ => None,
-                };
-                return Ok(Some(Mode::CheckConfig(path)));
-            }
-            "render" => {
-                return Ok(Some(Mode::Render {
-                    size: Size::default(),
-                    output: PathBuf::new(),
-                }));
-            }
-            "heightmap" => {
-                return Ok(Some(Mode::Heightmap {
-                    output: PathBuf::new(),
-                }));
-            }
-            // `--cragginess=40`: a key's flag takes `--flag=VALUE` as the
-            // file flags do (`--output=x.png`).
-            _ => match inline {
-                Some(v) if key_flags::lookup(&flag).is_some() => {
-                    return self.key_flag_with(&flag, Some(v), from).map(|()| None);
-                }
-                _ => return self.key_flag(arg, from).map(|()| None),
-            },
+            _ => return Ok(false),
         }
-        Ok(None)
+        Ok(true)
     }
 
     /// Records the file flag `long` (naming `what`), typed as `typed`;
