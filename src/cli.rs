@@ -108,17 +108,21 @@ pub struct Invocation {
     pub open: Option<PathBuf>,
     /// The xscreensaver options every hack takes.
     pub xss: XssOptions,
-    /// A key's flag typed last with no value after it (`-seed`):
-    /// `--check-config` says it beside its verdict of the file; every other
-    /// mode refuses it before any work.
-    pub unfinished: Option<Unfinished>,
+    /// A key's flag or `--set` typed last with no value after it
+    /// (`-seed`): `--check-config` says it beside its verdict of the file;
+    /// every other mode refuses it before any work.
+    pub unfinished: Option<Mistake>,
+    /// Each `--set` that gives no key=value (`--set nokey`), in the order
+    /// given: said and refused as [`Self::unfinished`] is.
+    pub malformed: Vec<Mistake>,
 }
 
-/// A key's flag typed last, its value left out (`--check-config p.toml
-/// -seed`).
+/// A mistake typed that gives no set to check: a key's flag or `--set`
+/// typed last, its value left out (`--check-config p.toml -seed`), or a
+/// `--set` that gives no key=value (`--set nokey`).
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Unfinished {
-    /// The flag, as typed.
+pub struct Mistake {
+    /// The flag, with its value if it took one, as typed.
     pub typed: String,
     /// Its refusal, in the words every mode says it in.
     pub refusal: UsageError,
@@ -223,11 +227,12 @@ pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
             open: None,
             xss: XssOptions::default(),
             unfinished: None,
+            malformed: Vec::new(),
         },
     };
     let read = p.arguments();
-    // A bad `--set` or key flag, or a key flag without its value, waits
-    // for the mode: `--check-config` says it beside the file's verdict
+    // A bad `--set` or key flag, or one without its value, waits for the
+    // mode: `--check-config` says it beside the file's verdict
     // (refused here, the file went unchecked); every other mode refuses
     // it, as the first mistake typed.
     match (p.bad_value.take(), read) {
@@ -406,8 +411,9 @@ struct Parser<'a> {
     /// what a second one of it is refused with.
     files: Vec<(&'static str, String)>,
     /// The refusal of the first `--set` or key flag whose key or value is
-    /// bad (`-color pink`), or of a key flag typed last without its value
-    /// (`-seed`): see [`parse`] for when it is said.
+    /// bad (`-color pink`), of a `--set` that gives no key=value, or of a
+    /// key flag or `--set` typed last without its value (`-seed`): see
+    /// [`parse`] for when it is said.
     bad_value: Option<UsageError>,
     inv: Invocation,
 }
@@ -595,17 +601,23 @@ impl Parser<'_> {
     }
 
     /// `--set key=value`: a set checked as a key's flag is (see
-    /// [`Self::check_the_last_set`]).
+    /// [`Self::check_the_last_set`]). One that gives no key=value, or
+    /// none at all, is held as a key's flag with a bad value or none is
+    /// (see [`parse`] for when it is said).
     fn set(&mut self, flag: &Flag) -> Result<(), UsageError> {
-        let kv = self
-            .take(flag, "--set")?
-            .into_string()
-            .map_err(|_| UsageError("--set: not valid text".into()))?;
-        let (k, v) = kv
-            .split_once('=')
-            .filter(|(k, _)| !k.trim().is_empty())
-            .ok_or_else(|| UsageError(format!("--set {kv}: expected key=value")))?;
-        self.push_set((k.trim().to_string(), v.trim().to_string()), flag.from);
+        let unfinished = flag.inline.is_none() && self.pos >= self.args.len();
+        let kv = match self.take(flag, "--set").and_then(key_value) {
+            Ok(kv) => kv,
+            Err(refusal) if unfinished => {
+                self.hold_unfinished(flag.from, refusal);
+                return Ok(());
+            }
+            Err(refusal) => {
+                self.hold_malformed(flag.from, refusal);
+                return Ok(());
+            }
+        };
+        self.push_set(kv, flag.from);
         self.check_the_last_set();
         Ok(())
     }
@@ -777,7 +789,15 @@ impl Parser<'_> {
     fn hold_unfinished(&mut self, from: usize, refusal: UsageError) {
         let typed = self.typed_since(from);
         self.bad_value.get_or_insert_with(|| refusal.clone());
-        self.inv.unfinished = Some(Unfinished { typed, refusal });
+        self.inv.unfinished = Some(Mistake { typed, refusal });
+    }
+
+    /// Holds `refusal` of the `--set` typed from `from` that gives no
+    /// key=value (`--set nokey`), as a bad value is held (see [`parse`]).
+    fn hold_malformed(&mut self, from: usize, refusal: UsageError) {
+        let typed = self.typed_since(from);
+        self.bad_value.get_or_insert_with(|| refusal.clone());
+        self.inv.malformed.push(Mistake { typed, refusal });
     }
 
     /// Checks the set last pushed, and holds its refusal if it is the
@@ -831,6 +851,18 @@ impl Parser<'_> {
         };
         Ok(Some(mode))
     }
+}
+
+/// The key and value a `--set` gives (`key=value`), each trimmed.
+fn key_value(text: OsString) -> Result<(String, String), UsageError> {
+    let kv = text
+        .into_string()
+        .map_err(|_| UsageError("--set: not valid text".into()))?;
+    let (k, v) = kv
+        .split_once('=')
+        .filter(|(k, _)| !k.trim().is_empty())
+        .ok_or_else(|| UsageError(format!("--set {kv}: expected key=value")))?;
+    Ok((k.trim().to_string(), v.trim().to_string()))
 }
 
 /// `-root`, `-window-id`, `-window` are the old xscreensaver spellings of the
