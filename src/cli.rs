@@ -219,6 +219,7 @@ pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
         args,
         pos: 0,
         files: Vec::new(),
+        shared: Vec::new(),
         bad_value: None,
         inv: Invocation {
             mode: default_mode(),
@@ -277,9 +278,45 @@ impl Parser<'_> {
         self.inv.mode = finish_mode(mode, output, size)?;
         one_file_to_check(&self.inv)?;
         nothing_to_open(&self.inv)?;
-        nothing_to_set(&self.inv)
+        nothing_to_set(&self.inv)?;
+        self.nothing_for_xscreensaver()
+    }
+
+    /// xscreensaver's shared options (`-fps`, `-delay`, `-display`,
+    /// `-install`, `-visual`) beside a mode that draws no slide show:
+    /// xscreensaver passes them to the slide show's modes alone, so there
+    /// they are a slip, and they were passed over in silence. The settings
+    /// screen takes `-display`, the X display its window opens on.
+    fn nothing_for_xscreensaver(&self) -> Result<(), UsageError> {
+        let Some(why) = no_slide_show(&self.inv.mode) else {
+            return Ok(());
+        };
+        let settings = matches!(self.inv.mode, Mode::Settings { .. });
+        let taken = |name: &str| settings && name == "display";
+        match self.shared.iter().find(|(name, _)| !taken(name)) {
+            Some((_, typed)) => Err(UsageError(format!(
+                "{typed}: xscreensaver's option does nothing here: {why}"
+            ))),
+            None => Ok(()),
+        }
     }
 }
+
+/// Why `mode` draws no slide show, if it draws none: the modes
+/// xscreensaver never runs, whose options it never gives.
+fn no_slide_show(mode: &Mode) -> Option<&'static str> {
+    match mode {
+        Mode::Render { .. } => Some("render draws one picture to a file"),
+        Mode::Heightmap { .. } => Some("heightmap writes one data set to a file"),
+        Mode::CheckConfig(_) => Some(CHECKS_A_FILE_ONLY),
+        Mode::Settings { .. } => Some("the settings screen takes -display alone of them"),
+        mode => prints_only(mode),
+    }
+}
+
+/// Why `--check-config` reads no data set and takes no option of a
+/// slide show.
+const CHECKS_A_FILE_ONLY: &str = "--check-config checks a preferences file only";
 
 /// `--config A --check-config B` names two files where one is checked:
 /// which one the user meant is not ours to guess (B was checked, A
@@ -304,7 +341,7 @@ fn one_file_to_check(inv: &Invocation) -> Result<(), UsageError> {
 /// in silence, and `--check-config` said "ok" of a file it never read.
 fn nothing_to_open(inv: &Invocation) -> Result<(), UsageError> {
     let what = match &inv.mode {
-        Mode::CheckConfig(_) => "--check-config checks a preferences file only",
+        Mode::CheckConfig(_) => CHECKS_A_FILE_ONLY,
         Mode::Settings { .. } => "the settings screen opens data sets from its own list",
         mode => match prints_only(mode) {
             Some(why) => why,
@@ -410,6 +447,10 @@ struct Parser<'a> {
     /// Each file flag given so far (by its long name) and how it was typed:
     /// what a second one of it is refused with.
     files: Vec<(&'static str, String)>,
+    /// Each of xscreensaver's shared options given (`-fps`, `-delay 5`),
+    /// by its name without dashes and as typed: what a mode that takes
+    /// none of them refuses.
+    shared: Vec<(String, String)>,
     /// The refusal of the first `--set` or key flag whose key or value is
     /// bad (`-color pink`), of a `--set` that gives no key=value, or of a
     /// key flag or `--set` typed last without its value (`-seed`): see
@@ -711,6 +752,8 @@ impl Parser<'_> {
             }
             _ => return Ok(false),
         }
+        let bare = name.trim_start_matches('-').to_string();
+        self.shared.push((bare, self.typed_since(flag.from)));
         Ok(true)
     }
 
