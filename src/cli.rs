@@ -108,17 +108,21 @@ pub struct Invocation {
     pub open: Option<PathBuf>,
     /// The xscreensaver options every hack takes.
     pub xss: XssOptions,
-    /// A key's flag typed last with no value after it (`-seed`):
-    /// `--check-config` says it beside its verdict of the file; every other
-    /// mode refuses it before any work.
-    pub unfinished: Option<Unfinished>,
+    /// A key's flag or `--set` typed last with no value after it
+    /// (`-seed`): `--check-config` says it beside its verdict of the file;
+    /// every other mode refuses it before any work.
+    pub unfinished: Option<Mistake>,
+    /// Each `--set` that gives no key=value (`--set nokey`), in the order
+    /// given: said and refused as [`Self::unfinished`] is.
+    pub malformed: Vec<Mistake>,
 }
 
-/// A key's flag typed last, its value left out (`--check-config p.toml
-/// -seed`).
+/// A mistake typed that gives no set to check: a key's flag or `--set`
+/// typed last, its value left out (`--check-config p.toml -seed`), or a
+/// `--set` that gives no key=value (`--set nokey`).
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Unfinished {
-    /// The flag, as typed.
+pub struct Mistake {
+    /// The flag, with its value if it took one, as typed.
     pub typed: String,
     /// Its refusal, in the words every mode says it in.
     pub refusal: UsageError,
@@ -215,6 +219,7 @@ pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
         args,
         pos: 0,
         files: Vec::new(),
+        shared: Vec::new(),
         bad_value: None,
         inv: Invocation {
             mode: default_mode(),
@@ -223,11 +228,12 @@ pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
             open: None,
             xss: XssOptions::default(),
             unfinished: None,
+            malformed: Vec::new(),
         },
     };
     let read = p.arguments();
-    // A bad `--set` or key flag, or a key flag without its value, waits
-    // for the mode: `--check-config` says it beside the file's verdict
+    // A bad `--set` or key flag, or one without its value, waits for the
+    // mode: `--check-config` says it beside the file's verdict
     // (refused here, the file went unchecked); every other mode refuses
     // it, as the first mistake typed.
     match (p.bad_value.take(), read) {
@@ -272,9 +278,45 @@ impl Parser<'_> {
         self.inv.mode = finish_mode(mode, output, size)?;
         one_file_to_check(&self.inv)?;
         nothing_to_open(&self.inv)?;
-        nothing_to_set(&self.inv)
+        nothing_to_set(&self.inv)?;
+        self.nothing_for_xscreensaver()
+    }
+
+    /// xscreensaver's shared options (`-fps`, `-delay`, `-display`,
+    /// `-install`, `-visual`) beside a mode that draws no slide show:
+    /// xscreensaver passes them to the slide show's modes alone, so there
+    /// they are a slip, and they were passed over in silence. The settings
+    /// screen takes `-display`, the X display its window opens on.
+    fn nothing_for_xscreensaver(&self) -> Result<(), UsageError> {
+        let Some(why) = no_slide_show(&self.inv.mode) else {
+            return Ok(());
+        };
+        let settings = matches!(self.inv.mode, Mode::Settings { .. });
+        let taken = |name: &str| settings && name == "display";
+        match self.shared.iter().find(|(name, _)| !taken(name)) {
+            Some((_, typed)) => Err(UsageError(format!(
+                "{typed}: xscreensaver's option does nothing here: {why}"
+            ))),
+            None => Ok(()),
+        }
     }
 }
+
+/// Why `mode` draws no slide show, if it draws none: the modes
+/// xscreensaver never runs, whose options it never gives.
+fn no_slide_show(mode: &Mode) -> Option<&'static str> {
+    match mode {
+        Mode::Render { .. } => Some("render draws one picture to a file"),
+        Mode::Heightmap { .. } => Some("heightmap writes one data set to a file"),
+        Mode::CheckConfig(_) => Some(CHECKS_A_FILE_ONLY),
+        Mode::Settings { .. } => Some("the settings screen takes -display alone of them"),
+        mode => prints_only(mode),
+    }
+}
+
+/// Why `--check-config` reads no data set and takes no option of a
+/// slide show.
+const CHECKS_A_FILE_ONLY: &str = "--check-config checks a preferences file only";
 
 /// `--config A --check-config B` names two files where one is checked:
 /// which one the user meant is not ours to guess (B was checked, A
@@ -299,7 +341,7 @@ fn one_file_to_check(inv: &Invocation) -> Result<(), UsageError> {
 /// in silence, and `--check-config` said "ok" of a file it never read.
 fn nothing_to_open(inv: &Invocation) -> Result<(), UsageError> {
     let what = match &inv.mode {
-        Mode::CheckConfig(_) => "--check-config checks a preferences file only",
+        Mode::CheckConfig(_) => CHECKS_A_FILE_ONLY,
         Mode::Settings { .. } => "the settings screen opens data sets from its own list",
         mode => match prints_only(mode) {
             Some(why) => why,
@@ -405,11 +447,49 @@ struct Parser<'a> {
     /// Each file flag given so far (by its long name) and how it was typed:
     /// what a second one of it is refused with.
     files: Vec<(&'static str, String)>,
+    /// Each of xscreensaver's shared options given (`-fps`, `-delay 5`),
+    /// by its name without dashes and as typed: what a mode that takes
+    /// none of them refuses.
+    shared: Vec<(String, String)>,
     /// The refusal of the first `--set` or key flag whose key or value is
-    /// bad (`-color pink`), or of a key flag typed last without its value
-    /// (`-seed`): see [`parse`] for when it is said.
+    /// bad (`-color pink`), of a `--set` that gives no key=value, or of a
+    /// key flag or `--set` typed last without its value (`-seed`): see
+    /// [`parse`] for when it is said.
     bad_value: Option<UsageError>,
     inv: Invocation,
+}
+
+/// One option as typed, what the parts of `Parser::option` read it by.
+struct Flag<'a> {
+    /// The argument as typed (`-o`, `--seed=5`): what a message names.
+    arg: &'a str,
+    /// Its name as matched (see `long_name`), without a value after `=`.
+    name: String,
+    /// The value typed after `=`, if one was.
+    inline: Option<String>,
+    /// Where it was in the arguments: with what it takes after it, the
+    /// option as typed (see `Parser::typed_since`).
+    from: usize,
+}
+
+impl<'a> Flag<'a> {
+    /// `arg`, found at `from`. `--seed=5`, and with one dash as
+    /// xscreensaver's flags are typed (`-seed=5`, `-config=FILE`), is
+    /// taken as `-seed 5` is.
+    fn read(arg: &'a str, from: usize) -> Self {
+        let (name, inline) = match arg.split_once('=') {
+            Some((f, v)) if f.len() > 1 && f.starts_with('-') => {
+                (long_name(f), Some(v.to_string()))
+            }
+            _ => (long_name(arg), None),
+        };
+        Flag {
+            arg,
+            name,
+            inline,
+            from,
+        }
+    }
 }
 
 impl Parser<'_> {
@@ -469,95 +549,182 @@ impl Parser<'_> {
         if let Some(mode) = self.windows_flag(arg)? {
             return Ok(Some(mode));
         }
-        // Where `arg` was: with what it takes after it, the option as typed.
-        let from = self.pos - 1;
-        // `--seed=5`, and with one dash as xscreensaver's flags are typed
-        // (`-seed=5`, `-config=FILE`), as `-seed 5` is taken.
-        let (flag, inline) = match arg.split_once('=') {
-            Some((f, v)) if f.len() > 1 && f.starts_with('-') => {
-                (long_name(f), Some(v.to_string()))
+        let flag = Flag::read(arg, self.pos - 1);
+        // `-root=1` dropped its value, as `--fps=false` had.
+        if flag.inline.is_some() && NO_VALUE.contains(&flag.name.as_str()) {
+            return Err(UsageError(format!("{} takes no value", flag.name)));
+        }
+        if self.file_flag(&flag, output, size)? {
+            return Ok(None);
+        }
+        if let Some(mode) = self.mode_flag(&flag)? {
+            return Ok(Some(mode));
+        }
+        if self.xscreensaver_option(&flag)? {
+            return Ok(None);
+        }
+        // `--cragginess=40`: a key's flag takes `--flag=VALUE` as the
+        // file flags do (`--output=x.png`).
+        match flag.inline {
+            Some(v) if key_flags::lookup(&flag.name).is_some() => {
+                self.key_flag_with(&flag.name, Some(v), flag.from)
             }
-            _ => (long_name(arg), None),
+            _ => self.key_flag(arg, flag.from),
+        }
+        .map(|()| None)
+    }
+
+    /// The value `flag` takes (named `long`, as `--output` for `-o`), as
+    /// typed after `=` or as the next argument.
+    fn take(&mut self, flag: &Flag, long: &str) -> Result<OsString, UsageError> {
+        let arg = flag.arg;
+        let v = match &flag.inline {
+            Some(v) => OsString::from(v),
+            None => self.value(arg)?,
         };
-        // A value as typed, named by the flag as typed (`--output`, not `-o`).
-        let take = |p: &mut Self, long: &str| -> Result<OsString, UsageError> {
-            let v = match &inline {
-                Some(v) => OsString::from(v),
-                None => p.value(arg)?,
+        // `render -o --help` wrote a picture named `--help`: a flag
+        // where a file or key=value belongs is a slip, not a name
+        // (`-` alone is standard output).
+        if flag.inline.is_none() && v.len() > 1 && v.to_string_lossy().starts_with('-') {
+            return Err(UsageError(format!(
+                "{arg} needs a value, not the flag `{}` (a value that starts with `-`: write {long}={0})",
+                v.to_string_lossy()
+            )));
+        }
+        if v.is_empty() {
+            let wanted = match long {
+                "--set" => "give key=value",
+                "--size" => "give WIDTHxHEIGHT, e.g. 1920x1080",
+                _ => "give a file name",
             };
-            // `render -o --help` wrote a picture named `--help`: a flag
-            // where a file or key=value belongs is a slip, not a name
-            // (`-` alone is standard output).
-            if inline.is_none() && v.len() > 1 && v.to_string_lossy().starts_with('-') {
-                return Err(UsageError(format!(
-                    "{arg} needs a value, not the flag `{}` (a value that starts with `-`: write {long}={0})",
-                    v.to_string_lossy()
-                )));
-            }
-            if v.is_empty() {
-                let wanted = match long {
-                    "--set" => "give key=value",
-                    "--size" => "give WIDTHxHEIGHT, e.g. 1920x1080",
-                    _ => "give a file name",
-                };
-                return Err(UsageError(format!("{arg}: an empty value; {wanted}")));
-            }
-            Ok(v)
-        };
-        match flag.as_str() {
-            // `-root=1` dropped its value, as `--fps=false` had.
-            f if inline.is_some() && NO_VALUE.contains(&f) => {
-                return Err(UsageError(format!("{f} takes no value")));
-            }
+            return Err(UsageError(format!("{arg}: an empty value; {wanted}")));
+        }
+        Ok(v)
+    }
+
+    /// The flags that take a file or a value of this run's own
+    /// (`--config`, `--open`, `--set`, `-o`, `--size`); whether `flag`
+    /// was one.
+    fn file_flag(
+        &mut self,
+        flag: &Flag,
+        output: &mut Option<PathBuf>,
+        size: &mut Option<Size>,
+    ) -> Result<bool, UsageError> {
+        match flag.name.as_str() {
             "--config" => {
-                let file = take(self, "--config")?;
-                self.once("--config", "preferences file", self.typed_since(from))?;
+                let file = self.take(flag, "--config")?;
+                self.once("--config", "preferences file", self.typed_since(flag.from))?;
                 self.inv.config = Some(file.into());
             }
             "--open" => {
-                let file = take(self, "--open")?;
-                self.once("--open", "data set", self.typed_since(from))?;
+                let file = self.take(flag, "--open")?;
+                self.once("--open", "data set", self.typed_since(flag.from))?;
                 self.inv.open = Some(file.into());
             }
-            "--set" => {
-                let kv = take(self, "--set")?
-                    .into_string()
-                    .map_err(|_| UsageError("--set: not valid text".into()))?;
-                let (k, v) = kv
-                    .split_once('=')
-                    .filter(|(k, _)| !k.trim().is_empty())
-                    .ok_or_else(|| UsageError(format!("--set {kv}: expected key=value")))?;
-                self.push_set((k.trim().to_string(), v.trim().to_string()), from);
-                self.check_the_last_set();
-            }
+            "--set" => self.set(flag)?,
             "-o" | "--output" => {
-                let file = take(self, "--output")?;
-                self.once("--output", "output file", self.typed_since(from))?;
+                let file = self.take(flag, "--output")?;
+                self.once("--output", "output file", self.typed_since(flag.from))?;
                 *output = Some(file.into());
             }
             "--size" => {
-                let text = take(self, "--size")?;
+                let text = self.take(flag, "--size")?;
                 // Ours alone (no X toolkit convention, nothing we ship
                 // repeats it): a second one is a slip, refused as the
                 // file flags' are. `-delay` and `-display` stay last-wins.
-                self.once("--size", "size", self.typed_since(from))?;
+                self.once("--size", "size", self.typed_since(flag.from))?;
                 *size = Some(parse_size(&text.to_string_lossy())?);
             }
-            "--root" => return Ok(Some(Mode::XRoot)),
-            "--window" => return Ok(Some(Mode::Window)),
+            _ => return Ok(false),
+        }
+        Ok(true)
+    }
+
+    /// `--set key=value`: a set checked as a key's flag is (see
+    /// [`Self::check_the_last_set`]). One that gives no key=value, or
+    /// none at all, is held as a key's flag with a bad value or none is
+    /// (see [`parse`] for when it is said).
+    fn set(&mut self, flag: &Flag) -> Result<(), UsageError> {
+        let unfinished = flag.inline.is_none() && self.pos >= self.args.len();
+        let kv = match self.take(flag, "--set").and_then(key_value) {
+            Ok(kv) => kv,
+            Err(refusal) if unfinished => {
+                self.hold_unfinished(flag.from, refusal);
+                return Ok(());
+            }
+            Err(refusal) => {
+                self.hold_malformed(flag.from, refusal);
+                return Ok(());
+            }
+        };
+        self.push_set(kv, flag.from);
+        self.check_the_last_set();
+        Ok(())
+    }
+
+    /// The mode `flag` names, if it names one (the Windows letters are
+    /// read before it, by [`Self::windows_flag`]).
+    fn mode_flag(&mut self, flag: &Flag) -> Result<Option<Mode>, UsageError> {
+        let arg = flag.arg;
+        let mode = match flag.name.as_str() {
+            "--root" => Mode::XRoot,
+            "--window" => Mode::Window,
             "--layer" => {
-                let name = self.inline_or_next(inline, arg)?;
-                return Ok(Some(Mode::Layer(layer_named(arg, &name)?)));
+                let name = self.inline_or_next(flag.inline.clone(), arg)?;
+                Mode::Layer(layer_named(arg, &name)?)
             }
             "--window-id" => {
-                let id = self.inline_or_next(inline, arg)?;
-                return Ok(Some(Mode::XWindowId(x_window_id(arg, &id)?)));
+                let id = self.inline_or_next(flag.inline.clone(), arg)?;
+                Mode::XWindowId(x_window_id(arg, &id)?)
             }
-            "--settings" => return Ok(Some(Mode::Settings { parent: None })),
-            "--help" | "-h" | "-help" => return Ok(Some(Mode::Help)),
-            "--version" | "-V" | "-version" => return Ok(Some(Mode::Version)),
-            "--xscreensaver-xml" => return Ok(Some(Mode::XscreensaverXml)),
-            "--man-page" => return Ok(Some(Mode::ManPage)),
+            "--settings" => Mode::Settings { parent: None },
+            "--help" | "-h" | "-help" => Mode::Help,
+            "--version" | "-V" | "-version" => Mode::Version,
+            "--xscreensaver-xml" => Mode::XscreensaverXml,
+            "--man-page" => Mode::ManPage,
+            "--check-config" => Mode::CheckConfig(self.file_to_check(flag)?),
+            "render" => Mode::Render {
+                size: Size::default(),
+                output: PathBuf::new(),
+            },
+            "heightmap" => Mode::Heightmap {
+                output: PathBuf::new(),
+            },
+            _ => return Ok(None),
+        };
+        Ok(Some(mode))
+    }
+
+    /// `--check-config`'s file, which may be left out (the usual file):
+    /// a next argument that starts with a dash is a flag, not the file.
+    fn file_to_check(&mut self, flag: &Flag) -> Result<Option<PathBuf>, UsageError> {
+        let next = self.args.get(self.pos).and_then(|a| a.to_str());
+        // `--check-config ""` (an unset variable in a script) as
+        // `--check-config=`: a bad value, not a file that is missing.
+        let inline = flag.inline.as_deref();
+        let (empty_inline, empty_next) = (inline == Some(""), next == Some(""));
+        if empty_inline || (inline.is_none() && empty_next) {
+            return Err(UsageError(format!(
+                "{}: an empty value; give a file name, or none for the usual file",
+                flag.arg
+            )));
+        }
+        Ok(match (inline, next) {
+            (Some(v), _) => Some(PathBuf::from(v)),
+            (None, Some(next)) if !next.starts_with('-') => {
+                self.pos += 1;
+                Some(PathBuf::from(next))
+            }
+            _ => None,
+        })
+    }
+
+    /// The options xscreensaver may pass to any hack (`-fps`, `-delay`,
+    /// `-display`, `-install`, `-visual`); whether `flag` was one.
+    fn xscreensaver_option(&mut self, flag: &Flag) -> Result<bool, UsageError> {
+        let name = flag.name.as_str();
+        match name {
             "-fps" | "--fps" => self.inv.xss.fps = true,
             "-no-fps" | "--no-fps" => self.inv.xss.fps = false,
             // X toolkit programs, xscreensaver's hacks among them, take the
@@ -566,64 +733,28 @@ impl Parser<'_> {
             // a command line edited in xscreensaver's settings may keep the
             // `-delay` it had and gain one: it and `-display` stay last-wins.
             "-delay" | "--delay" => {
-                let v = self.inline_or_next(inline, &flag)?;
+                let v = self.inline_or_next(flag.inline.clone(), name)?;
                 let us = v.trim().parse::<u64>().map_err(|_| {
                     UsageError(format!(
-                        "`{flag} {v}`: expected microseconds, e.g. -delay 20000"
+                        "`{name} {v}`: expected microseconds, e.g. -delay 20000"
                     ))
                 })?;
                 self.inv.xss.delay_us = Some(us);
             }
             "-display" | "--display" => {
-                self.inv.xss.display = Some(self.inline_or_next(inline, &flag)?);
+                self.inv.xss.display = Some(self.inline_or_next(flag.inline.clone(), name)?);
             }
             // xscreensaver's colormap and visual choices: a true-colour
             // framebuffer needs neither.
             "-install" | "--install" => {}
             "-visual" | "--visual" => {
-                self.inline_or_next(inline, &flag)?;
+                self.inline_or_next(flag.inline.clone(), name)?;
             }
-            "--check-config" => {
-                let next = self.args.get(self.pos).and_then(|a| a.to_str());
-                // `--check-config ""` (an unset variable in a script) as
-                // `--check-config=`: a bad value, not a file that is missing.
-                let (empty_inline, empty_next) = (inline.as_deref() == Some(""), next == Some(""));
-                if empty_inline || (inline.is_none() && empty_next) {
-                    return Err(UsageError(format!(
-                        "{arg}: an empty value; give a file name, or none for the usual file"
-                    )));
-                }
-                let path = match (inline, next) {
-                    (Some(v), _) => Some(PathBuf::from(v)),
-                    (None, Some(next)) if !next.starts_with('-') => {
-                        self.pos += 1;
-                        Some(PathBuf::from(next))
-                    }
-                    _ => None,
-                };
-                return Ok(Some(Mode::CheckConfig(path)));
-            }
-            "render" => {
-                return Ok(Some(Mode::Render {
-                    size: Size::default(),
-                    output: PathBuf::new(),
-                }));
-            }
-            "heightmap" => {
-                return Ok(Some(Mode::Heightmap {
-                    output: PathBuf::new(),
-                }));
-            }
-            // `--cragginess=40`: a key's flag takes `--flag=VALUE` as the
-            // file flags do (`--output=x.png`).
-            _ => match inline {
-                Some(v) if key_flags::lookup(&flag).is_some() => {
-                    return self.key_flag_with(&flag, Some(v), from).map(|()| None);
-                }
-                _ => return self.key_flag(arg, from).map(|()| None),
-            },
+            _ => return Ok(false),
         }
-        Ok(None)
+        let bare = name.trim_start_matches('-').to_string();
+        self.shared.push((bare, self.typed_since(flag.from)));
+        Ok(true)
     }
 
     /// Records the file flag `long` (naming `what`), typed as `typed`;
@@ -701,7 +832,15 @@ impl Parser<'_> {
     fn hold_unfinished(&mut self, from: usize, refusal: UsageError) {
         let typed = self.typed_since(from);
         self.bad_value.get_or_insert_with(|| refusal.clone());
-        self.inv.unfinished = Some(Unfinished { typed, refusal });
+        self.inv.unfinished = Some(Mistake { typed, refusal });
+    }
+
+    /// Holds `refusal` of the `--set` typed from `from` that gives no
+    /// key=value (`--set nokey`), as a bad value is held (see [`parse`]).
+    fn hold_malformed(&mut self, from: usize, refusal: UsageError) {
+        let typed = self.typed_since(from);
+        self.bad_value.get_or_insert_with(|| refusal.clone());
+        self.inv.malformed.push(Mistake { typed, refusal });
     }
 
     /// Checks the set last pushed, and holds its refusal if it is the
@@ -755,6 +894,18 @@ impl Parser<'_> {
         };
         Ok(Some(mode))
     }
+}
+
+/// The key and value a `--set` gives (`key=value`), each trimmed.
+fn key_value(text: OsString) -> Result<(String, String), UsageError> {
+    let kv = text
+        .into_string()
+        .map_err(|_| UsageError("--set: not valid text".into()))?;
+    let (k, v) = kv
+        .split_once('=')
+        .filter(|(k, _)| !k.trim().is_empty())
+        .ok_or_else(|| UsageError(format!("--set {kv}: expected key=value")))?;
+    Ok((k.trim().to_string(), v.trim().to_string()))
 }
 
 /// `-root`, `-window-id`, `-window` are the old xscreensaver spellings of the

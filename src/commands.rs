@@ -291,23 +291,27 @@ fn sets_named(sets: &[Set]) -> String {
 }
 
 /// Says each mistake typed for the run, named as it was typed (each
-/// `--set` or key flag whose key or value is bad, then a key's flag left
-/// without its value), then where to read the rest, as every mode says a
-/// mistake typed; returns how the verdict names the first, if any.
+/// `--set` or key flag whose key or value is bad, each `--set` that gives
+/// no key=value, then a key's flag or `--set` left without its value),
+/// then where to read the rest, as every mode says a mistake typed;
+/// returns how the verdict names the first, if any.
 fn report_mistakes(inv: &Invocation) -> Option<String> {
     let bad = bad_sets(&inv.sets);
     let problems: Vec<load::Problem> = bad.iter().map(|(_, p)| p.clone()).collect();
     for line in load::report_with(&problems, |p| console::error_line(&p.to_string())) {
         console::err(&line);
     }
-    if let Some(unfinished) = &inv.unfinished {
-        console::error(&unfinished.refusal.to_string());
+    for mistake in inv.malformed.iter().chain(&inv.unfinished) {
+        console::error(&mistake.refusal.to_string());
     }
-    let first = match (bad.first(), &inv.unfinished) {
-        (Some((set, _)), _) if set.by_set() => "a --set is not".to_string(),
-        (Some((set, _)), _) => format!("{} is not", set.typed),
-        (None, Some(unfinished)) => format!("{} needs a value", unfinished.typed),
-        (None, None) => return None,
+    // The sets typed by `--set` are named as one, as `sets_named` names them.
+    let a_set = "a --set is not".to_string();
+    let first = match (bad.first(), inv.malformed.first(), &inv.unfinished) {
+        (Some((set, _)), ..) if set.by_set() => a_set,
+        (Some((set, _)), ..) => format!("{} is not", set.typed),
+        (None, Some(_), _) => a_set,
+        (None, None, Some(unfinished)) => format!("{} needs a value", unfinished.typed),
+        (None, None, None) => return None,
     };
     console::err(crate::cli::SEE_HELP);
     Some(first)

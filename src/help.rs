@@ -61,7 +61,7 @@ Options (every mode but those that only print: --xscreensaver-xml, --man-page, /
   -KEY VALUE         every preference key is a flag too (dashes for underscores):
                      -cragginess 40, --color sonar; booleans -shadows / -no-shadows
 
-xscreensaver's common options:
+xscreensaver's options (the slide show's modes; --settings takes -display):
   -fps               draw the frame rate and load in a corner
   -delay USECS       microseconds between frames while a mountain is drawn
   -display NAME      the X display instead of $DISPLAY

@@ -101,6 +101,8 @@ One complete mountain to a PNG, without a display.
 .B \-\-check\-config [\fIfile\fP]
 Check a preferences file.
 .SH COMMON OPTIONS
+xscreensaver's options, taken by the slide show's modes (\fB\-\-settings\fP takes
+\fB\-display\fP too); beside another mode they are refused.
 .TP
 .B \-fps
 Draw the frame rate and load in a corner.

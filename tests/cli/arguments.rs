@@ -391,6 +391,65 @@ fn xscreensavers_common_options_mean_what_they_mean_there() {
     assert!(parse(&["--window", "--root"]).is_err());
 }
 
+/// xscreensaver's shared options beside a mode xscreensaver never runs
+/// (`render`, `heightmap`, `--check-config`, `--settings`, the printed
+/// files, `/a`) are refused, exit 2, named as typed and why, as `--open`
+/// and `--set` are where they do nothing: they were taken in silence.
+/// The slide show's modes take them all, and the settings screen takes
+/// `-display`, the X display its window opens on.
+#[test]
+fn xscreensavers_options_are_refused_where_no_slide_show_is_drawn() {
+    for (args, typed, why) in [
+        (&["--man-page", "-fps"][..], "-fps", "it prints a file"),
+        (
+            &["render", "-delay", "5", "-o", "x.png"],
+            "-delay 5",
+            "render draws one picture",
+        ),
+        (
+            &["heightmap", "-o", "h.png", "--visual=default"],
+            "--visual=default",
+            "heightmap writes one data set",
+        ),
+        (
+            &["--check-config", "p.toml", "-install"],
+            "-install",
+            "--check-config checks a preferences file only",
+        ),
+        (
+            &["--settings", "-display", ":1", "-no-fps"],
+            "-no-fps",
+            "the settings screen takes -display alone",
+        ),
+        (
+            &["--xscreensaver-xml", "-display", ":1"],
+            "-display :1",
+            "it prints a file",
+        ),
+        (&["/a", "-fps"], "-fps", "/a changes no password"),
+    ] {
+        let e = parse(args).expect_err(&format!("{args:?} should fail")).0;
+        let said = format!("{typed}: xscreensaver's option does nothing here: ");
+        assert!(e.starts_with(&said) && e.contains(why), "{args:?}: {e}");
+    }
+    let inv = parse(&["--settings", "-display", ":1"]).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(inv.xss.display.as_deref(), Some(":1"));
+    let all = [
+        "-fps", "-delay", "9", "-display", ":1", "-install", "-visual", "v",
+    ];
+    for saver in [
+        &["--root"][..],
+        &["-window-id", "7"],
+        &["--window"],
+        &["/s"],
+    ] {
+        let args = [saver, &all[..]].concat();
+        parse(&args).unwrap_or_else(|e| panic!("{args:?}: {e}"));
+    }
+    // `--help` and `--version` are answered, whatever else is typed.
+    assert_eq!(mode(&["-fps", "--help"]), Mode::Help);
+}
+
 /// `--layer NAME`: the four wlr-layer-shell layers by name, one or two
 /// dashes, `=` or a separate value; anything else is refused naming them.
 #[test]

@@ -1557,6 +1557,80 @@ fn check_config_with_a_key_flag_missing_its_value_still_checks_the_file() {
     assert!(!Path::new(&out).exists());
 }
 
+/// A malformed `--set` beside `--check-config` (typed last without its
+/// value, or giving no key=value) is said as a key's flag missing its
+/// value is: named in the words every mode says it in, the file checked
+/// and its verdict said, exit 2. It was refused while the arguments were
+/// read, and the file went unchecked.
+#[test]
+fn check_config_with_a_malformed_set_still_checks_the_file() {
+    let dir = scratch("check-config-malformed-set");
+    let good = dir.join("good.toml");
+    std::fs::write(&good, "seed = 5\n").unwrap();
+    let good = arg(&good);
+    for (args, said, verdict) in [
+        (
+            vec!["--check-config", &good, "--set"],
+            "--set needs a value",
+            "--set needs a value",
+        ),
+        (
+            vec!["--check-config", &good, "--set", "nokey"],
+            "--set nokey: expected key=value",
+            "a --set is not",
+        ),
+        (
+            vec!["--set", "nokey", "--check-config", &good],
+            "--set nokey: expected key=value",
+            "a --set is not",
+        ),
+        (
+            vec!["--check-config", &good, "--set="],
+            "--set=: an empty value; give key=value",
+            "a --set is not",
+        ),
+    ] {
+        let o = mountains(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        let err = stderr(&o);
+        let named = format!("mountains: error: {said}\n");
+        assert!(err.starts_with(&named), "{args:?}: {err}");
+        let out = String::from_utf8_lossy(&o.stdout);
+        assert_eq!(
+            out,
+            format!("{good}: the file is ok; {verdict}\n"),
+            "{args:?}"
+        );
+    }
+    // A bad file beside it: both are said, the --set first.
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, "cragginess = 500\n").unwrap();
+    let o = mountains(&["--check-config", &arg(&bad), "--set", "nokey"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let err = stderr(&o);
+    let (set, file) = (
+        err.find("--set nokey: expected key=value"),
+        err.find("bad.toml:1:14: key `cragginess`"),
+    );
+    assert!(set.is_some() && file.is_some() && set < file, "{err}");
+    // Every other mode still refuses it before any work, in the same words.
+    let out = arg(&dir.join("x.png"));
+    for (args, said) in [
+        (vec!["render", "-o", &out, "--set"], "--set needs a value"),
+        (
+            vec!["render", "--set", "nokey", "-o", &out],
+            "--set nokey: expected key=value",
+        ),
+    ] {
+        let o = mountains(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        let err = stderr(&o);
+        let named = format!("mountains: error: {said}\n");
+        assert!(err.starts_with(&named), "{args:?}: {err}");
+    }
+    assert!(!Path::new(&out).exists());
+}
+
 /// A file `--check-config` cannot read (a folder) is named with the flag
 /// that named it, as `--config` and `--open` name theirs: it was named
 /// by the file alone.
