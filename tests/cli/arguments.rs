@@ -294,11 +294,19 @@ fn every_key_is_a_flag_of_its_own() {
 }
 
 /// A value after `=` is taken with one dash as with two, as `-seed 5`
-/// is: `-seed=5` as `--seed=5`, `-config=FILE` as `--config=FILE`.
+/// is: `-seed=5` as `--seed=5`, `-config=FILE` as `--config=FILE`. In
+/// the window, named: with no mode Windows opens the settings screen,
+/// which takes no `-delay`.
 #[test]
 fn one_dash_takes_a_value_after_an_equals_sign() {
-    let inv = parse(&["-seed=5", "-color=sonar", "-config=f.toml", "-delay=20"])
-        .unwrap_or_else(|e| panic!("{e}"));
+    let args = [
+        "--window",
+        "-seed=5",
+        "-color=sonar",
+        "-config=f.toml",
+        "-delay=20",
+    ];
+    let inv = parse(&args).unwrap_or_else(|e| panic!("{e}"));
     let sets: Vec<(&str, &str)> = inv
         .sets
         .iter()
