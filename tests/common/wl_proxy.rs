@@ -51,6 +51,9 @@ struct Seen {
     power_managers: Vec<u32>,
     /// The client's `zwlr_output_power_v1` object ids.
     output_powers: Vec<u32>,
+    /// Those whose first `mode` the compositor has said (passed on): ours
+    /// go after it, or its first word ("on") would undo ours.
+    answered_powers: Vec<u32>,
 }
 
 impl WlProxy {
@@ -124,11 +127,13 @@ impl WlProxy {
 impl WlProxy {
     /// Tells every client watching its outputs' power that they are now
     /// off (`on` false) or on; how many output power objects were told.
+    /// Only those the compositor has answered: its first `mode` event
+    /// comes after the client asks, and would follow ours.
     pub fn set_output_power(&self, on: bool) -> usize {
         let mut told = 0;
         for link in self.clients.lock().unwrap().iter() {
             let seen = link.seen.lock().unwrap();
-            for &id in &seen.output_powers {
+            for &id in &seen.answered_powers {
                 // zwlr_output_power_v1.mode(mode): 0 off, 1 on.
                 link.send(id, 0, &u32::from(on).to_ne_bytes());
                 told += 1;
@@ -189,10 +194,22 @@ fn server_to_client(server: &UnixStream, link: &Link, edit: Edit) {
             let size = (8 + args.len()) as u32;
             message.extend((size << 16 | u32::from(opcode)).to_ne_bytes());
             message.extend(&args);
-            let to = link.to_client.lock().unwrap();
-            send_with_fds(to.as_raw_fd(), &message, &fds_waiting);
+            {
+                let to = link.to_client.lock().unwrap();
+                send_with_fds(to.as_raw_fd(), &message, &fds_waiting);
+            }
             close_all(&fds_waiting);
             fds_waiting.clear();
+            // zwlr_output_power_v1.mode, passed on: ours may follow it now
+            // (`to_client` let go first: `set_output_power` holds `seen`
+            // while it sends).
+            let mut seen = link.seen.lock().unwrap();
+            if opcode == 0
+                && seen.output_powers.contains(&object)
+                && !seen.answered_powers.contains(&object)
+            {
+                seen.answered_powers.push(object);
+            }
         }
     }
     // The compositor hung up: so does the client's side.
