@@ -1,6 +1,10 @@
 //! Frames to picture files: `mountains render` (PNG or JPEG, by the
 //! extension), and the P key's screenshots (PNG).
 
+mod deflate;
+mod huffman;
+mod png_parts;
+
 use std::io::{self, Write};
 use std::path::Path;
 
@@ -8,37 +12,11 @@ use crate::cli::output::Format;
 use crate::fsutil::{write_atomic_with, write_output_with};
 use crate::render::Frame;
 
-/// Encodes `frame` as an 8-bit RGB PNG into `out`, a row at a time (a
-/// 16384x16384 frame's 768 MiB of RGB never exists at once).
+/// Encodes `frame` as an 8-bit RGB PNG into `out`, its pixels packed
+/// on every core (the same file whatever their number).
 pub fn encode_png(frame: &Frame, out: &mut dyn Write) -> io::Result<()> {
-    let mut encoder = png::Encoder::new(out, frame.width(), frame.height());
-    encoder.set_color(png::ColorType::Rgb);
-    encoder.set_depth(png::BitDepth::Eight);
-    // fdeflate with the Up filter on every row: far less time than the
-    // default compression, and than choosing each row's filter, for files
-    // somewhat larger; a screensaver's pictures are many and seldom kept.
-    encoder.set_compression(png::Compression::Fastest);
-    let mut writer = encoder.write_header().map_err(png_error)?;
-    let mut stream = writer.stream_writer().map_err(png_error)?;
-    // Whole rows at a time, at least 64 Ki pixels a batch: one write per
-    // row of a 1-pixel-wide frame cost more than its drawing.
-    let width = frame.width() as usize;
-    let rows = (BATCH_PIXELS / width).max(1);
-    let mut rgb = Vec::with_capacity(rows.min(frame.height() as usize) * width * 3);
-    for batch in frame.pixels().chunks(rows * width) {
-        rgb.clear();
-        rgb.extend(
-            batch
-                .iter()
-                .flat_map(|&p| [(p >> 16) as u8, (p >> 8) as u8, p as u8]),
-        );
-        stream.write_all(&rgb)?;
-    }
-    stream.finish().map_err(png_error)
+    png_parts::encode(frame, out, crate::cores::cores()).map_err(png_error)
 }
-
-/// Pixels converted to RGB and handed to the PNG encoder at once.
-const BATCH_PIXELS: usize = 1 << 16;
 
 /// The png crate's error as an I/O error, keeping a real I/O error as it is.
 fn png_error(e: png::EncodingError) -> io::Error {
