@@ -21,13 +21,19 @@ use crate::render::Frame;
 /// beside the frame.
 const PART_PIXELS: u64 = 1 << 17;
 
+/// Parts packed at once at most: a round's parts are what the encoding
+/// holds (about 1.2 MB each), and a picture is packed in a few
+/// milliseconds by far fewer threads than a large machine has.
+const MOST_AT_ONCE: usize = 8;
+
 /// The zlib stream's header: deflate with a 32 KiB window, no dictionary.
 const ZLIB_HEADER: [u8; 2] = [0x78, 0x01];
 
 /// PNG's filter type "Up", the first byte of each filtered row.
 const UP: u8 = 2;
 
-/// Encodes `frame` into `out`, packing up to `threads` parts at once.
+/// Encodes `frame` into `out`, packing up to `threads` parts at once (at
+/// most [`MOST_AT_ONCE`]).
 pub(crate) fn encode(
     frame: &Frame,
     out: &mut dyn Write,
@@ -41,7 +47,8 @@ pub(crate) fn encode(
     let parts: Vec<Range<u64>> = (0..total.div_ceil(PART_PIXELS))
         .map(|k| k * PART_PIXELS..((k + 1) * PART_PIXELS).min(total))
         .collect();
-    let mut packers: Vec<Packer> = (0..threads.max(1)).map(|_| Packer::default()).collect();
+    let at_once = threads.clamp(1, MOST_AT_ONCE);
+    let mut packers: Vec<Packer> = (0..at_once).map(|_| Packer::default()).collect();
     let mut sum = deflate::adler(&[]);
     for round in parts.chunks(packers.len()) {
         pack_at_once(frame, round, &mut packers[..round.len()]);

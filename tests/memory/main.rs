@@ -9,6 +9,7 @@ static ALLOCATOR: common::counting::Counting = common::counting::Counting;
 mod heightmap_alloc;
 mod hostile_corpus;
 mod night_memory;
+mod png_memory;
 mod saver_memory;
 mod settings_allocations;
 mod terrain_memory;
