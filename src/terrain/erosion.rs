@@ -43,17 +43,31 @@ const RELIEF_CELLS: f32 = 24.0;
 /// `seed` chooses where the rain falls. The droplets run one after another;
 /// only adding their work to the fine grid uses `threads`.
 pub(crate) fn erode(field: &mut Heightfield, strength: f32, seed: u64, threads: usize) {
+    let lattice = field.coarsened(levels_above(field.exponent()));
+    if let Some(change) = wear(lattice, strength, seed) {
+        add(field, &change, threads);
+    }
+}
+
+/// How many levels coarser than a field of `exponent` the droplets' grid
+/// is: its points are every `2^levels`-th of the field's, and a subdivided
+/// field's are final once the level that makes them is done.
+pub(crate) fn levels_above(exponent: u32) -> u32 {
+    exponent.saturating_sub(COARSE_CELLS.ilog2())
+}
+
+/// The change the droplets make to `coarse` (a field's
+/// [`levels_above`]-coarsened copy), as heights on its grid: [`add`] adds
+/// it to the field. `None` where nothing wears (no strength, a flat field).
+pub(crate) fn wear(mut coarse: Heightfield, strength: f32, seed: u64) -> Option<Heightfield> {
     // NaN too: no erosion.
     if strength.is_nan() || strength <= 0.0 {
-        return;
+        return None;
     }
-    let fine = field.exponent();
-    let levels = fine.saturating_sub(COARSE_CELLS.ilog2());
-    let mut coarse = field.coarsened(levels);
     let (lo, hi) = finite_range(coarse.heights());
     let unit = (hi - lo) / RELIEF_CELLS;
     if !(unit > 0.0 && unit.is_finite()) {
-        return;
+        return None;
     }
     let n = coarse.size();
     let before: Vec<f32> = coarse
@@ -76,7 +90,14 @@ pub(crate) fn erode(field: &mut Heightfield, strength: f32, seed: u64, threads: 
     {
         *h = (a - b) * unit;
     }
-    add_upsampled(field, &coarse, 1 << (fine - coarse.exponent()), threads);
+    Some(coarse)
+}
+
+/// Adds `change`, what [`wear`] made of the field's coarse copy, to
+/// `field`, rows shared out among `threads`.
+pub(crate) fn add(field: &mut Heightfield, change: &Heightfield, threads: usize) {
+    let stride = 1 << (field.exponent() - change.exponent());
+    add_upsampled(field, change, stride, threads);
 }
 
 /// Lowest and highest finite heights (0, 0 if none).

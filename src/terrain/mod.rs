@@ -120,9 +120,31 @@ fn params_for(settings: &Settings, seed: u64) -> Params {
 /// Runs the generator and the finishing passes over `field`.
 fn fill(field: &mut Heightfield, params: &Params, seed: u64, threads: usize) {
     let threads = threads.max(1);
+    fill_wearing(
+        field,
+        params,
+        seed,
+        threads,
+        Wear::alongside(params, seed, threads),
+    );
+}
+
+/// [`fill`], eroding alongside the subdivision as `wear` says (`None`:
+/// after it, as the saved data sets of before were made).
+fn fill_wearing(
+    field: &mut Heightfield,
+    params: &Params,
+    seed: u64,
+    threads: usize,
+    wear: Option<Wear>,
+) {
     field.set_seed(Some(seed));
-    let extremes = subdivide_all(field, params, seed, threads, &Plain);
-    let extremes = weather(field, params, seed, threads, extremes);
+    let extremes = subdivide_all(field, params, seed, threads, &Plain, wear);
+    let extremes = match wear {
+        // Worn: the subdivision's extremes no longer hold.
+        Some(_) => None,
+        None => weather(field, params, seed, threads, extremes),
+    };
     finish(field, params, threads, extremes);
     if let Some(tallest) = params.tallest {
         lower_to(field, tallest);
@@ -197,7 +219,7 @@ pub fn generate_audited(settings: &Settings, seed: u64, threads: usize) -> Audit
     field.heights_mut().fill(f32::NAN);
     field.set_seed(Some(seed));
     let audit = Audited::default();
-    let extremes = subdivide_all(&mut field, &params, seed, threads, &audit);
+    let extremes = subdivide_all(&mut field, &params, seed, threads, &audit, None);
     let unset = field.heights().iter().filter(|h| h.is_nan()).count();
     let extremes = weather(&mut field, &params, seed, threads, extremes);
     finish(&mut field, &params, threads, extremes);
@@ -232,7 +254,30 @@ fn default_threads() -> usize {
     crate::cores::cores().min(8)
 }
 
-/// Sets the starting points and runs the chosen generator's subdivision;
+/// The erosion run alongside the subdivision ([`subdivide_all`]): its
+/// strength, the mountain's seed, and the threads that add its work.
+#[derive(Clone, Copy, Debug)]
+struct Wear {
+    strength: f32,
+    seed: u64,
+    threads: usize,
+}
+
+impl Wear {
+    /// The erosion `p` asks for, if there is a thread to spare for it: the
+    /// droplets run one after another, and while they do the subdivision's
+    /// finer levels need not wait.
+    fn alongside(p: &Params, seed: u64, threads: usize) -> Option<Wear> {
+        (p.erosion > 0.0 && threads > 1).then_some(Wear {
+            strength: p.erosion,
+            seed,
+            threads,
+        })
+    }
+}
+
+/// Sets the starting points and runs the chosen generator's subdivision,
+/// and `wear`'s erosion if given (else the caller erodes, [`weather`]);
 /// returns the field's extremes if the subdivision saw them all.
 fn subdivide_all<P: Put>(
     field: &mut Heightfield,
@@ -240,6 +285,7 @@ fn subdivide_all<P: Put>(
     seed: u64,
     threads: usize,
     put: &P,
+    wear: Option<Wear>,
 ) -> Option<Extremes> {
     let size = field.size();
     let noise = noise::Noise::new(seed, p.exponent)
@@ -261,19 +307,51 @@ fn subdivide_all<P: Put>(
             let first_depth = rule.start(heights, size, p.elevation, &noise, put);
             // Only a moved water line needs the extremes.
             let job = Job::new(&rule, put, noise, threads, p.sea_level != 0.0);
-            subdivide::subdivide(heights, size, first_depth, &job)
+            subdivide_wearing(field, first_depth, &job, wear)
         }
         Generator::Triangle => {
             let rule = triangle::Triangle::new(p.roughness, p.profile);
             rule.first_level(heights, size, &noise, put);
             let job = Job::new(&rule, put, noise, threads, true);
-            subdivide::subdivide(heights, size, 1, &job)
+            subdivide_wearing(field, 1, &job, wear)
         }
         Generator::Brownian => {
             brownian::synthesise(heights, p.exponent, p.hurst, seed, threads);
+            if let Some(w) = wear {
+                erosion::erode(field, w.strength, w.seed, w.threads);
+            }
             None
         }
     }
+}
+
+/// The subdivision's levels from `first_depth` on, with `wear`'s droplets
+/// on a thread of their own from the level that makes the points they
+/// wear on, alongside the finer levels, which never write those points
+/// again: the same field as eroding after the subdivision, sooner.
+fn subdivide_wearing<R: subdivide::Rule, P: Put>(
+    field: &mut Heightfield,
+    first_depth: u32,
+    job: &Job<'_, R, P>,
+    wear: Option<Wear>,
+) -> Option<Extremes> {
+    let size = field.size();
+    let Some(wear) = wear else {
+        return subdivide::subdivide(field.heights_mut(), size, first_depth, job);
+    };
+    let levels = erosion::levels_above(field.exponent());
+    let (depth, _) =
+        subdivide::subdivide_down_to(field.heights_mut(), size, first_depth, 2 << levels, job);
+    let lattice = field.coarsened(levels);
+    let change = std::thread::scope(|s| {
+        let worn = s.spawn(move || erosion::wear(lattice, wear.strength, wear.seed));
+        subdivide::subdivide(field.heights_mut(), size, depth, job);
+        worn.join().unwrap_or_else(|p| std::panic::resume_unwind(p))
+    });
+    if let Some(change) = change {
+        erosion::add(field, &change, wear.threads);
+    }
+    None
 }
 
 /// Applies sea level, contour and height to the subdivided field.
@@ -323,6 +401,42 @@ mod tests {
     }
 
     #[test]
+    fn eroding_alongside_the_subdivision_makes_the_same_field_as_after_it() {
+        let bits = |f: &Heightfield| f.heights().iter().map(|h| h.to_bits()).collect::<Vec<_>>();
+        // Subdivided, then eroded: the order before the droplets ran
+        // alongside the finer levels.
+        let after = |s: &Settings, seed: u64| {
+            let params = params_for(s, seed);
+            let mut field = Heightfield::flat(params.exponent, params.extent());
+            fill_wearing(&mut field, &params, seed, 2, None);
+            field
+        };
+        for generator in [Generator::Square, Generator::Diamond, Generator::Triangle] {
+            for detail in [6, 7, 8, 10] {
+                for seed in [1, 42] {
+                    let s = Settings {
+                        generator,
+                        detail: crate::settings::Detail::Level(detail),
+                        ..Settings::default()
+                    };
+                    assert!(
+                        params_for(&s, seed).erosion > 0.0,
+                        "{generator:?}: no erosion"
+                    );
+                    let after = after(&s, seed);
+                    for threads in [2, 3] {
+                        let alongside = generate_with_threads(&s, seed, threads);
+                        assert!(
+                            bits(&alongside) == bits(&after),
+                            "{generator:?} detail {detail} seed {seed}, {threads} threads"
+                        );
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
     fn the_subdivision_sees_the_true_extremes_when_asked() {
         for generator in [Generator::Square, Generator::Diamond, Generator::Triangle] {
             for (detail, sea_level) in [(4, 0.0), (7, 0.3), (10, 0.0), (10, -0.2)] {
@@ -335,7 +449,7 @@ mod tests {
                     };
                     let params = Params::from_settings(&s);
                     let mut field = Heightfield::flat(params.exponent, params.extent());
-                    let seen = subdivide_all(&mut field, &params, 17, threads, &Plain);
+                    let seen = subdivide_all(&mut field, &params, 17, threads, &Plain, None);
                     let truth = normalize::min_max(field.heights(), 1);
                     let wanted = generator == Generator::Triangle || sea_level != 0.0;
                     let case = format!("{generator:?} {detail} {sea_level} {threads}");

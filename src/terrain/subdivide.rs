@@ -226,14 +226,30 @@ pub(crate) fn subdivide<R: Rule, P: Put>(
     first_depth: u32,
     job: &Job<'_, R, P>,
 ) -> Option<Extremes> {
+    subdivide_down_to(heights, size, first_depth, 2, job).1
+}
+
+/// The levels from `first_depth` on whose step is at least `least_step`
+/// (2 for every level): afterwards every point of the lattice of half
+/// that step is set, and no later level writes to it. Returns the depth
+/// of the next level, and the field's extremes if the last level run was
+/// the finest (and the job asked for them).
+pub(crate) fn subdivide_down_to<R: Rule, P: Put>(
+    heights: &mut [f32],
+    size: usize,
+    first_depth: u32,
+    least_step: usize,
+    job: &Job<'_, R, P>,
+) -> (u32, Option<Extremes>) {
     let last = size - 1;
     let mut depth = first_depth;
     let mut extremes = None;
-    while let Some(lv) = level(last, depth, job.rule) {
+    while let Some(lv) = level(last, depth, job.rule).filter(|lv| lv.step >= least_step) {
         extremes = Some(run_level(heights, size, &lv, job));
         depth += 1;
     }
-    extremes.filter(|_| job.extremes)
+    let finest = level(last, depth, job.rule).is_none();
+    (depth, extremes.filter(|_| job.extremes && finest))
 }
 
 /// Level `depth` of a grid whose last index is `last`, if it has new points.
