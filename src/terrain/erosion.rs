@@ -55,6 +55,10 @@ pub(crate) fn erode(field: &mut Heightfield, strength: f32, seed: u64, threads: 
 pub(crate) fn levels_above(exponent: u32) -> u32 {
     exponent.saturating_sub(COARSE_CELLS.ilog2())
 }
+// `Heightfield::coarsened` takes these levels whole (it keeps at least
+// 2^COARSENED_LEAST_EXPONENT cells a side), so the lattice's points are
+// every 2^levels-th, as the subdivision is staged by.
+const _: () = assert!(COARSE_CELLS.ilog2() >= super::heightfield::COARSENED_LEAST_EXPONENT);
 
 /// The change the droplets make to `coarse` (a field's
 /// [`levels_above`]-coarsened copy), as heights on its grid: [`add`] adds
