@@ -126,6 +126,9 @@ pub struct Mistake {
     pub typed: String,
     /// Its refusal, in the words every mode says it in.
     pub refusal: UsageError,
+    /// Where it was typed among the arguments (the index of its flag):
+    /// mistakes are said in the order they were typed.
+    pub at: usize,
 }
 
 /// One preference set for this run: a `--set key=value` or a key's own
@@ -141,6 +144,9 @@ pub struct Set {
     /// The arguments that gave it, as typed (`-seed 9`, `--seed=9`,
     /// `--set seed=9`), each cut as every echo is.
     pub typed: String,
+    /// Where it was typed among the arguments (the index of its flag):
+    /// a bad one is said among the other mistakes in the order typed.
+    pub at: usize,
 }
 
 impl Set {
@@ -786,7 +792,12 @@ impl Parser<'_> {
     /// Adds `kv` to the sets, typed as the arguments from `from` were.
     fn push_set(&mut self, (key, value): (String, String), from: usize) {
         let typed = self.typed_since(from);
-        self.inv.sets.push(Set { key, value, typed });
+        self.inv.sets.push(Set {
+            key,
+            value,
+            typed,
+            at: from,
+        });
     }
 
     /// A preference key given as a flag of its own (`-cragginess 40`),
@@ -832,7 +843,11 @@ impl Parser<'_> {
     fn hold_unfinished(&mut self, from: usize, refusal: UsageError) {
         let typed = self.typed_since(from);
         self.bad_value.get_or_insert_with(|| refusal.clone());
-        self.inv.unfinished = Some(Mistake { typed, refusal });
+        self.inv.unfinished = Some(Mistake {
+            typed,
+            refusal,
+            at: from,
+        });
     }
 
     /// Holds `refusal` of the `--set` typed from `from` that gives no
@@ -840,7 +855,11 @@ impl Parser<'_> {
     fn hold_malformed(&mut self, from: usize, refusal: UsageError) {
         let typed = self.typed_since(from);
         self.bad_value.get_or_insert_with(|| refusal.clone());
-        self.inv.malformed.push(Mistake { typed, refusal });
+        self.inv.malformed.push(Mistake {
+            typed,
+            refusal,
+            at: from,
+        });
     }
 
     /// Checks the set last pushed, and holds its refusal if it is the

@@ -196,8 +196,10 @@ pub fn report(problems: &[Problem]) -> Vec<String> {
 }
 
 /// As [`report`], each problem's line made by `line` (which says whether
-/// it is an error or a warning, and what follows from it).
-pub fn report_with(problems: &[Problem], line: impl Fn(&Problem) -> String) -> Vec<String> {
+/// it is an error or a warning, and what follows from it). Any list said
+/// a line an item is capped so (`--check-config`'s mistakes typed are
+/// more than the loader's problems).
+pub fn report_with<T>(problems: &[T], line: impl Fn(&T) -> String) -> Vec<String> {
     let mut lines: Vec<String> = problems.iter().take(SHOWN_PROBLEMS).map(line).collect();
     if problems.len() > SHOWN_PROBLEMS {
         lines.push(format!(

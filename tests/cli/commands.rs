@@ -1631,6 +1631,53 @@ fn check_config_with_a_malformed_set_still_checks_the_file() {
     assert!(!Path::new(&out).exists());
 }
 
+/// Mistakes typed beside `--check-config` are said in the order they
+/// were typed, whatever their kind, and the verdict names the first: a
+/// `--set nokey` typed before `-color pink` was said after it, and the
+/// verdict named `-color pink` alone.
+#[test]
+fn check_config_says_mistakes_in_the_order_typed() {
+    let dir = scratch("check-config-mistakes-in-order");
+    let good = dir.join("good.toml");
+    std::fs::write(&good, "seed = 5\n").unwrap();
+    let good = arg(&good);
+    let (nokey, pink) = ("--set nokey: expected key=value", "-color: \"pink\" is not");
+    for (args, said, verdict) in [
+        (
+            vec!["--check-config", &good, "--set", "nokey", "-color", "pink"],
+            vec![nokey, pink],
+            "a --set is not",
+        ),
+        (
+            vec!["--check-config", &good, "-color", "pink", "--set", "nokey"],
+            vec![pink, nokey],
+            "-color pink is not",
+        ),
+        (
+            vec!["--set=", "-color", "pink", "--check-config", &good, "-seed"],
+            vec!["--set=: an empty value", pink, "`-seed` needs a value"],
+            "a --set is not",
+        ),
+    ] {
+        let o = mountains(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        let err = stderr(&o);
+        let line_of = |text: &str| {
+            let start = format!("mountains: error: {text}");
+            err.lines().position(|l| l.starts_with(&start))
+        };
+        let lines: Vec<Option<usize>> = said.iter().map(|text| line_of(text)).collect();
+        let in_order = (0..lines.len()).map(Some).collect::<Vec<_>>();
+        assert_eq!(lines, in_order, "{args:?}: {err}");
+        let out = String::from_utf8_lossy(&o.stdout);
+        assert_eq!(
+            out,
+            format!("{good}: the file is ok; {verdict}\n"),
+            "{args:?}"
+        );
+    }
+}
+
 /// A file `--check-config` cannot read (a folder) is named with the flag
 /// that named it, as `--config` and `--open` name theirs: it was named
 /// by the file alone.
