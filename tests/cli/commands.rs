@@ -1383,6 +1383,45 @@ fn an_output_the_write_would_refuse_is_refused_before_any_work() {
     assert!(left.is_empty(), "left behind: {left:?}");
 }
 
+/// An `-o` that ends in `/` and is no folder (`-o new/`, `-o x.png/`)
+/// names a folder, never a file: it is refused before any work, saying
+/// so. It passed the check before the work, and once the picture was
+/// drawn or the data set made its rename failed with "Not a directory",
+/// of a folder that was never there. With an `--open` that cannot be
+/// read, the `-o` is still what is said; a file so named is untouched.
+#[test]
+fn an_output_that_ends_in_a_slash_is_refused_before_any_work() {
+    let dir = scratch("output-ends-in-a-slash");
+    let missing = arg(&dir.join("missing.png"));
+    let file = dir.join("kept.png");
+    std::fs::write(&file, "kept").unwrap();
+    let (new, kept) = (
+        format!("{}/", arg(&dir.join("new"))),
+        format!("{}/", arg(&file)),
+    );
+    for mode in [&["render", "--size", "8x8"][..], &["heightmap"]] {
+        for out in [&new, &kept] {
+            for heights in [&["--set", "detail=4"][..], &["--open", &missing]] {
+                let args = [mode, heights, &["-o", out]].concat();
+                let o = mountains(&args);
+                assert_eq!(o.status.code(), Some(1), "{args:?}: {}", stderr(&o));
+                let said = format!(
+                    "mountains: error: -o {out}: cannot write: names a folder (it ends in /), not a file\n"
+                );
+                assert_eq!(stderr(&o), said, "{args:?}");
+            }
+        }
+    }
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), "kept");
+    assert!(!dir.join("new").exists());
+    let left: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .filter(|n| n.to_string_lossy().starts_with('.'))
+        .collect();
+    assert!(left.is_empty(), "left behind: {left:?}");
+}
+
 /// `-o` through a link to nowhere is refused (a file renamed in its place
 /// would replace someone's link), and before any work: it was refused only
 /// once the whole picture was drawn or the data set made. With an
