@@ -7,6 +7,7 @@
 use std::ffi::OsString;
 use std::path::{Path, PathBuf};
 
+use crate::quote::clipped;
 use crate::render::Size;
 use crate::settings::load::Problem;
 use crate::terrain::heightmap;
@@ -273,6 +274,7 @@ impl Parser<'_> {
                     (Mode::XRoot, id @ Mode::XWindowId(_))
                     | (id @ Mode::XWindowId(_), Mode::XRoot) => (id, arg),
                     _ => {
+                        let (arg, old) = (clipped(&arg), clipped(&old));
                         return Err(UsageError(format!(
                             "`{arg}` given after `{old}`: choose one mode"
                         )));
@@ -594,7 +596,7 @@ impl Parser<'_> {
         if flag.inline.is_none() && v.len() > 1 && v.to_string_lossy().starts_with('-') {
             return Err(UsageError(format!(
                 "{arg} needs a value, not the flag `{}` (a value that starts with `-`: write {long}={0})",
-                v.to_string_lossy()
+                clipped(&v.to_string_lossy())
             )));
         }
         if v.is_empty() {
@@ -742,7 +744,8 @@ impl Parser<'_> {
                 let v = self.inline_or_next(flag.inline.clone(), name)?;
                 let us = v.trim().parse::<u64>().map_err(|_| {
                     UsageError(format!(
-                        "`{name} {v}`: expected microseconds, e.g. -delay 20000"
+                        "`{name} {}`: expected microseconds, e.g. -delay 20000",
+                        clipped(&v)
                     ))
                 })?;
                 self.inv.xss.delay_us = Some(us);
@@ -784,7 +787,7 @@ impl Parser<'_> {
         let taken = &self.args[from..self.pos.min(self.args.len())];
         let typed: Vec<String> = taken
             .iter()
-            .map(|a| crate::quote::clipped(&a.to_string_lossy()))
+            .map(|a| clipped(&a.to_string_lossy()))
             .collect();
         typed.join(" ")
     }
@@ -923,7 +926,7 @@ fn key_value(text: OsString) -> Result<(String, String), UsageError> {
     let (k, v) = kv
         .split_once('=')
         .filter(|(k, _)| !k.trim().is_empty())
-        .ok_or_else(|| UsageError(format!("--set {kv}: expected key=value")))?;
+        .ok_or_else(|| UsageError(format!("--set {}: expected key=value", clipped(&kv))))?;
     Ok((k.trim().to_string(), v.trim().to_string()))
 }
 
@@ -1019,7 +1022,7 @@ fn unknown_argument(arg: &str) -> UsageError {
     };
     UsageError(format!(
         "unknown argument `{}`{}",
-        crate::quote::clipped(arg),
+        clipped(arg),
         crate::spelling::offer(nearest.as_deref())
     ))
 }
@@ -1046,7 +1049,7 @@ fn layer_named(flag: &str, name: &str) -> Result<Layer, UsageError> {
         let names: Vec<&str> = Layer::NAMES.iter().map(|(n, _)| *n).collect();
         UsageError(format!(
             "{flag} {}: expected one of {}",
-            crate::quote::clipped(name),
+            clipped(name),
             names.join(", ")
         ))
     })
@@ -1057,7 +1060,8 @@ fn x_window_id(flag: &str, text: &str) -> Result<u64, UsageError> {
     let id = handle_for(flag, text)?;
     if id > u64::from(u32::MAX) {
         return Err(UsageError(format!(
-            "{flag} {text}: X window ids have 32 bits (at most 0xffffffff)"
+            "{flag} {}: X window ids have 32 bits (at most 0xffffffff)",
+            clipped(text)
         )));
     }
     Ok(id)
@@ -1078,7 +1082,8 @@ pub fn parse_handle(text: &str) -> Result<u64, UsageError> {
     match parsed {
         Ok(h) if h != 0 => Ok(h),
         _ => Err(UsageError(format!(
-            "`{text}` is not a window handle (a decimal number, or hex with 0x)"
+            "`{}` is not a window handle (a decimal number, or hex with 0x)",
+            clipped(text)
         ))),
     }
 }
@@ -1111,17 +1116,19 @@ fn parse_size(text: &str) -> Result<Size, UsageError> {
     {
         return Ok(Size::new(w, h));
     }
+    // The size as a message echoes it: a flood typed is no flood said.
+    let shown = clipped(text);
     let bad = || {
         let names: Vec<&str> = NAMED_SIZES.iter().map(|(n, ..)| *n).collect();
         UsageError(format!(
-            "--size {text}: expected WIDTHxHEIGHT, e.g. 1920x1080, or one of {}",
+            "--size {shown}: expected WIDTHxHEIGHT, e.g. 1920x1080, or one of {}",
             names.join(", ")
         ))
     };
     let (w, h) = text.split_once(['x', 'X']).ok_or_else(bad)?;
     let too_large = || {
         UsageError(format!(
-            "--size {text}: too large (each side at most {MAX_SIDE} pixels)"
+            "--size {shown}: too large (each side at most {MAX_SIDE} pixels)"
         ))
     };
     // A side of digits past what a number holds is a size too large, not
@@ -1137,7 +1144,7 @@ fn parse_size(text: &str) -> Result<Size, UsageError> {
     let size = Size::new(side(w)?, side(h)?);
     if size.is_empty() {
         return Err(UsageError(format!(
-            "--size {text}: too small (each side at least 1 pixel)"
+            "--size {shown}: too small (each side at least 1 pixel)"
         )));
     }
     if size.width.max(size.height) > MAX_SIDE {
@@ -1148,7 +1155,7 @@ fn parse_size(text: &str) -> Result<Size, UsageError> {
     let most = crate::render::frame::MAX_PIXELS;
     if size.pixels() > most {
         return Err(UsageError(format!(
-            "--size {text}: too large (at most {most} pixels in all)"
+            "--size {shown}: too large (at most {most} pixels in all)"
         )));
     }
     Ok(size)

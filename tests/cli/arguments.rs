@@ -708,3 +708,37 @@ fn a_data_set_is_refused_where_no_mountain_is_shown() {
         assert_eq!(inv.open.as_deref(), Some(std::path::Path::new("h.png")));
     }
 }
+
+/// A value typed is echoed at most 80 characters long with its length,
+/// as a bad key's value is (docs/refusals.md, "Floods"): a `--set`
+/// without `=`, a `--size`, a window handle, a `-delay`, a flag where a
+/// value belongs and a mode's flag given after another, 100000
+/// characters long, were echoed whole (twice, for the flag). A file's
+/// name is a path, and is named whole, as every message names one.
+#[test]
+fn a_huge_value_typed_is_echoed_short() {
+    let huge = "k".repeat(100_000);
+    let flag = format!("-{huge}");
+    let digits = format!("{}x5", "9".repeat(100_000));
+    let wide_id = format!("0x{}100000000", "0".repeat(100_000));
+    let checked = format!("--check-config={huge}");
+    for args in [
+        vec!["render", "-o", "x.png", "--set", &huge],
+        vec!["render", "-o", "x.png", "--size", &huge],
+        vec!["render", "-o", "x.png", "--size", &digits],
+        vec!["render", "-o", &flag],
+        vec!["/p", &huge],
+        vec!["--window-id", &huge],
+        vec!["--window-id", &wide_id],
+        vec!["--root", "-delay", &huge],
+        vec![&checked, "--root"],
+    ] {
+        let e = parse(&args).expect_err("a huge value is refused");
+        assert!(
+            e.0.len() < 1000 && e.0.contains(" characters)"),
+            "{} bytes: {}",
+            e.0.len(),
+            &e.0[..e.0.len().min(300)]
+        );
+    }
+}
