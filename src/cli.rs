@@ -1001,13 +1001,16 @@ fn unknown_argument(arg: &str) -> UsageError {
         Some(_) if letter.is_some() => letter.map(|l| l.to_string()),
         Some(flag) => {
             let bare = flag.trim_start_matches('-').replace('_', "-");
-            let names = FLAGS
+            let names: Vec<String> = FLAGS
                 .iter()
                 .map(|f| f.to_string())
-                .chain(key_flags::names());
+                .chain(key_flags::names())
+                .collect();
             match is_word(&bare) {
                 true => Some(bare),
-                false => crate::spelling::nearest(&bare, names).map(|f| format!("--{f}")),
+                false => completed(&bare, &names)
+                    .or_else(|| crate::spelling::nearest(&bare, &names))
+                    .map(|f| format!("--{f}")),
             }
         }
         None if FLAGS.contains(&arg) => Some(format!("--{arg}")),
@@ -1025,6 +1028,18 @@ fn unknown_argument(arg: &str) -> UsageError {
         clipped(arg),
         crate::spelling::offer(nearest.as_deref())
     ))
+}
+
+/// The one name among `names` that `bare` begins (`out`: `output`), if
+/// `bare` is long enough to be a name cut short and begins no other:
+/// `--out` was offered `--set` (two letters changed) over `--output`.
+fn completed<'a>(bare: &str, names: &'a [String]) -> Option<&'a String> {
+    if bare.chars().count() < 3 {
+        return None;
+    }
+    let mut begun = names.iter().filter(|name| name.starts_with(bare));
+    let first = begun.next()?;
+    begun.next().is_none().then_some(first)
 }
 
 /// Whether `arg` names a file `-o` or `--open` takes (by its extension).

@@ -175,6 +175,34 @@ fn a_mistyped_flag_offers_the_nearest() {
     }
 }
 
+/// A flag cut short (`--out`) is offered whole (`--output`) when it
+/// begins one flag alone: `--out x.png` was offered `--set`, two letters
+/// changed. One that begins several is offered by its spelling.
+#[test]
+fn a_flag_cut_short_offers_the_flag_it_begins() {
+    for (args, offered) in [
+        (
+            &["render", "--out", "x.png"][..],
+            "`--out`; did you mean `--output`?",
+        ),
+        (
+            &["render", "-o", "x.png", "-low"],
+            "`-low`; did you mean `--low-detail`?",
+        ),
+        (
+            &["--pause", "3"],
+            "`--pause`; did you mean `--pause-seconds`?",
+        ),
+    ] {
+        let e = parse(args).expect_err(&format!("{args:?} should fail"));
+        assert!(e.0.contains(offered), "{args:?}: {e}");
+    }
+    // `--win` begins `--window` and `--window-id`: neither is offered
+    // for being begun.
+    let e = parse(&["--win"]).expect_err("--win should fail");
+    assert!(!e.0.contains("--window-id"), "{e}");
+}
+
 /// `--size` bounds the pixels in all as it bounds each side, as the
 /// arguments are read: `render` said it only after asking about its `-o`.
 #[test]
