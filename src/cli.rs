@@ -399,6 +399,20 @@ fn prints_only(mode: &Mode) -> Option<&'static str> {
     }
 }
 
+/// `-` for a preferences file (`--config -`, `--check-config -`), as
+/// `--open -` and `-o -` take it for a pipe: no preferences are read from
+/// standard input, and it was "no such file" or an unknown argument `-`.
+/// A file named `-` is `./-`.
+fn no_standard_input(flag: &str, file: &std::ffi::OsStr) -> Result<(), UsageError> {
+    if file != "-" {
+        return Ok(());
+    }
+    Err(UsageError(format!(
+        "{flag} -: preferences are read from a file, not from standard input \
+         (a file named -: ./-)"
+    )))
+}
+
 /// The flags that take no value (as they are matched: see `long_name`).
 const NO_VALUE: [&str; 17] = [
     "--version",
@@ -622,6 +636,7 @@ impl Parser<'_> {
         match flag.name.as_str() {
             "--config" => {
                 let file = self.take(flag, "--config")?;
+                no_standard_input("--config", &file)?;
                 self.once("--config", "preferences file", self.typed_since(flag.from))?;
                 self.inv.config = Some(file.into());
             }
@@ -717,6 +732,9 @@ impl Parser<'_> {
                 "{}: an empty value; give a file name, or none for the usual file",
                 flag.arg
             )));
+        }
+        if inline.or(next) == Some("-") {
+            no_standard_input("--check-config", "-".as_ref())?;
         }
         Ok(match (inline, next) {
             (Some(v), _) => Some(PathBuf::from(v)),

@@ -203,6 +203,28 @@ fn a_flag_cut_short_offers_the_flag_it_begins() {
     assert!(!e.0.contains("--window-id"), "{e}");
 }
 
+/// `-` for a preferences file, as `--open -` and `-o -` take it for a
+/// pipe, is refused naming the flag and why, exit 2: `--check-config -`
+/// was an unknown argument `-`, and `--config -` a file not there. A file
+/// named `-` is `./-`.
+#[test]
+fn a_preferences_file_from_standard_input_is_refused_saying_why() {
+    for (args, flag) in [
+        (&["--check-config", "-"][..], "--check-config"),
+        (&["--check-config=-"], "--check-config"),
+        (&["--config", "-", "--check-config"], "--config"),
+        (&["render", "--config", "-", "-o", "x.png"], "--config"),
+        (&["--config=-", "--window"], "--config"),
+        (&["-config", "-"], "--config"),
+    ] {
+        let e = parse(args).expect_err(&format!("{args:?} should fail"));
+        let said = format!("{flag} -: preferences are read from a file, not from standard input");
+        assert!(e.0.starts_with(&said), "{args:?}: {e}");
+    }
+    let dashed = parse(&["--config", "./-", "--check-config", "./-"]).unwrap();
+    assert_eq!(dashed.config, Some(PathBuf::from("./-")));
+}
+
 /// `--size` bounds the pixels in all as it bounds each side, as the
 /// arguments are read: `render` said it only after asking about its `-o`.
 #[test]
