@@ -512,6 +512,15 @@ impl<'a> Flag<'a> {
             from,
         }
     }
+
+    /// The flag as typed, without a value given after `=` (`-layer` of
+    /// `-layer=top`).
+    fn typed_name(&self) -> &'a str {
+        match &self.inline {
+            Some(v) => &self.arg[..self.arg.len() - v.len() - 1],
+            None => self.arg,
+        }
+    }
 }
 
 impl Parser<'_> {
@@ -693,13 +702,16 @@ impl Parser<'_> {
         let mode = match flag.name.as_str() {
             "--root" => Mode::XRoot,
             "--window" => Mode::Window,
+            // A value is named as it was typed (`--layer=foo`, `--layer
+            // foo`): `--layer=foo foo` named it twice.
             "--layer" => {
                 let name = self.inline_or_next(flag.inline.clone(), arg)?;
-                Mode::Layer(layer_named(arg, &name)?)
+                Mode::Layer(layer_named(&self.typed_since(flag.from), &name)?)
             }
             "--window-id" => {
                 let id = self.inline_or_next(flag.inline.clone(), arg)?;
-                Mode::XWindowId(x_window_id(arg, &id)?)
+                let typed = self.typed_since(flag.from);
+                Mode::XWindowId(x_window_id(flag.typed_name(), &typed, &id)?)
             }
             "--settings" => Mode::Settings { parent: None },
             "--help" | "-h" | "-help" => Mode::Help,
@@ -1076,25 +1088,22 @@ fn opens(arg: &str) -> bool {
     heightmap::named_as_data_set(path) && path.is_file()
 }
 
-/// `--layer NAME`: one of [`Layer::NAMES`], or a message listing them.
-fn layer_named(flag: &str, name: &str) -> Result<Layer, UsageError> {
+/// `--layer NAME`, typed as `typed`: one of [`Layer::NAMES`], or a
+/// message listing them.
+fn layer_named(typed: &str, name: &str) -> Result<Layer, UsageError> {
     Layer::named(name).ok_or_else(|| {
         let names: Vec<&str> = Layer::NAMES.iter().map(|(n, _)| *n).collect();
-        UsageError(format!(
-            "{flag} {}: expected one of {}",
-            clipped(name),
-            names.join(", ")
-        ))
+        UsageError(format!("{typed}: expected one of {}", names.join(", ")))
     })
 }
 
-/// An X window id for `flag`: a handle that fits X's 32 bits.
-fn x_window_id(flag: &str, text: &str) -> Result<u64, UsageError> {
+/// An X window id `text` for `flag`, typed with it as `typed`: a handle
+/// that fits X's 32 bits.
+fn x_window_id(flag: &str, typed: &str, text: &str) -> Result<u64, UsageError> {
     let id = handle_for(flag, text)?;
     if id > u64::from(u32::MAX) {
         return Err(UsageError(format!(
-            "{flag} {}: X window ids have 32 bits (at most 0xffffffff)",
-            clipped(text)
+            "{typed}: X window ids have 32 bits (at most 0xffffffff)"
         )));
     }
     Ok(id)

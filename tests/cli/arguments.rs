@@ -225,6 +225,36 @@ fn a_preferences_file_from_standard_input_is_refused_saying_why() {
     assert_eq!(dashed.config, Some(PathBuf::from("./-")));
 }
 
+/// A mode's value that is refused is named as it was typed, after `=`
+/// or after a space: `--layer=foo` was said as `--layer=foo foo`, the
+/// value twice, and `-window-id=zz` as `-window-id=zz: `zz``.
+#[test]
+fn a_mode_value_refused_is_named_as_typed() {
+    let layers = "expected one of background, bottom, top, overlay";
+    let wide = "X window ids have 32 bits (at most 0xffffffff)";
+    let handle = "is not a window handle (a decimal number, or hex with 0x)";
+    for (args, said) in [
+        (&["--layer=foo"][..], format!("--layer=foo: {layers}")),
+        (&["-layer", "foo"], format!("-layer foo: {layers}")),
+        (
+            &["--window-id=0x100000000"],
+            format!("--window-id=0x100000000: {wide}"),
+        ),
+        (
+            &["--window-id", "0x100000000"],
+            format!("--window-id 0x100000000: {wide}"),
+        ),
+        (&["-window-id=zz"], format!("-window-id: `zz` {handle}")),
+        (
+            &["--window-id", "zz"],
+            format!("--window-id: `zz` {handle}"),
+        ),
+    ] {
+        let e = parse(args).expect_err(&format!("{args:?} should fail"));
+        assert_eq!(e.0, said, "{args:?}");
+    }
+}
+
 /// `--size` bounds the pixels in all as it bounds each side, as the
 /// arguments are read: `render` said it only after asking about its `-o`.
 #[test]
