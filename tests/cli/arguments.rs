@@ -255,6 +255,21 @@ fn a_mode_value_refused_is_named_as_typed() {
     }
 }
 
+/// An `-o` that ends in a dot (`x.png.`) says that nothing after it names
+/// a type: it said "a picture cannot be written as .".
+#[test]
+fn an_output_ending_in_a_dot_says_it_names_no_type() {
+    for (args, use_) in [
+        (&["render", "-o", "x.png."][..], ".png, .jpg, .jpeg"),
+        (&["heightmap", "-o", "h."], ".png, .r16, .raw"),
+    ] {
+        let e = parse(args).expect_err(&format!("{args:?} should fail"));
+        let out = args[2];
+        let said = format!("-o {out}: nothing after its last dot names a type; use {use_}");
+        assert_eq!(e.0, said, "{args:?}");
+    }
+}
+
 /// `--size` bounds the pixels in all as it bounds each side, as the
 /// arguments are read: `render` said it only after asking about its `-o`.
 #[test]
