@@ -285,6 +285,7 @@ impl Parser<'_> {
         let mode = mode.map_or_else(default_mode, |(m, _)| m);
         self.inv.mode = finish_mode(mode, output, size)?;
         one_file_to_check(&self.inv)?;
+        output_is_not_the_preferences(&self.inv)?;
         nothing_to_open(&self.inv)?;
         nothing_to_set(&self.inv)?;
         self.nothing_for_xscreensaver()
@@ -342,6 +343,31 @@ fn one_file_to_check(inv: &Invocation) -> Result<(), UsageError> {
         }
         _ => Ok(()),
     }
+}
+
+/// `render --config X -o X` (or `heightmap`): the picture or data set
+/// would replace the preferences file it was drawn with, as `--open X -o
+/// X` would replace its data set. A data set typed after `--config` for
+/// `--open` was lost so, with only a warning that it was no text. A
+/// device (`--config /dev/null -o /dev/null`) is written to, not replaced,
+/// and `-o -` is standard output.
+fn output_is_not_the_preferences(inv: &Invocation) -> Result<(), UsageError> {
+    let (output, made) = match &inv.mode {
+        Mode::Render { output, .. } => (output, "picture"),
+        Mode::Heightmap { output } => (output, "data set"),
+        _ => return Ok(()),
+    };
+    let Some(config) = inv.config.as_deref().filter(|_| output != Path::new("-")) else {
+        return Ok(());
+    };
+    let regular = std::fs::metadata(config).is_ok_and(|m| m.is_file());
+    if !regular || !crate::fsutil::same_file(config, output) {
+        return Ok(());
+    }
+    Err(UsageError(format!(
+        "-o {}: is the preferences file --config reads; give the {made} another name",
+        output.display()
+    )))
 }
 
 /// `--open` with a mode that shows no mountain (`--check-config`, the

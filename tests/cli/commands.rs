@@ -1422,6 +1422,50 @@ fn an_output_that_ends_in_a_slash_is_refused_before_any_work() {
     assert!(left.is_empty(), "left behind: {left:?}");
 }
 
+/// `-o` naming the file `--config` reads (`heightmap --config h.png -o
+/// h.png`, a data set typed after `--config` for `--open`) is refused
+/// before any work, exit 2, as `--open X -o X` is: the file was replaced
+/// by a new picture or data set, with only a warning that it was no
+/// text. `--config /dev/null -o /dev/null` writes to the device, as before.
+#[test]
+fn an_output_over_the_preferences_file_is_refused() {
+    let dir = scratch("output-over-config");
+    let mine = dir.join("mine.png");
+    small_data_set(&mine);
+    let bytes = std::fs::read(&mine).unwrap();
+    let (mine, again) = (arg(&mine), arg(&dir.join(".").join("mine.png")));
+    for (mode, made) in [
+        (&["render", "--size", "8x8"][..], "picture"),
+        (&["heightmap"], "data set"),
+    ] {
+        for out in [&mine, &again] {
+            let args = [mode, &["--config", &mine, "-o", out]].concat();
+            let o = mountains(&args);
+            assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+            let said = format!(
+                "mountains: error: -o {out}: is the preferences file --config reads; \
+                 give the {made} another name\n"
+            );
+            assert!(stderr(&o).starts_with(&said), "{args:?}: {}", stderr(&o));
+            assert_eq!(
+                std::fs::read(dir.join("mine.png")).unwrap(),
+                bytes,
+                "{args:?}"
+            );
+        }
+    }
+    #[cfg(unix)]
+    run(&[
+        "render",
+        "--size",
+        "8x8",
+        "--config",
+        "/dev/null",
+        "-o",
+        "/dev/null",
+    ]);
+}
+
 /// `-o` through a link to nowhere is refused (a file renamed in its place
 /// would replace someone's link), and before any work: it was refused only
 /// once the whole picture was drawn or the data set made. With an
