@@ -1056,7 +1056,11 @@ fn unknown_argument(arg: &str) -> UsageError {
     let nearest = match name.strip_prefix('-') {
         Some(_) if letter.is_some() => letter.map(|l| l.to_string()),
         Some(flag) => {
-            let bare = flag.trim_start_matches('-').replace('_', "-");
+            // Lowercased as the names are: `--OUT` begins `--output`.
+            let bare = flag
+                .trim_start_matches('-')
+                .replace('_', "-")
+                .to_lowercase();
             let names: Vec<String> = FLAGS
                 .iter()
                 .map(|f| f.to_string())

@@ -270,6 +270,33 @@ fn an_output_ending_in_a_dot_says_it_names_no_type() {
     }
 }
 
+/// A key, flag or mode typed in capitals (caps lock, or a Windows habit:
+/// its letters take any case) is offered in the case it takes: `--set
+/// COLOR=sonar`, `-COLOR`, `--SET` and `RENDER` were further than any
+/// misspelling, and offered nothing.
+#[test]
+fn a_name_typed_in_capitals_offers_the_name() {
+    for (args, offered) in [
+        (
+            &["render", "-o", "x.png", "--set", "COLOR=sonar"][..],
+            "did you mean `color`?",
+        ),
+        (
+            &["render", "-o", "x.png", "-COLOR", "sonar"],
+            "did you mean `--color`?",
+        ),
+        (
+            &["render", "-o", "x.png", "--SET", "color=sonar"],
+            "did you mean `--set`?",
+        ),
+        (&["RENDER", "-o", "x.png"], "did you mean `render`?"),
+        (&["render", "--OUT", "x.png"], "did you mean `--output`?"),
+    ] {
+        let e = parse(args).expect_err(&format!("{args:?} should fail"));
+        assert!(e.0.contains(offered), "{args:?}: {e}");
+    }
+}
+
 /// `--size` bounds the pixels in all as it bounds each side, as the
 /// arguments are read: `render` said it only after asking about its `-o`.
 #[test]
