@@ -108,6 +108,10 @@ fn explain(message: &str, line: &str, at: usize) -> (Option<String>, String) {
     if message.contains("duplicate key") {
         return (key, "the key is given twice; keep one".to_string());
     }
+    if let Some(key) = key_without_equals(line) {
+        let said = format!("{message}; write it as `{key} = VALUE`");
+        return (Some(key), said);
+    }
     if value_missing {
         return (key, "nothing after `=`; give a value".to_string());
     }
@@ -127,6 +131,17 @@ fn explain(message: &str, line: &str, at: usize) -> (Option<String>, String) {
         }
         None => (None, message.to_string()),
     }
+}
+
+/// The key a line without `=` begins, when it begins with one (`seed: 5`,
+/// `seed 5`: another format's habit): TOML said only "expected `=`", about
+/// no key. A first word that is no key is left unnamed.
+fn key_without_equals(line: &str) -> Option<String> {
+    if line.contains('=') {
+        return None;
+    }
+    let word = line.trim_start().split([':', ' ', '\t']).next()?;
+    keys::find(word).map(|k| k.name.to_string())
 }
 
 /// What to do about a TOML error a person is likely to meet, on the key

@@ -1761,6 +1761,35 @@ fn check_config_says_mistakes_in_the_order_typed() {
     }
 }
 
+/// A line that gives a key another format's way (`seed: 5`, `seed 5`)
+/// names its key and how TOML writes it: it said only "key with no
+/// value, expected `=`", about no key. A first word that is no key is
+/// named as no key.
+#[test]
+fn a_key_written_without_equals_is_named() {
+    let dir = scratch("key-without-equals");
+    for (text, at) in [("seed: 5\n", "1:7"), ("color = \"sonar\"\nseed 5\n", "2:6")] {
+        let file = dir.join("p.toml");
+        std::fs::write(&file, text).unwrap();
+        let o = mountains(&["--check-config", &arg(&file)]);
+        assert_eq!(o.status.code(), Some(1), "{text:?}");
+        let said = format!(
+            "mountains: error: {}:{at}: key `seed`: not valid TOML: ",
+            file.display()
+        );
+        let err = stderr(&o);
+        assert!(err.starts_with(&said), "{text:?}: {err}");
+        assert!(
+            err.contains("; write it as `seed = VALUE`"),
+            "{text:?}: {err}"
+        );
+    }
+    let file = dir.join("q.toml");
+    std::fs::write(&file, "mystery: 5\n").unwrap();
+    let err = stderr(&mountains(&["--check-config", &arg(&file)]));
+    assert!(!err.contains("key `"), "{err}");
+}
+
 /// A file `--check-config` cannot read (a folder) is named with the flag
 /// that named it, as `--config` and `--open` name theirs: it was named
 /// by the file alone.
