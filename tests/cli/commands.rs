@@ -1790,6 +1790,31 @@ fn a_key_written_without_equals_is_named() {
     assert!(!err.contains("key `"), "{err}");
 }
 
+/// A data set the slide show cannot open is a warning named by its flag,
+/// as a preferences file's problems are and as `render --open` names it:
+/// it was `mountains: h.png: is truncated ...`, neither. The show goes on
+/// without it (here it stops for want of a display, after saying so).
+#[test]
+fn a_data_set_the_slide_show_cannot_open_is_a_warning_naming_its_flag() {
+    let dir = scratch("slide-show-open");
+    let missing = arg(&dir.join("missing.png"));
+    let o = command(&["--window", "--open", &missing])
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .output()
+        .unwrap();
+    let err = stderr(&o);
+    let said = format!("mountains: warning: --open {missing}: cannot read: ");
+    assert!(err.starts_with(&said), "{err}");
+    assert!(
+        err.lines()
+            .next()
+            .unwrap()
+            .ends_with("; showing generated mountains instead"),
+        "{err}"
+    );
+}
+
 /// A file `--check-config` cannot read (a folder) is named with the flag
 /// that named it, as `--config` and `--open` name theirs: it was named
 /// by the file alone.
