@@ -257,6 +257,7 @@ impl Parser<'_> {
         let mut output: Option<PathBuf> = None;
         let mut size: Option<Size> = None;
         while let Some(arg) = self.next_str()? {
+            let from = self.pos - 1;
             let new_mode = match self.option(&arg, &mut output, &mut size)? {
                 Some(m) => m,
                 None => continue,
@@ -267,17 +268,15 @@ impl Parser<'_> {
                 self.inv.mode = new_mode;
                 return Ok(());
             }
+            let typed = self.typed_since(from);
             mode = Some(match mode {
-                None => (new_mode, arg),
+                None => (new_mode, typed),
                 Some((old_mode, old)) => match (old_mode, new_mode) {
                     // What xscreensaver's settings dialog runs for its preview.
                     (Mode::XRoot, id @ Mode::XWindowId(_))
-                    | (id @ Mode::XWindowId(_), Mode::XRoot) => (id, arg),
-                    _ => {
-                        let (arg, old) = (clipped(&arg), clipped(&old));
-                        return Err(UsageError(format!(
-                            "`{arg}` given after `{old}`: choose one mode"
-                        )));
+                    | (id @ Mode::XWindowId(_), Mode::XRoot) => (id, typed),
+                    (old_mode, new_mode) => {
+                        return Err(two_modes((&old_mode, &old), (&new_mode, &typed)));
                     }
                 },
             });
@@ -309,6 +308,18 @@ impl Parser<'_> {
             None => Ok(()),
         }
     }
+}
+
+/// A mode typed after another, each named as typed with its value (`--layer
+/// top` after `--layer background`: both were `--layer`): the same mode
+/// again is given once, two modes are chosen between.
+fn two_modes((old_mode, old): (&Mode, &str), (new_mode, new): (&Mode, &str)) -> UsageError {
+    let same = std::mem::discriminant(old_mode) == std::mem::discriminant(new_mode);
+    let what = match same {
+        true => "give it once",
+        false => "choose one mode",
+    };
+    UsageError(format!("`{new}` given after `{old}`: {what}"))
 }
 
 /// Why `mode` draws no slide show, if it draws none: the modes

@@ -297,6 +297,34 @@ fn a_name_typed_in_capitals_offers_the_name() {
     }
 }
 
+/// A mode given twice names both as typed, with their values: `--layer
+/// background --layer top` was "`--layer` given after `--layer`: choose
+/// one mode", naming neither layer, and of one mode given twice.
+#[test]
+fn a_mode_given_twice_names_both_as_typed() {
+    for (args, said) in [
+        (
+            &["--check-config", "a.toml", "--check-config", "b.toml"][..],
+            "`--check-config b.toml` given after `--check-config a.toml`: give it once",
+        ),
+        (
+            &["--layer", "background", "--layer=top"],
+            "`--layer=top` given after `--layer background`: give it once",
+        ),
+        (
+            &["/p", "1234", "/s"],
+            "`/s` given after `/p 1234`: choose one mode",
+        ),
+        (
+            &["render", "--root"],
+            "`--root` given after `render`: choose one mode",
+        ),
+    ] {
+        let e = parse(args).expect_err(&format!("{args:?} should fail"));
+        assert_eq!(e.0, said, "{args:?}");
+    }
+}
+
 /// `--size` bounds the pixels in all as it bounds each side, as the
 /// arguments are read: `render` said it only after asking about its `-o`.
 #[test]
