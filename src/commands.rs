@@ -272,6 +272,7 @@ pub fn check_config(path: Option<&Path>, inv: &Invocation) -> ExitCode {
         Ok(printed) => printed,
         Err(code) => return code,
     };
+    warn_of_missing_folders_typed(sets);
     let printed = match sets.is_empty() {
         true => printed,
         false => printed.and_then(|()| console::outln(&format!("{}: ok", sets_named(sets)))),
@@ -442,20 +443,41 @@ fn verdict(file: &Path, mistyped: Option<&str>) -> String {
 /// line and key; a file where the folder should be is said to be one.
 fn warn_of_a_missing_folder(settings: &Settings, file: &Path) {
     let dir = settings.heightmaps_dir.as_deref();
-    let Some(folder) = paths::heightmaps_folder(dir).filter(|f| !f.is_dir()) else {
+    let Some(missing) = no_folder(dir) else {
         return;
     };
     let key = "heightmaps_dir";
     let at = load::value_position(file, key).map_or(String::new(), |(l, c)| format!(":{l}:{c}"));
+    console::err(&format!(
+        "mountains: warning: {}{at}: key `{key}`: {:?}: {missing}; \
+         every slide is generated",
+        file.display(),
+        dir.unwrap_or_default(),
+    ));
+}
+
+/// Warns of each `heightmaps_dir` typed for the run (`--heightmaps-dir
+/// DIR`, `--set heightmaps_dir=DIR`) that names no folder, named as typed,
+/// as the file's is warned of: "--set: ok" was all that was said.
+fn warn_of_missing_folders_typed(sets: &[Set]) {
+    for set in sets.iter().filter(|set| set.key == "heightmaps_dir") {
+        if let Some(missing) = no_folder(Some(&set.value)) {
+            console::err(&format!(
+                "mountains: warning: {}: {missing}; every slide is generated",
+                set.typed
+            ));
+        }
+    }
+}
+
+/// How a `heightmaps_dir` of `dir` that names no folder is said (`no such
+/// folder (/home/me/maps)`, or a file in its place `not a folder`), if it
+/// names none.
+fn no_folder(dir: Option<&str>) -> Option<String> {
+    let folder = paths::heightmaps_folder(dir).filter(|f| !f.is_dir())?;
     let what = match folder.exists() {
         true => "not a folder",
         false => "no such folder",
     };
-    console::err(&format!(
-        "mountains: warning: {}{at}: key `{key}`: {:?}: {what} ({}); \
-         every slide is generated",
-        file.display(),
-        dir.unwrap_or_default(),
-        folder.display()
-    ));
+    Some(format!("{what} ({})", folder.display()))
 }

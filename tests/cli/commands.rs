@@ -754,6 +754,36 @@ fn check_config_names_the_line_of_a_heightmaps_folder_that_is_not_there() {
     }
 }
 
+/// A `heightmaps_dir` typed for the run (`--heightmaps-dir DIR`, `--set
+/// heightmaps_dir=DIR`) that names no folder is warned of beside
+/// `--check-config` as the file's is, named as typed: it was "ok" alone.
+#[test]
+fn check_config_warns_of_a_heightmaps_folder_typed_that_is_not_there() {
+    let dir = scratch("check-config-folder-typed");
+    let file = dir.join("p.toml");
+    std::fs::write(&file, "seed = 5\n").unwrap();
+    let file = arg(&file);
+    let missing = arg(&dir.join("no-maps"));
+    let set = format!("heightmaps_dir={missing}");
+    for (args, typed) in [
+        (
+            vec!["--heightmaps-dir", &missing],
+            format!("--heightmaps-dir {missing}"),
+        ),
+        (vec!["--set", &set], format!("--set {set}")),
+    ] {
+        let args = [&["--check-config", &file][..], &args].concat();
+        let o = mountains(&args);
+        assert_eq!(o.status.code(), Some(0), "{args:?}: {}", stderr(&o));
+        let said = format!(
+            "mountains: warning: {typed}: no such folder ({missing}); every slide is generated\n"
+        );
+        assert_eq!(stderr(&o), said, "{args:?}");
+    }
+    let o = mountains(&["--check-config", &file, "--heightmaps-dir", &arg(&dir)]);
+    assert!(stderr(&o).is_empty(), "{}", stderr(&o));
+}
+
 /// A key this version does not know (the settings screen keeps it) is a
 /// warning with a suggestion for `render`, and still a failure for
 /// `--check-config`.
