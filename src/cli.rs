@@ -771,7 +771,12 @@ impl Parser<'_> {
     /// `--check-config`'s file, which may be left out (the usual file):
     /// a next argument that starts with a dash is a flag, not the file.
     fn file_to_check(&mut self, flag: &Flag) -> Result<Option<PathBuf>, UsageError> {
-        let next = self.args.get(self.pos).and_then(|a| a.to_str());
+        // Read as text only to be tested, and taken as it is: a file's name
+        // need not be valid text (`--config` takes such a name; here it was
+        // passed over, then refused as "not valid text").
+        let next_name = self.args.get(self.pos).cloned();
+        let next_text = next_name.as_ref().map(|a| a.to_string_lossy());
+        let next = next_text.as_deref();
         // `--check-config ""` (an unset variable in a script) as
         // `--check-config=`: a bad value, not a file that is missing.
         let inline = flag.inline.as_deref();
@@ -789,7 +794,7 @@ impl Parser<'_> {
             (Some(v), _) => Some(PathBuf::from(v)),
             (None, Some(next)) if !next.starts_with('-') => {
                 self.pos += 1;
-                Some(PathBuf::from(next))
+                next_name.map(PathBuf::from)
             }
             _ => None,
         })

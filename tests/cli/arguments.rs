@@ -325,6 +325,25 @@ fn a_mode_given_twice_names_both_as_typed() {
     }
 }
 
+/// A file's name that is not valid text (a Latin-1 name on Linux) is
+/// taken by `--check-config` as `--config` takes it: it was passed over,
+/// then refused as "argument \"\\xFE.toml\" is not valid text".
+#[cfg(unix)]
+#[test]
+fn check_config_takes_a_file_name_that_is_not_text() {
+    use std::os::unix::ffi::OsStringExt;
+    let name = OsString::from_vec(b"\xfe.toml".to_vec());
+    for flag in ["--check-config", "--config"] {
+        let args = [OsString::from(flag), name.clone()];
+        let inv = cli::parse(&args).unwrap_or_else(|e| panic!("{flag}: {e}"));
+        let file = match inv.mode {
+            Mode::CheckConfig(file) => file,
+            _ => inv.config,
+        };
+        assert_eq!(file, Some(PathBuf::from(&name)), "{flag}");
+    }
+}
+
 /// `--size` bounds the pixels in all as it bounds each side, as the
 /// arguments are read: `render` said it only after asking about its `-o`.
 #[test]
