@@ -108,6 +108,13 @@ fn explain(message: &str, line: &str, at: usize) -> (Option<String>, String) {
     if message.contains("duplicate key") {
         return (key, "the key is given twice; keep one".to_string());
     }
+    // Old Mac line endings (a lone `\r`) make the file one long line,
+    // whose error was put to its first key and what that key takes.
+    if message.contains("carriage return") {
+        let said = "a carriage return without a newline after it: \
+                    lines end in \\n or \\r\\n (old Mac line endings are not read)";
+        return (None, said.to_string());
+    }
     if let Some(key) = key_without_equals(line) {
         let said = format!("{message}; write it as `{key} = VALUE`");
         return (Some(key), said);

@@ -1845,6 +1845,24 @@ fn a_data_set_the_slide_show_cannot_open_is_a_warning_naming_its_flag() {
     );
 }
 
+/// A file whose lines end in a lone carriage return (old Mac line
+/// endings) is said to be so, naming no key: the whole file was one line,
+/// and its error was put to the first key, with what that key takes.
+#[test]
+fn a_file_of_lone_carriage_returns_is_said_to_be_one() {
+    let dir = scratch("lone-carriage-returns");
+    let file = dir.join("p.toml");
+    std::fs::write(&file, "seed = 5\rcolor = \"sonar\"\r").unwrap();
+    let o = mountains(&["--check-config", &arg(&file)]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let said = format!(
+        "mountains: error: {}:1:10: not valid TOML: a carriage return without a newline \
+         after it: lines end in \\n or \\r\\n (old Mac line endings are not read)\n",
+        file.display()
+    );
+    assert_eq!(stderr(&o), said);
+}
+
 /// A file `--check-config` cannot read (a folder) is named with the flag
 /// that named it, as `--config` and `--open` name theirs: it was named
 /// by the file alone.
