@@ -287,7 +287,10 @@ pub fn apply_toml(settings: &mut Settings, text: &str, source: &str) -> Vec<Prob
                 // keys are, as a command line's mistake has.
                 report(
                     key_pos,
-                    format!("{message} (`mountains --help` lists every key)"),
+                    format!(
+                        "{message}{} (`mountains --help` lists every key)",
+                        keys_in_a_table(item)
+                    ),
                 );
                 continue;
             }
@@ -306,6 +309,28 @@ pub fn apply_toml(settings: &mut Settings, text: &str, source: &str) -> Vec<Prob
     }
     *settings = candidate;
     problems
+}
+
+/// What to say of an unknown key that is a table holding keys of ours
+/// (`[mountains]` over `seed = 5`, a habit of other formats): its keys were
+/// passed over with only the table named, as if they were read.
+fn keys_in_a_table(item: &Item) -> String {
+    let Some(table) = item.as_table_like() else {
+        return String::new();
+    };
+    let ours: Vec<String> = table
+        .iter()
+        .filter(|(name, _)| keys::find(name).is_some())
+        .map(|(name, _)| format!("`{name}`"))
+        .take(3)
+        .collect();
+    if ours.is_empty() {
+        return String::new();
+    }
+    format!(
+        "; the keys in it ({}) are read only at the top of the file, before any [table]",
+        ours.join(", ")
+    )
 }
 
 fn item_value(item: &Item) -> Option<Value> {

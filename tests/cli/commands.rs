@@ -1863,6 +1863,28 @@ fn a_file_of_lone_carriage_returns_is_said_to_be_one() {
     assert_eq!(stderr(&o), said);
 }
 
+/// A table of our keys (`[mountains]` over `seed = 5`, another format's
+/// habit) says that its keys are read only at the top of the file: it was
+/// "key `mountains`: unknown key", and the keys in it passed over as if read.
+#[test]
+fn a_table_of_our_keys_says_where_they_belong() {
+    let dir = scratch("table-of-our-keys");
+    let file = dir.join("p.toml");
+    std::fs::write(&file, "[mountains]\nseed = 5\ncolor = \"sonar\"\n").unwrap();
+    let o = mountains(&["--check-config", &arg(&file)]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let said = format!(
+        "mountains: error: {}:1:2: key `mountains`: unknown key; the keys in it \
+         (`seed`, `color`) are read only at the top of the file, before any [table] \
+         (`mountains --help` lists every key)\n",
+        file.display()
+    );
+    assert_eq!(stderr(&o), said);
+    std::fs::write(&file, "[other]\nname = 5\n").unwrap();
+    let err = stderr(&mountains(&["--check-config", &arg(&file)]));
+    assert!(!err.contains("the keys in it"), "{err}");
+}
+
 /// A file `--check-config` cannot read (a folder) is named with the flag
 /// that named it, as `--config` and `--open` name theirs: it was named
 /// by the file alone.
