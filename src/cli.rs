@@ -790,14 +790,33 @@ impl Parser<'_> {
         if inline.or(next) == Some("-") {
             no_standard_input("--check-config", "-".as_ref())?;
         }
-        Ok(match (inline, next) {
+        let file = match (inline, next) {
             (Some(v), _) => Some(PathBuf::from(v)),
             (None, Some(next)) if !next.starts_with('-') => {
                 self.pos += 1;
                 next_name.map(PathBuf::from)
             }
             _ => None,
-        })
+        };
+        self.one_file_checked(flag)?;
+        Ok(file)
+    }
+
+    /// A second file after `--check-config`'s (`--check-config a.toml
+    /// b.toml`, as a shell's `*.toml` gives them): it checks one, and the
+    /// second was "unknown argument", with no word of why.
+    fn one_file_checked(&self, flag: &Flag) -> Result<(), UsageError> {
+        let Some(next) = self.args.get(self.pos).map(|a| a.to_string_lossy()) else {
+            return Ok(());
+        };
+        if next.is_empty() || next.starts_with('-') || is_word(&next) || is_windows_letter(&next) {
+            return Ok(());
+        }
+        Err(UsageError(format!(
+            "`{}` given after `{}`: --check-config checks one file; run it once for each",
+            clipped(&next),
+            self.typed_since(flag.from)
+        )))
     }
 
     /// The options xscreensaver may pass to any hack (`-fps`, `-delay`,
@@ -1044,6 +1063,16 @@ const FLAGS: [&str; 21] = [
 
 /// Our one-letter flags besides the Windows letters (which take any case).
 const LETTERS: [&str; 3] = ["-o", "-h", "-V"];
+
+/// Whether `arg` is one of the Windows letters with a slash (`/s`, `/p`,
+/// `/c:1234`), not a file's path.
+fn is_windows_letter(arg: &str) -> bool {
+    let Some(rest) = arg.strip_prefix('/') else {
+        return false;
+    };
+    let letter = rest.split_once(':').map_or(rest, |(l, _)| l);
+    letter.len() == 1 && "spcaSPCA".contains(letter)
+}
 
 /// Whether `s` is one of our subcommand words (not a window handle).
 fn is_word(s: &str) -> bool {

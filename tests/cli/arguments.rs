@@ -344,6 +344,32 @@ fn check_config_takes_a_file_name_that_is_not_text() {
     }
 }
 
+/// A second file after `--check-config`'s (`--check-config *.toml`) is
+/// refused saying that it checks one: it was "unknown argument `b.toml`".
+#[test]
+fn check_config_with_two_files_says_it_checks_one() {
+    let one = "--check-config checks one file; run it once for each";
+    for (args, said) in [
+        (
+            &["--check-config", "a.toml", "b.toml"][..],
+            format!("`b.toml` given after `--check-config a.toml`: {one}"),
+        ),
+        (
+            &["--check-config=a.toml", "b.toml", "c.toml"],
+            format!("`b.toml` given after `--check-config=a.toml`: {one}"),
+        ),
+        (
+            &["--check-config", "/etc/a.toml", "/etc/b.toml"],
+            format!("`/etc/b.toml` given after `--check-config /etc/a.toml`: {one}"),
+        ),
+    ] {
+        let e = parse(args).expect_err(&format!("{args:?} should fail"));
+        assert_eq!(e.0, said, "{args:?}");
+    }
+    assert!(parse(&["--check-config", "a.toml", "--set", "seed=1"]).is_ok());
+    assert!(parse(&["--check-config", "a.toml", "/s"]).is_err());
+}
+
 /// `--size` bounds the pixels in all as it bounds each side, as the
 /// arguments are read: `render` said it only after asking about its `-o`.
 #[test]
