@@ -7,6 +7,7 @@
 use std::ffi::OsString;
 use std::path::{Path, PathBuf};
 
+use crate::quote::clipped;
 use crate::render::Size;
 use crate::settings::load::Problem;
 use crate::terrain::heightmap;
@@ -126,6 +127,9 @@ pub struct Mistake {
     pub typed: String,
     /// Its refusal, in the words every mode says it in.
     pub refusal: UsageError,
+    /// Where it was typed among the arguments (the index of its flag):
+    /// mistakes are said in the order they were typed.
+    pub at: usize,
 }
 
 /// One preference set for this run: a `--set key=value` or a key's own
@@ -141,6 +145,9 @@ pub struct Set {
     /// The arguments that gave it, as typed (`-seed 9`, `--seed=9`,
     /// `--set seed=9`), each cut as every echo is.
     pub typed: String,
+    /// Where it was typed among the arguments (the index of its flag):
+    /// a bad one is said among the other mistakes in the order typed.
+    pub at: usize,
 }
 
 impl Set {
@@ -250,6 +257,7 @@ impl Parser<'_> {
         let mut output: Option<PathBuf> = None;
         let mut size: Option<Size> = None;
         while let Some(arg) = self.next_str()? {
+            let from = self.pos - 1;
             let new_mode = match self.option(&arg, &mut output, &mut size)? {
                 Some(m) => m,
                 None => continue,
@@ -260,16 +268,15 @@ impl Parser<'_> {
                 self.inv.mode = new_mode;
                 return Ok(());
             }
+            let typed = self.typed_since(from);
             mode = Some(match mode {
-                None => (new_mode, arg),
+                None => (new_mode, typed),
                 Some((old_mode, old)) => match (old_mode, new_mode) {
                     // What xscreensaver's settings dialog runs for its preview.
                     (Mode::XRoot, id @ Mode::XWindowId(_))
-                    | (id @ Mode::XWindowId(_), Mode::XRoot) => (id, arg),
-                    _ => {
-                        return Err(UsageError(format!(
-                            "`{arg}` given after `{old}`: choose one mode"
-                        )));
+                    | (id @ Mode::XWindowId(_), Mode::XRoot) => (id, typed),
+                    (old_mode, new_mode) => {
+                        return Err(two_modes((&old_mode, &old), (&new_mode, &typed)));
                     }
                 },
             });
@@ -277,6 +284,7 @@ impl Parser<'_> {
         let mode = mode.map_or_else(default_mode, |(m, _)| m);
         self.inv.mode = finish_mode(mode, output, size)?;
         one_file_to_check(&self.inv)?;
+        output_is_not_the_preferences(&self.inv)?;
         nothing_to_open(&self.inv)?;
         nothing_to_set(&self.inv)?;
         self.nothing_for_xscreensaver()
@@ -300,6 +308,18 @@ impl Parser<'_> {
             None => Ok(()),
         }
     }
+}
+
+/// A mode typed after another, each named as typed with its value (`--layer
+/// top` after `--layer background`: both were `--layer`): the same mode
+/// again is given once, two modes are chosen between.
+fn two_modes((old_mode, old): (&Mode, &str), (new_mode, new): (&Mode, &str)) -> UsageError {
+    let same = std::mem::discriminant(old_mode) == std::mem::discriminant(new_mode);
+    let what = match same {
+        true => "give it once",
+        false => "choose one mode",
+    };
+    UsageError(format!("`{new}` given after `{old}`: {what}"))
 }
 
 /// Why `mode` draws no slide show, if it draws none: the modes
@@ -334,6 +354,31 @@ fn one_file_to_check(inv: &Invocation) -> Result<(), UsageError> {
         }
         _ => Ok(()),
     }
+}
+
+/// `render --config X -o X` (or `heightmap`): the picture or data set
+/// would replace the preferences file it was drawn with, as `--open X -o
+/// X` would replace its data set. A data set typed after `--config` for
+/// `--open` was lost so, with only a warning that it was no text. A
+/// device (`--config /dev/null -o /dev/null`) is written to, not replaced,
+/// and `-o -` is standard output.
+fn output_is_not_the_preferences(inv: &Invocation) -> Result<(), UsageError> {
+    let (output, made) = match &inv.mode {
+        Mode::Render { output, .. } => (output, "picture"),
+        Mode::Heightmap { output } => (output, "data set"),
+        _ => return Ok(()),
+    };
+    let Some(config) = inv.config.as_deref().filter(|_| output != Path::new("-")) else {
+        return Ok(());
+    };
+    let regular = std::fs::metadata(config).is_ok_and(|m| m.is_file());
+    if !regular || !crate::fsutil::same_file(config, output) {
+        return Ok(());
+    }
+    Err(UsageError(format!(
+        "-o {}: is the preferences file --config reads; give the {made} another name",
+        output.display()
+    )))
 }
 
 /// `--open` with a mode that shows no mountain (`--check-config`, the
@@ -389,6 +434,20 @@ fn prints_only(mode: &Mode) -> Option<&'static str> {
         Mode::ChangePassword => Some("/a changes no password and shows no mountain"),
         _ => None,
     }
+}
+
+/// `-` for a preferences file (`--config -`, `--check-config -`), as
+/// `--open -` and `-o -` take it for a pipe: no preferences are read from
+/// standard input, and it was "no such file" or an unknown argument `-`.
+/// A file named `-` is `./-`.
+fn no_standard_input(flag: &str, file: &std::ffi::OsStr) -> Result<(), UsageError> {
+    if file != "-" {
+        return Ok(());
+    }
+    Err(UsageError(format!(
+        "{flag} -: preferences are read from a file, not from standard input \
+         (a file named -: ./-)"
+    )))
 }
 
 /// The flags that take no value (as they are matched: see `long_name`).
@@ -490,6 +549,15 @@ impl<'a> Flag<'a> {
             from,
         }
     }
+
+    /// The flag as typed, without a value given after `=` (`-layer` of
+    /// `-layer=top`).
+    fn typed_name(&self) -> &'a str {
+        match &self.inline {
+            Some(v) => &self.arg[..self.arg.len() - v.len() - 1],
+            None => self.arg,
+        }
+    }
 }
 
 impl Parser<'_> {
@@ -588,7 +656,7 @@ impl Parser<'_> {
         if flag.inline.is_none() && v.len() > 1 && v.to_string_lossy().starts_with('-') {
             return Err(UsageError(format!(
                 "{arg} needs a value, not the flag `{}` (a value that starts with `-`: write {long}={0})",
-                v.to_string_lossy()
+                clipped(&v.to_string_lossy())
             )));
         }
         if v.is_empty() {
@@ -614,6 +682,7 @@ impl Parser<'_> {
         match flag.name.as_str() {
             "--config" => {
                 let file = self.take(flag, "--config")?;
+                no_standard_input("--config", &file)?;
                 self.once("--config", "preferences file", self.typed_since(flag.from))?;
                 self.inv.config = Some(file.into());
             }
@@ -670,13 +739,16 @@ impl Parser<'_> {
         let mode = match flag.name.as_str() {
             "--root" => Mode::XRoot,
             "--window" => Mode::Window,
+            // A value is named as it was typed (`--layer=foo`, `--layer
+            // foo`): `--layer=foo foo` named it twice.
             "--layer" => {
                 let name = self.inline_or_next(flag.inline.clone(), arg)?;
-                Mode::Layer(layer_named(arg, &name)?)
+                Mode::Layer(layer_named(&self.typed_since(flag.from), &name)?)
             }
             "--window-id" => {
                 let id = self.inline_or_next(flag.inline.clone(), arg)?;
-                Mode::XWindowId(x_window_id(arg, &id)?)
+                let typed = self.typed_since(flag.from);
+                Mode::XWindowId(x_window_id(flag.typed_name(), &typed, &id)?)
             }
             "--settings" => Mode::Settings { parent: None },
             "--help" | "-h" | "-help" => Mode::Help,
@@ -699,7 +771,12 @@ impl Parser<'_> {
     /// `--check-config`'s file, which may be left out (the usual file):
     /// a next argument that starts with a dash is a flag, not the file.
     fn file_to_check(&mut self, flag: &Flag) -> Result<Option<PathBuf>, UsageError> {
-        let next = self.args.get(self.pos).and_then(|a| a.to_str());
+        // Read as text only to be tested, and taken as it is: a file's name
+        // need not be valid text (`--config` takes such a name; here it was
+        // passed over, then refused as "not valid text").
+        let next_name = self.args.get(self.pos).cloned();
+        let next_text = next_name.as_ref().map(|a| a.to_string_lossy());
+        let next = next_text.as_deref();
         // `--check-config ""` (an unset variable in a script) as
         // `--check-config=`: a bad value, not a file that is missing.
         let inline = flag.inline.as_deref();
@@ -710,14 +787,36 @@ impl Parser<'_> {
                 flag.arg
             )));
         }
-        Ok(match (inline, next) {
+        if inline.or(next) == Some("-") {
+            no_standard_input("--check-config", "-".as_ref())?;
+        }
+        let file = match (inline, next) {
             (Some(v), _) => Some(PathBuf::from(v)),
             (None, Some(next)) if !next.starts_with('-') => {
                 self.pos += 1;
-                Some(PathBuf::from(next))
+                next_name.map(PathBuf::from)
             }
             _ => None,
-        })
+        };
+        self.one_file_checked(flag)?;
+        Ok(file)
+    }
+
+    /// A second file after `--check-config`'s (`--check-config a.toml
+    /// b.toml`, as a shell's `*.toml` gives them): it checks one, and the
+    /// second was "unknown argument", with no word of why.
+    fn one_file_checked(&self, flag: &Flag) -> Result<(), UsageError> {
+        let Some(next) = self.args.get(self.pos).map(|a| a.to_string_lossy()) else {
+            return Ok(());
+        };
+        if next.is_empty() || next.starts_with('-') || is_word(&next) || is_windows_letter(&next) {
+            return Ok(());
+        }
+        Err(UsageError(format!(
+            "`{}` given after `{}`: --check-config checks one file; run it once for each",
+            clipped(&next),
+            self.typed_since(flag.from)
+        )))
     }
 
     /// The options xscreensaver may pass to any hack (`-fps`, `-delay`,
@@ -736,7 +835,8 @@ impl Parser<'_> {
                 let v = self.inline_or_next(flag.inline.clone(), name)?;
                 let us = v.trim().parse::<u64>().map_err(|_| {
                     UsageError(format!(
-                        "`{name} {v}`: expected microseconds, e.g. -delay 20000"
+                        "`{name} {}`: expected microseconds, e.g. -delay 20000",
+                        clipped(&v)
                     ))
                 })?;
                 self.inv.xss.delay_us = Some(us);
@@ -778,7 +878,7 @@ impl Parser<'_> {
         let taken = &self.args[from..self.pos.min(self.args.len())];
         let typed: Vec<String> = taken
             .iter()
-            .map(|a| crate::quote::clipped(&a.to_string_lossy()))
+            .map(|a| clipped(&a.to_string_lossy()))
             .collect();
         typed.join(" ")
     }
@@ -786,7 +886,12 @@ impl Parser<'_> {
     /// Adds `kv` to the sets, typed as the arguments from `from` were.
     fn push_set(&mut self, (key, value): (String, String), from: usize) {
         let typed = self.typed_since(from);
-        self.inv.sets.push(Set { key, value, typed });
+        self.inv.sets.push(Set {
+            key,
+            value,
+            typed,
+            at: from,
+        });
     }
 
     /// A preference key given as a flag of its own (`-cragginess 40`),
@@ -832,7 +937,11 @@ impl Parser<'_> {
     fn hold_unfinished(&mut self, from: usize, refusal: UsageError) {
         let typed = self.typed_since(from);
         self.bad_value.get_or_insert_with(|| refusal.clone());
-        self.inv.unfinished = Some(Mistake { typed, refusal });
+        self.inv.unfinished = Some(Mistake {
+            typed,
+            refusal,
+            at: from,
+        });
     }
 
     /// Holds `refusal` of the `--set` typed from `from` that gives no
@@ -840,7 +949,11 @@ impl Parser<'_> {
     fn hold_malformed(&mut self, from: usize, refusal: UsageError) {
         let typed = self.typed_since(from);
         self.bad_value.get_or_insert_with(|| refusal.clone());
-        self.inv.malformed.push(Mistake { typed, refusal });
+        self.inv.malformed.push(Mistake {
+            typed,
+            refusal,
+            at: from,
+        });
     }
 
     /// Checks the set last pushed, and holds its refusal if it is the
@@ -904,7 +1017,7 @@ fn key_value(text: OsString) -> Result<(String, String), UsageError> {
     let (k, v) = kv
         .split_once('=')
         .filter(|(k, _)| !k.trim().is_empty())
-        .ok_or_else(|| UsageError(format!("--set {kv}: expected key=value")))?;
+        .ok_or_else(|| UsageError(format!("--set {}: expected key=value", clipped(&kv))))?;
     Ok((k.trim().to_string(), v.trim().to_string()))
 }
 
@@ -951,6 +1064,16 @@ const FLAGS: [&str; 21] = [
 /// Our one-letter flags besides the Windows letters (which take any case).
 const LETTERS: [&str; 3] = ["-o", "-h", "-V"];
 
+/// Whether `arg` is one of the Windows letters with a slash (`/s`, `/p`,
+/// `/c:1234`), not a file's path.
+fn is_windows_letter(arg: &str) -> bool {
+    let Some(rest) = arg.strip_prefix('/') else {
+        return false;
+    };
+    let letter = rest.split_once(':').map_or(rest, |(l, _)| l);
+    letter.len() == 1 && "spcaSPCA".contains(letter)
+}
+
 /// Whether `s` is one of our subcommand words (not a window handle).
 fn is_word(s: &str) -> bool {
     WORDS.contains(&s)
@@ -978,14 +1101,21 @@ fn unknown_argument(arg: &str) -> UsageError {
     let nearest = match name.strip_prefix('-') {
         Some(_) if letter.is_some() => letter.map(|l| l.to_string()),
         Some(flag) => {
-            let bare = flag.trim_start_matches('-').replace('_', "-");
-            let names = FLAGS
+            // Lowercased as the names are: `--OUT` begins `--output`.
+            let bare = flag
+                .trim_start_matches('-')
+                .replace('_', "-")
+                .to_lowercase();
+            let names: Vec<String> = FLAGS
                 .iter()
                 .map(|f| f.to_string())
-                .chain(key_flags::names());
+                .chain(key_flags::names())
+                .collect();
             match is_word(&bare) {
                 true => Some(bare),
-                false => crate::spelling::nearest(&bare, names).map(|f| format!("--{f}")),
+                false => completed(&bare, &names)
+                    .or_else(|| crate::spelling::nearest(&bare, &names))
+                    .map(|f| format!("--{f}")),
             }
         }
         None if FLAGS.contains(&arg) => Some(format!("--{arg}")),
@@ -1000,9 +1130,21 @@ fn unknown_argument(arg: &str) -> UsageError {
     };
     UsageError(format!(
         "unknown argument `{}`{}",
-        crate::quote::clipped(arg),
+        clipped(arg),
         crate::spelling::offer(nearest.as_deref())
     ))
+}
+
+/// The one name among `names` that `bare` begins (`out`: `output`), if
+/// `bare` is long enough to be a name cut short and begins no other:
+/// `--out` was offered `--set` (two letters changed) over `--output`.
+fn completed<'a>(bare: &str, names: &'a [String]) -> Option<&'a String> {
+    if bare.chars().count() < 3 {
+        return None;
+    }
+    let mut begun = names.iter().filter(|name| name.starts_with(bare));
+    let first = begun.next()?;
+    begun.next().is_none().then_some(first)
 }
 
 /// Whether `arg` names a file `-o` or `--open` takes (by its extension).
@@ -1021,24 +1163,22 @@ fn opens(arg: &str) -> bool {
     heightmap::named_as_data_set(path) && path.is_file()
 }
 
-/// `--layer NAME`: one of [`Layer::NAMES`], or a message listing them.
-fn layer_named(flag: &str, name: &str) -> Result<Layer, UsageError> {
+/// `--layer NAME`, typed as `typed`: one of [`Layer::NAMES`], or a
+/// message listing them.
+fn layer_named(typed: &str, name: &str) -> Result<Layer, UsageError> {
     Layer::named(name).ok_or_else(|| {
         let names: Vec<&str> = Layer::NAMES.iter().map(|(n, _)| *n).collect();
-        UsageError(format!(
-            "{flag} {}: expected one of {}",
-            crate::quote::clipped(name),
-            names.join(", ")
-        ))
+        UsageError(format!("{typed}: expected one of {}", names.join(", ")))
     })
 }
 
-/// An X window id for `flag`: a handle that fits X's 32 bits.
-fn x_window_id(flag: &str, text: &str) -> Result<u64, UsageError> {
+/// An X window id `text` for `flag`, typed with it as `typed`: a handle
+/// that fits X's 32 bits.
+fn x_window_id(flag: &str, typed: &str, text: &str) -> Result<u64, UsageError> {
     let id = handle_for(flag, text)?;
     if id > u64::from(u32::MAX) {
         return Err(UsageError(format!(
-            "{flag} {text}: X window ids have 32 bits (at most 0xffffffff)"
+            "{typed}: X window ids have 32 bits (at most 0xffffffff)"
         )));
     }
     Ok(id)
@@ -1059,7 +1199,8 @@ pub fn parse_handle(text: &str) -> Result<u64, UsageError> {
     match parsed {
         Ok(h) if h != 0 => Ok(h),
         _ => Err(UsageError(format!(
-            "`{text}` is not a window handle (a decimal number, or hex with 0x)"
+            "`{}` is not a window handle (a decimal number, or hex with 0x)",
+            clipped(text)
         ))),
     }
 }
@@ -1092,17 +1233,19 @@ fn parse_size(text: &str) -> Result<Size, UsageError> {
     {
         return Ok(Size::new(w, h));
     }
+    // The size as a message echoes it: a flood typed is no flood said.
+    let shown = clipped(text);
     let bad = || {
         let names: Vec<&str> = NAMED_SIZES.iter().map(|(n, ..)| *n).collect();
         UsageError(format!(
-            "--size {text}: expected WIDTHxHEIGHT, e.g. 1920x1080, or one of {}",
+            "--size {shown}: expected WIDTHxHEIGHT, e.g. 1920x1080, or one of {}",
             names.join(", ")
         ))
     };
     let (w, h) = text.split_once(['x', 'X']).ok_or_else(bad)?;
     let too_large = || {
         UsageError(format!(
-            "--size {text}: too large (each side at most {MAX_SIDE} pixels)"
+            "--size {shown}: too large (each side at most {MAX_SIDE} pixels)"
         ))
     };
     // A side of digits past what a number holds is a size too large, not
@@ -1118,7 +1261,7 @@ fn parse_size(text: &str) -> Result<Size, UsageError> {
     let size = Size::new(side(w)?, side(h)?);
     if size.is_empty() {
         return Err(UsageError(format!(
-            "--size {text}: too small (each side at least 1 pixel)"
+            "--size {shown}: too small (each side at least 1 pixel)"
         )));
     }
     if size.width.max(size.height) > MAX_SIDE {
@@ -1129,7 +1272,7 @@ fn parse_size(text: &str) -> Result<Size, UsageError> {
     let most = crate::render::frame::MAX_PIXELS;
     if size.pixels() > most {
         return Err(UsageError(format!(
-            "--size {text}: too large (at most {most} pixels in all)"
+            "--size {shown}: too large (at most {most} pixels in all)"
         )));
     }
     Ok(size)

@@ -272,6 +272,7 @@ pub fn check_config(path: Option<&Path>, inv: &Invocation) -> ExitCode {
         Ok(printed) => printed,
         Err(code) => return code,
     };
+    warn_of_missing_folders_typed(sets);
     let printed = match sets.is_empty() {
         true => printed,
         false => printed.and_then(|()| console::outln(&format!("{}: ok", sets_named(sets)))),
@@ -290,31 +291,59 @@ fn sets_named(sets: &[Set]) -> String {
     typed.join(" ")
 }
 
-/// Says each mistake typed for the run, named as it was typed (each
-/// `--set` or key flag whose key or value is bad, each `--set` that gives
-/// no key=value, then a key's flag or `--set` left without its value),
-/// then where to read the rest, as every mode says a mistake typed;
-/// returns how the verdict names the first, if any.
+/// Says each mistake typed for the run in the order it was typed, named
+/// as it was typed (a `--set` or key flag whose key or value is bad, a
+/// `--set` that gives no key=value, a key's flag or `--set` left without
+/// its value), then where to read the rest, as every mode says a mistake
+/// typed; returns how the verdict names the first, if any.
 fn report_mistakes(inv: &Invocation) -> Option<String> {
-    let bad = bad_sets(&inv.sets);
-    let problems: Vec<load::Problem> = bad.iter().map(|(_, p)| p.clone()).collect();
-    for line in load::report_with(&problems, |p| console::error_line(&p.to_string())) {
+    let mistakes = mistakes_typed(inv);
+    let first = mistakes.first()?.named.clone();
+    for line in load::report_with(&mistakes, |m| console::error_line(&m.said)) {
         console::err(&line);
     }
-    for mistake in inv.malformed.iter().chain(&inv.unfinished) {
-        console::error(&mistake.refusal.to_string());
-    }
-    // The sets typed by `--set` are named as one, as `sets_named` names them.
-    let a_set = "a --set is not".to_string();
-    let first = match (bad.first(), inv.malformed.first(), &inv.unfinished) {
-        (Some((set, _)), ..) if set.by_set() => a_set,
-        (Some((set, _)), ..) => format!("{} is not", set.typed),
-        (None, Some(_), _) => a_set,
-        (None, None, Some(unfinished)) => format!("{} needs a value", unfinished.typed),
-        (None, None, None) => return None,
-    };
     console::err(crate::cli::SEE_HELP);
     Some(first)
+}
+
+/// One mistake typed for the run, as `--check-config` says it.
+struct Typed {
+    /// Where it was typed among the arguments.
+    at: usize,
+    /// Its message.
+    said: String,
+    /// How the verdict names it (`-color pink is not`).
+    named: String,
+}
+
+/// Every mistake typed for the run, in the order typed: each kind was
+/// said in a heap of its own (a `--set nokey` typed first was said after
+/// a `-color pink` typed later), which read as if the user had typed them
+/// the other way round.
+fn mistakes_typed(inv: &Invocation) -> Vec<Typed> {
+    // The sets typed by `--set` are named as one, as `sets_named` names them.
+    let a_set = || "a --set is not".to_string();
+    let bad = bad_sets(&inv.sets).into_iter().map(|(set, problem)| Typed {
+        at: set.at,
+        said: problem.to_string(),
+        named: match set.by_set() {
+            true => a_set(),
+            false => format!("{} is not", set.typed),
+        },
+    });
+    let malformed = inv.malformed.iter().map(|m| Typed {
+        at: m.at,
+        said: m.refusal.to_string(),
+        named: a_set(),
+    });
+    let unfinished = inv.unfinished.iter().map(|m| Typed {
+        at: m.at,
+        said: m.refusal.to_string(),
+        named: format!("{} needs a value", m.typed),
+    });
+    let mut all: Vec<Typed> = bad.chain(malformed).chain(unfinished).collect();
+    all.sort_by_key(|m| m.at);
+    all
 }
 
 /// Each `--set` or key flag whose key or value is bad, with its problem
@@ -414,20 +443,41 @@ fn verdict(file: &Path, mistyped: Option<&str>) -> String {
 /// line and key; a file where the folder should be is said to be one.
 fn warn_of_a_missing_folder(settings: &Settings, file: &Path) {
     let dir = settings.heightmaps_dir.as_deref();
-    let Some(folder) = paths::heightmaps_folder(dir).filter(|f| !f.is_dir()) else {
+    let Some(missing) = no_folder(dir) else {
         return;
     };
     let key = "heightmaps_dir";
     let at = load::value_position(file, key).map_or(String::new(), |(l, c)| format!(":{l}:{c}"));
+    console::err(&format!(
+        "mountains: warning: {}{at}: key `{key}`: {:?}: {missing}; \
+         every slide is generated",
+        file.display(),
+        dir.unwrap_or_default(),
+    ));
+}
+
+/// Warns of each `heightmaps_dir` typed for the run (`--heightmaps-dir
+/// DIR`, `--set heightmaps_dir=DIR`) that names no folder, named as typed,
+/// as the file's is warned of: "--set: ok" was all that was said.
+fn warn_of_missing_folders_typed(sets: &[Set]) {
+    for set in sets.iter().filter(|set| set.key == "heightmaps_dir") {
+        if let Some(missing) = no_folder(Some(&set.value)) {
+            console::err(&format!(
+                "mountains: warning: {}: {missing}; every slide is generated",
+                set.typed
+            ));
+        }
+    }
+}
+
+/// How a `heightmaps_dir` of `dir` that names no folder is said (`no such
+/// folder (/home/me/maps)`, or a file in its place `not a folder`), if it
+/// names none.
+fn no_folder(dir: Option<&str>) -> Option<String> {
+    let folder = paths::heightmaps_folder(dir).filter(|f| !f.is_dir())?;
     let what = match folder.exists() {
         true => "not a folder",
         false => "no such folder",
     };
-    console::err(&format!(
-        "mountains: warning: {}{at}: key `{key}`: {:?}: {what} ({}); \
-         every slide is generated",
-        file.display(),
-        dir.unwrap_or_default(),
-        folder.display()
-    ));
+    Some(format!("{what} ({})", folder.display()))
 }

@@ -148,14 +148,36 @@ pub fn write_atomic_with(
 /// The file a write to `path` replaces: a link's target (the link stays),
 /// else `path` itself, there or not yet. A link to nowhere, or round in a
 /// loop, is an error: a file renamed in its place would replace the link.
+/// So is a name that ends in a separator and is no folder (`new/`).
 /// Nothing is opened (a FIFO's open would wait), so a command can ask
 /// before its work as well as when it writes.
 pub fn write_target(path: &Path) -> io::Result<PathBuf> {
     match std::fs::canonicalize(path) {
         Ok(real) => Ok(real),
         Err(e) if path.is_symlink() => Err(nowhere(path, e)),
-        Err(_) => Ok(path.to_path_buf()),
+        Err(_) => match last_separator(path) {
+            Some(separator) => Err(named_as_a_folder(separator)),
+            None => Ok(path.to_path_buf()),
+        },
     }
+}
+
+/// The separator `path` ends in, if it ends in one (`new/`): it names a
+/// folder, never a file.
+fn last_separator(path: &Path) -> Option<char> {
+    let last = path.as_os_str().to_string_lossy().chars().last()?;
+    std::path::is_separator(last).then_some(last)
+}
+
+/// The error of a write to a name that ends in a separator and is no
+/// folder there (`-o new/`, `-o x.png/`): its temporary file was made
+/// beside it and the work done, and only the last rename said "Not a
+/// directory", of a folder that was never there.
+fn named_as_a_folder(separator: char) -> io::Error {
+    io::Error::new(
+        io::ErrorKind::InvalidInput,
+        format!("names a folder (it ends in {separator}), not a file"),
+    )
 }
 
 /// Whether a write to `path` ([`write_atomic_with`]) can begin: its folder

@@ -166,7 +166,11 @@ fn run_saver(
             Some(mountain)
         }
         Err(e) => {
-            log::warn(&format!("{e}; showing generated mountains instead"));
+            // Said as the preferences' problems are (`warning:`), and by its
+            // flag as `render --open` names it: it was the file alone.
+            log::warn(&format!(
+                "warning: --open {e}; showing generated mountains instead"
+            ));
             None
         }
     });

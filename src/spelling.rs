@@ -49,10 +49,13 @@ pub fn nearest<S: AsRef<str>>(typed: &str, known: impl IntoIterator<Item = S>) -
 /// The longest name compared, in characters.
 pub const LONGEST: usize = 64;
 
-/// The characters of `text` in `buf`, or `None` if there are too many.
+/// The characters of `text` in `buf`, lowercased, or `None` if there are
+/// too many. Every name is lowercase, and a name typed in capitals
+/// (`COLOR`, `--SET`, `RENDER`: caps lock, or a Windows habit) was
+/// further than any misspelling, and offered nothing.
 fn chars<'a>(text: &str, buf: &'a mut [char; LONGEST]) -> Option<&'a [char]> {
     let mut n = 0;
-    for c in text.chars() {
+    for c in text.chars().flat_map(char::to_lowercase) {
         *buf.get_mut(n)? = c;
         n += 1;
     }
@@ -151,5 +154,7 @@ mod tests {
         assert_eq!(nearest("ab", ["ax", "ay"]), Some("ax"));
         assert_eq!(nearest(&"c".repeat(100_000), known), None);
         assert_eq!(nearest("color", ["c".repeat(1000)]), None);
+        assert_eq!(nearest("COLOR", known), Some("color"));
+        assert_eq!(nearest("Sea_Levle", known), Some("sea_level"));
     }
 }

@@ -49,8 +49,13 @@ pub fn format_of(
         .map(|&(_, f)| f)
         .ok_or_else(|| {
             let names: Vec<String> = allowed.iter().map(|(e, _)| format!(".{e}")).collect();
+            // `x.png.` has an empty extension: "written as ." said nothing.
+            let why = match ext.is_empty() {
+                true => "nothing after its last dot names a type".to_string(),
+                false => format!("{what} cannot be written as .{ext}"),
+            };
             UsageError(format!(
-                "-o {}: {what} cannot be written as .{ext}; use {}",
+                "-o {}: {why}; use {}",
                 path.display(),
                 names.join(", ")
             ))

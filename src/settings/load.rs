@@ -108,6 +108,17 @@ fn explain(message: &str, line: &str, at: usize) -> (Option<String>, String) {
     if message.contains("duplicate key") {
         return (key, "the key is given twice; keep one".to_string());
     }
+    // Old Mac line endings (a lone `\r`) make the file one long line,
+    // whose error was put to its first key and what that key takes.
+    if message.contains("carriage return") {
+        let said = "a carriage return without a newline after it: \
+                    lines end in \\n or \\r\\n (old Mac line endings are not read)";
+        return (None, said.to_string());
+    }
+    if let Some(key) = key_without_equals(line) {
+        let said = format!("{message}; write it as `{key} = VALUE`");
+        return (Some(key), said);
+    }
     if value_missing {
         return (key, "nothing after `=`; give a value".to_string());
     }
@@ -127,6 +138,17 @@ fn explain(message: &str, line: &str, at: usize) -> (Option<String>, String) {
         }
         None => (None, message.to_string()),
     }
+}
+
+/// The key a line without `=` begins, when it begins with one (`seed: 5`,
+/// `seed 5`: another format's habit): TOML said only "expected `=`", about
+/// no key. A first word that is no key is left unnamed.
+fn key_without_equals(line: &str) -> Option<String> {
+    if line.contains('=') {
+        return None;
+    }
+    let word = line.trim_start().split([':', ' ', '\t']).next()?;
+    keys::find(word).map(|k| k.name.to_string())
 }
 
 /// What to do about a TOML error a person is likely to meet, on the key
@@ -196,8 +218,10 @@ pub fn report(problems: &[Problem]) -> Vec<String> {
 }
 
 /// As [`report`], each problem's line made by `line` (which says whether
-/// it is an error or a warning, and what follows from it).
-pub fn report_with(problems: &[Problem], line: impl Fn(&Problem) -> String) -> Vec<String> {
+/// it is an error or a warning, and what follows from it). Any list said
+/// a line an item is capped so (`--check-config`'s mistakes typed are
+/// more than the loader's problems).
+pub fn report_with<T>(problems: &[T], line: impl Fn(&T) -> String) -> Vec<String> {
     let mut lines: Vec<String> = problems.iter().take(SHOWN_PROBLEMS).map(line).collect();
     if problems.len() > SHOWN_PROBLEMS {
         lines.push(format!(
@@ -263,7 +287,10 @@ pub fn apply_toml(settings: &mut Settings, text: &str, source: &str) -> Vec<Prob
                 // keys are, as a command line's mistake has.
                 report(
                     key_pos,
-                    format!("{message} (`mountains --help` lists every key)"),
+                    format!(
+                        "{message}{} (`mountains --help` lists every key)",
+                        keys_in_a_table(item)
+                    ),
                 );
                 continue;
             }
@@ -282,6 +309,28 @@ pub fn apply_toml(settings: &mut Settings, text: &str, source: &str) -> Vec<Prob
     }
     *settings = candidate;
     problems
+}
+
+/// What to say of an unknown key that is a table holding keys of ours
+/// (`[mountains]` over `seed = 5`, a habit of other formats): its keys were
+/// passed over with only the table named, as if they were read.
+fn keys_in_a_table(item: &Item) -> String {
+    let Some(table) = item.as_table_like() else {
+        return String::new();
+    };
+    let ours: Vec<String> = table
+        .iter()
+        .filter(|(name, _)| keys::find(name).is_some())
+        .map(|(name, _)| format!("`{name}`"))
+        .take(3)
+        .collect();
+    if ours.is_empty() {
+        return String::new();
+    }
+    format!(
+        "; the keys in it ({}) are read only at the top of the file, before any [table]",
+        ours.join(", ")
+    )
 }
 
 fn item_value(item: &Item) -> Option<Value> {

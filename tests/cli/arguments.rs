@@ -175,6 +175,201 @@ fn a_mistyped_flag_offers_the_nearest() {
     }
 }
 
+/// A flag cut short (`--out`) is offered whole (`--output`) when it
+/// begins one flag alone: `--out x.png` was offered `--set`, two letters
+/// changed. One that begins several is offered by its spelling.
+#[test]
+fn a_flag_cut_short_offers_the_flag_it_begins() {
+    for (args, offered) in [
+        (
+            &["render", "--out", "x.png"][..],
+            "`--out`; did you mean `--output`?",
+        ),
+        (
+            &["render", "-o", "x.png", "-low"],
+            "`-low`; did you mean `--low-detail`?",
+        ),
+        (
+            &["--pause", "3"],
+            "`--pause`; did you mean `--pause-seconds`?",
+        ),
+    ] {
+        let e = parse(args).expect_err(&format!("{args:?} should fail"));
+        assert!(e.0.contains(offered), "{args:?}: {e}");
+    }
+    // `--win` begins `--window` and `--window-id`: neither is offered
+    // for being begun.
+    let e = parse(&["--win"]).expect_err("--win should fail");
+    assert!(!e.0.contains("--window-id"), "{e}");
+}
+
+/// `-` for a preferences file, as `--open -` and `-o -` take it for a
+/// pipe, is refused naming the flag and why, exit 2: `--check-config -`
+/// was an unknown argument `-`, and `--config -` a file not there. A file
+/// named `-` is `./-`.
+#[test]
+fn a_preferences_file_from_standard_input_is_refused_saying_why() {
+    for (args, flag) in [
+        (&["--check-config", "-"][..], "--check-config"),
+        (&["--check-config=-"], "--check-config"),
+        (&["--config", "-", "--check-config"], "--config"),
+        (&["render", "--config", "-", "-o", "x.png"], "--config"),
+        (&["--config=-", "--window"], "--config"),
+        (&["-config", "-"], "--config"),
+    ] {
+        let e = parse(args).expect_err(&format!("{args:?} should fail"));
+        let said = format!("{flag} -: preferences are read from a file, not from standard input");
+        assert!(e.0.starts_with(&said), "{args:?}: {e}");
+    }
+    let dashed = parse(&["--config", "./-", "--check-config", "./-"]).unwrap();
+    assert_eq!(dashed.config, Some(PathBuf::from("./-")));
+}
+
+/// A mode's value that is refused is named as it was typed, after `=`
+/// or after a space: `--layer=foo` was said as `--layer=foo foo`, the
+/// value twice, and `-window-id=zz` as `-window-id=zz: `zz``.
+#[test]
+fn a_mode_value_refused_is_named_as_typed() {
+    let layers = "expected one of background, bottom, top, overlay";
+    let wide = "X window ids have 32 bits (at most 0xffffffff)";
+    let handle = "is not a window handle (a decimal number, or hex with 0x)";
+    for (args, said) in [
+        (&["--layer=foo"][..], format!("--layer=foo: {layers}")),
+        (&["-layer", "foo"], format!("-layer foo: {layers}")),
+        (
+            &["--window-id=0x100000000"],
+            format!("--window-id=0x100000000: {wide}"),
+        ),
+        (
+            &["--window-id", "0x100000000"],
+            format!("--window-id 0x100000000: {wide}"),
+        ),
+        (&["-window-id=zz"], format!("-window-id: `zz` {handle}")),
+        (
+            &["--window-id", "zz"],
+            format!("--window-id: `zz` {handle}"),
+        ),
+    ] {
+        let e = parse(args).expect_err(&format!("{args:?} should fail"));
+        assert_eq!(e.0, said, "{args:?}");
+    }
+}
+
+/// An `-o` that ends in a dot (`x.png.`) says that nothing after it names
+/// a type: it said "a picture cannot be written as .".
+#[test]
+fn an_output_ending_in_a_dot_says_it_names_no_type() {
+    for (args, use_) in [
+        (&["render", "-o", "x.png."][..], ".png, .jpg, .jpeg"),
+        (&["heightmap", "-o", "h."], ".png, .r16, .raw"),
+    ] {
+        let e = parse(args).expect_err(&format!("{args:?} should fail"));
+        let out = args[2];
+        let said = format!("-o {out}: nothing after its last dot names a type; use {use_}");
+        assert_eq!(e.0, said, "{args:?}");
+    }
+}
+
+/// A key, flag or mode typed in capitals (caps lock, or a Windows habit:
+/// its letters take any case) is offered in the case it takes: `--set
+/// COLOR=sonar`, `-COLOR`, `--SET` and `RENDER` were further than any
+/// misspelling, and offered nothing.
+#[test]
+fn a_name_typed_in_capitals_offers_the_name() {
+    for (args, offered) in [
+        (
+            &["render", "-o", "x.png", "--set", "COLOR=sonar"][..],
+            "did you mean `color`?",
+        ),
+        (
+            &["render", "-o", "x.png", "-COLOR", "sonar"],
+            "did you mean `--color`?",
+        ),
+        (
+            &["render", "-o", "x.png", "--SET", "color=sonar"],
+            "did you mean `--set`?",
+        ),
+        (&["RENDER", "-o", "x.png"], "did you mean `render`?"),
+        (&["render", "--OUT", "x.png"], "did you mean `--output`?"),
+    ] {
+        let e = parse(args).expect_err(&format!("{args:?} should fail"));
+        assert!(e.0.contains(offered), "{args:?}: {e}");
+    }
+}
+
+/// A mode given twice names both as typed, with their values: `--layer
+/// background --layer top` was "`--layer` given after `--layer`: choose
+/// one mode", naming neither layer, and of one mode given twice.
+#[test]
+fn a_mode_given_twice_names_both_as_typed() {
+    for (args, said) in [
+        (
+            &["--check-config", "a.toml", "--check-config", "b.toml"][..],
+            "`--check-config b.toml` given after `--check-config a.toml`: give it once",
+        ),
+        (
+            &["--layer", "background", "--layer=top"],
+            "`--layer=top` given after `--layer background`: give it once",
+        ),
+        (
+            &["/p", "1234", "/s"],
+            "`/s` given after `/p 1234`: choose one mode",
+        ),
+        (
+            &["render", "--root"],
+            "`--root` given after `render`: choose one mode",
+        ),
+    ] {
+        let e = parse(args).expect_err(&format!("{args:?} should fail"));
+        assert_eq!(e.0, said, "{args:?}");
+    }
+}
+
+/// A file's name that is not valid text (a Latin-1 name on Linux) is
+/// taken by `--check-config` as `--config` takes it: it was passed over,
+/// then refused as "argument \"\\xFE.toml\" is not valid text".
+#[cfg(unix)]
+#[test]
+fn check_config_takes_a_file_name_that_is_not_text() {
+    use std::os::unix::ffi::OsStringExt;
+    let name = OsString::from_vec(b"\xfe.toml".to_vec());
+    for flag in ["--check-config", "--config"] {
+        let args = [OsString::from(flag), name.clone()];
+        let inv = cli::parse(&args).unwrap_or_else(|e| panic!("{flag}: {e}"));
+        let file = match inv.mode {
+            Mode::CheckConfig(file) => file,
+            _ => inv.config,
+        };
+        assert_eq!(file, Some(PathBuf::from(&name)), "{flag}");
+    }
+}
+
+/// A second file after `--check-config`'s (`--check-config *.toml`) is
+/// refused saying that it checks one: it was "unknown argument `b.toml`".
+#[test]
+fn check_config_with_two_files_says_it_checks_one() {
+    let one = "--check-config checks one file; run it once for each";
+    for (args, said) in [
+        (
+            &["--check-config", "a.toml", "b.toml"][..],
+            format!("`b.toml` given after `--check-config a.toml`: {one}"),
+        ),
+        (
+            &["--check-config=a.toml", "b.toml", "c.toml"],
+            format!("`b.toml` given after `--check-config=a.toml`: {one}"),
+        ),
+        (
+            &["--check-config", "/etc/a.toml", "/etc/b.toml"],
+            format!("`/etc/b.toml` given after `--check-config /etc/a.toml`: {one}"),
+        ),
+    ] {
+        let e = parse(args).expect_err(&format!("{args:?} should fail"));
+        assert_eq!(e.0, said, "{args:?}");
+    }
+    assert!(parse(&["--check-config", "a.toml", "--set", "seed=1"]).is_ok());
+    assert!(parse(&["--check-config", "a.toml", "/s"]).is_err());
+}
+
 /// `--size` bounds the pixels in all as it bounds each side, as the
 /// arguments are read: `render` said it only after asking about its `-o`.
 #[test]
@@ -706,5 +901,39 @@ fn a_data_set_is_refused_where_no_mountain_is_shown() {
     ] {
         let inv = parse(args).unwrap_or_else(|e| panic!("{args:?}: {e}"));
         assert_eq!(inv.open.as_deref(), Some(std::path::Path::new("h.png")));
+    }
+}
+
+/// A value typed is echoed at most 80 characters long with its length,
+/// as a bad key's value is (docs/refusals.md, "Floods"): a `--set`
+/// without `=`, a `--size`, a window handle, a `-delay`, a flag where a
+/// value belongs and a mode's flag given after another, 100000
+/// characters long, were echoed whole (twice, for the flag). A file's
+/// name is a path, and is named whole, as every message names one.
+#[test]
+fn a_huge_value_typed_is_echoed_short() {
+    let huge = "k".repeat(100_000);
+    let flag = format!("-{huge}");
+    let digits = format!("{}x5", "9".repeat(100_000));
+    let wide_id = format!("0x{}100000000", "0".repeat(100_000));
+    let checked = format!("--check-config={huge}");
+    for args in [
+        vec!["render", "-o", "x.png", "--set", &huge],
+        vec!["render", "-o", "x.png", "--size", &huge],
+        vec!["render", "-o", "x.png", "--size", &digits],
+        vec!["render", "-o", &flag],
+        vec!["/p", &huge],
+        vec!["--window-id", &huge],
+        vec!["--window-id", &wide_id],
+        vec!["--root", "-delay", &huge],
+        vec![&checked, "--root"],
+    ] {
+        let e = parse(&args).expect_err("a huge value is refused");
+        assert!(
+            e.0.len() < 1000 && e.0.contains(" characters)"),
+            "{} bytes: {}",
+            e.0.len(),
+            &e.0[..e.0.len().min(300)]
+        );
     }
 }

@@ -754,6 +754,36 @@ fn check_config_names_the_line_of_a_heightmaps_folder_that_is_not_there() {
     }
 }
 
+/// A `heightmaps_dir` typed for the run (`--heightmaps-dir DIR`, `--set
+/// heightmaps_dir=DIR`) that names no folder is warned of beside
+/// `--check-config` as the file's is, named as typed: it was "ok" alone.
+#[test]
+fn check_config_warns_of_a_heightmaps_folder_typed_that_is_not_there() {
+    let dir = scratch("check-config-folder-typed");
+    let file = dir.join("p.toml");
+    std::fs::write(&file, "seed = 5\n").unwrap();
+    let file = arg(&file);
+    let missing = arg(&dir.join("no-maps"));
+    let set = format!("heightmaps_dir={missing}");
+    for (args, typed) in [
+        (
+            vec!["--heightmaps-dir", &missing],
+            format!("--heightmaps-dir {missing}"),
+        ),
+        (vec!["--set", &set], format!("--set {set}")),
+    ] {
+        let args = [&["--check-config", &file][..], &args].concat();
+        let o = mountains(&args);
+        assert_eq!(o.status.code(), Some(0), "{args:?}: {}", stderr(&o));
+        let said = format!(
+            "mountains: warning: {typed}: no such folder ({missing}); every slide is generated\n"
+        );
+        assert_eq!(stderr(&o), said, "{args:?}");
+    }
+    let o = mountains(&["--check-config", &file, "--heightmaps-dir", &arg(&dir)]);
+    assert!(stderr(&o).is_empty(), "{}", stderr(&o));
+}
+
 /// A key this version does not know (the settings screen keeps it) is a
 /// warning with a suggestion for `render`, and still a failure for
 /// `--check-config`.
@@ -1383,6 +1413,89 @@ fn an_output_the_write_would_refuse_is_refused_before_any_work() {
     assert!(left.is_empty(), "left behind: {left:?}");
 }
 
+/// An `-o` that ends in `/` and is no folder (`-o new/`, `-o x.png/`)
+/// names a folder, never a file: it is refused before any work, saying
+/// so. It passed the check before the work, and once the picture was
+/// drawn or the data set made its rename failed with "Not a directory",
+/// of a folder that was never there. With an `--open` that cannot be
+/// read, the `-o` is still what is said; a file so named is untouched.
+#[test]
+fn an_output_that_ends_in_a_slash_is_refused_before_any_work() {
+    let dir = scratch("output-ends-in-a-slash");
+    let missing = arg(&dir.join("missing.png"));
+    let file = dir.join("kept.png");
+    std::fs::write(&file, "kept").unwrap();
+    let (new, kept) = (
+        format!("{}/", arg(&dir.join("new"))),
+        format!("{}/", arg(&file)),
+    );
+    for mode in [&["render", "--size", "8x8"][..], &["heightmap"]] {
+        for out in [&new, &kept] {
+            for heights in [&["--set", "detail=4"][..], &["--open", &missing]] {
+                let args = [mode, heights, &["-o", out]].concat();
+                let o = mountains(&args);
+                assert_eq!(o.status.code(), Some(1), "{args:?}: {}", stderr(&o));
+                let said = format!(
+                    "mountains: error: -o {out}: cannot write: names a folder (it ends in /), not a file\n"
+                );
+                assert_eq!(stderr(&o), said, "{args:?}");
+            }
+        }
+    }
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), "kept");
+    assert!(!dir.join("new").exists());
+    let left: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .filter(|n| n.to_string_lossy().starts_with('.'))
+        .collect();
+    assert!(left.is_empty(), "left behind: {left:?}");
+}
+
+/// `-o` naming the file `--config` reads (`heightmap --config h.png -o
+/// h.png`, a data set typed after `--config` for `--open`) is refused
+/// before any work, exit 2, as `--open X -o X` is: the file was replaced
+/// by a new picture or data set, with only a warning that it was no
+/// text. `--config /dev/null -o /dev/null` writes to the device, as before.
+#[test]
+fn an_output_over_the_preferences_file_is_refused() {
+    let dir = scratch("output-over-config");
+    let mine = dir.join("mine.png");
+    small_data_set(&mine);
+    let bytes = std::fs::read(&mine).unwrap();
+    let (mine, again) = (arg(&mine), arg(&dir.join(".").join("mine.png")));
+    for (mode, made) in [
+        (&["render", "--size", "8x8"][..], "picture"),
+        (&["heightmap"], "data set"),
+    ] {
+        for out in [&mine, &again] {
+            let args = [mode, &["--config", &mine, "-o", out]].concat();
+            let o = mountains(&args);
+            assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+            let said = format!(
+                "mountains: error: -o {out}: is the preferences file --config reads; \
+                 give the {made} another name\n"
+            );
+            assert!(stderr(&o).starts_with(&said), "{args:?}: {}", stderr(&o));
+            assert_eq!(
+                std::fs::read(dir.join("mine.png")).unwrap(),
+                bytes,
+                "{args:?}"
+            );
+        }
+    }
+    #[cfg(unix)]
+    run(&[
+        "render",
+        "--size",
+        "8x8",
+        "--config",
+        "/dev/null",
+        "-o",
+        "/dev/null",
+    ]);
+}
+
 /// `-o` through a link to nowhere is refused (a file renamed in its place
 /// would replace someone's link), and before any work: it was refused only
 /// once the whole picture was drawn or the data set made. With an
@@ -1629,6 +1742,147 @@ fn check_config_with_a_malformed_set_still_checks_the_file() {
         assert!(err.starts_with(&named), "{args:?}: {err}");
     }
     assert!(!Path::new(&out).exists());
+}
+
+/// Mistakes typed beside `--check-config` are said in the order they
+/// were typed, whatever their kind, and the verdict names the first: a
+/// `--set nokey` typed before `-color pink` was said after it, and the
+/// verdict named `-color pink` alone.
+#[test]
+fn check_config_says_mistakes_in_the_order_typed() {
+    let dir = scratch("check-config-mistakes-in-order");
+    let good = dir.join("good.toml");
+    std::fs::write(&good, "seed = 5\n").unwrap();
+    let good = arg(&good);
+    let (nokey, pink) = ("--set nokey: expected key=value", "-color: \"pink\" is not");
+    for (args, said, verdict) in [
+        (
+            vec!["--check-config", &good, "--set", "nokey", "-color", "pink"],
+            vec![nokey, pink],
+            "a --set is not",
+        ),
+        (
+            vec!["--check-config", &good, "-color", "pink", "--set", "nokey"],
+            vec![pink, nokey],
+            "-color pink is not",
+        ),
+        (
+            vec!["--set=", "-color", "pink", "--check-config", &good, "-seed"],
+            vec!["--set=: an empty value", pink, "`-seed` needs a value"],
+            "a --set is not",
+        ),
+    ] {
+        let o = mountains(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        let err = stderr(&o);
+        let line_of = |text: &str| {
+            let start = format!("mountains: error: {text}");
+            err.lines().position(|l| l.starts_with(&start))
+        };
+        let lines: Vec<Option<usize>> = said.iter().map(|text| line_of(text)).collect();
+        let in_order = (0..lines.len()).map(Some).collect::<Vec<_>>();
+        assert_eq!(lines, in_order, "{args:?}: {err}");
+        let out = String::from_utf8_lossy(&o.stdout);
+        assert_eq!(
+            out,
+            format!("{good}: the file is ok; {verdict}\n"),
+            "{args:?}"
+        );
+    }
+}
+
+/// A line that gives a key another format's way (`seed: 5`, `seed 5`)
+/// names its key and how TOML writes it: it said only "key with no
+/// value, expected `=`", about no key. A first word that is no key is
+/// named as no key.
+#[test]
+fn a_key_written_without_equals_is_named() {
+    let dir = scratch("key-without-equals");
+    for (text, at) in [("seed: 5\n", "1:7"), ("color = \"sonar\"\nseed 5\n", "2:6")] {
+        let file = dir.join("p.toml");
+        std::fs::write(&file, text).unwrap();
+        let o = mountains(&["--check-config", &arg(&file)]);
+        assert_eq!(o.status.code(), Some(1), "{text:?}");
+        let said = format!(
+            "mountains: error: {}:{at}: key `seed`: not valid TOML: ",
+            file.display()
+        );
+        let err = stderr(&o);
+        assert!(err.starts_with(&said), "{text:?}: {err}");
+        assert!(
+            err.contains("; write it as `seed = VALUE`"),
+            "{text:?}: {err}"
+        );
+    }
+    let file = dir.join("q.toml");
+    std::fs::write(&file, "mystery: 5\n").unwrap();
+    let err = stderr(&mountains(&["--check-config", &arg(&file)]));
+    assert!(!err.contains("key `"), "{err}");
+}
+
+/// A data set the slide show cannot open is a warning named by its flag,
+/// as a preferences file's problems are and as `render --open` names it:
+/// it was `mountains: h.png: is truncated ...`, neither. The show goes on
+/// without it (here it stops for want of a display, after saying so).
+#[test]
+fn a_data_set_the_slide_show_cannot_open_is_a_warning_naming_its_flag() {
+    let dir = scratch("slide-show-open");
+    let missing = arg(&dir.join("missing.png"));
+    let o = command(&["--window", "--open", &missing])
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .output()
+        .unwrap();
+    let err = stderr(&o);
+    let said = format!("mountains: warning: --open {missing}: cannot read: ");
+    assert!(err.starts_with(&said), "{err}");
+    assert!(
+        err.lines()
+            .next()
+            .unwrap()
+            .ends_with("; showing generated mountains instead"),
+        "{err}"
+    );
+}
+
+/// A file whose lines end in a lone carriage return (old Mac line
+/// endings) is said to be so, naming no key: the whole file was one line,
+/// and its error was put to the first key, with what that key takes.
+#[test]
+fn a_file_of_lone_carriage_returns_is_said_to_be_one() {
+    let dir = scratch("lone-carriage-returns");
+    let file = dir.join("p.toml");
+    std::fs::write(&file, "seed = 5\rcolor = \"sonar\"\r").unwrap();
+    let o = mountains(&["--check-config", &arg(&file)]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let said = format!(
+        "mountains: error: {}:1:10: not valid TOML: a carriage return without a newline \
+         after it: lines end in \\n or \\r\\n (old Mac line endings are not read)\n",
+        file.display()
+    );
+    assert_eq!(stderr(&o), said);
+}
+
+/// A table of our keys (`[mountains]` over `seed = 5`, another format's
+/// habit) says that its keys are read only at the top of the file: it was
+/// "key `mountains`: unknown key", and the keys in it passed over as if read.
+#[test]
+fn a_table_of_our_keys_says_where_they_belong() {
+    let dir = scratch("table-of-our-keys");
+    let file = dir.join("p.toml");
+    std::fs::write(&file, "[mountains]\nseed = 5\ncolor = \"sonar\"\n").unwrap();
+    let o = mountains(&["--check-config", &arg(&file)]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let said = format!(
+        "mountains: error: {}:1:2: key `mountains`: unknown key; the keys in it \
+         (`seed`, `color`) are read only at the top of the file, before any [table] \
+         (`mountains --help` lists every key)\n",
+        file.display()
+    );
+    assert_eq!(stderr(&o), said);
+    std::fs::write(&file, "[other]\nname = 5\n").unwrap();
+    let err = stderr(&mountains(&["--check-config", &arg(&file)]));
+    assert!(!err.contains("the keys in it"), "{err}");
 }
 
 /// A file `--check-config` cannot read (a folder) is named with the flag
