@@ -140,8 +140,17 @@ fn a_header_the_data_cannot_fill_is_truncated() {
 fn too_small_and_zero_sizes_are_refused() {
     let e = fails(&hand_png(ihdr(1, 1, 8, 0, 0), &[0, 9], &[]));
     assert_eq!(e.kind, ErrorKind::TooSmall, "{e}");
-    let e = fails(&hand_png(ihdr(0, 5, 8, 0, 0), &[0], &[]));
-    assert_eq!(e.kind, ErrorKind::Damaged, "{e}");
+    for (w, h) in [(0, 5), (5, 0), (0, 0)] {
+        let e = fails(&hand_png(ihdr(w, h, 8, 0, 0), &[0], &[]));
+        assert_eq!(e.kind, ErrorKind::Damaged, "{e}");
+        // Said in a person's words, not the png crate's "Invalid image
+        // dimensions".
+        assert!(
+            e.problem
+                .contains("its header says the image is 0 pixels wide or 0 tall"),
+            "{w}x{h}: {e}"
+        );
+    }
 }
 
 #[test]

@@ -330,6 +330,10 @@ fn plain(message: &str) -> String {
         rest = after.find('}').map_or("", |j| &after[j + 1..]);
     }
     out.push_str(rest);
+    if out == "Invalid image dimensions" {
+        // The png crate says this of a header's zero width or height only.
+        return "its header says the image is 0 pixels wide or 0 tall".to_string();
+    }
     if let Some(n) = out.strip_prefix("Unknown filter method ") {
         let n = n.trim_end_matches('.');
         return format!(
@@ -356,5 +360,9 @@ mod plain_tests {
             "filter type 9, which PNG does not have (0 to 4 for a row, 0 in the header)"
         );
         assert_eq!(plain("CRC error"), "CRC error");
+        assert_eq!(
+            plain("Invalid image dimensions"),
+            "its header says the image is 0 pixels wide or 0 tall"
+        );
     }
 }
