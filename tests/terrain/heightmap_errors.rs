@@ -205,6 +205,9 @@ fn a_scale_that_overflows_heights_is_refused() {
         &[(meta::KEY_SCALE, "1e300")],
     ));
     assert_eq!(e.kind, ErrorKind::Metadata(meta::KEY_SCALE.into()), "{e}");
+    // Said as it was written, not as its 301 digits.
+    assert!(e.problem.contains("1e300 is out of range"), "{e}");
+    assert!(e.to_string().len() < 200, "{e}");
 }
 
 /// Accepted-looking but extreme metadata drew a one-colour frame with exit
@@ -221,7 +224,7 @@ fn extreme_metadata_is_refused_with_its_range() {
         (
             &[(meta::KEY_OFFSET, "1e30")],
             meta::KEY_OFFSET,
-            "out of range (allowed: -100000 to 100000)",
+            "1e30 is out of range (allowed: -100000 to 100000)",
         ),
         (
             &[(meta::KEY_SEA_LEVEL, "-1e9")],

@@ -320,7 +320,7 @@ fn check_ranges(m: &Metadata) -> Result<(), (&'static str, String)> {
             };
             Err((
                 key,
-                format!("{x} is out of range (allowed: {from} to {hi})"),
+                format!("{} is out of range (allowed: {from} to {hi})", shown(x)),
             ))
         }
         _ => Ok(()),
@@ -335,13 +335,29 @@ fn check_ranges(m: &Metadata) -> Result<(), (&'static str, String)> {
             return Err((
                 KEY_SCALE,
                 format!(
-                    "{scale} makes a relief of {relief} over a width of {extent}: \
-                     more than {MAX_RELIEF_PER_WIDTH} times the width"
+                    "{} makes a relief of {} over a width of {extent}: \
+                     more than {MAX_RELIEF_PER_WIDTH} times the width",
+                    shown(scale),
+                    shown(relief)
                 ),
             ));
         }
     }
     Ok(())
+}
+
+/// `x` as a person reads it: whole digits while they are few, else with
+/// an exponent (1e300 was said as its 301 digits); a value read as an f32
+/// in its f32 digits (1e30, not 1.0000000150474662e30).
+fn shown(x: f64) -> String {
+    let short = x as f32;
+    let exponent = x != 0.0 && !(1e-4..1e7).contains(&x.abs());
+    match (f64::from(short) == x, exponent) {
+        (true, true) => format!("{short:e}"),
+        (true, false) => format!("{short}"),
+        (false, true) => format!("{x:e}"),
+        (false, false) => format!("{x}"),
+    }
 }
 
 fn check_format(v: &str) -> Result<(), String> {
