@@ -833,9 +833,15 @@ impl Parser<'_> {
             // `-delay` it had and gain one: it and `-display` stay last-wins.
             "-delay" | "--delay" => {
                 let v = self.inline_or_next(flag.inline.clone(), name)?;
-                let us = v.trim().parse::<u64>().map_err(|_| {
+                let us = v.trim().parse::<u64>().map_err(|e| {
+                    // A number of more digits than any delay was said not to
+                    // be a number of microseconds at all.
+                    let why = match e.kind() {
+                        std::num::IntErrorKind::PosOverflow => "too large: microseconds",
+                        _ => "expected microseconds",
+                    };
                     UsageError(format!(
-                        "`{name} {}`: expected microseconds, e.g. -delay 20000",
+                        "`{name} {}`: {why} between frames, e.g. -delay 20000",
                         clipped(&v)
                     ))
                 })?;

@@ -591,6 +591,15 @@ fn xscreensavers_common_options_mean_what_they_mean_there() {
     assert_eq!(mode(&["--window-id", "66", "--root"]), Mode::XWindowId(66));
     let e = parse(&["-delay", "soon"]).unwrap_err().0;
     assert!(e.contains("-delay soon"), "{e}");
+    assert!(e.contains("expected microseconds"), "{e}");
+    // More digits than any delay: too large, not "not a number".
+    let e = parse(&["-root", "-delay", "99999999999999999999"])
+        .unwrap_err()
+        .0;
+    assert!(
+        e.contains("-delay 99999999999999999999`: too large: microseconds"),
+        "{e}"
+    );
     assert!(parse(&["--window", "--root"]).is_err());
 }
 
