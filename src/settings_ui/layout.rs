@@ -181,12 +181,30 @@ pub fn whole_scale(scale_factor: f64, monitor: Option<Size>) -> u32 {
         height: mh,
     }) = monitor
     {
-        // Leave room for a title bar and a task bar.
-        while s > 1 && (WINDOW_W * s > mw || (WINDOW_H + 60) * s > mh) {
+        while s > 1 && (WINDOW_W * s > mw || (WINDOW_H + BARS_H) * s > mh) {
             s -= 1;
         }
     }
     s
+}
+
+/// Room left on a monitor for a title bar and a task bar, logical pixels.
+const BARS_H: u32 = 60;
+
+/// The window's size in physical pixels at `scale`: the size it asks for,
+/// each side held to a monitor of `monitor` size (less [`BARS_H`] down),
+/// but never under the least it may be made. On a 1024x600 netbook's
+/// screen the 620-pixel window had its OK and Cancel below the screen.
+pub fn window_size(scale: u32, monitor: Option<Size>) -> Size {
+    let (w, h) = (WINDOW_W * scale, WINDOW_H * scale);
+    let (w, h) = match monitor {
+        Some(m) => (
+            w.min(m.width),
+            h.min(m.height.saturating_sub(BARS_H * scale)),
+        ),
+        None => (w, h),
+    };
+    Size::new(w.max(MIN_W * scale), h.max(MIN_H * scale))
 }
 
 /// The lines of the settings list for `keys`: each key's row, a section's

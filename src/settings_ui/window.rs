@@ -14,7 +14,7 @@ use winit::window::{Window, WindowId};
 use crate::platform::{self, Backend};
 use crate::render::Size;
 
-use super::layout::{MIN_H, MIN_W, WINDOW_H, WINDOW_W, whole_scale};
+use super::layout::{MIN_H, MIN_W, WINDOW_H, WINDOW_W, whole_scale, window_size};
 use super::model::Input;
 use super::screen::{Next, Screen};
 
@@ -107,7 +107,8 @@ impl App {
             softbuffer::Surface::new(&context, window.clone()).map_err(|e| e.to_string())?;
         self.scale = pick_scale(&window);
         keep_min_size(&window, self.scale);
-        let want = PhysicalSize::new(WINDOW_W * self.scale, WINDOW_H * self.scale);
+        let want = window_size(self.scale, monitor_size(&window));
+        let want = PhysicalSize::new(want.width, want.height);
         let size = window
             .request_inner_size(want)
             .unwrap_or(window.inner_size());
@@ -208,10 +209,14 @@ fn keep_min_size(window: &Window, scale: u32) {
 
 /// The whole scale for the window's scale factor and its monitor.
 fn pick_scale(window: &Window) -> u32 {
-    let monitor = window
+    whole_scale(window.scale_factor(), monitor_size(window))
+}
+
+/// The size of the monitor the window is on, if known.
+fn monitor_size(window: &Window) -> Option<Size> {
+    window
         .current_monitor()
-        .map(|m| Size::new(m.size().width, m.size().height));
-    whole_scale(window.scale_factor(), monitor)
+        .map(|m| Size::new(m.size().width, m.size().height))
 }
 
 fn named_input(key: NamedKey, shift: bool) -> Option<Input> {

@@ -704,6 +704,34 @@ fn the_scale_is_whole_and_the_window_fits_the_monitor() {
     assert_eq!(whole_scale(100.0, Some(Size::new(1024, 768))), 1);
 }
 
+/// On a screen lower than the window (a 1024x600 netbook, an 800x600
+/// display) the window opened 960x620, its OK and Cancel below the screen;
+/// it is now held to the screen, never under the least it may be made.
+#[test]
+fn the_window_is_held_to_a_small_screen() {
+    use mountains::settings_ui::layout::{MIN_H, MIN_W, WINDOW_H, WINDOW_W, window_size};
+    let asked = Size::new(WINDOW_W, WINDOW_H);
+    assert_eq!(window_size(1, None), asked);
+    assert_eq!(window_size(1, Some(Size::new(1920, 1080))), asked);
+    assert_eq!(
+        window_size(2, Some(Size::new(3840, 2160))),
+        Size::new(1920, 1240)
+    );
+    assert_eq!(
+        window_size(1, Some(Size::new(1024, 600))),
+        Size::new(960, 540)
+    );
+    assert_eq!(
+        window_size(1, Some(Size::new(800, 600))),
+        Size::new(800, 540)
+    );
+    assert_eq!(
+        window_size(1, Some(Size::new(320, 240))),
+        Size::new(MIN_W, MIN_H),
+        "no smaller than the layout allows"
+    );
+}
+
 #[test]
 fn a_file_edited_elsewhere_is_taken_in_keeping_the_screens_edits() {
     let dir = scratch("reload");
