@@ -470,12 +470,16 @@ pub fn resolve(
     let mut problems = Vec::new();
     if let Some(path) = &file {
         problems = apply_file(&mut settings, path);
+        if config.is_some() {
+            // A file typed on the command line: named by its flag, where
+            // it is refused and where the screensaver starts without it.
+            for p in problems.iter_mut().filter(|p| p.is_unreadable()) {
+                p.source = format!("--config {}", p.source);
+            }
+        }
         let refused = config.is_some() && unreadable != Unreadable::Defaults;
         if refused && problems.iter().any(Problem::is_unreadable) {
-            // A mistake on the command line: named by its flag.
-            let mut refusal = problems.remove(0);
-            refusal.source = format!("--config {}", refusal.source);
-            return Err(refusal);
+            return Err(problems.remove(0));
         }
     }
     for (key, value) in sets {

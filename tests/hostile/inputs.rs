@@ -140,7 +140,8 @@ fn the_saver_starts_on_its_defaults_when_its_preferences_cannot_be_read() {
                 assert!(!log.contains("warning"), "{mode} {file}: {log}");
                 continue;
             }
-            let said = format!("warning: {file}: cannot read: ");
+            // Named by its flag, as render names it.
+            let said = format!("warning: --config {file}: cannot read: ");
             for text in [&*err, &log] {
                 assert!(
                     text.contains(&said)
