@@ -1405,7 +1405,13 @@ fn an_output_the_write_would_refuse_is_refused_before_any_work() {
         }
     }
     assert!(folder.is_dir() && !nowhere.parent().unwrap().exists());
-    let left: Vec<_> = std::fs::read_dir(&dir)
+    no_temporary_file_in(&dir);
+}
+
+/// No temporary file (a dot file: fsutil writes `.NAME.PID.tmp` and renames
+/// it) is left in `dir` after a refused or failed write.
+fn no_temporary_file_in(dir: &std::path::Path) {
+    let left: Vec<_> = std::fs::read_dir(dir)
         .unwrap()
         .map(|e| e.unwrap().file_name())
         .filter(|n| n.to_string_lossy().starts_with('.'))
@@ -1444,12 +1450,7 @@ fn an_output_that_ends_in_a_slash_is_refused_before_any_work() {
     }
     assert_eq!(std::fs::read_to_string(&file).unwrap(), "kept");
     assert!(!dir.join("new").exists());
-    let left: Vec<_> = std::fs::read_dir(&dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name())
-        .filter(|n| n.to_string_lossy().starts_with('.'))
-        .collect();
-    assert!(left.is_empty(), "left behind: {left:?}");
+    no_temporary_file_in(&dir);
 }
 
 /// `-o` naming the file `--config` reads (`heightmap --config h.png -o
