@@ -1,6 +1,8 @@
 //! Two jobs at once, one here and one on a scoped thread: the scene's
-//! start and the clean edges split their work this way when there are
-//! cores for it (`cores.rs` says how many).
+//! start, the clean edges, the lakes and the erosion beside the
+//! subdivision split their work this way when there are cores for it
+//! (`cores.rs` says how many); and the joining of a scoped thread whose
+//! panic goes on up.
 
 /// `a()` here and `b()` on a thread of its own, at once.
 pub(crate) fn both<A: Send, B: Send>(
@@ -23,7 +25,7 @@ pub(crate) fn both_if<A: Send, B: Send>(
 }
 
 /// What a scoped thread returned; its panic goes on up.
-fn joined<T>(thread: std::thread::ScopedJoinHandle<'_, T>) -> T {
+pub(crate) fn joined<T>(thread: std::thread::ScopedJoinHandle<'_, T>) -> T {
     thread
         .join()
         .unwrap_or_else(|p| std::panic::resume_unwind(p))

@@ -77,9 +77,7 @@ fn pack_at_once(frame: &Frame, round: &[Range<u64>], packers: &mut [Packer]) {
             .map(|(packer, part)| s.spawn(|| packer.pack(frame, part.clone())))
             .collect();
         here.pack(frame, round[0].clone());
-        for t in threads {
-            t.join().unwrap_or_else(|p| std::panic::resume_unwind(p));
-        }
+        threads.into_iter().for_each(crate::threads::joined);
     });
 }
 

@@ -343,11 +343,10 @@ fn subdivide_wearing<R: subdivide::Rule, P: Put>(
     let (depth, _) =
         subdivide::subdivide_down_to(field.heights_mut(), size, first_depth, 2 << levels, job);
     let lattice = field.coarsened(levels);
-    let change = std::thread::scope(|s| {
-        let worn = s.spawn(move || erosion::wear(lattice, wear.strength, wear.seed));
-        subdivide::subdivide(field.heights_mut(), size, depth, job);
-        worn.join().unwrap_or_else(|p| std::panic::resume_unwind(p))
-    });
+    let (_, change) = crate::threads::both(
+        || subdivide::subdivide(field.heights_mut(), size, depth, job),
+        move || erosion::wear(lattice, wear.strength, wear.seed),
+    );
     if let Some(change) = change {
         erosion::add(field, &change, wear.threads);
     }
