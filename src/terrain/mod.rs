@@ -120,30 +120,32 @@ fn params_for(settings: &Settings, seed: u64) -> Params {
 /// Runs the generator and the finishing passes over `field`.
 fn fill(field: &mut Heightfield, params: &Params, seed: u64, threads: usize) {
     let threads = threads.max(1);
-    fill_wearing(
-        field,
-        params,
-        seed,
-        threads,
-        Wear::alongside(params, seed, threads),
-    );
+    let alongside = erodes_alongside(params, threads);
+    fill_wearing(field, params, seed, threads, alongside);
 }
 
-/// [`fill`], eroding alongside the subdivision as `wear` says (`None`:
-/// after it, as the saved data sets of before were made).
+/// Whether the erosion `p` asks for runs alongside the subdivision: if
+/// there is a thread to spare for it, the droplets running one after
+/// another while the finer levels are made.
+fn erodes_alongside(p: &Params, threads: usize) -> bool {
+    p.erosion > 0.0 && threads > 1
+}
+
+/// [`fill`], eroding alongside the subdivision if `alongside`, else after
+/// it (as the saved data sets of before were made).
 fn fill_wearing(
     field: &mut Heightfield,
     params: &Params,
     seed: u64,
     threads: usize,
-    wear: Option<Wear>,
+    alongside: bool,
 ) {
     field.set_seed(Some(seed));
-    let extremes = subdivide_all(field, params, seed, threads, &Plain, wear);
-    let extremes = match wear {
+    let extremes = subdivide_all(field, params, seed, threads, &Plain, alongside);
+    let extremes = match alongside {
         // Worn: the subdivision's extremes no longer hold.
-        Some(_) => None,
-        None => weather(field, params, seed, threads, extremes),
+        true => None,
+        false => weather(field, params, seed, threads, extremes),
     };
     finish(field, params, threads, extremes);
     if let Some(tallest) = params.tallest {
@@ -219,7 +221,7 @@ pub fn generate_audited(settings: &Settings, seed: u64, threads: usize) -> Audit
     field.heights_mut().fill(f32::NAN);
     field.set_seed(Some(seed));
     let audit = Audited::default();
-    let extremes = subdivide_all(&mut field, &params, seed, threads, &audit, None);
+    let extremes = subdivide_all(&mut field, &params, seed, threads, &audit, false);
     let unset = field.heights().iter().filter(|h| h.is_nan()).count();
     let extremes = weather(&mut field, &params, seed, threads, extremes);
     finish(&mut field, &params, threads, extremes);
@@ -254,30 +256,8 @@ fn default_threads() -> usize {
     crate::cores::cores().min(8)
 }
 
-/// The erosion run alongside the subdivision ([`subdivide_all`]): its
-/// strength, the mountain's seed, and the threads that add its work.
-#[derive(Clone, Copy, Debug)]
-struct Wear {
-    strength: f32,
-    seed: u64,
-    threads: usize,
-}
-
-impl Wear {
-    /// The erosion `p` asks for, if there is a thread to spare for it: the
-    /// droplets run one after another, and while they do the subdivision's
-    /// finer levels need not wait.
-    fn alongside(p: &Params, seed: u64, threads: usize) -> Option<Wear> {
-        (p.erosion > 0.0 && threads > 1).then_some(Wear {
-            strength: p.erosion,
-            seed,
-            threads,
-        })
-    }
-}
-
 /// Sets the starting points and runs the chosen generator's subdivision,
-/// and `wear`'s erosion if given (else the caller erodes, [`weather`]);
+/// and its erosion if `alongside` (else the caller erodes, [`weather`]);
 /// returns the field's extremes if the subdivision saw them all.
 fn subdivide_all<P: Put>(
     field: &mut Heightfield,
@@ -285,8 +265,10 @@ fn subdivide_all<P: Put>(
     seed: u64,
     threads: usize,
     put: &P,
-    wear: Option<Wear>,
+    alongside: bool,
 ) -> Option<Extremes> {
+    // The erosion's strength and where its rain falls.
+    let wear = alongside.then_some((p.erosion, seed));
     let size = field.size();
     let noise = noise::Noise::new(seed, p.exponent)
         .spread(p.spread)
@@ -317,26 +299,27 @@ fn subdivide_all<P: Put>(
         }
         Generator::Brownian => {
             brownian::synthesise(heights, p.exponent, p.hurst, seed, threads);
-            if let Some(w) = wear {
-                erosion::erode(field, w.strength, w.seed, w.threads);
+            if alongside {
+                erosion::erode(field, p.erosion, seed, threads);
             }
             None
         }
     }
 }
 
-/// The subdivision's levels from `first_depth` on, with `wear`'s droplets
-/// on a thread of their own from the level that makes the points they
-/// wear on, alongside the finer levels, which never write those points
-/// again: the same field as eroding after the subdivision, sooner.
+/// The subdivision's levels from `first_depth` on, with the droplets of
+/// `wear` (the erosion's strength and seed) on a thread of their own from
+/// the level that makes the points they wear on, alongside the finer
+/// levels, which never write those points again: the same field as
+/// eroding after the subdivision, sooner.
 fn subdivide_wearing<R: subdivide::Rule, P: Put>(
     field: &mut Heightfield,
     first_depth: u32,
     job: &Job<'_, R, P>,
-    wear: Option<Wear>,
+    wear: Option<(f32, u64)>,
 ) -> Option<Extremes> {
     let size = field.size();
-    let Some(wear) = wear else {
+    let Some((strength, seed)) = wear else {
         return subdivide::subdivide(field.heights_mut(), size, first_depth, job);
     };
     let levels = erosion::levels_above(field.exponent());
@@ -345,10 +328,10 @@ fn subdivide_wearing<R: subdivide::Rule, P: Put>(
     let lattice = field.coarsened(levels);
     let (_, change) = crate::threads::both(
         || subdivide::subdivide(field.heights_mut(), size, depth, job),
-        move || erosion::wear(lattice, wear.strength, wear.seed),
+        move || erosion::wear(lattice, strength, seed),
     );
     if let Some(change) = change {
-        erosion::add(field, &change, wear.threads);
+        erosion::add(field, &change, job.threads);
     }
     None
 }
@@ -407,7 +390,7 @@ mod tests {
         let after = |s: &Settings, seed: u64| {
             let params = params_for(s, seed);
             let mut field = Heightfield::flat(params.exponent, params.extent());
-            fill_wearing(&mut field, &params, seed, 2, None);
+            fill_wearing(&mut field, &params, seed, 2, false);
             field
         };
         for generator in [Generator::Square, Generator::Diamond, Generator::Triangle] {
@@ -448,7 +431,7 @@ mod tests {
                     };
                     let params = Params::from_settings(&s);
                     let mut field = Heightfield::flat(params.exponent, params.extent());
-                    let seen = subdivide_all(&mut field, &params, 17, threads, &Plain, None);
+                    let seen = subdivide_all(&mut field, &params, 17, threads, &Plain, false);
                     let truth = normalize::min_max(field.heights(), 1);
                     let wanted = generator == Generator::Triangle || sea_level != 0.0;
                     let case = format!("{generator:?} {detail} {sea_level} {threads}");
