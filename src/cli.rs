@@ -228,6 +228,7 @@ pub fn parse(args: &[OsString]) -> Result<Invocation, UsageError> {
         files: Vec::new(),
         shared: Vec::new(),
         bad_value: None,
+        raw_inline: None,
         inv: Invocation {
             mode: default_mode(),
             config: None,
@@ -515,6 +516,10 @@ struct Parser<'a> {
     /// key flag or `--set` typed last without its value (`-seed`): see
     /// [`parse`] for when it is said.
     bad_value: Option<UsageError>,
+    /// The file name typed after `=` in the argument being read, where it
+    /// is not valid text (`--config=NAME`): what [`Self::take`] gives in
+    /// place of the text the argument is read by.
+    raw_inline: Option<OsString>,
     inv: Invocation,
 }
 
@@ -567,13 +572,24 @@ impl Parser<'_> {
         a
     }
 
+    /// The next argument as text. A file flag's name typed after `=`
+    /// need not be text: it is kept in `raw_inline`, and the argument read
+    /// with its text in its place.
     fn next_str(&mut self) -> Result<Option<String>, UsageError> {
-        match self.next_os() {
-            None => Ok(None),
-            Some(a) => a
-                .to_str()
-                .map(|s| Some(s.to_string()))
-                .ok_or_else(|| UsageError(format!("argument {a:?} is not valid text"))),
+        self.raw_inline = None;
+        let Some(a) = self.next_os() else {
+            return Ok(None);
+        };
+        if let Some(s) = a.to_str() {
+            return Ok(Some(s.to_string()));
+        }
+        match crate::platform::os::split_at_equals(a) {
+            Some((flag, name)) if FILE_NAME_FLAGS.contains(&long_name(&flag).as_str()) => {
+                let typed = format!("{flag}={}", name.to_string_lossy());
+                self.raw_inline = Some(name);
+                Ok(Some(typed))
+            }
+            _ => Err(UsageError(format!("argument {a:?} is not valid text"))),
         }
     }
 
@@ -647,7 +663,7 @@ impl Parser<'_> {
     fn take(&mut self, flag: &Flag, long: &str) -> Result<OsString, UsageError> {
         let arg = flag.arg;
         let v = match &flag.inline {
-            Some(v) => OsString::from(v),
+            Some(v) => self.raw_inline.take().unwrap_or_else(|| OsString::from(v)),
             None => self.value(arg)?,
         };
         // `render -o --help` wrote a picture named `--help`: a flag
@@ -791,7 +807,11 @@ impl Parser<'_> {
             no_standard_input("--check-config", "-".as_ref())?;
         }
         let file = match (inline, next) {
-            (Some(v), _) => Some(PathBuf::from(v)),
+            (Some(v), _) => Some(
+                self.raw_inline
+                    .take()
+                    .map_or_else(|| v.into(), PathBuf::from),
+            ),
             (None, Some(next)) if !next.starts_with('-') => {
                 self.pos += 1;
                 next_name.map(PathBuf::from)
@@ -1036,6 +1056,10 @@ fn long_name(arg: &str) -> String {
         _ => arg.to_string(),
     }
 }
+
+/// The flags that take a file's name (by their long names): the name
+/// given after `=` may be any the system allows, text or not.
+const FILE_NAME_FLAGS: [&str; 5] = ["--config", "--open", "-o", "--output", "--check-config"];
 
 /// Our subcommand words.
 const WORDS: [&str; 2] = ["render", "heightmap"];

@@ -2,6 +2,7 @@
 //! the Unixes and Windows for files, memory, the clock, the console and a
 //! program's defaults. Signals have their own file (`signals`).
 
+use std::ffi::{OsStr, OsString};
 use std::fs::FileType;
 use std::path::Path;
 
@@ -27,6 +28,37 @@ pub const FIXED_EDITOR: Option<&str> = if cfg!(windows) {
 pub fn use_parent_console() {
     #[cfg(windows)]
     super::win32::console::attach_parent();
+}
+
+/// `arg` split at its first `=`: the text before it, if that part is
+/// valid text, and what follows as it was typed. A file's name need not
+/// be text (any bytes on the Unixes, unpaired UTF-16 on Windows), so
+/// `--config=NAME` keeps its name as `--config NAME` does.
+pub fn split_at_equals(arg: &OsStr) -> Option<(String, OsString)> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::ffi::OsStrExt;
+        let bytes = arg.as_bytes();
+        let i = bytes.iter().position(|&b| b == b'=')?;
+        let before = std::str::from_utf8(&bytes[..i]).ok()?;
+        Some((
+            before.to_string(),
+            OsStr::from_bytes(&bytes[i + 1..]).into(),
+        ))
+    }
+    #[cfg(windows)]
+    {
+        use std::os::windows::ffi::{OsStrExt, OsStringExt};
+        let wide: Vec<u16> = arg.encode_wide().collect();
+        let i = wide.iter().position(|&w| w == u16::from(b'='))?;
+        let before = String::from_utf16(&wide[..i]).ok()?;
+        Some((before, OsString::from_wide(&wide[i + 1..])))
+    }
+    #[cfg(not(any(unix, windows)))]
+    {
+        let _ = arg;
+        None
+    }
 }
 
 /// Whether `path` names the null device (`/dev/null`, or `NUL` on

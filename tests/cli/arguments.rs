@@ -344,6 +344,42 @@ fn check_config_takes_a_file_name_that_is_not_text() {
     }
 }
 
+/// A file's name that is not valid text is taken after `=` as it is
+/// after a space: `--config=NAME` (and `--open=`, `-o=`, `--output=`,
+/// `--check-config=`, with one dash too) was refused as "argument ... is
+/// not valid text", since each argument was read as text before it was
+/// split at its `=`. A flag that takes no file still refuses one.
+#[cfg(unix)]
+#[test]
+fn a_file_name_that_is_not_text_is_taken_after_equals() {
+    use std::os::unix::ffi::OsStringExt;
+    let name = |stem: &[u8], ext: &[u8]| OsString::from_vec([stem, ext].concat());
+    let joined = |flag: &str, value: &OsString| {
+        let mut a = OsString::from(format!("{flag}="));
+        a.push(value);
+        a
+    };
+    let (toml, png) = (name(b"\xfe", b".toml"), name(b"\xe9t\xe9", b".png"));
+    for flag in ["--config", "-config"] {
+        let inv = cli::parse(&[joined(flag, &toml)]).unwrap_or_else(|e| panic!("{flag}: {e}"));
+        assert_eq!(inv.config, Some(PathBuf::from(&toml)), "{flag}");
+    }
+    let inv = cli::parse(&[joined("--open", &png)]).expect("--open=");
+    assert_eq!(inv.open, Some(PathBuf::from(&png)));
+    for flag in ["-o", "--output"] {
+        let args = [OsString::from("render"), joined(flag, &png)];
+        let inv = cli::parse(&args).unwrap_or_else(|e| panic!("{flag}: {e}"));
+        match inv.mode {
+            Mode::Render { output, .. } => assert_eq!(output, PathBuf::from(&png), "{flag}"),
+            other => panic!("{flag}: {other:?}"),
+        }
+    }
+    let inv = cli::parse(&[joined("--check-config", &toml)]).expect("--check-config=");
+    assert!(matches!(inv.mode, Mode::CheckConfig(Some(f)) if f.as_os_str() == toml));
+    let e = cli::parse(&[joined("--layer", &toml)]).expect_err("--layer= takes a name");
+    assert!(e.0.contains("is not valid text"), "{}", e.0);
+}
+
 /// A second file after `--check-config`'s (`--check-config *.toml`) is
 /// refused saying that it checks one: it was "unknown argument `b.toml`".
 #[test]
