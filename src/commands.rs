@@ -11,7 +11,9 @@ use crate::render::{Frame, Size, render_full_at};
 use crate::settings::{Settings, load, paths};
 use crate::terrain::heightmap;
 
-/// Exit code for a mistake in what the user typed or pointed us at.
+/// Exit code for a mistake in what the user typed: a flag, a value, flags
+/// that conflict, said before any work. A file that cannot be read or
+/// written, a data set that is broken, too little memory: 1.
 pub const EXIT_USAGE: u8 = 2;
 
 /// The mountain to show: a data set from `--open` (its notes said on

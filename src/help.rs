@@ -67,6 +67,9 @@ xscreensaver's options (the slide show's modes; --settings takes -display):
   -display NAME      the X display instead of $DISPLAY
   -install, -visual V   accepted; a true-colour framebuffer needs neither
 
+Exit status: 0 done; 1 the work failed (a file that cannot be read or written,
+a broken data set, no display); 2 a mistake in what was typed, said before any work.
+
 Windows flags take / or -, any case: /s -S /p:1234 /c:1234.
 xscreensaver flags take one or two dashes: -root --root -window-id --window-id;
 -root with -window-id (either order) draws into the window, as the settings

@@ -79,7 +79,13 @@ fn main() -> ExitCode {
         Ok(l) => l,
         Err(p) => {
             console::error(&p.to_string());
-            return ExitCode::from(EXIT_USAGE);
+            // A preferences file that cannot be read fails the work, as a
+            // data set or an output that cannot be does; a bad `--set` is
+            // a mistake in what was typed.
+            return match p.is_unreadable() {
+                true => ExitCode::FAILURE,
+                false => ExitCode::from(EXIT_USAGE),
+            };
         }
     };
     let open = inv.open.as_deref();

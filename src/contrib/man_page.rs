@@ -141,6 +141,19 @@ The X display, unless \-display is given.
 .TP
 .B WAYLAND_DISPLAY
 The Wayland compositor (/s, \-\-window and \-\-layer use it before DISPLAY).
+.SH EXIT STATUS
+.TP
+.B 0
+Done.
+.TP
+.B 1
+The work failed: a file that cannot be read or written, a data set that
+is broken, no display, too little memory; \-\-check\-config: the file has
+problems.
+.TP
+.B 2
+A mistake in what was typed (a flag, a value, flags that conflict),
+said before any work.
 .SH SEE ALSO
 .BR xscreensaver (1),
 .BR xscreensaver\-settings (1)

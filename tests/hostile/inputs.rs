@@ -101,7 +101,7 @@ fn a_device_or_a_huge_file_is_not_read_into_memory() {
 /// stderr and in mountains.log, and `/dev/null` means the defaults with no
 /// word. Without a display each mode then gets as far as looking for one
 /// (exit 1, "no display" or "no X display"), past the preferences (which
-/// refused: exit 2).
+/// `render` refuses).
 #[test]
 fn the_saver_starts_on_its_defaults_when_its_preferences_cannot_be_read() {
     let dir = scratch("saver-unreadable");
