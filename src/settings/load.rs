@@ -391,7 +391,15 @@ pub fn apply_file(settings: &mut Settings, path: &Path) -> Vec<Problem> {
     let source = path.display().to_string();
     match crate::fsutil::read_regular(path, crate::fsutil::MAX_PREFERENCES_BYTES) {
         Ok(bytes) => match super::text::decode(bytes) {
-            Ok((text, _)) => apply_toml(settings, &text, &source),
+            Ok((text, _)) => {
+                let before = settings.heightmaps_dir.clone();
+                let problems = apply_toml(settings, &text, &source);
+                if settings.heightmaps_dir != before {
+                    let written = settings.heightmaps_dir.take().unwrap_or_default();
+                    settings.heightmaps_dir = Some(super::paths::beside(&written, path));
+                }
+                problems
+            }
             Err(e) => vec![Problem {
                 source,
                 position: Some((e.line, e.column)),

@@ -750,6 +750,31 @@ fn check_config_names_the_line_of_a_heightmaps_folder_that_is_not_there() {
     }
 }
 
+/// A relative `heightmaps_dir` in a preferences file is the file's
+/// neighbour, from whatever folder the program starts: it was looked for
+/// in the current folder, so `--check-config` run elsewhere, and the
+/// saver started by xscreensaver in the home folder, looked elsewhere.
+#[test]
+fn a_relative_heightmaps_folder_is_beside_its_preferences_file() {
+    let dir = scratch("relative-maps");
+    let (home, elsewhere) = (dir.join("prefs"), dir.join("elsewhere"));
+    std::fs::create_dir_all(home.join("maps")).unwrap();
+    std::fs::create_dir_all(elsewhere.join("other")).unwrap();
+    let file = home.join("p.toml");
+    for (written, warned) in [("maps", false), ("./maps", false), ("other", true)] {
+        std::fs::write(&file, format!("heightmaps_dir = {written:?}\n")).unwrap();
+        let o = command(&["--check-config", &arg(&file)])
+            .current_dir(&elsewhere)
+            .output()
+            .expect("run mountains");
+        assert_eq!(o.status.code(), Some(0), "{written}: {}", stderr(&o));
+        let err = stderr(&o);
+        assert_eq!(err.contains("no such folder"), warned, "{written}: {err}");
+        let meant = format!("no such folder ({})", arg(&home.join(written)));
+        assert!(!warned || err.contains(&meant), "{written}: {err}");
+    }
+}
+
 /// A `heightmaps_dir` typed for the run (`--heightmaps-dir DIR`, `--set
 /// heightmaps_dir=DIR`) that names no folder is warned of beside
 /// `--check-config` as the file's is, named as typed: it was "ok" alone.
