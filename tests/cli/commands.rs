@@ -20,10 +20,17 @@ fn command(args: &[&str]) -> Command {
     command
 }
 
+/// A folder of this test process's own, emptied the first time one is
+/// asked for: a process number comes round again, and what an earlier
+/// run's test left (`no-maps`, made once its warning was seen) turned a
+/// later run's warning off, one run in a dozen.
 fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir()
-        .join(format!("mountains-commands-{}", std::process::id()))
-        .join(name);
+    static EMPTIED: std::sync::Once = std::sync::Once::new();
+    let root = std::env::temp_dir().join(format!("mountains-commands-{}", std::process::id()));
+    EMPTIED.call_once(|| {
+        let _ = std::fs::remove_dir_all(&root);
+    });
+    let dir = root.join(name);
     std::fs::create_dir_all(&dir).unwrap();
     dir
 }

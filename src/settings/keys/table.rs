@@ -352,6 +352,6 @@ rows! {
         Kind::Path,
         Nothing,
         Value::Str(String::new()),
-        "folder of heightmaps (PNG or raw) mixed into the slide show"
+        "folder of heightmaps (PNG or raw) mixed into the slide show (a relative one: beside the preferences file)"
     ),
 }
