@@ -848,7 +848,15 @@ impl Parser<'_> {
                 self.inv.xss.delay_us = Some(us);
             }
             "-display" | "--display" => {
-                self.inv.xss.display = Some(self.inline_or_next(flag.inline.clone(), name)?);
+                let display = self.inline_or_next(flag.inline.clone(), name)?;
+                // An empty name emptied DISPLAY: the run was then said to
+                // have no display set at all, or went to Wayland.
+                if display.trim().is_empty() {
+                    return Err(UsageError(format!(
+                        "{name}: an empty value; give an X display, e.g. -display :0"
+                    )));
+                }
+                self.inv.xss.display = Some(display);
             }
             // xscreensaver's colormap and visual choices: a true-colour
             // framebuffer needs neither.

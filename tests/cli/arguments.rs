@@ -568,6 +568,17 @@ fn xscreensavers_common_options_mean_what_they_mean_there() {
     assert_eq!((inv.mode, inv.xss.delay_us), (Mode::XRoot, Some(300)));
     let e = parse(&["--fps=false", "--root"]).unwrap_err().0;
     assert!(e.contains("--fps takes no value"), "{e}");
+    // An empty display emptied DISPLAY: the run was said to have none set,
+    // or went to Wayland though `-display` means X11.
+    for typed in [&["-display", ""][..], &["--display="], &["-display", " "]] {
+        let e = parse(&[typed, &["/s"]].concat()).unwrap_err().0;
+        assert!(
+            e.contains("an empty value; give an X display"),
+            "{typed:?}: {e}"
+        );
+    }
+    let e = parse(&["--settings", "-display", ""]).unwrap_err().0;
+    assert!(e.starts_with("-display: an empty value"), "{e}");
     // A mode's flag takes no value either (`-root=1` dropped its `1`).
     for (typed, said) in [
         ("-root=1", "--root"),
