@@ -81,6 +81,11 @@ impl App {
 
     /// [`App::start`] on `display`.
     fn start_on(display: &str, config: &Path, home: &Path, scale: u32) -> App {
+        App::start_with(display, config, home, scale, &[])
+    }
+
+    /// [`App::start_on`] with `more` arguments after the file's.
+    fn start_with(display: &str, config: &Path, home: &Path, scale: u32, more: &[&str]) -> App {
         let stderr_path = home.join("stderr.txt");
         let stderr = std::fs::File::create(&stderr_path).unwrap();
         let mut command = Command::new(env!("CARGO_BIN_EXE_mountains"));
@@ -88,6 +93,7 @@ impl App {
             .arg("--settings")
             .arg("--config")
             .arg(config)
+            .args(more)
             .env("DISPLAY", display)
             .env("HOME", home)
             .env("WINIT_X11_SCALE_FACTOR", scale.to_string())
@@ -331,6 +337,24 @@ fn display_the_settings_open_on_the_x_display_named_beside_a_compositor() {
     let status = app.wait_exit();
     assert!(status.success(), "{status}: {}", app.stderr());
     assert_eq!(std::fs::read(&config).unwrap(), COMMENTED.as_bytes());
+}
+
+/// A key `--set` beside `--settings` is a change not yet saved: OK writes
+/// it (it was shown as the file's value, unstarred, and OK wrote nothing).
+#[test]
+fn display_a_key_set_on_the_command_line_is_saved_by_ok() {
+    let Some(x) = start_display() else { return };
+    let home = scratch("set-saved");
+    let config = home.join("mountains.toml");
+    std::fs::write(&config, COMMENTED).unwrap();
+    let mut app = App::start_with(x.display(), &config, &home, 1, &["--set", "cragginess=50"]);
+    let window = app.window(&x);
+    wait_drawn(x.display(), window);
+    press(&x, window, &["Return"]);
+    let status = app.wait_exit();
+    assert!(status.success(), "{status}: {}", app.stderr());
+    let saved = std::fs::read_to_string(&config).unwrap();
+    assert_eq!(saved, COMMENTED.replace("= 40 ", "= 50 "));
 }
 
 #[test]
