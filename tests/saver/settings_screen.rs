@@ -81,11 +81,18 @@ impl App {
 
     /// [`App::start`] on `display`.
     fn start_on(display: &str, config: &Path, home: &Path, scale: u32) -> App {
-        App::start_with(display, config, home, scale, &[])
+        App::start_with(display, config, home, scale, &[], &[])
     }
 
-    /// [`App::start_on`] with `more` arguments after the file's.
-    fn start_with(display: &str, config: &Path, home: &Path, scale: u32, more: &[&str]) -> App {
+    /// [`App::start_on`] with `more` arguments after the file's, and `env`.
+    fn start_with(
+        display: &str,
+        config: &Path,
+        home: &Path,
+        scale: u32,
+        more: &[&str],
+        env: &[(&str, &str)],
+    ) -> App {
         let stderr_path = home.join("stderr.txt");
         let stderr = std::fs::File::create(&stderr_path).unwrap();
         let mut command = Command::new(env!("CARGO_BIN_EXE_mountains"));
@@ -94,6 +101,7 @@ impl App {
             .arg("--config")
             .arg(config)
             .args(more)
+            .envs(env.iter().copied())
             .env("DISPLAY", display)
             .env("HOME", home)
             .env("WINIT_X11_SCALE_FACTOR", scale.to_string())
@@ -347,7 +355,8 @@ fn display_a_key_set_on_the_command_line_is_saved_by_ok() {
     let home = scratch("set-saved");
     let config = home.join("mountains.toml");
     std::fs::write(&config, COMMENTED).unwrap();
-    let mut app = App::start_with(x.display(), &config, &home, 1, &["--set", "cragginess=50"]);
+    let set = ["--set", "cragginess=50"];
+    let mut app = App::start_with(x.display(), &config, &home, 1, &set, &[]);
     let window = app.window(&x);
     wait_drawn(x.display(), window);
     press(&x, window, &["Return"]);
@@ -355,6 +364,46 @@ fn display_a_key_set_on_the_command_line_is_saved_by_ok() {
     assert!(status.success(), "{status}: {}", app.stderr());
     let saved = std::fs::read_to_string(&config).unwrap();
     assert_eq!(saved, COMMENTED.replace("= 40 ", "= 50 "));
+}
+
+/// Edit file with `$VISUAL` set but empty runs `$EDITOR`: an empty
+/// `$VISUAL` counted as no editor and hid `$EDITOR` (xdg-open ran, or
+/// "Cannot start the editor ``" where it is not installed).
+#[test]
+fn display_edit_file_runs_editor_when_visual_is_empty() {
+    let Some(x) = start_display() else { return };
+    let home = scratch("empty-visual");
+    let config = home.join("mountains.toml");
+    std::fs::write(&config, COMMENTED).unwrap();
+    let opened = home.join("opened");
+    let script = home.join("editor.sh");
+    std::fs::write(
+        &script,
+        format!("printf '%s' \"$1\" > '{}'\n", opened.display()),
+    )
+    .unwrap();
+    let editor = format!("sh '{}'", script.display());
+    let env = [("VISUAL", ""), ("EDITOR", editor.as_str())];
+    let mut app = App::start_with(x.display(), &config, &home, 1, &[], &env);
+    let window = app.window(&x);
+    wait_drawn(x.display(), window);
+    // Back from the first row: Cancel, OK, Edit file.
+    press(
+        &x,
+        window,
+        &["shift+Tab", "shift+Tab", "shift+Tab", "Return"],
+    );
+    for _ in 0..MAX_POLLS {
+        if opened.exists() {
+            break;
+        }
+        sleep(POLL);
+    }
+    press(&x, window, &["Escape"]);
+    let status = app.wait_exit();
+    assert!(status.success(), "{status}: {}", app.stderr());
+    let said = std::fs::read_to_string(&opened).expect("$EDITOR was never run");
+    assert_eq!(Path::new(&said), config);
 }
 
 #[test]
