@@ -296,6 +296,7 @@ impl Parser<'_> {
     /// they are a slip, and they were passed over in silence. The settings
     /// screen takes `-display`, the X display its window opens on.
     fn nothing_for_xscreensaver(&self) -> Result<(), UsageError> {
+        self.no_x_display_for_layer()?;
         let Some(why) = no_slide_show(&self.inv.mode) else {
             return Ok(());
         };
@@ -304,6 +305,20 @@ impl Parser<'_> {
         match self.shared.iter().find(|(name, _)| !taken(name)) {
             Some((_, typed)) => Err(UsageError(format!(
                 "{typed}: xscreensaver's option does nothing here: {why}"
+            ))),
+            None => Ok(()),
+        }
+    }
+
+    /// `-display` beside `--layer`, which draws on Wayland alone: the X
+    /// display it names was passed over in silence.
+    fn no_x_display_for_layer(&self) -> Result<(), UsageError> {
+        if !matches!(self.inv.mode, Mode::Layer(_)) {
+            return Ok(());
+        }
+        match self.shared.iter().find(|(name, _)| name == "display") {
+            Some((_, typed)) => Err(UsageError(format!(
+                "{typed}: --layer draws on Wayland, never on an X display"
             ))),
             None => Ok(()),
         }

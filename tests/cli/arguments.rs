@@ -669,6 +669,21 @@ fn xscreensavers_options_are_refused_where_no_slide_show_is_drawn() {
         let args = [saver, &all[..]].concat();
         parse(&args).unwrap_or_else(|e| panic!("{args:?}: {e}"));
     }
+    // `--layer` draws on Wayland alone: an X display beside it was taken
+    // in silence; its other options pace and mark its slide show.
+    let e = parse(&["--layer", "background", "-display", ":1"])
+        .unwrap_err()
+        .0;
+    assert_eq!(
+        e,
+        "-display :1: --layer draws on Wayland, never on an X display"
+    );
+    let e = parse(&["--display=:1", "--layer=top"]).unwrap_err().0;
+    assert!(
+        e.starts_with("--display=:1: --layer draws on Wayland"),
+        "{e}"
+    );
+    parse(&["--layer", "top", "-fps", "-delay", "9"]).unwrap_or_else(|e| panic!("{e}"));
     // `--help` and `--version` are answered, whatever else is typed.
     assert_eq!(mode(&["-fps", "--help"]), Mode::Help);
 }
