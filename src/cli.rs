@@ -297,6 +297,7 @@ impl Parser<'_> {
     /// they are a slip, and they were passed over in silence. The settings
     /// screen takes `-display`, the X display its window opens on.
     fn nothing_for_xscreensaver(&self) -> Result<(), UsageError> {
+        self.no_x_display_for_layer()?;
         let Some(why) = no_slide_show(&self.inv.mode) else {
             return Ok(());
         };
@@ -305,6 +306,20 @@ impl Parser<'_> {
         match self.shared.iter().find(|(name, _)| !taken(name)) {
             Some((_, typed)) => Err(UsageError(format!(
                 "{typed}: xscreensaver's option does nothing here: {why}"
+            ))),
+            None => Ok(()),
+        }
+    }
+
+    /// `-display` beside `--layer`, which draws on Wayland alone: the X
+    /// display it names was passed over in silence.
+    fn no_x_display_for_layer(&self) -> Result<(), UsageError> {
+        if !matches!(self.inv.mode, Mode::Layer(_)) {
+            return Ok(());
+        }
+        match self.shared.iter().find(|(name, _)| name == "display") {
+            Some((_, typed)) => Err(UsageError(format!(
+                "{typed}: --layer draws on Wayland, never on an X display"
             ))),
             None => Ok(()),
         }
@@ -868,7 +883,15 @@ impl Parser<'_> {
                 self.inv.xss.delay_us = Some(us);
             }
             "-display" | "--display" => {
-                self.inv.xss.display = Some(self.inline_or_next(flag.inline.clone(), name)?);
+                let display = self.inline_or_next(flag.inline.clone(), name)?;
+                // An empty name emptied DISPLAY: the run was then said to
+                // have no display set at all, or went to Wayland.
+                if display.trim().is_empty() {
+                    return Err(UsageError(format!(
+                        "{name}: an empty value; give an X display, e.g. -display :0"
+                    )));
+                }
+                self.inv.xss.display = Some(display);
             }
             // xscreensaver's colormap and visual choices: a true-colour
             // framebuffer needs neither.

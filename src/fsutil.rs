@@ -276,14 +276,18 @@ fn replace_file(
     let tmp = temporary(path)?;
     let _pending = partial::Pending::new(&tmp);
     let result = (|| {
-        let mut out = io::BufWriter::new(File::create(&tmp)?);
-        write(&mut out)?;
-        let file = out.into_inner().map_err(|e| e.into_error())?;
         // The file replaced keeps its owner's leave to read it: a private
         // (0600) preferences file, which may hold where its owner lives,
-        // came back readable by all from the new file's defaults.
-        if let Ok(old) = std::fs::metadata(path) {
-            file.set_permissions(old.permissions())?;
+        // came back readable by all from the new file's defaults. The new
+        // text is as private while it is written.
+        let old = std::fs::metadata(path).ok().map(|m| m.permissions());
+        let created = crate::platform::os::create_like(&tmp, old.as_ref())?;
+        let mut out = io::BufWriter::new(created);
+        write(&mut out)?;
+        let file = out.into_inner().map_err(|e| e.into_error())?;
+        // The umask may have narrowed the mode the file was made with.
+        if let Some(old) = old {
+            file.set_permissions(old)?;
         }
         file.sync_all()?;
         if !still_wanted()? {

@@ -1,5 +1,6 @@
 //! `mountains.6`, the man page every xscreensaver hack has, in the plain
-//! man(7) macros: the modes, xscreensaver's common options and every key.
+//! man(7) macros: the modes, the options, xscreensaver's common options and
+//! every key.
 
 use std::fmt::Write;
 
@@ -81,6 +82,16 @@ xscreensaver's settings dialog runs its preview.
 .B \-\-window
 A normal resizable window (the default outside Windows).
 .TP
+.B /s
+Full screen, a mountain on every monitor (\fBmonitors = "span"\fP: one
+landscape across them); any key, click or mouse movement ends it. What an
+idle daemon starts on Wayland (swayidle, hypridle); a second \fB/s\fP on the
+same display ends at once.
+.TP
+.B /p [\fIhwnd\fP]
+The preview inside the window \fIhwnd\fP (on X11 a window id, as for
+\-window\-id), or a small window.
+.TP
 .B \-\-layer \fIlayer\fP
 On Wayland, a wlr\-layer\-shell surface covering every output, drawn at the
 output's real pixels: \fIlayer\fP is background, bottom, top or overlay.
@@ -92,17 +103,44 @@ Outputs that come and go are followed; it ends on SIGTERM or SIGINT, or
 when the compositor closes its last surface, not on input. A compositor
 without zwlr_layer_shell_v1 (GNOME) is refused with a message.
 .TP
-.B \-\-settings
-The settings screen.
+.B \-\-settings, /c[:\fIhwnd\fP]
+The settings screen, a live preview beside every preference; OK saves them
+into the preferences file, keeping its comments and unknown keys.
 .TP
-.B render \-o \fIout.png\fP
-One complete mountain to a PNG, without a display.
+.B render \-o \fIout.png\fP [\-\-size \fIW\fPx\fIH\fP]
+One complete mountain to a PNG (\fIout.jpg\fP: a JPEG), without a display;
+prints its seed.
+.TP
+.B heightmap \-o \fIout.png\fP
+Generate a data set and save it as a 16\-bit grayscale PNG heightmap
+(\fIout.r16\fP: raw 16\-bit little\-endian samples).
 .TP
 .B \-\-check\-config [\fIfile\fP]
-Check a preferences file.
+Check a preferences file: exit 0 if good, 1 if not, 2 for a bad flag or \-\-set.
+.TP
+.B \-\-xscreensaver\-xml, \-\-man\-page
+Print xscreensaver's settings file for this hack, or this page.
+.TP
+.B \-\-help
+Every mode, flag and preference key with its range.
+.SH OPTIONS
+Every mode but those that only print (\fB\-\-xscreensaver\-xml\fP,
+\fB\-\-man\-page\fP) takes these.
+.TP
+.B \-\-config \fIfile\fP
+The preferences file instead of the usual one (see FILES).
+.TP
+.B \-\-set \fIkey\fP=\fIvalue\fP
+One preference for this run (repeatable); see PREFERENCE KEYS.
+.TP
+.B \-\-open \fIfile\fP
+Show a saved data set (the modes that show a mountain): a grayscale PNG
+heightmap, or raw 16\-bit samples (\fI.r16\fP, \fI.raw\fP); \fB\-\fP reads
+standard input.
 .SH COMMON OPTIONS
 xscreensaver's options, taken by the slide show's modes (\fB\-\-settings\fP takes
-\fB\-display\fP too); beside another mode they are refused.
+\fB\-display\fP too, \fB\-\-layer\fP all but \fB\-display\fP); beside another
+mode they are refused.
 .TP
 .B \-fps
 Draw the frame rate and load in a corner.

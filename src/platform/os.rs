@@ -3,7 +3,7 @@
 //! program's defaults. Signals have their own file (`signals`).
 
 use std::ffi::{OsStr, OsString};
-use std::fs::FileType;
+use std::fs::{File, FileType};
 use std::path::Path;
 
 /// Windows starts the program without a console (it is built for the GUI
@@ -94,6 +94,24 @@ pub fn special_file_kind(t: &FileType) -> Option<&'static str> {
     }
     let _ = t;
     None
+}
+
+/// Creates (or empties) the file at `path` for writing, readable from
+/// the start by no more than `like` (the file it is to replace) is, where
+/// files have such permissions (the Unixes): a temporary file made with
+/// the umask's defaults could be opened by anyone until it was narrowed,
+/// and read on through that open file. Without `like`, the defaults.
+pub fn create_like(path: &Path, like: Option<&std::fs::Permissions>) -> std::io::Result<File> {
+    let mut options = std::fs::OpenOptions::new();
+    options.write(true).create(true).truncate(true);
+    #[cfg(unix)]
+    if let Some(like) = like {
+        use std::os::unix::fs::{OpenOptionsExt, PermissionsExt};
+        options.mode(like.mode() & 0o777);
+    }
+    #[cfg(not(unix))]
+    let _ = like;
+    options.open(path)
 }
 
 /// glibc: every thread allocates from one pool (see

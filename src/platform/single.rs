@@ -64,8 +64,11 @@ fn lock_dir() -> PathBuf {
 pub fn claim_at(path: &Path) -> Result<Option<Claim>, String> {
     use std::os::unix::fs::{DirBuilderExt, OpenOptionsExt};
     use std::os::unix::io::AsRawFd;
-    if let Some(dir) = path.parent().filter(|d| !d.exists()) {
-        let _ = std::fs::DirBuilder::new().mode(0o700).create(dir);
+    if let Some(dir) = path.parent() {
+        if !dir.exists() {
+            let _ = std::fs::DirBuilder::new().mode(0o700).create(dir);
+        }
+        this_users_alone(dir)?;
     }
     let file = std::fs::OpenOptions::new()
         .create(true)
@@ -84,6 +87,28 @@ pub fn claim_at(path: &Path) -> Result<Option<Claim>, String> {
         return Ok(None);
     }
     Err(format!("cannot lock {}: {error}", path.display()))
+}
+
+/// Refuses a lock folder another user can write in (one made first in
+/// the temporary folder under our name, or a world-writable
+/// `$XDG_RUNTIME_DIR`): whoever held a lock file there kept every `/s` of
+/// this user from starting, the screen left unprotected.
+fn this_users_alone(dir: &Path) -> Result<(), String> {
+    use std::os::unix::fs::MetadataExt;
+    let meta =
+        std::fs::symlink_metadata(dir).map_err(|e| format!("cannot use {}: {e}", dir.display()))?;
+    // SAFETY: getuid cannot fail.
+    let uid = unsafe { libc::getuid() };
+    let shared = meta.mode() & 0o022 != 0;
+    if !meta.is_dir() || meta.uid() != uid || shared {
+        return Err(format!(
+            "{} is not a folder of this user's alone (owner {}, mode {:o}): another could hold the lock",
+            dir.display(),
+            meta.uid(),
+            meta.mode() & 0o7777
+        ));
+    }
+    Ok(())
 }
 
 #[cfg(test)]
@@ -117,6 +142,21 @@ mod tests {
         assert!(claim_at(&other).unwrap().is_some(), "another display");
         drop(first);
         assert!(claim_at(&path).unwrap().is_some(), "free again");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn a_lock_folder_others_can_write_in_is_refused() {
+        use std::os::unix::fs::PermissionsExt;
+        let dir = std::env::temp_dir().join(format!("mountains-shared-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o777)).unwrap();
+        let path = dir.join(lock_name(Backend::X11, ":0"));
+        let e = claim_at(&path).expect_err("another user could hold the lock");
+        assert!(e.contains("not a folder of this user's alone"), "{e}");
+        assert!(e.contains("mode 777"), "{e}");
+        std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o700)).unwrap();
+        assert!(claim_at(&path).unwrap().is_some(), "private again");
         let _ = std::fs::remove_dir_all(&dir);
     }
 }

@@ -432,6 +432,9 @@ pub struct Loaded {
     /// What was wrong in that file (its good keys were still used, unless
     /// a problem drops the whole file: [`Problem::drops_the_file`]).
     pub problems: Vec<Problem>,
+    /// The defaults and the file alone, before any `--set`: what the
+    /// settings screen takes for the file's values.
+    pub from_file: Settings,
 }
 
 /// What an explicit `--config` that cannot be read means to a mode. The
@@ -490,6 +493,7 @@ pub fn resolve(
             return Err(problems.remove(0));
         }
     }
+    let from_file = settings.clone();
     for (key, value) in sets {
         apply_set(&mut settings, key, value)?;
     }
@@ -497,5 +501,6 @@ pub fn resolve(
         settings,
         file,
         problems,
+        from_file,
     })
 }

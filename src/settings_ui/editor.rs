@@ -37,11 +37,12 @@ pub fn command(editor: Option<&str>, path: &Path) -> Command {
     }
 }
 
-/// The editor the user chose: `$VISUAL`, else `$EDITOR`.
+/// The editor the user chose: `$VISUAL`, else `$EDITOR`. One set but
+/// empty (`VISUAL= mountains --settings`) counts as unset, as [`command`]
+/// counts it: an empty `$VISUAL` hid `$EDITOR`, and xdg-open ran.
 fn chosen_editor() -> Option<String> {
-    std::env::var("VISUAL")
-        .or_else(|_| std::env::var("EDITOR"))
-        .ok()
+    let set = |name| std::env::var(name).ok().filter(|v| !v.trim().is_empty());
+    set("VISUAL").or_else(|| set("EDITOR"))
 }
 
 /// An editor started by Edit file; what became of it, once it has ended

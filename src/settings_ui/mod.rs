@@ -50,10 +50,12 @@ pub fn run(
         crate::console::error("no home directory: cannot find the preferences file");
         return ExitCode::FAILURE;
     };
-    let settings = loaded.settings.clone();
+    // `--set` shows over the file's values as changes not yet saved.
+    let (from_file, shown) = (loaded.from_file.clone(), loaded.settings.clone());
     let problems = loaded.problems.clone();
-    let make: window::MakeScreen =
-        Box::new(move |size, scale| screen::Screen::new(settings, &problems, path, size, scale));
+    let make: window::MakeScreen = Box::new(move |size, scale| {
+        screen::Screen::with_unsaved(from_file, shown, &problems, path, size, scale)
+    });
     let owner = parent.filter(|&h| window_exists(h));
     let _modal = ModalOwner::disable(owner);
     match window::run(make, owner, backend) {

@@ -99,6 +99,15 @@ impl Model {
         m
     }
 
+    /// A screen of the file's `settings` showing `shown` over them: a key
+    /// they differ in counts as changed here (`--settings --set`), so OK
+    /// saves it and Cancel forgets it, as a key changed on the screen.
+    pub fn with_unsaved(settings: Settings, shown: Settings, problems: &[load::Problem]) -> Model {
+        let mut m = Model::new(settings, problems);
+        m.settings = shown;
+        m
+    }
+
     /// Shows freshly read settings (after the file was edited elsewhere).
     pub fn reload(&mut self, settings: Settings, problems: &[load::Problem]) {
         self.original = settings.clone();

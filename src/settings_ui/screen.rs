@@ -50,10 +50,29 @@ impl Screen {
         size: Size,
         scale: u32,
     ) -> Screen {
+        let model = Model::new(settings, problems);
+        Screen::of_model(model, config, size, scale)
+    }
+
+    /// A screen for the file's `settings` showing `shown` (`--set` on top of
+    /// them) as changed here: see [`Model::with_unsaved`].
+    pub fn with_unsaved(
+        settings: Settings,
+        shown: Settings,
+        problems: &[load::Problem],
+        config: PathBuf,
+        size: Size,
+        scale: u32,
+    ) -> Screen {
+        let model = Model::with_unsaved(settings, shown, problems);
+        Screen::of_model(model, config, size, scale)
+    }
+
+    fn of_model(model: Model, config: PathBuf, size: Size, scale: u32) -> Screen {
         let layout = Layout::new(size, scale);
         let frame = Frame::new(size.width.max(1), size.height.max(1)).unwrap_or_else(tiny_frame);
         let mut screen = Screen {
-            model: Model::new(settings, problems),
+            model,
             layout,
             frame,
             preview: Preview::new(),

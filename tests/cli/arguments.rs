@@ -604,6 +604,17 @@ fn xscreensavers_common_options_mean_what_they_mean_there() {
     assert_eq!((inv.mode, inv.xss.delay_us), (Mode::XRoot, Some(300)));
     let e = parse(&["--fps=false", "--root"]).unwrap_err().0;
     assert!(e.contains("--fps takes no value"), "{e}");
+    // An empty display emptied DISPLAY: the run was said to have none set,
+    // or went to Wayland though `-display` means X11.
+    for typed in [&["-display", ""][..], &["--display="], &["-display", " "]] {
+        let e = parse(&[typed, &["/s"]].concat()).unwrap_err().0;
+        assert!(
+            e.contains("an empty value; give an X display"),
+            "{typed:?}: {e}"
+        );
+    }
+    let e = parse(&["--settings", "-display", ""]).unwrap_err().0;
+    assert!(e.starts_with("-display: an empty value"), "{e}");
     // A mode's flag takes no value either (`-root=1` dropped its `1`).
     for (typed, said) in [
         ("-root=1", "--root"),
@@ -694,6 +705,21 @@ fn xscreensavers_options_are_refused_where_no_slide_show_is_drawn() {
         let args = [saver, &all[..]].concat();
         parse(&args).unwrap_or_else(|e| panic!("{args:?}: {e}"));
     }
+    // `--layer` draws on Wayland alone: an X display beside it was taken
+    // in silence; its other options pace and mark its slide show.
+    let e = parse(&["--layer", "background", "-display", ":1"])
+        .unwrap_err()
+        .0;
+    assert_eq!(
+        e,
+        "-display :1: --layer draws on Wayland, never on an X display"
+    );
+    let e = parse(&["--display=:1", "--layer=top"]).unwrap_err().0;
+    assert!(
+        e.starts_with("--display=:1: --layer draws on Wayland"),
+        "{e}"
+    );
+    parse(&["--layer", "top", "-fps", "-delay", "9"]).unwrap_or_else(|e| panic!("{e}"));
     // `--help` and `--version` are answered, whatever else is typed.
     assert_eq!(mode(&["-fps", "--help"]), Mode::Help);
 }

@@ -38,6 +38,55 @@ fn the_man_page_names_every_key_flag() {
     }
 }
 
+/// The names of the modes, subcommands and flags on a line of `--help`'s
+/// usage (after `mountains`) or a man page's `.B` line, without dashes:
+/// `/c[:HWND] | --settings` is `c` and `settings`, `render -o` is `render`
+/// and `o`.
+fn names(line: &str) -> Vec<String> {
+    let tokens: Vec<&str> = line
+        .split(|c: char| c.is_whitespace() || ",|[]".contains(c))
+        .filter(|t| !t.is_empty())
+        .collect();
+    let word = tokens
+        .first()
+        .filter(|t| t.chars().all(|c| c.is_ascii_lowercase()))
+        .map(|t| t.to_string());
+    let flags = tokens
+        .iter()
+        .filter(|t| t.starts_with(['-', '/']) && t.len() > 1)
+        .map(|t| {
+            t.trim_start_matches(['-', '/'])
+                .split(':')
+                .next()
+                .unwrap_or(t)
+                .to_string()
+        });
+    word.into_iter().chain(flags).collect()
+}
+
+/// The man page describes every mode and subcommand of `--help`'s usage
+/// and its options: it said nothing of `/s`, `/p`, `heightmap`, `--config`,
+/// `--set` or `--open` (named in its synopsis alone), nor of `--help`.
+#[test]
+fn the_man_page_describes_every_mode_and_option_of_the_usage() {
+    let man = contrib::man_page::man_page().replace("\\-", "-");
+    let described: std::collections::BTreeSet<String> = man
+        .lines()
+        .skip_while(|l| *l != ".SH MODES")
+        .take_while(|l| *l != ".SH PREFERENCE KEYS")
+        .filter_map(|l| l.strip_prefix(".B "))
+        .flat_map(names)
+        .collect();
+    let usage = mountains::help::USAGE.lines().map(str::trim_start);
+    let modes = usage.clone().filter_map(|l| l.strip_prefix("mountains "));
+    let modes = modes.map(|l| l.split("   ").next().unwrap_or(l));
+    let options = usage.filter(|l| l.starts_with("--"));
+    let wanted: Vec<String> = modes.chain(options).flat_map(names).collect();
+    assert!(wanted.len() > 15, "{wanted:?}");
+    let missing: Vec<_> = wanted.iter().filter(|n| !described.contains(*n)).collect();
+    assert!(missing.is_empty(), "the man page describes no {missing:?}");
+}
+
 /// xmllint's output; without xmllint the test fails (or skips if asked to:
 /// see common/tools.rs).
 fn xmllint(args: &[&str]) -> Option<std::process::Output> {

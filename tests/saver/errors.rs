@@ -148,6 +148,25 @@ fn display_a_window_id_that_does_not_exist_is_named() {
     );
 }
 
+/// `--root` on a stale `XSCREENSAVER_WINDOW` (left in a shell after the
+/// daemon's window went) names the variable: the id alone was named, and
+/// nobody had typed it.
+#[test]
+fn display_a_stale_xscreensaver_window_is_named_by_its_variable() {
+    let Some(x) = Xvfb::start(320, 240, &[]) else {
+        return;
+    };
+    let env = [("XSCREENSAVER_WINDOW", "0x3fffff0")];
+    let mut saver = Saver::start(&x, "stale-variable", &["--root"], &env);
+    let status = saver.wait(PATIENCE).expect("mountains should give up");
+    assert!(!status.success());
+    let stderr = saver.stderr();
+    assert!(
+        stderr.contains("XSCREENSAVER_WINDOW=\"0x3fffff0\": there is no X window 0x3fffff0"),
+        "{stderr}"
+    );
+}
+
 /// A window of a 30- or a 16-bit true-colour screen, as a daemon on such a
 /// screen gives --window-id (or --root), gets each pixel packed into its
 /// visual's masks (both were refused); an 8-bit window still is, in words

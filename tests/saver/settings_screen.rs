@@ -81,6 +81,18 @@ impl App {
 
     /// [`App::start`] on `display`.
     fn start_on(display: &str, config: &Path, home: &Path, scale: u32) -> App {
+        App::start_with(display, config, home, scale, &[], &[])
+    }
+
+    /// [`App::start_on`] with `more` arguments after the file's, and `env`.
+    fn start_with(
+        display: &str,
+        config: &Path,
+        home: &Path,
+        scale: u32,
+        more: &[&str],
+        env: &[(&str, &str)],
+    ) -> App {
         let stderr_path = home.join("stderr.txt");
         let stderr = std::fs::File::create(&stderr_path).unwrap();
         let mut command = Command::new(env!("CARGO_BIN_EXE_mountains"));
@@ -88,6 +100,8 @@ impl App {
             .arg("--settings")
             .arg("--config")
             .arg(config)
+            .args(more)
+            .envs(env.iter().copied())
             .env("DISPLAY", display)
             .env("HOME", home)
             .env("WINIT_X11_SCALE_FACTOR", scale.to_string())
@@ -331,6 +345,65 @@ fn display_the_settings_open_on_the_x_display_named_beside_a_compositor() {
     let status = app.wait_exit();
     assert!(status.success(), "{status}: {}", app.stderr());
     assert_eq!(std::fs::read(&config).unwrap(), COMMENTED.as_bytes());
+}
+
+/// A key `--set` beside `--settings` is a change not yet saved: OK writes
+/// it (it was shown as the file's value, unstarred, and OK wrote nothing).
+#[test]
+fn display_a_key_set_on_the_command_line_is_saved_by_ok() {
+    let Some(x) = start_display() else { return };
+    let home = scratch("set-saved");
+    let config = home.join("mountains.toml");
+    std::fs::write(&config, COMMENTED).unwrap();
+    let set = ["--set", "cragginess=50"];
+    let mut app = App::start_with(x.display(), &config, &home, 1, &set, &[]);
+    let window = app.window(&x);
+    wait_drawn(x.display(), window);
+    press(&x, window, &["Return"]);
+    let status = app.wait_exit();
+    assert!(status.success(), "{status}: {}", app.stderr());
+    let saved = std::fs::read_to_string(&config).unwrap();
+    assert_eq!(saved, COMMENTED.replace("= 40 ", "= 50 "));
+}
+
+/// Edit file with `$VISUAL` set but empty runs `$EDITOR`: an empty
+/// `$VISUAL` counted as no editor and hid `$EDITOR` (xdg-open ran, or
+/// "Cannot start the editor ``" where it is not installed).
+#[test]
+fn display_edit_file_runs_editor_when_visual_is_empty() {
+    let Some(x) = start_display() else { return };
+    let home = scratch("empty-visual");
+    let config = home.join("mountains.toml");
+    std::fs::write(&config, COMMENTED).unwrap();
+    let opened = home.join("opened");
+    let script = home.join("editor.sh");
+    std::fs::write(
+        &script,
+        format!("printf '%s' \"$1\" > '{}'\n", opened.display()),
+    )
+    .unwrap();
+    let editor = format!("sh '{}'", script.display());
+    let env = [("VISUAL", ""), ("EDITOR", editor.as_str())];
+    let mut app = App::start_with(x.display(), &config, &home, 1, &[], &env);
+    let window = app.window(&x);
+    wait_drawn(x.display(), window);
+    // Back from the first row: Cancel, OK, Edit file.
+    press(
+        &x,
+        window,
+        &["shift+Tab", "shift+Tab", "shift+Tab", "Return"],
+    );
+    for _ in 0..MAX_POLLS {
+        if opened.exists() {
+            break;
+        }
+        sleep(POLL);
+    }
+    press(&x, window, &["Escape"]);
+    let status = app.wait_exit();
+    assert!(status.success(), "{status}: {}", app.stderr());
+    let said = std::fs::read_to_string(&opened).expect("$EDITOR was never run");
+    assert_eq!(Path::new(&said), config);
 }
 
 #[test]

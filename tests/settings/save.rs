@@ -393,6 +393,35 @@ fn a_save_keeps_a_private_file_private() {
     assert_eq!(mode & 0o777, 0o600, "{mode:o}");
 }
 
+/// The new text of a private file is private while it is written: its
+/// temporary file was made readable by all (the umask's 0644) and made
+/// private only once written, so anyone could open it in between and
+/// read on through that open file.
+#[cfg(unix)]
+#[test]
+fn a_private_file_s_new_text_is_never_readable_by_others() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = scratch("private-tmp");
+    let file = dir.join("mountains.toml");
+    std::fs::write(&file, "latitude = 51.5\n").unwrap();
+    std::fs::set_permissions(&file, std::fs::Permissions::from_mode(0o600)).unwrap();
+    let mut seen = Vec::new();
+    mountains::fsutil::write_atomic_with(&file, |w| {
+        w.write_all(b"latitude = 48.2\n")?;
+        for entry in std::fs::read_dir(&dir)? {
+            let entry = entry?;
+            let mode = entry.metadata()?.permissions().mode() & 0o777;
+            seen.push((entry.file_name(), mode));
+        }
+        Ok(())
+    })
+    .unwrap();
+    let temporary: Vec<_> = seen.iter().filter(|(n, _)| n != "mountains.toml").collect();
+    assert_eq!(temporary.len(), 1, "{seen:?}");
+    assert_eq!(temporary[0].1, 0o600, "{seen:?}");
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), "latitude = 48.2\n");
+}
+
 fn key(name: &str) -> &'static mountains::settings::keys::Key {
     mountains::settings::keys::find(name).unwrap()
 }

@@ -72,15 +72,28 @@ pub fn parse_window_id(text: &str) -> Option<u32> {
     (id != 0).then_some(id)
 }
 
-/// The window `--root` draws on: `$XSCREENSAVER_WINDOW`, else the root window.
-fn root_target(conn: &RustConnection, screen: usize) -> u32 {
+/// The window `--root` draws on: `$XSCREENSAVER_WINDOW`, else the root
+/// window; with the variable as set when it named the window.
+fn root_target(conn: &RustConnection, screen: usize) -> (u32, Option<String>) {
     let named = std::env::var("XSCREENSAVER_WINDOW").ok();
     match named_window(named.as_deref()) {
-        Ok(Some(id)) => return id,
+        Ok(Some(id)) => return (id, named.map(|v| format!("XSCREENSAVER_WINDOW={v:?}"))),
         Ok(None) => {}
         Err(why) => crate::log::warn(&why),
     }
-    conn.setup().roots[screen].root
+    (conn.setup().roots[screen].root, None)
+}
+
+/// `error`, said with the variable that named its window (`by`): a stale
+/// `XSCREENSAVER_WINDOW` left in a shell was named by its id alone, which
+/// nobody had typed.
+fn named_by(error: SaverError, by: Option<&str>) -> SaverError {
+    match (error, by) {
+        (SaverError::NoSuchWindow(id), Some(by)) => {
+            SaverError::Other(format!("{by}: {}", SaverError::NoSuchWindow(id)))
+        }
+        (error, _) => error,
+    }
 }
 
 /// The window `$XSCREENSAVER_WINDOW` (`var`) names: `None` unset or
@@ -104,8 +117,11 @@ pub fn run(
 ) -> Result<(), SaverError> {
     let (conn, screen) = RustConnection::connect(None).map_err(super::connect::connect_failed)?;
     let conn = Arc::new(conn);
-    let xid = window.unwrap_or_else(|| root_target(&conn, screen));
-    let size = watch_window(&conn, xid)?;
+    let (xid, by) = match window {
+        Some(xid) => (xid, None),
+        None => root_target(&conn, screen),
+    };
+    let size = watch_window(&conn, xid).map_err(|e| named_by(e, by.as_deref()))?;
     if let Some(why) = crate::platform::x11::visual::window_refusal(&*conn, screen, xid) {
         return Err(SaverError::Unsupported(why));
     }
