@@ -46,7 +46,11 @@ pub fn can_dlopen(name: &str) -> bool {
 /// libraries can be loaded.
 #[cfg(any(x11_platform, wayland_platform))]
 pub fn check_display(x_named: bool) -> Result<Backend, SaverError> {
-    let chosen = backend::from_env(x_named).ok_or(SaverError::NoWindowSystem)?;
+    let (chosen, passed_over) = backend::from_env(x_named);
+    if let Some(why) = passed_over {
+        crate::log::warn(&format!("warning: no Wayland compositor: {why}"));
+    }
+    let chosen = chosen.ok_or(SaverError::NoWindowSystem)?;
     match chosen {
         Backend::X11 => check_libraries("X", X11_LIBRARIES)?,
         Backend::Wayland => check_libraries("Wayland", WAYLAND_LIBRARIES)?,

@@ -43,6 +43,37 @@ fn without_display_the_saver_and_the_settings_say_set_display() {
     }
 }
 
+/// A `WAYLAND_DISPLAY` where no compositor listens (its socket left behind
+/// by a session that ended) beside a working `DISPLAY`: the saver draws
+/// on the X display and says why. It said "no Wayland compositor" and
+/// ended, the screen left unprotected, where winit itself would have
+/// taken the X display.
+#[test]
+fn display_a_stale_wayland_display_gives_way_to_the_x_display() {
+    let Some(x) = Xvfb::start(1280, 800, &[]) else {
+        return;
+    };
+    let runtime = xvfb::TempDir::new("stale-wayland-runtime");
+    let left = runtime.0.join("wayland-7");
+    drop(std::os::unix::net::UnixListener::bind(&left).expect("a socket"));
+    let env = [
+        ("WAYLAND_DISPLAY", "wayland-7"),
+        ("XDG_RUNTIME_DIR", xvfb::arg(&runtime.0)),
+    ];
+    let mut saver = Saver::start(&x, "stale-wayland", &["--window"], &env);
+    let window = xvfb::wait_for_window(&x, &mut saver, 960, 600);
+    xvfb::poll(&mut saver, "a mountain on the X display", || {
+        xvfb::looks_drawn(&x.grab(window, 960, 600))
+    });
+    let said = format!(
+        "no Wayland compositor: WAYLAND_DISPLAY=\"wayland-7\": nothing listens at {}; \
+         using the X display {}",
+        left.display(),
+        x.display()
+    );
+    assert!(saver.stderr().contains(&said), "{}", saver.stderr());
+}
+
 /// A DISPLAY naming no server, an unknown host or nothing a display name
 /// can be is said with its value, in every X mode the settings screen
 /// included, never with a place in a library's source (the settings said
