@@ -290,3 +290,74 @@ pub(crate) fn vista_view(field: &Heightfield, frame: Size) -> View {
         frame,
     )
 }
+
+/// How much of the streaks on the near water of slide `seed` (defaults,
+/// a 1920x1080 frame) are thin lines across the frame rather than bands:
+/// down the bottom fifth, the mean luminance of each row's water, its part
+/// that changes within a few rows (the row less the mean of the 7 round it)
+/// against its part that changes over tens of rows (that mean less the mean
+/// of 31 of those), as root mean squares.
+fn thin_lines_on_near_water(seed: u64) -> f64 {
+    let size = Size::new(1920, 1080);
+    let prefs = Settings {
+        seed: Some(seed),
+        ..Settings::default()
+    };
+    let s = mountains::render::detail::for_frame(&prefs, size);
+    let field = mountains::terrain::generate(&s, seed);
+    let (w, h) = (size.width, size.height);
+    let frame = full(&field, &s, w, h);
+    let mut classes = Frame::new(w, h).unwrap();
+    render_classes(&field, &s, &mut classes).expect("a class picture");
+    let luma = |c: u32| {
+        let [r, g, b] = rgb(c);
+        0.299 * r as f64 + 0.587 * g as f64 + 0.114 * b as f64
+    };
+    let rows: Vec<f64> = (h * 4 / 5..h - 2)
+        .map(|y| {
+            let water: Vec<f64> = (0..w)
+                .map(|x| (y * w + x) as usize)
+                .filter(|&i| Class::of(classes.pixels()[i]) == Class::Water)
+                .map(|i| luma(frame.pixels()[i]))
+                .collect();
+            assert!(
+                water.len() as u32 > w / 4,
+                "seed {seed}: row {y} is not water"
+            );
+            water.iter().sum::<f64>() / water.len() as f64
+        })
+        .collect();
+    let mean = |v: &[f64], k: usize| -> Vec<f64> {
+        v.windows(k)
+            .map(|w| w.iter().sum::<f64>() / k as f64)
+            .collect()
+    };
+    let (near, far) = (mean(&rows, 7), mean(&mean(&rows, 7), 31));
+    let rms = |d: Vec<f64>| (d.iter().map(|d| d * d).sum::<f64>() / d.len() as f64).sqrt();
+    let thin = rms(far
+        .iter()
+        .enumerate()
+        .map(|(i, _)| rows[i + 18] - near[i + 15])
+        .collect());
+    let broad = rms(far
+        .iter()
+        .enumerate()
+        .map(|(i, f)| near[i + 15] - f)
+        .collect());
+    thin / broad
+}
+
+/// Slides whose near water mirrors the land across the frame: the wind's
+/// streaks there are bands, not thin lines across the whole frame a few
+/// pixels apart (the mirror's share fell with the ripple's size either
+/// way, a line of whole mirror at each of its zero crossings, and the
+/// streaks' finer layer, seen many pixels thick, drew its rows as lines).
+#[test]
+fn the_streaks_on_near_water_are_bands_not_thin_lines() {
+    let ratios: Vec<f64> = [1006, 1010, 1018]
+        .into_iter()
+        .map(thin_lines_on_near_water)
+        .collect();
+    let mean = ratios.iter().sum::<f64>() / ratios.len() as f64;
+    assert!(mean < 0.45, "thin lines against bands: {ratios:.2?}");
+}

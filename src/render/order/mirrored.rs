@@ -2,9 +2,10 @@
 //! shaded as the scene shades that land's points (the mean of those
 //! across the width a point of the water stands for there), or the sky it
 //! escapes to; mixed into the water's own colour by the mirror's share,
-//! weaker where the wind's streaks are strong, with the sun's glitter
+//! weaker where the wind roughens the water, with the sun's glitter
 //! where the line points near the sun. The streaks tilt the mirror only
-//! where the water is seen small (fine streaks), not near the viewer.
+//! where the water is seen small (fine streaks), not near the viewer, and
+//! their finer layer shows only where its streaks are seen thin.
 
 use glam::{Vec2, Vec3};
 
@@ -13,7 +14,8 @@ use crate::render::scene::Scene;
 use crate::render::shade::index;
 use crate::render::shade::mirror::{Look, Mirror, Mirrored, Seen};
 
-/// How much the strongest streak (ripple 1) takes from the mirror.
+/// How much the roughest water (ripple 1) takes from the mirror; the
+/// calmest (ripple -1) takes nothing.
 const STREAK: f32 = 0.4;
 /// How much finer than the streaks the glittering facets are, across and
 /// along the view (world-sized, as the streaks are).
@@ -22,13 +24,24 @@ const FACETS: (f32, f32) = (7.3, 2.9);
 const TAPS: usize = 6;
 /// How wide a grid step of the water may be seen (in the frame's steps,
 /// `Scene::frame_step`: at 1080p 1.9 px) for the streaks to tilt its
-/// mirror wholly, and from how wide they do not at all.
-const TILT_FULL: f32 = 1.0;
-const TILT_NONE: f32 = 3.0;
+/// mirror wholly, and from how wide they do not at all; and how tall a
+/// streak of their finer layer may be seen for it to show wholly, and
+/// from how tall it does not.
+const SHOWN_FULL: f32 = 1.0;
+const SHOWN_NONE: f32 = 3.0;
+
+/// The wind's streak at a point of the water: its ripple (-1..1, see
+/// `Ripples::value_seen`) and how much of the tilt it gives the mirror
+/// shows there ([`Scene::tilt_share`]).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Streak {
+    pub(super) ripple: f32,
+    pub(super) tilt: f32,
+}
 
 impl Scene<'_> {
     /// `water` (the face's own colour, hazed) at grid position `g` of a
-    /// surface at `level`, whose streak there is `ripple`, with what it
+    /// surface at `level`, whose streak there is `streak`, with what it
     /// mirrors; `lit` (0..=1) of the sun reaches it, so water in the shadow
     /// of the land before the sun does not glitter.
     pub(super) fn mirrored(
@@ -36,13 +49,13 @@ impl Scene<'_> {
         mirror: &Mirror,
         water: u32,
         (g, level): (Vec2, f32),
-        ripple: f32,
+        streak: Streak,
         lit: f32,
     ) -> u32 {
-        let Some(look) = self.look(mirror, (g, level), ripple) else {
+        let Some(look) = self.look(mirror, (g, level), streak) else {
             return water;
         };
-        let out = blend_packed(water, look.colour, mirror_weight(&look, ripple));
+        let out = blend_packed(water, look.colour, mirror_weight(&look, streak.ripple));
         match self.glitter(mirror, look.near_sun, g, lit) {
             Some((sun, weight)) => blend_packed(out, sun, weight),
             None => out,
@@ -57,9 +70,9 @@ impl Scene<'_> {
         mirror: &Mirror,
         water: u32,
         (g, level): (Vec2, f32),
-        ripple: f32,
+        streak: Streak,
     ) -> Mirrored {
-        let Some(look) = self.look(mirror, (g, level), ripple) else {
+        let Some(look) = self.look(mirror, (g, level), streak) else {
             return Mirrored {
                 land: water,
                 sky: water,
@@ -67,7 +80,7 @@ impl Scene<'_> {
                 near_sun: None,
             };
         };
-        let weight = mirror_weight(&look, ripple);
+        let weight = mirror_weight(&look, streak.ripple);
         Mirrored {
             land: blend_packed(water, look.land, weight),
             sky: blend_packed(water, look.sky, weight),
@@ -77,13 +90,13 @@ impl Scene<'_> {
     }
 
     /// What the water at grid position `g` of a surface at `level`, whose
-    /// streak there is `ripple`, mirrors.
-    fn look(&self, mirror: &Mirror, (g, level): (Vec2, f32), ripple: f32) -> Option<Look> {
+    /// streak there is `streak`, mirrors.
+    fn look(&self, mirror: &Mirror, (g, level): (Vec2, f32), streak: Streak) -> Option<Look> {
         let seen = |seen: Seen| match seen {
             Seen::Land { at, height, across } => self.mirrored_land(at, height, level, across),
             Seen::Sky(dir) => self.sky_towards(dir),
         };
-        let tilt = ripple * self.tilt_share(g, level);
+        let tilt = streak.ripple * streak.tilt;
         mirror.look(&self.field, g, level, tilt, seen)
     }
 
@@ -91,16 +104,33 @@ impl Scene<'_> {
     /// position `g` on `level` takes (0..=1). The tilt shifts each point's
     /// image up or down: where a grid step of the water spans many pixels,
     /// each cell mirrored a slice of its own, a mosaic; it fades there.
-    fn tilt_share(&self, g: Vec2, level: f32) -> f32 {
+    pub(super) fn tilt_share(&self, g: Vec2, level: f32) -> f32 {
+        self.shown(g, level, Vec2::X)
+    }
+
+    /// How much of the streaks' finer layer the water at grid position `g`
+    /// on `level` shows (0..=1), its streaks `rows` grid steps thick along
+    /// the view: seen many pixels thick, each was drawn as a line across
+    /// the frame (`Ripples::value_seen`); it fades there. Measured on the
+    /// streaks, not on the grid's steps, so the same water shows the same
+    /// streaks at every detail.
+    pub(super) fn fine_share(&self, g: Vec2, level: f32, rows: f32) -> f32 {
+        self.shown(g, level, Vec2::Y * rows)
+    }
+
+    /// How much of a detail of the water at grid position `g` on `level`
+    /// spanning grid vector `d` shows (0..=1): all of it seen up to
+    /// [`SHOWN_FULL`] frame steps long, none from [`SHOWN_NONE`].
+    fn shown(&self, g: Vec2, level: f32, d: Vec2) -> f32 {
         let a = self.view.project(g.x, g.y, level);
-        let b = self.view.project(g.x + 1.0, g.y, level);
+        let b = self.view.project(g.x + d.x, g.y + d.y, level);
         let steps = (b - a).length() / self.frame_step;
-        // Not a number (no frame): the whole tilt, as before the fade (a
-        // NaN share would tilt the line the most the mirror allows).
+        // Not a number (no frame): the whole, as before the fade (a NaN
+        // share would tilt the line the most the mirror allows).
         if steps.is_nan() {
             return 1.0;
         }
-        1.0 - ((steps - TILT_FULL) / (TILT_NONE - TILT_FULL)).clamp(0.0, 1.0)
+        1.0 - ((steps - SHOWN_FULL) / (SHOWN_NONE - SHOWN_FULL)).clamp(0.0, 1.0)
     }
 
     /// The sun's glitter at grid position `g` where the reflected line
@@ -175,9 +205,14 @@ impl Scene<'_> {
 }
 
 /// How much of what it mirrors (of 256) the water with `look` shows where
-/// its streak is `ripple`.
+/// its streak is `ripple`: less the rougher the water, rising smoothly
+/// from the calmest to the roughest. A share falling with the ripple's
+/// size either way (`|ripple|`) peaked where the ripple crosses 0: every
+/// such place drew a thin line of whole mirror between two bands of less,
+/// twice as many lines as streaks.
 fn mirror_weight(look: &Look, ripple: f32) -> u32 {
-    let share = look.share * (1.0 - STREAK * ripple.abs());
+    let rough = 0.5 * (1.0 + ripple);
+    let share = look.share * (1.0 - STREAK * rough * rough);
     (share * 256.0) as u32
 }
 
@@ -277,7 +312,7 @@ mod tests {
 
     /// The streaks tilt the mirror of water whose grid steps are seen
     /// narrow (fine streaks; at least half their tilt where a step is seen
-    /// under halfway from [`TILT_FULL`] to [`TILT_NONE`] wide), and not of
+    /// under halfway from [`SHOWN_FULL`] to [`SHOWN_NONE`] wide), and not of
     /// water whose steps are seen wide (near the viewer, where each cell
     /// mirrored a slice of its own: a mosaic). Seed 8's winter sea reaches
     /// from the one to the other.
@@ -304,16 +339,20 @@ mod tests {
             if field.get(x, y) >= 0.0 || !seen {
                 continue;
             }
-            let Some(still) = scene.look(mirror, (g, 0.0), 0.0) else {
+            let streak = |ripple: f32| Streak {
+                ripple,
+                tilt: scene.tilt_share(g, 0.0),
+            };
+            let Some(still) = scene.look(mirror, (g, 0.0), streak(0.0)) else {
                 continue;
             };
-            let tilted = scene.look(mirror, (g, 0.0), 1.0).expect("water");
+            let tilted = scene.look(mirror, (g, 0.0), streak(1.0)).expect("water");
             let moved = (still.colour, still.margin) != (tilted.colour, tilted.margin);
             let steps = (scene.view.project(g.x + 1.0, g.y, 0.0) - at).length() / scene.frame_step;
-            if steps < 0.5 * (TILT_FULL + TILT_NONE) {
+            if steps < 0.5 * (SHOWN_FULL + SHOWN_NONE) {
                 narrow += 1;
                 tilted_narrow += usize::from(moved);
-            } else if steps > TILT_NONE {
+            } else if steps > SHOWN_NONE {
                 wide += 1;
                 assert!(!moved, "({x}, {y}), {steps} steps wide");
             }

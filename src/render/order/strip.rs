@@ -3,6 +3,7 @@
 
 use glam::{Vec2, Vec3};
 
+use super::mirrored::Streak;
 use crate::render::base::canvas::Canvas;
 use crate::render::base::colour::blend_packed;
 use crate::render::base::colour::mix_packed;
@@ -544,39 +545,47 @@ impl Scene<'_> {
     /// The water at corner `k`, under a surface at `level`, with what it
     /// mirrors on each side of the mirrored outline.
     fn water_at(&self, mirror: &Mirror, k: &Corner, level: f32) -> Mirrored {
-        let (water, ripple) = self.water_own(&[k], level);
-        self.mirrored_sides(mirror, water, (k.g, level), ripple)
+        let (water, streak) = self.water_own(&[k], level);
+        self.mirrored_sides(mirror, water, (k.g, level), streak)
     }
 
     /// The colour of the water over corners `c` (a face's, or a cell's)
     /// under a surface at `level`: by their mean depth below it, with the
     /// wind's streak at their middle, and what it mirrors there.
     fn water_colour(&self, c: &[&Corner], level: f32) -> u32 {
-        let (water, ripple) = self.water_own(c, level);
+        let (water, streak) = self.water_own(c, level);
         let Some(mirror) = &self.mirror else {
             return water;
         };
         let (g, lit) = middle(c);
-        self.mirrored(mirror, water, (g, level), ripple, lit)
+        self.mirrored(mirror, water, (g, level), streak, lit)
     }
 
     /// The water's own colour over corners `c` under a surface at `level`
     /// (by their mean depth below it, hazed, with the wind's streak at
     /// their middle), and the streak.
-    fn water_own(&self, c: &[&Corner], level: f32) -> (u32, f32) {
+    fn water_own(&self, c: &[&Corner], level: f32) -> (u32, Streak) {
         let n = c.len() as f32;
         let depth = -c.iter().map(|k| (k.h - level).min(0.0)).sum::<f32>() / n;
         let g = c.iter().map(|k| k.g).sum::<Vec2>() / n;
         let haze = c.iter().map(|k| k.haze).sum::<u32>() / c.len() as u32;
         let water = self.palette.water(depth);
-        let (water, ripple) = match &self.ripples {
+        let (water, streak) = match &self.ripples {
             Some(r) => {
-                let n = r.value(g.x, g.y);
-                (r.with(water, n), n)
+                let fine = self.fine_share(g, level, r.finer_rows());
+                let ripple = r.value_seen(g.x, g.y, fine);
+                let tilt = self.tilt_share(g, level);
+                (r.with(water, ripple), Streak { ripple, tilt })
             }
-            None => (water, 0.0),
+            None => (
+                water,
+                Streak {
+                    ripple: 0.0,
+                    tilt: 1.0,
+                },
+            ),
         };
-        (self.hazed(water, haze), ripple)
+        (self.hazed(water, haze), streak)
     }
 
     /// The cut face below the edge from `a` to `b`, down to sea level, facing

@@ -18,6 +18,9 @@ use crate::terrain::noise::Noise;
 const ACROSS: f32 = crate::terrain::SQUARE_EXTENT / 9.0;
 /// Thinness of the streaks (one noise cell along the view), in height units.
 const ALONG: f32 = crate::terrain::SQUARE_EXTENT / 140.0;
+/// How much finer the second layer's streaks are along the view than the
+/// first's.
+const FINER_ALONG: f32 = 2.1;
 /// Strongest blend towards the sky or the dark, in 1/256ths.
 const STRENGTH: f32 = 40.0;
 
@@ -73,6 +76,12 @@ impl Ripples {
         }
     }
 
+    /// How thick along the view the streaks of the finer layer are, in
+    /// grid steps (one noise cell).
+    pub(crate) fn finer_rows(&self) -> f32 {
+        1.0 / (FINER_ALONG * self.along)
+    }
+
     /// What the pattern is drawn from (the field's identity).
     pub(crate) fn seed(&self) -> u64 {
         self.seed
@@ -108,9 +117,21 @@ impl Ripples {
     /// place has the same ripple at every detail.
     #[inline]
     pub(crate) fn value(&self, x: f32, y: f32) -> f32 {
+        self.value_seen(x, y, 1.0)
+    }
+
+    /// [`Ripples::value`] with its finer layer at `fine` (0..=1) of its
+    /// strength. The finer layer breaks up the wide streaks' rows where the
+    /// water is seen small; where it is seen wide, each of its rows, thin
+    /// along the view and long across it, was drawn as a line across the
+    /// whole frame a few pixels from the next, as if the picture were
+    /// interlaced.
+    #[inline]
+    pub(crate) fn value_seen(&self, x: f32, y: f32, fine: f32) -> f32 {
         let (u, v) = (x * self.across, y * self.along);
         // A second, finer layer slanted across the first breaks up its rows.
-        0.65 * self.noise(u, v) + 0.35 * self.noise(2.3 * u + 0.7 * v, 2.1 * v + 17.0)
+        let finer = self.noise(2.3 * u + 0.7 * v, FINER_ALONG * v + 17.0);
+        0.65 * self.noise(u, v) + 0.35 * fine * finer
     }
 
     /// Smooth value noise in -1..1 on the lattice, for `u`, `v` >= 0 (grid
