@@ -174,6 +174,48 @@ fn a_night_frame_is_dark_not_black_and_its_land_stands_out_from_its_sky() {
     }
 }
 
+/// An overcast night is a night: its clouds, lit by the moon, are about
+/// two stops or more under an overcast midday's (as the night's light is
+/// under the day's) and darker than half-way to white, yet lighter than a
+/// clear night's sky. Lit at 0.6 of the moon's light with the horizon's
+/// glow added, an overcast night's sky was 0.3-1.8 stops under its day's
+/// and 119-131 levels: seed 1010's read as a grey-blue day with dark gaps.
+#[test]
+fn an_overcast_night_sky_is_two_stops_under_an_overcast_day() {
+    let (w, h) = (480, 270);
+    // Linear luminance of the sky pixels.
+    let sky = |s: &Settings, field: &Heightfield| {
+        let (frame, classes) = drawn(field, s, w, h);
+        let skies = frame.pixels().iter().zip(classes.pixels());
+        let linear = |c: u32| (luma(c) / 255.0).powf(2.2);
+        let lit: Vec<f32> = skies
+            .filter(|(_, k)| Class::of(**k) == Class::Sky)
+            .map(|(&c, _)| linear(c))
+            .collect();
+        lit.iter().sum::<f32>() / lit.len().max(1) as f32
+    };
+    for seed in [1u64, 2, 3, 5, 8, 1010, 1014] {
+        let night_sky = night(w, h, 1.0);
+        let field = terrain::generate(&night_sky, seed);
+        let day = Settings {
+            sun: Sun::Midday,
+            ..night_sky.clone()
+        };
+        let (overcast, clear) = (sky(&night_sky, &field), sky(&night(w, h, 0.0), &field));
+        let by_day = sky(&day, &field);
+        let stops = (by_day / overcast).log2();
+        let levels = 255.0 * overcast.powf(1.0 / 2.2);
+        assert!(
+            (1.4..4.0).contains(&stops) && levels < 100.0,
+            "seed {seed}: an overcast night {stops:.2} stops under the day, {levels:.1} levels"
+        );
+        assert!(
+            overcast > 1.5 * clear,
+            "seed {seed}: overcast {overcast:.4}, clear {clear:.4}"
+        );
+    }
+}
+
 /// Points of light in a clear sky, far fewer under an overcast one.
 #[test]
 fn stars_show_where_the_sky_is_clear() {

@@ -29,8 +29,11 @@ const CORE: f32 = 0.003;
 const HALO: f32 = 0.06;
 /// The sun's disc: 1 - cos of its radius (about 1 degree).
 const DISC: f32 = 0.000_15;
-/// What a full night leaves of the light on the clouds' lit edges.
-const MOONLIT_CLOUD: f32 = 0.6;
+/// What a full night leaves of the light on the clouds' lit edges: with
+/// it an overcast night's sky stands two to three stops under an overcast
+/// day's, as the night's light stands under the day's. At 0.6 it was
+/// 0.3-1.8 stops under, and a cloudy night read as a grey-blue day.
+const MOONLIT_CLOUD: f32 = 0.25;
 /// The height under which a night's moon is a rising one, in the frame
 /// (its unit vector's z: about 6 degrees; `moonrise::HEIGHTS`).
 const RISING: f32 = 0.1;
