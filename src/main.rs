@@ -59,6 +59,7 @@ fn main() -> ExitCode {
         // screen and the generators all start below), so nothing can read
         // the environment while it changes.
         unsafe { std::env::set_var("DISPLAY", display) };
+        mountains::saver::display_named_by_flag(display);
     }
     if matches!(inv.mode, Mode::Render { .. } | Mode::Heightmap { .. }) {
         mountains::memory::one_pool();

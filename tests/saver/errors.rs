@@ -101,6 +101,35 @@ fn a_display_that_cannot_be_opened_is_named_in_every_mode() {
     }
 }
 
+/// A display named with `-display` that cannot be opened is named by the
+/// flag, in every mode that takes it: it was named as `DISPLAY=":78"`, a
+/// variable the user never set (the program hands the flag on in it).
+#[test]
+fn a_display_named_by_the_flag_is_said_by_the_flag() {
+    let dead = dead_display();
+    for (display, said) in [
+        (
+            dead.as_str(),
+            format!("no X display: cannot open -display {dead}: "),
+        ),
+        (
+            "garbage",
+            "no X display: -display garbage is not a display name".to_string(),
+        ),
+    ] {
+        for mode in ["--settings", "/s", "--window", "--root"] {
+            let out = without_wayland(&[mode, "-display", display], Some(":0"));
+            let stderr = String::from_utf8_lossy(&out.stderr);
+            assert!(!out.status.success(), "{mode} -display {display} succeeded");
+            assert!(
+                stderr.contains(&said),
+                "{mode} -display {display}: {stderr}"
+            );
+            assert!(!stderr.contains("DISPLAY="), "{mode}: {stderr}");
+        }
+    }
+}
+
 /// Runs the binary with `args` in a private home, with no Wayland and
 /// `display` as DISPLAY (unset for `None`), to its end.
 fn without_wayland(args: &[&str], display: Option<&str>) -> std::process::Output {

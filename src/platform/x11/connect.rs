@@ -3,14 +3,15 @@
 
 use x11rb::errors::{ConnectError, DisplayParsingError};
 
-use crate::saver::error::{SaverError, without_source_place};
+use crate::saver::error::{SaverError, display_as_named, without_source_place};
 
 /// The display named by `DISPLAY` could not be reached.
 pub fn connect_failed(e: ConnectError) -> SaverError {
     match (e, std::env::var("DISPLAY")) {
         (ConnectError::DisplayParsingError(DisplayParsingError::MalformedValue(_)), Ok(d)) => {
             SaverError::NoDisplay(format!(
-                "DISPLAY={d:?} is not a display name (such as :0, :1 or host:0)"
+                "{} is not a display name (such as :0, :1 or host:0)",
+                display_as_named(&d)
             ))
         }
         (e, _) => SaverError::no_display(&e.to_string()),
