@@ -46,7 +46,30 @@ pub fn claim(backend: Backend) -> Result<Option<Claim>, String> {
         Backend::Wayland => "WAYLAND_SOCKET",
     };
     let display = std::env::var(var).unwrap_or_default();
-    claim_at(&lock_dir().join(lock_name(backend, &display)))
+    let runtime = std::env::var_os("XDG_RUNTIME_DIR").map(PathBuf::from);
+    let one = one_name(backend, &display, runtime.as_deref());
+    claim_at(&lock_dir().join(lock_name(backend, &one)))
+}
+
+/// One name for each display, however it is written: an X display without
+/// its screen and with `unix` as no host (`:0`, `:0.0` and `unix:0` are
+/// one server, and two savers ran on it at once), a compositor by its
+/// socket's path (`wayland-1` under `runtime`, `XDG_RUNTIME_DIR`, is that
+/// folder's `wayland-1`).
+pub fn one_name(backend: Backend, display: &str, runtime: Option<&Path>) -> String {
+    match backend {
+        Backend::X11 => {
+            let Some((host, rest)) = display.rsplit_once(':') else {
+                return display.to_string();
+            };
+            let number = rest.split_once('.').map_or(rest, |(n, _)| n);
+            let host = if host == "unix" { "" } else { host };
+            format!("{host}:{number}")
+        }
+        Backend::Wayland => super::backend::wayland_socket(display, runtime)
+            .map_or_else(|| display.to_string(), |p| p.display().to_string()),
+        Backend::Windows => display.to_string(),
+    }
 }
 
 /// `$XDG_RUNTIME_DIR` (the user's, cleared at logout), else the temporary
@@ -129,6 +152,20 @@ mod tests {
             lock_name(Backend::Wayland, "/run/user/1000/wayland-0"),
             "mountains-fullscreen-wayland-_run_user_1000_wayland-0.lock"
         );
+    }
+
+    #[test]
+    fn one_display_written_two_ways_is_one_lock() {
+        let x = |d| one_name(Backend::X11, d, None);
+        for same in [":0.0", "unix:0", "unix:0.1", ":0"] {
+            assert_eq!(x(same), ":0", "{same}");
+        }
+        assert_eq!(x("host:1.0"), "host:1");
+        assert_ne!(x(":1"), x(":10"));
+        let run = Path::new("/run/user/1000");
+        let wl = |d| one_name(Backend::Wayland, d, Some(run));
+        assert_eq!(wl("wayland-1"), wl("/run/user/1000/wayland-1"));
+        assert_ne!(wl("wayland-1"), wl("wayland-2"));
     }
 
     #[test]

@@ -40,6 +40,35 @@ fn display_fullscreen_covers_the_screen_with_a_mountain() {
     saver.assert_running();
 }
 
+/// One X display written two ways is one display: a second `/s` on
+/// `:N.0` (or `unix:N`) beside one on `:N` ends at once, as on `:N`. Each
+/// spelling had a lock of its own, and two full-screen savers ran on one
+/// screen.
+#[test]
+fn display_a_second_fullscreen_saver_on_the_same_display_written_otherwise_ends() {
+    let Some(x) = Xvfb::start(640, 480, &[]) else {
+        return;
+    };
+    let runtime = TempDir::new("one-lock-runtime");
+    let shared = [("XDG_RUNTIME_DIR", arg(&runtime.0))];
+    let mut first = Saver::start(&x, "one-lock-first", &["/s"], &shared);
+    poll(&mut first, "the first saver's mountain", || {
+        looks_drawn(&x.grab_screen())
+    });
+    let number = x.display().trim_start_matches(':');
+    for written in [format!("{}.0", x.display()), format!("unix:{number}")] {
+        let env = [shared[0], ("DISPLAY", written.as_str())];
+        let mut second = Saver::start(&x, "one-lock-second", &["/s"], &env);
+        expect_exit(&mut second, &format!("a saver already running ({written})"));
+        assert!(
+            second.stderr().contains("already runs"),
+            "{}",
+            second.stderr()
+        );
+    }
+    first.assert_running();
+}
+
 #[test]
 fn display_fullscreen_hides_the_cursor() {
     let Some(x) = Xvfb::start(640, 480, &[]) else {
