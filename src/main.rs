@@ -59,8 +59,8 @@ fn main() -> ExitCode {
         // screen and the generators all start below), so nothing can read
         // the environment while it changes.
         unsafe { std::env::set_var("DISPLAY", display) };
-        mountains::saver::display_named_by_flag(display);
     }
+    mountains::saver::set_options(&inv.xss);
     if matches!(inv.mode, Mode::Render { .. } | Mode::Heightmap { .. }) {
         mountains::memory::one_pool();
         if let Err(e) = mountains::platform::signals::end_cleanly() {

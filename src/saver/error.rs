@@ -60,21 +60,10 @@ impl fmt::Display for SaverError {
 
 impl std::error::Error for SaverError {}
 
-/// The X display named on the command line (`-display NAME`), which the
-/// program hands on in `DISPLAY`: what a message about the display names,
-/// the flag typed rather than a variable the user never set.
-static NAMED_BY_FLAG: std::sync::OnceLock<String> = std::sync::OnceLock::new();
-
-/// Says that `-display` named the X display `name` (it is put in
-/// `DISPLAY`): messages about that display then name the flag.
-pub fn display_named_by_flag(name: &str) {
-    let _ = NAMED_BY_FLAG.set(name.to_string());
-}
-
 /// The X display `d` (`DISPLAY`'s value) as the user named it: `-display
 /// :1` where the flag gave it, else `DISPLAY=":1"`.
 pub fn display_as_named(d: &str) -> String {
-    match NAMED_BY_FLAG.get() {
+    match super::options::x_display() {
         Some(named) if named == d => format!("-display {d}"),
         _ => format!("DISPLAY={d:?}"),
     }

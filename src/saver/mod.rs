@@ -43,7 +43,8 @@ use crate::platform;
 use crate::platform::modes::run_embedded;
 use crate::settings::Settings;
 
-pub use error::{SaverError, display_named_by_flag, without_source_place};
+pub use error::{SaverError, without_source_place};
+pub use options::set_options;
 pub use trace::{Trace, mark_start};
 
 /// Runs a window mode until it ends. `opened` is a data set to show instead

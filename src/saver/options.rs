@@ -10,14 +10,20 @@ use crate::mountain::Mountain;
 use crate::render::Size;
 use crate::settings::Settings;
 
-/// Remembers this run's xscreensaver options for every window's show.
-pub(crate) fn set_options(xss: &XssOptions) {
+/// Remembers this run's xscreensaver options for every window's show,
+/// and for what is said of the X display (the settings screen's too).
+pub fn set_options(xss: &XssOptions) {
     let _ = XSS.set(xss.clone());
 }
 
 /// True when `-display` named an X display for this run.
 pub(crate) fn x_display_named() -> bool {
-    XSS.get().is_some_and(|x| x.display.is_some())
+    x_display().is_some()
+}
+
+/// The X display `-display` named for this run, if it named one.
+pub(crate) fn x_display() -> Option<&'static str> {
+    XSS.get()?.display.as_deref()
 }
 
 /// xscreensaver's common options of this run, set once by `run`.
