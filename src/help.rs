@@ -61,9 +61,11 @@ Options (every mode but those that only print: --xscreensaver-xml, --man-page, /
   -KEY VALUE         every preference key is a flag too (dashes for underscores):
                      -cragginess 40, --color sonar; booleans -shadows / -no-shadows
 
-xscreensaver's options (the slide show's modes; --settings takes -display):
+xscreensaver's options (the slide show's modes; --settings takes -display alone,
+--layer all but -display):
   -fps               draw the frame rate and load in a corner
   -delay USECS       microseconds between frames while a mountain is drawn
+                     (a frame at least every second, however long a delay)
   -display NAME      the X display instead of $DISPLAY
   -install, -visual V   accepted; a true-colour framebuffer needs neither
 

@@ -146,7 +146,8 @@ mode they are refused.
 Draw the frame rate and load in a corner.
 .TP
 .B \-delay \fIusecs\fP
-Microseconds between frames while a mountain is drawn.
+Microseconds between frames while a mountain is drawn (a frame at least
+every second, however long a delay).
 .TP
 .B \-display \fIhost:display.screen\fP
 The X display to use.
