@@ -51,20 +51,22 @@ pub fn claim(backend: Backend) -> Result<Option<Claim>, String> {
     claim_at(&lock_dir().join(lock_name(backend, &one)))
 }
 
-/// One name for each display, however it is written: an X display without
-/// its screen and with `unix` as no host (`:0`, `:0.0` and `unix:0` are
-/// one server, and two savers ran on it at once), a compositor by its
-/// socket's path (`wayland-1` under `runtime`, `XDG_RUNTIME_DIR`, is that
-/// folder's `wayland-1`).
+/// One name for each display, however it is written: an X screen with
+/// its number, screen 0 where none is given, and `unix` as no host (`:0`,
+/// `:0.0` and `unix:0` are one screen, and two savers ran on it at once),
+/// a compositor by its socket's path (`wayland-1` under `runtime`,
+/// `XDG_RUNTIME_DIR`, is that folder's `wayland-1`).
 pub fn one_name(backend: Backend, display: &str, runtime: Option<&Path>) -> String {
     match backend {
         Backend::X11 => {
             let Some((host, rest)) = display.rsplit_once(':') else {
                 return display.to_string();
             };
-            let number = rest.split_once('.').map_or(rest, |(n, _)| n);
             let host = if host == "unix" { "" } else { host };
-            format!("{host}:{number}")
+            match rest.contains('.') {
+                true => format!("{host}:{rest}"),
+                false => format!("{host}:{rest}.0"),
+            }
         }
         Backend::Wayland => super::backend::wayland_socket(display, runtime)
             .map_or_else(|| display.to_string(), |p| p.display().to_string()),
@@ -157,11 +159,13 @@ mod tests {
     #[test]
     fn one_display_written_two_ways_is_one_lock() {
         let x = |d| one_name(Backend::X11, d, None);
-        for same in [":0.0", "unix:0", "unix:0.1", ":0"] {
-            assert_eq!(x(same), ":0", "{same}");
+        for same in [":0.0", "unix:0", "unix:0.0", ":0"] {
+            assert_eq!(x(same), ":0.0", "{same}");
         }
-        assert_eq!(x("host:1.0"), "host:1");
+        assert_eq!(x("host:1"), x("host:1.0"));
         assert_ne!(x(":1"), x(":10"));
+        // Another screen of the server is another display.
+        assert_ne!(x(":0.1"), x(":0"));
         let run = Path::new("/run/user/1000");
         let wl = |d| one_name(Backend::Wayland, d, Some(run));
         assert_eq!(wl("wayland-1"), wl("/run/user/1000/wayland-1"));
