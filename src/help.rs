@@ -62,7 +62,7 @@ Options (every mode but those that only print: --xscreensaver-xml, --man-page, /
                      -cragginess 40, --color sonar; booleans -shadows / -no-shadows
 
 xscreensaver's options (the slide show's modes; --settings takes -display alone,
---layer all but -display):
+and --layer every one but -display):
   -fps               draw the frame rate and load in a corner
   -delay USECS       microseconds between frames while a mountain is drawn
                      (a frame at least every second, however long a delay)
