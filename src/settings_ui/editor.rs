@@ -64,10 +64,7 @@ impl Editing {
 /// start is an error now; one that ends with a failure status is reported
 /// through `editing`.
 pub fn open(path: &Path, editing: &Editing) -> Result<String, String> {
-    // Only where nothing is: a link to nowhere is refused by the write.
-    if !path.exists() {
-        create_default(path)?;
-    }
+    create_default(path)?;
     let editor = chosen_editor();
     let name = editor.clone().unwrap_or_else(|| "xdg-open".into());
     let child = command(editor.as_deref(), path)
@@ -80,13 +77,23 @@ pub fn open(path: &Path, editing: &Editing) -> Result<String, String> {
     ))
 }
 
-/// The commented defaults, written where the preferences file belongs.
+/// The commented defaults, written where the preferences file belongs if
+/// no file is there: asked again just before the new file is renamed into
+/// place, so a file another program made meanwhile is kept (it was
+/// replaced whenever it came after the first look). A link to nowhere is
+/// refused by the write.
 fn create_default(path: &Path) -> Result<(), String> {
+    let nothing_there = || !path.exists();
+    if !nothing_there() {
+        return Ok(());
+    }
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir)
             .map_err(|e| format!("Cannot create {}: {e}", dir.display()))?;
     }
-    crate::fsutil::write_atomic_with(path, |w| w.write_all(load::DEFAULT_TOML.as_bytes()))
+    let defaults = |w: &mut dyn std::io::Write| w.write_all(load::DEFAULT_TOML.as_bytes());
+    crate::fsutil::write_atomic_checked(path, defaults, || Ok(nothing_there()))
+        .map(|_| ())
         .map_err(|e| format!("Cannot create {}: {e}", path.display()))
 }
 
@@ -108,4 +115,24 @@ fn watch(mut child: Child, name: String, editing: Editing) {
                 *slot = Some(said);
             }
         });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The defaults are written where no file is, and never over one that
+    /// is there, however late it came.
+    #[test]
+    fn the_defaults_never_replace_a_file_that_is_there() {
+        let dir = std::env::temp_dir().join(format!("mountains-editor-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        let path = dir.join("new/mountains.toml");
+        create_default(&path).expect("made");
+        assert_eq!(std::fs::read_to_string(&path).unwrap(), load::DEFAULT_TOML);
+        std::fs::write(&path, "seed = 7\n").unwrap();
+        create_default(&path).expect("kept");
+        assert_eq!(std::fs::read_to_string(&path).unwrap(), "seed = 7\n");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
 }
