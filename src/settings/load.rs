@@ -392,12 +392,9 @@ pub fn apply_file(settings: &mut Settings, path: &Path) -> Vec<Problem> {
     match crate::fsutil::read_regular(path, crate::fsutil::MAX_PREFERENCES_BYTES) {
         Ok(bytes) => match super::text::decode(bytes) {
             Ok((text, _)) => {
-                let before = settings.heightmaps_dir.clone();
+                let before = settings.clone();
                 let problems = apply_toml(settings, &text, &source);
-                if settings.heightmaps_dir != before {
-                    let written = settings.heightmaps_dir.take().unwrap_or_default();
-                    settings.heightmaps_dir = Some(super::paths::beside(&written, path));
-                }
+                folders_beside(settings, &before, path);
                 problems
             }
             Err(e) => vec![Problem {
@@ -415,6 +412,22 @@ pub fn apply_file(settings: &mut Settings, path: &Path) -> Vec<Problem> {
             message: crate::fsutil::cannot_read(&e),
             reach: Reach::Unreadable,
         }],
+    }
+}
+
+/// Makes each folder the file at `path` gave (a key of the folder kind
+/// that `settings` holds other than `before`) one beside the file, when
+/// relative: see [`super::paths::beside`].
+fn folders_beside(settings: &mut Settings, before: &Settings, path: &Path) {
+    let folders = keys::KEYS.iter().filter(|k| k.kind == keys::Kind::Path);
+    for key in folders {
+        if let Value::Str(written) = keys::get(settings, key)
+            && keys::get(before, key) != Value::Str(written.clone())
+        {
+            let anchored = Value::Str(super::paths::beside(&written, path));
+            // The anchored name is a folder path as the written one is.
+            let _ = keys::apply(settings, key, &anchored);
+        }
     }
 }
 
