@@ -60,6 +60,8 @@ fn main() -> ExitCode {
         // the environment while it changes.
         unsafe { std::env::set_var("DISPLAY", display) };
     }
+    // Once, for every mode: the slide shows' pacing reads them, and what is
+    // said of the X display (the settings screen's too) names `-display`.
     mountains::saver::set_options(&inv.xss);
     if matches!(inv.mode, Mode::Render { .. } | Mode::Heightmap { .. }) {
         mountains::memory::one_pool();
@@ -113,7 +115,7 @@ fn main() -> ExitCode {
             platform::report_when_the_server_goes();
             mountains::settings_ui::run(inv.config.as_deref(), &loaded, *parent, backend)
         }
-        mode => run_saver(mode, loaded, open, &inv.xss),
+        mode => run_saver(mode, loaded, open),
     }
 }
 
@@ -155,12 +157,7 @@ fn one_shot_warnings(loaded: &load::Loaded, inv: &cli::Invocation) -> Vec<String
 
 /// The screensaver modes keep going on a broken or unreadable file: each
 /// problem is logged (a .scr has no console) and its key keeps the default.
-fn run_saver(
-    mode: &Mode,
-    loaded: load::Loaded,
-    open: Option<&std::path::Path>,
-    xss: &cli::XssOptions,
-) -> ExitCode {
+fn run_saver(mode: &Mode, loaded: load::Loaded, open: Option<&std::path::Path>) -> ExitCode {
     gui_log();
     for line in problem_warnings(&loaded) {
         log::warn(&line);
@@ -182,7 +179,7 @@ fn run_saver(
         }
     });
     platform::report_when_the_server_goes();
-    match saver::run(mode, loaded.settings, opened, xss) {
+    match saver::run(mode, loaded.settings, opened) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             log::error(&e.to_string());

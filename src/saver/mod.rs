@@ -37,7 +37,7 @@ pub mod span;
 pub(crate) mod trace;
 pub mod watch;
 
-use crate::cli::{Mode, XssOptions};
+use crate::cli::Mode;
 use crate::mountain::Mountain;
 use crate::platform;
 use crate::platform::modes::run_embedded;
@@ -48,15 +48,10 @@ pub use options::set_options;
 pub use trace::{Trace, mark_start};
 
 /// Runs a window mode until it ends. `opened` is a data set to show instead
-/// of generating; `xss` are xscreensaver's common options (`-fps`, `-delay`).
-pub fn run(
-    mode: &Mode,
-    settings: Settings,
-    opened: Option<Mountain>,
-    xss: &XssOptions,
-) -> Result<(), SaverError> {
+/// of generating; xscreensaver's common options (`-fps`, `-delay`) are the
+/// run's, set once before ([`set_options`]).
+pub fn run(mode: &Mode, settings: Settings, opened: Option<Mountain>) -> Result<(), SaverError> {
     mark_start();
-    options::set_options(xss);
     match mode {
         Mode::Fullscreen => app::run(app::AppMode::Fullscreen, settings, opened),
         Mode::Preview { parent: None } => app::run(app::AppMode::Preview, settings, opened),
