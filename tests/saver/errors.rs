@@ -80,7 +80,7 @@ fn display_a_stale_wayland_display_gives_way_to_the_x_display() {
 /// "os error at /root/.cargo/registry/src/.../winit-0.30.13/src/...").
 #[test]
 fn a_display_that_cannot_be_opened_is_named_in_every_mode() {
-    let dead = dead_display();
+    let dead = dead_display(950);
     let displays = [dead.as_str(), "nohost.invalid:0", "garbage", ":", "::"];
     for display in displays {
         for mode in ["--settings", "/s", "--window", "--root"] {
@@ -106,7 +106,9 @@ fn a_display_that_cannot_be_opened_is_named_in_every_mode() {
 /// variable the user never set (the program hands the flag on in it).
 #[test]
 fn a_display_named_by_the_flag_is_said_by_the_flag() {
-    let dead = dead_display();
+    // Not the other test's number: a `/s` on a display another `/s` has
+    // claimed ends at once, with success, before it looks for the server.
+    let dead = dead_display(975);
     for (display, said) in [
         (
             dead.as_str(),
@@ -149,13 +151,14 @@ fn without_wayland(args: &[&str], display: Option<&str>) -> std::process::Output
     command.output().expect("run mountains")
 }
 
-/// A display number no X server listens on here.
-fn dead_display() -> String {
+/// A display number no X server listens on here, from `from` on (each
+/// test its own range).
+fn dead_display(from: u32) -> String {
     let taken = |n: u32| {
         std::path::Path::new(&format!("/tmp/.X11-unix/X{n}")).exists()
             || std::path::Path::new(&format!("/tmp/.X{n}-lock")).exists()
     };
-    let free = (950..1000)
+    let free = (from..from + 25)
         .find(|&n| !taken(n))
         .expect("a free display number");
     format!(":{free}")
