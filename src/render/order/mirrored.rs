@@ -32,7 +32,7 @@ const SHOWN_NONE: f32 = 3.0;
 
 /// The wind's streak at a point of the water: its ripple (-1..1, see
 /// `Ripples::value_seen`) and how much of the tilt it gives the mirror
-/// shows there ([`Scene::tilt_share`]).
+/// shows there ([`Scene::streak_shares`]).
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Streak {
     pub(super) ripple: f32,
@@ -100,37 +100,38 @@ impl Scene<'_> {
         mirror.look(&self.field, g, level, tilt, seen)
     }
 
-    /// How much of the streaks' tilt the mirror of the water at grid
-    /// position `g` on `level` takes (0..=1). The tilt shifts each point's
-    /// image up or down: where a grid step of the water spans many pixels,
-    /// each cell mirrored a slice of its own, a mosaic; it fades there.
-    pub(super) fn tilt_share(&self, g: Vec2, level: f32) -> f32 {
-        self.shown(g, level, Vec2::X)
-    }
-
     /// How much of the streaks' finer layer the water at grid position `g`
     /// on `level` shows (0..=1), its streaks `rows` grid steps thick along
-    /// the view: seen many pixels thick, each was drawn as a line across
-    /// the frame (`Ripples::value_seen`); it fades there. Measured on the
-    /// streaks, not on the grid's steps, so the same water shows the same
-    /// streaks at every detail.
-    pub(super) fn fine_share(&self, g: Vec2, level: f32, rows: f32) -> f32 {
-        self.shown(g, level, Vec2::Y * rows)
-    }
-
-    /// How much of a detail of the water at grid position `g` on `level`
-    /// spanning grid vector `d` shows (0..=1): all of it seen up to
-    /// [`SHOWN_FULL`] frame steps long, none from [`SHOWN_NONE`].
-    fn shown(&self, g: Vec2, level: f32, d: Vec2) -> f32 {
+    /// the view (1 for `rows` 0: none asked), and how much of the streaks'
+    /// tilt its mirror takes (0..=1;
+    /// 1 where it is not `mirrored`). The tilt shifts each point's image up
+    /// or down: where a grid step of the water spans many pixels, each cell
+    /// mirrored a slice of its own, a mosaic; it fades there. Seen many
+    /// pixels thick, each of the finer
+    /// streaks was drawn as a line across the frame (`Ripples::value_seen`);
+    /// it fades there. Measured on the streaks, not on the grid's steps, so
+    /// the same water shows the same streaks at every detail. The point is
+    /// projected once for both.
+    pub(super) fn streak_shares(&self, g: Vec2, level: f32, rows: f32, mirrored: bool) -> [f32; 2] {
         let a = self.view.project(g.x, g.y, level);
-        let b = self.view.project(g.x + d.x, g.y + d.y, level);
-        let steps = (b - a).length() / self.frame_step;
-        // Not a number (no frame): the whole, as before the fade (a NaN
-        // share would tilt the line the most the mirror allows).
-        if steps.is_nan() {
-            return 1.0;
-        }
-        1.0 - ((steps - SHOWN_FULL) / (SHOWN_NONE - SHOWN_FULL)).clamp(0.0, 1.0)
+        // How much of a detail spanning grid vector `d` from `g` shows:
+        // all of it seen up to [`SHOWN_FULL`] frame steps long, none from
+        // [`SHOWN_NONE`].
+        let shown = |d: Vec2| {
+            let b = self.view.project(g.x + d.x, g.y + d.y, level);
+            let steps = (b - a).length() / self.frame_step;
+            // Not a number (no frame): the whole, as before the fade (a NaN
+            // share would tilt the line the most the mirror allows).
+            if steps.is_nan() {
+                return 1.0;
+            }
+            1.0 - ((steps - SHOWN_FULL) / (SHOWN_NONE - SHOWN_FULL)).clamp(0.0, 1.0)
+        };
+        let fine = match rows > 0.0 {
+            true => shown(Vec2::Y * rows),
+            false => 1.0,
+        };
+        [fine, if mirrored { shown(Vec2::X) } else { 1.0 }]
     }
 
     /// The sun's glitter at grid position `g` where the reflected line
@@ -341,7 +342,7 @@ mod tests {
             }
             let streak = |ripple: f32| Streak {
                 ripple,
-                tilt: scene.tilt_share(g, 0.0),
+                tilt: scene.streak_shares(g, 0.0, 0.0, true)[1],
             };
             let Some(still) = scene.look(mirror, (g, 0.0), streak(0.0)) else {
                 continue;

@@ -572,9 +572,9 @@ impl Scene<'_> {
         let water = self.palette.water(depth);
         let (water, streak) = match &self.ripples {
             Some(r) => {
-                let fine = self.fine_share(g, level, r.finer_rows());
+                let mirrored = self.mirror.is_some();
+                let [fine, tilt] = self.streak_shares(g, level, r.finer_rows(), mirrored);
                 let ripple = r.value_seen(g.x, g.y, fine);
-                let tilt = self.tilt_share(g, level);
                 (r.with(water, ripple), Streak { ripple, tilt })
             }
             None => (
